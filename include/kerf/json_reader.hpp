@@ -1,0 +1,101 @@
+#pragma once
+// Reading validated parameters from JSON, with errors that name the dotted path of the field.
+//
+// An ObjectReader wraps one JSON object. Each get_* call names a key, marks it as read and checks the
+// value; finish() rejects the keys nobody read, suggesting the nearest valid key:
+//
+//   kerf::ObjectReader tool(scene_json.at("tool"), "tool");
+//   double rake_deg = tool.get_number("rake_deg", kerf::Range::open(-90.0, 90.0), "deg");
+//   tool.finish();  // "tool.rake_dg = 5: expected a known key (did you mean 'rake_deg'?); ..."
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <set>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace kerf {
+
+using Json = nlohmann::json;
+
+/// An interval check for a number; closed or open at each end, either end may be absent.
+struct Range {
+  std::optional<double> lo, hi;
+  bool lo_open = false, hi_open = false;
+
+  static Range any() { return {}; }
+  static Range positive() { return {0.0, std::nullopt, true, false}; }
+  static Range non_negative() { return {0.0, std::nullopt, false, false}; }
+  static Range open(double lo, double hi) { return {lo, hi, true, true}; }
+  static Range closed(double lo, double hi) { return {lo, hi, false, false}; }
+  static Range at_least(double lo) { return {lo, std::nullopt, false, false}; }
+  static Range above(double lo) { return {lo, std::nullopt, true, false}; }
+
+  bool contains(double x) const;
+  /// "a value in (-90, 90) deg", "a positive value in um", "a finite number".
+  std::string describe(std::string_view unit) const;
+};
+
+/// Checks a finite number against a range; throws InputError naming `path` otherwise.
+double check_number(double value, const std::string& path, const Range& range, std::string_view unit);
+
+/// Returns the choice closest to `word` (edit distance) if it is close enough to be a likely typo.
+std::optional<std::string> nearest_choice(std::string_view word, const std::vector<std::string>& choices);
+
+/// "one of 'a', 'b', 'c'" plus " (did you mean 'b'?)" when there is a near miss.
+std::string describe_choices(std::string_view word, const std::vector<std::string>& choices);
+
+/// Reads the keys of one JSON object and rejects the ones it was not asked for.
+class ObjectReader {
+ public:
+  /// `path` is the dotted path of the object itself ("" for the root).
+  ObjectReader(const Json& object, std::string path);
+
+  const std::string& path() const { return path_; }
+  std::string key_path(std::string_view key) const;
+  bool has(std::string_view key) const;
+
+  /// The raw value (marks the key as read); throws if missing.
+  const Json& get(std::string_view key);
+  /// The raw value if present (marks the key as read).
+  const Json* find(std::string_view key);
+
+  double get_number(std::string_view key, const Range& range, std::string_view unit);
+  std::optional<double> get_optional_number(std::string_view key, const Range& range, std::string_view unit);
+  double get_number_or(std::string_view key, double fallback, const Range& range, std::string_view unit);
+  int get_int_or(std::string_view key, int fallback, int lo, int hi);
+  bool get_bool_or(std::string_view key, bool fallback);
+  std::string get_string(std::string_view key);
+  std::string get_string_or(std::string_view key, std::string fallback);
+  /// A string that must be one of `choices`; the error lists them and suggests the near miss.
+  std::string get_choice(std::string_view key, const std::vector<std::string>& choices);
+  std::string get_choice_or(std::string_view key, std::string fallback, const std::vector<std::string>& choices);
+  /// A sub-object reader (the key must hold an object).
+  ObjectReader get_object(std::string_view key);
+  std::optional<ObjectReader> find_object(std::string_view key);
+
+  /// Marks a key as known without reading it (e.g. documentation fields like "description").
+  void ignore(std::string_view key);
+  /// Throws InputError for the first key that was never read, listing the keys that are valid here.
+  void finish(const std::vector<std::string>& also_valid = {}) const;
+
+ private:
+  const Json& object_;
+  std::string path_;
+  std::set<std::string, std::less<>> known_;  ///< every key asked for, present or not
+};
+
+/// Parses the text of a --set value: JSON if it parses (numbers, true, "quoted", [..]), else a string.
+Json parse_override_value(const std::string& text);
+
+/// Applies `path=value` (dotted path) to a JSON document, creating intermediate objects. Throws
+/// InputError when the text has no '=' or the path crosses a non-object value.
+void apply_override(Json& document, const std::string& assignment, const std::string& option_name = "--set");
+
+/// Reads a JSON file; malformed JSON is an InputError naming the file, line and column.
+Json read_json_file(const std::string& file_path);
+
+/// A short text of a JSON value for error messages (strings unquoted, long values elided).
+std::string json_value_text(const Json& value);
+
+}  // namespace kerf

@@ -1,0 +1,17 @@
+#!/usr/bin/env bash
+# Installs kerf's build and test dependencies from Debian 12 packages, only those that are missing.
+# Needs root (or sudo) the first time; does nothing when everything is present.
+set -euo pipefail
+packages=(build-essential cmake ninja-build pkg-config libeigen3-dev libgsl-dev libboost-dev libfmt-dev
+  catch2 nlohmann-json3-dev libcli11-dev libplplot-dev plplot-driver-cairo)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+echo "kerf: installing ${missing[*]}" >&2
+sudo=""
+[ "$(id -u)" -ne 0 ] && sudo="sudo"
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq
+$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null

@@ -1,0 +1,234 @@
+#include "kerf/json_reader.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "kerf/error.hpp"
+
+namespace kerf {
+
+bool Range::contains(double x) const {
+  if (!std::isfinite(x)) return false;
+  if (lo && (lo_open ? !(x > *lo) : !(x >= *lo))) return false;
+  if (hi && (hi_open ? !(x < *hi) : !(x <= *hi))) return false;
+  return true;
+}
+
+std::string Range::describe(std::string_view unit) const {
+  const std::string u = unit.empty() ? "" : fmt::format(" {}", unit);
+  if (lo && hi) {
+    return fmt::format("a value in {}{}, {}{}{}", lo_open ? "(" : "[", format_value(*lo), format_value(*hi),
+                       hi_open ? ")" : "]", u);
+  }
+  if (lo && *lo == 0.0) {
+    return fmt::format("a {} value{}", lo_open ? "positive" : "non-negative", unit.empty() ? "" : " in" + u);
+  }
+  if (lo) return fmt::format("a value {} {}{}", lo_open ? ">" : ">=", format_value(*lo), u);
+  if (hi) return fmt::format("a value {} {}{}", hi_open ? "<" : "<=", format_value(*hi), u);
+  return fmt::format("a finite number{}", u);
+}
+
+double check_number(double value, const std::string& path, const Range& range, std::string_view unit) {
+  if (!range.contains(value)) throw InputError(path, format_value(value), range.describe(unit));
+  return value;
+}
+
+namespace {
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0u : 1u)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+}  // namespace
+
+std::optional<std::string> nearest_choice(std::string_view word, const std::vector<std::string>& choices) {
+  std::optional<std::string> best;
+  std::size_t best_distance = std::max<std::size_t>(2, word.size() / 3) + 1;
+  for (const auto& choice : choices) {
+    const std::size_t d = edit_distance(word, choice);
+    if (d < best_distance) {
+      best_distance = d;
+      best = choice;
+    }
+  }
+  return best;
+}
+
+std::string describe_choices(std::string_view word, const std::vector<std::string>& choices) {
+  std::string text = "one of ";
+  for (std::size_t i = 0; i < choices.size(); ++i) text += fmt::format("{}'{}'", i ? ", " : "", choices[i]);
+  if (auto near = nearest_choice(word, choices)) text += fmt::format(" (did you mean '{}'?)", *near);
+  return text;
+}
+
+std::string json_value_text(const Json& value) {
+  std::string text = value.is_string() ? value.get<std::string>() : value.dump();
+  if (text.size() > 60) text = text.substr(0, 57) + "...";
+  return text;
+}
+
+ObjectReader::ObjectReader(const Json& object, std::string path) : object_(object), path_(std::move(path)) {
+  if (!object_.is_object()) {
+    throw InputError(path_.empty() ? "(document)" : path_, json_value_text(object_), "a JSON object");
+  }
+}
+
+std::string ObjectReader::key_path(std::string_view key) const {
+  return path_.empty() ? std::string(key) : fmt::format("{}.{}", path_, key);
+}
+
+bool ObjectReader::has(std::string_view key) const { return object_.contains(key); }
+
+const Json* ObjectReader::find(std::string_view key) {
+  known_.emplace(key);
+  auto it = object_.find(key);
+  return it == object_.end() ? nullptr : &*it;
+}
+
+const Json& ObjectReader::get(std::string_view key) {
+  const Json* value = find(key);
+  if (!value) throw InputError(key_path(key), "(missing)", "a value for this required key");
+  return *value;
+}
+
+namespace {
+double as_number(const Json& value, const std::string& path, const Range& range, std::string_view unit) {
+  if (!value.is_number()) throw InputError(path, json_value_text(value), range.describe(unit));
+  return check_number(value.get<double>(), path, range, unit);
+}
+}  // namespace
+
+double ObjectReader::get_number(std::string_view key, const Range& range, std::string_view unit) {
+  return as_number(get(key), key_path(key), range, unit);
+}
+
+std::optional<double> ObjectReader::get_optional_number(std::string_view key, const Range& range,
+                                                        std::string_view unit) {
+  const Json* value = find(key);
+  if (!value || value->is_null()) return std::nullopt;
+  return as_number(*value, key_path(key), range, unit);
+}
+
+double ObjectReader::get_number_or(std::string_view key, double fallback, const Range& range,
+                                   std::string_view unit) {
+  return get_optional_number(key, range, unit).value_or(fallback);
+}
+
+int ObjectReader::get_int_or(std::string_view key, int fallback, int lo, int hi) {
+  const Json* value = find(key);
+  if (!value) return fallback;
+  const std::string expected = fmt::format("an integer in [{}, {}]", lo, hi);
+  if (!value->is_number_integer()) throw InputError(key_path(key), json_value_text(*value), expected);
+  const auto n = value->get<long long>();
+  if (n < lo || n > hi) throw InputError(key_path(key), json_value_text(*value), expected);
+  return static_cast<int>(n);
+}
+
+bool ObjectReader::get_bool_or(std::string_view key, bool fallback) {
+  const Json* value = find(key);
+  if (!value) return fallback;
+  if (!value->is_boolean()) throw InputError(key_path(key), json_value_text(*value), "true or false");
+  return value->get<bool>();
+}
+
+std::string ObjectReader::get_string(std::string_view key) {
+  const Json& value = get(key);
+  if (!value.is_string()) throw InputError(key_path(key), json_value_text(value), "a string");
+  return value.get<std::string>();
+}
+
+std::string ObjectReader::get_string_or(std::string_view key, std::string fallback) {
+  return has(key) ? get_string(key) : std::move(fallback);
+}
+
+std::string ObjectReader::get_choice(std::string_view key, const std::vector<std::string>& choices) {
+  const Json& value = get(key);
+  const std::string text = value.is_string() ? value.get<std::string>() : json_value_text(value);
+  if (!value.is_string() || std::find(choices.begin(), choices.end(), text) == choices.end()) {
+    throw InputError(key_path(key), text, describe_choices(text, choices));
+  }
+  return text;
+}
+
+std::string ObjectReader::get_choice_or(std::string_view key, std::string fallback,
+                                        const std::vector<std::string>& choices) {
+  return has(key) ? get_choice(key, choices) : std::move(fallback);
+}
+
+ObjectReader ObjectReader::get_object(std::string_view key) { return ObjectReader(get(key), key_path(key)); }
+
+std::optional<ObjectReader> ObjectReader::find_object(std::string_view key) {
+  const Json* value = find(key);
+  if (!value) return std::nullopt;
+  return ObjectReader(*value, key_path(key));
+}
+
+void ObjectReader::ignore(std::string_view key) { known_.emplace(key); }
+
+void ObjectReader::finish(const std::vector<std::string>& also_valid) const {
+  std::vector<std::string> valid(known_.begin(), known_.end());
+  valid.insert(valid.end(), also_valid.begin(), also_valid.end());
+  for (const auto& [key, value] : object_.items()) {
+    if (known_.contains(key)) continue;
+    std::string expected = "a known key";
+    if (auto near = nearest_choice(key, valid)) expected += fmt::format(" (did you mean '{}'?)", *near);
+    throw InputError(key_path(key), json_value_text(value), expected + "; see docs/scenes.md");
+  }
+}
+
+Json parse_override_value(const std::string& text) {
+  Json value = Json::parse(text, nullptr, /*allow_exceptions=*/false);
+  if (value.is_discarded()) return Json(text);
+  return value;
+}
+
+void apply_override(Json& document, const std::string& assignment, const std::string& option_name) {
+  const auto eq = assignment.find('=');
+  if (eq == std::string::npos || eq == 0) {
+    throw InputError(option_name, assignment, "key.path=value, e.g. tool.rake_deg=-5");
+  }
+  const std::string path = assignment.substr(0, eq);
+  Json* node = &document;
+  std::size_t start = 0;
+  while (true) {
+    const auto dot = path.find('.', start);
+    const std::string key = path.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+    if (key.empty()) throw InputError(option_name, assignment, "a dotted key path without empty parts");
+    if (!node->is_object()) {
+      throw InputError(option_name, assignment,
+                       fmt::format("a path through objects ('{}' is not an object)", path.substr(0, start - 1)));
+    }
+    node = &(*node)[key];
+    if (dot == std::string::npos) break;
+    if (node->is_null()) *node = Json::object();
+    start = dot + 1;
+  }
+  *node = parse_override_value(assignment.substr(eq + 1));
+}
+
+Json read_json_file(const std::string& file_path) {
+  std::ifstream in(file_path);
+  if (!in) throw InputError("file", file_path, "a readable JSON file");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  try {
+    return Json::parse(buffer.str(), nullptr, true, /*ignore_comments=*/true);
+  } catch (const Json::parse_error& e) {
+    throw InputError(file_path, "(malformed JSON)", fmt::format("valid JSON ({})", e.what()));
+  }
+}
+
+}  // namespace kerf

@@ -1,0 +1,2 @@
+// kerf-forces: placeholder until the analytic CLI lands (issue 2).
+int main() { return 0; }
