@@ -1,0 +1,71 @@
+#include "kerf/analytic/quadrature.hpp"
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_integration.h>
+
+#include <boost/math/quadrature/gauss.hpp>
+#include <boost/math/quadrature/gauss_kronrod.hpp>
+#include <boost/math/quadrature/tanh_sinh.hpp>
+#include <cmath>
+#include <memory>
+
+namespace kerf {
+
+std::string_view quadrature_rule_name(QuadratureRule rule) { return quadrature_rule_names()[static_cast<int>(rule)]; }
+
+const std::vector<std::string>& quadrature_rule_names() {
+  static const std::vector<std::string> names = {"gauss_kronrod", "tanh_sinh", "gsl_qag", "gauss_legendre"};
+  return names;
+}
+
+namespace {
+
+QuadratureResult integrate_gsl(const Integrand& f, double a, double b, const QuadratureSettings& settings) {
+  // GSL reports failures through a process-wide handler that aborts by default; turn it off once and
+  // read the status instead.
+  static const bool handler_off = [] {
+    gsl_set_error_handler_off();
+    return true;
+  }();
+  (void)handler_off;
+  const std::size_t limit = std::size_t{1} << std::min(settings.max_depth, 12);
+  struct Workspace {
+    std::size_t size;
+    std::unique_ptr<gsl_integration_workspace, decltype(&gsl_integration_workspace_free)> ptr;
+  };
+  thread_local Workspace workspace{0, {nullptr, &gsl_integration_workspace_free}};
+  if (workspace.size < limit) workspace = {limit, {gsl_integration_workspace_alloc(limit), &gsl_integration_workspace_free}};
+  gsl_function function;
+  function.function = [](double x, void* params) { return (*static_cast<const Integrand*>(params))(x); };
+  function.params = const_cast<Integrand*>(&f);
+  QuadratureResult out;
+  gsl_integration_qag(&function, a, b, 0.0, settings.relative_tolerance, limit, GSL_INTEG_GAUSS21,
+                      workspace.ptr.get(), &out.value, &out.error_estimate);
+  return out;
+}
+
+}  // namespace
+
+QuadratureResult integrate(const Integrand& f, double a, double b, const QuadratureSettings& settings) {
+  QuadratureResult out;
+  if (!(b > a)) return out;
+  switch (settings.rule) {
+    case QuadratureRule::gauss_kronrod:
+      out.value = boost::math::quadrature::gauss_kronrod<double, 15>::integrate(
+          f, a, b, static_cast<unsigned>(settings.max_depth), settings.relative_tolerance, &out.error_estimate);
+      break;
+    case QuadratureRule::tanh_sinh: {
+      thread_local boost::math::quadrature::tanh_sinh<double> integrator(
+          static_cast<std::size_t>(std::max(settings.max_depth, 4)));
+      out.value = integrator.integrate(f, a, b, settings.relative_tolerance, &out.error_estimate);
+      break;
+    }
+    case QuadratureRule::gsl_qag: return integrate_gsl(f, a, b, settings);
+    case QuadratureRule::gauss_legendre:
+      out.value = boost::math::quadrature::gauss<double, 30>::integrate(f, a, b);
+      break;
+  }
+  return out;
+}
+
+}  // namespace kerf

@@ -1,0 +1,54 @@
+#pragma once
+// The composite flow stress of seed 001 (Eq. 8) and the shear flow stress (Eq. 12):
+//
+//   sigma = sigma_JC(eps, epsdot, T) + K_HP / sqrt(D) + M alpha G b sqrt(k theta_av / (D_avg b))
+//   k_s   = sigma / sqrt(3)
+//
+// Each term is optional: a scene names the terms it wants. Policy at T >= T_melt: the material is molten and
+// every term is zero (the microstructural terms of Eq. 8 carry no temperature dependence of their own, but
+// a melt has no grains); Guard::temperature_at_or_above_melt is raised.
+//
+//   kerf::FlowStressModel model;
+//   model.johnson_cook = jc;  model.hall_petch = hp;         // dislocation term left out
+//   auto s = kerf::flow_stress(model, {.strain = 1.0, .strain_rate_per_s = 1e5, .temperature_K = 600.0}, nullptr);
+//   double k_s_Pa = s.shear_Pa;
+#include <optional>
+#include <string>
+
+#include "kerf/analytic/dislocation.hpp"
+#include "kerf/analytic/guards.hpp"
+#include "kerf/analytic/hall_petch.hpp"
+#include "kerf/analytic/johnson_cook.hpp"
+
+namespace kerf {
+
+/// Strain, strain rate and temperature at which a flow stress is evaluated.
+struct DeformationState {
+  double strain = 0.0;
+  double strain_rate_per_s = 0.0;
+  double temperature_K = 293.15;
+};
+
+struct FlowStressModel {
+  std::optional<JohnsonCookParams> johnson_cook;
+  JohnsonCookPolicy policy;
+  std::optional<HallPetchParams> hall_petch;
+  std::optional<DislocationParams> dislocation;
+  /// Needed to apply the melt policy to the microstructural terms when Johnson-Cook is not used.
+  double melting_temperature_K = 0.0;
+
+  /// At least one term; each term validated under `path`.
+  void validate(const std::string& path) const;
+};
+
+struct FlowStress {
+  double johnson_cook_Pa = 0.0;
+  double hall_petch_Pa = 0.0;
+  double dislocation_Pa = 0.0;
+  double total_Pa = 0.0;  ///< sigma (Eq. 8)
+  double shear_Pa = 0.0;  ///< k_s = sigma / sqrt(3) (Eq. 12)
+};
+
+FlowStress flow_stress(const FlowStressModel& model, const DeformationState& state, Guards* guards);
+
+}  // namespace kerf

@@ -1,0 +1,41 @@
+#pragma once
+// One-dimensional quadrature for the analytic models, from Boost.Math and GSL (not written again here).
+// The rule and tolerance are fidelity knobs; bench/analytic_liu_li.cpp measures their cost and error.
+//
+//   kerf::QuadratureSettings q{.rule = kerf::QuadratureRule::gauss_kronrod, .relative_tolerance = 1e-8};
+//   auto r = kerf::integrate([](double x) { return x * x; }, 0.0, 1.0, q);   // r.value = 1/3
+#include <functional>
+#include <string_view>
+#include <vector>
+
+namespace kerf {
+
+enum class QuadratureRule {
+  gauss_kronrod,   ///< Boost adaptive Gauss-Kronrod 7/15 (default)
+  tanh_sinh,       ///< Boost tanh-sinh (double exponential): robust at endpoint singularities
+  gsl_qag,         ///< GSL QAG with the 21-point Gauss-Kronrod rule
+  gauss_legendre,  ///< Boost fixed 30-point Gauss-Legendre, not adaptive (tolerance ignored)
+};
+
+std::string_view quadrature_rule_name(QuadratureRule rule);
+/// Scene names of the rules, in the order of the enum.
+const std::vector<std::string>& quadrature_rule_names();
+
+struct QuadratureSettings {
+  QuadratureRule rule = QuadratureRule::gauss_kronrod;
+  double relative_tolerance = 1e-8;
+  int max_depth = 15;  ///< adaptive bisection depth (Boost) or 2^max_depth intervals (GSL)
+};
+
+struct QuadratureResult {
+  double value = 0.0;
+  double error_estimate = 0.0;  ///< the rule's own estimate (indicative only); 0 for the fixed rule
+};
+
+using Integrand = std::function<double(double)>;
+
+/// Integral of f over [a, b] (a <= b). Never throws for finite integrands; a poorly converged result
+/// carries a large error_estimate.
+QuadratureResult integrate(const Integrand& f, double a, double b, const QuadratureSettings& settings);
+
+}  // namespace kerf
