@@ -1,2 +1,300 @@
-// kerf-forces: placeholder until the analytic CLI lands (issue 2).
-int main() { return 0; }
+// kerf-forces: quick cutting-force predictions and parameter sweeps from a scene file.
+//
+//   kerf-forces predict SCENE.json [--set key.path=value]... [--csv FILE]
+//   kerf-forces sweep SCENE.json --vary key.path=START:STOP:COUNT[:log] [--vary ...] --csv FILE
+//   kerf-forces models            (the registered models)
+//   kerf-forces materials         (the bundled material library)
+//
+// Exit status: 0 success, 2 usage or input error (the message names the field, value and what was
+// expected), 3 a model failed on valid input, 1 anything else (e.g. an output file cannot be written).
+#include <fmt/format.h>
+#include <omp.h>
+
+#include <CLI/CLI.hpp>
+#include <cmath>
+#include <iostream>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "kerf/analytic/predict.hpp"
+#include "kerf/analytic/registry.hpp"
+#include "kerf/analytic/scene.hpp"
+#include "kerf/error.hpp"
+#include "kerf/io.hpp"
+#include "kerf/json_reader.hpp"
+#include "kerf/material.hpp"
+#include "kerf/units.hpp"
+
+namespace {
+
+using kerf::Json;
+
+Json load_scene_document(const std::string& path, const std::vector<std::string>& overrides) {
+  Json document = kerf::read_json_file(path);
+  for (const auto& assignment : overrides) kerf::apply_override(document, assignment);
+  return document;
+}
+
+std::string csv_text(const std::vector<std::string>& header, const std::vector<std::vector<std::string>>& rows) {
+  std::string text = kerf::csv_line(header);
+  for (const auto& row : rows) text += kerf::csv_line(row);
+  return text;
+}
+
+void print_prediction(const std::string& scene_path, const kerf::AnalyticScene& scene, const kerf::Prediction& p) {
+  using kerf::units::m_to_mm;
+  using kerf::units::m_to_um;
+  using kerf::units::pa_to_mpa;
+  using kerf::units::rad_to_deg;
+  const double width_mm = m_to_mm(p.width_m);
+  fmt::print("scene             {}\n", scene_path);
+  fmt::print("material          {} ({})\n", scene.material.name, scene.material.title);
+  fmt::print("force model       {}{}\n", kerf::force_model_name(p.force_model),
+             scene.force_choice_reason.empty() ? "" : " (auto: " + scene.force_choice_reason + ")");
+  fmt::print("cut               t0 = {:.6g} um, width = {:.6g} mm, speed = {:.6g} m/min\n",
+             m_to_um(p.uncut_chip_thickness_m), width_mm, kerf::units::m_per_s_to_m_per_min(scene.speed_m_per_s));
+  fmt::print("tool              rake = {:.6g} deg, edge radius = {:.6g} um\n", rad_to_deg(scene.rake_rad),
+             m_to_um(scene.edge_radius_m));
+  fmt::print("cutting force     {:.6g} N  ({:.6g} N/mm)\n", p.cutting_force_N, p.cutting_force_N / width_mm);
+  fmt::print("thrust force      {:.6g} N  ({:.6g} N/mm)\n", p.thrust_force_N, p.thrust_force_N / width_mm);
+  fmt::print("shear angle       {:.4g} deg\n", rad_to_deg(p.shear_angle_rad));
+  if (p.has_friction) fmt::print("friction angle    {:.4g} deg (from {})\n", rad_to_deg(p.friction_angle_rad),
+                                 scene.friction_origin);
+  fmt::print("chip ratio        {:.4g} (chip thickness {:.6g} um)\n", p.chip_ratio, m_to_um(p.chip_thickness_m));
+  fmt::print("flow stress       {:.6g} MPa (JC {:.6g} + Hall-Petch {:.6g} + dislocation {:.6g}); k_s = {:.6g} MPa\n",
+             pa_to_mpa(p.flow.total_Pa), pa_to_mpa(p.flow.johnson_cook_Pa), pa_to_mpa(p.flow.hall_petch_Pa),
+             pa_to_mpa(p.flow.dislocation_Pa), pa_to_mpa(p.flow.shear_Pa));
+  fmt::print("at                strain {:.4g}, strain rate {:.4g} 1/s, temperature {:.5g} K\n", p.state.strain,
+             p.state.strain_rate_per_s, p.state.temperature_K);
+  for (const auto& [column, length_m] : p.contact_lengths_m) {
+    fmt::print("{:<17} {:.6g} mm\n", column.substr(0, column.size() - 3), m_to_mm(length_m));
+  }
+  if (p.liu_li) {
+    const auto& l = *p.liu_li;
+    fmt::print("edge integral     from {:.4g} deg to {:.4g} deg (stagnation {:.4g} deg{}); ploughed layer {:.6g} um\n",
+               rad_to_deg(l.lower_limit_rad), rad_to_deg(l.upper_limit_rad), rad_to_deg(l.stagnation_angle_rad),
+               l.pole_rad ? fmt::format(", pole {:.4g} deg", rad_to_deg(*l.pole_rad)) : "",
+               m_to_um(l.ploughed_thickness_m));
+    fmt::print("edge part         cutting {:.6g} N, thrust {:.6g} N (the thrust depends strongly on the lower limit)\n",
+               l.edge.cutting_N_per_m * p.width_m, l.edge.thrust_N_per_m * p.width_m);
+  }
+  if (p.oxley) {
+    fmt::print("oxley             C0 = {:.4g}, delta = {:.4g}, interface T = {:.5g} K, contact length {:.6g} mm\n",
+               p.oxley->strain_rate_constant_C0, p.oxley->delta, p.oxley->interface_temperature_K,
+               m_to_mm(p.oxley->contact_length_m));
+  }
+  const auto fired = p.guards.fired();
+  if (fired.empty()) fmt::print("guards            none fired\n");
+  for (auto guard : fired) fmt::print("guard             {}: {}\n", kerf::guard_name(guard), kerf::guard_policy(guard));
+  for (const auto& w : p.warnings) fmt::print("warning           {}\n", w);
+}
+
+int run_predict(const std::string& scene_path, const std::vector<std::string>& overrides, const std::string& csv) {
+  const kerf::AnalyticScene scene = kerf::parse_analytic_scene(load_scene_document(scene_path, overrides));
+  const kerf::Prediction prediction = kerf::predict(scene);
+  print_prediction(scene_path, scene, prediction);
+  if (!csv.empty()) {
+    std::vector<std::string> header, values;
+    for (auto& [name, value] : kerf::prediction_columns(scene, prediction)) {
+      header.push_back(name);
+      values.push_back(value);
+    }
+    kerf::write_file_atomically(csv, csv_text(header, {values}));
+  }
+  return 0;
+}
+
+struct Axis {
+  std::string path;
+  std::vector<double> values;
+};
+
+Axis parse_axis(const std::string& spec) {
+  const auto fail = [&](const std::string& why) { throw kerf::InputError("--vary", spec, why); };
+  const auto eq = spec.find('=');
+  if (eq == std::string::npos || eq == 0) fail("key.path=START:STOP:COUNT[:log]");
+  Axis axis{spec.substr(0, eq), {}};
+  std::vector<std::string> parts;
+  std::string rest = spec.substr(eq + 1);
+  for (std::size_t start = 0;;) {
+    const auto colon = rest.find(':', start);
+    parts.push_back(rest.substr(start, colon == std::string::npos ? std::string::npos : colon - start));
+    if (colon == std::string::npos) break;
+    start = colon + 1;
+  }
+  if (parts.size() < 3 || parts.size() > 4 || (parts.size() == 4 && parts[3] != "log" && parts[3] != "lin")) {
+    fail("START:STOP:COUNT with an optional :log or :lin");
+  }
+  double start = 0, stop = 0;
+  long count = 0;
+  try {
+    std::size_t used = 0;
+    start = std::stod(parts[0], &used);
+    if (used != parts[0].size()) fail("a number for START");
+    stop = std::stod(parts[1], &used);
+    if (used != parts[1].size()) fail("a number for STOP");
+    count = std::stol(parts[2], &used);
+    if (used != parts[2].size()) fail("an integer COUNT");
+  } catch (const std::logic_error&) {
+    fail("numbers in START:STOP:COUNT");
+  }
+  if (count < 1 || count > 10'000'000) fail("COUNT in [1, 10000000]");
+  const bool log_spacing = parts.size() == 4 && parts[3] == "log";
+  if (log_spacing && !(start > 0 && stop > 0)) fail("positive START and STOP for :log spacing");
+  for (long i = 0; i < count; ++i) {
+    const double f = count == 1 ? 0.0 : static_cast<double>(i) / static_cast<double>(count - 1);
+    axis.values.push_back(log_spacing ? start * std::pow(stop / start, f) : start + (stop - start) * f);
+  }
+  return axis;
+}
+
+int run_sweep(const std::string& scene_path, const std::vector<std::string>& overrides,
+              const std::vector<std::string>& vary_specs, const std::string& csv) {
+  const Json base = load_scene_document(scene_path, overrides);
+  std::vector<Axis> axes;
+  std::size_t n_points = 1;
+  for (const auto& spec : vary_specs) {
+    axes.push_back(parse_axis(spec));
+    n_points *= axes.back().values.size();
+    if (n_points > 50'000'000) throw kerf::InputError("--vary", spec, "a grid of at most 50 million points");
+  }
+  kerf::MaterialCache materials;
+
+  // The column set depends only on the models the scene asks for: take the names from the unvaried scene.
+  const kerf::AnalyticScene base_scene = kerf::parse_analytic_scene(base, &materials);
+  std::vector<std::string> names;
+  for (const auto& column : kerf::prediction_columns(base_scene, kerf::Prediction{})) names.push_back(column.first);
+
+  struct Row {
+    std::vector<std::string> values;
+    std::string error;
+  };
+  std::vector<Row> rows(n_points);
+  const auto coordinates = [&](std::size_t index) {
+    std::vector<double> x(axes.size());
+    for (std::size_t a = axes.size(); a-- > 0;) {
+      x[a] = axes[a].values[index % axes[a].values.size()];
+      index /= axes[a].values.size();
+    }
+    return x;
+  };
+
+  kerf::Progress progress("sweep", n_points);
+  constexpr std::size_t kChunk = 4096;
+  for (std::size_t begin = 0; begin < n_points; begin += kChunk) {
+    const std::size_t end = std::min(n_points, begin + kChunk);
+#pragma omp parallel for schedule(dynamic, 64)
+    for (std::size_t i = begin; i < end; ++i) {
+      Json document = base;
+      const auto x = coordinates(i);
+      try {
+        for (std::size_t a = 0; a < axes.size(); ++a) {
+          kerf::apply_override(document, fmt::format("{}={}", axes[a].path, x[a]), "--vary");
+        }
+        const auto scene = kerf::parse_analytic_scene(document, &materials);
+        for (auto& column : kerf::prediction_columns(scene, kerf::predict(scene))) {
+          rows[i].values.push_back(std::move(column.second));
+        }
+        if (rows[i].values.size() != names.size()) rows[i] = {{}, "internal: the column set changed"};
+      } catch (const std::exception& e) {
+        rows[i].error = e.what();
+      }
+    }
+    progress.advance(end - begin);
+  }
+  progress.finish();
+  std::size_t n_failed = 0;
+  for (const auto& row : rows) n_failed += row.error.empty() ? 0 : 1;
+
+  std::vector<std::string> header;
+  for (const auto& axis : axes) header.push_back(kerf::csv_escape(axis.path));
+  header.insert(header.end(), names.begin(), names.end());
+  header.push_back("error");
+  std::string text = kerf::csv_line(header);
+  for (std::size_t i = 0; i < n_points; ++i) {
+    std::vector<std::string> fields;
+    for (double x : coordinates(i)) fields.push_back(kerf::csv_number(x));
+    if (rows[i].error.empty()) {
+      fields.insert(fields.end(), rows[i].values.begin(), rows[i].values.end());
+    } else {
+      fields.resize(fields.size() + names.size());
+    }
+    fields.push_back(kerf::csv_escape(rows[i].error));
+    text += kerf::csv_line(fields);
+  }
+  kerf::write_file_atomically(csv, text);
+  fmt::print(stderr, "kerf-forces: {} points written to {} ({} refused with an error, see the 'error' column)\n",
+             n_points, csv, n_failed);
+  return 0;
+}
+
+int list_models() {
+  for (const auto& m : kerf::analytic_models()) {
+    fmt::print("models.{:<17} {:<17} {}{}\n", m.kind, m.name, m.summary, m.needs.empty() ? "" : fmt::format(" [needs {}]", m.needs));
+  }
+  return 0;
+}
+
+int list_materials() {
+  for (const auto& name : kerf::library_material_names()) {
+    try {
+      const auto record = kerf::load_material(Json(name), "material");
+      std::string groups;
+      for (const auto& [group, values] : record.groups.items()) groups += (groups.empty() ? "" : ", ") + group;
+      fmt::print("{:<20} {} [{}]\n", name, record.title, groups);
+    } catch (const kerf::InputError& e) {
+      fmt::print("{:<20} (invalid: {})\n", name, e.what());
+    }
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"kerf-forces: analytic cutting-force predictions (ductile regime) and sweeps"};
+  app.require_subcommand(1);
+  std::string scene_path, csv;
+  std::vector<std::string> overrides, vary;
+  int threads = 0;
+
+  auto* predict = app.add_subcommand("predict", "predict the forces of one scene");
+  predict->add_option("scene", scene_path, "scene file (JSON)")->required();
+  predict->add_option("--set", overrides, "override a scene value: key.path=value (repeatable)");
+  predict->add_option("--csv", csv, "also write the result as one CSV row to this file");
+
+  auto* sweep = app.add_subcommand("sweep", "evaluate a grid of scenes (cartesian product of --vary axes)");
+  sweep->add_option("scene", scene_path, "scene file (JSON)")->required();
+  sweep->add_option("--set", overrides, "override a scene value: key.path=value (repeatable)");
+  sweep->add_option("--vary", vary, "an axis: key.path=START:STOP:COUNT[:log] (repeatable)")->required();
+  sweep->add_option("--csv", csv, "CSV file to write")->required();
+  sweep->add_option("--threads", threads, "threads (default: all cores)")->check(CLI::Range(1, 1024));
+
+  auto* models = app.add_subcommand("models", "list the registered models");
+  auto* materials = app.add_subcommand("materials", "list the bundled material library");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : kerf::kExitInputError;
+  }
+  try {
+    if (threads > 0) omp_set_num_threads(threads);
+    if (*predict) return run_predict(scene_path, overrides, csv);
+    if (*sweep) return run_sweep(scene_path, overrides, vary, csv);
+    if (*models) return list_models();
+    if (*materials) return list_materials();
+  } catch (const kerf::InputError& e) {
+    fmt::print(stderr, "kerf-forces: error: {}\n", e.what());
+    return kerf::kExitInputError;
+  } catch (const kerf::ModelError& e) {
+    fmt::print(stderr, "kerf-forces: error: {}\n", e.what());
+    return kerf::kExitModelError;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "kerf-forces: error: {}\n", e.what());
+    return 1;
+  }
+  return 0;
+}

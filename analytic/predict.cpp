@@ -1,0 +1,186 @@
+#include "kerf/analytic/predict.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "kerf/analytic/merchant.hpp"
+#include "kerf/error.hpp"
+#include "kerf/io.hpp"
+#include "kerf/units.hpp"
+
+namespace kerf {
+
+namespace {
+
+// Oxley's strain-rate constant C0 lies in 2-10 (Oxley 1989); its middle is used to estimate the primary-zone
+// strain rate when the scene neither gives one nor asks for an Oxley solve.
+constexpr double kTypicalStrainRateConstant = 5.0;
+// Seed 003 validated the contact-length models for A2024-T351 up to h = 0.1 mm (chip segmentation above).
+constexpr double kContactLengthValidatedThickness_m = 0.1e-3;
+constexpr double kSharpEdgeRatio = 0.05;
+
+/// Shear-plane strain and Oxley's strain-rate estimate for a sharp tool (physics-analytic.md §3).
+DeformationState shear_plane_state(const AnalyticScene& scene, double shear_angle_rad) {
+  const double a = scene.rake_rad, phi = shear_angle_rad;
+  const double shear_strain = std::cos(a) / (std::sin(phi) * std::cos(phi - a));
+  DeformationState state;
+  state.strain = shear_strain / std::sqrt(3.0);
+  if (scene.given_strain_rate_per_s) {
+    state.strain_rate_per_s = *scene.given_strain_rate_per_s;
+  } else {
+    const double shear_velocity = scene.speed_m_per_s * std::cos(a) / std::cos(phi - a);
+    const double shear_plane_length = scene.uncut_chip_thickness_m / std::sin(phi);
+    state.strain_rate_per_s = kTypicalStrainRateConstant * shear_velocity / shear_plane_length / std::sqrt(3.0);
+  }
+  state.temperature_K = scene.workpiece_temperature_K;
+  return state;
+}
+
+void check_shear_angle(double phi, const AnalyticScene& scene) {
+  if (phi > 0.0 && phi < std::numbers::pi / 2.0) return;
+  const char* model = scene.shear_angle == ShearAngleSource::merchant      ? "merchant"
+                      : scene.shear_angle == ShearAngleSource::lee_shaffer ? "lee_shaffer"
+                                                                           : "chip_ratio";
+  throw InputError("models.shear_angle", model,
+                   fmt::format("a model giving a shear angle in (0, 90) deg; it gives {:.3g} deg for rake {:.3g} deg "
+                               "and friction angle {:.3g} deg (friction minus rake too large: lower the friction or "
+                               "give a measured cut.chip_ratio)",
+                               units::rad_to_deg(phi), units::rad_to_deg(scene.rake_rad),
+                               units::rad_to_deg(scene.friction_angle_rad.value_or(0.0))));
+}
+
+}  // namespace
+
+Prediction predict(const AnalyticScene& scene) {
+  Prediction p;
+  p.force_model = scene.force;
+  p.width_m = scene.width_m;
+  p.uncut_chip_thickness_m = scene.uncut_chip_thickness_m;
+  p.has_friction = scene.friction_angle_rad.has_value();
+  p.friction_angle_rad = scene.friction_angle_rad.value_or(0.0);
+  const double t0 = scene.uncut_chip_thickness_m;
+  if (scene.turning) round_nose_chip(scene.turning->geometry, &p.guards);  // records the turning guard
+
+  if (scene.force == ForceModel::oxley || scene.deformation == DeformationModel::oxley) {
+    throw ModelError("oxley", "the extended Oxley solver is not built into this version yet");
+  }
+
+  // Nominal shear angle and chip ratio.
+  const double beta = p.friction_angle_rad;
+  if (scene.shear_angle == ShearAngleSource::chip_ratio) {
+    p.chip_ratio = *scene.chip_ratio;
+    p.shear_angle_rad = shear_angle_from_chip_ratio(p.chip_ratio, scene.rake_rad);
+  } else {
+    const auto model =
+        scene.shear_angle == ShearAngleSource::merchant ? ShearAngleModel::merchant : ShearAngleModel::lee_shaffer;
+    p.shear_angle_rad = shear_angle(model, scene.rake_rad, beta);
+    check_shear_angle(p.shear_angle_rad, scene);
+    p.chip_ratio = chip_ratio_from_shear_angle(p.shear_angle_rad, scene.rake_rad);
+  }
+  check_shear_angle(p.shear_angle_rad, scene);
+  p.chip_thickness_m = t0 / p.chip_ratio;
+
+  p.state = scene.deformation == DeformationModel::given ? *scene.given_state
+                                                         : shear_plane_state(scene, p.shear_angle_rad);
+  p.flow = flow_stress(scene.flow_stress, p.state, &p.guards);
+  const double k_s = p.flow.shear_Pa;
+
+  ForcePerWidth per_width;
+  if (scene.force == ForceModel::merchant) {
+    per_width = sharp_tool_force_per_width(k_s, t0, p.shear_angle_rad, beta, scene.rake_rad);
+    if (scene.edge_radius_m > kSharpEdgeRatio * t0) {
+      p.warnings.push_back(fmt::format("edge radius is {:.0f} % of the uncut chip thickness: the sharp-tool model "
+                                       "ignores it (use models.force = liu_li)",
+                                       100.0 * scene.edge_radius_m / t0));
+    }
+  } else {
+    LiuLiParams params = scene.liu_li;
+    params.rake_rad = scene.rake_rad;
+    params.edge_radius_m = scene.edge_radius_m;
+    params.chip_ratio = p.chip_ratio;
+    p.liu_li = liu_li_force_per_width(params, k_s, t0, &p.guards);
+    per_width = p.liu_li->total;
+  }
+  p.cutting_force_N = per_width.cutting_N_per_m * scene.width_m;
+  p.thrust_force_N = per_width.thrust_N_per_m * scene.width_m;
+
+  for (const auto& request : scene.contact_lengths) {
+    const double phi = shear_angle(request.shear_angle, scene.rake_rad, beta);
+    p.contact_lengths_m.emplace_back(request.column, contact_length(request.model, t0, phi, beta, scene.rake_rad));
+  }
+  if (!scene.contact_lengths.empty() && t0 > kContactLengthValidatedThickness_m) {
+    p.warnings.push_back("contact-length models were validated up to h = 0.1 mm (seed 003: chip segmentation above)");
+  }
+  return p;
+}
+
+std::vector<std::pair<std::string, std::string>> prediction_columns(const AnalyticScene& scene, const Prediction& p) {
+  std::vector<std::pair<std::string, std::string>> row;
+  const auto add = [&](std::string name, double value) { row.emplace_back(std::move(name), csv_number(value)); };
+  const auto add_text = [&](std::string name, std::string text) { row.emplace_back(std::move(name), csv_escape(text)); };
+  const double width_mm = units::m_to_mm(p.width_m);
+
+  add_text("force_model", std::string(force_model_name(p.force_model)));
+  add("uncut_chip_thickness_um", units::m_to_um(p.uncut_chip_thickness_m));
+  add("width_mm", width_mm);
+  add("cutting_force_N", p.cutting_force_N);
+  add("thrust_force_N", p.thrust_force_N);
+  add("cutting_force_N_per_mm", p.cutting_force_N / width_mm);
+  add("thrust_force_N_per_mm", p.thrust_force_N / width_mm);
+  add("shear_angle_deg", units::rad_to_deg(p.shear_angle_rad));
+  row.emplace_back("friction_angle_deg", p.has_friction ? csv_number(units::rad_to_deg(p.friction_angle_rad)) : "");
+  add("chip_ratio", p.chip_ratio);
+  add("chip_thickness_um", units::m_to_um(p.chip_thickness_m));
+  add("flow_stress_MPa", units::pa_to_mpa(p.flow.total_Pa));
+  add("shear_flow_stress_MPa", units::pa_to_mpa(p.flow.shear_Pa));
+  if (scene.flow_stress.johnson_cook) add("johnson_cook_stress_MPa", units::pa_to_mpa(p.flow.johnson_cook_Pa));
+  if (scene.flow_stress.hall_petch) add("hall_petch_stress_MPa", units::pa_to_mpa(p.flow.hall_petch_Pa));
+  if (scene.flow_stress.dislocation) add("dislocation_stress_MPa", units::pa_to_mpa(p.flow.dislocation_Pa));
+  add("strain", p.state.strain);
+  add("strain_rate_per_s", p.state.strain_rate_per_s);
+  add("temperature_K", p.state.temperature_K);
+  for (std::size_t i = 0; i < scene.contact_lengths.size(); ++i) {
+    row.emplace_back(scene.contact_lengths[i].column,
+                     i < p.contact_lengths_m.size() ? csv_number(units::m_to_mm(p.contact_lengths_m[i].second)) : "");
+  }
+  // The columns follow the models the scene asked for ('auto' may choose differently point by point).
+  const auto optional_number = [](bool present, double value) { return present ? csv_number(value) : std::string(); };
+  if (scene.force == ForceModel::liu_li || scene.force_auto) {
+    const bool has = p.liu_li.has_value();
+    const LiuLiResult l = p.liu_li.value_or(LiuLiResult{});
+    add_text("friction_closure", friction_closure_names()[static_cast<int>(scene.liu_li.closure)]);
+    add_text("lower_limit_rule", lower_limit_rule_names()[static_cast<int>(scene.liu_li.lower_limit)]);
+    row.emplace_back("lower_limit_deg", optional_number(has, units::rad_to_deg(l.lower_limit_rad)));
+    row.emplace_back("upper_limit_deg", optional_number(has, units::rad_to_deg(l.upper_limit_rad)));
+    row.emplace_back("stagnation_angle_deg", optional_number(has, units::rad_to_deg(l.stagnation_angle_rad)));
+    row.emplace_back("pole_deg", optional_number(has && l.pole_rad, units::rad_to_deg(l.pole_rad.value_or(0.0))));
+    row.emplace_back("ploughed_thickness_um", optional_number(has, units::m_to_um(l.ploughed_thickness_m)));
+    row.emplace_back("edge_cutting_force_N", optional_number(has, l.edge.cutting_N_per_m * p.width_m));
+    row.emplace_back("edge_thrust_force_N", optional_number(has, l.edge.thrust_N_per_m * p.width_m));
+  }
+  if (scene.force == ForceModel::oxley || scene.force_auto || scene.deformation == DeformationModel::oxley) {
+    const bool has = p.oxley.has_value();
+    const OxleyDetails o = p.oxley.value_or(OxleyDetails{});
+    row.emplace_back("strain_rate_constant_C0", optional_number(has, o.strain_rate_constant_C0));
+    row.emplace_back("secondary_zone_ratio_delta", optional_number(has, o.delta));
+    row.emplace_back("interface_temperature_K", optional_number(has, o.interface_temperature_K));
+    row.emplace_back("contact_length_oxley_mm", optional_number(has, units::m_to_mm(o.contact_length_m)));
+    row.emplace_back("oxley_residual", optional_number(has, o.residual));
+  }
+  if (scene.turning) {
+    add("feed_um_per_rev", units::m_to_um(scene.turning->geometry.feed_m_per_rev));
+    add("depth_of_cut_um", units::m_to_um(scene.turning->geometry.depth_of_cut_m));
+    add("maximum_chip_thickness_um", units::m_to_um(scene.turning->chip.maximum_thickness_m));
+    add("equivalent_chip_thickness_um", units::m_to_um(scene.turning->chip.equivalent_thickness_m));
+    add("engaged_edge_length_mm", units::m_to_mm(scene.turning->chip.engaged_edge_length_m));
+  }
+  add_text("guards", p.guards.names());
+  std::string warnings;
+  for (const auto& w : p.warnings) warnings += (warnings.empty() ? "" : "; ") + w;
+  add_text("warnings", warnings);
+  return row;
+}
+
+}  // namespace kerf

@@ -1,0 +1,44 @@
+#include "kerf/analytic/registry.hpp"
+
+namespace kerf {
+
+const std::vector<AnalyticModelInfo>& analytic_models() {
+  static const std::vector<AnalyticModelInfo> models = {
+      // kind, name, summary, needs
+      {"force", "auto", "the cheapest valid force model: oxley without friction data, merchant for a sharp edge "
+                        "(r < 5 % of t0), else liu_li", "as the chosen model"},
+      {"force", "merchant", "sharp-tool Merchant force circle", "flow stress, friction, shear angle"},
+      {"force", "liu_li", "Liu-Li edge-radius model, seed 001 Eqs. 1-3", "flow stress, friction, shear angle or chip ratio"},
+      {"force", "oxley", "extended Oxley theory with Johnson-Cook (Lalwani et al. 2009), sharp tool",
+       "material johnson_cook, thermal and oxley groups"},
+      {"flow_stress", "johnson_cook", "Johnson-Cook, seed 001 Eq. 9", "material johnson_cook group; a deformation state"},
+      {"flow_stress", "hall_petch", "Hall-Petch with K_HP from seed 001 Eqs. 10-11", "material microstructure and elastic groups"},
+      {"flow_stress", "dislocation", "incidental-boundary strengthening, seed 001 Eqs. 4-6", "material microstructure and elastic groups"},
+      {"deformation", "room_temperature", "T = workpiece temperature, shear-plane strain of the shear angle, "
+                                          "Oxley's strain-rate estimate with C0 = 5 unless cut.strain_rate_per_s is given", ""},
+      {"deformation", "given", "cut.strain, cut.strain_rate_per_s and cut.temperature_K as given", "those keys"},
+      {"deformation", "oxley", "zone AB strain, strain rate and temperature of an extended Oxley solve",
+       "material johnson_cook, thermal and oxley groups"},
+      {"shear_angle", "merchant", "minimum energy (MEP), seed 003 Eq. 4", "friction"},
+      {"shear_angle", "lee_shaffer", "maximum shear stress (MSSP), seed 003 Eq. 4", "friction"},
+      {"shear_angle", "chip_ratio", "from a measured chip ratio, seed 001 Eq. 3", "cut.chip_ratio"},
+      {"friction_closure", "constant", "beta_k = beta along the edge (has a pole: ploughing below it)", "friction"},
+      {"friction_closure", "merchant", "2 phi_k + beta_k - gamma_k = pi/2 along the edge", ""},
+      {"friction_closure", "lee_shaffer", "phi_k + beta_k - gamma_k = pi/4 along the edge", ""},
+      {"lower_limit", "stagnation", "integrate from the stagnation point -(pi/4 + beta/2) (Son, Lim & Ahn 2005)", "friction"},
+      {"lower_limit", "pole", "integrate from just above the pole (or -pi/2)", "models.lower_limit_margin_deg"},
+      {"contact_length", "altintas", "Altintas, seed 003 Eq. 1 (suffix _mep or _mssp picks the shear angle)", "friction"},
+      {"contact_length", "vinogradov", "Vinogradov, seed 003 Eq. 2 (suffix _mep or _mssp)", "friction"},
+      {"contact_length", "lee_shaffer", "Lee and Shaffer, seed 003 Eq. 3 (suffix _mep or _mssp)", "friction"},
+  };
+  return models;
+}
+
+std::vector<std::string> analytic_model_names(std::string_view kind) {
+  std::vector<std::string> names;
+  for (const auto& m : analytic_models())
+    if (m.kind == kind) names.emplace_back(m.name);
+  return names;
+}
+
+}  // namespace kerf

@@ -1,0 +1,39 @@
+#pragma once
+// Builds the analytic models' parameter structs from a material record, validating each group once and
+// rejecting unknown keys (errors name the path, e.g. "material.johnson_cook.A_MPa").
+//
+//   auto record = kerf::load_material(kerf::Json("aisi_1045"), "material");
+//   kerf::JohnsonCookParams jc = kerf::johnson_cook_from_material(record, "material");
+#include <string>
+
+#include "kerf/analytic/dislocation.hpp"
+#include "kerf/analytic/hall_petch.hpp"
+#include "kerf/analytic/johnson_cook.hpp"
+#include "kerf/analytic/thermal.hpp"
+#include "kerf/material.hpp"
+
+namespace kerf {
+
+struct ElasticProperties {
+  double youngs_modulus_Pa = 0.0;
+  double poissons_ratio = 0.0;
+  double shear_modulus_Pa = 0.0;  ///< given, or E / (2 (1 + nu))
+};
+
+struct MicrostructureModels {
+  HallPetchParams hall_petch;
+  DislocationParams dislocation;
+};
+
+struct OxleyHeatFactors {
+  double eta = 0.9;
+  double psi = 0.9;
+};
+
+ElasticProperties elastic_from_material(const MaterialRecord& material, const std::string& path);
+JohnsonCookParams johnson_cook_from_material(const MaterialRecord& material, const std::string& path);
+ThermalProperties thermal_from_material(const MaterialRecord& material, const std::string& path);
+MicrostructureModels microstructure_from_material(const MaterialRecord& material, const std::string& path);
+OxleyHeatFactors oxley_factors_from_material(const MaterialRecord& material, const std::string& path);
+
+}  // namespace kerf

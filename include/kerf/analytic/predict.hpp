@@ -1,0 +1,54 @@
+#pragma once
+// Runs the models a scene names and gathers one prediction: forces for the scene's width, the state the
+// flow stress was evaluated at, contact lengths, the Liu-Li or Oxley details, guards and validity warnings.
+//
+//   kerf::Prediction p = kerf::predict(scene);
+//   auto row = kerf::prediction_columns(scene, p);   // [("cutting_force_N", "12.5"), ...] for CSV
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "kerf/analytic/flow_stress.hpp"
+#include "kerf/analytic/guards.hpp"
+#include "kerf/analytic/liu_li.hpp"
+#include "kerf/analytic/scene.hpp"
+
+namespace kerf {
+
+struct OxleyDetails {
+  double strain_rate_constant_C0 = 0.0;
+  double delta = 0.0;
+  double interface_temperature_K = 0.0;
+  double contact_length_m = 0.0;
+  double residual = 0.0;  ///< the larger relative residual of the two Oxley conditions
+};
+
+struct Prediction {
+  ForceModel force_model = ForceModel::liu_li;
+  double cutting_force_N = 0.0;
+  double thrust_force_N = 0.0;
+  double width_m = 0.0;
+  double uncut_chip_thickness_m = 0.0;
+  double shear_angle_rad = 0.0;
+  double friction_angle_rad = 0.0;  ///< NaN-free: 0 with has_friction false when the scene gave none
+  bool has_friction = false;
+  double chip_ratio = 0.0;
+  double chip_thickness_m = 0.0;
+  DeformationState state;
+  FlowStress flow;
+  std::vector<std::pair<std::string, double>> contact_lengths_m;  ///< (column, value)
+  std::optional<LiuLiResult> liu_li;
+  std::optional<OxleyDetails> oxley;
+  Guards guards;
+  std::vector<std::string> warnings;
+};
+
+/// Throws InputError for input the models cannot accept and ModelError when a solver fails.
+Prediction predict(const AnalyticScene& scene);
+
+/// One CSV row: (column name with unit, formatted value). The column set depends only on the scene's
+/// model choices, so every row of a sweep has the same columns.
+std::vector<std::pair<std::string, std::string>> prediction_columns(const AnalyticScene& scene, const Prediction& p);
+
+}  // namespace kerf

@@ -1,0 +1,95 @@
+#pragma once
+// An analytic scene: the JSON file a user writes (documented key by key in docs/scenes.md), validated into
+// SI parameter structs. Only the models the scene names are built.
+//
+//   kerf::Json doc = kerf::read_json_file("data/scenes/psic_liu_li.json");
+//   kerf::apply_override(doc, "tool.edge_radius_um=0.2");
+//   kerf::AnalyticScene scene = kerf::parse_analytic_scene(doc);
+//   kerf::Prediction p = kerf::predict(scene);                      // predict.hpp
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "kerf/analytic/contact_length.hpp"
+#include "kerf/analytic/flow_stress.hpp"
+#include "kerf/analytic/liu_li.hpp"
+#include "kerf/analytic/material_models.hpp"
+#include "kerf/analytic/round_nose.hpp"
+#include "kerf/analytic/shear_angle.hpp"
+#include "kerf/analytic/thermal.hpp"
+#include "kerf/material.hpp"
+
+namespace kerf {
+
+enum class ForceModel { merchant, liu_li, oxley };
+enum class DeformationModel { room_temperature, given, oxley };
+enum class ShearAngleSource { merchant, lee_shaffer, chip_ratio };
+enum class TurningThickness { equivalent, maximum };
+
+std::string_view force_model_name(ForceModel model);
+
+/// One requested contact-length column: the model and the shear-angle relation (MEP or MSSP) it uses.
+struct ContactLengthRequest {
+  ContactLengthModel model;
+  ShearAngleModel shear_angle;  ///< merchant = MEP, lee_shaffer = MSSP
+  std::string column;           ///< "contact_length_lee_shaffer_mm"
+};
+
+struct TurningScene {
+  RoundNoseTurning geometry;
+  TurningThickness thickness = TurningThickness::equivalent;
+  TurningChip chip;
+};
+
+struct AnalyticScene {
+  MaterialRecord material;
+
+  // Tool
+  double rake_rad = 0.0;
+  double edge_radius_m = 0.0;
+  double clearance_rad = 0.0;
+
+  // Cut (for turning, thickness and width come from the round-nose chip)
+  double uncut_chip_thickness_m = 0.0;
+  double width_m = 0.0;
+  double speed_m_per_s = 0.0;
+  double workpiece_temperature_K = 293.15;
+  std::optional<TurningScene> turning;
+  std::optional<double> friction_angle_rad;  ///< given, from a friction coefficient, or from measured forces
+  std::string friction_origin;               ///< "friction_angle_deg", "friction_coefficient", "measured forces"
+  std::optional<double> chip_ratio;
+  std::optional<DeformationState> given_state;
+  std::optional<double> given_strain_rate_per_s;  ///< for the room_temperature deformation model
+
+  // Models
+  ForceModel force = ForceModel::liu_li;
+  bool force_auto = false;          ///< the scene asked for 'auto' (CSV columns then cover every choice)
+  std::string force_choice_reason;  ///< why 'auto' chose the force model (empty when named)
+  FlowStressModel flow_stress;
+  std::vector<std::string> flow_stress_terms;
+  DeformationModel deformation = DeformationModel::room_temperature;
+  ShearAngleSource shear_angle = ShearAngleSource::merchant;
+  LiuLiParams liu_li;  ///< closure, lower limit, margin, quadrature (geometry filled at prediction)
+  std::vector<ContactLengthRequest> contact_lengths;
+
+  // Oxley's material side (filled when force or deformation is 'oxley')
+  std::optional<ThermalProperties> thermal;
+  OxleyHeatFactors oxley_factors;
+  double oxley_tolerance = 1e-8;
+};
+
+/// Caches library materials between scenes of a sweep (a file is read once).
+class MaterialCache {
+ public:
+  const MaterialRecord& get(const Json& spec, const std::string& path);
+
+ private:
+  std::map<std::string, std::shared_ptr<const MaterialRecord>> records_;
+};
+
+/// Validates a scene document. Throws InputError naming the first bad field.
+AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache = nullptr);
+
+}  // namespace kerf
