@@ -1,0 +1,165 @@
+#include "kerf/analytic/scene.hpp"
+
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "kerf/analytic/predict.hpp"
+#include "kerf/error.hpp"
+#include "kerf/units.hpp"
+
+using Catch::Matchers::Contains;
+using Catch::Matchers::WithinRel;
+using kerf::Json;
+
+namespace {
+Json orthogonal_scene() {
+  return Json::parse(R"({
+    "material": "psic",
+    "tool": {"rake_deg": 0, "edge_radius_um": 0.2},
+    "cut": {"uncut_chip_thickness_um": 0.1, "width_mm": 1, "speed_m_per_min": 60, "friction_coefficient": 0.35},
+    "models": {"force": "liu_li", "flow_stress": ["johnson_cook", "hall_petch", "dislocation"]}
+  })");
+}
+}  // namespace
+
+TEST_CASE("A scene builds only the flow-stress terms it names", "[scene]") {
+  auto doc = orthogonal_scene();
+  doc["models"]["flow_stress"] = Json::array({"hall_petch"});
+  const auto scene = kerf::parse_analytic_scene(doc);
+  CHECK_FALSE(scene.flow_stress.johnson_cook.has_value());
+  CHECK(scene.flow_stress.hall_petch.has_value());
+  CHECK_FALSE(scene.flow_stress.dislocation.has_value());
+  const auto p = kerf::predict(scene);
+  CHECK(p.flow.johnson_cook_Pa == 0.0);
+  CHECK(p.flow.total_Pa == p.flow.hall_petch_Pa);
+}
+
+TEST_CASE("Forces scale with the width; per-width columns do not", "[scene]") {
+  auto doc = orthogonal_scene();
+  const auto narrow = kerf::predict(kerf::parse_analytic_scene(doc));
+  doc["cut"]["width_mm"] = 3.0;
+  const auto wide = kerf::predict(kerf::parse_analytic_scene(doc));
+  CHECK_THAT(wide.cutting_force_N, WithinRel(3.0 * narrow.cutting_force_N, 1e-12));
+  CHECK_THAT(wide.thrust_force_N, WithinRel(3.0 * narrow.thrust_force_N, 1e-12));
+}
+
+TEST_CASE("models.force = auto picks the cheapest valid model", "[scene][registry]") {
+  auto doc = orthogonal_scene();
+  doc["models"]["force"] = "auto";
+  doc["tool"]["edge_radius_um"] = 0.001;  // 1 % of t0: sharp
+  CHECK(kerf::parse_analytic_scene(doc).force == kerf::ForceModel::merchant);
+  doc["tool"]["edge_radius_um"] = 0.2;
+  CHECK(kerf::parse_analytic_scene(doc).force == kerf::ForceModel::liu_li);
+  doc["cut"].erase("friction_coefficient");
+  doc["material"] = "aisi_1045";
+  doc["models"]["flow_stress"] = "johnson_cook";
+  CHECK(kerf::parse_analytic_scene(doc).force == kerf::ForceModel::oxley);
+}
+
+TEST_CASE("Merchant and Liu-Li agree for a sharp edge", "[scene]") {
+  auto doc = orthogonal_scene();
+  doc["tool"]["edge_radius_um"] = 0.0;
+  const auto liu_li = kerf::predict(kerf::parse_analytic_scene(doc));
+  doc["models"]["force"] = "merchant";
+  const auto merchant = kerf::predict(kerf::parse_analytic_scene(doc));
+  CHECK_THAT(liu_li.cutting_force_N, WithinRel(merchant.cutting_force_N, 1e-12));
+  CHECK_THAT(liu_li.thrust_force_N, WithinRel(merchant.thrust_force_N, 1e-12));
+}
+
+TEST_CASE("Friction from measured forces follows seed 003", "[scene]") {
+  auto doc = orthogonal_scene();
+  doc["cut"].erase("friction_coefficient");
+  doc["tool"]["rake_deg"] = 15.0;
+  doc["measured"] = {{"cutting_force_N", 200.0}, {"thrust_force_N", 100.0}};
+  const auto scene = kerf::parse_analytic_scene(doc);
+  CHECK_THAT(*scene.friction_angle_rad, WithinRel(std::atan(0.5) + kerf::units::deg_to_rad(15.0), 1e-14));
+  doc["cut"]["friction_angle_deg"] = 20.0;
+  CHECK_THROWS_AS(kerf::parse_analytic_scene(doc), kerf::InputError);
+}
+
+TEST_CASE("Scene errors name the field", "[scene]") {
+  auto doc = orthogonal_scene();
+  doc["cut"]["speed_m_per_min"] = -1.0;
+  CHECK_THROWS_WITH(kerf::parse_analytic_scene(doc), Contains("cut.speed_m_per_min = -1"));
+  doc = orthogonal_scene();
+  doc["models"]["contact_length"] = Json::array({"lee_shafer"});
+  CHECK_THROWS_WITH(kerf::parse_analytic_scene(doc), Contains("did you mean 'lee_shaffer'?"));
+  doc = orthogonal_scene();
+  doc["cut"]["turning"] = {{"feed_um_per_rev", 0.25}, {"nose_radius_mm", 0.5}, {"depth_of_cut_um", 10}};
+  CHECK_THROWS_WITH(kerf::parse_analytic_scene(doc), Contains("cut.uncut_chip_thickness_um"));
+  doc = orthogonal_scene();
+  doc["models"]["shear_angle"] = "chip_ratio";
+  CHECK_THROWS_WITH(kerf::parse_analytic_scene(doc), Contains("cut.chip_ratio"));
+}
+
+TEST_CASE("A turning scene cuts the equivalent chip over the engaged edge", "[scene][round_nose]") {
+  auto doc = orthogonal_scene();
+  doc["cut"].erase("uncut_chip_thickness_um");
+  doc["cut"].erase("width_mm");
+  doc["cut"]["turning"] = {{"feed_um_per_rev", 0.25}, {"nose_radius_mm", 0.5}, {"depth_of_cut_um", 10}};
+  const auto scene = kerf::parse_analytic_scene(doc);
+  REQUIRE(scene.turning.has_value());
+  CHECK_THAT(scene.width_m, WithinRel(scene.turning->chip.engaged_edge_length_m, 1e-12));
+  CHECK_THAT(scene.uncut_chip_thickness_m * scene.width_m, WithinRel(0.25e-6 * 10e-6, 1e-12));
+  // Forces rise with depth of cut (seed 001 Figs. 4-5). A 5 nm edge keeps the ploughed layer (about 1 nm)
+  // below the equivalent chip thickness of the shallowest cut (about 6 nm).
+  doc["tool"]["edge_radius_um"] = 0.005;
+  double previous = 0.0;
+  for (double depth_um : {0.5, 5.0, 50.0, 300.0}) {
+    doc["cut"]["turning"]["depth_of_cut_um"] = depth_um;
+    const auto p = kerf::predict(kerf::parse_analytic_scene(doc));
+    CHECK(p.cutting_force_N > previous);
+    previous = p.cutting_force_N;
+  }
+}
+
+TEST_CASE("Extreme inputs give a finite result or a clean error, never NaN", "[scene][extremes]") {
+  // Issue 2: t0 1 nm - 1 mm, r 0 - 100 um, rake -60 - +30 deg, T up to T_melt, grains 1 nm - 1 mm.
+  int finite = 0, refused = 0;
+  for (const char* force : {"merchant", "liu_li"}) {
+    for (double t0_um : {1e-3, 1e-1, 10.0, 1000.0}) {
+      for (double radius_um : {0.0, 0.05, 5.0, 100.0}) {
+        for (double rake_deg : {-60.0, -20.0, 0.0, 30.0}) {
+          for (double temperature_K : {200.0, 293.15, 1500.0, 3003.0}) {
+            for (double grain_um : {1e-3, 1.0, 1000.0}) {
+              Json doc = orthogonal_scene();
+              doc["models"]["force"] = force;
+              doc["models"]["deformation"] = "given";
+              doc["cut"]["strain"] = 1.0;
+              doc["cut"]["strain_rate_per_s"] = 1e6;
+              doc["cut"]["temperature_K"] = temperature_K;
+              doc["cut"]["uncut_chip_thickness_um"] = t0_um;
+              doc["tool"]["edge_radius_um"] = radius_um;
+              doc["tool"]["rake_deg"] = rake_deg;
+              // An inline copy of p-SiC with the grain size varied.
+              try {
+                Json material = Json::parse(R"({"name": "psic_variant",
+                  "elastic": {"youngs_modulus_GPa": 410, "poissons_ratio": 0.14},
+                  "johnson_cook": {"A_MPa": 8000, "B_MPa": 0, "n": 1, "C": 0, "m": 1,
+                    "reference_strain_rate_per_s": 1, "room_temperature_K": 293.15, "melting_temperature_K": 3003},
+                  "microstructure": {"burgers_vector_nm": 0.308, "misorientation_deg": 2.5}})");
+                material["microstructure"]["grain_size_um"] = grain_um;
+                doc["material"] = material;
+                const auto p = kerf::predict(kerf::parse_analytic_scene(doc));
+                CHECK(std::isfinite(p.cutting_force_N));
+                CHECK(std::isfinite(p.thrust_force_N));
+                CHECK(std::isfinite(p.flow.total_Pa));
+                for (const auto& [name, value] : kerf::prediction_columns(kerf::parse_analytic_scene(doc), p)) {
+                  INFO(name);
+                  CHECK(value.find("nan") == std::string::npos);
+                  CHECK(value.find("inf") == std::string::npos);
+                }
+                ++finite;
+              } catch (const kerf::InputError& e) {
+                ++refused;
+                CHECK(std::string(e.what()).find(" = ") != std::string::npos);  // names a field and its value
+              }
+            }
+          }
+        }
+      }
+    }
+  }
+  INFO("finite " << finite << ", refused " << refused);
+  CHECK(finite > 1000);
+}
