@@ -196,7 +196,7 @@ AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
         quadrature->get_choice_or("rule", "gauss_kronrod", quadrature_rule_names()), quadrature_rule_names());
     scene.liu_li.quadrature.relative_tolerance =
         quadrature->get_number_or("tolerance", 1e-8, Range::open(0.0, 1.0), "(relative)");
-    scene.liu_li.quadrature.max_depth = quadrature->get_int_or("max_depth", 15, 1, 30);
+    scene.liu_li.quadrature.max_depth = quadrature->get_int_or("max_depth", 15, 1, 20);
     quadrature->finish();
   }
   scene.oxley_tolerance = models.get_number_or("oxley_tolerance", 1e-8, Range::open(0.0, 1e-2), "(relative)");
