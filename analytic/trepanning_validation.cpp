@@ -132,7 +132,8 @@ TrepanningValidation run_trepanning_validation(const std::filesystem::path& case
   const WidthBasis wall = WidthBasis::total((tool.outer_diameter_m - tool.inner_diameter_m) / 2.0);
   const std::vector<WidthBasis> bases = {wall, WidthBasis::none()};
   const std::vector<std::string> citations = table.comments;
-  DataSet measured{"measured (Table 4, mean of two tests)", table.source, citations, bases, {}};
+  const std::string source = std::filesystem::path(table.source).filename().string();
+  DataSet measured{"measured (Table 4, mean of two tests)", source, citations, bases, {}};
   DataSet fit{"kerf Eqs. 21–22, fitted", "",
               {fmt::format("kerf: analytic/trepanning.cpp with K_F = {:.4f} GPa and K_M = {:.4f} GPa, fitted to the "
                            "measured rows by {} least squares (GSL gsl_multifit_wlinear)",
@@ -140,7 +141,7 @@ TrepanningValidation run_trepanning_validation(const std::filesystem::path& case
                            units::pa_to_gpa(v.measured_fit.groups.torque_group_Pa), weighting_name)},
               bases, {}};
   DataSet loo{"kerf, leave-one-out", "", {"each row predicted with the groups fitted to the other rows"}, bases, {}};
-  DataSet paper{"paper's theory (Table 4)", table.source, {"the theoretical column of Table 4 (Eqs. 21–22 with the paper's unprinted H, φ, μ)"}, bases, {}};
+  DataSet paper{"paper's theory (Table 4)", source, {"the theoretical column of Table 4 (Eqs. 21–22 with the paper's unprinted H, φ, μ)"}, bases, {}};
   for (std::size_t i = 0; i < measured_rows.size(); ++i) {
     const auto cond = conditions_of(measured_rows[i].cut);
     const std::size_t line = table.row_lines[i];

@@ -3,8 +3,10 @@
 // shaded bands, a legend, axis labels with units. A figure is described by a FigureSpec and rendered in one
 // call; the file is written atomically (a temporary file beside it, then a rename).
 //
-//   kerf::FigureSpec fig{.title = "Parity", .x_label = "Measured F#dn#u (N)", .y_label = "Predicted F#dn#u (N)"};
-//   fig.series.push_back({.label = "kerf", .x = measured, .y = predicted, .style = kerf::SeriesStyle::points});
+//   kerf::FigureSpec fig;
+//   fig.title = "Parity";
+//   fig.x_label = "F#dn#u, measured (N)";   // F subscript n
+//   fig.series.push_back({"kerf", measured, predicted, {}, {}, kerf::SeriesStyle::points, 0, 0});
 //   kerf::render_png(fig, "out/parity_axial_force.png");
 //
 // Labels are UTF-8 with PLplot's escapes (#d subscript, #u superscript). PLplot keeps its state in the library;

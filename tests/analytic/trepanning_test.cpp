@@ -104,7 +104,7 @@ TEST_CASE("Fitted to the measured rows the model meets the paper's accuracy", "[
   CHECK(cal.axial.standard_error_Pa < 0.05 * cal.axial.value_Pa);
 }
 
-TEST_CASE("The relative fit minimises the squared relative residuals; the absolute fit the absolute ones",
+TEST_CASE("The relative fit minimises the squared relative residuals, the absolute fit the absolute ones",
           "[trepanning]") {
   const auto rows = observations(false);
   for (auto weighting : {kerf::ResidualWeighting::relative, kerf::ResidualWeighting::absolute}) {
@@ -167,7 +167,7 @@ TEST_CASE("Force is linear in v_f / n_0 and torque scales with D^2 - d^2", "[tre
   CHECK(thin.axial_force_N < 1e-6 * base.axial_force_N);
 }
 
-TEST_CASE("Friction raises only the torque; hardness raises both", "[trepanning][physics]") {
+TEST_CASE("Friction raises only the torque, hardness raises both", "[trepanning][physics]") {
   const auto cut = kerf::TrepanningCut::from_user_units(15.0, 90.5);
   const kerf::TrepanningMaterial dry{7e9, 1.0, 0.0}, wet{7e9, 1.0, 0.3}, hard{14e9, 1.0, 0.0};
   const auto a = kerf::trepanning_forces(kPaperTool, cut, dry);
