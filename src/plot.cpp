@@ -89,14 +89,44 @@ Points finite_points(const PlotSeries& s) {
   return p;
 }
 
+/// The inside corner whose box (45 % of the width, 40 % of the height) holds the fewest points and bands.
+std::string best_corner(const FigureSpec& fig, const std::pair<double, double>& xr, const std::pair<double, double>& yr) {
+  const std::array<std::string, 4> corners = {"top_left", "top_right", "bottom_right", "bottom_left"};
+  std::array<int, 4> counts{};
+  const auto count_point = [&](double x, double y) {
+    const double u = (x - xr.first) / (xr.second - xr.first), v = (y - yr.first) / (yr.second - yr.first);
+    if (u < 0.45 && v > 0.6) ++counts[0];
+    if (u > 0.55 && v > 0.6) ++counts[1];
+    if (u > 0.55 && v < 0.4) ++counts[2];
+    if (u < 0.45 && v < 0.4) ++counts[3];
+  };
+  for (const auto& s : fig.series) {
+    for (std::size_t i = 0; i < s.x.size(); ++i) {
+      if (std::isfinite(s.x[i]) && std::isfinite(s.y[i])) count_point(s.x[i], s.y[i]);
+    }
+  }
+  for (const auto& b : fig.bands) {
+    for (std::size_t i = 0; i < b.x.size(); ++i) {
+      count_point(b.x[i], b.y_low[i]);
+      count_point(b.x[i], b.y_high[i]);
+    }
+  }
+  std::size_t best = 0;
+  for (std::size_t k = 1; k < corners.size(); ++k) {
+    if (counts[k] < counts[best]) best = k;
+  }
+  return corners[best];
+}
+
 PLINT legend_position(const std::string& where) {
   PLINT inside = PL_POSITION_INSIDE;
   if (where == "outside_right") return PL_POSITION_OUTSIDE | PL_POSITION_RIGHT;
+  if (where == "best") return inside | PL_POSITION_TOP | PL_POSITION_RIGHT;  // resolved by best_corner() first
   if (where == "top_right") return inside | PL_POSITION_TOP | PL_POSITION_RIGHT;
   if (where == "bottom_right") return inside | PL_POSITION_BOTTOM | PL_POSITION_RIGHT;
   if (where == "bottom_left") return inside | PL_POSITION_BOTTOM | PL_POSITION_LEFT;
   if (where == "top_left") return inside | PL_POSITION_TOP | PL_POSITION_LEFT;
-  throw InputError("figure.legend_position", where, "one of 'top_left', 'top_right', 'bottom_right', 'bottom_left', 'outside_right'");
+  throw InputError("figure.legend_position", where, "one of 'best', 'top_left', 'top_right', 'bottom_right', 'bottom_left', 'outside_right'");
 }
 
 /// Draws markers as polygons (exactly centred, unlike text glyphs): `marker` 0-4 filled, 5-9 hollow.
@@ -138,10 +168,11 @@ void draw_markers(const Points& p, int marker, double radius_mm) {
   }
 }
 
-void draw(const FigureSpec& fig, const std::pair<double, double>& xr, const std::pair<double, double>& yr) {
+void draw(const FigureSpec& fig, const std::pair<double, double>& xr, const std::pair<double, double>& yr,
+          const std::string& legend_where) {
   pladv(0);
   const bool legend_outside = fig.legend_position == "outside_right";
-  plvpor(0.11, legend_outside ? 0.62 : 0.96, 0.12, 0.91);
+  plvpor(0.12, legend_outside ? 0.62 : 0.96, 0.12, 0.91);
   plwind(xr.first, xr.second, yr.first, yr.second);
 
   // Grid, then the bands, the data, and the frame on top.
@@ -202,7 +233,7 @@ void draw(const FigureSpec& fig, const std::pair<double, double>& xr, const std:
   plsmin(0.0, 1.0);
   plbox("bcnst", 0.0, 0, "bcnstv", 0.0, 0);
   plmtex("b", 2.9, 0.5, 0.5, fig.x_label.c_str());
-  plmtex("l", 4.4, 0.5, 0.5, fig.y_label.c_str());
+  plmtex("l", 4.6, 0.5, 0.5, fig.y_label.c_str());
   plschr(0.0, 1.45);
   plmtex("t", 1.4, 0.5, 0.5, fig.title.c_str());
   plschr(0.0, 1.25);
@@ -249,7 +280,7 @@ void draw(const FigureSpec& fig, const std::pair<double, double>& xr, const std:
   plscol0a(0, 255, 255, 255, 0.9);
   plschr(0.0, 1.0);
   pllegend(&legend_width, &legend_height, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX,
-           legend_position(fig.legend_position), legend_outside ? 0.03 : 0.02, 0.02, 0.07, 0, kBlack, 1, 0, 0, static_cast<PLINT>(n),
+           legend_position(legend_where), legend_outside ? 0.03 : 0.02, 0.02, 0.07, 0, kBlack, 1, 0, 0, static_cast<PLINT>(n),
            opts.data(), 1.0, 1.0, 1.8, 0.0, text_colors.data(), text_ptrs.data(), box_colors.data(),
            box_patterns.data(), box_scales.data(), box_widths.data(), line_colors.data(), line_styles.data(),
            line_widths.data(), symbol_colors.data(), symbol_scales.data(), symbol_numbers.data(),
@@ -331,7 +362,7 @@ void render_png(const FigureSpec& fig, const std::filesystem::path& path) {
   }
   plinit();
   plschr(0.0, 1.25);
-  draw(fig, xr, yr);
+  draw(fig, xr, yr, fig.legend_position == "best" ? best_corner(fig, xr, yr) : fig.legend_position);
   plend1();
   plsstrm(previous_stream);
 

@@ -416,9 +416,9 @@ std::vector<PlannedFigure> plan_figures(const Comparison& c) {
     pf.file = "parity_" + r.key + ".png";
     FigureSpec& fig = pf.figure;
     const std::string view_text = r.view == WidthView::per_unit_width ? " per unit width" : "";
-    fig.title = fmt::format("{}{}: predicted vs measured", qs.label, view_text);
-    fig.x_label = axis_label(qs.label + view_text + ", measured", r.unit);
-    fig.y_label = axis_label(qs.label + view_text + ", predicted", r.unit);
+    fig.title = fmt::format("{}{}", qs.label, view_text);
+    fig.x_label = axis_label("measured", r.unit);
+    fig.y_label = axis_label("predicted", r.unit);
     double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
     for (const auto& rr : c.results) {
       if (rr.key != r.key) continue;
@@ -549,7 +549,12 @@ std::vector<PlannedFigure> plan_figures(const Comparison& c) {
               line.y.push_back(g.predicted_stats.mean / rr.unit.si);
               line.y_error.push_back(g.predicted.size() >= 2 ? g.predicted_stats.standard_deviation / rr.unit.si : kNaN);
             }
-            // Sort by x for the joining line.
+            // Predicted points with error bars sit beside the measured ones (dodged by 1.2 % of the range per
+            // prediction) so that the bars stay readable; the tables and CSV carry the exact conditions.
+            const bool has_bars = std::any_of(line.y_error.begin(), line.y_error.end(), [](double e) { return std::isfinite(e); });
+            const double dodge = has_bars ? 0.012 * (x_hi - x_lo) * static_cast<double>(rr.prediction + 1) : 0.0;
+            for (auto& x : line.x) x += dodge;
+            // Sort by x.
             std::vector<std::size_t> idx(line.x.size());
             for (std::size_t k = 0; k < idx.size(); ++k) idx[k] = k;
             std::sort(idx.begin(), idx.end(), [&](std::size_t a, std::size_t b) { return line.x[a] < line.x[b]; });
@@ -564,14 +569,22 @@ std::vector<PlannedFigure> plan_figures(const Comparison& c) {
           fig.series.push_back(std::move(line));
         }
       }
-      bool decreasing = false;
-      if (!fig.series.empty() && fig.series.front().y.size() >= 2) {
-        decreasing = fig.series.front().y.back() < fig.series.front().y.front();
+      // Headroom above the data for the legend (forces start at zero).
+      double y_top = 0.0;
+      for (const auto& series : fig.series) {
+        for (std::size_t k = 0; k < series.y.size(); ++k) {
+          const double e = series.y_error.empty() || !std::isfinite(series.y_error[k]) ? 0.0 : series.y_error[k];
+          if (std::isfinite(series.y[k])) y_top = std::max(y_top, series.y[k] + e);
+        }
       }
-      fig.legend_position = decreasing ? "bottom_left" : "bottom_right";
+      if (y_top > 0.0) fig.y_max = y_top * (1.0 + 0.09 * static_cast<double>(fig.series.size()) + 0.08);
+      fig.legend_position = "best";
       pf.caption = fmt::format("{}{} against {}: measured{} and the model{}.", plain(qs.label), view_text,
                                plain(cs.label), r.n_with_scatter > 0 ? " means with ±1 SD error bars" : " points",
-                               c.predictions.front().curve ? " line" : "'s predicted points");
+                               c.predictions.front().curve
+                                   ? " line"
+                                   : "'s predicted points (hollow; with replicate runs drawn slightly to the right, error "
+                                     "bars ±1 SD)");
       figures.push_back(std::move(pf));
     }
   }

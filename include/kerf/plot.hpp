@@ -44,8 +44,9 @@ struct FigureSpec {
   std::vector<PlotSeries> series;   ///< drawn in order
   std::optional<double> x_min, x_max, y_min, y_max;  ///< default: the data range with a margin
   bool equal_axes = false;          ///< same range on both axes (parity plots)
-  /// top_left, top_right, bottom_right, bottom_left (inside the axes) or outside_right (beside a narrower plot)
-  std::string legend_position = "top_left";
+  /// best (the emptiest inside corner), top_left, top_right, bottom_right, bottom_left (inside the axes) or
+  /// outside_right (beside a narrower plot)
+  std::string legend_position = "best";
   int width_px = 1200, height_px = 900;
 };
 
