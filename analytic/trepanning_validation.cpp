@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "kerf/csv_table.hpp"
@@ -162,14 +163,20 @@ TrepanningValidation run_trepanning_validation(const std::filesystem::path& case
   const auto& mf = v.measured_fit;
   const auto& tf = v.theory_fit;
   std::string md = "## Calibration\n\n";
+  const ResidualWeighting other =
+      weighting == ResidualWeighting::relative ? ResidualWeighting::absolute : ResidualWeighting::relative;
+  const TrepanningCalibration alternative = calibrate_trepanning(tool, measured_rows, other);
+  const auto [min_axial, max_axial] = std::minmax_element(m_axial.begin(), m_axial.end());
   md += fmt::format(
       "The model is linear in each lumped group (F_n = (π/8) f (D − d) K_F, M = f (D² − d²) K_M / 16 with f = v_f / n), "
       "so each group is an exact weighted linear least-squares fit through the origin (GSL `gsl_multifit_wlinear`). "
-      "Weighting: **{}** residuals (weights 1/y²). The acceptance metric is a relative error, the measured values "
-      "span a factor of two (axial 210–421 N), and a dynamometer's scatter grows with the load; ordinary (absolute) "
-      "least squares would let the largest forces dominate. (With absolute residuals the fitted groups differ by "
-      "less than 0.5 % here.)\n\n",
-      weighting_name);
+      "Weighting: **{}** residuals. Relative residuals (weights 1/y²) are kerf's default: the acceptance metric is a "
+      "relative error, the measured axial forces span {:.0f}–{:.0f} N, and a dynamometer's scatter grows with the load; "
+      "ordinary (absolute) least squares lets the largest forces dominate. For comparison, {} residuals give "
+      "K_F = {:.4f} GPa and K_M = {:.4f} GPa, with mean |error| {} % (axial) and {} % (torque).\n\n",
+      weighting_name, *min_axial, *max_axial, residual_weighting_name(other),
+      units::pa_to_gpa(alternative.groups.axial_group_Pa), units::pa_to_gpa(alternative.groups.torque_group_Pa),
+      pct(alternative.axial.fit.mean_abs_error_pct), pct(alternative.torque.fit.mean_abs_error_pct));
   md += "| group | fitted to | value (GPa) | standard error (GPa) | mean abs error (%) | max abs error (%) | bias (%) | "
         "LOO mean abs error (%) | LOO max abs error (%) | LOO bias (%) |\n|---|---|---|---|---|---|---|---|---|---|\n";
   const auto row = [&](const char* name, const char* to, const GroupFit& g) {

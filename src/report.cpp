@@ -580,7 +580,7 @@ std::vector<PlannedFigure> plan_figures(const Comparison& c) {
       if (y_top > 0.0) fig.y_max = y_top * (1.0 + 0.09 * static_cast<double>(fig.series.size()) + 0.08);
       fig.legend_position = "best";
       pf.caption = fmt::format("{}{} against {}: measured{} and the model{}.", plain(qs.label), view_text,
-                               plain(cs.label), r.n_with_scatter > 0 ? " means with ±1 SD error bars" : " points",
+                               lower_first(plain(cs.label)), r.n_with_scatter > 0 ? " means with ±1 SD error bars" : " points",
                                c.predictions.front().curve
                                    ? " line"
                                    : "'s predicted points (hollow; with replicate runs drawn slightly to the right, error "
