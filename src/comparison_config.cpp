@@ -35,7 +35,7 @@ struct SideSpec {
 SideSpec read_side(ObjectReader& side, const ComparisonSpec& spec, const std::filesystem::path& base) {
   SideSpec out;
   out.file = side.get_string("file");
-  if (out.file.is_relative()) out.file = base / out.file;
+  if (out.file.is_relative()) out.file = (base / out.file).lexically_normal();
   out.binding.name = side.get_string("name");
   if (auto filter = side.find_object("filter")) {
     for (const auto& [column, value] : side.get("filter").items()) {

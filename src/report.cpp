@@ -604,7 +604,9 @@ std::string report_markdown(const Comparison& c, const ReportOptions& options,
   md += "## Data\n\n";
   const auto describe_set = [&](const DataSet& set, const std::string& role) {
     md += fmt::format("**{}: {}**{}\n\n", role, set.name, set.source.empty() ? "" : fmt::format(" (`{}`)", set.source));
-    if (!set.citations.empty()) {
+    if (&set != &c.measured && set.source == c.measured.source && set.citations == c.measured.citations) {
+      md += "> (the same file and citation as the measured data)\n\n";
+    } else if (!set.citations.empty()) {
       for (const auto& line : set.citations) md += "> " + line + "  \n";
       md += "\n";
     }
