@@ -1,0 +1,62 @@
+#include "kerf/analytic/trepanning_scene.hpp"
+
+#include "kerf/error.hpp"
+#include "kerf/units.hpp"
+
+namespace kerf {
+
+TrepanningScene parse_trepanning_scene(const Json& document) {
+  ObjectReader root(document, "");
+  root.ignore("description");
+  TrepanningScene scene;
+  scene.material = load_material(root.get("material"), "material");
+
+  ObjectReader tool = root.get_object("tool");
+  scene.tool.outer_diameter_m = units::mm_to_m(tool.get_number("outer_diameter_mm", Range::positive(), "mm"));
+  scene.tool.inner_diameter_m = units::mm_to_m(tool.get_number("inner_diameter_mm", Range::non_negative(), "mm"));
+  tool.finish();
+  scene.tool.validate("tool");
+
+  ObjectReader cut = root.get_object("cut");
+  scene.cut = TrepanningCut::from_user_units(cut.get_number("feed_rate_um_per_s", Range::positive(), "um/s"),
+                                             cut.get_number("spindle_speed_rpm", Range::positive(), "rev/min"));
+  cut.finish();
+  scene.cut.validate("cut");
+
+  ObjectReader models = root.get_object("models");
+  models.get_choice("force", {"trepanning"});
+  ObjectReader params = models.get_object("trepanning");
+  const bool has_groups = params.has("axial_group_MPa") || params.has("torque_group_MPa");
+  if (has_groups) {
+    scene.groups.axial_group_Pa = units::mpa_to_pa(params.get_number("axial_group_MPa", Range::positive(), "MPa"));
+    scene.groups.torque_group_Pa = units::mpa_to_pa(params.get_number("torque_group_MPa", Range::positive(), "MPa"));
+    scene.groups_origin = "models.trepanning.axial_group_MPa and torque_group_MPa";
+    params.ignore("origin");
+    params.finish();
+  } else {
+    TrepanningMaterial m;
+    if (auto h = params.get_optional_number("hardness_GPa", Range::positive(), "GPa")) {
+      m.hardness_Pa = units::gpa_to_pa(*h);
+    } else {
+      const Json& brittle = scene.material.require_group("brittle", "material", "the trepanning model's hardness");
+      if (!brittle.contains("hardness_GPa")) {
+        throw InputError("models.trepanning.hardness_GPa", "(missing, and not in the material)",
+                         "a hardness in GPa here or in the material's brittle.hardness_GPa");
+      }
+      m.hardness_Pa = units::gpa_to_pa(brittle.at("hardness_GPa").get<double>());
+    }
+    m.half_angle_rad = units::deg_to_rad(params.get_number("half_angle_deg", Range::open(0.0, 90.0), "deg"));
+    m.friction_coefficient = params.get_number("friction_coefficient", Range::non_negative(), "");
+    params.ignore("origin");
+    params.finish({"axial_group_MPa", "torque_group_MPa"});
+    m.validate("models.trepanning");
+    scene.material_params = m;
+    scene.groups = TrepanningGroups::from_material(m);
+    scene.groups_origin = "hardness, half angle and friction coefficient";
+  }
+  models.finish();
+  root.finish();
+  return scene;
+}
+
+}  // namespace kerf

@@ -1,0 +1,383 @@
+#include "kerf/plot.hpp"
+
+#include <fmt/format.h>
+#include <plplot.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <stdexcept>
+#include <system_error>
+
+#include "kerf/error.hpp"
+
+namespace kerf {
+
+namespace {
+
+// cmap0 layout: 0 background (white), 1 black (axes, text), 2 light grey (grid), 3.. the data palette
+// (Tableau 10: distinguishable, and safe for the common colour-vision deficiencies in its first five).
+constexpr int kBlack = 1, kGrid = 2, kPaletteStart = 3;
+constexpr std::array<std::array<int, 3>, 8> kPalette = {{{31, 119, 180},
+                                                         {255, 127, 14},
+                                                         {44, 160, 44},
+                                                         {214, 39, 40},
+                                                         {148, 103, 189},
+                                                         {127, 127, 127},
+                                                         {140, 86, 75},
+                                                         {227, 119, 194}}};
+constexpr int kBandStart = kPaletteStart + static_cast<int>(kPalette.size());  // the same colours, translucent
+constexpr std::array<const char*, 10> kMarkers = {"●", "▲", "■", "◆", "▼", "○", "△", "□", "◇", "▽"};
+
+int palette_index(int color) { return kPaletteStart + std::abs(color) % static_cast<int>(kPalette.size()); }
+int band_index(int color) { return kBandStart + std::abs(color) % static_cast<int>(kPalette.size()); }
+const char* marker_glyph(int marker) { return kMarkers[static_cast<std::size_t>(std::abs(marker)) % kMarkers.size()]; }
+
+struct Extent {
+  double lo = std::numeric_limits<double>::infinity(), hi = -std::numeric_limits<double>::infinity();
+  void add(double v) {
+    if (!std::isfinite(v)) return;
+    lo = std::min(lo, v);
+    hi = std::max(hi, v);
+  }
+  bool valid() const { return lo <= hi; }
+};
+
+void check_sizes(const PlotSeries& s, std::size_t index) {
+  const std::string field = fmt::format("figure.series[{}] '{}'", index, s.label);
+  if (s.x.size() != s.y.size()) {
+    throw InputError(field, fmt::format("{} x and {} y values", s.x.size(), s.y.size()), "as many x as y values");
+  }
+  if (!s.x_error.empty() && s.x_error.size() != s.x.size()) {
+    throw InputError(field + ".x_error", fmt::format("{} values", s.x_error.size()), "one per point or none");
+  }
+  if (!s.y_error.empty() && s.y_error.size() != s.y.size()) {
+    throw InputError(field + ".y_error", fmt::format("{} values", s.y_error.size()), "one per point or none");
+  }
+}
+
+double error_at(const std::vector<double>& e, std::size_t i) {
+  return e.empty() || !std::isfinite(e[i]) ? 0.0 : std::abs(e[i]);
+}
+
+/// [lo, hi] widened by a margin; a degenerate range is opened around its value.
+std::pair<double, double> padded(Extent e, double margin_fraction) {
+  if (e.hi - e.lo <= 1e-12 * std::max(std::abs(e.lo), std::abs(e.hi))) {
+    const double half = e.lo == 0.0 ? 1.0 : 0.1 * std::abs(e.lo);
+    return {e.lo - half, e.hi + half};
+  }
+  const double m = margin_fraction * (e.hi - e.lo);
+  return {e.lo - m, e.hi + m};
+}
+
+/// Finite points of a series (PLplot draws NaN as garbage).
+struct Points {
+  std::vector<PLFLT> x, y;
+  std::vector<std::size_t> index;
+};
+Points finite_points(const PlotSeries& s) {
+  Points p;
+  for (std::size_t i = 0; i < s.x.size(); ++i) {
+    if (std::isfinite(s.x[i]) && std::isfinite(s.y[i])) {
+      p.x.push_back(s.x[i]);
+      p.y.push_back(s.y[i]);
+      p.index.push_back(i);
+    }
+  }
+  return p;
+}
+
+/// The inside corner whose box (45 % of the width, 40 % of the height) holds the fewest points and bands.
+std::string best_corner(const FigureSpec& fig, const std::pair<double, double>& xr, const std::pair<double, double>& yr) {
+  const std::array<std::string, 4> corners = {"top_left", "top_right", "bottom_right", "bottom_left"};
+  std::array<int, 4> counts{};
+  const auto count_point = [&](double x, double y) {
+    const double u = (x - xr.first) / (xr.second - xr.first), v = (y - yr.first) / (yr.second - yr.first);
+    if (u < 0.45 && v > 0.6) ++counts[0];
+    if (u > 0.55 && v > 0.6) ++counts[1];
+    if (u > 0.55 && v < 0.4) ++counts[2];
+    if (u < 0.45 && v < 0.4) ++counts[3];
+  };
+  for (const auto& s : fig.series) {
+    for (std::size_t i = 0; i < s.x.size(); ++i) {
+      if (std::isfinite(s.x[i]) && std::isfinite(s.y[i])) count_point(s.x[i], s.y[i]);
+    }
+  }
+  for (const auto& b : fig.bands) {
+    for (std::size_t i = 0; i < b.x.size(); ++i) {
+      count_point(b.x[i], b.y_low[i]);
+      count_point(b.x[i], b.y_high[i]);
+    }
+  }
+  std::size_t best = 0;
+  for (std::size_t k = 1; k < corners.size(); ++k) {
+    if (counts[k] < counts[best]) best = k;
+  }
+  return corners[best];
+}
+
+PLINT legend_position(const std::string& where) {
+  PLINT inside = PL_POSITION_INSIDE;
+  if (where == "outside_right") return PL_POSITION_OUTSIDE | PL_POSITION_RIGHT;
+  if (where == "best") return inside | PL_POSITION_TOP | PL_POSITION_RIGHT;  // resolved by best_corner() first
+  if (where == "top_right") return inside | PL_POSITION_TOP | PL_POSITION_RIGHT;
+  if (where == "bottom_right") return inside | PL_POSITION_BOTTOM | PL_POSITION_RIGHT;
+  if (where == "bottom_left") return inside | PL_POSITION_BOTTOM | PL_POSITION_LEFT;
+  if (where == "top_left") return inside | PL_POSITION_TOP | PL_POSITION_LEFT;
+  throw InputError("figure.legend_position", where, "one of 'best', 'top_left', 'top_right', 'bottom_right', 'bottom_left', 'outside_right'");
+}
+
+/// Draws markers as polygons (exactly centred, unlike text glyphs): `marker` 0-4 filled, 5-9 hollow.
+void draw_markers(const Points& p, int marker, double radius_mm) {
+  // World units per millimetre, from the viewport in millimetres and the window in world units.
+  PLFLT spx0, spx1, spy0, spy1, vx0, vx1, vy0, vy1, wx0, wx1, wy0, wy1;
+  plgspa(&spx0, &spx1, &spy0, &spy1);
+  plgvpd(&vx0, &vx1, &vy0, &vy1);
+  plgvpw(&wx0, &wx1, &wy0, &wy1);
+  const double x_per_mm = (wx1 - wx0) / ((vx1 - vx0) * (spx1 - spx0));
+  const double y_per_mm = (wy1 - wy0) / ((vy1 - vy0) * (spy1 - spy0));
+  const int shape = std::abs(marker) % 5;
+  const bool hollow = std::abs(marker) % 10 >= 5;
+  // Unit outlines: circle, triangle, square, diamond, down-triangle (equal visual area, roughly).
+  std::vector<std::pair<double, double>> outline;
+  const double pi = 3.14159265358979323846;
+  switch (shape) {
+    case 0:
+      for (int k = 0; k < 32; ++k) outline.emplace_back(std::cos(2 * pi * k / 32), std::sin(2 * pi * k / 32));
+      break;
+    case 1: outline = {{0.0, 1.25}, {-1.1, -0.65}, {1.1, -0.65}}; break;
+    case 2: outline = {{-0.88, -0.88}, {0.88, -0.88}, {0.88, 0.88}, {-0.88, 0.88}}; break;
+    case 3: outline = {{0.0, 1.2}, {1.0, 0.0}, {0.0, -1.2}, {-1.0, 0.0}}; break;
+    default: outline = {{0.0, -1.25}, {-1.1, 0.65}, {1.1, 0.65}}; break;
+  }
+  for (std::size_t k = 0; k < p.x.size(); ++k) {
+    std::vector<PLFLT> px, py;
+    for (const auto& [ux, uy] : outline) {
+      px.push_back(p.x[k] + ux * radius_mm * x_per_mm);
+      py.push_back(p.y[k] + uy * radius_mm * y_per_mm);
+    }
+    if (hollow) {
+      px.push_back(px.front());
+      py.push_back(py.front());
+      plline(static_cast<PLINT>(px.size()), px.data(), py.data());
+    } else {
+      plfill(static_cast<PLINT>(px.size()), px.data(), py.data());
+    }
+  }
+}
+
+void draw(const FigureSpec& fig, const std::pair<double, double>& xr, const std::pair<double, double>& yr,
+          const std::string& legend_where) {
+  pladv(0);
+  const bool legend_outside = fig.legend_position == "outside_right";
+  plvpor(0.12, legend_outside ? 0.62 : 0.96, 0.12, 0.91);
+  plwind(xr.first, xr.second, yr.first, yr.second);
+
+  // Grid, then the bands, the data, and the frame on top.
+  plcol0(kGrid);
+  plwidth(1.0);
+  plbox("g", 0.0, 0, "g", 0.0, 0);
+
+  for (const auto& band : fig.bands) {
+    plcol0(band_index(band.color));
+    std::vector<PLFLT> px, py;
+    for (std::size_t i = 0; i < band.x.size(); ++i) {
+      px.push_back(band.x[i]);
+      py.push_back(band.y_high[i]);
+    }
+    for (std::size_t i = band.x.size(); i-- > 0;) {
+      px.push_back(band.x[i]);
+      py.push_back(band.y_low[i]);
+    }
+    plfill(static_cast<PLINT>(px.size()), px.data(), py.data());
+  }
+
+  for (const auto& s : fig.series) {
+    Points p = finite_points(s);
+    if (p.x.empty()) continue;
+    const PLINT n = static_cast<PLINT>(p.x.size());
+    plcol0(palette_index(s.color));
+    const bool has_line = s.style != SeriesStyle::points;
+    const bool has_points = s.style == SeriesStyle::points || s.style == SeriesStyle::points_and_line;
+    if (has_line) {
+      pllsty(s.style == SeriesStyle::dashed_line ? 3 : 1);
+      plwidth(2.5);
+      plline(n, p.x.data(), p.y.data());
+      pllsty(1);
+    }
+    plwidth(1.8);
+    plsmin(0.0, 1.6);  // error-bar caps
+    for (std::size_t k = 0; k < p.x.size(); ++k) {
+      const std::size_t i = p.index[k];
+      const double ex = error_at(s.x_error, i), ey = error_at(s.y_error, i);
+      PLFLT x = p.x[k], y = p.y[k];
+      if (ey > 0.0) {
+        PLFLT lo = y - ey, hi = y + ey;
+        plerry(1, &x, &lo, &hi);
+      }
+      if (ex > 0.0) {
+        PLFLT lo = x - ex, hi = x + ex;
+        plerrx(1, &lo, &hi, &y);
+      }
+    }
+    if (has_points) {
+      plwidth(2.0);
+      draw_markers(p, s.marker, 3.0);
+    }
+  }
+
+  plcol0(kBlack);
+  plwidth(1.5);
+  plsmin(0.0, 1.0);
+  plbox("bcnst", 0.0, 0, "bcnstv", 0.0, 0);
+  plmtex("b", 2.9, 0.5, 0.5, fig.x_label.c_str());
+  plmtex("l", 4.6, 0.5, 0.5, fig.y_label.c_str());
+  plschr(0.0, 1.45);
+  plmtex("t", 1.4, 0.5, 0.5, fig.title.c_str());
+  plschr(0.0, 1.25);
+
+  // Legend: bands as colour boxes, series as line and/or symbol.
+  std::vector<PLINT> opts, text_colors, box_colors, box_patterns, line_colors, line_styles, symbol_colors,
+      symbol_numbers;
+  std::vector<PLFLT> box_scales, box_widths, line_widths, symbol_scales;
+  std::vector<std::string> texts, symbols;
+  for (const auto& band : fig.bands) {
+    if (band.label.empty()) continue;
+    opts.push_back(PL_LEGEND_COLOR_BOX);
+    texts.push_back(band.label);
+    box_colors.push_back(band_index(band.color));
+    line_styles.push_back(1);
+    symbols.emplace_back("");
+  }
+  for (const auto& s : fig.series) {
+    if (s.label.empty() || finite_points(s).x.empty()) continue;
+    PLINT opt = 0;
+    if (s.style != SeriesStyle::points) opt |= PL_LEGEND_LINE;
+    if (s.style == SeriesStyle::points || s.style == SeriesStyle::points_and_line) opt |= PL_LEGEND_SYMBOL;
+    opts.push_back(opt);
+    texts.push_back(s.label);
+    box_colors.push_back(palette_index(s.color));
+    line_styles.push_back(s.style == SeriesStyle::dashed_line ? 3 : 1);
+    symbols.emplace_back(marker_glyph(s.marker));
+  }
+  const std::size_t n = opts.size();
+  if (n == 0) return;
+  text_colors.assign(n, kBlack);
+  box_patterns.assign(n, 0);
+  box_scales.assign(n, 0.9);
+  box_widths.assign(n, 1.0);
+  line_colors = box_colors;
+  line_widths.assign(n, 2.5);
+  symbol_colors = box_colors;
+  symbol_scales.assign(n, 0.95);
+  symbol_numbers.assign(n, 1);
+  std::vector<const char*> text_ptrs, symbol_ptrs;
+  for (const auto& t : texts) text_ptrs.push_back(t.c_str());
+  for (const auto& s : symbols) symbol_ptrs.push_back(s.c_str());
+  PLFLT legend_width = 0.0, legend_height = 0.0;
+  plscol0a(0, 255, 255, 255, 0.9);
+  plschr(0.0, 1.0);
+  pllegend(&legend_width, &legend_height, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX,
+           legend_position(legend_where), legend_outside ? 0.03 : 0.02, 0.02, 0.07, 0, kBlack, 1, 0, 0, static_cast<PLINT>(n),
+           opts.data(), 1.0, 1.0, 1.8, 0.0, text_colors.data(), text_ptrs.data(), box_colors.data(),
+           box_patterns.data(), box_scales.data(), box_widths.data(), line_colors.data(), line_styles.data(),
+           line_widths.data(), symbol_colors.data(), symbol_scales.data(), symbol_numbers.data(),
+           symbol_ptrs.data());
+  plschr(0.0, 1.25);
+}
+
+}  // namespace
+
+void render_png(const FigureSpec& fig, const std::filesystem::path& path) {
+  namespace fs = std::filesystem;
+  // Validate everything PLplot would otherwise exit() on.
+  Extent xe, ye;
+  bool any_point = false;
+  for (std::size_t k = 0; k < fig.series.size(); ++k) {
+    const auto& s = fig.series[k];
+    check_sizes(s, k);
+    for (std::size_t i = 0; i < s.x.size(); ++i) {
+      if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i])) continue;
+      any_point = true;
+      const double ex = error_at(s.x_error, i), ey = error_at(s.y_error, i);
+      xe.add(s.x[i] - ex);
+      xe.add(s.x[i] + ex);
+      ye.add(s.y[i] - ey);
+      ye.add(s.y[i] + ey);
+    }
+  }
+  for (std::size_t k = 0; k < fig.bands.size(); ++k) {
+    const auto& b = fig.bands[k];
+    if (b.x.size() != b.y_low.size() || b.x.size() != b.y_high.size() || b.x.size() < 2) {
+      throw InputError(fmt::format("figure.bands[{}]", k), fmt::format("{} x values", b.x.size()),
+                       "at least 2 x values with as many y_low and y_high");
+    }
+    for (std::size_t i = 0; i < b.x.size(); ++i) {
+      if (!std::isfinite(b.x[i]) || !std::isfinite(b.y_low[i]) || !std::isfinite(b.y_high[i])) {
+        throw InputError(fmt::format("figure.bands[{}]", k), "a non-finite value", "finite band coordinates");
+      }
+    }
+  }
+  if (!any_point) throw InputError(fmt::format("figure '{}'", fig.title), "(no finite points)", "data to plot");
+  if (fig.width_px < 200 || fig.height_px < 150) {
+    throw InputError("figure.size_px", fmt::format("{}x{}", fig.width_px, fig.height_px), "at least 200x150 pixels");
+  }
+  legend_position(fig.legend_position);  // validates
+
+  auto xr = padded(xe, 0.06), yr = padded(ye, 0.08);
+  if (fig.equal_axes) {
+    const double lo = std::min(xr.first, yr.first), hi = std::max(xr.second, yr.second);
+    xr = yr = {lo, hi};
+  }
+  if (fig.x_min) xr.first = *fig.x_min;
+  if (fig.x_max) xr.second = *fig.x_max;
+  if (fig.y_min) yr.first = *fig.y_min;
+  if (fig.y_max) yr.second = *fig.y_max;
+  if (!(xr.first < xr.second) || !(yr.first < yr.second)) {
+    throw InputError(fmt::format("figure '{}' axes", fig.title),
+                     fmt::format("x [{}, {}], y [{}, {}]", xr.first, xr.second, yr.first, yr.second),
+                     "increasing axis limits");
+  }
+
+  if (path.has_parent_path()) fs::create_directories(path.parent_path());
+  std::random_device entropy;
+  const fs::path temporary = path.string() + fmt::format(".tmp-{:08x}.png", entropy());
+
+  PLINT previous_stream = 0, stream = 0;
+  plgstrm(&previous_stream);
+  plmkstrm(&stream);
+  plsdev("pngcairo");
+  plsfnam(temporary.c_str());
+  plspage(0.0, 0.0, fig.width_px, fig.height_px, 0, 0);
+  plscmap0n(kBandStart + static_cast<int>(kPalette.size()));
+  plscol0(0, 255, 255, 255);
+  plscol0(kBlack, 0, 0, 0);
+  plscol0(kGrid, 225, 225, 225);
+  for (std::size_t i = 0; i < kPalette.size(); ++i) {
+    const int c = static_cast<int>(i);
+    plscol0(kPaletteStart + c, kPalette[i][0], kPalette[i][1], kPalette[i][2]);
+    plscol0a(kBandStart + c, kPalette[i][0], kPalette[i][1], kPalette[i][2], 0.18);
+  }
+  plinit();
+  plschr(0.0, 1.25);
+  draw(fig, xr, yr, fig.legend_position == "best" ? best_corner(fig, xr, yr) : fig.legend_position);
+  plend1();
+  plsstrm(previous_stream);
+
+  std::error_code error;
+  if (!fs::exists(temporary, error) || fs::file_size(temporary, error) == 0) {
+    fs::remove(temporary, error);
+    throw std::runtime_error(fmt::format("PLplot (pngcairo) did not write '{}'", path.string()));
+  }
+  fs::rename(temporary, path, error);
+  if (error) {
+    std::error_code ignored;
+    fs::remove(temporary, ignored);
+    throw std::runtime_error(fmt::format("cannot rename '{}' to '{}': {}", temporary.string(), path.string(),
+                                         error.message()));
+  }
+}
+
+}  // namespace kerf

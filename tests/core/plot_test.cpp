@@ -1,0 +1,45 @@
+#include "kerf/plot.hpp"
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "kerf/error.hpp"
+
+namespace fs = std::filesystem;
+
+TEST_CASE("A figure renders to a PNG atomically", "[plot]") {
+  const fs::path dir = fs::path(KERF_BINARY_DIR) / "test_output" / "plot";
+  fs::remove_all(dir);
+  kerf::FigureSpec fig;
+  fig.title = "Test";
+  fig.x_label = "x (mm)";
+  fig.y_label = "F#dc#u (N)";
+  fig.bands.push_back({"band", {0, 1}, {0, 0.5}, {0.5, 1.5}, 5});
+  fig.series.push_back({"points", {0.1, 0.5, 0.9}, {0.2, NAN, 1.0}, {}, {0.1, 0.1, NAN}, kerf::SeriesStyle::points, 0, 0});
+  fig.series.push_back({"line", {0, 1}, {0, 1}, {}, {}, kerf::SeriesStyle::line, 1, 0});
+  kerf::render_png(fig, dir / "figure.png");
+  std::ifstream in(dir / "figure.png", std::ios::binary);
+  char signature[8] = {};
+  in.read(signature, 8);
+  CHECK(std::string(signature + 1, 3) == "PNG");
+  std::size_t n_files = 0;
+  for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir)) ++n_files;
+  CHECK(n_files == 1);  // no temporary file left
+}
+
+TEST_CASE("Figures PLplot cannot draw are refused before PLplot sees them", "[plot][errors]") {
+  const fs::path path = fs::path(KERF_BINARY_DIR) / "test_output" / "plot" / "bad.png";
+  kerf::FigureSpec empty;
+  empty.series.push_back({"nan", {NAN}, {1.0}, {}, {}, kerf::SeriesStyle::points, 0, 0});
+  CHECK_THROWS_AS(kerf::render_png(empty, path), kerf::InputError);
+  kerf::FigureSpec mismatched;
+  mismatched.series.push_back({"xy", {1.0, 2.0}, {1.0}, {}, {}, kerf::SeriesStyle::points, 0, 0});
+  CHECK_THROWS_AS(kerf::render_png(mismatched, path), kerf::InputError);
+  kerf::FigureSpec legend;
+  legend.legend_position = "middle";
+  legend.series.push_back({"p", {1.0}, {1.0}, {}, {}, kerf::SeriesStyle::points, 0, 0});
+  CHECK_THROWS_AS(kerf::render_png(legend, path), kerf::InputError);
+  CHECK_FALSE(fs::exists(path));
+}
