@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <boost/math/tools/minima.hpp>
 #include <boost/math/tools/roots.hpp>
 #include <boost/math/tools/toms748_solve.hpp>
@@ -397,6 +398,7 @@ struct Solution {  // a shear angle with its C0 and primary-zone state: none of 
   ShearPlane plane;
   Primary primary;
   double c0_slope = 0.0;  // d/dC0 of the normal-stress residual at the root: the start of the neighbouring solve
+  double c0_miss = 0.0;   // |normal-stress residual| at C0 when c0_bracketed is false (how far from a solution)
   bool c0_bracketed = true, admissible = true;
 };
 
@@ -420,7 +422,7 @@ class Solver {
   // [c0_min, c0_max] (without a sign change: the end of smaller residual, c0_bracketed = false), then T_AB and
   // the forces. C0 and T_AB start from the neighbouring states in phi, interpolated, with their slopes.
   std::size_t at_phi(double phi) {
-    const auto pos = std::lower_bound(order_.begin(), order_.end(), phi, [](const Key& k, double x) { return k.phi < x; });
+    const auto pos = std::lower_bound(order_.begin(), order_.end(), phi, by_phi);
     if (pos != order_.end() && pos->phi == phi) return pos->index;
     Solution sol;
     sol.plane = shear_plane(c_, phi);
@@ -432,7 +434,8 @@ class Solver {
       const auto r = [&](double C0) { return normal_stress_residual(c_, sol.plane, C0); };
       double C0 = 0.0;
       if (nb.near) {
-        const double start = std::clamp(nb.interpolate([](const Solution& x) { return x.primary.C0; }), range.lo, range.hi);
+        const double start =
+            std::clamp(nb.interpolate([](const Solution& x) { return x.primary.C0; }), range.lo, range.hi);
         const RootSearch root = root_near(r, {start, r(start)}, nb.near->c0_slope, range.lo, range.hi, std::nan(""),
                                           std::nan(""), c_.rel_tol, c_.max_iterations);
         C0 = root.x;
@@ -449,6 +452,7 @@ class Solver {
         const double h = 1e-6 * C0;
         sol.c0_slope = (r(C0 + h) - r(C0 - h)) / (2.0 * h);
       }
+      if (!sol.c0_bracketed) sol.c0_miss = std::fabs(r(C0));
       const double T_hint = nb.near ? nb.interpolate([](const Solution& x) { return x.primary.T_AB; }) : c_.T_w;
       sol.primary = primary_zone(c_, sol.plane, C0, T_hint, nb.near ? nb.near->primary.T_slope : 1.0);
     }
@@ -479,19 +483,44 @@ class Solver {
     }
     const auto g = [&](double phi) { return shear_residual(at_phi(phi), delta); };
     Root root{};
-    if (!previous_) {  // cold: the whole range, TOMS 748
-      const std::size_t lo = at_phi(o_.phi_min_rad), hi = at_phi(phi_hi_);
-      const double g_lo = shear_residual(lo, delta), g_hi = shear_residual(hi, delta);
-      if ((g_lo > 0.0) == (g_hi > 0.0) && g_lo != 0.0 && g_hi != 0.0) {
-        root = {std::fabs(g_lo) <= std::fabs(g_hi) ? lo : hi, false};
-      } else {
-        root = {at_phi(bracketed_root(g, o_.phi_min_rad, phi_hi_, g_lo, g_hi, c_.rel_tol, c_.max_iterations)), true};
-        // The slope for the next delta, from the nearest other state.
-        const auto pos = std::lower_bound(order_.begin(), order_.end(), state(root.index).plane.phi,
-                                          [](const Key& k, double x) { return k.phi < x; });
-        const Key& other = pos + 1 != order_.end() ? *(pos + 1) : *(pos - 1);
-        phi_slope_ = (g(state(root.index).plane.phi) - shear_residual(other.index, delta)) /
-                     (state(root.index).plane.phi - other.phi);
+    if (!previous_) {
+      // Cold: g can change sign more than once in [phi_min, phi_max] (a low shear-angle branch of high F_c
+      // appears at large delta, and near c0_min the root can lie where C0 has left its range). A bracket
+      // search (options.phi_scan_points) shows the sign changes; each is refined by TOMS 748, and the root that
+      // is a full solution (C0 bracketed too) of lowest F_c is kept: the minimum-force state, the criterion of
+      // the model itself (Lalwani's grid takes the lowest F_c among its near-solutions too). Later deltas
+      // follow that branch. The scanned states are reused as starting points.
+      const int n_scan = o_.phi_scan_points;
+      scan_index_.resize(static_cast<std::size_t>(n_scan));
+      scan_g_.resize(static_cast<std::size_t>(n_scan));
+      auto& index = scan_index_;
+      auto& g_scan = scan_g_;
+      for (int i = 0; i < n_scan; ++i) {
+        const double phi = o_.phi_min_rad + (phi_hi_ - o_.phi_min_rad) * i / (n_scan - 1.0);
+        index[i] = at_phi(i == n_scan - 1 ? phi_hi_ : phi);
+        g_scan[i] = shear_residual(index[i], delta);
+      }
+      // Refine every sign change; keep the root of a full solution (C0 bracketed there too) of lowest F_c.
+      double best_score = std::numeric_limits<double>::infinity();
+      for (int i = 0; i + 1 < n_scan; ++i) {
+        if ((g_scan[i] > 0.0) == (g_scan[i + 1] > 0.0) && g_scan[i] != 0.0 && g_scan[i + 1] != 0.0) continue;
+        const double a = state(index[i]).plane.phi, b = state(index[i + 1]).plane.phi;
+        const std::size_t at = at_phi(bracketed_root(g, a, b, g_scan[i], g_scan[i + 1], c_.rel_tol, c_.max_iterations));
+        const Solution& sol = state(at);
+        const double score = (sol.admissible && sol.c0_bracketed ? 0.0 : 1e300) + sol.primary.F_c;
+        if (score < best_score) {
+          best_score = score;
+          root = {at, true};
+          // The slope for the next delta, from the nearer end of the bracket.
+          const double phi = sol.plane.phi;
+          const std::size_t other = phi - a < b - phi ? index[i] : index[i + 1];
+          phi_slope_ = (g(phi) - shear_residual(other, delta)) / (phi - state(other).plane.phi);
+        }
+      }
+      if (!std::isfinite(best_score)) {
+        const auto smallest = std::min_element(g_scan.begin(), g_scan.end(),
+                                               [](double x, double y) { return std::fabs(x) < std::fabs(y); });
+        root = {index[static_cast<std::size_t>(smallest - g_scan.begin())], false};
       }
     } else {
       const double phi = state(*previous_).plane.phi;
@@ -510,6 +539,7 @@ class Solver {
     double phi;
     std::size_t index;
   };
+  static bool by_phi(const Key& k, double x) { return k.phi < x; }
 
   // The admissible states on either side of phi: starting values for a new state there.
   struct Neighbours {
@@ -555,6 +585,8 @@ class Solver {
   std::vector<std::pair<double, Root>> roots_;
   std::optional<std::size_t> previous_;
   double phi_slope_ = std::numeric_limits<double>::quiet_NaN();
+  std::vector<std::size_t> scan_index_;  // the cold bracket search
+  std::vector<double> scan_g_;
 };
 
 // Fills every output field from a state; `guards` collects what the final state triggers.
@@ -628,6 +660,8 @@ void OxleySolverOptions::validate(const std::string& path) const {
   check_number(delta_max, path + ".delta_max", Range{delta_min, 1.0, true, false}, "(above delta_min)");
   check_number(tolerance, path + ".tolerance", Range::closed(1e-15, 1e-2), "");
   check_number(max_iterations, path + ".max_iterations", Range::closed(1.0, 100000.0), "");
+  check_number(phi_scan_points, path + ".phi_scan_points", Range::closed(2.0, 1000.0), "");
+  check_number(delta_scan_points, path + ".delta_scan_points", Range::closed(2.0, 1000.0), "");
 }
 
 OxleyResult solve_oxley(const OxleyParams& params, const OxleyCut& cut, const OxleySolverOptions& options) {
@@ -639,25 +673,44 @@ OxleyResult solve_oxley(const OxleyParams& params, const OxleyCut& cut, const Ox
   // delta minimises F_c (Oxley's criterion): Brent on [delta_min, delta_max], each evaluation solving phi (and
   // C0 inside) for that delta. Brent stops at sqrt(tolerance) in delta: F_c is stationary there, so F_c and phi
   // are still found to about `tolerance`. A delta whose phi or C0 could not be bracketed scores far above any
-  // solution (a force scale 1000 times the largest plausible F_c, growing with the miss), so that a true
-  // solution wins wherever the range holds one; Lalwani's and Pantalé's searches would pick the clamped state.
+  // solution (a force scale 1000 times the largest plausible F_c), plus the residuals it misses by, so that
+  // Brent is led towards the deltas that have a solution and a true solution wins wherever the range holds
+  // one; Lalwani's and Pantalé's searches would pick the clamped state.
   const double force_scale = 1e3 * (params.johnson_cook.A_Pa + params.johnson_cook.B_Pa) * cut.uncut_chip_thickness_m *
                              cut.width_m;
   const auto objective = [&](double delta) {
     const Solver::Root root = solver.at_delta(delta);
     const Solution& sol = solver.state(root.index);
     if (root.bracketed && sol.c0_bracketed) return sol.primary.F_c;
-    return sol.primary.F_c + force_scale * (1.0 + std::fabs(solver.shear_residual(root.index, delta)));
+    const double miss = sol.admissible ? std::fabs(solver.shear_residual(root.index, delta)) + sol.c0_miss : 10.0;
+    return sol.primary.F_c + force_scale * (1.0 + miss);
   };
+  // Bracket the minimum first (as mnbrak before brent): options.delta_scan_points deltas, log-spaced from
+  // delta_max down to delta_min; Brent then searches between the neighbours of the best of them. F_c(delta)
+  // can have more than one local minimum (the phi root switches branch), and a solution can exist in part of
+  // the range only.
+  const int n_scan = options.delta_scan_points;
+  std::vector<double> deltas(static_cast<std::size_t>(n_scan)), scores(static_cast<std::size_t>(n_scan));
+  int best = 0;
+  for (int k = 0; k < n_scan; ++k) {
+    const int i = n_scan - 1 - k;  // from delta_max down
+    deltas[i] = i == 0 ? options.delta_min
+              : i == n_scan - 1
+                  ? options.delta_max
+                  : options.delta_min * std::pow(options.delta_max / options.delta_min, i / (n_scan - 1.0));
+    scores[i] = objective(deltas[i]);
+  }
+  for (int i = 1; i < n_scan; ++i) {
+    if (scores[i] < scores[best]) best = i;
+  }
+  const double lo = deltas[std::max(best - 1, 0)], hi = deltas[std::min(best + 1, n_scan - 1)];
   const int bits = std::clamp(static_cast<int>(std::ceil(1.0 - 0.5 * std::log2(options.tolerance))), 8,
                               std::numeric_limits<double>::digits / 2);
   std::uintmax_t iterations = static_cast<std::uintmax_t>(options.max_iterations);
-  double delta =
-      boost::math::tools::brent_find_minima(objective, options.delta_min, options.delta_max, bits, iterations).first;
-  // Brent never evaluates the ends; near one, compare with it exactly.
-  const double width = options.delta_max - options.delta_min;
-  for (const double end : {options.delta_min, options.delta_max}) {
-    if (std::fabs(delta - end) < 1e-3 * width && objective(end) <= objective(delta)) delta = end;
+  double delta = boost::math::tools::brent_find_minima(objective, lo, hi, bits, iterations).first;
+  // Brent never evaluates the ends of its interval; a scanned delta that scores no worse wins (exactly).
+  for (const double end : {lo, hi}) {
+    if (objective(end) <= objective(delta)) delta = end;
   }
   if (delta == options.delta_min || delta == options.delta_max) guards.raise(Guard::solver_at_bound);
 

@@ -111,7 +111,8 @@ Row measure(const kerf::OxleyParams& params, const std::vector<kerf::OxleyCut>& 
 int main(int argc, char** argv) {
   const kerf::OxleyParams params = aisi_1045();
   std::string csv = kerf::csv_line({"case_set", "tolerance", "n_cases", "converged", "time_per_solve_us",
-                                    "solves_per_s", "wall_time_per_solve_us", "evaluations_per_solve", "max_rel_error_Fc", "max_rel_error_Ft",
+                                    "solves_per_s", "wall_time_per_solve_us", "evaluations_per_solve",
+                                    "max_rel_error_Fc", "max_rel_error_Ft",
                                     "max_rel_error_phi", "max_rel_error_delta", "max_rel_error_Tint"});
   kerf::OxleySolverOptions reference_options;
   reference_options.tolerance = 1e-13;

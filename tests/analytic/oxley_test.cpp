@@ -248,7 +248,8 @@ TEST_CASE("Oxley at the extremes: a finite result or a clean error, never NaN, n
   CHECK(converged > 0);
 }
 
-TEST_CASE("Oxley flags the sub-micron regime: heat partition clamped, no negative temperature rise", "[oxley][guards]") {
+TEST_CASE("Oxley flags the sub-micron regime: heat partition clamped, no negative temperature rise",
+          "[oxley][guards]") {
   kerf::OxleyCut cut = reference_cut();
   cut.uncut_chip_thickness_m = 0.1e-6;
   cut.speed_m_per_s = 5.0;
@@ -308,6 +309,24 @@ TEST_CASE("Oxley tolerance: tighter tolerances move F_c, F_t and phi by less tha
     CHECK_THAT(r.thrust_force_N, WithinRel(reference.thrust_force_N, 10.0 * tolerance));
     CHECK_THAT(r.shear_angle_rad, WithinRel(reference.shear_angle_rad, 10.0 * tolerance));
     CHECK_THAT(r.delta, WithinRel(reference.delta, 30.0 * std::sqrt(tolerance)));
+  }
+}
+
+TEST_CASE("Oxley bracket searches: without them (2 points) the reference case is the same solution", "[oxley]") {
+  // The searches only choose among brackets; where the root is unique they must not change the answer.
+  kerf::OxleySolverOptions plain;
+  plain.phi_scan_points = 2;
+  plain.delta_scan_points = 2;
+  kerf::OxleySolverOptions fine;
+  fine.phi_scan_points = 33;
+  fine.delta_scan_points = 15;
+  const kerf::OxleyResult reference = kerf::solve_oxley(aisi_1045(), reference_cut());
+  for (const auto& options : {plain, fine}) {
+    const kerf::OxleyResult r = kerf::solve_oxley(aisi_1045(), reference_cut(), options);
+    CHECK(r.converged);
+    CHECK_THAT(r.cutting_force_N, WithinRel(reference.cutting_force_N, 1e-7));
+    CHECK_THAT(r.shear_angle_rad, WithinRel(reference.shear_angle_rad, 1e-7));
+    CHECK_THAT(r.delta, WithinRel(reference.delta, 1e-2));
   }
 }
 
@@ -393,6 +412,14 @@ TEST_CASE("Oxley inputs are validated with the field path, value and expectation
     options = {};
     options.tolerance = 0.0;
     CHECK_THROWS_AS(kerf::solve_oxley(steel, reference_cut(), options), kerf::InputError);
+    options = {};
+    options.phi_scan_points = 1;
+    try {
+      kerf::solve_oxley(steel, reference_cut(), options);
+      FAIL("no error");
+    } catch (const kerf::InputError& e) {
+      CHECK(std::string(e.what()) == "options.phi_scan_points = 1: expected a value in [2, 1000]");
+    }
   }
   SECTION("a rake angle that leaves no admissible shear angle is a ModelError") {
     kerf::OxleyCut cut = reference_cut();

@@ -75,9 +75,17 @@ struct OxleySolverOptions {
   /// `tolerance` while delta and the interface strain, rate and temperature are known to ~sqrt(tolerance).
   double tolerance = 1e-8;
   int max_iterations = 200;  ///< cap of each root find and of the delta search (no solve can hang)
+  /// Bracket search before the first phi root: tau_int - k_chip can change sign more than once in the phi
+  /// range (another branch of higher F_c); this many equally spaced phi see the sign changes, and the root of
+  /// lowest F_c is followed. Roots closer together than the spacing can be missed. 2: the range ends only.
+  int phi_scan_points = 9;
+  /// Bracket search before Brent in delta: this many log-spaced deltas; Brent runs between the neighbours of
+  /// the best. Finds a solution that exists in part of the delta range only. 2: Brent on the whole range.
+  int delta_scan_points = 7;
 
   /// Throws InputError naming `path`.<field>: 0 < phi_min < phi_max <= 60 deg, 0 < c0_min < c0_max,
-  /// 0 < delta_min < delta_max <= 1, tolerance in [1e-15, 1e-2], max_iterations in [1, 100000].
+  /// 0 < delta_min < delta_max <= 1, tolerance in [1e-15, 1e-2], max_iterations in [1, 100000], scan points
+  /// in [2, 1000].
   void validate(const std::string& path) const;
 };
 
