@@ -124,9 +124,10 @@ struct Point {
 
 // Secant steps (Dekker 1969) inside the bracket between neg.x (f < 0) and pos.x (f > 0), from the iterates
 // `older`, `newer`; bisection when a step leaves the bracket or, after the first two, is not below half the
-// step before last. Ends when a proposed step is below rel_tol |x|: that x is returned unevaluated (the secant
-// converges superlinearly, so its error is far below rel_tol, and every caller evaluates its state there
-// anyway). `slope` receives the last secant slope, the start of the next, neighbouring solve.
+// step before last. Ends when a proposed step is below rel_tol |x| and returns the last point evaluated: the
+// secant converges superlinearly, so that point is within about the step of the root, and its state (the
+// costly part) is already known to the caller. `slope` receives the last secant slope, the start of the next,
+// neighbouring solve.
 template <class F>
 double secant_in_bracket(F&& f, Point neg, Point pos, Point older, Point newer, double rel_tol, int& budget,
                          double* slope) {
@@ -142,7 +143,8 @@ double secant_in_bracket(F&& f, Point neg, Point pos, Point older, Point newer, 
     if (!(next > lo && next < hi) || std::fabs(next - newer.x) > 0.5 * step_older) next = 0.5 * (lo + hi);
     step_older = step_old;
     step_old = std::fabs(next - newer.x);
-    if (step_old <= rel_tol * std::fabs(next) || hi - lo <= rel_tol * std::fabs(next) || budget <= 0) return next;
+    // The last point evaluated is then within about that step of the root (superlinear convergence).
+    if (step_old <= rel_tol * std::fabs(next) || hi - lo <= rel_tol * std::fabs(next) || budget <= 0) return newer.x;
     --budget;
     older = newer;
     newer = {next, f(next)};
