@@ -451,8 +451,9 @@ class Solver {
         } else {
           C0 = bracketed_root(r, range.lo, range.hi, r_lo, r_hi, c_.rel_tol, c_.max_iterations);
         }
-        const double h = 1e-6 * C0;
-        sol.c0_slope = (r(C0 + h) - r(C0 - h)) / (2.0 * h);
+        // Slope for the neighbouring solves: a difference that stays inside the admissible range.
+        const double h = C0 + 1e-6 * C0 < range.hi ? 1e-6 * C0 : -1e-6 * C0;
+        sol.c0_slope = (r(C0 + h) - r(C0)) / h;
       }
       if (!sol.c0_bracketed) sol.c0_miss = std::fabs(r(C0));
       const double T_hint = nb.near ? nb.interpolate([](const Solution& x) { return x.primary.T_AB; }) : c_.T_w;
