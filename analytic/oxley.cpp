@@ -369,7 +369,7 @@ Interface interface_zone(const Context& c, const ShearPlane& s, const Primary& p
   // dT_M = dT_C 10^(0.06 - 0.195 delta sqrt(R_T t2 / h)) sqrt(R_T t2 / h), K and c_p at T_c            (O 11)
   const double R_T = c.rho_V_t1 * c.specific_heat(q.T_c) / c.conductivity(q.T_c);
   const double root = std::sqrt(R_T * s.chip_thickness / p.h);
-  q.dT_M = q.dT_C * std::pow(10.0, 0.06 - 0.195 * delta * root) * root;
+  q.dT_M = q.dT_C * std::exp(std::numbers::ln10 * (0.06 - 0.195 * delta * root)) * root;  // 10^(...)
   q.T_int = c.T_w + p.dT_SZ + c.psi * q.dT_M;
   q.k_chip = johnson_cook_stress(c.jc, c.policy, q.shear_strain / kSqrt3, q.strain_rate_shear / kSqrt3, q.T_int,
                                  guards) /
