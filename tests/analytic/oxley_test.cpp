@@ -334,6 +334,61 @@ TEST_CASE("Oxley bracket searches: without them (2 points) the reference case is
   }
 }
 
+TEST_CASE("Oxley with several roots takes the minimum-force solution", "[oxley]") {
+  // Cases found by comparing the solver with a brute-force search (81 deltas x 161 shear angles, every sign
+  // change refined) on random cuts. The two parameter sets below are synthetic, with Ti-6Al-4V-like and
+  // Inconel-718-like magnitudes, for the numerics only: they are not material data.
+  const auto synthetic = [](double A_MPa, double B_MPa, double n, double C, double m, double T_melt, double rho,
+                            kerf::LinearInTemperature K, kerf::LinearInTemperature cp) {
+    kerf::OxleyParams p;
+    p.johnson_cook = {.A_Pa = A_MPa * 1e6, .B_Pa = B_MPa * 1e6, .n = n, .C = C, .m = m,
+                      .reference_strain_rate_per_s = 1.0, .room_temperature_K = 298.15,
+                      .melting_temperature_K = T_melt};
+    p.thermal = {.density_kg_per_m3 = rho, .conductivity_W_per_m_K = K, .specific_heat_J_per_kg_K = cp};
+    return p;
+  };
+  const auto cut = [](double v, double t1, double rake_deg) {
+    return kerf::OxleyCut{.rake_rad = deg_to_rad(rake_deg), .uncut_chip_thickness_m = t1, .width_m = 1e-3,
+                          .speed_m_per_s = v, .workpiece_temperature_K = 298.15};
+  };
+  kerf::OxleySolverOptions plain;
+  plain.phi_scan_points = 2;
+  plain.delta_scan_points = 2;
+  SECTION("two phi branches at the same delta: the one of higher shear angle and lower force") {
+    // At delta = 0.2 tau_int = k_chip near phi = 8.3 deg (F_c ~ 130 N) and 35.5 deg (F_c = 43.19 N; the
+    // brute-force search gives 43.19 N at phi = 35.5 deg, delta = 0.2).
+    const kerf::OxleyParams ti = synthetic(782.7, 498.4, 0.28, 0.028, 1.0, 1878.0, 4430.0, {7.3, 0.0155, kZeroCelsius},
+                                           {560.0, 0.2, kZeroCelsius});
+    const kerf::OxleyResult r = kerf::solve_oxley(ti, cut(1.11, 24e-6, 19.7));
+    CHECK(r.converged);
+    CHECK_THAT(r.cutting_force_N, WithinRel(43.19, 1e-3));
+    CHECK_THAT(rad_to_deg(r.shear_angle_rad), WithinAbs(35.51, 0.01));
+    CHECK(r.delta == 0.2);
+    CHECK(r.guards.has(Guard::solver_at_bound));
+    CHECK(r.cutting_force_N <= kerf::solve_oxley(ti, cut(1.11, 24e-6, 19.7), plain).cutting_force_N);
+  }
+  SECTION("a solution only at small delta: found although the larger deltas have none") {
+    // For delta above ~0.012 the root in phi lies where C0 would have to be below c0_min = 2. The brute-force
+    // search gives F_c = 220.8 N at its nearest grid delta (0.007); the continuous optimum is lower.
+    const kerf::OxleyParams ni = synthetic(1241.0, 622.0, 0.65, 0.0134, 1.3, 1570.0, 8190.0,
+                                           {11.4, 0.013, kZeroCelsius}, {435.0, 0.2, kZeroCelsius});
+    const kerf::OxleyResult r = kerf::solve_oxley(ni, cut(0.969, 92e-6, 17.1));
+    CHECK(r.converged);
+    CHECK(r.delta < 0.012);
+    CHECK(r.cutting_force_N < 220.8);
+    CHECK(r.residual_shear < kResidualBound);
+    CHECK(r.cutting_force_N <= kerf::solve_oxley(ni, cut(0.969, 92e-6, 17.1), plain).cutting_force_N);
+  }
+  SECTION("AISI 1045 at positive rake: a low-shear-angle branch appears for delta >= 0.14") {
+    // Branches near phi = 6 deg (F_c 356-440 N) and 25 deg (F_c ~ 135.5 N); a plain cold search can switch to
+    // the first and stop at F_c = 137.0 N, delta = 0.14.
+    const kerf::OxleyResult r = kerf::solve_oxley(aisi_1045(), cut(1.36, 66e-6, 15.2));
+    CHECK(r.converged);
+    CHECK(rad_to_deg(r.shear_angle_rad) > 20.0);
+    CHECK(r.cutting_force_N < 136.0);
+  }
+}
+
 TEST_CASE("evaluate_oxley gives the state at given unknowns", "[oxley]") {
   const kerf::OxleyResult solved = kerf::solve_oxley(aisi_1045(), reference_cut());
   const kerf::OxleyResult again = kerf::evaluate_oxley(aisi_1045(), reference_cut(), solved.shear_angle_rad,

@@ -13,7 +13,9 @@
 // given delta, C0 makes the normal stress at the tool tip from the shear-plane analysis equal to the mean
 // rake-face normal stress (sigma_N' = sigma_N, bracketed root in C0 for each phi), phi makes the interface
 // shear stress equal to the chip's shear flow stress (tau_int = k_chip, bracketed root in phi), and delta
-// minimises the cutting force (Brent). No grid search.
+// minimises the cutting force (Brent). Every root is kept inside a sign change; where a condition has more
+// than one root, short bracket searches (options.phi_scan_points, delta_scan_points) pick the solution of
+// lowest F_c, the model's own criterion. Typically 40-70 shear-zone evaluations and ~50 us per solve.
 //
 //   kerf::OxleyParams steel;   // AISI 1045 (Jaspers & Dautzenberg 2002)
 //   steel.johnson_cook = {.A_Pa = 553.1e6, .B_Pa = 600.8e6, .n = 0.234, .C = 0.0134, .m = 1.0,
@@ -131,11 +133,13 @@ struct OxleyResult {
 };
 
 /// Solves the three unknowns and returns the state at the solution. Validates its arguments (InputError,
-/// under the paths "params", "cut", "options"; a workpiece at or above T_melt is an InputError too). Where
-/// a bracket holds no sign change the nearest end is taken, Guard::solver_at_bound is raised and the
-/// residual says by how much the condition is missed (converged = false); a delta at the end of its range
-/// raises the guard too. Throws ModelError only when the rake angle leaves no admissible shear angle.
-/// Never returns NaN; every loop is bounded by options.max_iterations.
+/// under the paths "params", "cut", "options"; a workpiece at or above T_melt is an InputError too).
+/// Without a solution in the search ranges (typical of slow, thin cuts: the chip stays too cold for
+/// tau_int = k_chip at any phi) it returns the state nearest to one: the end of the bracket with the smaller
+/// residual, Guard::solver_at_bound, converged = false, and the residuals say by how much the conditions are
+/// missed. A delta at the end of its range also raises the guard (converged stays true). Throws ModelError
+/// only when no shear angle in the range has an admissible state (cos(phi - rake) > 0 and a finite, positive
+/// contact length). Never returns NaN; every loop is bounded by options.max_iterations.
 OxleyResult solve_oxley(const OxleyParams& params, const OxleyCut& cut, const OxleySolverOptions& options = {});
 
 /// The state of the equation set at given unknowns (no solve): residuals say how far it is from a solution.
