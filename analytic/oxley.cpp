@@ -1,9 +1,27 @@
 // Extended Oxley machining theory with a Johnson-Cook material; see include/kerf/analytic/oxley.hpp.
 //
-// Equation numbers: Lalwani, Mehta & Jain (2009) give the set as Oxley (1989) with the Johnson-Cook law;
-// "(O n)" below tags each step in the order of docs/physics-analytic.md section 3, which follows Pantalé
-// et al. (2022), Appl. Mech. 3, 889, section 2. All quantities SI; w cancels from every stress and
-// temperature, so forces are simply proportional to the width.
+// The equation set of Lalwani, Mehta & Jain (2009): Oxley (1989) with the Johnson-Cook law, as written in
+// docs/physics-analytic.md section 3 and implemented by Pantalé et al. (2022) (github.com/pantale/OxleyPython).
+// Tags used below (the paper's own numbers could not be checked here):
+//   (O 1)  geometry: l_AB = t1 / sin(phi), V_s = V cos(a) / cos(phi - a), V_c = V sin(phi) / cos(phi - a),
+//          t2 = t1 cos(phi - a) / sin(phi)
+//   (O 2)  gamma_AB = cos(a) / (2 sin(phi) cos(phi - a)), gammadot_AB = C0 V_s / l_AB; equivalent = / sqrt 3
+//   (O 3)  k_AB = sigma_JC(eps_AB, epsdot_AB, T_AB) / sqrt 3, F_s = k_AB l_AB w
+//   (O 4)  T_AB = T_w + eta dT_SZ, dT_SZ = (1 - beta) F_s V_s / (rho c_p V t1 w), beta(R_T tan(phi)),
+//          R_T = rho c_p V t1 / K, K and c_p at T_AB
+//   (O 5)  n_eq = n B eps^n / (A + B eps^n), tan(theta) = 1 + pi/2 - 2 phi - C0 n_eq
+//   (O 6)  R = F_s / cos(theta), lambda = theta + a - phi, F_c = R cos(theta - phi), F_t = R sin(theta - phi),
+//          F = R sin(lambda), N = R cos(lambda)
+//   (O 7)  sigma_N' = k_AB (1 + pi/2 - 2 a - 2 C0 n_eq)
+//   (O 8)  h = t1 sin(theta) / (cos(lambda) sin(phi)) [1 + C0 n_eq / (3 (1 + 2 (pi/4 - phi) - C0 n_eq))]
+//   (O 9)  tau_int = F / (h w), sigma_N = N / (h w)
+//   (O 10) gamma_int = 2 gamma_AB + h / (2 delta t2), gammadot_int = V_c / (delta t2)
+//   (O 11) T_c = T_w + dT_SZ + dT_C, dT_C = F V_c / (rho c_p(T_c) V t1 w); dT_M = dT_C
+//          10^(0.06 - 0.195 delta sqrt(R_T t2 / h)) sqrt(R_T t2 / h), K and c_p at T_c;
+//          T_int = T_w + dT_SZ + psi dT_M
+//   (O 12) k_chip = sigma_JC(gamma_int / sqrt 3, gammadot_int / sqrt 3, T_int) / sqrt 3
+// Solved: sigma_N = sigma_N' for C0 and tau_int = k_chip for phi at each delta; delta minimises F_c.
+// All quantities SI; w cancels from every stress and temperature, so forces are proportional to the width.
 #include "kerf/analytic/oxley.hpp"
 
 #include <fmt/format.h>
