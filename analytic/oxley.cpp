@@ -175,8 +175,8 @@ struct RootSearch {
 };
 
 // Root of f in [lo, hi] near a start point, given an estimate of f' there (from the neighbouring solve):
-// a Newton step, 2 % long so that it usually lands just past the root, then steps along the secant (1.5 times
-// the predicted distance, at least doubling) while f keeps its sign; the same from the start in the other
+// a Newton step made 2 % longer so that it usually lands just past the root, then steps along the secant (1.5
+// times the predicted distance, at least doubling) while f keeps its sign; the same from the start in the other
 // direction if an end is reached first. Once two points bracket a sign change, secant_in_bracket. f at an end
 // is evaluated only when the search reaches it, unless known (f_lo, f_hi; NaN when not).
 template <class F>
