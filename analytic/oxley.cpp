@@ -106,7 +106,7 @@ Context make_context(const OxleyParams& params, const OxleyCut& cut, const Oxley
                  options.max_iterations};
 }
 
-// Heat partition: the fraction of the shear-zone heat conducted into the work (Oxley 1989, after Boothroyd),
+// Heat partition: the fraction of the shear-zone heat conducted into the work (Oxley 1989, as in Lalwani),
 // beta = 0.5 - 0.35 log10(R_T tan(phi)) up to R_T tan(phi) = 10, 0.3 - 0.15 log10(R_T tan(phi)) above. It stays
 // in [0, 1] only for 0.037 <= R_T tan(phi) <= 100; sub-micron chips give beta > 1 (a negative temperature
 // rise), very thick fast ones beta < 0. Clamped to [0, 1] and reported through `clamped`.
