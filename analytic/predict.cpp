@@ -51,6 +51,45 @@ void check_shear_angle(double phi, const AnalyticScene& scene) {
                                units::rad_to_deg(scene.friction_angle_rad.value_or(0.0))));
 }
 
+DeformationState shear_plane_state_of(const OxleyResult& oxley) {
+  return {oxley.shear_plane_strain, oxley.shear_plane_strain_rate_per_s, oxley.shear_plane_temperature_K};
+}
+
+void add_contact_lengths(const AnalyticScene& scene, double friction_angle_rad, Prediction& p) {
+  const double t0 = scene.uncut_chip_thickness_m;
+  for (const auto& request : scene.contact_lengths) {
+    const double phi = shear_angle(request.shear_angle, scene.rake_rad, friction_angle_rad);
+    p.contact_lengths_m.emplace_back(request.column,
+                                     contact_length(request.model, t0, phi, friction_angle_rad, scene.rake_rad));
+  }
+  if (!scene.contact_lengths.empty() && t0 > kContactLengthValidatedThickness_m) {
+    p.warnings.push_back("contact-length models were validated up to h = 0.1 mm (seed 003: chip segmentation above)");
+  }
+}
+
+/// models.force = oxley: forces, shear angle and friction angle are Oxley's own; the flow stress reported is
+/// the Johnson-Cook stress in zone AB.
+Prediction predict_oxley_forces(const AnalyticScene& scene, const OxleyResult& oxley, Prediction p) {
+  p.cutting_force_N = oxley.cutting_force_N;
+  p.thrust_force_N = oxley.thrust_force_N;
+  p.shear_angle_rad = oxley.shear_angle_rad;
+  p.friction_angle_rad = scene.friction_angle_rad.value_or(oxley.friction_angle_rad);
+  p.has_friction = true;
+  p.chip_thickness_m = oxley.chip_thickness_m;
+  p.chip_ratio = scene.uncut_chip_thickness_m / oxley.chip_thickness_m;
+  p.state = shear_plane_state_of(oxley);
+  p.flow.johnson_cook_Pa = p.flow.total_Pa = oxley.shear_plane_flow_stress_Pa;
+  p.flow.shear_Pa = oxley.shear_plane_shear_stress_Pa;
+  if (scene.edge_radius_m > kSharpEdgeRatio * scene.uncut_chip_thickness_m) {
+    p.warnings.push_back(fmt::format("edge radius is {:.0f} % of the uncut chip thickness: extended Oxley assumes a "
+                                     "sharp tool (use models.force = liu_li with deformation = oxley)",
+                                     100.0 * scene.edge_radius_m / scene.uncut_chip_thickness_m));
+  }
+  // Contact lengths use the scene's friction if given, else Oxley's friction angle lambda.
+  add_contact_lengths(scene, p.friction_angle_rad, p);
+  return p;
+}
+
 }  // namespace
 
 Prediction predict(const AnalyticScene& scene) {
@@ -63,9 +102,25 @@ Prediction predict(const AnalyticScene& scene) {
   const double t0 = scene.uncut_chip_thickness_m;
   if (scene.turning) round_nose_chip(scene.turning->geometry, &p.guards);  // records the turning guard
 
-  if (scene.force == ForceModel::oxley || scene.deformation == DeformationModel::oxley) {
-    throw ModelError("oxley", "the extended Oxley solver is not built into this version yet");
+  // The extended-Oxley solve (sharp tool at t0), when the scene's force or deformation model needs it.
+  std::optional<OxleyResult> oxley;
+  if (scene.oxley) {
+    const OxleyCut cut{.rake_rad = scene.rake_rad,
+                       .uncut_chip_thickness_m = t0,
+                       .width_m = scene.width_m,
+                       .speed_m_per_s = scene.speed_m_per_s,
+                       .workpiece_temperature_K = scene.workpiece_temperature_K};
+    oxley = solve_oxley(*scene.oxley, cut, scene.oxley_options);
+    p.guards.merge(oxley->guards);
+    p.oxley = OxleyDetails{oxley->strain_rate_constant_C0, oxley->delta, oxley->interface_temperature_K,
+                           oxley->contact_length_m, std::max(oxley->residual_shear, oxley->residual_normal)};
+    if (!oxley->converged) {
+      p.warnings.push_back(fmt::format("extended Oxley: no exact solution inside the search ranges (relative "
+                                       "residual {:.2g}); the nearest admissible state is reported",
+                                       p.oxley->residual));
+    }
   }
+  if (scene.force == ForceModel::oxley) return predict_oxley_forces(scene, *oxley, std::move(p));
 
   // Nominal shear angle and chip ratio.
   const double beta = p.friction_angle_rad;
@@ -82,8 +137,11 @@ Prediction predict(const AnalyticScene& scene) {
   check_shear_angle(p.shear_angle_rad, scene);
   p.chip_thickness_m = t0 / p.chip_ratio;
 
-  p.state = scene.deformation == DeformationModel::given ? *scene.given_state
-                                                         : shear_plane_state(scene, p.shear_angle_rad);
+  switch (scene.deformation) {
+    case DeformationModel::given: p.state = *scene.given_state; break;
+    case DeformationModel::room_temperature: p.state = shear_plane_state(scene, p.shear_angle_rad); break;
+    case DeformationModel::oxley: p.state = shear_plane_state_of(*oxley); break;
+  }
   p.flow = flow_stress(scene.flow_stress, p.state, &p.guards);
   const double k_s = p.flow.shear_Pa;
 
@@ -106,13 +164,7 @@ Prediction predict(const AnalyticScene& scene) {
   p.cutting_force_N = per_width.cutting_N_per_m * scene.width_m;
   p.thrust_force_N = per_width.thrust_N_per_m * scene.width_m;
 
-  for (const auto& request : scene.contact_lengths) {
-    const double phi = shear_angle(request.shear_angle, scene.rake_rad, beta);
-    p.contact_lengths_m.emplace_back(request.column, contact_length(request.model, t0, phi, beta, scene.rake_rad));
-  }
-  if (!scene.contact_lengths.empty() && t0 > kContactLengthValidatedThickness_m) {
-    p.warnings.push_back("contact-length models were validated up to h = 0.1 mm (seed 003: chip segmentation above)");
-  }
+  add_contact_lengths(scene, beta, p);
   return p;
 }
 
@@ -160,7 +212,7 @@ std::vector<std::pair<std::string, std::string>> prediction_columns(const Analyt
     row.emplace_back("edge_cutting_force_N", optional_number(has, l.edge.cutting_N_per_m * p.width_m));
     row.emplace_back("edge_thrust_force_N", optional_number(has, l.edge.thrust_N_per_m * p.width_m));
   }
-  if (scene.force == ForceModel::oxley || scene.force_auto || scene.deformation == DeformationModel::oxley) {
+  if (scene.oxley || scene.force_auto) {
     const bool has = p.oxley.has_value();
     const OxleyDetails o = p.oxley.value_or(OxleyDetails{});
     row.emplace_back("strain_rate_constant_C0", optional_number(has, o.strain_rate_constant_C0));

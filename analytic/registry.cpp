@@ -1,5 +1,7 @@
 #include "kerf/analytic/registry.hpp"
 
+#include <map>
+
 namespace kerf {
 
 const std::vector<AnalyticModelInfo>& analytic_models() {
@@ -34,11 +36,15 @@ const std::vector<AnalyticModelInfo>& analytic_models() {
   return models;
 }
 
-std::vector<std::string> analytic_model_names(std::string_view kind) {
-  std::vector<std::string> names;
-  for (const auto& m : analytic_models())
-    if (m.kind == kind) names.emplace_back(m.name);
-  return names;
+const std::vector<std::string>& analytic_model_names(std::string_view kind) {
+  static const auto by_kind = [] {
+    std::map<std::string, std::vector<std::string>, std::less<>> table;
+    for (const auto& m : analytic_models()) table[std::string(m.kind)].emplace_back(m.name);
+    return table;
+  }();
+  static const std::vector<std::string> none;
+  const auto it = by_kind.find(kind);
+  return it == by_kind.end() ? none : it->second;
 }
 
 }  // namespace kerf

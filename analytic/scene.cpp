@@ -199,7 +199,8 @@ AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
     scene.liu_li.quadrature.max_depth = quadrature->get_int_or("max_depth", 15, 1, 20);
     quadrature->finish();
   }
-  scene.oxley_tolerance = models.get_number_or("oxley_tolerance", 1e-8, Range::open(0.0, 1e-2), "(relative)");
+  scene.oxley_options.tolerance =
+      models.get_number_or("oxley_tolerance", scene.oxley_options.tolerance, Range::closed(1e-15, 1e-2), "(relative)");
   scene.contact_lengths = parse_contact_lengths(models);
   if (auto policy = models.find_object("flow_stress_policy")) {
     scene.flow_stress.policy.strain_rate =
@@ -249,7 +250,8 @@ AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
       scene.force != ForceModel::oxley &&
       (scene.shear_angle != ShearAngleSource::chip_ratio || scene.liu_li.closure == FrictionClosure::constant ||
        scene.liu_li.lower_limit == LowerLimitRule::stagnation || scene.force == ForceModel::merchant);
-  if ((needs_friction || !scene.contact_lengths.empty()) && !scene.friction_angle_rad) {
+  const bool contact_needs_friction = !scene.contact_lengths.empty() && scene.force != ForceModel::oxley;
+  if ((needs_friction || contact_needs_friction) && !scene.friction_angle_rad) {
     throw InputError("cut.friction_angle_deg", "(missing)",
                      "a friction angle (or cut.friction_coefficient, or measured.cutting_force_N and "
                      "thrust_force_N) for this choice of models");
@@ -297,11 +299,21 @@ AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
                      "no value unless models.deformation = given (use cut.workpiece_temperature_K for the workpiece)");
   }
   scene.given_strain_rate_per_s = strain_rate;
+  if (scene.force == ForceModel::oxley && (scene.flow_stress.hall_petch || scene.flow_stress.dislocation)) {
+    throw InputError("models.flow_stress", "(microstructure terms)",
+                     "johnson_cook alone with models.force = oxley (Oxley's solution uses the Johnson-Cook law; "
+                     "use force merchant or liu_li with deformation oxley to add microstructure terms)");
+  }
   if (scene.force == ForceModel::oxley || scene.deformation == DeformationModel::oxley) {
-    scene.thermal = thermal_from_material(scene.material, "material");
-    scene.thermal->validate("material.thermal", scene.workpiece_temperature_K,
-                            scene.flow_stress.johnson_cook->melting_temperature_K);
-    scene.oxley_factors = oxley_factors_from_material(scene.material, "material");
+    OxleyParams oxley;
+    oxley.johnson_cook = *scene.flow_stress.johnson_cook;
+    oxley.policy = scene.flow_stress.policy;
+    oxley.thermal = thermal_from_material(scene.material, "material");
+    const auto factors = oxley_factors_from_material(scene.material, "material");
+    oxley.eta = factors.eta;
+    oxley.psi = factors.psi;
+    oxley.validate("material");
+    scene.oxley = oxley;
   }
 
   cut.finish();

@@ -59,8 +59,10 @@ void print_prediction(const std::string& scene_path, const kerf::AnalyticScene& 
   fmt::print("cutting force     {:.6g} N  ({:.6g} N/mm)\n", p.cutting_force_N, p.cutting_force_N / width_mm);
   fmt::print("thrust force      {:.6g} N  ({:.6g} N/mm)\n", p.thrust_force_N, p.thrust_force_N / width_mm);
   fmt::print("shear angle       {:.4g} deg\n", rad_to_deg(p.shear_angle_rad));
-  if (p.has_friction) fmt::print("friction angle    {:.4g} deg (from {})\n", rad_to_deg(p.friction_angle_rad),
-                                 scene.friction_origin);
+  if (p.has_friction) {
+    fmt::print("friction angle    {:.4g} deg (from {})\n", rad_to_deg(p.friction_angle_rad),
+               scene.friction_origin.empty() ? "the extended-Oxley solution" : scene.friction_origin);
+  }
   fmt::print("chip ratio        {:.4g} (chip thickness {:.6g} um)\n", p.chip_ratio, m_to_um(p.chip_thickness_m));
   fmt::print("flow stress       {:.6g} MPa (JC {:.6g} + Hall-Petch {:.6g} + dislocation {:.6g}); k_s = {:.6g} MPa\n",
              pa_to_mpa(p.flow.total_Pa), pa_to_mpa(p.flow.johnson_cook_Pa), pa_to_mpa(p.flow.hall_petch_Pa),

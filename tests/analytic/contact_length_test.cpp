@@ -33,7 +33,7 @@ TEST_CASE("Seed 003: Lee-Shaffer is twice Vinogradov for any shear angle", "[con
   }
 }
 
-TEST_CASE("Contact length is proportional to chip thickness; MSSP exceeds MEP as seed 003 reports", "[contact_length]") {
+TEST_CASE("Contact length is proportional to chip thickness and MSSP exceeds MEP as seed 003 reports", "[contact_length]") {
   const double a = deg_to_rad(15.0), beta = deg_to_rad(35.0);
   const double phi_mep = kerf::shear_angle(ShearAngleModel::merchant, a, beta);
   const double phi_mssp = kerf::shear_angle(ShearAngleModel::lee_shaffer, a, beta);

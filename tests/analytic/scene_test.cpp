@@ -34,7 +34,7 @@ TEST_CASE("A scene builds only the flow-stress terms it names", "[scene]") {
   CHECK(p.flow.total_Pa == p.flow.hall_petch_Pa);
 }
 
-TEST_CASE("Forces scale with the width; per-width columns do not", "[scene]") {
+TEST_CASE("Forces scale with the width but per-width columns do not", "[scene]") {
   auto doc = orthogonal_scene();
   const auto narrow = kerf::predict(kerf::parse_analytic_scene(doc));
   doc["cut"]["width_mm"] = 3.0;
@@ -162,4 +162,37 @@ TEST_CASE("Extreme inputs give a finite result or a clean error, never NaN", "[s
   }
   INFO("finite " << finite << ", refused " << refused);
   CHECK(finite > 1000);
+}
+
+TEST_CASE("Oxley through a scene: forces, and the zone-AB state feeding Liu-Li", "[scene][oxley]") {
+  const Json steel = Json::parse(R"({
+    "material": "aisi_1045",
+    "tool": {"rake_deg": -7},
+    "cut": {"uncut_chip_thickness_um": 150, "width_mm": 1.6, "speed_m_per_min": 200},
+    "models": {"force": "oxley"}
+  })");
+  const auto oxley = kerf::predict(kerf::parse_analytic_scene(steel));
+  REQUIRE(oxley.oxley.has_value());
+  CHECK(oxley.cutting_force_N > oxley.thrust_force_N);
+  CHECK(oxley.oxley->residual < 1e-6);
+  CHECK(oxley.state.temperature_K > 298.15);  // shear-zone heating
+
+  // The same cut with a Liu-Li force and the Oxley state: with a sharp edge and Oxley's own friction
+  // angle and chip ratio, the Merchant force of the zone-AB stress is not Oxley's force (Oxley's shear plane
+  // carries a non-uniform stress), but it is within a factor of two.
+  Json chained = steel;
+  chained["models"] = {{"force", "liu_li"}, {"deformation", "oxley"}, {"shear_angle", "chip_ratio"}};
+  chained["cut"]["chip_ratio"] = oxley.chip_ratio;
+  chained["cut"]["friction_angle_deg"] = kerf::units::rad_to_deg(oxley.friction_angle_rad);
+  const auto liu_li = kerf::predict(kerf::parse_analytic_scene(chained));
+  CHECK_THAT(liu_li.state.temperature_K, WithinRel(oxley.state.temperature_K, 1e-12));
+  CHECK_THAT(liu_li.flow.total_Pa, WithinRel(oxley.flow.total_Pa, 1e-12));
+  CHECK(liu_li.cutting_force_N > 0.5 * oxley.cutting_force_N);
+  CHECK(liu_li.cutting_force_N < 2.0 * oxley.cutting_force_N);
+}
+
+TEST_CASE("Oxley refuses microstructure terms it cannot use", "[scene][oxley]") {
+  auto doc = orthogonal_scene();
+  doc["models"]["force"] = "oxley";
+  CHECK_THROWS_WITH(kerf::parse_analytic_scene(doc), Contains("models.flow_stress"));
 }

@@ -18,7 +18,7 @@ struct AnalyticModelInfo {
 };
 
 const std::vector<AnalyticModelInfo>& analytic_models();
-/// The names registered under one kind, in registry order.
-std::vector<std::string> analytic_model_names(std::string_view kind);
+/// The names registered under one kind, in registry order (built once).
+const std::vector<std::string>& analytic_model_names(std::string_view kind);
 
 }  // namespace kerf

@@ -16,6 +16,7 @@
 #include "kerf/analytic/flow_stress.hpp"
 #include "kerf/analytic/liu_li.hpp"
 #include "kerf/analytic/material_models.hpp"
+#include "kerf/analytic/oxley.hpp"
 #include "kerf/analytic/round_nose.hpp"
 #include "kerf/analytic/shear_angle.hpp"
 #include "kerf/analytic/thermal.hpp"
@@ -74,10 +75,9 @@ struct AnalyticScene {
   LiuLiParams liu_li;  ///< closure, lower limit, margin, quadrature (geometry filled at prediction)
   std::vector<ContactLengthRequest> contact_lengths;
 
-  // Oxley's material side (filled when force or deformation is 'oxley')
-  std::optional<ThermalProperties> thermal;
-  OxleyHeatFactors oxley_factors;
-  double oxley_tolerance = 1e-8;
+  // Extended Oxley (filled when force or deformation is 'oxley')
+  std::optional<OxleyParams> oxley;
+  OxleySolverOptions oxley_options;
 };
 
 /// Caches library materials between scenes of a sweep (a file is read once).
