@@ -71,7 +71,8 @@ double johnson_cook_thermal_factor(const JohnsonCookParams& jc, const JohnsonCoo
     return 1.0;
   }
   const double homologous = (temperature_K - jc.room_temperature_K) / (jc.melting_temperature_K - jc.room_temperature_K);
-  return 1.0 - std::pow(homologous, jc.m);
+  // m = 1 is the common case (steels, aluminium, SiC here); pow() is a fifth of an Oxley solve's time.
+  return 1.0 - (jc.m == 1.0 ? homologous : std::pow(homologous, jc.m));
 }
 
 double johnson_cook_stress(const JohnsonCookParams& jc, const JohnsonCookPolicy& policy, double strain,
