@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "kerf/analytic/critical_depth.hpp"
 #include "kerf/analytic/merchant.hpp"
 #include "kerf/error.hpp"
 #include "kerf/io.hpp"
@@ -49,6 +50,20 @@ void check_shear_angle(double phi, const AnalyticScene& scene) {
                                "give a measured cut.chip_ratio)",
                                units::rad_to_deg(phi), units::rad_to_deg(scene.rake_rad),
                                units::rad_to_deg(scene.friction_angle_rad.value_or(0.0))));
+}
+
+/// Every force model here is a ductile-regime model: warn, and name the model to use, above the critical depth.
+void add_regime(const AnalyticScene& scene, Prediction& p) {
+  if (!scene.critical_depth_m) return;
+  const double depth = scene.uncut_chip_thickness_m, critical = *scene.critical_depth_m;
+  const CuttingRegime regime = classify_regime(depth, critical);
+  p.regime = cutting_regime_name(regime);
+  if (regime == CuttingRegime::ductile) return;
+  p.warnings.push_back(fmt::format(
+      "uncut chip thickness {:.4g} nm is above the ductile-brittle critical depth d_c = {:.3g} nm (Bifano): {} "
+      "regime, where this ductile-regime model does not hold; use the DEM (kerf-dem) for cutting, or the "
+      "trepanning model for abrasive drilling",
+      units::m_to_nm(depth), units::m_to_nm(critical), p.regime));
 }
 
 DeformationState shear_plane_state_of(const OxleyResult& oxley) {
@@ -101,6 +116,7 @@ Prediction predict(const AnalyticScene& scene) {
   p.friction_angle_rad = scene.friction_angle_rad.value_or(0.0);
   const double t0 = scene.uncut_chip_thickness_m;
   if (scene.turning) round_nose_chip(scene.turning->geometry, &p.guards);  // records the turning guard
+  add_regime(scene, p);
 
   // The extended-Oxley solve (sharp tool at t0), when the scene's force or deformation model needs it.
   std::optional<OxleyResult> oxley;
@@ -228,6 +244,9 @@ std::vector<std::pair<std::string, std::string>> prediction_columns(const Analyt
     add("equivalent_chip_thickness_um", units::m_to_um(scene.turning->chip.equivalent_thickness_m));
     add("engaged_edge_length_mm", units::m_to_mm(scene.turning->chip.engaged_edge_length_m));
   }
+  row.emplace_back("critical_depth_nm",
+                   scene.critical_depth_m ? csv_number(units::m_to_nm(*scene.critical_depth_m)) : "");
+  add_text("regime", p.regime);
   add_text("guards", p.guards.names());
   std::string warnings;
   for (const auto& w : p.warnings) warnings += (warnings.empty() ? "" : "; ") + w;

@@ -13,6 +13,9 @@ const std::vector<AnalyticModelInfo>& analytic_models() {
       {"force", "liu_li", "Liu-Li edge-radius model, seed 001 Eqs. 1-3", "flow stress, friction, shear angle or chip ratio"},
       {"force", "oxley", "extended Oxley theory with Johnson-Cook (Lalwani et al. 2009), sharp tool",
        "material johnson_cook, thermal and oxley groups"},
+      {"force", "trepanning", "fixed-abrasive trepanning drill, axial force and torque (seed 002 Eqs. 21-22; brittle "
+                              "regime)", "tool outer/inner diameter, cut feed rate and spindle speed, the two lumped "
+                              "groups or hardness, half angle and friction"},
       {"flow_stress", "johnson_cook", "Johnson-Cook, seed 001 Eq. 9", "material johnson_cook group; a deformation state"},
       {"flow_stress", "hall_petch", "Hall-Petch with K_HP from seed 001 Eqs. 10-11", "material microstructure and elastic groups"},
       {"flow_stress", "dislocation", "incidental-boundary strengthening, seed 001 Eqs. 4-6", "material microstructure and elastic groups"},

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <mutex>
 
+#include "kerf/analytic/critical_depth.hpp"
 #include "kerf/analytic/registry.hpp"
 #include "kerf/error.hpp"
 #include "kerf/units.hpp"
@@ -182,6 +183,10 @@ AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
   // Models
   auto models = root.get_object("models");
   const std::string force_name = models.get_choice_or("force", "auto", analytic_model_names("force"));
+  if (force_name == "trepanning") {
+    throw InputError("models.force", force_name,
+                     "an orthogonal-cut model here (trepanning scenes are read by parse_trepanning_scene)");
+  }
   const auto terms = read_name_list(models, "flow_stress", analytic_model_names("flow_stress"), {"johnson_cook"});
   const std::string deformation_name =
       models.get_choice_or("deformation", "room_temperature", analytic_model_names("deformation"));
@@ -314,6 +319,12 @@ AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
     oxley.psi = factors.psi;
     oxley.validate("material");
     scene.oxley = oxley;
+  }
+
+  // The regime check needs E, H and K_c; metals carry no brittle group and get none.
+  if (const Json* brittle = scene.material.group("brittle");
+      brittle && brittle->contains("hardness_GPa") && brittle->contains("fracture_toughness_MPa_sqrt_m")) {
+    scene.critical_depth_m = critical_depth_m(brittle_properties(scene.material, "material"));
   }
 
   cut.finish();

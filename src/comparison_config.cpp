@@ -170,7 +170,7 @@ ComparisonConfig read_comparison_config(const std::filesystem::path& file) {
 }
 
 Comparison run_comparison(const ComparisonConfig& config) {
-  std::vector<Prediction> predictions;
+  std::vector<PredictedSet> predictions;
   for (const auto& p : config.predictions) predictions.push_back({p, {}});
   return compare(config.spec, config.measured, predictions);
 }

@@ -268,7 +268,7 @@ const QuantityComparison& Comparison::result(const std::string& key, std::size_t
   throw InputError("comparison.quantity", key, "a compared quantity key");
 }
 
-Comparison compare(const ComparisonSpec& spec, const DataSet& measured, const std::vector<Prediction>& predictions) {
+Comparison compare(const ComparisonSpec& spec, const DataSet& measured, const std::vector<PredictedSet>& predictions) {
   spec.validate();
   check_shape(spec, measured, "measured");
   if (predictions.empty()) throw InputError("predictions", "(none)", "at least one prediction to compare");
@@ -515,7 +515,7 @@ std::vector<PlannedFigure> plan_figures(const Comparison& c) {
         fig.series.push_back(std::move(m));
         for (const auto& rr : c.results) {
           if (rr.key != r.key) continue;
-          const Prediction& prediction = c.predictions[rr.prediction];
+          const PredictedSet& prediction = c.predictions[rr.prediction];
           PlotSeries line;
           line.label = prediction.data.name + (many_partitions ? suffix : "");
           line.color = many_partitions ? static_cast<int>(pi) : static_cast<int>(rr.prediction) + 1;

@@ -2,6 +2,8 @@
 //
 //   kerf-forces predict SCENE.json [--set key.path=value]... [--csv FILE]
 //   kerf-forces sweep SCENE.json --vary key.path=START:STOP:COUNT[:log] [--vary ...] --csv FILE
+//   kerf-forces compare SCENE.json --experiments FILE.csv [--map a=b]... [--fit] --out DIR
+//   kerf-forces regime SCENE.json (the ductile-brittle critical depth and the regime of the scene's cut)
 //   kerf-forces models            (the registered models)
 //   kerf-forces materials         (the bundled material library)
 //
@@ -17,6 +19,9 @@
 #include <string>
 #include <vector>
 
+#include "kerf/analytic/critical_depth.hpp"
+#include "kerf/analytic/evaluate.hpp"
+#include "kerf/analytic/scene_compare.hpp"
 #include "kerf/analytic/predict.hpp"
 #include "kerf/analytic/registry.hpp"
 #include "kerf/analytic/scene.hpp"
@@ -24,6 +29,7 @@
 #include "kerf/io.hpp"
 #include "kerf/json_reader.hpp"
 #include "kerf/material.hpp"
+#include "kerf/report.hpp"
 #include "kerf/units.hpp"
 
 namespace {
@@ -69,6 +75,10 @@ void print_prediction(const std::string& scene_path, const kerf::AnalyticScene& 
              pa_to_mpa(p.flow.dislocation_Pa), pa_to_mpa(p.flow.shear_Pa));
   fmt::print("at                strain {:.4g}, strain rate {:.4g} 1/s, temperature {:.5g} K\n", p.state.strain,
              p.state.strain_rate_per_s, p.state.temperature_K);
+  if (scene.critical_depth_m) {
+    fmt::print("regime            {} (critical depth d_c = {:.3g} nm)\n", p.regime,
+               kerf::units::m_to_nm(*scene.critical_depth_m));
+  }
   for (const auto& [column, length_m] : p.contact_lengths_m) {
     fmt::print("{:<17} {:.6g} mm\n", column.substr(0, column.size() - 3), m_to_mm(length_m));
   }
@@ -92,18 +102,102 @@ void print_prediction(const std::string& scene_path, const kerf::AnalyticScene& 
   for (const auto& w : p.warnings) fmt::print("warning           {}\n", w);
 }
 
+void write_row_csv(const std::string& csv, const kerf::Columns& columns) {
+  std::vector<std::string> header, values;
+  for (const auto& [name, value] : columns) {
+    header.push_back(name);
+    values.push_back(value);
+  }
+  kerf::write_file_atomically(csv, csv_text(header, {values}));
+}
+
+int run_predict_trepanning(const std::string& scene_path, const Json& document, const std::string& csv) {
+  const kerf::TrepanningScene scene = kerf::parse_trepanning_scene(document);
+  const kerf::TrepanningForces forces = kerf::trepanning_forces(scene.tool, scene.cut, scene.groups);
+  fmt::print("scene             {}\n", scene_path);
+  fmt::print("material          {} ({})\n", scene.material.name, scene.material.title);
+  fmt::print("force model       trepanning (seed 002 Eqs. 21-22, brittle regime)\n");
+  fmt::print("tool              outer diameter {:.6g} mm, inner diameter {:.6g} mm\n",
+             kerf::units::m_to_mm(scene.tool.outer_diameter_m), kerf::units::m_to_mm(scene.tool.inner_diameter_m));
+  fmt::print("cut               feed rate {:.6g} um/s, spindle speed {:.6g} rpm ({:.6g} um/rev)\n",
+             kerf::units::m_to_um(scene.cut.feed_rate_m_per_s), scene.cut.spindle_speed_rev_per_s * 60.0,
+             kerf::units::m_to_um(forces.feed_per_rev_m));
+  fmt::print("axial force       {:.6g} N\n", forces.axial_force_N);
+  fmt::print("torque            {:.6g} N m\n", forces.torque_N_m);
+  fmt::print("lumped groups     K_F = H tan(phi) = {:.6g} MPa, K_M = H (1 + pi tan(phi) mu / 2) = {:.6g} MPa ({})\n",
+             kerf::units::pa_to_mpa(scene.groups.axial_group_Pa), kerf::units::pa_to_mpa(scene.groups.torque_group_Pa),
+             scene.groups_origin);
+  if (!csv.empty()) write_row_csv(csv, kerf::trepanning_columns(scene, forces));
+  return 0;
+}
+
 int run_predict(const std::string& scene_path, const std::vector<std::string>& overrides, const std::string& csv) {
-  const kerf::AnalyticScene scene = kerf::parse_analytic_scene(load_scene_document(scene_path, overrides));
+  const Json document = load_scene_document(scene_path, overrides);
+  if (kerf::is_trepanning_scene(document)) return run_predict_trepanning(scene_path, document, csv);
+  const kerf::AnalyticScene scene = kerf::parse_analytic_scene(document);
   const kerf::Prediction prediction = kerf::predict(scene);
   print_prediction(scene_path, scene, prediction);
-  if (!csv.empty()) {
-    std::vector<std::string> header, values;
-    for (auto& [name, value] : kerf::prediction_columns(scene, prediction)) {
-      header.push_back(name);
-      values.push_back(value);
-    }
-    kerf::write_file_atomically(csv, csv_text(header, {values}));
+  if (!csv.empty()) write_row_csv(csv, kerf::prediction_columns(scene, prediction));
+  return 0;
+}
+
+int run_regime(const std::string& scene_path, const std::vector<std::string>& overrides) {
+  const Json document = load_scene_document(scene_path, overrides);
+  if (kerf::is_trepanning_scene(document)) {
+    fmt::print("{}: the trepanning model is a brittle-regime model (seed 002); the depth each grit cuts depends on "
+               "the grit density, which the scene does not give\n", scene_path);
+    return 0;
   }
+  const kerf::AnalyticScene scene = kerf::parse_analytic_scene(document);
+  const auto properties = kerf::brittle_properties(scene.material, "material");
+  const double critical = kerf::critical_depth_m(properties);
+  const double depth = scene.uncut_chip_thickness_m;
+  const auto regime = kerf::classify_regime(depth, critical);
+  fmt::print("material          {} (E = {:.4g} GPa, H = {:.4g} GPa, K_c = {:.4g} MPa m^0.5)\n", scene.material.name,
+             kerf::units::pa_to_gpa(properties.youngs_modulus_Pa), kerf::units::pa_to_gpa(properties.hardness_Pa),
+             kerf::units::pa_to_mpa(properties.fracture_toughness_Pa_sqrt_m));
+  fmt::print("critical depth    d_c = 0.15 (E/H) (K_c/H)^2 = {:.4g} nm (Bifano, Dow & Scattergood 1991)\n",
+             kerf::units::m_to_nm(critical));
+  fmt::print("uncut thickness   {:.4g} nm ({:.3g} d_c)\n", kerf::units::m_to_nm(depth), depth / critical);
+  fmt::print("regime            {}\n", kerf::cutting_regime_name(regime));
+  switch (regime) {
+    case kerf::CuttingRegime::ductile:
+      fmt::print("model to use      the ductile-regime analytic models (merchant, liu_li, oxley)\n");
+      break;
+    case kerf::CuttingRegime::transition:
+      fmt::print("model to use      neither cleanly (d_c to 3 d_c): the ductile models overestimate the chip's "
+                 "integrity, the DEM resolves the cracks (kerf-dem)\n");
+      break;
+    case kerf::CuttingRegime::brittle:
+      fmt::print("model to use      the DEM (kerf-dem) for cutting, or the trepanning model for abrasive drilling\n");
+      break;
+  }
+  return 0;
+}
+
+int run_compare(const std::string& scene_path, const std::vector<std::string>& overrides,
+                const std::string& experiments, const std::vector<std::string>& mappings, bool fit,
+                std::optional<double> measured_width_mm, const std::string& out_dir) {
+  const Json document = load_scene_document(scene_path, overrides);
+  kerf::SceneComparisonOptions options;
+  options.mappings = mappings;
+  options.fit = fit;
+  options.measured_width_mm = measured_width_mm;
+  kerf::SceneComparison result = kerf::compare_scene(document, experiments, options);
+  result.comparison.spec.description = fmt::format("Scene {} against {}.", scene_path, experiments);
+  const auto files = kerf::write_report(result.comparison, out_dir, result.report);
+  for (const auto& r : result.comparison.results) {
+    fmt::print("{:<28} n = {:<3} mean |error| {:6.2f} %   max |error| {:6.2f} %   bias {:+6.2f} %\n", r.key,
+               r.metrics.n, r.metrics.mean_abs_error_pct, r.metrics.max_abs_error_pct, r.metrics.bias_pct);
+  }
+  if (result.calibration) {
+    const auto& c = *result.calibration;
+    fmt::print("fitted            K_F = {:.6g} MPa (leave-one-out mean |error| {:.2f} %), K_M = {:.6g} MPa "
+               "(leave-one-out {:.2f} %)\n",
+               kerf::units::pa_to_mpa(c.axial.value_Pa), c.axial.loo.mean_abs_error_pct,
+               kerf::units::pa_to_mpa(c.torque.value_Pa), c.torque.loo.mean_abs_error_pct);
+  }
+  fmt::print("report            {} ({} files)\n", out_dir, files.size());
   return 0;
 }
 
@@ -164,9 +258,7 @@ int run_sweep(const std::string& scene_path, const std::vector<std::string>& ove
   kerf::MaterialCache materials;
 
   // The column set depends only on the models the scene asks for: take the names from the unvaried scene.
-  const kerf::AnalyticScene base_scene = kerf::parse_analytic_scene(base, &materials);
-  std::vector<std::string> names;
-  for (const auto& column : kerf::prediction_columns(base_scene, kerf::Prediction{})) names.push_back(column.first);
+  const std::vector<std::string> names = kerf::scene_column_names(base, &materials);
 
   struct Row {
     std::vector<std::string> values;
@@ -194,8 +286,7 @@ int run_sweep(const std::string& scene_path, const std::vector<std::string>& ove
         for (std::size_t a = 0; a < axes.size(); ++a) {
           kerf::apply_override(document, fmt::format("{}={}", axes[a].path, x[a]), "--vary");
         }
-        const auto scene = kerf::parse_analytic_scene(document, &materials);
-        for (auto& column : kerf::prediction_columns(scene, kerf::predict(scene))) {
+        for (auto& column : kerf::evaluate_scene_columns(document, &materials)) {
           rows[i].values.push_back(std::move(column.second));
         }
         if (rows[i].values.size() != names.size()) rows[i] = {{}, "internal: the column set changed"};
@@ -273,6 +364,25 @@ int main(int argc, char** argv) {
   sweep->add_option("--csv", csv, "CSV file to write")->required();
   sweep->add_option("--threads", threads, "threads (default: all cores)")->check(CLI::Range(1, 1024));
 
+  std::string experiments, out_dir;
+  std::vector<std::string> mappings;
+  bool fit = false;
+  std::optional<double> measured_width_mm;
+  auto* compare = app.add_subcommand("compare", "hold a scene against measured forces: report.md, CSV, JSON, plots");
+  compare->add_option("scene", scene_path, "scene file (JSON)")->required();
+  compare->add_option("--set", overrides, "override a scene value: key.path=value (repeatable)");
+  compare->add_option("--experiments", experiments, "experiment CSV ('#' lines are its citation)")->required();
+  compare->add_option("--map", mappings,
+                      "bind a CSV column: scene.key.path=column (a condition) or prediction_column=column");
+  compare->add_flag("--fit", fit, "fit the trepanning model's lumped groups to the measured rows first");
+  compare->add_option("--measured-width-mm", measured_width_mm, "width the measured forces act over (mm)")
+      ->check(CLI::PositiveNumber);
+  compare->add_option("--out", out_dir, "directory for the report")->required();
+
+  auto* regime = app.add_subcommand("regime", "ductile-brittle critical depth and the regime of the scene's cut");
+  regime->add_option("scene", scene_path, "scene file (JSON)")->required();
+  regime->add_option("--set", overrides, "override a scene value: key.path=value (repeatable)");
+
   auto* models = app.add_subcommand("models", "list the registered models");
   auto* materials = app.add_subcommand("materials", "list the bundled material library");
 
@@ -286,6 +396,8 @@ int main(int argc, char** argv) {
     if (threads > 0) omp_set_num_threads(threads);
     if (*predict) return run_predict(scene_path, overrides, csv);
     if (*sweep) return run_sweep(scene_path, overrides, vary, csv);
+    if (*compare) return run_compare(scene_path, overrides, experiments, mappings, fit, measured_width_mm, out_dir);
+    if (*regime) return run_regime(scene_path, overrides);
     if (*models) return list_models();
     if (*materials) return list_materials();
   } catch (const kerf::InputError& e) {

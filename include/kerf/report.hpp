@@ -15,7 +15,7 @@
 //   kerf::CsvTable table = kerf::read_csv_file(kerf::data_directory() / "experiments/k9_trepanning.csv");
 //   kerf::ComparisonSpec spec = ...;                               // conditions and quantities
 //   kerf::DataSet measured = kerf::dataset_from_csv(table, spec, {...columns...});
-//   kerf::Comparison c = kerf::compare(spec, measured, {kerf::Prediction{predicted_dataset, model_curve}});
+//   kerf::Comparison c = kerf::compare(spec, measured, {kerf::PredictedSet{predicted_dataset, model_curve}});
 //   kerf::write_report(c, "out/k9");   // report.md, comparison.csv, summary.json, *.png
 #include <cstddef>
 #include <filesystem>
@@ -135,7 +135,7 @@ DataSet dataset_from_csv(const CsvTable& table, const ComparisonSpec& spec, cons
 /// A model's value at any conditions (SI, per quantity, in the prediction's bases), for smooth model lines.
 using ModelCurve = std::function<std::vector<double>(const std::vector<ConditionValue>& conditions)>;
 
-struct Prediction {
+struct PredictedSet {
   DataSet data;
   ModelCurve curve;  ///< optional: plots draw the curve, else they join the predicted points
 };
@@ -173,7 +173,7 @@ struct QuantityComparison {
 struct Comparison {
   ComparisonSpec spec;
   DataSet measured;
-  std::vector<Prediction> predictions;
+  std::vector<PredictedSet> predictions;
   std::vector<QuantityComparison> results;  ///< per prediction, quantity and view
 
   /// The result for a quantity key ("axial_force", "main_force_per_width") and prediction; throws if absent.
@@ -182,7 +182,7 @@ struct Comparison {
 
 /// Matches and compares. InputError when the spec is invalid, a data set's shape does not fit the spec, the
 /// bases differ without an explicit view, or a quantity has no matched row at all.
-Comparison compare(const ComparisonSpec& spec, const DataSet& measured, const std::vector<Prediction>& predictions);
+Comparison compare(const ComparisonSpec& spec, const DataSet& measured, const std::vector<PredictedSet>& predictions);
 
 /// Extra content for a report (e.g. a calibration section).
 struct ReportOptions {

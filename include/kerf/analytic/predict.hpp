@@ -40,6 +40,7 @@ struct Prediction {
   std::vector<std::pair<std::string, double>> contact_lengths_m;  ///< (column, value)
   std::optional<LiuLiResult> liu_li;
   std::optional<OxleyDetails> oxley;
+  std::string regime;  ///< "ductile", "transition" or "brittle" against the critical depth; empty without one
   Guards guards;
   std::vector<std::string> warnings;
 };

@@ -75,6 +75,9 @@ struct AnalyticScene {
   LiuLiParams liu_li;  ///< closure, lower limit, margin, quadrature (geometry filled at prediction)
   std::vector<ContactLengthRequest> contact_lengths;
 
+  /// Bifano's ductile-brittle critical depth, when the material has E, hardness and toughness.
+  std::optional<double> critical_depth_m;
+
   // Extended Oxley (filled when force or deformation is 'oxley')
   std::optional<OxleyParams> oxley;
   OxleySolverOptions oxley_options;

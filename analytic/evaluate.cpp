@@ -1,0 +1,51 @@
+#include "kerf/analytic/evaluate.hpp"
+
+#include "kerf/analytic/predict.hpp"
+#include "kerf/io.hpp"
+#include "kerf/units.hpp"
+
+namespace kerf {
+
+bool is_trepanning_scene(const Json& document) {
+  if (!document.is_object()) return false;
+  const auto models = document.find("models");
+  if (models == document.end() || !models->is_object()) return false;
+  const auto force = models->find("force");
+  return force != models->end() && force->is_string() && force->get<std::string>() == "trepanning";
+}
+
+Columns trepanning_columns(const TrepanningScene& scene, const TrepanningForces& forces) {
+  Columns row;
+  const auto add = [&](std::string name, double value) { row.emplace_back(std::move(name), csv_number(value)); };
+  row.emplace_back("force_model", "trepanning");
+  add("outer_diameter_mm", units::m_to_mm(scene.tool.outer_diameter_m));
+  add("inner_diameter_mm", units::m_to_mm(scene.tool.inner_diameter_m));
+  add("feed_rate_um_per_s", units::m_to_um(scene.cut.feed_rate_m_per_s));
+  add("spindle_speed_rpm", scene.cut.spindle_speed_rev_per_s * 60.0);
+  add("feed_per_rev_um", units::m_to_um(forces.feed_per_rev_m));
+  add("axial_force_N", forces.axial_force_N);
+  add("torque_N_m", forces.torque_N_m);
+  add("axial_group_MPa", units::pa_to_mpa(scene.groups.axial_group_Pa));
+  add("torque_group_MPa", units::pa_to_mpa(scene.groups.torque_group_Pa));
+  return row;
+}
+
+Columns evaluate_scene_columns(const Json& document, MaterialCache* cache) {
+  if (is_trepanning_scene(document)) {
+    const TrepanningScene scene = parse_trepanning_scene(document);
+    return trepanning_columns(scene, trepanning_forces(scene.tool, scene.cut, scene.groups));
+  }
+  const AnalyticScene scene = parse_analytic_scene(document, cache);
+  return prediction_columns(scene, predict(scene));
+}
+
+std::vector<std::string> scene_column_names(const Json& document, MaterialCache* cache) {
+  const Columns columns = is_trepanning_scene(document)
+                              ? trepanning_columns(parse_trepanning_scene(document), TrepanningForces{})
+                              : prediction_columns(parse_analytic_scene(document, cache), Prediction{});
+  std::vector<std::string> names;
+  for (const auto& column : columns) names.push_back(column.first);
+  return names;
+}
+
+}  // namespace kerf

@@ -1,0 +1,271 @@
+#include "kerf/analytic/scene_compare.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <map>
+
+#include "kerf/analytic/evaluate.hpp"
+#include "kerf/comparison_config.hpp"
+#include "kerf/csv_table.hpp"
+#include "kerf/error.hpp"
+#include "kerf/units.hpp"
+
+namespace kerf {
+
+namespace {
+
+// Prediction columns that can be compared with measurements, and their units.
+const std::map<std::string, std::string>& comparable_quantities() {
+  static const std::map<std::string, std::string> quantities = {
+      {"cutting_force_N", "N"}, {"thrust_force_N", "N"}, {"axial_force_N", "N"}, {"torque_N_m", "N m"}};
+  return quantities;
+}
+
+/// The unit a key's suffix names ("feed_rate_um_per_s" -> um/s) and the key without it.
+std::pair<std::string, Unit> split_unit(const std::string& key, const std::string& path) {
+  static const std::vector<std::pair<std::string, std::string>> suffixes = {
+      {"_um_per_s", "um/s"}, {"_mm_per_s", "mm/s"}, {"_m_per_min", "m/min"}, {"_rpm", "rpm"}, {"_deg", "deg"},
+      {"_um", "um"},         {"_mm", "mm"},         {"_N_m", "N m"},         {"_N", "N"}};
+  for (const auto& [suffix, unit] : suffixes) {
+    if (key.size() > suffix.size() && key.ends_with(suffix)) {
+      return {key.substr(0, key.size() - suffix.size()), unit_named(unit, path)};
+    }
+  }
+  return {key, unit_named("", path)};
+}
+
+struct ConditionBinding {
+  std::string scene_path;  ///< "cut.feed_rate_um_per_s"
+  std::string column;      ///< CSV column
+  Unit unit;
+};
+struct QuantityBinding {
+  std::string prediction_column;  ///< "axial_force_N"
+  std::string column;             ///< CSV column
+  Unit unit;
+};
+
+/// Leaves of the scene's tool and cut objects (and cut.turning), by name.
+std::map<std::string, std::string> scene_condition_keys(const Json& document) {
+  std::map<std::string, std::string> keys;
+  for (const char* group : {"tool", "cut"}) {
+    const auto it = document.find(group);
+    if (it == document.end() || !it->is_object()) continue;
+    for (const auto& [key, value] : it->items()) {
+      if (value.is_number()) keys[key] = std::string(group) + "." + key;
+      if (value.is_object()) {
+        for (const auto& [inner, inner_value] : value.items()) {
+          if (inner_value.is_number()) keys[inner] = std::string(group) + "." + key + "." + inner;
+        }
+      }
+    }
+  }
+  return keys;
+}
+
+/// "feed_rate" -> "Feed rate": plot and table labels.
+std::string label_of(const std::string& key) {
+  std::string label = key;
+  std::replace(label.begin(), label.end(), '_', ' ');
+  if (!label.empty()) label[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(label[0])));
+  return label;
+}
+
+void set_path(Json& document, const std::string& path, double value) {
+  apply_override(document, fmt::format("{}={}", path, value), "--experiments");
+}
+
+double column_value(const Columns& columns, const std::string& name) {
+  for (const auto& [column, value] : columns) {
+    if (column == name) {
+      double x = 0.0;
+      if (!parse_number(value, x)) throw ModelError("compare", fmt::format("prediction column {} is empty", name));
+      return x;
+    }
+  }
+  throw ModelError("compare", fmt::format("the scene predicts no column {}", name));
+}
+
+}  // namespace
+
+SceneComparison compare_scene(const Json& scene_document, const std::filesystem::path& experiments_csv,
+                              const SceneComparisonOptions& options) {
+  SceneComparison out;
+  const CsvTable table = read_csv_file(experiments_csv);
+  MaterialCache materials;
+  const bool trepanning = is_trepanning_scene(scene_document);
+  const auto predicted_names = scene_column_names(scene_document, &materials);
+  const auto has_prediction = [&](const std::string& name) {
+    return std::find(predicted_names.begin(), predicted_names.end(), name) != predicted_names.end();
+  };
+
+  // Bindings: explicit mappings first, then columns matched by name.
+  std::vector<ConditionBinding> conditions;
+  std::vector<QuantityBinding> quantities;
+  std::vector<std::string> bound_columns;
+  for (const auto& mapping : options.mappings) {
+    const auto eq = mapping.find('=');
+    if (eq == std::string::npos || eq == 0 || eq + 1 == mapping.size()) {
+      throw InputError("--map", mapping, "scene.key.path=csv_column or prediction_column=csv_column");
+    }
+    const std::string left = mapping.substr(0, eq), column = mapping.substr(eq + 1);
+    table.column_index(column);  // InputError listing the columns when absent
+    if (left.find('.') != std::string::npos) {
+      const std::string leaf = left.substr(left.rfind('.') + 1);
+      conditions.push_back({left, column, split_unit(leaf, "--map").second});
+    } else {
+      if (!comparable_quantities().contains(left) || !has_prediction(left)) {
+        std::vector<std::string> valid;
+        for (const auto& [name, unit] : comparable_quantities())
+          if (has_prediction(name)) valid.push_back(name);
+        throw InputError("--map", left, "a prediction column of this scene: " + describe_choices(left, valid));
+      }
+      quantities.push_back({left, column, unit_named(comparable_quantities().at(left), "--map")});
+    }
+    bound_columns.push_back(column);
+  }
+  const auto scene_keys = scene_condition_keys(scene_document);
+  for (const auto& column : table.header) {
+    if (std::find(bound_columns.begin(), bound_columns.end(), column) != bound_columns.end()) continue;
+    if (comparable_quantities().contains(column) && has_prediction(column)) {
+      quantities.push_back({column, column, unit_named(comparable_quantities().at(column), "--experiments")});
+    } else if (auto it = scene_keys.find(column); it != scene_keys.end() && column != "width_mm") {
+      conditions.push_back({it->second, column, split_unit(column, "--experiments").second});
+    }
+  }
+  if (quantities.empty()) {
+    throw InputError("--experiments", experiments_csv.string(),
+                     "a column named like a prediction (cutting_force_N, thrust_force_N, axial_force_N, torque_N_m) "
+                     "or --map prediction_column=csv_column");
+  }
+
+  // The comparison: conditions and quantities in their units; width bases explicit.
+  ComparisonSpec& spec = out.comparison.spec;
+  spec.title = fmt::format("{} against {}", trepanning ? "Trepanning model" : "Analytic force model",
+                           experiments_csv.filename().string());
+  CsvBinding measured_binding;
+  measured_binding.name = "measured";
+  for (const auto& c : conditions) {
+    const auto [key, unit] = split_unit(c.scene_path.substr(c.scene_path.rfind('.') + 1), "--map");
+    spec.conditions.push_back({key, label_of(key), unit, true});
+    measured_binding.condition_columns.push_back(c.column);
+    measured_binding.condition_si.push_back(unit.si);
+    out.notes.push_back(fmt::format("condition {} <- CSV column {}", c.scene_path, c.column));
+  }
+  const double scene_width_m = [&] {
+    if (trepanning) return 0.0;
+    return parse_analytic_scene(scene_document, &materials).width_m;
+  }();
+  WidthBasis measured_basis = WidthBasis::total(scene_width_m);
+  if (table.has_column("width_mm")) {
+    measured_binding.width_column_mm = "width_mm";
+    out.notes.push_back("measured forces act over the width in the CSV column width_mm");
+  } else if (options.measured_width_mm) {
+    measured_basis = WidthBasis::total(*options.measured_width_mm * 1e-3);
+    out.notes.push_back(fmt::format("measured forces act over {} mm (--measured-width-mm)", *options.measured_width_mm));
+  } else if (!trepanning) {
+    out.notes.push_back(fmt::format("measured forces assumed to act over the scene's width, {} mm (the CSV has no "
+                                    "width_mm column; set --measured-width-mm otherwise)",
+                                    units::m_to_mm(scene_width_m)));
+  }
+  for (const auto& q : quantities) {
+    const auto [key, unit] = split_unit(q.prediction_column, "--map");
+    spec.quantities.push_back({key, label_of(key), unit});
+    measured_binding.quantity_columns.push_back(q.column);
+    measured_binding.quantity_si.push_back(unit.si);
+    const bool force = unit.suffix == "N" && !trepanning;
+    measured_binding.bases.push_back(force ? measured_basis : WidthBasis::none());
+    out.notes.push_back(fmt::format("quantity {} <- CSV column {}", q.prediction_column, q.column));
+  }
+  const DataSet measured = dataset_from_csv(table, spec, measured_binding);
+  const bool widths_differ =
+      !trepanning && (!measured_binding.width_column_mm.empty() ||
+                      std::abs(measured_basis.width_m - scene_width_m) > 1e-12 * scene_width_m);
+  if (widths_differ) spec.views = {WidthView::as_published, WidthView::per_unit_width};
+
+  // With --fit, a trepanning scene's groups are fitted to the measured rows.
+  Json document = scene_document;
+  if (options.fit) {
+    if (!trepanning) {
+      throw InputError("--fit", "(given)", "a trepanning scene: the fit calibrates its two lumped groups");
+    }
+    const TrepanningScene scene = parse_trepanning_scene(document);
+    std::vector<TrepanningObservation> observations;
+    const auto axial = std::find_if(quantities.begin(), quantities.end(),
+                                    [](const auto& q) { return q.prediction_column == "axial_force_N"; });
+    const auto torque = std::find_if(quantities.begin(), quantities.end(),
+                                     [](const auto& q) { return q.prediction_column == "torque_N_m"; });
+    if (axial == quantities.end() || torque == quantities.end()) {
+      throw InputError("--fit", experiments_csv.string(), "measured axial_force_N and torque_N_m columns to fit");
+    }
+    for (std::size_t r = 0; r < table.rows.size(); ++r) {
+      Json row_document = document;
+      for (const auto& c : conditions) set_path(row_document, c.scene_path, table.number(r, table.column_index(c.column)));
+      const TrepanningScene row_scene = parse_trepanning_scene(row_document);
+      observations.push_back({row_scene.cut, table.number(r, table.column_index(axial->column)),
+                              table.number(r, table.column_index(torque->column))});
+    }
+    out.calibration = calibrate_trepanning(scene.tool, observations);
+    const auto& fit = *out.calibration;
+    document["models"]["trepanning"] = {{"axial_group_MPa", units::pa_to_mpa(fit.groups.axial_group_Pa)},
+                                        {"torque_group_MPa", units::pa_to_mpa(fit.groups.torque_group_Pa)}};
+    out.report.extra_markdown = fmt::format(
+        "## Calibration (--fit)\n\nRelative least squares (GSL) of the two lumped groups on {} rows:\n\n"
+        "| group | value (MPa) | std. error (MPa) | mean abs error % | max abs error % | bias % | "
+        "leave-one-out mean abs % | leave-one-out max abs % |\n|---|---|---|---|---|---|---|---|\n"
+        "| K_F = H tan(phi) | {:.1f} | {:.1f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} |\n"
+        "| K_M = H (1 + pi tan(phi) mu / 2) | {:.1f} | {:.1f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} |\n",
+        observations.size(), units::pa_to_mpa(fit.axial.value_Pa), units::pa_to_mpa(fit.axial.standard_error_Pa),
+        fit.axial.fit.mean_abs_error_pct, fit.axial.fit.max_abs_error_pct, fit.axial.fit.bias_pct,
+        fit.axial.loo.mean_abs_error_pct, fit.axial.loo.max_abs_error_pct, units::pa_to_mpa(fit.torque.value_Pa),
+        units::pa_to_mpa(fit.torque.standard_error_Pa), fit.torque.fit.mean_abs_error_pct,
+        fit.torque.fit.max_abs_error_pct, fit.torque.fit.bias_pct, fit.torque.loo.mean_abs_error_pct,
+        fit.torque.loo.max_abs_error_pct);
+    out.report.extra_summary["fit"] = {
+        {"axial_group_MPa", units::pa_to_mpa(fit.axial.value_Pa)},
+        {"torque_group_MPa", units::pa_to_mpa(fit.torque.value_Pa)},
+        {"axial_force", {{"mean_abs_error_pct", fit.axial.fit.mean_abs_error_pct},
+                         {"loo_mean_abs_error_pct", fit.axial.loo.mean_abs_error_pct},
+                         {"loo_max_abs_error_pct", fit.axial.loo.max_abs_error_pct}}},
+        {"torque", {{"mean_abs_error_pct", fit.torque.fit.mean_abs_error_pct},
+                    {"loo_mean_abs_error_pct", fit.torque.loo.mean_abs_error_pct},
+                    {"loo_max_abs_error_pct", fit.torque.loo.max_abs_error_pct}}}};
+  }
+
+  // Predictions at each measured row's conditions, and a model curve for the plots.
+  const auto predict_at = [document, conditions, quantities, spec](const std::vector<ConditionValue>& at) {
+    Json d = document;
+    for (std::size_t i = 0; i < conditions.size(); ++i) {
+      set_path(d, conditions[i].scene_path, at[i].si.value_or(0.0) / spec.conditions[i].unit.si);
+    }
+    MaterialCache cache;
+    const Columns columns = evaluate_scene_columns(d, &cache);
+    std::vector<double> values;
+    for (std::size_t q = 0; q < quantities.size(); ++q) {
+      values.push_back(column_value(columns, quantities[q].prediction_column) * spec.quantities[q].unit.si);
+    }
+    return values;
+  };
+  DataSet predicted;
+  predicted.name = options.fit ? "model (fitted)" : "model";
+  for (std::size_t q = 0; q < quantities.size(); ++q) {
+    const bool force = spec.quantities[q].unit.suffix == "N" && !trepanning;
+    predicted.bases.push_back(force ? WidthBasis::total(scene_width_m) : WidthBasis::none());
+  }
+  for (const auto& row : measured.rows) {
+    DataRow p;
+    p.conditions = row.conditions;
+    p.values = predict_at(row.conditions);
+    predicted.rows.push_back(std::move(p));
+  }
+  out.comparison = compare(spec, measured, {PredictedSet{predicted, predict_at}});
+  std::string notes = "\n## How the columns were matched\n\n";
+  for (const auto& n : out.notes) notes += "- " + n + "\n";
+  out.report.extra_markdown += notes;
+  return out;
+}
+
+}  // namespace kerf

@@ -1,0 +1,33 @@
+#pragma once
+// One entry point for every analytic scene kind that kerf-forces runs: orthogonal cutting (models.force
+// merchant, liu_li, oxley or auto; scene.hpp) and the fixed-abrasive trepanning drill (models.force =
+// trepanning; trepanning_scene.hpp). Sweeps and comparisons call these and need not know the kind.
+//
+//   kerf::MaterialCache cache;
+//   kerf::Columns row = kerf::evaluate_scene_columns(document, &cache);   // [("axial_force_N", "440.1"), ...]
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "kerf/analytic/scene.hpp"
+#include "kerf/analytic/trepanning.hpp"
+#include "kerf/analytic/trepanning_scene.hpp"
+#include "kerf/json_reader.hpp"
+
+namespace kerf {
+
+using Columns = std::vector<std::pair<std::string, std::string>>;
+
+/// True when the document's models.force is "trepanning".
+bool is_trepanning_scene(const Json& document);
+
+/// The CSV row of a trepanning prediction (pass default forces for the column names alone).
+Columns trepanning_columns(const TrepanningScene& scene, const TrepanningForces& forces);
+
+/// Parses, predicts and formats one scene of either kind. Throws InputError / ModelError like the models.
+Columns evaluate_scene_columns(const Json& document, MaterialCache* cache);
+
+/// The column names a scene's rows will have (its models fix them), without predicting.
+std::vector<std::string> scene_column_names(const Json& document, MaterialCache* cache);
+
+}  // namespace kerf
