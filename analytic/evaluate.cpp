@@ -1,5 +1,6 @@
 #include "kerf/analytic/evaluate.hpp"
 
+#include "kerf/analytic/critical_depth.hpp"
 #include "kerf/analytic/predict.hpp"
 #include "kerf/io.hpp"
 #include "kerf/units.hpp"
@@ -27,6 +28,31 @@ Columns trepanning_columns(const TrepanningScene& scene, const TrepanningForces&
   add("torque_N_m", forces.torque_N_m);
   add("axial_group_MPa", units::pa_to_mpa(scene.groups.axial_group_Pa));
   add("torque_group_MPa", units::pa_to_mpa(scene.groups.torque_group_Pa));
+  if (scene.grits) {
+    // Column names need no prediction: diagnostics only when the forces were computed (feed per rev > 0).
+    const bool computed = forces.feed_per_rev_m > 0.0;
+    const auto d = computed ? trepanning_grit_diagnostics(scene.tool, scene.cut, scene.groups, *scene.grits)
+                            : TrepanningGritDiagnostics{};
+    const auto optional_number = [&](std::string name, double value) {
+      row.emplace_back(std::move(name), computed ? csv_number(value) : std::string());
+    };
+    optional_number("grit_count", d.grit_count);
+    optional_number("cutting_edges", d.cutting_edges);
+    optional_number("feed_per_edge_um", units::m_to_um(d.feed_per_edge_m));
+    optional_number("grit_depth_um", units::m_to_um(d.grit_depth_m));
+    optional_number("grit_normal_force_N", d.grit_normal_force_N);
+    optional_number("grit_tangential_force_N", d.grit_tangential_force_N);
+    // Each grit's depth against the ductile-brittle critical depth (Bifano), when the material has the data.
+    std::string critical_nm, regime;
+    if (const Json* brittle = scene.material.group("brittle");
+        computed && brittle && brittle->contains("fracture_toughness_MPa_sqrt_m")) {
+      const double critical = critical_depth_m(brittle_properties(scene.material, "material"));
+      critical_nm = csv_number(units::m_to_nm(critical));
+      regime = std::string(cutting_regime_name(classify_regime(d.grit_depth_m, critical)));
+    }
+    row.emplace_back("critical_depth_nm", critical_nm);
+    row.emplace_back("grit_regime", regime);
+  }
   return row;
 }
 

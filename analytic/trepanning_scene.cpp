@@ -26,6 +26,15 @@ TrepanningScene parse_trepanning_scene(const Json& document) {
   ObjectReader models = root.get_object("models");
   models.get_choice("force", {"trepanning"});
   ObjectReader params = models.get_object("trepanning");
+  if (auto grits = params.find_object("grits")) {
+    TrepanningGritParams g;
+    g.grit_density_per_m2 = 1e6 * grits->get_number("grit_density_per_mm2", Range::positive(), "1/mm^2");
+    g.shape_coefficient = grits->get_number_or("shape_coefficient", 1.0, Range{0.0, 1.0, true, false}, "");
+    g.grit_width_m = units::um_to_m(grits->get_number("grit_width_um", Range::positive(), "um"));
+    grits->finish();
+    g.validate("models.trepanning.grits");
+    scene.grits = g;
+  }
   const bool has_groups = params.has("axial_group_MPa") || params.has("torque_group_MPa");
   if (has_groups) {
     scene.groups.axial_group_Pa = units::mpa_to_pa(params.get_number("axial_group_MPa", Range::positive(), "MPa"));

@@ -127,7 +127,18 @@ int run_predict_trepanning(const std::string& scene_path, const Json& document, 
   fmt::print("lumped groups     K_F = H tan(phi) = {:.6g} MPa, K_M = H (1 + pi tan(phi) mu / 2) = {:.6g} MPa ({})\n",
              kerf::units::pa_to_mpa(scene.groups.axial_group_Pa), kerf::units::pa_to_mpa(scene.groups.torque_group_Pa),
              scene.groups_origin);
-  if (!csv.empty()) write_row_csv(csv, kerf::trepanning_columns(scene, forces));
+  const kerf::Columns columns = kerf::trepanning_columns(scene, forces);
+  if (scene.grits) {
+    const auto d = kerf::trepanning_grit_diagnostics(scene.tool, scene.cut, scene.groups, *scene.grits);
+    fmt::print("per grit          {:.4g} grits, {:.4g} cutting edges, depth {:.4g} nm, normal {:.4g} mN, tangential "
+               "{:.4g} mN (Eqs. 1-20)\n",
+               d.grit_count, d.cutting_edges, kerf::units::m_to_nm(d.grit_depth_m), 1e3 * d.grit_normal_force_N,
+               1e3 * d.grit_tangential_force_N);
+    for (const auto& [name, value] : columns) {
+      if (name == "grit_regime" && !value.empty()) fmt::print("grit regime       {} (each grit's depth against d_c)\n", value);
+    }
+  }
+  if (!csv.empty()) write_row_csv(csv, columns);
   return 0;
 }
 

@@ -38,6 +38,16 @@ assert max(ratio) - min(ratio) < 1e-9 * max(ratio), "axial force must be linear 
 print("trepanning sweep checks passed")
 PY
 
+"$bin" predict "$k9" --set 'models.trepanning.grits={"grit_density_per_mm2": 20, "grit_width_um": 50}' \
+  --csv "$tmp/grits.csv" >/dev/null || fail "trepanning predict with grits failed"
+python3 - "$tmp/grits.csv" <<'PY' || exit 1
+import csv, sys
+r = next(csv.DictReader(open(sys.argv[1])))
+# Eqs. 1-20 sum back to the totals: N_c F_an = F_n.
+assert abs(float(r["grit_count"]) * float(r["grit_normal_force_N"]) / float(r["axial_force_N"]) - 1) < 1e-9, r
+assert r["grit_regime"] in ("ductile", "transition", "brittle") and float(r["critical_depth_nm"]) > 0
+print("grit diagnostics checks passed")
+PY
 "$bin" regime "$src/data/scenes/psic_orthogonal.json" >"$tmp/regime" || fail "regime failed"
 grep -q "critical depth" "$tmp/regime" && grep -q "regime  *transition" "$tmp/regime" || fail "regime output: $(cat "$tmp/regime")"
 "$bin" regime "$src/data/scenes/psic_orthogonal.json" --set cut.uncut_chip_thickness_um=0.01 | grep -q "regime  *ductile" || fail "10 nm p-SiC must be ductile"

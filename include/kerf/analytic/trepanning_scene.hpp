@@ -11,7 +11,8 @@
 //
 // models.trepanning holds either the two lumped groups (K_F = H tan(phi), K_M = H (1 + pi tan(phi) mu / 2),
 // in MPa) or half_angle_deg and friction_coefficient with an optional hardness_GPa (default: the material's
-// brittle.hardness_GPa). Unknown keys are rejected with a suggestion.
+// brittle.hardness_GPa), and optionally `grits` for the per-grit diagnostics. Unknown keys are rejected with a
+// suggestion.
 //
 //   kerf::TrepanningScene s = kerf::parse_trepanning_scene(kerf::read_json_file("validation/k9_trepanning/scene.json"));
 //   kerf::TrepanningForces f = kerf::trepanning_forces(s.tool, s.cut, s.groups);
@@ -30,6 +31,9 @@ struct TrepanningScene {
   TrepanningCut cut;
   TrepanningGroups groups;
   std::optional<TrepanningMaterial> material_params;  ///< when the scene gave H, phi, mu instead of the groups
+  /// models.trepanning.grits {grit_density_per_mm2, shape_coefficient, grit_width_um}: the per-grit diagnostics
+  /// of Eqs. 1-20 (optional; the totals do not depend on them).
+  std::optional<TrepanningGritParams> grits;
   std::string groups_origin;  ///< "models.trepanning.axial_group_MPa/torque_group_MPa" or "hardness, half angle, friction"
 };
 
