@@ -15,10 +15,14 @@
 #include <vector>
 
 #include "kerf/analytic/liu_li.hpp"
+#include "bench_util.hpp"
 #include "kerf/io.hpp"
 #include "kerf/units.hpp"
 
 namespace {
+
+using kerf::bench::relative_error;
+using kerf::bench::thread_cpu_seconds;
 
 struct Case {
   kerf::LiuLiParams params;
@@ -48,17 +52,6 @@ std::vector<Case> make_cases() {
     }
   }
   return cases;
-}
-
-// Thread CPU time: a per-core figure that stays meaningful on a shared, loaded machine.
-double thread_cpu_seconds() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
-
-double relative_error(double value, double reference) {
-  return std::abs(value - reference) / std::max(std::abs(reference), 1e-300);
 }
 
 }  // namespace

@@ -21,10 +21,14 @@
 #include <vector>
 
 #include "kerf/analytic/oxley.hpp"
+#include "bench_util.hpp"
 #include "kerf/io.hpp"
 #include "kerf/units.hpp"
 
 namespace {
+
+using kerf::bench::relative_error;
+using kerf::bench::thread_cpu_seconds;
 
 kerf::OxleyParams aisi_1045() {
   kerf::OxleyParams p;
@@ -50,16 +54,6 @@ std::vector<kerf::OxleyCut> mix27() {
     }
   }
   return cuts;
-}
-
-double thread_cpu_seconds() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
-
-double relative_error(double value, double reference) {
-  return std::abs(value - reference) / std::max(std::abs(reference), 1e-300);
 }
 
 struct Row {

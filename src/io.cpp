@@ -27,11 +27,15 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view c
       throw std::runtime_error(fmt::format("failed while writing '{}'", temporary.string()));
     }
   }
+  move_into_place(temporary, path);
+}
+
+void move_into_place(const std::filesystem::path& temporary, const std::filesystem::path& path) {
   std::error_code error;
-  fs::rename(temporary, path, error);
+  std::filesystem::rename(temporary, path, error);
   if (error) {
     std::error_code ignored;
-    fs::remove(temporary, ignored);
+    std::filesystem::remove(temporary, ignored);
     throw std::runtime_error(fmt::format("cannot rename '{}' to '{}': {}", temporary.string(), path.string(),
                                          error.message()));
   }

@@ -1,5 +1,6 @@
 #include "kerf/plot.hpp"
 
+
 #include <fmt/format.h>
 #include <plplot.h>
 
@@ -12,6 +13,7 @@
 #include <system_error>
 
 #include "kerf/error.hpp"
+#include "kerf/io.hpp"
 
 namespace kerf {
 
@@ -371,13 +373,7 @@ void render_png(const FigureSpec& fig, const std::filesystem::path& path) {
     fs::remove(temporary, error);
     throw std::runtime_error(fmt::format("PLplot (pngcairo) did not write '{}'", path.string()));
   }
-  fs::rename(temporary, path, error);
-  if (error) {
-    std::error_code ignored;
-    fs::remove(temporary, ignored);
-    throw std::runtime_error(fmt::format("cannot rename '{}' to '{}': {}", temporary.string(), path.string(),
-                                         error.message()));
-  }
+  move_into_place(temporary, path);
 }
 
 }  // namespace kerf

@@ -18,6 +18,10 @@ namespace kerf {
 /// readers see the old file or the whole new one, never a partial one. Throws std::runtime_error.
 void write_file_atomically(const std::filesystem::path& path, std::string_view contents);
 
+/// Renames a finished temporary file over `path` (atomic on one file system); on failure removes the
+/// temporary and throws std::runtime_error. The last step of every all-or-nothing write.
+void move_into_place(const std::filesystem::path& temporary, const std::filesystem::path& path);
+
 /// Quotes a CSV field when it holds a comma, quote or newline (RFC 4180).
 std::string csv_escape(std::string_view field);
 /// Formats a number for CSV with round-trip precision ("1.5", "2.5e-07"); non-finite values become "".
