@@ -3,6 +3,7 @@
 //   kerf-forces predict SCENE.json [--set key.path=value]... [--csv FILE]
 //   kerf-forces sweep SCENE.json --vary key.path=START:STOP:COUNT[:log] [--vary ...] --csv FILE
 //   kerf-forces compare SCENE.json --experiments FILE.csv [--map a=b]... [--fit] --out DIR
+//   kerf-forces report COMPARISON.json --out DIR   (measured and predicted CSV files named in a JSON file)
 //   kerf-forces regime SCENE.json (the ductile-brittle critical depth and the regime of the scene's cut)
 //   kerf-forces models            (the registered models)
 //   kerf-forces materials         (the bundled material library)
@@ -25,6 +26,7 @@
 #include "kerf/analytic/predict.hpp"
 #include "kerf/analytic/registry.hpp"
 #include "kerf/analytic/scene.hpp"
+#include "kerf/comparison_config.hpp"
 #include "kerf/error.hpp"
 #include "kerf/io.hpp"
 #include "kerf/json_reader.hpp"
@@ -212,6 +214,17 @@ int run_compare(const std::string& scene_path, const std::vector<std::string>& o
   return 0;
 }
 
+int run_report(const std::string& config_path, const std::string& out_dir) {
+  const kerf::Comparison comparison = kerf::run_comparison(kerf::read_comparison_config(config_path));
+  const auto files = kerf::write_report(comparison, out_dir);
+  for (const auto& r : comparison.results) {
+    fmt::print("{:<28} n = {:<3} mean |error| {:7.2f} %   max |error| {:7.2f} %   bias {:+7.2f} %\n", r.key,
+               r.metrics.n, r.metrics.mean_abs_error_pct, r.metrics.max_abs_error_pct, r.metrics.bias_pct);
+  }
+  fmt::print("report            {} ({} files)\n", out_dir, files.size());
+  return 0;
+}
+
 struct Axis {
   std::string path;
   std::vector<double> values;
@@ -390,6 +403,11 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   compare->add_option("--out", out_dir, "directory for the report")->required();
 
+  std::string config_path;
+  auto* report = app.add_subcommand("report", "compare CSV data sets described in a comparison file (JSON)");
+  report->add_option("comparison", config_path, "comparison file (JSON), e.g. data/comparisons/*.json")->required();
+  report->add_option("--out", out_dir, "directory for the report")->required();
+
   auto* regime = app.add_subcommand("regime", "ductile-brittle critical depth and the regime of the scene's cut");
   regime->add_option("scene", scene_path, "scene file (JSON)")->required();
   regime->add_option("--set", overrides, "override a scene value: key.path=value (repeatable)");
@@ -409,6 +427,7 @@ int main(int argc, char** argv) {
     if (*sweep) return run_sweep(scene_path, overrides, vary, csv);
     if (*compare) return run_compare(scene_path, overrides, experiments, mappings, fit, measured_width_mm, out_dir);
     if (*regime) return run_regime(scene_path, overrides);
+    if (*report) return run_report(config_path, out_dir);
     if (*models) return list_models();
     if (*materials) return list_materials();
   } catch (const kerf::InputError& e) {

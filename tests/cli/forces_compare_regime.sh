@@ -55,4 +55,12 @@ grep -q "critical depth" "$tmp/regime" && grep -q "regime  *transition" "$tmp/re
 grep -q "material.brittle" "$tmp/err" || fail "the regime error must name the missing group: $(cat "$tmp/err")"
 "$bin" predict "$src/data/scenes/psic_orthogonal.json" --set cut.uncut_chip_thickness_um=1 --csv "$tmp/b.csv" | grep -q "brittle regime" || fail "no brittle warning"
 grep -q ",brittle," "$tmp/b.csv" || fail "the CSV regime column must say brittle"
+"$bin" report "$src/data/comparisons/soda_lime_dem_vs_experiment.json" --out "$tmp/soda" >/dev/null || fail "report failed"
+python3 - "$tmp/soda/summary.json" <<'PY' || exit 1
+import json, sys
+q = json.load(open(sys.argv[1]))["quantities"]
+# Seed 000: the paper's DEM (1 mm) against experiments (25.4 mm); both views must be reported.
+assert {"main_force", "main_force_per_width", "thrust_force", "thrust_force_per_width"} <= set(q), q.keys()
+print("report checks passed")
+PY
 echo "all compare/regime checks passed"
