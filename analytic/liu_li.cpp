@@ -63,28 +63,21 @@ struct EdgeIntegrand {
     return p.edge_radius_m * std::sqrt(1.0 - 2.0 * rc * std::sin(g) + rc * rc) / rc;
   }
 
-  double cutting(double g) const {
+  /// (cutting, thrust) integrands at local rake g: they share phi_k and the layer factor.
+  ValuePair operator()(double g) const {
     const double phi = local_shear_angle(p.chip_ratio, g);
+    const double layer = layer_over_sin_phi(g);
     switch (p.closure) {
-      case FrictionClosure::merchant: return layer_over_sin_phi(g) * 2.0 * std::cos(phi);  // sin(2phi)/sin(phi)
-      case FrictionClosure::lee_shaffer:
-        return layer_over_sin_phi(g) * std::numbers::sqrt2 * std::cos(kQuarterPi - phi);
+      case FrictionClosure::merchant:  // beta_k - g = pi/2 - 2 phi_k; the denominator is sin(phi_k)
+        return {layer * 2.0 * std::cos(phi), layer * std::cos(2.0 * phi) / std::sin(phi)};
+      case FrictionClosure::lee_shaffer:  // phi_k + beta_k - g = pi/4
+        return {layer * std::numbers::sqrt2 * std::cos(kQuarterPi - phi),
+                layer * std::numbers::sqrt2 * std::sin(kQuarterPi - phi)};
       case FrictionClosure::constant: break;
     }
     const double psi = p.friction_angle_rad - g;
-    return layer_over_sin_phi(g) * std::cos(psi) / std::cos(phi + psi);
-  }
-
-  double thrust(double g) const {
-    const double phi = local_shear_angle(p.chip_ratio, g);
-    switch (p.closure) {
-      case FrictionClosure::merchant: return layer_over_sin_phi(g) * std::cos(2.0 * phi) / std::sin(phi);
-      case FrictionClosure::lee_shaffer:
-        return layer_over_sin_phi(g) * std::numbers::sqrt2 * std::sin(kQuarterPi - phi);
-      case FrictionClosure::constant: break;
-    }
-    const double psi = p.friction_angle_rad - g;
-    return layer_over_sin_phi(g) * std::sin(psi) / std::cos(phi + psi);
+    const double denominator = std::cos(phi + psi);
+    return {layer * std::cos(psi) / denominator, layer * std::sin(psi) / denominator};
   }
 };
 
@@ -145,13 +138,9 @@ LiuLiResult liu_li_force_per_width(const LiuLiParams& p, double shear_flow_stres
                                    ? uncut_chip_thickness_m
                                    : std::min(uncut_chip_thickness_m, r * (1.0 + std::sin(out.lower_limit_rad)));
 
-    const EdgeIntegrand integrand{p};
-    const auto cutting = integrate([&](double g) { return integrand.cutting(g); }, out.lower_limit_rad,
-                                   out.upper_limit_rad, p.quadrature);
-    const auto thrust = integrate([&](double g) { return integrand.thrust(g); }, out.lower_limit_rad,
-                                  out.upper_limit_rad, p.quadrature);
-    out.edge = {k_s * cutting.value, k_s * thrust.value};
-    out.quadrature_error_estimate = k_s * (cutting.error_estimate + thrust.error_estimate);
+    const auto edge = integrate_pair(EdgeIntegrand{p}, out.lower_limit_rad, out.upper_limit_rad, p.quadrature);
+    out.edge = {k_s * edge.value.first, k_s * edge.value.second};
+    out.quadrature_error_estimate = k_s * edge.error_estimate;
   }
   out.total = {out.edge.cutting_N_per_m + out.rake_face.cutting_N_per_m,
                out.edge.thrust_N_per_m + out.rake_face.thrust_N_per_m};

@@ -6,6 +6,7 @@
 #include <boost/math/quadrature/gauss.hpp>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <boost/math/quadrature/tanh_sinh.hpp>
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -65,6 +66,23 @@ QuadratureResult integrate(const Integrand& f, double a, double b, const Quadrat
       out.value = boost::math::quadrature::gauss<double, 30>::integrate(f, a, b);
       break;
   }
+  return out;
+}
+
+double abs(const ValuePair& a) { return std::max(std::abs(a.first), std::abs(a.second)); }
+
+QuadraturePairResult integrate_pair(const PairIntegrand& f, double a, double b, const QuadratureSettings& settings) {
+  QuadraturePairResult out;
+  if (!(b > a)) return out;
+  if (settings.rule == QuadratureRule::gauss_kronrod) {
+    out.value = boost::math::quadrature::gauss_kronrod<double, 15>::integrate(
+        f, a, b, static_cast<unsigned>(settings.max_depth), settings.relative_tolerance, &out.error_estimate);
+    return out;
+  }
+  const auto first = integrate([&](double x) { return f(x).first; }, a, b, settings);
+  const auto second = integrate([&](double x) { return f(x).second; }, a, b, settings);
+  out.value = {first.value, second.value};
+  out.error_estimate = first.error_estimate + second.error_estimate;
   return out;
 }
 

@@ -38,4 +38,32 @@ using Integrand = std::function<double(double)>;
 /// carries a large error_estimate.
 QuadratureResult integrate(const Integrand& f, double a, double b, const QuadratureSettings& settings);
 
+/// Two integrands that share their expensive parts (the Liu-Li cutting and thrust integrands share the local
+/// shear angle): one pass over the nodes evaluates both. Error control uses max(|first|, |second|), so the
+/// tolerance is relative to the larger of the two integrals.
+struct ValuePair {
+  double first = 0.0, second = 0.0;
+
+  ValuePair() = default;
+  ValuePair(double a, double b) : first(a), second(b) {}
+  ValuePair(double a) : first(a), second(a) {}  // NOLINT: implicit, as Boost writes K x = 0
+  ValuePair& operator+=(const ValuePair& o) { first += o.first; second += o.second; return *this; }
+  friend ValuePair operator+(ValuePair a, const ValuePair& b) { return a += b; }
+  friend ValuePair operator-(const ValuePair& a, const ValuePair& b) { return {a.first - b.first, a.second - b.second}; }
+  friend ValuePair operator-(const ValuePair& a) { return {-a.first, -a.second}; }
+  friend ValuePair operator*(const ValuePair& a, double k) { return {a.first * k, a.second * k}; }
+  friend ValuePair operator*(double k, const ValuePair& a) { return a * k; }
+  friend double abs(const ValuePair& a);  ///< max(|first|, |second|): the norm of the error control
+};
+
+struct QuadraturePairResult {
+  ValuePair value;
+  double error_estimate = 0.0;
+};
+
+using PairIntegrand = std::function<ValuePair(double)>;
+
+/// Both integrals of f over [a, b] in one pass (Gauss-Kronrod) or one rule call each (the other rules).
+QuadraturePairResult integrate_pair(const PairIntegrand& f, double a, double b, const QuadratureSettings& settings);
+
 }  // namespace kerf
