@@ -85,11 +85,15 @@ int Simulation::add_wall(const Wall& wall) {
 int Simulation::install_bond(int i, int j) {
   if (i > j) std::swap(i, j);
   const auto ui = static_cast<std::size_t>(i), uj = static_cast<std::size_t>(j);
-  const double dx = p_.x[uj] - p_.x[ui], dy = p_.y[uj] - p_.y[ui];
+  return install_bond(i, j, std::hypot(p_.x[uj] - p_.x[ui], p_.y[uj] - p_.y[ui]), p_.theta[uj] - p_.theta[ui]);
+}
+
+int Simulation::install_bond(int i, int j, double ref_distance_m, double ref_rotation_rad) {
+  const auto ui = static_cast<std::size_t>(i), uj = static_cast<std::size_t>(j);
   b_.i.push_back(i);
   b_.j.push_back(j);
-  b_.ref_distance_m.push_back(std::hypot(dx, dy));
-  b_.ref_rotation_rad.push_back(p_.theta[uj] - p_.theta[ui]);
+  b_.ref_distance_m.push_back(ref_distance_m);
+  b_.ref_rotation_rad.push_back(ref_rotation_rad);
   b_.geometry.push_back(flat_joint_geometry(material_.joint, p_.radius[ui], p_.radius[uj], opt_.thickness_m));
   b_.active.push_back(1);
   for (int e = 0; e < b_.stride; ++e) {

@@ -91,6 +91,10 @@ class Simulation {
   int add_wall(const Wall& wall);
   /// Installs a stress-free flat joint between i and j (physics-dem.md section 1: zero gap at installation).
   int install_bond(int i, int j);
+  /// Installs a joint whose zero-gap state is at the given centre distance and relative rotation (loading).
+  int install_bond(int i, int j, double ref_distance_m, double ref_rotation_rad);
+  /// Recomputes the time step for the current radii and contacts (genesis changes radii).
+  void refresh_time_step() { if (!dt_fixed_) dt_ = stable_time_step(); }
   /// Installs joints at every pair whose surface gap is below `gap_m` (overlaps included).
   int install_bonds_within_gap(double gap_m);
   /// Builds the neighbour lists; computes the time step unless set_time_step was called.
