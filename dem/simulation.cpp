@@ -51,6 +51,12 @@ Simulation::Simulation(const Material& material, const SimulationOptions& option
                                                  : std::sqrt(material.contact.effective_modulus_pa / material.density_kg_per_m3);
 }
 
+void Simulation::set_time_step_safety(double f) {
+  if (!(f > 0 && f <= 1)) throw InputError("engine.time_step_safety", format_value(f), "a value in (0, 1]");
+  opt_.time_step_safety = f;
+  if (initialised_) refresh_time_step();
+}
+
 double Simulation::mass_of(double radius_m, std::uint8_t type) const {
   return types_.at(type).density_kg_per_m3 * std::numbers::pi * radius_m * radius_m * opt_.thickness_m;
 }

@@ -100,6 +100,8 @@ class Simulation {
   /// Builds the neighbour lists; computes the time step unless set_time_step was called.
   void initialise();
   void set_time_step(double dt_s) { dt_ = dt_s; dt_fixed_ = true; }
+  /// Changes f_safety (validated as engine.time_step_safety) and recomputes the step.
+  void set_time_step_safety(double f);
   /// f_safety min over disks of sqrt(m / k_tran), sqrt(I / k_rot), k summed over bonds and candidate contacts.
   double stable_time_step() const;
 

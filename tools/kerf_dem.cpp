@@ -1,0 +1,244 @@
+// kerf-dem: the 2D bonded-particle DEM with flat joints (issue 4).
+//
+//   kerf-dem run SCENE.json [--set key.path=value]... [--out DIR] [--threads N]
+//
+// Scene kinds: "specimen" (genesis, saved for reuse), "tension", "compression" (seed 000 calibration
+// tests). Exit status 2 for bad input (the message names the field, the value and what was expected),
+// 3 when the model fails (e.g. an unstable run).
+#include <omp.h>
+
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fmt/format.h>
+#include <iostream>
+#include <optional>
+
+#include "kerf/dem/lab_test.hpp"
+#include "kerf/dem/material.hpp"
+#include "kerf/dem/output.hpp"
+#include "kerf/dem/specimen.hpp"
+#include "kerf/error.hpp"
+#include "kerf/io.hpp"
+#include "kerf/json_reader.hpp"
+#include "kerf/units.hpp"
+
+namespace fs = std::filesystem;
+using namespace kerf;
+using namespace kerf::dem;
+
+namespace {
+
+struct Scene {
+  std::string kind;
+  Material material;
+  std::optional<std::string> specimen_file;
+  SpecimenSpec specimen;
+  LoadingSpec loading;
+  double time_step_safety = 0.8;
+  int frame_every_samples = 100;
+};
+
+Scene read_scene(const Json& doc, const fs::path& scene_dir) {
+  ObjectReader root(doc, "");
+  Scene s;
+  s.kind = root.get_choice("kind", {"specimen", "tension", "compression"});
+  root.ignore("description");
+  static const Json empty = Json::object();
+  const Json* material = root.find("material");
+  s.material = read_material(material ? *material : empty, "material");
+  if (auto spec = root.find_object("specimen")) {
+    if (spec->has("file")) {
+      fs::path file = spec->get_string("file");
+      if (file.is_relative()) file = scene_dir / file;
+      if (!fs::exists(file)) throw InputError("specimen.file", file.string(), "an existing specimen file");
+      s.specimen_file = file.string();
+    } else {
+      s.specimen = read_specimen_spec(*spec);
+    }
+    spec->finish();
+  }
+  if (auto engine = root.find_object("engine")) {
+    s.time_step_safety = engine->get_number_or("time_step_safety", 0.8, Range{0.0, 1.0, true, false}, "");
+    engine->finish();
+  }
+  if (s.kind == "tension" || s.kind == "compression") {
+    if (auto loading = root.find_object("loading")) {
+      s.loading = read_loading_spec(*loading, s.kind);
+      loading->finish();
+    } else {
+      ObjectReader none(empty, "loading");
+      s.loading = read_loading_spec(none, s.kind);
+    }
+  }
+  if (auto output = root.find_object("output")) {
+    s.frame_every_samples = output->get_int_or("frame_every_samples", 100, 0, 100000000);
+    output->finish();
+  }
+  root.finish();
+  return s;
+}
+
+Simulation obtain_specimen(const Scene& scene, SpecimenSpec& spec, SpecimenReport& report, double& wall_s) {
+  const auto start = std::chrono::steady_clock::now();
+  std::optional<Simulation> sim;
+  if (scene.specimen_file) {
+    sim.emplace(load_specimen(*scene.specimen_file, scene.material, spec, report));
+  } else {
+    spec = scene.specimen;
+    std::optional<Progress> progress;
+    std::int64_t shown = 0;
+    sim.emplace(make_specimen(scene.material, spec, report, [&](std::int64_t done, std::int64_t total) {
+      if (!progress) progress.emplace("specimen genesis", static_cast<std::size_t>(total), "steps");
+      progress->advance(static_cast<std::size_t>(done - shown));
+      shown = done;
+    }));
+    if (progress) progress->finish();
+  }
+  sim->set_time_step_safety(scene.time_step_safety);
+  wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return std::move(*sim);
+}
+
+Json specimen_json(const SpecimenSpec& spec, const SpecimenReport& report, double wall_s) {
+  Json j = specimen_spec_to_json(spec);
+  j.update(specimen_report_to_json(report));
+  j["genesis_wall_time_s"] = wall_s;
+  return j;
+}
+
+LabTestResult run_test(const Simulation& specimen, const LoadingSpec& loading, const std::string& label,
+                       const std::function<void(const Simulation&, const CurveSample&)>& extra,
+                       Simulation* final_state = nullptr) {
+  // Progress against the step count that reaches max_strain (an upper bound: most runs stop earlier).
+  const double height = [&] {
+    double lo = 1e300, hi = -1e300;
+    const auto& p = specimen.particles();
+    for (std::size_t i = 0; i < p.size(); ++i) lo = std::min(lo, p.y[i] - p.radius[i]), hi = std::max(hi, p.y[i] + p.radius[i]);
+    return hi - lo;
+  }();
+  const double n = static_cast<double>(specimen.particles().size());
+  const double steps = loading.max_strain * height / (2 * loading.speed_m_per_s * specimen.time_step());
+  Progress progress(label, static_cast<std::size_t>(n * steps), "particle-steps");
+  auto result = run_lab_test(specimen, loading, [&](const Simulation& sim, const CurveSample& sample) {
+    progress.advance(static_cast<std::size_t>(n * loading.sample_every_steps));
+    if (extra) extra(sim, sample);
+  }, final_state);
+  progress.finish();
+  return result;
+}
+
+int run_command(const std::string& scene_path, const std::vector<std::string>& sets, const fs::path& out, int threads) {
+  if (threads > 0) omp_set_num_threads(threads);
+  Json doc = read_json_file(scene_path);
+  for (const auto& s : sets) apply_override(doc, s);
+  const Scene scene = read_scene(doc, fs::path(scene_path).parent_path());
+  fs::create_directories(out);
+  SpecimenSpec spec;
+  SpecimenReport report;
+  double genesis_s = 0;
+  Simulation specimen = obtain_specimen(scene, spec, report, genesis_s);
+  Json summary{{"kind", scene.kind}, {"material", material_to_json(scene.material)},
+               {"specimen", specimen_json(spec, report, genesis_s)}, {"threads", omp_get_max_threads()},
+               {"time_step_s", specimen.time_step()}};
+  if (scene.kind == "specimen") {
+    save_specimen((out / "specimen.json").string(), specimen, spec, report);
+    write_vtp_frame(out / "specimen.vtp", specimen);
+    summary["n_particles"] = report.n_particles;
+    summary["steps"] = report.genesis_steps;
+    summary["wall_time_s"] = genesis_s;
+    summary["particle_steps_per_s"] = report.n_particles * static_cast<double>(report.genesis_steps) / genesis_s;
+    write_file_atomically(out / "summary.json", summary.dump(2) + "\n");
+    std::cout << fmt::format("specimen: {} disks, {} joints, packing fraction {:.4f}, coordination {:.3f}, residual "
+                             "stress ({:.3g}, {:.3g}) MPa -> {}\n",
+                             report.n_particles, report.n_bonds, report.packing_fraction, report.coordination_number,
+                             units::pa_to_mpa(report.residual_stress_xx_pa), units::pa_to_mpa(report.residual_stress_yy_pa),
+                             (out / "specimen.json").string());
+    return 0;
+  }
+  // Frames: every frame_every_samples samples, plus the final state.
+  std::vector<std::pair<double, std::vector<std::string>>> frames;
+  int sample_index = 0;
+  const auto write_frame = [&](const Simulation& sim) {
+    const std::string name = fmt::format("frame_{:04d}.vtp", frames.size()), cracks = fmt::format("cracks_{:04d}.vtp", frames.size());
+    write_vtp_frame(out / name, sim);
+    write_cracks_vtp(out / cracks, sim.cracks());
+    frames.push_back({sim.time(), {name, cracks}});
+  };
+  if (scene.frame_every_samples > 0) write_frame(specimen);
+  Simulation final_state = specimen;
+  LabTestResult res = run_test(specimen, scene.loading, scene.kind, [&](const Simulation& sim, const CurveSample&) {
+    if (scene.frame_every_samples > 0 && ++sample_index % scene.frame_every_samples == 0) write_frame(sim);
+  }, &final_state);
+  if (scene.frame_every_samples > 0) write_frame(final_state);
+  const bool tension = scene.kind == "tension";
+  Json results{{"youngs_modulus_GPa", units::pa_to_gpa(res.youngs_modulus_pa)},
+               {"poissons_ratio", res.poissons_ratio},
+               {tension ? "tensile_strength_MPa" : "compressive_strength_MPa", units::pa_to_mpa(res.peak_stress_pa)},
+               {"strain_at_peak", res.strain_at_peak},
+               {"n_tension_cracks", res.curve.back().n_tension_cracks},
+               {"n_shear_cracks", res.curve.back().n_shear_cracks},
+               {"stop_reason", res.stop_reason},
+               {"speed_m_per_s", res.speed_m_per_s},
+               {"specimen_width_mm", units::m_to_mm(res.width_m)},
+               {"gauge_length_mm", units::m_to_mm(res.height_m)}};
+  if (scene.loading.quasi_static_check) {
+    LoadingSpec half = scene.loading;
+    half.speed_m_per_s *= 0.5;
+    const LabTestResult slow = run_test(specimen, half, scene.kind + " (quasi-static check, half speed)", {});
+    results["quasi_static_check"] = Json{
+        {"speed_m_per_s", half.speed_m_per_s},
+        {"peak_stress_MPa", units::pa_to_mpa(slow.peak_stress_pa)},
+        {"peak_change_percent", 100 * (slow.peak_stress_pa - res.peak_stress_pa) / res.peak_stress_pa},
+        {"youngs_modulus_change_percent", 100 * (slow.youngs_modulus_pa - res.youngs_modulus_pa) / res.youngs_modulus_pa},
+        {"wall_time_s", slow.wall_time_s}};
+  }
+  summary["results"] = results;
+  summary["n_particles"] = res.n_particles;
+  summary["steps"] = res.steps;
+  summary["wall_time_s"] = res.wall_time_s;
+  summary["particle_steps_per_s"] = static_cast<double>(res.n_particles) * static_cast<double>(res.steps) / res.wall_time_s;
+  write_file_atomically(out / "curve.csv", curve_csv(res));
+  write_file_atomically(out / "cracks.csv", cracks_csv(final_state.cracks()));
+  if (scene.frame_every_samples > 0) write_pvd(out / "result.pvd", frames);
+  write_file_atomically(out / "summary.json", summary.dump(2) + "\n");
+  std::cout << fmt::format("{}: E = {:.2f} GPa, nu = {:.3f}, {} strength = {:.1f} MPa, {} steps, {:.1f} s -> {}\n", scene.kind,
+                           units::pa_to_gpa(res.youngs_modulus_pa), res.poissons_ratio, tension ? "tensile" : "compressive",
+                           units::pa_to_mpa(res.peak_stress_pa), res.steps, res.wall_time_s, out.string());
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"kerf-dem: 2D bonded-particle DEM with Potyondy's flat joint"};
+  app.require_subcommand(1);
+  std::string scene_path;
+  std::vector<std::string> sets;
+  std::string out_dir = "out";
+  int threads = 0;
+  auto* run = app.add_subcommand("run", "run a scene (kind: specimen, tension, compression)");
+  run->add_option("scene", scene_path, "scene JSON file")->required();
+  run->add_option("--set", sets, "override a scene value: key.path=value (repeatable)");
+  run->add_option("--out", out_dir, "output directory (default: out)");
+  run->add_option("--threads", threads, "OpenMP threads (default: all)")->check(CLI::Range(1, 1024));
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : kExitInputError;
+  }
+  try {
+    return run_command(scene_path, sets, out_dir, threads);
+  } catch (const InputError& e) {
+    std::cerr << "kerf-dem: error: " << e.what() << "\n";
+    return kExitInputError;
+  } catch (const ModelError& e) {
+    std::cerr << "kerf-dem: model error: " << e.what() << "\n";
+    return kExitModelError;
+  } catch (const std::exception& e) {
+    std::cerr << "kerf-dem: error: " << e.what() << "\n";
+    return 1;
+  }
+}
