@@ -15,6 +15,7 @@ namespace kerf::dem {
 namespace {
 
 enum Kind : std::uint32_t { kBond = 0, kPair = 1, kWall = 2 };
+
 constexpr std::uint32_t encode(std::size_t index, Kind kind, std::uint32_t role) {
   return static_cast<std::uint32_t>(index) << 3 | kind << 1 | role;
 }
@@ -294,7 +295,7 @@ void Simulation::compute_forces() {
   const double* th = p_.theta.data();
   const double* rad = p_.radius.data();
 
-#pragma omp parallel for schedule(static) reduction(+ : n_breaking, n_retired)
+#pragma omp parallel for schedule(static) reduction(+ : n_breaking, n_retired) if (nb > opt_.min_parallel_items)
   for (std::int64_t bb = 0; bb < nb; ++bb) {
     const auto b = static_cast<std::size_t>(bb);
     auto& out = b_.out[b];
@@ -336,7 +337,7 @@ void Simulation::compute_forces() {
   if (n_retired > 0) need_rebuild_ = true;
 
   const auto np = static_cast<std::int64_t>(pairs_.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (np > opt_.min_parallel_items)
   for (std::int64_t kk = 0; kk < np; ++kk) {
     const auto k = static_cast<std::size_t>(kk);
     const auto i = static_cast<std::size_t>(pairs_[k].i), j = static_cast<std::size_t>(pairs_[k].j);
@@ -359,7 +360,7 @@ void Simulation::compute_forces() {
   }
 
   const auto nw = static_cast<std::int64_t>(wall_contacts_.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (nw > opt_.min_parallel_items)
   for (std::int64_t kk = 0; kk < nw; ++kk) {
     const auto k = static_cast<std::size_t>(kk);
     const Wall& w = walls_[static_cast<std::size_t>(wall_contacts_[k][0])];
@@ -389,7 +390,7 @@ void Simulation::compute_forces() {
 
   // Gather: each particle sums its own entries in a fixed order (deterministic for any thread count).
   const auto n = static_cast<std::int64_t>(p_.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n > opt_.min_parallel_items)
   for (std::int64_t ii = 0; ii < n; ++ii) {
     const auto u = static_cast<std::size_t>(ii);
     double fx = 0, fy = 0, tq = 0;
@@ -470,7 +471,7 @@ void Simulation::step() {
   const double dt = dt_, half = 0.5 * dt, alpha = material_.local_damping;
   const auto n = static_cast<std::int64_t>(p_.size());
   double max_move2 = 0;
-#pragma omp parallel for schedule(static) reduction(max : max_move2)
+#pragma omp parallel for schedule(static) reduction(max : max_move2) if (n > opt_.min_parallel_items)
   for (std::int64_t ii = 0; ii < n; ++ii) {
     const auto u = static_cast<std::size_t>(ii);
     if (p_.group[u] == 0) {  // first half kick with the (damped) force of the last evaluation
@@ -497,7 +498,7 @@ void Simulation::step() {
     rebuild_neighbours();
   compute_forces();
   apply_breaks();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n > opt_.min_parallel_items)
   for (std::int64_t ii = 0; ii < n; ++ii) {
     const auto u = static_cast<std::size_t>(ii);
     if (p_.group[u] != 0) continue;  // prescribed velocity: forces kept raw for the reaction

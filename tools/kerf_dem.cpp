@@ -37,6 +37,7 @@ struct Scene {
   SpecimenSpec specimen;
   LoadingSpec loading;
   double time_step_safety = 0.8;
+  int min_parallel_items = 4096;
   int frame_every_samples = 100;
 };
 
@@ -61,6 +62,7 @@ Scene read_scene(const Json& doc, const fs::path& scene_dir) {
   }
   if (auto engine = root.find_object("engine")) {
     s.time_step_safety = engine->get_number_or("time_step_safety", 0.8, Range{0.0, 1.0, true, false}, "");
+    s.min_parallel_items = engine->get_int_or("min_parallel_items", 4096, 0, 1 << 30);
     engine->finish();
   }
   if (s.kind == "tension" || s.kind == "compression") {
@@ -97,6 +99,7 @@ Simulation obtain_specimen(const Scene& scene, SpecimenSpec& spec, SpecimenRepor
     if (progress) progress->finish();
   }
   sim->set_time_step_safety(scene.time_step_safety);
+  sim->set_min_parallel_items(scene.min_parallel_items);
   wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return std::move(*sim);
 }

@@ -24,7 +24,9 @@ Material glass(double damping = 0.0) {
 
 /// A small jointed cluster: a perturbed triangular lattice of nx x ny disks with radii 8-10 um.
 Simulation cluster(const Material& m, int nx, int ny, unsigned seed) {
-  Simulation sim(m, {});
+  SimulationOptions options;
+  options.min_parallel_items = 0;  // threads even for small systems, so that thread-count effects would show
+  Simulation sim(m, options);
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> jitter(-0.3e-6, 0.3e-6), radius(8e-6, 10e-6);
   const double a = 20e-6;

@@ -78,6 +78,9 @@ struct SimulationOptions {
   double time_step_safety = 0.8;   ///< f_safety in dt = f min(sqrt(m/k), sqrt(I/k_rot))
   double speed_limit_m_per_s = 0;  ///< runaway detection; 0: the p-wave speed sqrt(E*/rho)
   int check_every = 50;            ///< steps between instability checks
+  /// Loops shorter than this run on one thread (fork/join costs more than it saves on small systems).
+  /// Results do not depend on it: every sum is taken in a fixed order.
+  std::int64_t min_parallel_items = 4096;
 };
 
 class Simulation {
@@ -102,6 +105,7 @@ class Simulation {
   void set_time_step(double dt_s) { dt_ = dt_s; dt_fixed_ = true; }
   /// Changes f_safety (validated as engine.time_step_safety) and recomputes the step.
   void set_time_step_safety(double f);
+  void set_min_parallel_items(std::int64_t n) { opt_.min_parallel_items = n; }
   /// f_safety min over disks of sqrt(m / k_tran), sqrt(I / k_rot), k summed over bonds and candidate contacts.
   double stable_time_step() const;
 

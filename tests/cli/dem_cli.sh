@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# kerf-dem command-line behaviour: bad input exits 2 naming field, value and expectation; a small tension
+# run writes complete outputs; the same run on 1 and 2 threads gives identical curves.
+# Usage: dem_cli.sh <dir of built programs> <source dir>
+set -uo pipefail
+bin="$1/kerf-dem"
+src="$2"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+export KERF_DATA_DIR="$src/data"
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+expect_input_error() {  # expect_input_error <text expected on stderr> <args...>
+  local want="$1"; shift
+  "$bin" "$@" >"$work/out" 2>"$work/err"
+  local rc=$?
+  [ $rc -eq 2 ] || fail "exit $rc (expected 2) for: $* ($(cat "$work/err"))"
+  grep -qF -- "$want" "$work/err" || fail "stderr lacks '$want' for: $*: $(cat "$work/err")"
+}
+
+scene="$src/data/scenes/dem_tension.json"
+expect_input_error "specimen.radius_min_um = -1: expected a positive value" run "$scene" --set specimen.radius_min_um=-1 --out "$work/x"
+expect_input_error "did you mean 'tensile_strength_MPa'" run "$scene" --set material.tensile_strenght_MPa=10 --out "$work/x"
+expect_input_error "kind = bending: expected one of" run "$scene" --set kind=bending --out "$work/x"
+expect_input_error "material.n_elements = 1" run "$scene" --set material.n_elements=1 --out "$work/x"
+expect_input_error "material.base = glas" run "$scene" --set material.base=glas --out "$work/x"
+expect_input_error "no_such_scene.json" run "$work/no_such_scene.json" --out "$work/x"
+[ ! -e "$work/x/summary.json" ] || fail "a rejected scene wrote output"
+
+small=(--set specimen.width_mm=0.2 --set specimen.height_mm=0.4 --set specimen.growth_steps=2000
+       --set specimen.relax_steps=500 --set loading.quasi_static_check=false --set loading.speed_m_per_s=0.1)
+"$bin" run "$scene" "${small[@]}" --out "$work/t1" --threads 1 >/dev/null 2>"$work/err" || fail "tension run: $(cat "$work/err")"
+[ ! -s "$work/err" ] || fail "quiet expected when stderr is not a terminal, got: $(cat "$work/err")"
+for f in summary.json curve.csv cracks.csv result.pvd frame_0000.vtp cracks_0000.vtp; do
+  [ -s "$work/t1/$f" ] || fail "missing $f"
+done
+head -1 "$work/t1/curve.csv" | grep -qx "time_s,axial_strain,lateral_strain,stress_MPa,tension_cracks,shear_cracks" || fail "curve header"
+python3 - "$work/t1/summary.json" <<'PY' || fail "summary content"
+import json, sys
+s = json.load(open(sys.argv[1]))
+r = s["results"]
+assert 20 < r["youngs_modulus_GPa"] < 200, r
+assert 0.05 < r["poissons_ratio"] < 0.45, r
+assert r["tensile_strength_MPa"] > 10, r
+assert r["n_tension_cracks"] + r["n_shear_cracks"] > 0, r
+for k in ("n_particles", "steps", "wall_time_s", "particle_steps_per_s"):
+    assert s[k] > 0, k
+PY
+OMP_WAIT_POLICY=passive "$bin" run "$scene" "${small[@]}" --set engine.min_parallel_items=0 --out "$work/t2" --threads 2 >/dev/null 2>&1 || fail "2-thread run"
+cmp -s "$work/t1/curve.csv" "$work/t2/curve.csv" || fail "1 and 2 threads differ"
+cmp -s "$work/t1/cracks.csv" "$work/t2/cracks.csv" || fail "crack tables differ between 1 and 2 threads"
+echo "dem_cli: ok"
