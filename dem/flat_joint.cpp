@@ -36,7 +36,9 @@ FlatJointParams FlatJointParams::validated(const FlatJointParams& raw, const std
           "an integer in [2, 16] (N_r >= 2 in 2D, else bending never enters the strength test)");
   require(std::isfinite(raw.radius_multiplier) && raw.radius_multiplier > 0 && raw.radius_multiplier <= 1, path,
           "radius_multiplier", raw.radius_multiplier, "a value in (0, 1]");
-  return raw;
+  FlatJointParams p = raw;
+  p.tan_friction_angle = std::tan(raw.friction_angle_rad);
+  return p;
 }
 
 FlatJointGeometry flat_joint_geometry(const FlatJointParams& p, double r1_m, double r2_m, double thickness_m) {
@@ -54,7 +56,7 @@ FlatJointResult flat_joint_update(const FlatJointParams& p, const FlatJointGeome
   const double kn_t = geo.normal_stiffness * geo.thickness_m;  // force per gap per interface length
   const double ks_area = geo.shear_stiffness * area;
   const double theta = kin.rotation_rad;
-  const double tan_phi = std::tan(p.friction_angle_rad);
+  const double tan_phi = p.tan_friction_angle;
   FlatJointResult r;
   for (int e = 0; e < nr; ++e) {
     const double a = -geo.half_length_m + e * le;

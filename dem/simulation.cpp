@@ -519,6 +519,22 @@ void Simulation::run(std::int64_t n_steps) {
   for (std::int64_t s = 0; s < n_steps; ++s) step();
 }
 
+namespace {
+template <class... V>
+std::size_t bytes_of(const V&... v) {
+  return (... + (v.capacity() * sizeof(typename V::value_type)));
+}
+}  // namespace
+
+std::size_t Simulation::memory_bytes() const {
+  return bytes_of(p_.x, p_.y, p_.vx, p_.vy, p_.theta, p_.omega, p_.fx, p_.fy, p_.torque, p_.radius, p_.inv_mass,
+                  p_.inv_inertia, p_.type, p_.group) +
+         bytes_of(b_.i, b_.j, b_.ref_distance_m, b_.ref_rotation_rad, b_.geometry, b_.active, b_.shear_force_n,
+                  b_.bonded, b_.pending, b_.out) +
+         bytes_of(pairs_, pair_shear_, pair_out_, wall_contacts_, wall_shear_, wall_out_, incidence_start_, incidence_,
+                  x_ref_, y_ref_, wall_ref_, fixed_, cracks_);
+}
+
 std::array<double, 2> Simulation::group_force(std::uint8_t g) const {
   double fx = 0, fy = 0;
   for (auto k : fixed_) {

@@ -224,6 +224,31 @@ Simulation make_specimen(const Material& material, const SpecimenSpec& spec, Spe
   return sim;
 }
 
+Simulation with_material(const Simulation& specimen, const Material& material) {
+  if (material.joint.n_elements != specimen.bonds().stride)
+    throw InputError("material.n_elements", std::to_string(material.joint.n_elements),
+                     "the specimen's element count " + std::to_string(specimen.bonds().stride));
+  SimulationOptions options = specimen.options();
+  Simulation sim(material, options);
+  const auto& p = specimen.particles();
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    sim.add_particle(p.x[k], p.y[k], p.radius[k], p.type[k]);
+    sim.particles().theta[k] = p.theta[k];
+  }
+  const auto& b = specimen.bonds();
+  const auto stride = static_cast<std::size_t>(b.stride);
+  for (std::size_t k = 0; k < b.size(); ++k) {
+    if (!b.active[k]) continue;
+    const auto id = static_cast<std::size_t>(sim.install_bond(b.i[k], b.j[k], b.ref_distance_m[k], b.ref_rotation_rad[k]));
+    for (std::size_t e = 0; e < stride; ++e) {
+      sim.bonds().bonded[id * stride + e] = b.bonded[k * stride + e];
+      sim.bonds().shear_force_n[id * stride + e] = b.shear_force_n[k * stride + e];
+    }
+  }
+  sim.initialise();
+  return sim;
+}
+
 void save_specimen(const std::string& file_path, const Simulation& sim, const SpecimenSpec& spec,
                    const SpecimenReport& report) {
   const auto& p = sim.particles();

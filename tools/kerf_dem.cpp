@@ -11,10 +11,13 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <fmt/format.h>
 #include <iostream>
 #include <optional>
 
+#include "kerf/dem/calibration.hpp"
 #include "kerf/dem/lab_test.hpp"
 #include "kerf/dem/material.hpp"
 #include "kerf/dem/output.hpp"
@@ -39,12 +42,46 @@ struct Scene {
   double time_step_safety = 0.8;
   int min_parallel_items = 4096;
   int frame_every_samples = 100;
+  CalibrationSpec calibration;
+  std::string calibrated_name = "calibrated";
 };
+
+/// Reads one row of a macro-property table (data/experiments/*.csv: '#' comment lines, a header with
+/// youngs_modulus_GPa, tensile_strength_MPa, compressive_strength_MPa, poissons_ratio).
+MacroProperties read_targets_csv(const std::string& path, const std::string& row, const std::string& field) {
+  std::ifstream in(path);
+  if (!in) throw InputError(field + ".file", path, "a readable CSV file");
+  std::string line;
+  std::vector<std::string> header;
+  const auto split = [](const std::string& text) {
+    std::vector<std::string> out;
+    std::stringstream ss(text);
+    for (std::string cell; std::getline(ss, cell, ',');) out.push_back(cell);
+    return out;
+  };
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    if (header.empty()) {
+      header = split(line);
+      continue;
+    }
+    const auto cells = split(line);
+    if (cells.empty() || cells[0] != row) continue;
+    const auto value = [&](const std::string& name) {
+      const auto it = std::find(header.begin(), header.end(), name);
+      if (it == header.end()) throw InputError(field + ".file", path, "a CSV with a column " + name);
+      return std::stod(cells.at(static_cast<std::size_t>(it - header.begin())));
+    };
+    return {units::gpa_to_pa(value("youngs_modulus_GPa")), value("poissons_ratio"),
+            units::mpa_to_pa(value("tensile_strength_MPa")), units::mpa_to_pa(value("compressive_strength_MPa"))};
+  }
+  throw InputError(field + ".row", row, "a row of " + path);
+}
 
 Scene read_scene(const Json& doc, const fs::path& scene_dir) {
   ObjectReader root(doc, "");
   Scene s;
-  s.kind = root.get_choice("kind", {"specimen", "tension", "compression"});
+  s.kind = root.get_choice("kind", {"specimen", "tension", "compression", "calibrate"});
   root.ignore("description");
   static const Json empty = Json::object();
   const Json* material = root.find("material");
@@ -73,6 +110,54 @@ Scene read_scene(const Json& doc, const fs::path& scene_dir) {
       ObjectReader none(empty, "loading");
       s.loading = read_loading_spec(none, s.kind);
     }
+  }
+  if (s.kind == "calibrate") {
+    auto& c = s.calibration;
+    ObjectReader cal = root.get_object("calibration");
+    if (auto targets = cal.find_object("targets")) {
+      if (targets->has("file")) {
+        fs::path file = targets->get_string("file");
+        if (file.is_relative()) file = fs::path(data_directory()) / file;
+        c.targets = read_targets_csv(file.string(), targets->get_string_or("row", "soda_lime_glass"), targets->path());
+      }
+      c.targets.youngs_modulus_pa = units::gpa_to_pa(targets->get_number_or(
+          "youngs_modulus_GPa", units::pa_to_gpa(c.targets.youngs_modulus_pa), Range::positive(), "GPa"));
+      c.targets.poissons_ratio = targets->get_number_or("poissons_ratio", c.targets.poissons_ratio, Range::open(0.0, 0.5), "");
+      c.targets.tensile_strength_pa = units::mpa_to_pa(targets->get_number_or(
+          "tensile_strength_MPa", units::pa_to_mpa(c.targets.tensile_strength_pa), Range::positive(), "MPa"));
+      c.targets.compressive_strength_pa = units::mpa_to_pa(targets->get_number_or(
+          "compressive_strength_MPa", units::pa_to_mpa(c.targets.compressive_strength_pa), Range::positive(), "MPa"));
+      targets->finish();
+    }
+    if (const Json* free = cal.find("free")) {
+      const std::vector<std::string> valid{"effective_modulus_GPa", "stiffness_ratio", "tensile_strength_MPa", "cohesion_MPa"};
+      if (!free->is_array()) throw InputError(cal.key_path("free"), json_value_text(*free), "a list of parameter names");
+      c.free_modulus = c.free_stiffness_ratio = c.free_tensile_strength = c.free_cohesion = false;
+      for (const auto& item : *free) {
+        const std::string name = item.is_string() ? item.get<std::string>() : json_value_text(item);
+        if (std::find(valid.begin(), valid.end(), name) == valid.end())
+          throw InputError(cal.key_path("free"), name, describe_choices(name, valid));
+        c.free_modulus |= name == valid[0];
+        c.free_stiffness_ratio |= name == valid[1];
+        c.free_tensile_strength |= name == valid[2];
+        c.free_cohesion |= name == valid[3];
+      }
+    }
+    c.tolerance = cal.get_number_or("tolerance_percent", 3, Range::open(0.0, 100.0), "%") / 100;
+    c.max_evaluations = cal.get_int_or("max_evaluations", 24, 1, 1000);
+    s.calibrated_name = cal.get_string_or("material_name", "calibrated");
+    cal.finish();
+    LoadingSpec load;
+    if (auto loading = root.find_object("loading")) {
+      load = read_loading_spec(*loading, "compression");
+      loading->finish();
+    }
+    load.quasi_static_check = false;
+    c.compression = load;
+    c.compression.test = "compression";
+    c.tension = load;
+    c.tension.test = "tension";
+    c.tension.max_strain = std::min(load.max_strain, 0.005);
   }
   if (auto output = root.find_object("output")) {
     s.frame_every_samples = output->get_int_or("frame_every_samples", 100, 0, 100000000);
@@ -132,6 +217,64 @@ LabTestResult run_test(const Simulation& specimen, const LoadingSpec& loading, c
   return result;
 }
 
+Json macro_json(const MacroProperties& m) {
+  return Json{{"youngs_modulus_GPa", units::pa_to_gpa(m.youngs_modulus_pa)},
+              {"poissons_ratio", m.poissons_ratio},
+              {"tensile_strength_MPa", units::pa_to_mpa(m.tensile_strength_pa)},
+              {"compressive_strength_MPa", units::pa_to_mpa(m.compressive_strength_pa)}};
+}
+
+int run_calibration(const Scene& scene, const Simulation& specimen, Json& summary, const fs::path& out) {
+  const auto start = std::chrono::steady_clock::now();
+  std::string log = csv_line({"evaluation", "effective_modulus_GPa", "stiffness_ratio", "tensile_strength_MPa",
+                              "cohesion_MPa", "youngs_modulus_GPa", "poissons_ratio", "macro_tensile_strength_MPa",
+                              "macro_compressive_strength_MPa", "max_error_percent", "wall_time_s"});
+  const CalibrationResult r = calibrate(specimen, scene.material, scene.calibration, [&](const CalibrationEvaluation& e) {
+    const auto& m = e.material;
+    log += csv_line({std::to_string(e.index), csv_number(units::pa_to_gpa(m.contact.effective_modulus_pa)),
+                     csv_number(m.joint.stiffness_ratio), csv_number(units::pa_to_mpa(m.joint.tensile_strength_pa)),
+                     csv_number(units::pa_to_mpa(m.joint.cohesion_pa)), csv_number(units::pa_to_gpa(e.macro.youngs_modulus_pa)),
+                     csv_number(e.macro.poissons_ratio), csv_number(units::pa_to_mpa(e.macro.tensile_strength_pa)),
+                     csv_number(units::pa_to_mpa(e.macro.compressive_strength_pa)), csv_number(100 * e.max_relative_error),
+                     csv_number(e.wall_time_s)});
+    write_file_atomically(out / "calibration_log.csv", log);
+    std::cout << fmt::format("evaluation {}: E* {:.2f} GPa, kappa {:.3f}, sigma_c {:.1f} MPa, c {:.1f} MPa -> E {:.2f} GPa, "
+                             "nu {:.3f}, sigma_t {:.1f} MPa, sigma_C {:.1f} MPa (max error {:.1f} %, {:.0f} s)\n",
+                             e.index, units::pa_to_gpa(m.contact.effective_modulus_pa), m.joint.stiffness_ratio,
+                             units::pa_to_mpa(m.joint.tensile_strength_pa), units::pa_to_mpa(m.joint.cohesion_pa),
+                             units::pa_to_gpa(e.macro.youngs_modulus_pa), e.macro.poissons_ratio,
+                             units::pa_to_mpa(e.macro.tensile_strength_pa), units::pa_to_mpa(e.macro.compressive_strength_pa),
+                             100 * e.max_relative_error, e.wall_time_s)
+              << std::flush;
+  });
+  Material calibrated = r.material;
+  calibrated.name = scene.calibrated_name;
+  Json material = material_to_json(calibrated);
+  material.erase("name");
+  material["description"] = fmt::format(
+      "Calibrated by kerf-dem calibrate ({} evaluations, {}converged: max error {:.2f} % against targets E {:.1f} GPa, "
+      "nu {:.3f}, sigma_t {:.1f} MPa, sigma_c {:.1f} MPa) on a {} specimen of {} disks.",
+      r.log.size(), r.converged ? "" : "NOT ", 100 * r.max_relative_error, units::pa_to_gpa(scene.calibration.targets.youngs_modulus_pa),
+      scene.calibration.targets.poissons_ratio, units::pa_to_mpa(scene.calibration.targets.tensile_strength_pa),
+      units::pa_to_mpa(scene.calibration.targets.compressive_strength_pa), summary["specimen"]["packing"].get<std::string>(),
+      specimen.particles().size());
+  write_file_atomically(out / (scene.calibrated_name + ".json"), material.dump(2) + "\n");
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  summary["results"] = Json{{"converged", r.converged},
+                            {"max_error_percent", 100 * r.max_relative_error},
+                            {"evaluations", r.log.size()},
+                            {"targets", macro_json(scene.calibration.targets)},
+                            {"achieved", macro_json(r.macro)},
+                            {"calibrated_material", material}};
+  summary["n_particles"] = specimen.particles().size();
+  summary["wall_time_s"] = wall;
+  write_file_atomically(out / "summary.json", summary.dump(2) + "\n");
+  std::cout << fmt::format("calibration {} after {} evaluations (max error {:.2f} %), {:.0f} s -> {}\n",
+                           r.converged ? "converged" : "did NOT converge", r.log.size(), 100 * r.max_relative_error, wall,
+                           (out / (scene.calibrated_name + ".json")).string());
+  return r.converged ? 0 : kExitModelError;
+}
+
 int run_command(const std::string& scene_path, const std::vector<std::string>& sets, const fs::path& out, int threads) {
   if (threads > 0) omp_set_num_threads(threads);
   Json doc = read_json_file(scene_path);
@@ -160,6 +303,7 @@ int run_command(const std::string& scene_path, const std::vector<std::string>& s
                              (out / "specimen.json").string());
     return 0;
   }
+  if (scene.kind == "calibrate") return run_calibration(scene, specimen, summary, out);
   // Frames: every frame_every_samples samples, plus the final state.
   std::vector<std::pair<double, std::vector<std::string>>> frames;
   int sample_index = 0;

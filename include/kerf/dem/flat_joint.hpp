@@ -26,6 +26,7 @@ struct FlatJointParams {
   double friction_coefficient = 0.577;  ///< mu of unbonded elements (residual friction)
   int n_elements = 2;                   ///< N_r >= 2 (else bending never enters the strength test)
   double radius_multiplier = 1.0;       ///< lambda: R = lambda min(R1, R2)
+  double tan_friction_angle = 0.46630765815499858;  ///< tan(phi), derived by validated() (hot loop)
 
   /// Checks every field; throws InputError naming "<path>.<key>" with the unit of the JSON key.
   static FlatJointParams validated(const FlatJointParams& raw, const std::string& path);

@@ -145,6 +145,8 @@ class Simulation {
   std::array<double, 3> average_stress(double area_m2) const;  // xx, yy, xy
   /// Number of touching unjointed disk-disk contacts.
   int n_touching_pairs() const;
+  /// Bytes held by the engine's arrays (particles, joints with their elements, contact lists, incidence).
+  std::size_t memory_bytes() const;
   /// Forces the neighbour lists to be rebuilt before the next force evaluation.
   void invalidate_neighbours() { need_rebuild_ = true; }
   /// Recomputes forces at the current state without moving anything (no shear increments; static checks).

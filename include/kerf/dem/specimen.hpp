@@ -49,6 +49,10 @@ Json specimen_report_to_json(const SpecimenReport& r);
 Simulation make_specimen(const Material& material, const SpecimenSpec& spec, SpecimenReport& report,
                          const std::function<void(std::int64_t, std::int64_t)>& progress = {});
 
+/// The same packing and joint states with another material (stiffnesses follow the new micro-parameters;
+/// the element count must be the same). Walls and groups are not copied.
+Simulation with_material(const Simulation& specimen, const Material& material);
+
 /// Saves particles, joints with their element states, the spec and the report as JSON
 /// (format "kerf-dem-specimen", version 1; documented in docs/dem.md).
 void save_specimen(const std::string& file_path, const Simulation& sim, const SpecimenSpec& spec,
