@@ -6,7 +6,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <numbers>
+#include <type_traits>
 
 #include "kerf/error.hpp"
 
@@ -533,6 +535,146 @@ std::size_t Simulation::memory_bytes() const {
                   b_.bonded, b_.pending, b_.out) +
          bytes_of(pairs_, pair_shear_, pair_out_, wall_contacts_, wall_shear_, wall_out_, incidence_start_, incidence_,
                   x_ref_, y_ref_, wall_ref_, fixed_, cracks_);
+}
+
+namespace {
+
+constexpr std::string_view kStateMagic = "KERFDEM1";
+
+template <class T>
+void put(std::string& out, const T& value) {
+  static_assert(std::is_trivially_copyable_v<T>);
+  out.append(reinterpret_cast<const char*>(&value), sizeof(T));
+}
+template <class T>
+void put(std::string& out, const std::vector<T>& v) {
+  static_assert(std::is_trivially_copyable_v<T>);
+  put(out, static_cast<std::uint64_t>(v.size()));
+  out.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
+}
+
+struct Reader {
+  std::string_view bytes;
+  std::size_t at = 0;
+  void take(void* dst, std::size_t n) {
+    if (at + n > bytes.size()) throw ModelError("dem", "truncated engine state");
+    std::memcpy(dst, bytes.data() + at, n);
+    at += n;
+  }
+  template <class T>
+  void get(T& value) {
+    take(&value, sizeof(T));
+  }
+  template <class T>
+  void get(std::vector<T>& v) {
+    std::uint64_t n = 0;
+    get(n);
+    if (n > bytes.size()) throw ModelError("dem", "corrupt engine state");
+    v.resize(static_cast<std::size_t>(n));
+    take(v.data(), v.size() * sizeof(T));
+  }
+};
+
+}  // namespace
+
+std::string Simulation::serialize() const {
+  std::string out(kStateMagic);
+  put(out, material_.density_kg_per_m3);
+  put(out, material_.contact);
+  put(out, material_.joint);
+  put(out, material_.local_damping);
+  put(out, std::vector<char>(material_.name.begin(), material_.name.end()));
+  put(out, opt_);
+  put(out, types_);
+  for (const auto* v : {&p_.x, &p_.y, &p_.vx, &p_.vy, &p_.theta, &p_.omega, &p_.fx, &p_.fy, &p_.torque, &p_.radius,
+                        &p_.inv_mass, &p_.inv_inertia})
+    put(out, *v);
+  put(out, p_.type);
+  put(out, p_.group);
+  put(out, b_.stride);
+  put(out, b_.i);
+  put(out, b_.j);
+  put(out, b_.ref_distance_m);
+  put(out, b_.ref_rotation_rad);
+  put(out, b_.geometry);
+  put(out, b_.active);
+  put(out, b_.shear_force_n);
+  put(out, b_.bonded);
+  put(out, b_.pending);
+  put(out, b_.out);
+  put(out, walls_);
+  put(out, cracks_);
+  put(out, pairs_);
+  put(out, pair_shear_);
+  put(out, pair_out_);
+  put(out, wall_contacts_);
+  put(out, wall_shear_);
+  put(out, wall_out_);
+  put(out, incidence_start_);
+  put(out, incidence_);
+  put(out, x_ref_);
+  put(out, y_ref_);
+  put(out, wall_ref_);
+  put(out, fixed_);
+  for (bool flag : {need_rebuild_, need_breaks_, initialised_, dt_fixed_}) put(out, static_cast<std::uint8_t>(flag));
+  for (double v : {dt_, time_, skin_, speed_limit_}) put(out, v);
+  put(out, steps_);
+  return out;
+}
+
+Simulation Simulation::deserialize(std::string_view bytes) {
+  if (bytes.substr(0, kStateMagic.size()) != kStateMagic) throw ModelError("dem", "not a kerf-dem engine state");
+  Reader r{bytes, kStateMagic.size()};
+  Material m;
+  r.get(m.density_kg_per_m3);
+  r.get(m.contact);
+  r.get(m.joint);
+  r.get(m.local_damping);
+  std::vector<char> name;
+  r.get(name);
+  m.name.assign(name.begin(), name.end());
+  SimulationOptions opt;
+  r.get(opt);
+  Simulation sim(m, opt);
+  r.get(sim.types_);
+  auto& p = sim.p_;
+  for (auto* v : {&p.x, &p.y, &p.vx, &p.vy, &p.theta, &p.omega, &p.fx, &p.fy, &p.torque, &p.radius, &p.inv_mass, &p.inv_inertia})
+    r.get(*v);
+  r.get(p.type);
+  r.get(p.group);
+  auto& b = sim.b_;
+  r.get(b.stride);
+  r.get(b.i);
+  r.get(b.j);
+  r.get(b.ref_distance_m);
+  r.get(b.ref_rotation_rad);
+  r.get(b.geometry);
+  r.get(b.active);
+  r.get(b.shear_force_n);
+  r.get(b.bonded);
+  r.get(b.pending);
+  r.get(b.out);
+  r.get(sim.walls_);
+  r.get(sim.cracks_);
+  r.get(sim.pairs_);
+  r.get(sim.pair_shear_);
+  r.get(sim.pair_out_);
+  r.get(sim.wall_contacts_);
+  r.get(sim.wall_shear_);
+  r.get(sim.wall_out_);
+  r.get(sim.incidence_start_);
+  r.get(sim.incidence_);
+  r.get(sim.x_ref_);
+  r.get(sim.y_ref_);
+  r.get(sim.wall_ref_);
+  r.get(sim.fixed_);
+  std::uint8_t flags[4];
+  for (auto& f : flags) r.get(f);
+  sim.need_rebuild_ = flags[0], sim.need_breaks_ = flags[1], sim.initialised_ = flags[2], sim.dt_fixed_ = flags[3];
+  for (double* v : {&sim.dt_, &sim.time_, &sim.skin_, &sim.speed_limit_}) r.get(*v);
+  r.get(sim.steps_);
+  if (r.at != bytes.size()) throw ModelError("dem", "engine state has trailing bytes");
+  return sim;
 }
 
 std::array<double, 2> Simulation::group_force(std::uint8_t g) const {

@@ -195,3 +195,22 @@ TEST_CASE("engine: a single joint pulled apart breaks at 2 R t sigma_c", "[simul
   sim.run(100);
   CHECK(sim.group_force(2)[0] == 0);
 }
+
+TEST_CASE("engine: a run restored from its saved state equals the uninterrupted run", "[simulation]") {
+  Simulation sim = cluster(glass(0.2), 10, 10, 9);
+  sim.initialise();
+  randomise_velocities(sim, 10, 20.0, 2e6);  // joints break, contacts form and the lists are rebuilt
+  sim.run(250);
+  const std::string saved = sim.serialize();
+  sim.run(250);
+  Simulation resumed = Simulation::deserialize(saved);
+  CHECK(resumed.step_count() == 250);
+  resumed.run(250);
+  REQUIRE(!sim.cracks().empty());
+  CHECK(resumed.cracks().size() == sim.cracks().size());
+  CHECK(resumed.particles().x == sim.particles().x);
+  CHECK(resumed.particles().omega == sim.particles().omega);
+  CHECK(resumed.bonds().shear_force_n == sim.bonds().shear_force_n);
+  CHECK(resumed.time() == sim.time());
+  CHECK_THROWS_AS(Simulation::deserialize(saved.substr(0, saved.size() / 2)), kerf::ModelError);
+}
