@@ -13,6 +13,8 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <cstring>
+#include <iterator>
 #include <fmt/format.h>
 #include <iostream>
 #include <optional>
@@ -275,50 +277,86 @@ int run_calibration(const Scene& scene, const Simulation& specimen, Json& summar
   return r.converged ? 0 : kExitModelError;
 }
 
-int run_command(const std::string& scene_path, const std::vector<std::string>& sets, const fs::path& out, int threads) {
-  if (threads > 0) omp_set_num_threads(threads);
-  Json doc = read_json_file(scene_path);
-  for (const auto& s : sets) apply_override(doc, s);
-  const Scene scene = read_scene(doc, fs::path(scene_path).parent_path());
-  fs::create_directories(out);
-  SpecimenSpec spec;
-  SpecimenReport report;
-  double genesis_s = 0;
-  Simulation specimen = obtain_specimen(scene, spec, report, genesis_s);
-  Json summary{{"kind", scene.kind}, {"material", material_to_json(scene.material)},
-               {"specimen", specimen_json(spec, report, genesis_s)}, {"threads", omp_get_max_threads()},
-               {"time_step_s", specimen.time_step()}};
-  if (scene.kind == "specimen") {
-    save_specimen((out / "specimen.json").string(), specimen, spec, report);
-    write_vtp_frame(out / "specimen.vtp", specimen);
-    summary["n_particles"] = report.n_particles;
-    summary["steps"] = report.genesis_steps;
-    summary["wall_time_s"] = genesis_s;
-    summary["particle_steps_per_s"] = report.n_particles * static_cast<double>(report.genesis_steps) / genesis_s;
-    write_file_atomically(out / "summary.json", summary.dump(2) + "\n");
-    std::cout << fmt::format("specimen: {} disks, {} joints, packing fraction {:.4f}, coordination {:.3f}, residual "
-                             "stress ({:.3g}, {:.3g}) MPa -> {}\n",
-                             report.n_particles, report.n_bonds, report.packing_fraction, report.coordination_number,
-                             units::pa_to_mpa(report.residual_stress_xx_pa), units::pa_to_mpa(report.residual_stress_yy_pa),
-                             (out / "specimen.json").string());
-    return 0;
+/// What a test needs to continue after a kill (written atomically every --checkpoint-every samples).
+struct Checkpoint {
+  Json scene, summary;
+  std::vector<std::pair<double, std::vector<std::string>>> frames;
+  int sample_index = 0, checkpoint_every = 0;
+  std::string scene_dir, specimen, run;
+
+  std::string bytes() const {
+    Json head{{"scene", scene}, {"summary", summary}, {"frames", frames}, {"sample_index", sample_index},
+              {"checkpoint_every", checkpoint_every}, {"scene_dir", scene_dir}};
+    std::string out = "KERFCKP1";
+    const std::string head_text = head.dump();
+    for (const std::string* part : {&head_text, &specimen, &run}) {
+      const auto n = static_cast<std::uint64_t>(part->size());
+      out.append(reinterpret_cast<const char*>(&n), sizeof n);
+      out += *part;
+    }
+    return out;
   }
-  if (scene.kind == "calibrate") return run_calibration(scene, specimen, summary, out);
-  // Frames: every frame_every_samples samples, plus the final state.
+  static Checkpoint parse(const std::string& bytes) {
+    if (bytes.compare(0, 8, "KERFCKP1") != 0) throw ModelError("kerf-dem", "checkpoint.bin is not a kerf-dem checkpoint");
+    std::size_t at = 8;
+    std::string parts[3];
+    for (auto& part : parts) {
+      std::uint64_t n = 0;
+      if (at + sizeof n > bytes.size()) throw ModelError("kerf-dem", "truncated checkpoint");
+      std::memcpy(&n, bytes.data() + at, sizeof n);
+      at += sizeof n;
+      if (at + n > bytes.size()) throw ModelError("kerf-dem", "truncated checkpoint");
+      part = bytes.substr(at, static_cast<std::size_t>(n));
+      at += static_cast<std::size_t>(n);
+    }
+    const Json head = Json::parse(parts[0]);
+    Checkpoint c;
+    c.scene = head.at("scene");
+    c.summary = head.at("summary");
+    c.frames = head.at("frames").get<decltype(c.frames)>();
+    c.sample_index = head.at("sample_index");
+    c.checkpoint_every = head.at("checkpoint_every");
+    c.scene_dir = head.at("scene_dir");
+    c.specimen = std::move(parts[1]);
+    c.run = std::move(parts[2]);
+    return c;
+  }
+};
+
+struct TestProgress {
   std::vector<std::pair<double, std::vector<std::string>>> frames;
   int sample_index = 0;
+  std::string scene_dir;
+};
+
+/// Runs (or continues) a tension or compression test to its end, then the quasi-static check and outputs.
+int continue_test(const Scene& scene, const Json& doc, const Simulation& specimen, Json summary, const fs::path& out,
+                  int checkpoint_every, LabTestRun run, TestProgress tp) {
+  // Frames: every frame_every_samples samples, plus the final state.
   const auto write_frame = [&](const Simulation& sim) {
-    const std::string name = fmt::format("frame_{:04d}.vtp", frames.size()), cracks = fmt::format("cracks_{:04d}.vtp", frames.size());
+    const std::string name = fmt::format("frame_{:04d}.vtp", tp.frames.size());
+    const std::string cracks = fmt::format("cracks_{:04d}.vtp", tp.frames.size());
     write_vtp_frame(out / name, sim);
     write_cracks_vtp(out / cracks, sim.cracks());
-    frames.push_back({sim.time(), {name, cracks}});
+    tp.frames.push_back({sim.time(), {name, cracks}});
   };
-  if (scene.frame_every_samples > 0) write_frame(specimen);
-  Simulation final_state = specimen;
-  LabTestResult res = run_test(specimen, scene.loading, scene.kind, [&](const Simulation& sim, const CurveSample&) {
-    if (scene.frame_every_samples > 0 && ++sample_index % scene.frame_every_samples == 0) write_frame(sim);
-  }, &final_state);
-  if (scene.frame_every_samples > 0) write_frame(final_state);
+  if (scene.frame_every_samples > 0 && tp.sample_index == 0) write_frame(specimen);
+  const double n = static_cast<double>(specimen.particles().size());
+  const double steps = scene.loading.max_strain * run.result().height_m / (2 * scene.loading.speed_m_per_s * run.simulation().time_step());
+  Progress progress(scene.kind, static_cast<std::size_t>(n * steps), "particle-steps");
+  progress.advance(static_cast<std::size_t>(n * scene.loading.sample_every_steps * tp.sample_index));
+  while (run.advance()) {
+    ++tp.sample_index;
+    progress.advance(static_cast<std::size_t>(n * scene.loading.sample_every_steps));
+    if (scene.frame_every_samples > 0 && tp.sample_index % scene.frame_every_samples == 0) write_frame(run.simulation());
+    if (checkpoint_every > 0 && tp.sample_index % checkpoint_every == 0) {
+      Checkpoint c{doc, summary, tp.frames, tp.sample_index, checkpoint_every, tp.scene_dir, specimen.serialize(), run.serialize()};
+      write_file_atomically(out / "checkpoint.bin", c.bytes());
+    }
+  }
+  progress.finish();
+  const LabTestResult& res = run.result();
+  if (scene.frame_every_samples > 0) write_frame(run.simulation());
   const bool tension = scene.kind == "tension";
   Json results{{"youngs_modulus_GPa", units::pa_to_gpa(res.youngs_modulus_pa)},
                {"poissons_ratio", res.poissons_ratio},
@@ -347,15 +385,66 @@ int run_command(const std::string& scene_path, const std::vector<std::string>& s
   summary["wall_time_s"] = res.wall_time_s;
   summary["particle_steps_per_s"] = static_cast<double>(res.n_particles) * static_cast<double>(res.steps) / res.wall_time_s;
   write_file_atomically(out / "curve.csv", curve_csv(res));
-  write_file_atomically(out / "cracks.csv", cracks_csv(final_state.cracks()));
-  if (scene.frame_every_samples > 0) write_pvd(out / "result.pvd", frames);
+  write_file_atomically(out / "cracks.csv", cracks_csv(run.simulation().cracks()));
+  if (scene.frame_every_samples > 0) write_pvd(out / "result.pvd", tp.frames);
   write_file_atomically(out / "summary.json", summary.dump(2) + "\n");
+  std::error_code ignored;
+  fs::remove(out / "checkpoint.bin", ignored);  // finished: nothing to resume
   std::cout << fmt::format("{}: E = {:.2f} GPa, nu = {:.3f}, {} strength = {:.1f} MPa, {} steps, {:.1f} s -> {}\n", scene.kind,
                            units::pa_to_gpa(res.youngs_modulus_pa), res.poissons_ratio, tension ? "tensile" : "compressive",
                            units::pa_to_mpa(res.peak_stress_pa), res.steps, res.wall_time_s, out.string());
   return 0;
 }
 
+int run_command(const std::string& scene_path, const std::vector<std::string>& sets, const fs::path& out, int threads,
+                int checkpoint_every) {
+  if (threads > 0) omp_set_num_threads(threads);
+  Json doc = read_json_file(scene_path);
+  for (const auto& s : sets) apply_override(doc, s);
+  const Scene scene = read_scene(doc, fs::path(scene_path).parent_path());
+  if (checkpoint_every > 0 && scene.kind != "tension" && scene.kind != "compression")
+    throw InputError("--checkpoint-every", std::to_string(checkpoint_every), "checkpoints only for tension and compression scenes");
+  fs::create_directories(out);
+  SpecimenSpec spec;
+  SpecimenReport report;
+  double genesis_s = 0;
+  Simulation specimen = obtain_specimen(scene, spec, report, genesis_s);
+  Json summary{{"kind", scene.kind}, {"material", material_to_json(scene.material)},
+               {"specimen", specimen_json(spec, report, genesis_s)}, {"threads", omp_get_max_threads()},
+               {"time_step_s", specimen.time_step()}};
+  if (scene.kind == "specimen") {
+    save_specimen((out / "specimen.json").string(), specimen, spec, report);
+    write_vtp_frame(out / "specimen.vtp", specimen);
+    summary["n_particles"] = report.n_particles;
+    summary["steps"] = report.genesis_steps;
+    summary["wall_time_s"] = genesis_s;
+    summary["particle_steps_per_s"] = report.n_particles * static_cast<double>(report.genesis_steps) / genesis_s;
+    write_file_atomically(out / "summary.json", summary.dump(2) + "\n");
+    std::cout << fmt::format("specimen: {} disks, {} joints, packing fraction {:.4f}, coordination {:.3f}, residual "
+                             "stress ({:.3g}, {:.3g}) MPa -> {}\n",
+                             report.n_particles, report.n_bonds, report.packing_fraction, report.coordination_number,
+                             units::pa_to_mpa(report.residual_stress_xx_pa), units::pa_to_mpa(report.residual_stress_yy_pa),
+                             (out / "specimen.json").string());
+    return 0;
+  }
+  if (scene.kind == "calibrate") return run_calibration(scene, specimen, summary, out);
+  LabTestRun run(specimen, scene.loading);
+  return continue_test(scene, doc, specimen, summary, out, checkpoint_every, std::move(run),
+                       {{}, 0, fs::absolute(scene_path).parent_path().string()});
+}
+
+int resume_command(const fs::path& dir, int threads) {
+  if (threads > 0) omp_set_num_threads(threads);
+  const fs::path file = dir / "checkpoint.bin";
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError("DIR", dir.string(), "a directory with a checkpoint.bin written by --checkpoint-every");
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  Checkpoint c = Checkpoint::parse(bytes);
+  const Scene scene = read_scene(c.scene, c.scene_dir);
+  const Simulation specimen = Simulation::deserialize(c.specimen);
+  return continue_test(scene, c.scene, specimen, c.summary, dir, c.checkpoint_every, LabTestRun::deserialize(c.run),
+                       {c.frames, c.sample_index, c.scene_dir});
+}
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -364,12 +453,18 @@ int main(int argc, char** argv) {
   std::string scene_path;
   std::vector<std::string> sets;
   std::string out_dir = "out";
-  int threads = 0;
-  auto* run = app.add_subcommand("run", "run a scene (kind: specimen, tension, compression)");
+  int threads = 0, checkpoint_every = 0;
+  std::string resume_dir;
+  auto* run = app.add_subcommand("run", "run a scene (kind: specimen, tension, compression, calibrate)");
   run->add_option("scene", scene_path, "scene JSON file")->required();
   run->add_option("--set", sets, "override a scene value: key.path=value (repeatable)");
   run->add_option("--out", out_dir, "output directory (default: out)");
   run->add_option("--threads", threads, "OpenMP threads (default: all)")->check(CLI::Range(1, 1024));
+  run->add_option("--checkpoint-every", checkpoint_every, "write DIR/checkpoint.bin every N samples (tests only)")
+      ->check(CLI::Range(1, 100000000));
+  auto* resume = app.add_subcommand("resume", "continue a killed test from DIR/checkpoint.bin");
+  resume->add_option("dir", resume_dir, "output directory of the killed run")->required();
+  resume->add_option("--threads", threads, "OpenMP threads (default: all)")->check(CLI::Range(1, 1024));
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -377,7 +472,8 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : kExitInputError;
   }
   try {
-    return run_command(scene_path, sets, out_dir, threads);
+    if (resume->parsed()) return resume_command(resume_dir, threads);
+    return run_command(scene_path, sets, out_dir, threads, checkpoint_every);
   } catch (const InputError& e) {
     std::cerr << "kerf-dem: error: " << e.what() << "\n";
     return kExitInputError;

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "kerf/dem/simulation.hpp"
@@ -46,6 +47,35 @@ struct LabTestResult {
   double time_step_s = 0, wall_time_s = 0;
   std::size_t n_particles = 0;
   std::string stop_reason;
+};
+
+/// A test in progress, advanced one sample at a time; it can be saved and restored (checkpoints) with
+/// bit-identical continuation.
+class LabTestRun {
+ public:
+  LabTestRun(const Simulation& specimen, const LoadingSpec& spec);
+  /// Runs one sample interval; returns false once the test has stopped.
+  bool advance();
+  bool finished() const { return finished_; }
+  const Simulation& simulation() const { return sim_; }
+  Simulation& simulation() { return sim_; }
+  const LoadingSpec& spec() const { return spec_; }
+  /// The result so far (E and nu filled in once finished).
+  const LabTestResult& result() const { return res_; }
+  std::string serialize() const;
+  static LabTestRun deserialize(std::string_view bytes);
+
+ private:
+  LabTestRun() : sim_(Material{}, SimulationOptions{}) {}
+  Simulation sim_;
+  LoadingSpec spec_;
+  LabTestResult res_;
+  std::vector<std::int64_t> left_, right_;
+  double side0_ = 0, t0_ = 0;
+  std::int64_t counted_ = 0;
+  int n_tension_ = 0, n_shear_ = 0;
+  bool finished_ = false;
+  double side_distance() const;
 };
 
 /// Runs one test on a copy of the specimen. `on_sample(sim, sample)` is called after every sample (for
