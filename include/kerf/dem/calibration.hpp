@@ -5,10 +5,12 @@
 // Method. Two trends are exact for a linear-elastic-brittle assembly loaded quasi-statically: scaling all
 // moduli (E*, Ebar*) by a scales E and leaves nu and the strengths unchanged; scaling both bond strengths
 // (sigma_c, c) by b scales both strengths and leaves E and nu unchanged. So after every evaluation E* is
-// corrected by E_target / E and sigma_c, c by sigma_t,target / sigma_t. What remains is a 2 x 2 problem
-// solved with GSL's trust-region least squares (gsl_multifit_nlinear, finite-difference Jacobian with a
-// 10 % step because the DEM response is not smooth at finer scales): the stiffness ratio (kappa* = kappabar*)
-// for nu, and the cohesion-to-tensile-strength ratio c / sigma_c for sigma_c,macro / sigma_t,macro.
+// corrected by E_target / E and sigma_c, c by sigma_t,target / sigma_t. What remains are two nearly
+// decoupled responses, solved together by a diagonal quasi-Newton (secant) iteration in log variables with
+// capped steps: the stiffness ratio (kappa* = kappabar*) for nu, and the cohesion-to-tensile-strength
+// ratio c / sigma_c for sigma_c,macro / sigma_t,macro. (GSL's Levenberg-Marquardt with a finite-difference
+// Jacobian and its Nelder-Mead simplex were tried first: on the non-smooth DEM response both spent most
+// evaluations on rejected or exploratory moves and did not reach 3 % within 16 evaluations; see docs/dem.md.)
 //
 //   CalibrationResult r = calibrate(specimen, start_material, spec, [](const CalibrationEvaluation& e) { ... });
 #include <functional>
