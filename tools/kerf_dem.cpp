@@ -23,6 +23,7 @@
 #include "kerf/dem/lab_test.hpp"
 #include "kerf/dem/material.hpp"
 #include "kerf/dem/output.hpp"
+#include "kerf/dem/png.hpp"
 #include "kerf/dem/specimen.hpp"
 #include "kerf/error.hpp"
 #include "kerf/io.hpp"
@@ -387,6 +388,7 @@ int continue_test(const Scene& scene, const Json& doc, const Simulation& specime
   write_file_atomically(out / "curve.csv", curve_csv(res));
   write_file_atomically(out / "cracks.csv", cracks_csv(run.simulation().cracks()));
   if (scene.frame_every_samples > 0) write_pvd(out / "result.pvd", tp.frames);
+  write_specimen_png(out / "specimen.png", run.simulation(), scene.kind + ", final state");
   write_file_atomically(out / "summary.json", summary.dump(2) + "\n");
   std::error_code ignored;
   fs::remove(out / "checkpoint.bin", ignored);  // finished: nothing to resume
@@ -415,6 +417,7 @@ int run_command(const std::string& scene_path, const std::vector<std::string>& s
   if (scene.kind == "specimen") {
     save_specimen((out / "specimen.json").string(), specimen, spec, report);
     write_vtp_frame(out / "specimen.vtp", specimen);
+    write_specimen_png(out / "specimen.png", specimen, "specimen");
     summary["n_particles"] = report.n_particles;
     summary["steps"] = report.genesis_steps;
     summary["wall_time_s"] = genesis_s;

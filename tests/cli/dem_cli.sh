@@ -30,8 +30,9 @@ expect_input_error "no_such_scene.json" run "$work/no_such_scene.json" --out "$w
 small=(--set specimen.width_mm=0.2 --set specimen.height_mm=0.4 --set specimen.growth_steps=2000
        --set specimen.relax_steps=500 --set loading.quasi_static_check=false --set loading.speed_m_per_s=0.1)
 "$bin" run "$scene" "${small[@]}" --out "$work/t1" --threads 1 >/dev/null 2>"$work/err" || fail "tension run: $(cat "$work/err")"
+head -c 8 "$work/t1/specimen.png" | od -An -c | grep -q "P   N   G" || fail "specimen.png is not a PNG"
 [ ! -s "$work/err" ] || fail "quiet expected when stderr is not a terminal, got: $(cat "$work/err")"
-for f in summary.json curve.csv cracks.csv result.pvd frame_0000.vtp cracks_0000.vtp; do
+for f in summary.json curve.csv cracks.csv result.pvd frame_0000.vtp cracks_0000.vtp specimen.png; do
   [ -s "$work/t1/$f" ] || fail "missing $f"
 done
 head -1 "$work/t1/curve.csv" | grep -qx "time_s,axial_strain,lateral_strain,stress_MPa,tension_cracks,shear_cracks" || fail "curve header"
