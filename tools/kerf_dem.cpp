@@ -47,6 +47,7 @@ struct Scene {
   int frame_every_samples = 100;
   CalibrationSpec calibration;
   std::string calibrated_name = "calibrated";
+  bool install_material = false;  ///< also write data/materials/<name>.json (the data directory in use)
 };
 
 /// Reads one row of a macro-property table (data/experiments/*.csv: '#' comment lines, a header with
@@ -149,6 +150,9 @@ Scene read_scene(const Json& doc, const fs::path& scene_dir) {
     c.tolerance = cal.get_number_or("tolerance_percent", 3, Range::open(0.0, 100.0), "%") / 100;
     c.max_evaluations = cal.get_int_or("max_evaluations", 24, 1, 1000);
     s.calibrated_name = cal.get_string_or("material_name", "calibrated");
+    if (s.calibrated_name.empty() || s.calibrated_name.find_first_of("/\\. ") != std::string::npos)
+      throw InputError(cal.key_path("material_name"), s.calibrated_name, "a file name without '/', '.', spaces");
+    s.install_material = cal.get_bool_or("install_material", false);
     cal.finish();
     LoadingSpec load;
     if (auto loading = root.find_object("loading")) {
@@ -262,6 +266,11 @@ int run_calibration(const Scene& scene, const Simulation& specimen, Json& summar
       units::pa_to_mpa(scene.calibration.targets.compressive_strength_pa), summary["specimen"]["packing"].get<std::string>(),
       specimen.particles().size());
   write_file_atomically(out / (scene.calibrated_name + ".json"), material.dump(2) + "\n");
+  if (scene.install_material) {
+    const fs::path installed = fs::path(data_directory()) / "materials" / (scene.calibrated_name + ".json");
+    write_file_atomically(installed, material.dump(2) + "\n");
+    summary["installed_material"] = installed.string();
+  }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   summary["results"] = Json{{"converged", r.converged},
                             {"max_error_percent", 100 * r.max_relative_error},

@@ -68,4 +68,17 @@ done
 [ ! -e "$work/c_kill/checkpoint.bin" ] || fail "checkpoint left after the finished run"
 expect_input_error "DIR = $work/nowhere" resume "$work/nowhere"
 expect_input_error "calibration.free = stiffness" run "$src/data/scenes/dem_calibrate.json" --set 'calibration.free=["stiffness"]' --out "$work/x"
+
+# Calibration on a tiny specimen: logs every evaluation and installs the material in the data directory.
+mkdir -p "$work/data" && cp -r "$src/data/materials" "$src/data/experiments" "$work/data/"
+KERF_DATA_DIR="$work/data" "$bin" run "$src/data/scenes/dem_calibrate.json" --set specimen.width_mm=0.16 \
+    --set specimen.height_mm=0.32 --set specimen.growth_steps=2000 --set specimen.relax_steps=500 \
+    --set loading.speed_m_per_s=0.2 --set calibration.max_evaluations=2 --set calibration.tolerance_percent=99 \
+    --set calibration.material_name=tiny_fj --set calibration.install_material=true --out "$work/cal" >"$work/cal.out" 2>&1 ||
+  fail "calibration: $(cat "$work/cal.out")"
+grep -q "^evaluation 0: " "$work/cal.out" || fail "no evaluation log line"
+[ "$(wc -l < "$work/cal/calibration_log.csv")" -ge 2 ] || fail "calibration_log.csv"
+cmp -s "$work/cal/tiny_fj.json" "$work/data/materials/tiny_fj.json" || fail "material not installed"
+KERF_DATA_DIR="$work/data" "$bin" run "$scene" "${small[@]}" --set material.base=tiny_fj --out "$work/t3" >/dev/null 2>&1 ||
+  fail "the installed material cannot be used as a base"
 echo "dem_cli: ok"
