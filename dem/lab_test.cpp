@@ -1,0 +1,220 @@
+// Tension and compression tests (seed 000, Section 3; physics-dem.md section 3).
+#include "kerf/dem/lab_test.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+
+#include "kerf/error.hpp"
+
+namespace kerf::dem {
+
+LoadingSpec read_loading_spec(ObjectReader& r, const std::string& test) {
+  LoadingSpec s;
+  s.test = test;
+  s.speed_m_per_s = r.get_number_or("speed_m_per_s", 0.05, Range{0.0, 10.0, true, false}, "m/s");
+  s.stop_fraction = r.get_number_or("stop_fraction_of_peak", 0.7, Range::open(0.0, 1.0), "");
+  s.max_strain = r.get_number_or("max_strain", test == "tension" ? 0.005 : 0.02, Range{0.0, 0.5, true, false}, "");
+  s.sample_every_steps = r.get_int_or("sample_every_steps", 50, 1, 1000000);
+  s.quasi_static_check = r.get_bool_or("quasi_static_check", true);
+  return s;
+}
+
+void secant_properties(LabTestResult& res, double fraction) {
+  const double target = fraction * res.peak_stress_pa;
+  res.youngs_modulus_pa = res.poissons_ratio = 0;
+  for (std::size_t k = 1; k < res.curve.size(); ++k) {
+    const auto &a = res.curve[k - 1], &b = res.curve[k];
+    if (b.stress_pa < target) continue;
+    const double w = b.stress_pa > a.stress_pa ? (target - a.stress_pa) / (b.stress_pa - a.stress_pa) : 1.0;
+    const double strain = a.axial_strain + w * (b.axial_strain - a.axial_strain);
+    const double lateral = a.lateral_strain + w * (b.lateral_strain - a.lateral_strain);
+    res.youngs_modulus_pa = strain > 0 ? target / strain : 0;
+    // Axial strain is positive in the loading sense: true axial strain is -strain in compression.
+    const double true_axial = res.test == "compression" ? -strain : strain;
+    res.poissons_ratio = strain > 0 ? -lateral / true_axial : 0;
+    return;
+  }
+}
+
+LabTestRun::LabTestRun(const Simulation& specimen, const LoadingSpec& spec) : sim_(specimen), spec_(spec) {
+  auto& p = sim_.particles();
+  const std::size_t n = p.size();
+  double x_min = 1e300, x_max = -1e300, y_min = 1e300, y_max = -1e300, r_max = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    x_min = std::min(x_min, p.x[i] - p.radius[i]);
+    x_max = std::max(x_max, p.x[i] + p.radius[i]);
+    y_min = std::min(y_min, p.y[i] - p.radius[i]);
+    y_max = std::max(y_max, p.y[i] + p.radius[i]);
+    r_max = std::max(r_max, p.radius[i]);
+  }
+  const double width = x_max - x_min, v = spec.speed_m_per_s;
+  double length = y_max - y_min;
+  if (spec.test == "tension") {
+    // Grips: the row of disks whose centres lie within 2 R_max of the top or the bottom.
+    double y_top = 0, y_bottom = 0;
+    int n_top = 0, n_bottom = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (p.y[i] < y_min + 2 * r_max) p.group[i] = 1, y_bottom += p.y[i], ++n_bottom;
+      else if (p.y[i] > y_max - 2 * r_max) p.group[i] = 2, y_top += p.y[i], ++n_top;
+      if (p.group[i]) p.vx[i] = p.omega[i] = 0, p.vy[i] = p.group[i] == 1 ? -v : v;
+    }
+    if (n_top == 0 || n_bottom == 0) throw ModelError("dem", "tension test: no grip particles found");
+    length = y_top / n_top - y_bottom / n_bottom;
+  } else {
+    sim_.add_wall({x_min - width, y_min, x_max + width, y_min, 0, v});
+    sim_.add_wall({x_max + width, y_max, x_min - width, y_max, 0, -v});
+  }
+  // Side disks for the lateral strain: the outermost disks in the middle half of the height.
+  for (std::size_t i = 0; i < n; ++i) {
+    if (p.group[i] || std::abs(p.y[i] - 0.5 * (y_min + y_max)) > 0.25 * (y_max - y_min)) continue;
+    if (p.x[i] - p.radius[i] < x_min + 0.5 * r_max) left_.push_back(static_cast<std::int64_t>(i));
+    if (p.x[i] + p.radius[i] > x_max - 0.5 * r_max) right_.push_back(static_cast<std::int64_t>(i));
+  }
+  side0_ = side_distance();
+  sim_.invalidate_neighbours();
+  sim_.initialise();
+  res_.test = spec.test;
+  res_.width_m = width;
+  res_.height_m = length;
+  res_.speed_m_per_s = v;
+  res_.n_particles = n;
+  res_.time_step_s = sim_.time_step();
+  counted_ = static_cast<std::int64_t>(sim_.cracks().size());
+  t0_ = sim_.time();
+  res_.curve.push_back({t0_, 0, 0, 0, 0, 0});
+}
+
+double LabTestRun::side_distance() const {
+  const auto& p = sim_.particles();
+  double l = 0, r = 0;
+  for (auto i : left_) l += p.x[static_cast<std::size_t>(i)];
+  for (auto i : right_) r += p.x[static_cast<std::size_t>(i)];
+  return r / static_cast<double>(std::max<std::size_t>(right_.size(), 1)) -
+         l / static_cast<double>(std::max<std::size_t>(left_.size(), 1));
+}
+
+bool LabTestRun::advance() {
+  if (finished_) return false;
+  const auto start = std::chrono::steady_clock::now();
+  sim_.run(spec_.sample_every_steps);
+  const auto& cracks = sim_.cracks();
+  for (; counted_ < static_cast<std::int64_t>(cracks.size()); ++counted_)
+    (cracks[static_cast<std::size_t>(counted_)].mode == BreakMode::tension ? n_tension_ : n_shear_)++;
+  const double elapsed = sim_.time() - t0_, t = sim_.options().thickness_m;
+  const double stress = spec_.test == "tension"
+                            ? 0.5 * (sim_.group_force(1)[1] - sim_.group_force(2)[1]) / (res_.width_m * t)
+                            : 0.5 * (sim_.walls()[1].fy - sim_.walls()[0].fy) / (res_.width_m * t);
+  const double strain = 2 * spec_.speed_m_per_s * elapsed / res_.height_m;
+  res_.curve.push_back({elapsed, strain, side0_ > 0 ? side_distance() / side0_ - 1 : 0, stress, n_tension_, n_shear_});
+  if (stress > res_.peak_stress_pa) res_.peak_stress_pa = stress, res_.strain_at_peak = strain;
+  if (n_tension_ + n_shear_ > 0 && stress < spec_.stop_fraction * res_.peak_stress_pa) {
+    res_.stop_reason = "stress fell below the stop fraction of the peak";
+    finished_ = true;
+  } else if (strain >= spec_.max_strain) {
+    res_.stop_reason = "maximum strain reached before the stress fell";
+    finished_ = true;
+  }
+  res_.steps = sim_.step_count();
+  res_.wall_time_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (finished_) secant_properties(res_);
+  return !finished_;
+}
+
+namespace {
+template <class T>
+void put_raw(std::string& out, const T& v) {
+  out.append(reinterpret_cast<const char*>(&v), sizeof(T));
+}
+template <class T>
+void put_vec(std::string& out, const std::vector<T>& v) {
+  put_raw(out, static_cast<std::uint64_t>(v.size()));
+  out.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
+}
+void put_str(std::string& out, const std::string& s) { put_vec(out, std::vector<char>(s.begin(), s.end())); }
+struct In {
+  std::string_view b;
+  std::size_t at = 0;
+  void take(void* d, std::size_t n) {
+    if (at + n > b.size()) throw ModelError("dem", "truncated test checkpoint");
+    std::memcpy(d, b.data() + at, n);
+    at += n;
+  }
+  template <class T>
+  void raw(T& v) { take(&v, sizeof(T)); }
+  template <class T>
+  void vec(std::vector<T>& v) {
+    std::uint64_t n = 0;
+    raw(n);
+    if (n > b.size()) throw ModelError("dem", "corrupt test checkpoint");
+    v.resize(static_cast<std::size_t>(n));
+    take(v.data(), v.size() * sizeof(T));
+  }
+  void str(std::string& s) {
+    std::vector<char> c;
+    vec(c);
+    s.assign(c.begin(), c.end());
+  }
+};
+}  // namespace
+
+std::string LabTestRun::serialize() const {
+  std::string out = "KERFLAB1";
+  put_str(out, spec_.test);
+  put_raw(out, spec_.speed_m_per_s), put_raw(out, spec_.stop_fraction), put_raw(out, spec_.max_strain);
+  put_raw(out, spec_.sample_every_steps), put_raw(out, spec_.quasi_static_check);
+  put_vec(out, res_.curve);
+  for (double v : {res_.peak_stress_pa, res_.strain_at_peak, res_.width_m, res_.height_m, res_.speed_m_per_s,
+                   res_.time_step_s, res_.wall_time_s, side0_, t0_})
+    put_raw(out, v);
+  put_raw(out, res_.steps), put_raw(out, static_cast<std::uint64_t>(res_.n_particles));
+  put_str(out, res_.stop_reason);
+  put_vec(out, left_), put_vec(out, right_);
+  put_raw(out, counted_), put_raw(out, n_tension_), put_raw(out, n_shear_), put_raw(out, finished_);
+  const std::string state = sim_.serialize();
+  put_str(out, state);
+  return out;
+}
+
+LabTestRun LabTestRun::deserialize(std::string_view bytes) {
+  if (bytes.substr(0, 8) != "KERFLAB1") throw ModelError("dem", "not a kerf-dem test checkpoint");
+  In in{bytes, 8};
+  LabTestRun run;
+  in.str(run.spec_.test);
+  in.raw(run.spec_.speed_m_per_s), in.raw(run.spec_.stop_fraction), in.raw(run.spec_.max_strain);
+  in.raw(run.spec_.sample_every_steps), in.raw(run.spec_.quasi_static_check);
+  in.vec(run.res_.curve);
+  for (double* v : {&run.res_.peak_stress_pa, &run.res_.strain_at_peak, &run.res_.width_m, &run.res_.height_m,
+                    &run.res_.speed_m_per_s, &run.res_.time_step_s, &run.res_.wall_time_s, &run.side0_, &run.t0_})
+    in.raw(*v);
+  std::uint64_t n = 0;
+  in.raw(run.res_.steps), in.raw(n);
+  run.res_.n_particles = static_cast<std::size_t>(n);
+  in.str(run.res_.stop_reason);
+  in.vec(run.left_), in.vec(run.right_);
+  in.raw(run.counted_), in.raw(run.n_tension_), in.raw(run.n_shear_), in.raw(run.finished_);
+  std::string state;
+  in.str(state);
+  if (in.at != bytes.size()) throw ModelError("dem", "test checkpoint has trailing bytes");
+  run.sim_ = Simulation::deserialize(state);
+  run.res_.test = run.spec_.test;
+  if (run.finished_) secant_properties(run.res_);
+  return run;
+}
+
+LabTestResult run_lab_test(const Simulation& specimen, const LoadingSpec& spec,
+                           const std::function<void(const Simulation&, const CurveSample&)>& on_sample,
+                           Simulation* final_state) {
+  LabTestRun run(specimen, spec);
+  bool more = true;
+  while (more) {
+    more = run.advance();
+    if (on_sample) on_sample(run.simulation(), run.result().curve.back());
+  }
+  LabTestResult res = run.result();
+  if (final_state) *final_state = run.simulation();
+  return res;
+}
+
+}  // namespace kerf::dem

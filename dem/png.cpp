@@ -1,0 +1,57 @@
+// Specimen pictures with PLplot's pngcairo device.
+#include "kerf/dem/png.hpp"
+
+#include <plplot/plplot.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "kerf/units.hpp"
+
+namespace kerf::dem {
+
+void write_specimen_png(const std::filesystem::path& path, const Simulation& sim, const std::string& title) {
+  const auto& p = sim.particles();
+  if (p.size() == 0) return;
+  double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    x0 = std::min(x0, p.x[i] - p.radius[i]), x1 = std::max(x1, p.x[i] + p.radius[i]);
+    y0 = std::min(y0, p.y[i] - p.radius[i]), y1 = std::max(y1, p.y[i] + p.radius[i]);
+  }
+  // Millimetres on the axes; about 1000 pixels along the longer side.
+  const double mx = units::m_to_mm(1.0);
+  const double aspect = (y1 - y0) / (x1 - x0);
+  const int width = aspect > 1 ? static_cast<int>(1000 / aspect) + 120 : 1100;
+  const int height = aspect > 1 ? 1100 : static_cast<int>(1000 * aspect) + 120;
+  const std::filesystem::path tmp = path.string() + ".tmp-png";
+  plsstrm(0);
+  plsdev("pngcairo");
+  plsfnam(tmp.string().c_str());
+  plspage(0, 0, width, height, 0, 0);
+  plscolbg(255, 255, 255);
+  plscol0(1, 0, 0, 0);        // axes, labels
+  plscol0(2, 170, 170, 170);  // disks
+  plscol0(3, 220, 30, 30);    // tension cracks
+  plscol0(4, 30, 70, 220);    // shear cracks
+  plinit();
+  plcol0(1);
+  plschr(0, 0.75);
+  plenv(x0 * mx, x1 * mx, y0 * mx, y1 * mx, 1, 0);
+  pllab("x (mm)", "y (mm)", (title + "; cracks: red tension, blue shear").c_str());
+  plcol0(2);
+  plwidth(0.5);
+  for (std::size_t i = 0; i < p.size(); ++i) plarc(p.x[i] * mx, p.y[i] * mx, p.radius[i] * mx, p.radius[i] * mx, 0, 360, 0, 0);
+  plwidth(2.0);
+  for (const auto& c : sim.cracks()) {
+    plcol0(c.mode == BreakMode::tension ? 3 : 4);
+    const double dx = 0.5 * c.length_m * std::cos(c.orientation_rad), dy = 0.5 * c.length_m * std::sin(c.orientation_rad);
+    pljoin((c.x_m - dx) * mx, (c.y_m - dy) * mx, (c.x_m + dx) * mx, (c.y_m + dy) * mx);
+  }
+  plend();
+  std::error_code ec;
+  if (!std::filesystem::exists(tmp, ec)) throw std::runtime_error("PLplot wrote no picture to " + tmp.string());
+  std::filesystem::rename(tmp, path);
+}
+
+}  // namespace kerf::dem

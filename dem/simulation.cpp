@@ -1,0 +1,780 @@
+// The DEM engine: neighbour lists, the force loop (joints, unjointed contacts, walls), breaks applied after
+// the loop, velocity-Verlet with Cundall local damping, stable time step and instability detection.
+#include "kerf/dem/simulation.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <numbers>
+#include <type_traits>
+
+#include "kerf/error.hpp"
+
+namespace kerf::dem {
+
+namespace {
+
+enum Kind : std::uint32_t { kBond = 0, kPair = 1, kWall = 2 };
+
+constexpr std::uint32_t encode(std::size_t index, Kind kind, std::uint32_t role) {
+  return static_cast<std::uint32_t>(index) << 3 | kind << 1 | role;
+}
+
+/// Cundall's local damping of one force component (physics-dem.md section 1): F (1 - alpha sign(F v)).
+inline double damp(double force, double velocity, double alpha) {
+  const double fv = force * velocity;
+  return fv > 0 ? force * (1 - alpha) : (fv < 0 ? force * (1 + alpha) : force);
+}
+
+/// Closest point of segment (x0, y0)-(x1, y1) to (px, py).
+inline std::array<double, 2> closest_on_segment(const Wall& w, double px, double py) {
+  const double ex = w.x1 - w.x0, ey = w.y1 - w.y0;
+  const double len2 = ex * ex + ey * ey;
+  const double s = len2 > 0 ? std::clamp(((px - w.x0) * ex + (py - w.y0) * ey) / len2, 0.0, 1.0) : 0.0;
+  return {w.x0 + s * ex, w.y0 + s * ey};
+}
+
+}  // namespace
+
+int BondStore::n_bonded_elements(std::size_t b) const {
+  int n = 0;
+  for (int e = 0; e < stride; ++e) n += bonded[b * static_cast<std::size_t>(stride) + e];
+  return n;
+}
+
+Simulation::Simulation(const Material& material, const SimulationOptions& options)
+    : material_(material), opt_(options), types_{ParticleType{material.density_kg_per_m3}} {
+  if (!(options.thickness_m > 0)) throw InputError("specimen.thickness_mm", format_value(options.thickness_m * 1e3), "a positive value in mm");
+  if (!(options.time_step_safety > 0 && options.time_step_safety <= 1))
+    throw InputError("engine.time_step_safety", format_value(options.time_step_safety), "a value in (0, 1]");
+  b_.stride = material.joint.n_elements;
+  speed_limit_ = options.speed_limit_m_per_s > 0 ? options.speed_limit_m_per_s
+                                                 : std::sqrt(material.contact.effective_modulus_pa / material.density_kg_per_m3);
+}
+
+void Simulation::set_time_step_safety(double f) {
+  if (!(f > 0 && f <= 1)) throw InputError("engine.time_step_safety", format_value(f), "a value in (0, 1]");
+  opt_.time_step_safety = f;
+  if (initialised_) refresh_time_step();
+}
+
+double Simulation::mass_of(double radius_m, std::uint8_t type) const {
+  return types_.at(type).density_kg_per_m3 * std::numbers::pi * radius_m * radius_m * opt_.thickness_m;
+}
+
+int Simulation::add_particle(double x_m, double y_m, double radius_m, std::uint8_t type) {
+  const double m = mass_of(radius_m, type);
+  p_.x.push_back(x_m);
+  p_.y.push_back(y_m);
+  for (auto* v : {&p_.vx, &p_.vy, &p_.theta, &p_.omega, &p_.fx, &p_.fy, &p_.torque}) v->push_back(0.0);
+  p_.radius.push_back(radius_m);
+  p_.inv_mass.push_back(1.0 / m);
+  p_.inv_inertia.push_back(2.0 / (m * radius_m * radius_m));  // disk: I = m r^2 / 2
+  p_.type.push_back(type);
+  p_.group.push_back(0);
+  need_rebuild_ = true;
+  return static_cast<int>(p_.size() - 1);
+}
+
+void Simulation::set_radius(std::size_t i, double radius_m) {
+  const double m = mass_of(radius_m, p_.type[i]);
+  p_.radius[i] = radius_m;
+  p_.inv_mass[i] = 1.0 / m;
+  p_.inv_inertia[i] = 2.0 / (m * radius_m * radius_m);
+}
+
+int Simulation::add_wall(const Wall& wall) {
+  walls_.push_back(wall);
+  need_rebuild_ = true;
+  return static_cast<int>(walls_.size() - 1);
+}
+
+int Simulation::install_bond(int i, int j) {
+  if (i > j) std::swap(i, j);
+  const auto ui = static_cast<std::size_t>(i), uj = static_cast<std::size_t>(j);
+  return install_bond(i, j, std::hypot(p_.x[uj] - p_.x[ui], p_.y[uj] - p_.y[ui]), p_.theta[uj] - p_.theta[ui]);
+}
+
+int Simulation::install_bond(int i, int j, double ref_distance_m, double ref_rotation_rad) {
+  const auto ui = static_cast<std::size_t>(i), uj = static_cast<std::size_t>(j);
+  b_.i.push_back(i);
+  b_.j.push_back(j);
+  b_.ref_distance_m.push_back(ref_distance_m);
+  b_.ref_rotation_rad.push_back(ref_rotation_rad);
+  b_.geometry.push_back(flat_joint_geometry(material_.joint, p_.radius[ui], p_.radius[uj], opt_.thickness_m));
+  b_.active.push_back(1);
+  for (int e = 0; e < b_.stride; ++e) {
+    b_.shear_force_n.push_back(0.0);
+    b_.bonded.push_back(1);
+    b_.pending.push_back(BreakMode::none);
+  }
+  b_.out.push_back({0, 0, 0, 0});
+  need_rebuild_ = true;
+  return static_cast<int>(b_.size() - 1);
+}
+
+int Simulation::install_bonds_within_gap(double gap_m) {
+  std::vector<CandidatePair> candidates;
+  find_candidate_pairs(p_.x, p_.y, p_.radius, gap_m, candidates);
+  std::vector<CandidatePair> existing;
+  for (std::size_t b = 0; b < b_.size(); ++b)
+    if (b_.active[b]) existing.push_back({b_.i[b], b_.j[b]});
+  std::sort(existing.begin(), existing.end());
+  int n = 0;
+  for (const auto& c : candidates) {
+    if (std::binary_search(existing.begin(), existing.end(), c)) continue;
+    install_bond(c.i, c.j);
+    ++n;
+  }
+  return n;
+}
+
+double Simulation::stable_time_step() const {
+  const std::size_t n = p_.size();
+  std::vector<double> kt(n, 0.0), kr(n, 0.0);
+  const double t = opt_.thickness_m;
+  for (std::size_t b = 0; b < b_.size(); ++b) {
+    if (!b_.active[b]) continue;
+    const auto& g = b_.geometry[b];
+    const double len = 2 * g.half_length_m;
+    const double kn = g.normal_stiffness * len * t, ks = g.shear_stiffness * len * t;
+    const double kb = g.normal_stiffness * t * len * len * len / 12.0;
+    for (auto k : {b_.i[b], b_.j[b]}) {
+      const auto u = static_cast<std::size_t>(k);
+      kt[u] += std::max(kn, ks);  // the larger eigenvalue of k_n n n + k_s s s
+      kr[u] += kb + ks * p_.radius[u] * p_.radius[u];
+    }
+  }
+  const auto add_linear = [&](std::size_t u, double kn) {
+    const double ks = kn / material_.contact.stiffness_ratio;
+    kt[u] += std::max(kn, ks);
+    kr[u] += ks * p_.radius[u] * p_.radius[u];
+  };
+  for (const auto& c : pairs_) {
+    const double kn = linear_normal_stiffness(material_.contact, p_.radius[c.i], p_.radius[c.j], t);
+    add_linear(static_cast<std::size_t>(c.i), kn);
+    add_linear(static_cast<std::size_t>(c.j), kn);
+  }
+  for (const auto& wc : wall_contacts_) {
+    const auto u = static_cast<std::size_t>(wc[1]);
+    add_linear(u, linear_normal_stiffness(material_.contact, p_.radius[u], 0.0, t));
+  }
+  double dt = std::numeric_limits<double>::infinity();
+  for (std::size_t u = 0; u < n; ++u) {
+    // Floor: four contacts with an equal disk, so that contacts formed later (fracture, genesis) stay
+    // stable. With f_safety <= 0.8 the step keeps a margin of about sqrt(2) / 0.8 on the Gershgorin bound
+    // of the largest eigenfrequency, sqrt(2 sum k / m).
+    const double k_self = linear_normal_stiffness(material_.contact, p_.radius[u], p_.radius[u], t);
+    const double k_self_s = k_self / material_.contact.stiffness_ratio;
+    const double ktu = std::max(kt[u], 4 * std::max(k_self, k_self_s));
+    const double kru = std::max(kr[u], 4 * k_self_s * p_.radius[u] * p_.radius[u]);
+    dt = std::min({dt, std::sqrt(1.0 / (p_.inv_mass[u] * ktu)), std::sqrt(1.0 / (p_.inv_inertia[u] * kru))});
+  }
+  return opt_.time_step_safety * dt;
+}
+
+void Simulation::initialise() {
+  if (p_.size() == 0) throw ModelError("dem", "no particles to simulate");
+  skin_ = opt_.skin_m > 0 ? opt_.skin_m : 0.3 * *std::min_element(p_.radius.begin(), p_.radius.end());
+  rebuild_neighbours();
+  if (!dt_fixed_) dt_ = stable_time_step();
+  evaluate_forces();
+  initialised_ = true;
+}
+
+void Simulation::rebuild_neighbours() {
+  const std::size_t n = p_.size();
+  x_ref_ = p_.x;
+  y_ref_ = p_.y;
+  wall_ref_.clear();
+  for (const auto& w : walls_) wall_ref_.insert(wall_ref_.end(), {w.x0, w.y0});
+
+  // Active bonds per particle, so that jointed pairs are left out of the unjointed contacts.
+  std::vector<std::int32_t> bstart(n + 1, 0), partners;
+  for (std::size_t b = 0; b < b_.size(); ++b)
+    if (b_.active[b]) ++bstart[static_cast<std::size_t>(b_.i[b]) + 1];
+  for (std::size_t u = 0; u < n; ++u) bstart[u + 1] += bstart[u];
+  partners.resize(static_cast<std::size_t>(bstart[n]));
+  {
+    std::vector<std::int32_t> fill(bstart.begin(), bstart.end() - 1);
+    for (std::size_t b = 0; b < b_.size(); ++b)
+      if (b_.active[b]) partners[static_cast<std::size_t>(fill[static_cast<std::size_t>(b_.i[b])]++)] = b_.j[b];
+  }
+  std::vector<CandidatePair> found;
+  find_candidate_pairs(p_.x, p_.y, p_.radius, skin_, found);
+  // Keep the shear state of the pairs that persist (both lists are sorted by (i, j)).
+  std::vector<CandidatePair> pairs;
+  std::vector<double> shear;
+  pairs.reserve(found.size());
+  shear.reserve(found.size());
+  std::size_t old = 0;
+  for (const auto& c : found) {
+    const auto first = partners.begin() + bstart[static_cast<std::size_t>(c.i)];
+    const auto last = partners.begin() + bstart[static_cast<std::size_t>(c.i) + 1];
+    if (std::find(first, last, c.j) != last) continue;
+    while (old < pairs_.size() && pairs_[old] < c) ++old;
+    pairs.push_back(c);
+    shear.push_back(old < pairs_.size() && pairs_[old] == c ? pair_shear_[old] : 0.0);
+  }
+  pairs_ = std::move(pairs);
+  pair_shear_ = std::move(shear);
+  pair_out_.assign(pairs_.size(), {0, 0, 0, 0});
+
+  // Disk-wall candidates, sorted by (wall, particle), shear state carried over.
+  std::vector<std::array<std::int32_t, 2>> wc;
+  std::vector<double> wshear;
+  std::size_t wold = 0;
+  for (std::size_t w = 0; w < walls_.size(); ++w) {
+    if (!walls_[w].enabled) continue;
+    for (std::size_t u = 0; u < n; ++u) {
+      const auto q = closest_on_segment(walls_[w], p_.x[u], p_.y[u]);
+      const double reach = p_.radius[u] + skin_;
+      const double dx = p_.x[u] - q[0], dy = p_.y[u] - q[1];
+      if (dx * dx + dy * dy >= reach * reach) continue;
+      const std::array<std::int32_t, 2> key{static_cast<std::int32_t>(w), static_cast<std::int32_t>(u)};
+      while (wold < wall_contacts_.size() && wall_contacts_[wold] < key) ++wold;
+      wc.push_back(key);
+      wshear.push_back(wold < wall_contacts_.size() && wall_contacts_[wold] == key ? wall_shear_[wold] : 0.0);
+    }
+  }
+  wall_contacts_ = std::move(wc);
+  wall_shear_ = std::move(wshear);
+  wall_out_.assign(wall_contacts_.size(), {0, 0, 0});
+
+  // Incidence lists: the order of the entries fixes the summation order, hence bit-identical results.
+  incidence_start_.assign(n + 1, 0);
+  const auto count = [&](std::int32_t u) { ++incidence_start_[static_cast<std::size_t>(u) + 1]; };
+  for (std::size_t b = 0; b < b_.size(); ++b)
+    if (b_.active[b]) count(b_.i[b]), count(b_.j[b]);
+  for (const auto& c : pairs_) count(c.i), count(c.j);
+  for (const auto& c : wall_contacts_) count(c[1]);
+  for (std::size_t u = 0; u < n; ++u) incidence_start_[u + 1] += incidence_start_[u];
+  incidence_.resize(static_cast<std::size_t>(incidence_start_[n]));
+  std::vector<std::int32_t> fill(incidence_start_.begin(), incidence_start_.end() - 1);
+  const auto put = [&](std::int32_t u, std::uint32_t entry) {
+    incidence_[static_cast<std::size_t>(fill[static_cast<std::size_t>(u)]++)] = entry;
+  };
+  for (std::size_t b = 0; b < b_.size(); ++b)
+    if (b_.active[b]) put(b_.i[b], encode(b, kBond, 0)), put(b_.j[b], encode(b, kBond, 1));
+  for (std::size_t k = 0; k < pairs_.size(); ++k) put(pairs_[k].i, encode(k, kPair, 0)), put(pairs_[k].j, encode(k, kPair, 1));
+  for (std::size_t k = 0; k < wall_contacts_.size(); ++k) put(wall_contacts_[k][1], encode(k, kWall, 0));
+
+  fixed_.clear();
+  for (std::size_t u = 0; u < n; ++u)
+    if (p_.group[u]) fixed_.push_back(static_cast<std::int32_t>(u));
+  need_rebuild_ = false;
+}
+
+void Simulation::evaluate_forces() {
+  if (need_rebuild_) rebuild_neighbours();
+  const double dt = dt_;
+  dt_ = 0;  // no motion: no shear increments
+  compute_forces();
+  dt_ = dt;
+  apply_breaks();
+}
+
+void Simulation::evaluate_forces_with_increment() {
+  if (need_rebuild_) rebuild_neighbours();
+  compute_forces();
+  apply_breaks();
+}
+
+void Simulation::compute_forces() {
+  const double dt = dt_, t = opt_.thickness_m;
+  const FlatJointParams& fj = material_.joint;
+  const LinearContactParams& lc = material_.contact;
+  const int stride = b_.stride;
+  const auto nb = static_cast<std::int64_t>(b_.size());
+  int n_breaking = 0, n_retired = 0;
+  const double* x = p_.x.data();
+  const double* y = p_.y.data();
+  const double* vx = p_.vx.data();
+  const double* vy = p_.vy.data();
+  const double* om = p_.omega.data();
+  const double* th = p_.theta.data();
+  const double* rad = p_.radius.data();
+
+#pragma omp parallel for schedule(static) reduction(+ : n_breaking, n_retired) if (nb > opt_.min_parallel_items)
+  for (std::int64_t bb = 0; bb < nb; ++bb) {
+    const auto b = static_cast<std::size_t>(bb);
+    auto& out = b_.out[b];
+    if (!b_.active[b]) {
+      out = {0, 0, 0, 0};
+      continue;
+    }
+    const auto i = static_cast<std::size_t>(b_.i[b]), j = static_cast<std::size_t>(b_.j[b]);
+    const double dx = x[j] - x[i], dy = y[j] - y[i];
+    const double d = std::sqrt(dx * dx + dy * dy);
+    const double nx = dx / d, ny = dy / d, sx = -ny, sy = nx;
+    const double surface_gap = d - rad[i] - rad[j];
+    const double a1 = rad[i] + 0.5 * surface_gap, a2 = rad[j] + 0.5 * surface_gap;  // centre to interface
+    // Relative velocity of surface 2 w.r.t. surface 1 at the interface centre, along s (rotation included).
+    const double vs = (vx[j] - vx[i]) * sx + (vy[j] - vy[i]) * sy - a2 * om[j] - a1 * om[i];
+    const std::size_t e0 = b * static_cast<std::size_t>(stride);
+    const auto us = static_cast<std::size_t>(stride);
+    const FlatJointKinematics kin{d - b_.ref_distance_m[b], th[j] - th[i] - b_.ref_rotation_rad[b], vs * dt};
+    const FlatJointResult r =
+        flat_joint_update(fj, b_.geometry[b], kin, std::span<double>(b_.shear_force_n.data() + e0, us),
+                          std::span<const std::uint8_t>(b_.bonded.data() + e0, us),
+                          std::span<BreakMode>(b_.pending.data() + e0, us));
+    n_breaking += r.n_breaking;
+    // Force on disk 2: -F_n n + F_s s (tension positive pulls disk 2 back towards disk 1).
+    out = {-r.normal_force_n * nx + r.shear_force_n * sx, -r.normal_force_n * ny + r.shear_force_n * sy,
+           -a1 * r.shear_force_n - r.moment_nm, -a2 * r.shear_force_n + r.moment_nm};
+    // A fully broken joint whose interface is open everywhere (g_s - |theta_b| R > 0) and whose disks no
+    // longer overlap carries no force under either model: hand the pair over to the unjointed contact.
+    if (r.n_breaking == 0 && surface_gap > 0 && kin.gap_m > std::abs(kin.rotation_rad) * b_.geometry[b].half_length_m) {
+      bool any_bonded = false;
+      for (std::size_t e = e0; e < e0 + us; ++e) any_bonded = any_bonded || b_.bonded[e];
+      if (!any_bonded) {
+        b_.active[b] = 0;
+        out = {0, 0, 0, 0};
+        ++n_retired;
+      }
+    }
+  }
+  if (n_retired > 0) need_rebuild_ = true;
+
+  const auto np = static_cast<std::int64_t>(pairs_.size());
+#pragma omp parallel for schedule(static) if (np > opt_.min_parallel_items)
+  for (std::int64_t kk = 0; kk < np; ++kk) {
+    const auto k = static_cast<std::size_t>(kk);
+    const auto i = static_cast<std::size_t>(pairs_[k].i), j = static_cast<std::size_t>(pairs_[k].j);
+    const double dx = x[j] - x[i], dy = y[j] - y[i];
+    const double d2 = dx * dx + dy * dy, reach = rad[i] + rad[j];
+    if (d2 >= reach * reach) {
+      pair_shear_[k] = 0;
+      pair_out_[k] = {0, 0, 0, 0};
+      continue;
+    }
+    const double d = std::sqrt(d2);
+    const double nx = dx / d, ny = dy / d, sx = -ny, sy = nx;
+    const double overlap = reach - d;
+    const double a1 = rad[i] - 0.5 * overlap, a2 = rad[j] - 0.5 * overlap;
+    const double vs = (vx[j] - vx[i]) * sx + (vy[j] - vy[i]) * sy - a2 * om[j] - a1 * om[i];
+    const LinearContactResult r = linear_contact_update(lc, rad[i], rad[j], t, overlap, vs * dt, pair_shear_[k]);
+    // Force on disk 2: +F_n n (compression pushes it away) + F_s s.
+    pair_out_[k] = {r.normal_force_n * nx + r.shear_force_n * sx, r.normal_force_n * ny + r.shear_force_n * sy,
+                    -a1 * r.shear_force_n, -a2 * r.shear_force_n};
+  }
+
+  const auto nw = static_cast<std::int64_t>(wall_contacts_.size());
+#pragma omp parallel for schedule(static) if (nw > opt_.min_parallel_items)
+  for (std::int64_t kk = 0; kk < nw; ++kk) {
+    const auto k = static_cast<std::size_t>(kk);
+    const Wall& w = walls_[static_cast<std::size_t>(wall_contacts_[k][0])];
+    const auto u = static_cast<std::size_t>(wall_contacts_[k][1]);
+    const auto q = closest_on_segment(w, x[u], y[u]);
+    const double dx = x[u] - q[0], dy = y[u] - q[1];
+    const double d2 = dx * dx + dy * dy;
+    if (!w.enabled || d2 >= rad[u] * rad[u] || d2 == 0) {
+      wall_shear_[k] = 0;
+      wall_out_[k] = {0, 0, 0};
+      continue;
+    }
+    const double d = std::sqrt(d2);
+    const double nx = dx / d, ny = dy / d, sx = -ny, sy = nx;  // n from the wall to the disk
+    const double overlap = rad[u] - d, a = rad[u] - 0.5 * overlap;
+    const double vs = (vx[u] - w.vx) * sx + (vy[u] - w.vy) * sy - a * om[u];
+    const LinearContactResult r = linear_contact_update(lc, rad[u], 0.0, t, overlap, vs * dt, wall_shear_[k]);
+    wall_out_[k] = {r.normal_force_n * nx + r.shear_force_n * sx, r.normal_force_n * ny + r.shear_force_n * sy,
+                    -a * r.shear_force_n};
+  }
+  for (auto& w : walls_) w.fx = w.fy = 0;
+  for (std::size_t k = 0; k < wall_contacts_.size(); ++k) {
+    auto& w = walls_[static_cast<std::size_t>(wall_contacts_[k][0])];
+    w.fx -= wall_out_[k][0];
+    w.fy -= wall_out_[k][1];
+  }
+
+  // Gather: each particle sums its own entries in a fixed order (deterministic for any thread count).
+  const auto n = static_cast<std::int64_t>(p_.size());
+#pragma omp parallel for schedule(static) if (n > opt_.min_parallel_items)
+  for (std::int64_t ii = 0; ii < n; ++ii) {
+    const auto u = static_cast<std::size_t>(ii);
+    double fx = 0, fy = 0, tq = 0;
+    for (std::int32_t k = incidence_start_[u]; k < incidence_start_[u + 1]; ++k) {
+      const std::uint32_t entry = incidence_[static_cast<std::size_t>(k)];
+      const std::size_t idx = entry >> 3;
+      const std::uint32_t kind = (entry >> 1) & 3u, role = entry & 1u;
+      if (kind == kWall) {
+        const auto& o = wall_out_[idx];
+        fx += o[0], fy += o[1], tq += o[2];
+        continue;
+      }
+      const auto& o = kind == kBond ? b_.out[idx] : pair_out_[idx];
+      if (role == 0) {
+        fx -= o[0], fy -= o[1], tq += o[2];
+      } else {
+        fx += o[0], fy += o[1], tq += o[3];
+      }
+    }
+    p_.fx[u] = fx;
+    p_.fy[u] = fy;
+    p_.torque[u] = tq;
+  }
+  if (n_breaking > 0) need_breaks_ = true;
+}
+
+void Simulation::apply_breaks() {
+  if (!need_breaks_) return;
+  need_breaks_ = false;
+  const auto stride = static_cast<std::size_t>(b_.stride);
+  for (std::size_t b = 0; b < b_.size(); ++b) {
+    if (!b_.active[b]) continue;
+    for (std::size_t e = 0; e < stride; ++e) {
+      const std::size_t k = b * stride + e;
+      if (b_.pending[k] == BreakMode::none) continue;
+      const auto i = static_cast<std::size_t>(b_.i[b]), j = static_cast<std::size_t>(b_.j[b]);
+      const double dx = p_.x[j] - p_.x[i], dy = p_.y[j] - p_.y[i];
+      const double d = std::hypot(dx, dy);
+      const double nx = dx / d, ny = dy / d;
+      const double a1 = p_.radius[i] + 0.5 * (d - p_.radius[i] - p_.radius[j]);
+      const auto& g = b_.geometry[b];
+      const double xi = flat_joint_element_centroid(g, b_.stride, static_cast<int>(e));
+      cracks_.push_back({time_, p_.x[i] + a1 * nx - xi * ny, p_.y[i] + a1 * ny + xi * nx, std::atan2(nx, -ny),
+                         2 * g.half_length_m / b_.stride, b_.pending[k], static_cast<std::int32_t>(b),
+                         static_cast<std::int32_t>(e)});
+      b_.bonded[k] = 0;
+      b_.shear_force_n[k] = 0;  // residual mode: the shear stress of a broken element drops to zero
+      b_.pending[k] = BreakMode::none;
+    }
+  }
+}
+
+void Simulation::check_stability() const {
+  const auto n = static_cast<std::int64_t>(p_.size());
+  double worst = 0;
+  std::int64_t worst_i = -1;
+  for (std::int64_t ii = 0; ii < n; ++ii) {
+    const auto u = static_cast<std::size_t>(ii);
+    const double v2 = p_.vx[u] * p_.vx[u] + p_.vy[u] * p_.vy[u];
+    const bool finite = std::isfinite(v2) && std::isfinite(p_.x[u]) && std::isfinite(p_.y[u]) && std::isfinite(p_.omega[u]);
+    if (!finite || v2 > worst) {
+      worst = finite ? v2 : std::numeric_limits<double>::infinity();
+      worst_i = ii;
+      if (!finite) break;
+    }
+  }
+  if (worst_i >= 0 && !(std::sqrt(worst) <= speed_limit_)) {
+    const auto u = static_cast<std::size_t>(worst_i);
+    throw ModelError("dem", fmt::format("unstable run stopped at step {} (t = {:.6g} s, dt = {:.4g} s): particle {} at "
+                                        "({:.6g}, {:.6g}) m has speed {:.4g} m/s, above the limit {:.4g} m/s (p-wave "
+                                        "speed); lower engine.time_step_safety or the loading speed",
+                                        steps_, time_, dt_, worst_i, p_.x[u], p_.y[u], std::sqrt(worst), speed_limit_));
+  }
+}
+
+void Simulation::step() {
+  if (!initialised_) initialise();
+  const double dt = dt_, half = 0.5 * dt, alpha = material_.local_damping;
+  const auto n = static_cast<std::int64_t>(p_.size());
+  double max_move2 = 0;
+#pragma omp parallel for schedule(static) reduction(max : max_move2) if (n > opt_.min_parallel_items)
+  for (std::int64_t ii = 0; ii < n; ++ii) {
+    const auto u = static_cast<std::size_t>(ii);
+    if (p_.group[u] == 0) {  // first half kick with the (damped) force of the last evaluation
+      p_.vx[u] += half * p_.fx[u] * p_.inv_mass[u];
+      p_.vy[u] += half * p_.fy[u] * p_.inv_mass[u];
+      p_.omega[u] += half * p_.torque[u] * p_.inv_inertia[u];
+    }
+    p_.x[u] += dt * p_.vx[u];
+    p_.y[u] += dt * p_.vy[u];
+    p_.theta[u] += dt * p_.omega[u];
+    const double mx = p_.x[u] - x_ref_[u], my = p_.y[u] - y_ref_[u];
+    max_move2 = std::max(max_move2, mx * mx + my * my);
+  }
+  double wall_move = 0;
+  for (std::size_t w = 0; w < walls_.size(); ++w) {
+    auto& wl = walls_[w];
+    wl.x0 += dt * wl.vx, wl.x1 += dt * wl.vx, wl.y0 += dt * wl.vy, wl.y1 += dt * wl.vy;
+    if (2 * w + 1 < wall_ref_.size())
+      wall_move = std::max(wall_move, std::hypot(wl.x0 - wall_ref_[2 * w], wl.y0 - wall_ref_[2 * w + 1]));
+  }
+  time_ += dt;
+  const double max_move = std::sqrt(max_move2);
+  if (need_rebuild_ || 2 * max_move > skin_ || max_move + wall_move > skin_ || wall_ref_.size() != 2 * walls_.size())
+    rebuild_neighbours();
+  compute_forces();
+  apply_breaks();
+#pragma omp parallel for schedule(static) if (n > opt_.min_parallel_items)
+  for (std::int64_t ii = 0; ii < n; ++ii) {
+    const auto u = static_cast<std::size_t>(ii);
+    if (p_.group[u] != 0) continue;  // prescribed velocity: forces kept raw for the reaction
+    // Damp against the predicted end-of-step velocity, then the second half kick.
+    const double fx = damp(p_.fx[u], p_.vx[u] + half * p_.fx[u] * p_.inv_mass[u], alpha);
+    const double fy = damp(p_.fy[u], p_.vy[u] + half * p_.fy[u] * p_.inv_mass[u], alpha);
+    const double tq = damp(p_.torque[u], p_.omega[u] + half * p_.torque[u] * p_.inv_inertia[u], alpha);
+    p_.fx[u] = fx, p_.fy[u] = fy, p_.torque[u] = tq;
+    p_.vx[u] += half * fx * p_.inv_mass[u];
+    p_.vy[u] += half * fy * p_.inv_mass[u];
+    p_.omega[u] += half * tq * p_.inv_inertia[u];
+  }
+  ++steps_;
+  if (opt_.check_every > 0 && steps_ % opt_.check_every == 0) check_stability();
+}
+
+void Simulation::run(std::int64_t n_steps) {
+  for (std::int64_t s = 0; s < n_steps; ++s) step();
+}
+
+namespace {
+template <class... V>
+std::size_t bytes_of(const V&... v) {
+  return (... + (v.capacity() * sizeof(typename V::value_type)));
+}
+}  // namespace
+
+std::size_t Simulation::memory_bytes() const {
+  return bytes_of(p_.x, p_.y, p_.vx, p_.vy, p_.theta, p_.omega, p_.fx, p_.fy, p_.torque, p_.radius, p_.inv_mass,
+                  p_.inv_inertia, p_.type, p_.group) +
+         bytes_of(b_.i, b_.j, b_.ref_distance_m, b_.ref_rotation_rad, b_.geometry, b_.active, b_.shear_force_n,
+                  b_.bonded, b_.pending, b_.out) +
+         bytes_of(pairs_, pair_shear_, pair_out_, wall_contacts_, wall_shear_, wall_out_, incidence_start_, incidence_,
+                  x_ref_, y_ref_, wall_ref_, fixed_, cracks_);
+}
+
+namespace {
+
+constexpr std::string_view kStateMagic = "KERFDEM1";
+
+template <class T>
+void put(std::string& out, const T& value) {
+  static_assert(std::is_trivially_copyable_v<T>);
+  out.append(reinterpret_cast<const char*>(&value), sizeof(T));
+}
+template <class T>
+void put(std::string& out, const std::vector<T>& v) {
+  static_assert(std::is_trivially_copyable_v<T>);
+  put(out, static_cast<std::uint64_t>(v.size()));
+  out.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
+}
+
+struct Reader {
+  std::string_view bytes;
+  std::size_t at = 0;
+  void take(void* dst, std::size_t n) {
+    if (at + n > bytes.size()) throw ModelError("dem", "truncated engine state");
+    std::memcpy(dst, bytes.data() + at, n);
+    at += n;
+  }
+  template <class T>
+  void get(T& value) {
+    take(&value, sizeof(T));
+  }
+  template <class T>
+  void get(std::vector<T>& v) {
+    std::uint64_t n = 0;
+    get(n);
+    if (n > bytes.size()) throw ModelError("dem", "corrupt engine state");
+    v.resize(static_cast<std::size_t>(n));
+    take(v.data(), v.size() * sizeof(T));
+  }
+};
+
+}  // namespace
+
+std::string Simulation::serialize() const {
+  std::string out(kStateMagic);
+  put(out, material_.density_kg_per_m3);
+  put(out, material_.contact);
+  put(out, material_.joint);
+  put(out, material_.local_damping);
+  put(out, std::vector<char>(material_.name.begin(), material_.name.end()));
+  put(out, opt_);
+  put(out, types_);
+  for (const auto* v : {&p_.x, &p_.y, &p_.vx, &p_.vy, &p_.theta, &p_.omega, &p_.fx, &p_.fy, &p_.torque, &p_.radius,
+                        &p_.inv_mass, &p_.inv_inertia})
+    put(out, *v);
+  put(out, p_.type);
+  put(out, p_.group);
+  put(out, b_.stride);
+  put(out, b_.i);
+  put(out, b_.j);
+  put(out, b_.ref_distance_m);
+  put(out, b_.ref_rotation_rad);
+  put(out, b_.geometry);
+  put(out, b_.active);
+  put(out, b_.shear_force_n);
+  put(out, b_.bonded);
+  put(out, b_.pending);
+  put(out, b_.out);
+  put(out, walls_);
+  put(out, cracks_);
+  put(out, pairs_);
+  put(out, pair_shear_);
+  put(out, pair_out_);
+  put(out, wall_contacts_);
+  put(out, wall_shear_);
+  put(out, wall_out_);
+  put(out, incidence_start_);
+  put(out, incidence_);
+  put(out, x_ref_);
+  put(out, y_ref_);
+  put(out, wall_ref_);
+  put(out, fixed_);
+  for (bool flag : {need_rebuild_, need_breaks_, initialised_, dt_fixed_}) put(out, static_cast<std::uint8_t>(flag));
+  for (double v : {dt_, time_, skin_, speed_limit_}) put(out, v);
+  put(out, steps_);
+  return out;
+}
+
+Simulation Simulation::deserialize(std::string_view bytes) {
+  if (bytes.substr(0, kStateMagic.size()) != kStateMagic) throw ModelError("dem", "not a kerf-dem engine state");
+  Reader r{bytes, kStateMagic.size()};
+  Material m;
+  r.get(m.density_kg_per_m3);
+  r.get(m.contact);
+  r.get(m.joint);
+  r.get(m.local_damping);
+  std::vector<char> name;
+  r.get(name);
+  m.name.assign(name.begin(), name.end());
+  SimulationOptions opt;
+  r.get(opt);
+  Simulation sim(m, opt);
+  r.get(sim.types_);
+  auto& p = sim.p_;
+  for (auto* v : {&p.x, &p.y, &p.vx, &p.vy, &p.theta, &p.omega, &p.fx, &p.fy, &p.torque, &p.radius, &p.inv_mass, &p.inv_inertia})
+    r.get(*v);
+  r.get(p.type);
+  r.get(p.group);
+  auto& b = sim.b_;
+  r.get(b.stride);
+  r.get(b.i);
+  r.get(b.j);
+  r.get(b.ref_distance_m);
+  r.get(b.ref_rotation_rad);
+  r.get(b.geometry);
+  r.get(b.active);
+  r.get(b.shear_force_n);
+  r.get(b.bonded);
+  r.get(b.pending);
+  r.get(b.out);
+  r.get(sim.walls_);
+  r.get(sim.cracks_);
+  r.get(sim.pairs_);
+  r.get(sim.pair_shear_);
+  r.get(sim.pair_out_);
+  r.get(sim.wall_contacts_);
+  r.get(sim.wall_shear_);
+  r.get(sim.wall_out_);
+  r.get(sim.incidence_start_);
+  r.get(sim.incidence_);
+  r.get(sim.x_ref_);
+  r.get(sim.y_ref_);
+  r.get(sim.wall_ref_);
+  r.get(sim.fixed_);
+  std::uint8_t flags[4];
+  for (auto& f : flags) r.get(f);
+  sim.need_rebuild_ = flags[0], sim.need_breaks_ = flags[1], sim.initialised_ = flags[2], sim.dt_fixed_ = flags[3];
+  for (double* v : {&sim.dt_, &sim.time_, &sim.skin_, &sim.speed_limit_}) r.get(*v);
+  r.get(sim.steps_);
+  if (r.at != bytes.size()) throw ModelError("dem", "engine state has trailing bytes");
+  return sim;
+}
+
+std::array<double, 2> Simulation::group_force(std::uint8_t g) const {
+  double fx = 0, fy = 0;
+  for (auto k : fixed_) {
+    const auto u = static_cast<std::size_t>(k);
+    if (p_.group[u] != g) continue;
+    fx += p_.fx[u];
+    fy += p_.fy[u];
+  }
+  return {fx, fy};
+}
+
+double Simulation::kinetic_energy() const {
+  double e = 0;
+  for (std::size_t u = 0; u < p_.size(); ++u)
+    e += 0.5 * ((p_.vx[u] * p_.vx[u] + p_.vy[u] * p_.vy[u]) / p_.inv_mass[u] + p_.omega[u] * p_.omega[u] / p_.inv_inertia[u]);
+  return e;
+}
+
+double Simulation::strain_energy() const {
+  double e = 0;
+  const auto stride = static_cast<std::size_t>(b_.stride);
+  for (std::size_t b = 0; b < b_.size(); ++b) {
+    if (!b_.active[b]) continue;
+    const auto i = static_cast<std::size_t>(b_.i[b]), j = static_cast<std::size_t>(b_.j[b]);
+    const double d = std::hypot(p_.x[j] - p_.x[i], p_.y[j] - p_.y[i]);
+    const FlatJointKinematics kin{d - b_.ref_distance_m[b], p_.theta[j] - p_.theta[i] - b_.ref_rotation_rad[b], 0};
+    e += flat_joint_bonded_energy(material_.joint, b_.geometry[b], kin,
+                                  std::span<const double>(b_.shear_force_n.data() + b * stride, stride),
+                                  std::span<const std::uint8_t>(b_.bonded.data() + b * stride, stride));
+  }
+  const double t = opt_.thickness_m;
+  for (std::size_t k = 0; k < pairs_.size(); ++k) {
+    const auto i = static_cast<std::size_t>(pairs_[k].i), j = static_cast<std::size_t>(pairs_[k].j);
+    const double overlap = p_.radius[i] + p_.radius[j] - std::hypot(p_.x[j] - p_.x[i], p_.y[j] - p_.y[i]);
+    if (overlap <= 0) continue;
+    const double kn = linear_normal_stiffness(material_.contact, p_.radius[i], p_.radius[j], t);
+    e += 0.5 * kn * overlap * overlap + 0.5 * pair_shear_[k] * pair_shear_[k] * material_.contact.stiffness_ratio / kn;
+  }
+  return e;
+}
+
+int Simulation::n_touching_pairs() const {
+  int n = 0;
+  for (const auto& c : pairs_) {
+    const auto i = static_cast<std::size_t>(c.i), j = static_cast<std::size_t>(c.j);
+    if (std::hypot(p_.x[j] - p_.x[i], p_.y[j] - p_.y[i]) < p_.radius[i] + p_.radius[j]) ++n;
+  }
+  return n;
+}
+
+double Simulation::coordination_number() const {
+  std::size_t n_bonds = 0;
+  for (auto a : b_.active) n_bonds += a;
+  return p_.size() ? 2.0 * static_cast<double>(n_bonds + static_cast<std::size_t>(n_touching_pairs())) /
+                         static_cast<double>(p_.size())
+                   : 0.0;
+}
+
+int Simulation::n_contacts_of(std::size_t u) const {
+  int n = 0;
+  for (std::int32_t k = incidence_start_[u]; k < incidence_start_[u + 1]; ++k) {
+    const std::uint32_t entry = incidence_[static_cast<std::size_t>(k)];
+    const std::size_t idx = entry >> 3;
+    const std::uint32_t kind = (entry >> 1) & 3u;
+    if (kind == kBond) {
+      n += b_.active[idx];
+    } else if (kind == kPair) {
+      const auto i = static_cast<std::size_t>(pairs_[idx].i), j = static_cast<std::size_t>(pairs_[idx].j);
+      n += std::hypot(p_.x[j] - p_.x[i], p_.y[j] - p_.y[i]) < p_.radius[i] + p_.radius[j];
+    } else {
+      n += wall_out_[idx][0] != 0 || wall_out_[idx][1] != 0;
+    }
+  }
+  return n;
+}
+
+std::array<double, 3> Simulation::average_stress(double area_m2) const {
+  // sigma = (1/V) sum over particles and their contacts of f_on_p (x) (x_c - x_p); for a disk pair this is
+  // -(1/V) f_on_j (x) (x_j - x_i), independent of where the contact point lies.
+  double sxx = 0, syy = 0, sxy = 0;
+  const auto add = [&](const std::array<double, 4>& o, std::size_t i, std::size_t j) {
+    const double lx = p_.x[j] - p_.x[i], ly = p_.y[j] - p_.y[i];
+    sxx -= o[0] * lx, syy -= o[1] * ly, sxy -= 0.5 * (o[0] * ly + o[1] * lx);
+  };
+  for (std::size_t b = 0; b < b_.size(); ++b)
+    if (b_.active[b]) add(b_.out[b], static_cast<std::size_t>(b_.i[b]), static_cast<std::size_t>(b_.j[b]));
+  for (std::size_t k = 0; k < pairs_.size(); ++k)
+    add(pair_out_[k], static_cast<std::size_t>(pairs_[k].i), static_cast<std::size_t>(pairs_[k].j));
+  for (std::size_t k = 0; k < wall_contacts_.size(); ++k) {
+    const auto u = static_cast<std::size_t>(wall_contacts_[k][1]);
+    const auto q = closest_on_segment(walls_[static_cast<std::size_t>(wall_contacts_[k][0])], p_.x[u], p_.y[u]);
+    const double lx = q[0] - p_.x[u], ly = q[1] - p_.y[u];  // to the contact (approximately the wall point)
+    const auto& o = wall_out_[k];
+    sxx += o[0] * lx, syy += o[1] * ly, sxy += 0.5 * (o[0] * ly + o[1] * lx);
+  }
+  const double v = area_m2 * opt_.thickness_m;
+  return {sxx / v, syy / v, sxy / v};
+}
+
+}  // namespace kerf::dem

@@ -1,0 +1,336 @@
+// Specimen genesis (physics-dem.md section 2) and the saved specimen format.
+#include "kerf/dem/specimen.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <numeric>
+#include <random>
+
+#include "kerf/error.hpp"
+#include "kerf/io.hpp"
+#include "kerf/units.hpp"
+
+namespace kerf::dem {
+
+SpecimenSpec read_specimen_spec(ObjectReader& r) {
+  using namespace units;
+  SpecimenSpec s;
+  s.width_m = mm_to_m(r.get_number_or("width_mm", 1.0, Range::positive(), "mm"));
+  s.height_m = mm_to_m(r.get_number_or("height_mm", 2.0, Range::positive(), "mm"));
+  s.thickness_m = mm_to_m(r.get_number_or("thickness_mm", 1.0, Range::positive(), "mm"));
+  s.radius_min_m = um_to_m(r.get_number_or("radius_min_um", 7.5, Range::positive(), "um"));
+  s.radius_max_m = um_to_m(r.get_number_or("radius_max_um", 10.0, Range::positive(), "um"));
+  if (s.radius_max_m < s.radius_min_m)
+    throw InputError(r.key_path("radius_max_um"), format_value(m_to_um(s.radius_max_m)),
+                     "a value >= radius_min_um = " + format_value(m_to_um(s.radius_min_m)) + " um");
+  if (2 * s.radius_max_m * 4 > std::min(s.width_m, s.height_m))
+    throw InputError(r.key_path("radius_max_um"), format_value(m_to_um(s.radius_max_m)),
+                     "at most 1/8 of the specimen's smaller side in um");
+  s.packing = r.get_choice_or("packing", "random", {"random", "hexagonal"});
+  s.seed = static_cast<std::uint64_t>(r.get_int_or("seed", 1, 0, 2147483647));
+  s.packing_fraction = r.get_number_or("packing_fraction", 0.85, Range::closed(0.5, 0.9), "");
+  s.compaction_pressure_pa = mpa_to_pa(r.get_number_or("compaction_pressure_MPa", 3.0, Range::positive(), "MPa"));
+  s.installation_gap_m = um_to_m(r.get_number_or("installation_gap_um", 0.5, Range::non_negative(), "um"));
+  s.growth_steps = r.get_int_or("growth_steps", 6000, 100, 10000000);
+  s.relax_steps = r.get_int_or("relax_steps", 2000, 0, 10000000);
+  const double area = s.width_m * s.height_m;
+  const double mean_r2 = (s.radius_min_m * s.radius_min_m + s.radius_min_m * s.radius_max_m + s.radius_max_m * s.radius_max_m) / 3;
+  if (area * s.packing_fraction / (std::numbers::pi * mean_r2) > 5e6)
+    throw InputError(r.key_path("radius_min_um"), format_value(m_to_um(s.radius_min_m)),
+                     "radii large enough for at most 5 million disks in the specimen, in um");
+  return s;
+}
+
+Json specimen_spec_to_json(const SpecimenSpec& s) {
+  using namespace units;
+  return Json{{"width_mm", m_to_mm(s.width_m)},
+              {"height_mm", m_to_mm(s.height_m)},
+              {"thickness_mm", m_to_mm(s.thickness_m)},
+              {"radius_min_um", m_to_um(s.radius_min_m)},
+              {"radius_max_um", m_to_um(s.radius_max_m)},
+              {"packing", s.packing},
+              {"seed", s.seed},
+              {"packing_fraction", s.packing_fraction},
+              {"compaction_pressure_MPa", pa_to_mpa(s.compaction_pressure_pa)},
+              {"installation_gap_um", m_to_um(s.installation_gap_m)},
+              {"growth_steps", s.growth_steps},
+              {"relax_steps", s.relax_steps}};
+}
+
+Json specimen_report_to_json(const SpecimenReport& r) {
+  return Json{{"n_particles", r.n_particles},
+              {"n_bonds", r.n_bonds},
+              {"packing_fraction", r.packing_fraction},
+              {"coordination_number", r.coordination_number},
+              {"radius_scale", r.radius_scale},
+              {"n_floaters_enlarged", r.n_floaters_enlarged},
+              {"n_floaters_left", r.n_floaters_left},
+              {"residual_stress_xx_MPa", units::pa_to_mpa(r.residual_stress_xx_pa)},
+              {"residual_stress_yy_MPa", units::pa_to_mpa(r.residual_stress_yy_pa)},
+              {"residual_stress_xy_MPa", units::pa_to_mpa(r.residual_stress_xy_pa)},
+              {"genesis_steps", r.genesis_steps}};
+}
+
+namespace {
+
+void finish_report(const Simulation& sim, const SpecimenSpec& spec, SpecimenReport& report) {
+  const auto& p = sim.particles();
+  double disk_area = 0;
+  for (double r : p.radius) disk_area += std::numbers::pi * r * r;
+  report.n_particles = static_cast<int>(p.size());
+  report.n_bonds = 0;
+  for (auto a : sim.bonds().active) report.n_bonds += a;
+  report.packing_fraction = disk_area / (spec.width_m * spec.height_m);
+  report.coordination_number = sim.coordination_number();
+  const auto s = sim.average_stress(spec.width_m * spec.height_m);
+  report.residual_stress_xx_pa = s[0];
+  report.residual_stress_yy_pa = s[1];
+  report.residual_stress_xy_pa = s[2];
+}
+
+Simulation make_hexagonal(const Material& material, const SpecimenSpec& spec, SpecimenReport& report) {
+  Simulation sim(material, {.thickness_m = spec.thickness_m});
+  const double r = 0.5 * (spec.radius_min_m + spec.radius_max_m);
+  const double row = std::sqrt(3.0) * r;
+  for (int k = 0; r + k * row <= spec.height_m - r; ++k) {
+    const double x0 = r + (k % 2) * r;
+    for (int c = 0; x0 + 2 * r * c <= spec.width_m - r; ++c) sim.add_particle(x0 + 2 * r * c, r + k * row, r);
+  }
+  sim.install_bonds_within_gap(1e-6 * r);
+  sim.initialise();
+  finish_report(sim, spec, report);
+  return sim;
+}
+
+/// Mean normal stress on the four vessel walls (compression positive) [Pa].
+double wall_pressure(const Simulation& sim, const SpecimenSpec& spec) {
+  const auto& w = sim.walls();
+  const double t = spec.thickness_m;
+  const double syy = 0.5 * (std::abs(w[0].fy) + std::abs(w[2].fy)) / (spec.width_m * t);
+  const double sxx = 0.5 * (std::abs(w[1].fx) + std::abs(w[3].fx)) / (spec.height_m * t);
+  return 0.5 * (sxx + syy);
+}
+
+Simulation make_random(const Material& material, const SpecimenSpec& spec, SpecimenReport& report,
+                       const std::function<void(std::int64_t, std::int64_t)>& progress) {
+  const double W = spec.width_m, H = spec.height_m, a = spec.radius_min_m, b = spec.radius_max_m;
+  const double mean_r2 = (a * a + a * b + b * b) / 3;
+  const auto n = static_cast<std::size_t>(std::lround(spec.packing_fraction * W * H / (std::numbers::pi * mean_r2)));
+  std::mt19937_64 rng(spec.seed);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  std::vector<double> r(n), x(n), y(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    r[k] = a + (b - a) * uniform(rng);
+    x[k] = r[k] + (W - 2 * r[k]) * uniform(rng);
+    y[k] = r[k] + (H - 2 * r[k]) * uniform(rng);
+  }
+  // Store the disks in rows (of height 2 R_max) for memory locality of neighbours.
+  std::vector<std::size_t> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  const auto row_of = [&](std::size_t k) { return static_cast<long>(y[k] / (2 * b)); };
+  std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) {
+    return row_of(i) != row_of(j) ? row_of(i) < row_of(j) : x[i] < x[j];
+  });
+
+  Material frictionless = material;
+  frictionless.contact.friction_coefficient = 0;  // physics-dem.md section 2: frictionless compaction
+  frictionless.local_damping = 0.7;
+  Simulation sim(frictionless, {.thickness_m = spec.thickness_m});
+  double scale = 0.5;
+  for (std::size_t k : order) sim.add_particle(x[k], y[k], scale * r[k]);
+  sim.add_wall({0, 0, W, 0});
+  sim.add_wall({W, 0, W, H});
+  sim.add_wall({W, H, 0, H});
+  sim.add_wall({0, H, 0, 0});
+  std::vector<double> r_sorted(n);
+  for (std::size_t k = 0; k < n; ++k) r_sorted[k] = r[order[k]];
+  const auto set_scale = [&](double s) {
+    scale = s;
+    for (std::size_t k = 0; k < n; ++k) sim.set_radius(k, s * r_sorted[k]);
+    sim.invalidate_neighbours();
+    sim.refresh_time_step();
+  };
+  sim.initialise();
+  const int chunk = 100, servo_max = 80, floater_rounds = 6;
+  const std::int64_t total = spec.growth_steps + servo_max * chunk + floater_rounds * 200 + spec.relax_steps;
+  const auto report_progress = [&] {
+    if (progress) progress(sim.step_count(), total);
+  };
+  // 1. Grow from half size to full size.
+  const int n_growth = std::max(1, spec.growth_steps / chunk);
+  for (int k = 1; k <= n_growth; ++k) {
+    set_scale(0.5 + 0.5 * k / n_growth);
+    sim.run(chunk);
+    report_progress();
+  }
+  // 2. Servo the common radius scale to the compaction pressure (areal strain ~ 2 dscale / scale).
+  const double target = spec.compaction_pressure_pa, modulus = material.contact.effective_modulus_pa;
+  for (int k = 0; k < servo_max; ++k) {
+    sim.run(chunk);
+    report_progress();
+    const double p = wall_pressure(sim, spec);
+    if (k >= 5 && std::abs(p - target) < 0.2 * target) break;
+    const double change = std::clamp(-(p - target) / modulus, -2e-3, 1e-3);
+    set_scale(scale * (1 + change));
+  }
+  report.radius_scale = scale;
+  // 3. Floaters (fewer than 3 contacts): enlarge by 1 % per round, at most 6 rounds.
+  report.n_floaters_enlarged = 0;
+  for (int round = 0; round < floater_rounds; ++round) {
+    sim.evaluate_forces();
+    int floaters = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      if (sim.n_contacts_of(k) >= 3) continue;
+      sim.set_radius(k, sim.particles().radius[k] * 1.01);
+      ++floaters;
+      if (round == 0) ++report.n_floaters_enlarged;
+    }
+    if (floaters == 0) break;
+    sim.invalidate_neighbours();
+    sim.refresh_time_step();
+    sim.run(200);
+    report_progress();
+  }
+  sim.evaluate_forces();
+  report.n_floaters_left = 0;
+  for (std::size_t k = 0; k < n; ++k) report.n_floaters_left += sim.n_contacts_of(k) < 3;
+  // 4. Joints, stress free, within the installation gap; 5. walls removed; 6. relax with friction.
+  sim.install_bonds_within_gap(spec.installation_gap_m);
+  sim.walls().clear();
+  for (std::size_t k = 0; k < n; ++k) sim.particles().vx[k] = sim.particles().vy[k] = sim.particles().omega[k] = 0;
+  sim.set_contact_params(material.contact);
+  sim.set_local_damping(material.local_damping);
+  sim.invalidate_neighbours();
+  sim.refresh_time_step();
+  sim.run(spec.relax_steps);
+  report_progress();
+  report.genesis_steps = sim.step_count();
+  sim.evaluate_forces();
+  finish_report(sim, spec, report);
+  return sim;
+}
+
+}  // namespace
+
+Simulation make_specimen(const Material& material, const SpecimenSpec& spec, SpecimenReport& report,
+                         const std::function<void(std::int64_t, std::int64_t)>& progress) {
+  report = {};
+  Simulation sim = spec.packing == "hexagonal" ? make_hexagonal(material, spec, report)
+                                               : make_random(material, spec, report, progress);
+  // The specimen starts a test at rest, at time zero, with no crack history.
+  sim.set_clock(0, 0);
+  sim.cracks().clear();
+  return sim;
+}
+
+Simulation with_material(const Simulation& specimen, const Material& material) {
+  if (material.joint.n_elements != specimen.bonds().stride)
+    throw InputError("material.n_elements", std::to_string(material.joint.n_elements),
+                     "the specimen's element count " + std::to_string(specimen.bonds().stride));
+  SimulationOptions options = specimen.options();
+  Simulation sim(material, options);
+  const auto& p = specimen.particles();
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    sim.add_particle(p.x[k], p.y[k], p.radius[k], p.type[k]);
+    sim.particles().theta[k] = p.theta[k];
+  }
+  const auto& b = specimen.bonds();
+  const auto stride = static_cast<std::size_t>(b.stride);
+  for (std::size_t k = 0; k < b.size(); ++k) {
+    if (!b.active[k]) continue;
+    const auto id = static_cast<std::size_t>(sim.install_bond(b.i[k], b.j[k], b.ref_distance_m[k], b.ref_rotation_rad[k]));
+    for (std::size_t e = 0; e < stride; ++e) {
+      sim.bonds().bonded[id * stride + e] = b.bonded[k * stride + e];
+      sim.bonds().shear_force_n[id * stride + e] = b.shear_force_n[k * stride + e];
+    }
+  }
+  sim.initialise();
+  return sim;
+}
+
+void save_specimen(const std::string& file_path, const Simulation& sim, const SpecimenSpec& spec,
+                   const SpecimenReport& report) {
+  const auto& p = sim.particles();
+  const auto& b = sim.bonds();
+  Json j;
+  j["format"] = "kerf-dem-specimen";
+  j["version"] = 1;
+  j["spec"] = specimen_spec_to_json(spec);
+  j["report"] = specimen_report_to_json(report);
+  j["material"] = material_to_json(sim.material());
+  j["particles"] = Json{{"x_m", p.x}, {"y_m", p.y}, {"radius_m", p.radius}, {"theta_rad", p.theta}};
+  std::vector<int> i, jj, bonded;
+  std::vector<double> d0, rot0, shear;
+  const auto stride = static_cast<std::size_t>(b.stride);
+  for (std::size_t k = 0; k < b.size(); ++k) {
+    if (!b.active[k]) continue;
+    i.push_back(b.i[k]);
+    jj.push_back(b.j[k]);
+    d0.push_back(b.ref_distance_m[k]);
+    rot0.push_back(b.ref_rotation_rad[k]);
+    for (std::size_t e = 0; e < stride; ++e) {
+      bonded.push_back(b.bonded[k * stride + e]);
+      shear.push_back(b.shear_force_n[k * stride + e]);
+    }
+  }
+  j["bonds"] = Json{{"n_elements", b.stride}, {"i", i}, {"j", jj}, {"ref_distance_m", d0}, {"ref_rotation_rad", rot0},
+                    {"element_bonded", bonded}, {"element_shear_force_N", shear}};
+  write_file_atomically(file_path, j.dump());
+}
+
+Simulation load_specimen(const std::string& file_path, const Material& material, SpecimenSpec& spec,
+                         SpecimenReport& report) {
+  const Json j = read_json_file(file_path);
+  if (j.value("format", "") != "kerf-dem-specimen" || j.value("version", 0) != 1)
+    throw InputError(file_path, j.value("format", "?"), "a kerf-dem-specimen version 1 file");
+  try {
+    ObjectReader sr(j.at("spec"), "spec");
+    spec = read_specimen_spec(sr);
+    const Json& rep = j.at("report");
+    report.n_particles = rep.at("n_particles");
+    report.n_bonds = rep.at("n_bonds");
+    report.packing_fraction = rep.at("packing_fraction");
+    report.coordination_number = rep.at("coordination_number");
+    report.radius_scale = rep.at("radius_scale");
+    report.n_floaters_enlarged = rep.at("n_floaters_enlarged");
+    report.n_floaters_left = rep.at("n_floaters_left");
+    report.residual_stress_xx_pa = units::mpa_to_pa(rep.at("residual_stress_xx_MPa").get<double>());
+    report.residual_stress_yy_pa = units::mpa_to_pa(rep.at("residual_stress_yy_MPa").get<double>());
+    report.residual_stress_xy_pa = units::mpa_to_pa(rep.at("residual_stress_xy_MPa").get<double>());
+    report.genesis_steps = rep.at("genesis_steps");
+    Simulation sim(material, {.thickness_m = spec.thickness_m});
+    const Json& p = j.at("particles");
+    const auto x = p.at("x_m").get<std::vector<double>>(), y = p.at("y_m").get<std::vector<double>>();
+    const auto r = p.at("radius_m").get<std::vector<double>>(), th = p.at("theta_rad").get<std::vector<double>>();
+    for (std::size_t k = 0; k < x.size(); ++k) {
+      sim.add_particle(x.at(k), y.at(k), r.at(k));
+      sim.particles().theta[k] = th.at(k);
+    }
+    const Json& b = j.at("bonds");
+    const auto bi = b.at("i").get<std::vector<int>>(), bj = b.at("j").get<std::vector<int>>();
+    const auto d0 = b.at("ref_distance_m").get<std::vector<double>>();
+    const auto rot0 = b.at("ref_rotation_rad").get<std::vector<double>>();
+    const auto bonded = b.at("element_bonded").get<std::vector<int>>();
+    const auto shear = b.at("element_shear_force_N").get<std::vector<double>>();
+    const auto stored = static_cast<std::size_t>(b.at("n_elements").get<int>());
+    const auto stride = static_cast<std::size_t>(material.joint.n_elements);
+    for (std::size_t k = 0; k < bi.size(); ++k) {
+      if (bi[k] < 0 || bj[k] < 0 || static_cast<std::size_t>(std::max(bi[k], bj[k])) >= x.size())
+        throw InputError(file_path + ": bonds", std::to_string(k), "particle indices within the file");
+      const auto id = static_cast<std::size_t>(sim.install_bond(bi[k], bj[k], d0.at(k), rot0.at(k)));
+      // Element states carry over only when the element count is the same (else the joint starts intact).
+      if (stored != stride) continue;
+      for (std::size_t e = 0; e < stride; ++e) {
+        sim.bonds().bonded[id * stride + e] = static_cast<std::uint8_t>(bonded.at(k * stride + e));
+        sim.bonds().shear_force_n[id * stride + e] = shear.at(k * stride + e);
+      }
+    }
+    sim.initialise();
+    return sim;
+  } catch (const Json::exception& e) {
+    throw InputError(file_path, e.what(), "a complete kerf-dem-specimen file");
+  }
+}
+
+}  // namespace kerf::dem

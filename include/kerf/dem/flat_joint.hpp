@@ -1,0 +1,86 @@
+#pragma once
+// The 2D flat-joint contact (Potyondy 2012, 2015; docs physics-dem.md section 1), as pure functions of
+// validated parameters and per-contact state.
+//
+// The interface between disks 1 and 2 is a segment of half-length R = lambda min(R1, R2) centred at the
+// contact point, split into N_r equal elements. Element e has length l_e = 2R / N_r, area A_e = l_e t and
+// centroid xi_e along the tangent s = z x n. Normal gap and relative rotation are measured from the
+// installed state (the joint starts stress free), so g(xi) = g_s - theta_b xi.
+//
+//   FlatJointParams p = FlatJointParams::validated(raw, "material");
+//   FlatJointGeometry geo = flat_joint_geometry(p, r1, r2, thickness_m);
+//   FlatJointResult res = flat_joint_update(p, geo, {gap_m, rotation_rad, shear_increment_m}, shear, bonded, breaks);
+#include <cstdint>
+#include <span>
+#include <string>
+
+namespace kerf::dem {
+
+/// Micro-parameters of the flat joint (physics-dem.md section 1). SI units.
+struct FlatJointParams {
+  double effective_modulus_pa = 107e9;  ///< Ebar*: k_n = Ebar* / (R1 + R2)
+  double stiffness_ratio = 3.1;         ///< kappabar* = k_n / k_s
+  double tensile_strength_pa = 200e6;   ///< sigma_c
+  double cohesion_pa = 113e6;           ///< c
+  double friction_angle_rad = 0.4363323129985824;  ///< phi (25 deg), bonded-element Coulomb envelope
+  double friction_coefficient = 0.577;  ///< mu of unbonded elements (residual friction)
+  int n_elements = 2;                   ///< N_r >= 2 (else bending never enters the strength test)
+  double radius_multiplier = 1.0;       ///< lambda: R = lambda min(R1, R2)
+  double tan_friction_angle = 0.46630765815499858;  ///< tan(phi), derived by validated() (hot loop)
+
+  /// Checks every field; throws InputError naming "<path>.<key>" with the unit of the JSON key.
+  static FlatJointParams validated(const FlatJointParams& raw, const std::string& path);
+};
+
+/// Per-joint constants fixed at installation.
+struct FlatJointGeometry {
+  double half_length_m;     ///< R = lambda min(R1, R2)
+  double thickness_m;       ///< out-of-plane thickness t
+  double normal_stiffness;  ///< k_n [Pa/m] (stress per gap length)
+  double shear_stiffness;   ///< k_s = k_n / kappabar* [Pa/m]
+};
+
+/// k_n = Ebar* / (R1 + R2); for a disk-wall joint pass r2 = 0 (L = R1).
+FlatJointGeometry flat_joint_geometry(const FlatJointParams& p, double r1_m, double r2_m, double thickness_m);
+
+/// Relative motion of the interface since installation, in the contact frame (n from disk 1 to 2).
+struct FlatJointKinematics {
+  double gap_m;              ///< g_s: normal gap at the interface centre (opening positive), zero when installed
+  double rotation_rad;       ///< theta_b = theta2 - theta1 since installation
+  double shear_increment_m;  ///< d_s: shear displacement increment of this step (surface 2 relative to 1, along s)
+};
+
+/// Resultant on disk 2 about the interface centre; disk 1 gets the opposite (physics-dem.md eq. 1).
+struct FlatJointResult {
+  double normal_force_n = 0;  ///< sum F_n,e, tension positive: the force on disk 2 is -F_n n + F_s s
+  double shear_force_n = 0;   ///< sum F_s,e along s, on disk 2
+  double moment_nm = 0;       ///< sum (F_n,e xi_e + M_e) on disk 2 about the interface centre
+  int n_breaking = 0;         ///< elements found over strength this step (applied later by the caller)
+};
+
+/// Break mode of an element, as recorded in crack events.
+enum class BreakMode : std::uint8_t { none = 0, tension = 1, shear = 2 };
+
+/// Advances the element shear forces by the increment and computes the interface resultant.
+///
+/// Bonded element: F_n,e = k_n A_e g_e (g_e = g_s - theta_b xi_e), M_e = -k_n theta_b t l_e^3 / 12,
+/// F_s,e -= k_s A_e d_s; it is over strength in tension if F_n,e / A_e > sigma_c, else in shear if
+/// |F_s,e| / A_e >= c - sigma tan(phi). Unbonded element: only the closed part of the gap carries load,
+/// F_n,e = k_n t int_e min(g(xi), 0) dxi, with Coulomb friction |F_s,e| <= mu |F_n,e|.
+/// `breaks[e]` is set for elements over strength; the caller applies them after the whole force loop
+/// (physics-dem.md section 1), so this function never changes `bonded`.
+FlatJointResult flat_joint_update(const FlatJointParams& p, const FlatJointGeometry& geo, const FlatJointKinematics& kin,
+                                  std::span<double> shear_force_n, std::span<const std::uint8_t> bonded,
+                                  std::span<BreakMode> breaks);
+
+/// Elastic energy stored in the bonded elements (normal, bending and shear springs), for energy checks.
+double flat_joint_bonded_energy(const FlatJointParams& p, const FlatJointGeometry& geo, const FlatJointKinematics& kin,
+                                std::span<const double> shear_force_n, std::span<const std::uint8_t> bonded);
+
+/// Centroid xi_e of element e along the interface.
+inline double flat_joint_element_centroid(const FlatJointGeometry& geo, int n_elements, int e) {
+  const double le = 2.0 * geo.half_length_m / n_elements;
+  return -geo.half_length_m + (e + 0.5) * le;
+}
+
+}  // namespace kerf::dem

@@ -1,0 +1,37 @@
+#pragma once
+// The micro-parameters of a bonded-particle material, read from JSON with units in the key names.
+//
+//   kerf::ObjectReader r(json.at("material"), "material");
+//   Material m = read_material(r);  // r.finish() is called; unknown keys are rejected
+//
+// Keys (all optional, defaults are seed 000 Table 1): density_kg_per_m3, effective_modulus_GPa,
+// stiffness_ratio, bond_effective_modulus_GPa, bond_stiffness_ratio, tensile_strength_MPa, cohesion_MPa,
+// friction_angle_deg, friction_coefficient (disk-disk friction and residual friction of unbonded
+// elements), n_elements, radius_multiplier, local_damping, contact_model ("linear"), bond_model
+// ("flat_joint"), base (name of a file data/materials/<base>.json whose values the other keys override).
+#include <string>
+
+#include "kerf/dem/flat_joint.hpp"
+#include "kerf/dem/linear_contact.hpp"
+#include "kerf/json_reader.hpp"
+
+namespace kerf::dem {
+
+struct Material {
+  std::string name = "custom";
+  double density_kg_per_m3 = 2400;
+  LinearContactParams contact;  ///< unjointed disk-disk and disk-wall contacts
+  FlatJointParams joint;        ///< bonded contacts
+  double local_damping = 0.7;   ///< Cundall's alpha (physics-dem.md section 1)
+};
+
+/// Reads and validates a material object (resolving "base" from the data directory).
+Material read_material(const Json& object, const std::string& path);
+
+/// The JSON form read_material accepts (every key written).
+Json material_to_json(const Material& m);
+
+/// The bundled data directory: $KERF_DATA_DIR if set, else the source tree's data/.
+std::string data_directory();
+
+}  // namespace kerf::dem

@@ -1,0 +1,66 @@
+#pragma once
+// Bonded-particle specimen genesis (physics-dem.md section 2) and its saved form.
+//
+// Random packing: disks with radii uniform in [R_min, R_max] placed at random in a walled vessel at half
+// size, grown frictionless to their full size, then servo-controlled (a common radius scale) to a low
+// isotropic pressure; floaters (< 3 contacts) are enlarged a little; flat joints are installed at every
+// pair closer than the installation gap; the walls are removed and the specimen relaxed with friction on.
+// Hexagonal packing: equal disks of radius (R_min + R_max) / 2 on a triangular lattice, every touching
+// pair jointed (closed-form elastic constants, for verification).
+//
+//   SpecimenSpec spec = read_specimen_spec(scene.at("specimen"), "specimen");
+//   SpecimenReport report;
+//   Simulation sim = make_specimen(material, spec, report);
+//   save_specimen("out/specimen.json", sim, spec, report);
+#include <cstdint>
+#include <functional>
+#include <string>
+
+#include "kerf/dem/simulation.hpp"
+#include "kerf/json_reader.hpp"
+
+namespace kerf::dem {
+
+struct SpecimenSpec {
+  double width_m = 1e-3, height_m = 2e-3, thickness_m = 1e-3;
+  double radius_min_m = 7.5e-6, radius_max_m = 10e-6;
+  std::string packing = "random";           ///< "random" or "hexagonal"
+  std::uint64_t seed = 1;
+  double packing_fraction = 0.85;           ///< area fraction used to choose the number of disks (random)
+  double compaction_pressure_pa = 3e6;      ///< isotropic pressure of the frictionless compaction
+  double installation_gap_m = 0.5e-6;       ///< joints at pairs whose surface gap is below this
+  int growth_steps = 6000, relax_steps = 2000;
+};
+
+/// Reads the "specimen" object: width_mm, height_mm, thickness_mm, radius_min_um, radius_max_um, packing,
+/// seed, packing_fraction, compaction_pressure_MPa, installation_gap_um, growth_steps, relax_steps.
+SpecimenSpec read_specimen_spec(ObjectReader& reader);
+Json specimen_spec_to_json(const SpecimenSpec& spec);
+
+struct SpecimenReport {
+  int n_particles = 0, n_bonds = 0, n_floaters_enlarged = 0, n_floaters_left = 0;
+  double packing_fraction = 0, coordination_number = 0, radius_scale = 1;
+  double residual_stress_xx_pa = 0, residual_stress_yy_pa = 0, residual_stress_xy_pa = 0;
+  std::int64_t genesis_steps = 0;
+};
+Json specimen_report_to_json(const SpecimenReport& r);
+
+/// Builds a jointed specimen. `progress(done, total)` is called now and then with steps done.
+Simulation make_specimen(const Material& material, const SpecimenSpec& spec, SpecimenReport& report,
+                         const std::function<void(std::int64_t, std::int64_t)>& progress = {});
+
+/// The same packing and joint states with another material (stiffnesses follow the new micro-parameters;
+/// the element count must be the same). Walls and groups are not copied.
+Simulation with_material(const Simulation& specimen, const Material& material);
+
+/// Saves particles, joints with their element states, the spec and the report as JSON
+/// (format "kerf-dem-specimen", version 1; documented in docs/dem.md).
+void save_specimen(const std::string& file_path, const Simulation& sim, const SpecimenSpec& spec,
+                   const SpecimenReport& report);
+
+/// Loads a specimen for `material` (joint stiffnesses follow the material; the geometry and the element
+/// states come from the file). Returns the spec and report stored with it.
+Simulation load_specimen(const std::string& file_path, const Material& material, SpecimenSpec& spec,
+                         SpecimenReport& report);
+
+}  // namespace kerf::dem

@@ -1,0 +1,180 @@
+// The flat-joint law driven through prescribed motions (MercuryDPM style): tension to failure, shear
+// failure on the Coulomb envelope, bending with partial damage, load-unload-reload, closed-form stiffness.
+#include "kerf/dem/flat_joint.hpp"
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <vector>
+
+#include "kerf/error.hpp"
+
+using namespace kerf::dem;
+using Catch::Matchers::WithinAbs;
+using Catch::Matchers::WithinRel;
+
+namespace {
+
+struct Joint {
+  FlatJointParams p;
+  FlatJointGeometry geo;
+  std::vector<double> shear;
+  std::vector<std::uint8_t> bonded;
+  std::vector<BreakMode> breaks;
+
+  explicit Joint(FlatJointParams params, double r1 = 10e-6, double r2 = 10e-6, double t = 1e-3)
+      : p(FlatJointParams::validated(params, "material")),
+        geo(flat_joint_geometry(p, r1, r2, t)),
+        shear(static_cast<std::size_t>(p.n_elements), 0.0),
+        bonded(static_cast<std::size_t>(p.n_elements), 1),
+        breaks(static_cast<std::size_t>(p.n_elements), BreakMode::none) {}
+
+  FlatJointResult update(double gap, double rotation, double ds) {
+    return flat_joint_update(p, geo, {gap, rotation, ds}, shear, bonded, breaks);
+  }
+  void apply_breaks() {
+    for (std::size_t e = 0; e < breaks.size(); ++e)
+      if (breaks[e] != BreakMode::none) bonded[e] = 0, shear[e] = 0;
+  }
+  double element_area() const { return 2 * geo.half_length_m / p.n_elements * geo.thickness_m; }
+};
+
+}  // namespace
+
+TEST_CASE("flat joint: stiffness and bending closed forms", "[flat_joint]") {
+  Joint j(FlatJointParams{});
+  const double R = j.geo.half_length_m, t = j.geo.thickness_m, kn = j.geo.normal_stiffness;
+  CHECK_THAT(kn, WithinRel(107e9 / 20e-6, 1e-14));
+  const double g = 1e-9;
+  auto r = j.update(g, 0, 0);
+  CHECK_THAT(r.normal_force_n, WithinRel(kn * 2 * R * t * g, 1e-12));
+  CHECK_THAT(r.moment_nm, WithinAbs(0, 1e-20));
+  // Pure bending: M = -k_n I theta with I = t (2R)^3 / 12, for any number of elements.
+  for (int nr : {2, 3, 8}) {
+    FlatJointParams p;
+    p.n_elements = nr;
+    Joint b(p);
+    const double theta = 1e-6;
+    auto rb = b.update(0, theta, 0);
+    CHECK_THAT(rb.normal_force_n, WithinAbs(0, 1e-12));
+    CHECK_THAT(rb.moment_nm, WithinRel(-kn * t * std::pow(2 * R, 3) / 12 * theta, 1e-12));
+  }
+}
+
+TEST_CASE("flat joint: tension breaks every element at sigma_c A_e", "[flat_joint]") {
+  Joint j(FlatJointParams{});
+  const double g_break = j.p.tensile_strength_pa / j.geo.normal_stiffness;
+  auto below = j.update(0.999 * g_break, 0, 0);
+  CHECK(below.n_breaking == 0);
+  auto above = j.update(1.001 * g_break, 0, 0);
+  CHECK(above.n_breaking == 2);
+  CHECK(j.breaks[0] == BreakMode::tension);
+  CHECK(j.breaks[1] == BreakMode::tension);
+  CHECK_THAT(above.normal_force_n, WithinRel(1.001 * 2 * j.p.tensile_strength_pa * j.element_area(), 1e-12));
+  j.apply_breaks();
+  // Broken and open: no force at all; closed again: compression only.
+  auto open = j.update(2 * g_break, 0, 0);
+  CHECK(open.normal_force_n == 0);
+  CHECK(open.n_breaking == 0);
+  auto closed = j.update(-g_break, 0, 0);
+  CHECK_THAT(closed.normal_force_n, WithinRel(-2 * j.p.tensile_strength_pa * j.element_area(), 1e-12));
+}
+
+TEST_CASE("flat joint: shear breaks on the Coulomb envelope c - sigma tan(phi)", "[flat_joint]") {
+  Joint j(FlatJointParams{});
+  const double sigma = -100e6;  // compression
+  const double gap = sigma / j.geo.normal_stiffness;
+  const double strength = j.p.cohesion_pa - sigma * std::tan(j.p.friction_angle_rad);
+  const double ds_break = strength / j.geo.shear_stiffness;  // tau = k_s * total shear displacement
+  const int n = 1000;
+  int broke_at = -1;
+  for (int k = 1; k <= n && broke_at < 0; ++k) {
+    auto r = j.update(gap, 0, 1.5 * ds_break / n);
+    if (r.n_breaking > 0) {
+      broke_at = k;
+      CHECK(j.breaks[0] == BreakMode::shear);
+      CHECK(j.breaks[1] == BreakMode::shear);
+      // Shear force opposes the displacement of disk 2.
+      CHECK_THAT(r.shear_force_n, WithinRel(-k * 1.5 * ds_break / n * j.geo.shear_stiffness * 2 * j.element_area(), 1e-9));
+    }
+  }
+  // It breaks at the first increment that reaches the envelope, not before.
+  CHECK(broke_at == static_cast<int>(std::ceil(n / 1.5 - 1e-9)));
+  j.apply_breaks();
+  // Residual: Coulomb friction mu |F_n| after breakage.
+  auto r = j.update(gap, 0, ds_break);
+  CHECK_THAT(std::abs(r.shear_force_n), WithinRel(j.p.friction_coefficient * std::abs(r.normal_force_n), 1e-12));
+}
+
+TEST_CASE("flat joint: bending breaks the opening element only (partial damage)", "[flat_joint]") {
+  Joint j(FlatJointParams{});
+  // theta > 0 opens the element at xi < 0: g_e = -theta xi_e.
+  const double xi0 = flat_joint_element_centroid(j.geo, 2, 0);
+  const double theta_break = j.p.tensile_strength_pa / (j.geo.normal_stiffness * -xi0);
+  auto below = j.update(0, 0.99 * theta_break, 0);
+  CHECK(below.n_breaking == 0);
+  auto above = j.update(0, 1.01 * theta_break, 0);
+  REQUIRE(above.n_breaking == 1);
+  CHECK(j.breaks[0] == BreakMode::tension);
+  CHECK(j.breaks[1] == BreakMode::none);
+  const double m_intact = above.moment_nm;
+  j.apply_breaks();
+  // The damaged joint is softer in bending: its broken half is open and carries nothing.
+  auto after = j.update(0, 1.01 * theta_break, 0);
+  CHECK(after.n_breaking == 0);
+  CHECK(std::abs(after.moment_nm) < std::abs(m_intact));
+  CHECK(after.normal_force_n < 0);  // only the compressed bonded element pushes
+}
+
+TEST_CASE("flat joint: load-unload-reload is elastic while bonded, compression-only once broken", "[flat_joint]") {
+  Joint j(FlatJointParams{});
+  const double g_break = j.p.tensile_strength_pa / j.geo.normal_stiffness;
+  const double k = j.geo.normal_stiffness * 2 * j.geo.half_length_m * j.geo.thickness_m;
+  for (double g : {0.5 * g_break, 0.0, -0.5 * g_break, 0.5 * g_break})
+    CHECK_THAT(j.update(g, 0, 0).normal_force_n, WithinRel(k * g, 1e-12));
+  CHECK(j.update(0.0, 0, 0).normal_force_n == 0);
+  j.update(1.2 * g_break, 0, 0);
+  j.apply_breaks();
+  // Unload to zero and below, reload into tension: same stiffness in compression, nothing in tension.
+  CHECK(j.update(0.5 * g_break, 0, 0).normal_force_n == 0);
+  CHECK_THAT(j.update(-0.5 * g_break, 0, 0).normal_force_n, WithinRel(-0.5 * k * g_break, 1e-12));
+  CHECK(j.update(0.5 * g_break, 0, 0).normal_force_n == 0);
+}
+
+TEST_CASE("flat joint: unbonded elements integrate the closed part of a tilted gap", "[flat_joint]") {
+  FlatJointParams p;
+  p.n_elements = 3;
+  Joint j(p);
+  std::fill(j.bonded.begin(), j.bonded.end(), 0);
+  const double R = j.geo.half_length_m, kt = j.geo.normal_stiffness * j.geo.thickness_m;
+  for (double g : {-2e-9, 0.0, 1e-9}) {
+    for (double theta : {-3e-4, 1e-5, 2e-4}) {
+      auto r = j.update(g, theta, 0);
+      // Midpoint-rule reference with many points.
+      const int m = 200000;
+      double fn = 0, mom = 0;
+      for (int q = 0; q < m; ++q) {
+        const double xi = -R + (q + 0.5) * 2 * R / m;
+        const double f = kt * std::min(g - theta * xi, 0.0) * 2 * R / m;
+        fn += f;
+        mom += f * xi;
+      }
+      CHECK_THAT(r.normal_force_n, WithinAbs(fn, 1e-6 * std::abs(fn) + 1e-12));
+      CHECK_THAT(r.moment_nm, WithinAbs(mom, 1e-6 * std::abs(mom) + 1e-18));
+    }
+  }
+}
+
+TEST_CASE("flat joint: parameters are validated when built", "[flat_joint]") {
+  FlatJointParams p;
+  p.n_elements = 1;
+  try {
+    FlatJointParams::validated(p, "material");
+    FAIL("n_elements = 1 accepted");
+  } catch (const kerf::InputError& e) {
+    CHECK(e.field() == "material.n_elements");
+    CHECK(e.value() == "1");
+  }
+  p = FlatJointParams{};
+  p.tensile_strength_pa = -1e6;
+  CHECK_THROWS_AS(FlatJointParams::validated(p, "material"), kerf::InputError);
+}

@@ -1,0 +1,101 @@
+// The calibration tests: elastic response of a hexagonal specimen against the lattice closed form, and a
+// small random specimen against stored reference values (tests/dem/reference/lab_small.json).
+#include "kerf/dem/lab_test.hpp"
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+
+#include "kerf/dem/specimen.hpp"
+#include "kerf/io.hpp"
+
+using namespace kerf::dem;
+using Catch::Matchers::WithinAbs;
+using Catch::Matchers::WithinRel;
+
+TEST_CASE("lab test: hexagonal specimen's E and nu match the lattice closed form", "[lab_test]") {
+  SpecimenSpec spec;
+  spec.packing = "hexagonal";
+  spec.width_m = 0.3e-3;
+  spec.height_m = 0.6e-3;
+  spec.radius_min_m = spec.radius_max_m = 10e-6;
+  Material m;
+  SpecimenReport report;
+  const Simulation sim = make_specimen(m, spec, report);
+  // Plane stress, bonds K_n = E* t, K_s = K_n / kappa: E = 2 sqrt(3) E* (1 + 1/kappa) / (3 + 1/kappa),
+  // nu = (kappa - 1) / (3 kappa + 1).
+  const double kappa = m.joint.stiffness_ratio;
+  const double e_closed = 2 * std::sqrt(3.0) * m.joint.effective_modulus_pa * (1 + 1 / kappa) / (3 + 1 / kappa);
+  const double nu_closed = (kappa - 1) / (3 * kappa + 1);
+  // The load-bearing width of the lattice is (disks per row) 2R; the test divides by the outer width,
+  // which the offset rows make R wider.
+  const double rows = std::round((spec.height_m - 2 * 10e-6) / (std::sqrt(3.0) * 10e-6)) + 1;
+  const double lattice_width = static_cast<double>(sim.particles().size()) / rows * 20e-6;
+  double e_compression = 0;
+  for (const char* test : {"compression", "tension"}) {
+    LoadingSpec load;
+    load.test = test;
+    load.max_strain = 4e-4;  // elastic range: stop on strain
+    load.sample_every_steps = 20;
+    const LabTestResult res = run_lab_test(sim, load);
+    INFO(test);
+    CHECK(res.stop_reason.find("maximum strain") != std::string::npos);
+    CHECK(res.curve.back().n_tension_cracks + res.curve.back().n_shear_cracks == 0);
+    // Platen contacts (compression) and grip rows (tension) perturb the ends: a few per cent.
+    const double e = res.youngs_modulus_pa * res.width_m / lattice_width;
+    CHECK_THAT(e, WithinRel(e_closed, 0.05));
+    if (std::string(test) == "compression") {
+      CHECK_THAT(res.poissons_ratio, WithinRel(nu_closed, 0.15));
+      e_compression = e;
+    } else {
+      CHECK_THAT(e, WithinRel(e_compression, 0.03));
+    }
+  }
+}
+
+TEST_CASE("lab test: small random specimen regression", "[lab_test]") {
+  // Reference values with their tolerance; regenerate with KERF_REGENERATE_REFERENCE=1.
+  const std::string file = std::string(KERF_SOURCE_DIR) + "/tests/dem/reference/lab_small.json";
+  SpecimenSpec spec;
+  spec.width_m = 0.2e-3;
+  spec.height_m = 0.4e-3;
+  spec.growth_steps = 2000;
+  spec.relax_steps = 500;
+  spec.seed = 7;
+  Material m;
+  SpecimenReport report;
+  const Simulation sim = make_specimen(m, spec, report);
+  LoadingSpec load;
+  load.speed_m_per_s = 0.1;
+  load.test = "tension";
+  const LabTestResult t = run_lab_test(sim, load);
+  load.test = "compression";
+  const LabTestResult c = run_lab_test(sim, load);
+  const kerf::Json now{{"n_particles", report.n_particles},
+                       {"n_bonds", report.n_bonds},
+                       {"tension_youngs_modulus_GPa", t.youngs_modulus_pa * 1e-9},
+                       {"tensile_strength_MPa", t.peak_stress_pa * 1e-6},
+                       {"compression_youngs_modulus_GPa", c.youngs_modulus_pa * 1e-9},
+                       {"poissons_ratio", c.poissons_ratio},
+                       {"compressive_strength_MPa", c.peak_stress_pa * 1e-6}};
+  if (const char* env = std::getenv("KERF_REGENERATE_REFERENCE"); env && std::string(env) == "1") {
+    kerf::Json out{{"description", "tests/dem/lab_test_test.cpp 'small random specimen regression'; regenerate with "
+                                   "KERF_REGENERATE_REFERENCE=1 build/tests/kerf_dem_tests '[lab_test]'"},
+                   {"relative_tolerance", 0.02},
+                   {"values", now}};
+    kerf::write_file_atomically(file, out.dump(2) + "\n");
+    WARN("reference regenerated: " << file);
+    return;
+  }
+  const kerf::Json ref = kerf::read_json_file(file);
+  const double tol = ref.at("relative_tolerance");
+  CHECK(now.at("n_particles") == ref.at("values").at("n_particles"));
+  for (const auto& [key, value] : ref.at("values").items()) {
+    INFO(key);
+    CHECK_THAT(now.at(key).get<double>(), WithinRel(value.get<double>(), tol));
+  }
+  // Physics sanity independent of the stored numbers.
+  CHECK(c.peak_stress_pa > 2 * t.peak_stress_pa);
+  CHECK_THAT(t.youngs_modulus_pa, WithinRel(c.youngs_modulus_pa, 0.15));
+}

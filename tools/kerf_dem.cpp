@@ -1,0 +1,499 @@
+// kerf-dem: the 2D bonded-particle DEM with flat joints (issue 4).
+//
+//   kerf-dem run SCENE.json [--set key.path=value]... [--out DIR] [--threads N]
+//
+// Scene kinds: "specimen" (genesis, saved for reuse), "tension", "compression" (seed 000 calibration
+// tests). Exit status 2 for bad input (the message names the field, the value and what was expected),
+// 3 when the model fails (e.g. an unstable run).
+#include <omp.h>
+
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <cstring>
+#include <iterator>
+#include <fmt/format.h>
+#include <iostream>
+#include <optional>
+
+#include "kerf/dem/calibration.hpp"
+#include "kerf/dem/lab_test.hpp"
+#include "kerf/dem/material.hpp"
+#include "kerf/dem/output.hpp"
+#include "kerf/dem/png.hpp"
+#include "kerf/dem/specimen.hpp"
+#include "kerf/error.hpp"
+#include "kerf/io.hpp"
+#include "kerf/json_reader.hpp"
+#include "kerf/units.hpp"
+
+namespace fs = std::filesystem;
+using namespace kerf;
+using namespace kerf::dem;
+
+namespace {
+
+struct Scene {
+  std::string kind;
+  Material material;
+  std::optional<std::string> specimen_file;
+  SpecimenSpec specimen;
+  LoadingSpec loading;
+  double time_step_safety = 0.8;
+  int min_parallel_items = 4096;
+  int frame_every_samples = 100;
+  CalibrationSpec calibration;
+  std::string calibrated_name = "calibrated";
+  bool install_material = false;  ///< also write data/materials/<name>.json (the data directory in use)
+};
+
+/// Reads one row of a macro-property table (data/experiments/*.csv: '#' comment lines, a header with
+/// youngs_modulus_GPa, tensile_strength_MPa, compressive_strength_MPa, poissons_ratio).
+MacroProperties read_targets_csv(const std::string& path, const std::string& row, const std::string& field) {
+  std::ifstream in(path);
+  if (!in) throw InputError(field + ".file", path, "a readable CSV file");
+  std::string line;
+  std::vector<std::string> header;
+  const auto split = [](const std::string& text) {
+    std::vector<std::string> out;
+    std::stringstream ss(text);
+    for (std::string cell; std::getline(ss, cell, ',');) out.push_back(cell);
+    return out;
+  };
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    if (header.empty()) {
+      header = split(line);
+      continue;
+    }
+    const auto cells = split(line);
+    if (cells.empty() || cells[0] != row) continue;
+    const auto value = [&](const std::string& name) {
+      const auto it = std::find(header.begin(), header.end(), name);
+      if (it == header.end()) throw InputError(field + ".file", path, "a CSV with a column " + name);
+      return std::stod(cells.at(static_cast<std::size_t>(it - header.begin())));
+    };
+    return {units::gpa_to_pa(value("youngs_modulus_GPa")), value("poissons_ratio"),
+            units::mpa_to_pa(value("tensile_strength_MPa")), units::mpa_to_pa(value("compressive_strength_MPa"))};
+  }
+  throw InputError(field + ".row", row, "a row of " + path);
+}
+
+Scene read_scene(const Json& doc, const fs::path& scene_dir) {
+  ObjectReader root(doc, "");
+  Scene s;
+  s.kind = root.get_choice("kind", {"specimen", "tension", "compression", "calibrate"});
+  root.ignore("description");
+  static const Json empty = Json::object();
+  const Json* material = root.find("material");
+  s.material = read_material(material ? *material : empty, "material");
+  if (auto spec = root.find_object("specimen")) {
+    if (spec->has("file")) {
+      fs::path file = spec->get_string("file");
+      if (file.is_relative()) file = scene_dir / file;
+      if (!fs::exists(file)) throw InputError("specimen.file", file.string(), "an existing specimen file");
+      s.specimen_file = file.string();
+    } else {
+      s.specimen = read_specimen_spec(*spec);
+    }
+    spec->finish();
+  }
+  if (auto engine = root.find_object("engine")) {
+    s.time_step_safety = engine->get_number_or("time_step_safety", 0.8, Range{0.0, 1.0, true, false}, "");
+    s.min_parallel_items = engine->get_int_or("min_parallel_items", 4096, 0, 1 << 30);
+    engine->finish();
+  }
+  if (s.kind == "tension" || s.kind == "compression") {
+    if (auto loading = root.find_object("loading")) {
+      s.loading = read_loading_spec(*loading, s.kind);
+      loading->finish();
+    } else {
+      ObjectReader none(empty, "loading");
+      s.loading = read_loading_spec(none, s.kind);
+    }
+  }
+  if (s.kind == "calibrate") {
+    auto& c = s.calibration;
+    ObjectReader cal = root.get_object("calibration");
+    if (auto targets = cal.find_object("targets")) {
+      if (targets->has("file")) {
+        fs::path file = targets->get_string("file");
+        if (file.is_relative()) file = fs::path(data_directory()) / file;
+        c.targets = read_targets_csv(file.string(), targets->get_string_or("row", "soda_lime_glass"), targets->path());
+      }
+      c.targets.youngs_modulus_pa = units::gpa_to_pa(targets->get_number_or(
+          "youngs_modulus_GPa", units::pa_to_gpa(c.targets.youngs_modulus_pa), Range::positive(), "GPa"));
+      c.targets.poissons_ratio = targets->get_number_or("poissons_ratio", c.targets.poissons_ratio, Range::open(0.0, 0.5), "");
+      c.targets.tensile_strength_pa = units::mpa_to_pa(targets->get_number_or(
+          "tensile_strength_MPa", units::pa_to_mpa(c.targets.tensile_strength_pa), Range::positive(), "MPa"));
+      c.targets.compressive_strength_pa = units::mpa_to_pa(targets->get_number_or(
+          "compressive_strength_MPa", units::pa_to_mpa(c.targets.compressive_strength_pa), Range::positive(), "MPa"));
+      targets->finish();
+    }
+    if (const Json* free = cal.find("free")) {
+      const std::vector<std::string> valid{"effective_modulus_GPa", "stiffness_ratio", "tensile_strength_MPa", "cohesion_MPa"};
+      if (!free->is_array()) throw InputError(cal.key_path("free"), json_value_text(*free), "a list of parameter names");
+      c.free_modulus = c.free_stiffness_ratio = c.free_tensile_strength = c.free_cohesion = false;
+      for (const auto& item : *free) {
+        const std::string name = item.is_string() ? item.get<std::string>() : json_value_text(item);
+        if (std::find(valid.begin(), valid.end(), name) == valid.end())
+          throw InputError(cal.key_path("free"), name, describe_choices(name, valid));
+        c.free_modulus |= name == valid[0];
+        c.free_stiffness_ratio |= name == valid[1];
+        c.free_tensile_strength |= name == valid[2];
+        c.free_cohesion |= name == valid[3];
+      }
+    }
+    c.tolerance = cal.get_number_or("tolerance_percent", 3, Range::open(0.0, 100.0), "%") / 100;
+    c.max_evaluations = cal.get_int_or("max_evaluations", 24, 1, 1000);
+    s.calibrated_name = cal.get_string_or("material_name", "calibrated");
+    if (s.calibrated_name.empty() || s.calibrated_name.find_first_of("/\\. ") != std::string::npos)
+      throw InputError(cal.key_path("material_name"), s.calibrated_name, "a file name without '/', '.', spaces");
+    s.install_material = cal.get_bool_or("install_material", false);
+    cal.finish();
+    LoadingSpec load;
+    if (auto loading = root.find_object("loading")) {
+      load = read_loading_spec(*loading, "compression");
+      loading->finish();
+    }
+    load.quasi_static_check = false;
+    c.compression = load;
+    c.compression.test = "compression";
+    c.tension = load;
+    c.tension.test = "tension";
+    c.tension.max_strain = std::min(load.max_strain, 0.005);
+  }
+  if (auto output = root.find_object("output")) {
+    s.frame_every_samples = output->get_int_or("frame_every_samples", 100, 0, 100000000);
+    output->finish();
+  }
+  root.finish();
+  return s;
+}
+
+Simulation obtain_specimen(const Scene& scene, SpecimenSpec& spec, SpecimenReport& report, double& wall_s) {
+  const auto start = std::chrono::steady_clock::now();
+  std::optional<Simulation> sim;
+  if (scene.specimen_file) {
+    sim.emplace(load_specimen(*scene.specimen_file, scene.material, spec, report));
+  } else {
+    spec = scene.specimen;
+    std::optional<Progress> progress;
+    std::int64_t shown = 0;
+    sim.emplace(make_specimen(scene.material, spec, report, [&](std::int64_t done, std::int64_t total) {
+      if (!progress) progress.emplace("specimen genesis", static_cast<std::size_t>(total), "steps");
+      progress->advance(static_cast<std::size_t>(done - shown));
+      shown = done;
+    }));
+    if (progress) progress->finish();
+  }
+  sim->set_time_step_safety(scene.time_step_safety);
+  sim->set_min_parallel_items(scene.min_parallel_items);
+  wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return std::move(*sim);
+}
+
+Json specimen_json(const SpecimenSpec& spec, const SpecimenReport& report, double wall_s) {
+  Json j = specimen_spec_to_json(spec);
+  j.update(specimen_report_to_json(report));
+  j["genesis_wall_time_s"] = wall_s;
+  return j;
+}
+
+LabTestResult run_test(const Simulation& specimen, const LoadingSpec& loading, const std::string& label,
+                       const std::function<void(const Simulation&, const CurveSample&)>& extra,
+                       Simulation* final_state = nullptr) {
+  // Progress against the step count that reaches max_strain (an upper bound: most runs stop earlier).
+  const double height = [&] {
+    double lo = 1e300, hi = -1e300;
+    const auto& p = specimen.particles();
+    for (std::size_t i = 0; i < p.size(); ++i) lo = std::min(lo, p.y[i] - p.radius[i]), hi = std::max(hi, p.y[i] + p.radius[i]);
+    return hi - lo;
+  }();
+  const double n = static_cast<double>(specimen.particles().size());
+  const double steps = loading.max_strain * height / (2 * loading.speed_m_per_s * specimen.time_step());
+  Progress progress(label, static_cast<std::size_t>(n * steps), "particle-steps");
+  auto result = run_lab_test(specimen, loading, [&](const Simulation& sim, const CurveSample& sample) {
+    progress.advance(static_cast<std::size_t>(n * loading.sample_every_steps));
+    if (extra) extra(sim, sample);
+  }, final_state);
+  progress.finish();
+  return result;
+}
+
+Json macro_json(const MacroProperties& m) {
+  return Json{{"youngs_modulus_GPa", units::pa_to_gpa(m.youngs_modulus_pa)},
+              {"poissons_ratio", m.poissons_ratio},
+              {"tensile_strength_MPa", units::pa_to_mpa(m.tensile_strength_pa)},
+              {"compressive_strength_MPa", units::pa_to_mpa(m.compressive_strength_pa)}};
+}
+
+int run_calibration(const Scene& scene, const Simulation& specimen, Json& summary, const fs::path& out) {
+  const auto start = std::chrono::steady_clock::now();
+  std::string log = csv_line({"evaluation", "effective_modulus_GPa", "stiffness_ratio", "tensile_strength_MPa",
+                              "cohesion_MPa", "youngs_modulus_GPa", "poissons_ratio", "macro_tensile_strength_MPa",
+                              "macro_compressive_strength_MPa", "max_error_percent", "wall_time_s"});
+  const CalibrationResult r = calibrate(specimen, scene.material, scene.calibration, [&](const CalibrationEvaluation& e) {
+    const auto& m = e.material;
+    log += csv_line({std::to_string(e.index), csv_number(units::pa_to_gpa(m.contact.effective_modulus_pa)),
+                     csv_number(m.joint.stiffness_ratio), csv_number(units::pa_to_mpa(m.joint.tensile_strength_pa)),
+                     csv_number(units::pa_to_mpa(m.joint.cohesion_pa)), csv_number(units::pa_to_gpa(e.macro.youngs_modulus_pa)),
+                     csv_number(e.macro.poissons_ratio), csv_number(units::pa_to_mpa(e.macro.tensile_strength_pa)),
+                     csv_number(units::pa_to_mpa(e.macro.compressive_strength_pa)), csv_number(100 * e.max_relative_error),
+                     csv_number(e.wall_time_s)});
+    write_file_atomically(out / "calibration_log.csv", log);
+    std::cout << fmt::format("evaluation {}: E* {:.2f} GPa, kappa {:.3f}, sigma_c {:.1f} MPa, c {:.1f} MPa -> E {:.2f} GPa, "
+                             "nu {:.3f}, sigma_t {:.1f} MPa, sigma_C {:.1f} MPa (max error {:.1f} %, {:.0f} s)\n",
+                             e.index, units::pa_to_gpa(m.contact.effective_modulus_pa), m.joint.stiffness_ratio,
+                             units::pa_to_mpa(m.joint.tensile_strength_pa), units::pa_to_mpa(m.joint.cohesion_pa),
+                             units::pa_to_gpa(e.macro.youngs_modulus_pa), e.macro.poissons_ratio,
+                             units::pa_to_mpa(e.macro.tensile_strength_pa), units::pa_to_mpa(e.macro.compressive_strength_pa),
+                             100 * e.max_relative_error, e.wall_time_s)
+              << std::flush;
+  });
+  Material calibrated = r.material;
+  calibrated.name = scene.calibrated_name;
+  Json material = material_to_json(calibrated);
+  material.erase("name");
+  material["description"] = fmt::format(
+      "Calibrated by kerf-dem calibrate ({} evaluations, {}converged: max error {:.2f} % against targets E {:.1f} GPa, "
+      "nu {:.3f}, sigma_t {:.1f} MPa, sigma_c {:.1f} MPa) on a {} specimen of {} disks.",
+      r.log.size(), r.converged ? "" : "NOT ", 100 * r.max_relative_error, units::pa_to_gpa(scene.calibration.targets.youngs_modulus_pa),
+      scene.calibration.targets.poissons_ratio, units::pa_to_mpa(scene.calibration.targets.tensile_strength_pa),
+      units::pa_to_mpa(scene.calibration.targets.compressive_strength_pa), summary["specimen"]["packing"].get<std::string>(),
+      specimen.particles().size());
+  write_file_atomically(out / (scene.calibrated_name + ".json"), material.dump(2) + "\n");
+  if (scene.install_material) {
+    const fs::path installed = fs::path(data_directory()) / "materials" / (scene.calibrated_name + ".json");
+    write_file_atomically(installed, material.dump(2) + "\n");
+    summary["installed_material"] = installed.string();
+  }
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  summary["results"] = Json{{"converged", r.converged},
+                            {"max_error_percent", 100 * r.max_relative_error},
+                            {"evaluations", r.log.size()},
+                            {"targets", macro_json(scene.calibration.targets)},
+                            {"achieved", macro_json(r.macro)},
+                            {"calibrated_material", material}};
+  summary["n_particles"] = specimen.particles().size();
+  summary["wall_time_s"] = wall;
+  write_file_atomically(out / "summary.json", summary.dump(2) + "\n");
+  std::cout << fmt::format("calibration {} after {} evaluations (max error {:.2f} %), {:.0f} s -> {}\n",
+                           r.converged ? "converged" : "did NOT converge", r.log.size(), 100 * r.max_relative_error, wall,
+                           (out / (scene.calibrated_name + ".json")).string());
+  return r.converged ? 0 : kExitModelError;
+}
+
+/// What a test needs to continue after a kill (written atomically every --checkpoint-every samples).
+struct Checkpoint {
+  Json scene, summary;
+  std::vector<std::pair<double, std::vector<std::string>>> frames;
+  int sample_index = 0, checkpoint_every = 0;
+  std::string scene_dir, specimen, run;
+
+  std::string bytes() const {
+    Json head{{"scene", scene}, {"summary", summary}, {"frames", frames}, {"sample_index", sample_index},
+              {"checkpoint_every", checkpoint_every}, {"scene_dir", scene_dir}};
+    std::string out = "KERFCKP1";
+    const std::string head_text = head.dump();
+    for (const std::string* part : {&head_text, &specimen, &run}) {
+      const auto n = static_cast<std::uint64_t>(part->size());
+      out.append(reinterpret_cast<const char*>(&n), sizeof n);
+      out += *part;
+    }
+    return out;
+  }
+  static Checkpoint parse(const std::string& bytes) {
+    if (bytes.compare(0, 8, "KERFCKP1") != 0) throw ModelError("kerf-dem", "checkpoint.bin is not a kerf-dem checkpoint");
+    std::size_t at = 8;
+    std::string parts[3];
+    for (auto& part : parts) {
+      std::uint64_t n = 0;
+      if (at + sizeof n > bytes.size()) throw ModelError("kerf-dem", "truncated checkpoint");
+      std::memcpy(&n, bytes.data() + at, sizeof n);
+      at += sizeof n;
+      if (at + n > bytes.size()) throw ModelError("kerf-dem", "truncated checkpoint");
+      part = bytes.substr(at, static_cast<std::size_t>(n));
+      at += static_cast<std::size_t>(n);
+    }
+    const Json head = Json::parse(parts[0]);
+    Checkpoint c;
+    c.scene = head.at("scene");
+    c.summary = head.at("summary");
+    c.frames = head.at("frames").get<decltype(c.frames)>();
+    c.sample_index = head.at("sample_index");
+    c.checkpoint_every = head.at("checkpoint_every");
+    c.scene_dir = head.at("scene_dir");
+    c.specimen = std::move(parts[1]);
+    c.run = std::move(parts[2]);
+    return c;
+  }
+};
+
+struct TestProgress {
+  std::vector<std::pair<double, std::vector<std::string>>> frames;
+  int sample_index = 0;
+  std::string scene_dir;
+};
+
+/// Runs (or continues) a tension or compression test to its end, then the quasi-static check and outputs.
+int continue_test(const Scene& scene, const Json& doc, const Simulation& specimen, Json summary, const fs::path& out,
+                  int checkpoint_every, LabTestRun run, TestProgress tp) {
+  // Frames: every frame_every_samples samples, plus the final state.
+  const auto write_frame = [&](const Simulation& sim) {
+    const std::string name = fmt::format("frame_{:04d}.vtp", tp.frames.size());
+    const std::string cracks = fmt::format("cracks_{:04d}.vtp", tp.frames.size());
+    write_vtp_frame(out / name, sim);
+    write_cracks_vtp(out / cracks, sim.cracks());
+    tp.frames.push_back({sim.time(), {name, cracks}});
+  };
+  if (scene.frame_every_samples > 0 && tp.sample_index == 0) write_frame(specimen);
+  const double n = static_cast<double>(specimen.particles().size());
+  const double steps = scene.loading.max_strain * run.result().height_m / (2 * scene.loading.speed_m_per_s * run.simulation().time_step());
+  Progress progress(scene.kind, static_cast<std::size_t>(n * steps), "particle-steps");
+  progress.advance(static_cast<std::size_t>(n * scene.loading.sample_every_steps * tp.sample_index));
+  while (run.advance()) {
+    ++tp.sample_index;
+    progress.advance(static_cast<std::size_t>(n * scene.loading.sample_every_steps));
+    if (scene.frame_every_samples > 0 && tp.sample_index % scene.frame_every_samples == 0) write_frame(run.simulation());
+    if (checkpoint_every > 0 && tp.sample_index % checkpoint_every == 0) {
+      Checkpoint c{doc, summary, tp.frames, tp.sample_index, checkpoint_every, tp.scene_dir, specimen.serialize(), run.serialize()};
+      write_file_atomically(out / "checkpoint.bin", c.bytes());
+    }
+  }
+  progress.finish();
+  const LabTestResult& res = run.result();
+  if (scene.frame_every_samples > 0) write_frame(run.simulation());
+  const bool tension = scene.kind == "tension";
+  Json results{{"youngs_modulus_GPa", units::pa_to_gpa(res.youngs_modulus_pa)},
+               {"poissons_ratio", res.poissons_ratio},
+               {tension ? "tensile_strength_MPa" : "compressive_strength_MPa", units::pa_to_mpa(res.peak_stress_pa)},
+               {"strain_at_peak", res.strain_at_peak},
+               {"n_tension_cracks", res.curve.back().n_tension_cracks},
+               {"n_shear_cracks", res.curve.back().n_shear_cracks},
+               {"stop_reason", res.stop_reason},
+               {"speed_m_per_s", res.speed_m_per_s},
+               {"specimen_width_mm", units::m_to_mm(res.width_m)},
+               {"gauge_length_mm", units::m_to_mm(res.height_m)}};
+  if (scene.loading.quasi_static_check) {
+    LoadingSpec half = scene.loading;
+    half.speed_m_per_s *= 0.5;
+    const LabTestResult slow = run_test(specimen, half, scene.kind + " (quasi-static check, half speed)", {});
+    results["quasi_static_check"] = Json{
+        {"speed_m_per_s", half.speed_m_per_s},
+        {"peak_stress_MPa", units::pa_to_mpa(slow.peak_stress_pa)},
+        {"peak_change_percent", 100 * (slow.peak_stress_pa - res.peak_stress_pa) / res.peak_stress_pa},
+        {"youngs_modulus_change_percent", 100 * (slow.youngs_modulus_pa - res.youngs_modulus_pa) / res.youngs_modulus_pa},
+        {"wall_time_s", slow.wall_time_s}};
+  }
+  summary["results"] = results;
+  summary["n_particles"] = res.n_particles;
+  summary["steps"] = res.steps;
+  summary["wall_time_s"] = res.wall_time_s;
+  summary["particle_steps_per_s"] = static_cast<double>(res.n_particles) * static_cast<double>(res.steps) / res.wall_time_s;
+  write_file_atomically(out / "curve.csv", curve_csv(res));
+  write_file_atomically(out / "cracks.csv", cracks_csv(run.simulation().cracks()));
+  if (scene.frame_every_samples > 0) write_pvd(out / "result.pvd", tp.frames);
+  write_specimen_png(out / "specimen.png", run.simulation(), scene.kind + ", final state");
+  write_file_atomically(out / "summary.json", summary.dump(2) + "\n");
+  std::error_code ignored;
+  fs::remove(out / "checkpoint.bin", ignored);  // finished: nothing to resume
+  std::cout << fmt::format("{}: E = {:.2f} GPa, nu = {:.3f}, {} strength = {:.1f} MPa, {} steps, {:.1f} s -> {}\n", scene.kind,
+                           units::pa_to_gpa(res.youngs_modulus_pa), res.poissons_ratio, tension ? "tensile" : "compressive",
+                           units::pa_to_mpa(res.peak_stress_pa), res.steps, res.wall_time_s, out.string());
+  return 0;
+}
+
+int run_command(const std::string& scene_path, const std::vector<std::string>& sets, const fs::path& out, int threads,
+                int checkpoint_every) {
+  if (threads > 0) omp_set_num_threads(threads);
+  Json doc = read_json_file(scene_path);
+  for (const auto& s : sets) apply_override(doc, s);
+  const Scene scene = read_scene(doc, fs::path(scene_path).parent_path());
+  if (checkpoint_every > 0 && scene.kind != "tension" && scene.kind != "compression")
+    throw InputError("--checkpoint-every", std::to_string(checkpoint_every), "checkpoints only for tension and compression scenes");
+  fs::create_directories(out);
+  SpecimenSpec spec;
+  SpecimenReport report;
+  double genesis_s = 0;
+  Simulation specimen = obtain_specimen(scene, spec, report, genesis_s);
+  Json summary{{"kind", scene.kind}, {"material", material_to_json(scene.material)},
+               {"specimen", specimen_json(spec, report, genesis_s)}, {"threads", omp_get_max_threads()},
+               {"time_step_s", specimen.time_step()}};
+  if (scene.kind == "specimen") {
+    save_specimen((out / "specimen.json").string(), specimen, spec, report);
+    write_vtp_frame(out / "specimen.vtp", specimen);
+    write_specimen_png(out / "specimen.png", specimen, "specimen");
+    summary["n_particles"] = report.n_particles;
+    summary["steps"] = report.genesis_steps;
+    summary["wall_time_s"] = genesis_s;
+    summary["particle_steps_per_s"] = report.n_particles * static_cast<double>(report.genesis_steps) / genesis_s;
+    write_file_atomically(out / "summary.json", summary.dump(2) + "\n");
+    std::cout << fmt::format("specimen: {} disks, {} joints, packing fraction {:.4f}, coordination {:.3f}, residual "
+                             "stress ({:.3g}, {:.3g}) MPa -> {}\n",
+                             report.n_particles, report.n_bonds, report.packing_fraction, report.coordination_number,
+                             units::pa_to_mpa(report.residual_stress_xx_pa), units::pa_to_mpa(report.residual_stress_yy_pa),
+                             (out / "specimen.json").string());
+    return 0;
+  }
+  if (scene.kind == "calibrate") return run_calibration(scene, specimen, summary, out);
+  LabTestRun run(specimen, scene.loading);
+  return continue_test(scene, doc, specimen, summary, out, checkpoint_every, std::move(run),
+                       {{}, 0, fs::absolute(scene_path).parent_path().string()});
+}
+
+int resume_command(const fs::path& dir, int threads) {
+  if (threads > 0) omp_set_num_threads(threads);
+  const fs::path file = dir / "checkpoint.bin";
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError("DIR", dir.string(), "a directory with a checkpoint.bin written by --checkpoint-every");
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  Checkpoint c = Checkpoint::parse(bytes);
+  const Scene scene = read_scene(c.scene, c.scene_dir);
+  const Simulation specimen = Simulation::deserialize(c.specimen);
+  return continue_test(scene, c.scene, specimen, c.summary, dir, c.checkpoint_every, LabTestRun::deserialize(c.run),
+                       {c.frames, c.sample_index, c.scene_dir});
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"kerf-dem: 2D bonded-particle DEM with Potyondy's flat joint"};
+  app.require_subcommand(1);
+  std::string scene_path;
+  std::vector<std::string> sets;
+  std::string out_dir = "out";
+  int threads = 0, checkpoint_every = 0;
+  std::string resume_dir;
+  auto* run = app.add_subcommand("run", "run a scene (kind: specimen, tension, compression, calibrate)");
+  run->add_option("scene", scene_path, "scene JSON file")->required();
+  run->add_option("--set", sets, "override a scene value: key.path=value (repeatable)");
+  run->add_option("--out", out_dir, "output directory (default: out)");
+  run->add_option("--threads", threads, "OpenMP threads (default: all)")->check(CLI::Range(1, 1024));
+  run->add_option("--checkpoint-every", checkpoint_every, "write DIR/checkpoint.bin every N samples (tests only)")
+      ->check(CLI::Range(1, 100000000));
+  auto* resume = app.add_subcommand("resume", "continue a killed test from DIR/checkpoint.bin");
+  resume->add_option("dir", resume_dir, "output directory of the killed run")->required();
+  resume->add_option("--threads", threads, "OpenMP threads (default: all)")->check(CLI::Range(1, 1024));
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : kExitInputError;
+  }
+  try {
+    if (resume->parsed()) return resume_command(resume_dir, threads);
+    return run_command(scene_path, sets, out_dir, threads, checkpoint_every);
+  } catch (const InputError& e) {
+    std::cerr << "kerf-dem: error: " << e.what() << "\n";
+    return kExitInputError;
+  } catch (const ModelError& e) {
+    std::cerr << "kerf-dem: model error: " << e.what() << "\n";
+    return kExitModelError;
+  } catch (const std::exception& e) {
+    std::cerr << "kerf-dem: error: " << e.what() << "\n";
+    return 1;
+  }
+}
