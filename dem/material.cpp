@@ -2,32 +2,25 @@
 #include "kerf/dem/material.hpp"
 
 #include <cstdlib>
-#include <filesystem>
 
 #include "kerf/dem/contact_models.hpp"
 #include "kerf/error.hpp"
+#include "kerf/material.hpp"
 #include "kerf/units.hpp"
 
 namespace kerf::dem {
-
-std::string data_directory() {
-  if (const char* env = std::getenv("KERF_DATA_DIR"); env && *env) return env;
-  return KERF_DEFAULT_DATA_DIR;
-}
 
 Material read_material(const Json& object, const std::string& path) {
   if (!object.is_object()) throw InputError(path, json_value_text(object), "an object of material micro-parameters");
   Json merged = object;
   if (auto it = object.find("base"); it != object.end()) {
-    if (!it->is_string()) throw InputError(path + ".base", json_value_text(*it), "a material name (string)");
-    const std::string file = data_directory() + "/materials/" + it->get<std::string>() + ".json";
-    if (!std::filesystem::exists(file))
-      throw InputError(path + ".base", it->get<std::string>(), "a material in " + data_directory() + "/materials");
-    Json base = read_json_file(file);
-    base.erase("description");
+    // A library material (data/materials/, shared with the analytic models): its "dem" group holds the
+    // micro-parameters; the scene's other keys override them.
+    const MaterialRecord record = load_material(*it, path + ".base");
+    Json base = record.require_group("dem", path + ".base", "the DEM (flat-joint micro-parameters)");
     for (auto& [key, value] : object.items())
       if (key != "base") base[key] = value;
-    base["name"] = it->get<std::string>();
+    base["name"] = record.name;
     merged = base;
   }
   ObjectReader r(merged, path);
@@ -59,6 +52,17 @@ Material read_material(const Json& object, const std::string& path) {
   m.contact = LinearContactParams::validated(m.contact, path);
   m.joint = FlatJointParams::validated(m.joint, path);
   return m;
+}
+
+Json library_material_json(const Material& m, const std::string& title, const std::string& description,
+                           const std::string& source) {
+  Json dem = Json::object();
+  const Json plain = material_to_json(m);  // a named object: items() must not outlive it
+  for (const auto& [key, value] : plain.items()) {
+    if (key == "name") continue;
+    dem[key] = value.is_number() ? Json{{"value", value}, {"source", source}} : value;
+  }
+  return Json{{"name", m.name}, {"title", title}, {"description", description}, {"dem", dem}};
 }
 
 Json material_to_json(const Material& m) {

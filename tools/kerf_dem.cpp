@@ -26,6 +26,7 @@
 #include "kerf/dem/png.hpp"
 #include "kerf/dem/specimen.hpp"
 #include "kerf/error.hpp"
+#include "kerf/material.hpp"
 #include "kerf/io.hpp"
 #include "kerf/json_reader.hpp"
 #include "kerf/units.hpp"
@@ -121,7 +122,7 @@ Scene read_scene(const Json& doc, const fs::path& scene_dir) {
     if (auto targets = cal.find_object("targets")) {
       if (targets->has("file")) {
         fs::path file = targets->get_string("file");
-        if (file.is_relative()) file = fs::path(data_directory()) / file;
+        if (file.is_relative()) file = kerf::data_directory() / file;
         c.targets = read_targets_csv(file.string(), targets->get_string_or("row", "soda_lime_glass"), targets->path());
       }
       c.targets.youngs_modulus_pa = units::gpa_to_pa(targets->get_number_or(
@@ -256,18 +257,18 @@ int run_calibration(const Scene& scene, const Simulation& specimen, Json& summar
   });
   Material calibrated = r.material;
   calibrated.name = scene.calibrated_name;
-  Json material = material_to_json(calibrated);
-  material.erase("name");
-  material["description"] = fmt::format(
+  const std::string description = fmt::format(
       "Calibrated by kerf-dem calibrate ({} evaluations, {}converged: max error {:.2f} % against targets E {:.1f} GPa, "
       "nu {:.3f}, sigma_t {:.1f} MPa, sigma_c {:.1f} MPa) on a {} specimen of {} disks.",
       r.log.size(), r.converged ? "" : "NOT ", 100 * r.max_relative_error, units::pa_to_gpa(scene.calibration.targets.youngs_modulus_pa),
       scene.calibration.targets.poissons_ratio, units::pa_to_mpa(scene.calibration.targets.tensile_strength_pa),
       units::pa_to_mpa(scene.calibration.targets.compressive_strength_pa), summary["specimen"]["packing"].get<std::string>(),
       specimen.particles().size());
+  const Json material = library_material_json(calibrated, "Flat-joint DEM material calibrated by kerf-dem",
+                                              description, "kerf-dem calibrate (see description)");
   write_file_atomically(out / (scene.calibrated_name + ".json"), material.dump(2) + "\n");
   if (scene.install_material) {
-    const fs::path installed = fs::path(data_directory()) / "materials" / (scene.calibrated_name + ".json");
+    const fs::path installed = kerf::data_directory() / "materials" / (scene.calibrated_name + ".json");
     write_file_atomically(installed, material.dump(2) + "\n");
     summary["installed_material"] = installed.string();
   }

@@ -25,13 +25,16 @@ struct Material {
   double local_damping = 0.7;   ///< Cundall's alpha (physics-dem.md section 1)
 };
 
-/// Reads and validates a material object (resolving "base" from the data directory).
+/// Reads and validates a material object. "base" names a library material (kerf::load_material) whose "dem"
+/// group the other keys override.
 Material read_material(const Json& object, const std::string& path);
 
 /// The JSON form read_material accepts (every key written).
 Json material_to_json(const Material& m);
 
-/// The bundled data directory: $KERF_DATA_DIR if set, else the source tree's data/.
-std::string data_directory();
+/// A material file for data/materials/ (the library shared with the analytic models): name, title,
+/// description and a "dem" group whose every number carries `source` as its provenance.
+Json library_material_json(const Material& m, const std::string& title, const std::string& description,
+                           const std::string& source);
 
 }  // namespace kerf::dem
