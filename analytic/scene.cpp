@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include <cmath>
-#include <mutex>
 
 #include "kerf/analytic/critical_depth.hpp"
 #include "kerf/analytic/registry.hpp"
@@ -22,14 +21,13 @@ std::string_view force_model_name(ForceModel model) {
 }
 
 const MaterialRecord& MaterialCache::get(const Json& spec, const std::string& path) {
-  static std::mutex mutex;  // guards every cache's map: sweeps parse scenes on several threads
   const std::string key = spec.dump();
   {
-    std::lock_guard lock(mutex);
+    std::lock_guard lock(mutex_);
     if (auto it = records_.find(key); it != records_.end()) return *it->second;
   }
   auto record = std::make_shared<const MaterialRecord>(load_material(spec, path));
-  std::lock_guard lock(mutex);
+  std::lock_guard lock(mutex_);
   return *records_.try_emplace(key, std::move(record)).first->second;
 }
 

@@ -8,6 +8,7 @@
 //   kerf::Prediction p = kerf::predict(scene);                      // predict.hpp
 #include <map>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -83,12 +84,14 @@ struct AnalyticScene {
   OxleySolverOptions oxley_options;
 };
 
-/// Caches library materials between scenes of a sweep (a file is read once).
+/// Caches library materials between scenes of a sweep (a file is read once). Thread-safe: sweeps parse
+/// scenes on several threads.
 class MaterialCache {
  public:
   const MaterialRecord& get(const Json& spec, const std::string& path);
 
  private:
+  std::mutex mutex_;
   std::map<std::string, std::shared_ptr<const MaterialRecord>> records_;
 };
 
