@@ -3,7 +3,7 @@
 //   kerf-dem run SCENE.json [--set key.path=value]... [--out DIR] [--threads N]
 //
 // Scene kinds: "specimen" (genesis, saved for reuse), "tension", "compression" (seed 000 calibration
-// tests). Exit status 2 for bad input (the message names the field, the value and what was expected),
+// tests), "calibrate", "cut" (orthogonal cutting, seed 000 Section 4). Exit status 2 for bad input (the message names the field, the value and what was expected),
 // 3 when the model fails (e.g. an unstable run).
 #include <omp.h>
 
@@ -20,6 +20,7 @@
 #include <optional>
 
 #include "kerf/dem/calibration.hpp"
+#include "kerf/dem/cutting.hpp"
 #include "kerf/dem/lab_test.hpp"
 #include "kerf/dem/material.hpp"
 #include "kerf/dem/output.hpp"
@@ -43,6 +44,7 @@ struct Scene {
   std::optional<std::string> specimen_file;
   SpecimenSpec specimen;
   LoadingSpec loading;
+  CutParams cut;
   double time_step_safety = 0.8;
   int min_parallel_items = 4096;
   int frame_every_samples = 100;
@@ -86,7 +88,7 @@ MacroProperties read_targets_csv(const std::string& path, const std::string& row
 Scene read_scene(const Json& doc, const fs::path& scene_dir) {
   ObjectReader root(doc, "");
   Scene s;
-  s.kind = root.get_choice("kind", {"specimen", "tension", "compression", "calibrate"});
+  s.kind = root.get_choice("kind", {"specimen", "tension", "compression", "calibrate", "cut"});
   root.ignore("description");
   static const Json empty = Json::object();
   const Json* material = root.find("material");
@@ -116,6 +118,7 @@ Scene read_scene(const Json& doc, const fs::path& scene_dir) {
       s.loading = read_loading_spec(none, s.kind);
     }
   }
+  if (s.kind == "cut") s.cut = read_cut_params(root);
   if (s.kind == "calibrate") {
     auto& c = s.calibration;
     ObjectReader cal = root.get_object("calibration");
@@ -408,6 +411,64 @@ int continue_test(const Scene& scene, const Json& doc, const Simulation& specime
   return 0;
 }
 
+/// Orthogonal cutting (seed 000 Section 4): forces against tool travel, cracks by mode and place.
+int run_cut(const Scene& scene, const Simulation& specimen, Json summary, const fs::path& out) {
+  CutRun run(specimen, scene.cut);
+  std::vector<std::pair<double, std::vector<std::string>>> frames;
+  const auto write_frame = [&](const Simulation& sim) {
+    const std::string name = fmt::format("frame_{:04d}.vtp", frames.size());
+    const std::string cracks = fmt::format("cracks_{:04d}.vtp", frames.size());
+    write_vtp_frame(out / name, sim);
+    write_cracks_vtp(out / cracks, sim.cracks());
+    frames.push_back({sim.time(), {name, cracks}});
+  };
+  if (scene.frame_every_samples > 0) write_frame(run.simulation());
+  const double n = static_cast<double>(run.result().n_particles);
+  const double steps = scene.cut.length_m / (scene.cut.speed_m_per_s * run.result().time_step_s);
+  Progress progress("cut", static_cast<std::size_t>(n * steps), "particle-steps");
+  int sample = 0;
+  while (run.advance()) {
+    ++sample;
+    progress.advance(static_cast<std::size_t>(n * scene.cut.sample_every_steps));
+    if (scene.frame_every_samples > 0 && sample % scene.frame_every_samples == 0) write_frame(run.simulation());
+  }
+  progress.finish();
+  if (scene.frame_every_samples > 0) write_frame(run.simulation());
+  const CutResult& res = run.result();
+  summary["cut"] = cut_params_to_json(scene.cut);
+  summary["results"] = Json{{"main_force_N", res.main_force_n},
+                            {"thrust_force_N", res.thrust_force_n},
+                            {"main_force_std_N", res.main_force_std_n},
+                            {"thrust_force_std_N", res.thrust_force_std_n},
+                            {"steady_from_travel_mm", units::m_to_mm(scene.cut.entry_fraction * scene.cut.length_m)},
+                            {"steady_samples", res.n_steady_samples},
+                            {"width_mm", units::m_to_mm(res.width_m)},
+                            {"cracks_tensile", res.cracks.tensile},
+                            {"cracks_shear", res.cracks.shear},
+                            {"cracks_chip", res.cracks.chip},
+                            {"cracks_subsurface", res.cracks.subsurface},
+                            {"subsurface_damage_depth_um", units::m_to_um(res.cracks.subsurface_damage_depth_m)},
+                            {"surface_y_mm", units::m_to_mm(res.y_top_m)},
+                            {"cut_line_y_mm", units::m_to_mm(res.y_cut_m)},
+                            {"particles_removed_by_grooves", res.n_removed_by_grooves}};
+  summary["n_particles"] = res.n_particles;
+  summary["steps"] = res.steps;
+  summary["wall_time_s"] = res.wall_time_s;
+  summary["particle_steps_per_s"] = static_cast<double>(res.n_particles) * static_cast<double>(res.steps) / res.wall_time_s;
+  write_file_atomically(out / "forces.csv", cut_forces_csv(res));
+  write_file_atomically(out / "cracks.csv", cracks_csv(run.simulation().cracks(), res.y_cut_m));
+  if (scene.frame_every_samples > 0) write_pvd(out / "result.pvd", frames);
+  write_specimen_png(out / "specimen.png", run.simulation(), "cut, final state");
+  write_file_atomically(out / "summary.json", summary.dump(2) + "\n");
+  std::cout << fmt::format("cut: main force {:.3g} N (std {:.2g}), thrust force {:.3g} N (std {:.2g}) per {:g} mm width; "
+                           "{} tensile + {} shear cracks ({} chip, {} subsurface, damage depth {:.1f} um); {} steps, {:.1f} s -> {}\n",
+                           res.main_force_n, res.main_force_std_n, res.thrust_force_n, res.thrust_force_std_n,
+                           units::m_to_mm(res.width_m), res.cracks.tensile, res.cracks.shear, res.cracks.chip,
+                           res.cracks.subsurface, units::m_to_um(res.cracks.subsurface_damage_depth_m), res.steps,
+                           res.wall_time_s, out.string());
+  return 0;
+}
+
 int run_command(const std::string& scene_path, const std::vector<std::string>& sets, const fs::path& out, int threads,
                 int checkpoint_every) {
   if (threads > 0) omp_set_num_threads(threads);
@@ -441,6 +502,7 @@ int run_command(const std::string& scene_path, const std::vector<std::string>& s
     return 0;
   }
   if (scene.kind == "calibrate") return run_calibration(scene, specimen, summary, out);
+  if (scene.kind == "cut") return run_cut(scene, specimen, summary, out);
   LabTestRun run(specimen, scene.loading);
   return continue_test(scene, doc, specimen, summary, out, checkpoint_every, std::move(run),
                        {{}, 0, fs::absolute(scene_path).parent_path().string()});
@@ -468,7 +530,7 @@ int main(int argc, char** argv) {
   std::string out_dir = "out";
   int threads = 0, checkpoint_every = 0;
   std::string resume_dir;
-  auto* run = app.add_subcommand("run", "run a scene (kind: specimen, tension, compression, calibrate)");
+  auto* run = app.add_subcommand("run", "run a scene (kind: specimen, tension, compression, calibrate, cut)");
   run->add_option("scene", scene_path, "scene JSON file")->required();
   run->add_option("--set", sets, "override a scene value: key.path=value (repeatable)");
   run->add_option("--out", out_dir, "output directory (default: out)");
