@@ -262,6 +262,7 @@ CutRun::CutRun(const Simulation& specimen, const CutParams& params)
                          format_value(units::m_to_mm(b0.y_max - b0.y_min)) + " mm)");
   sim_ = make_workpiece(specimen, params_, res_.n_removed_by_grooves);
   res_.y_top_m = b0.y_max;
+  res_.workpiece_box_m = {b0.x_min, b0.x_max, b0.y_min, b0.y_max};
   res_.y_cut_m = b0.y_max - params_.depth_of_cut_m;
   res_.width_m = sim_.options().thickness_m;
   // The tool starts half a largest radius right of the workpiece and moves in -x.

@@ -458,7 +458,11 @@ int run_cut(const Scene& scene, const Simulation& specimen, Json summary, const 
   write_file_atomically(out / "forces.csv", cut_forces_csv(res));
   write_file_atomically(out / "cracks.csv", cracks_csv(run.simulation().cracks(), res.y_cut_m));
   if (scene.frame_every_samples > 0) write_pvd(out / "result.pvd", frames);
-  write_specimen_png(out / "specimen.png", run.simulation(), "cut, final state");
+  // The workpiece with room for the tool on the right and the chip above.
+  const auto& box = res.workpiece_box_m;
+  const double margin = 2 * scene.cut.depth_of_cut_m;
+  write_specimen_png(out / "specimen.png", run.simulation(), "cut, final state",
+                     std::array<double, 4>{box[0], box[1] + margin, box[2], box[3] + margin});
   write_file_atomically(out / "summary.json", summary.dump(2) + "\n");
   std::cout << fmt::format("cut: main force {:.3g} N (std {:.2g}), thrust force {:.3g} N (std {:.2g}) per {:g} mm width; "
                            "{} tensile + {} shear cracks ({} chip, {} subsurface, damage depth {:.1f} um); {} steps, {:.1f} s -> {}\n",

@@ -92,6 +92,7 @@ struct CutResult {
   int n_steady_samples = 0;
   CutCrackCounts cracks;
   double y_top_m = 0, y_cut_m = 0, width_m = 0;  ///< width = out-of-plane thickness
+  std::array<double, 4> workpiece_box_m{};       ///< x_min, x_max, y_min, y_max before the cut
   std::size_t n_particles = 0, n_removed_by_grooves = 0;
   std::int64_t steps = 0;
   double time_step_s = 0, wall_time_s = 0;
