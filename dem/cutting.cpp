@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "kerf/error.hpp"
@@ -160,6 +161,21 @@ std::vector<std::array<double, 2>> tool_outline(const CutParams& p, double x_fro
   return v;
 }
 
+double leading_x_in_band(const std::vector<std::array<double, 2>>& v, double y0, double y1) {
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    auto a = v[k], b = v[(k + 1) % v.size()];
+    if (a[1] > b[1]) std::swap(a, b);
+    if (b[1] < y0 || a[1] > y1) continue;
+    // Clip the edge to the band; x is linear in y along it (a horizontal edge keeps both ends).
+    for (double y : {std::max(a[1], y0), std::min(b[1], y1)}) {
+      const double x = b[1] > a[1] ? a[0] + (b[0] - a[0]) * (y - a[1]) / (b[1] - a[1]) : std::min(a[0], b[0]);
+      best = std::min(best, x);
+    }
+  }
+  return best;
+}
+
 CutCrackCounts count_cut_cracks(const std::vector<CrackEvent>& cracks, double y_cut_m) {
   CutCrackCounts n;
   for (const auto& c : cracks) {
@@ -265,8 +281,12 @@ CutRun::CutRun(const Simulation& specimen, const CutParams& params)
   res_.workpiece_box_m = {b0.x_min, b0.x_max, b0.y_min, b0.y_max};
   res_.y_cut_m = b0.y_max - params_.depth_of_cut_m;
   res_.width_m = sim_.options().thickness_m;
-  // The tool starts half a largest radius right of the workpiece and moves in -x.
-  const auto outline = tool_outline(params_, b0.x_max + 0.5 * b0.r_max, res_.y_cut_m);
+  // The tool starts with the part that meets the workpiece first (its left-most point between the cut
+  // line and the top surface: the rake face at the surface for a negative rake) half a largest radius
+  // right of the workpiece, so the travel is not spent in the air. It moves in -x.
+  auto outline = tool_outline(params_, 0, res_.y_cut_m);
+  const double shift = b0.x_max + 0.5 * b0.r_max - leading_x_in_band(outline, res_.y_cut_m, res_.y_top_m);
+  for (auto& q : outline) q[0] += shift;
   first_tool_wall_ = static_cast<std::int32_t>(sim_.walls().size());
   for (std::size_t k = 0; k < outline.size(); ++k) {
     const auto& a = outline[k];

@@ -1,6 +1,6 @@
 // kerf-dem: the 2D bonded-particle DEM with flat joints (issue 4).
 //
-//   kerf-dem run SCENE.json [--set key.path=value]... [--out DIR] [--threads N]
+//   kerf-dem run SCENE.json [--set key.path=value]... [--out DIR] [--threads N] [--replicates N]
 //
 // Scene kinds: "specimen" (genesis, saved for reuse), "tension", "compression" (seed 000 calibration
 // tests), "calibrate", "cut" (orthogonal cutting, seed 000 Section 4). Exit status 2 for bad input (the message names the field, the value and what was expected),
@@ -412,7 +412,7 @@ int continue_test(const Scene& scene, const Json& doc, const Simulation& specime
 }
 
 /// Orthogonal cutting (seed 000 Section 4): forces against tool travel, cracks by mode and place.
-int run_cut(const Scene& scene, const Simulation& specimen, Json summary, const fs::path& out) {
+Json run_cut(const Scene& scene, const Simulation& specimen, Json summary, const fs::path& out) {
   CutRun run(specimen, scene.cut);
   std::vector<std::pair<double, std::vector<std::string>>> frames;
   const auto write_frame = [&](const Simulation& sim) {
@@ -470,18 +470,83 @@ int run_cut(const Scene& scene, const Simulation& specimen, Json summary, const 
                            units::m_to_mm(res.width_m), res.cracks.tensile, res.cracks.shear, res.cracks.chip,
                            res.cracks.subsurface, units::m_to_um(res.cracks.subsurface_damage_depth_m), res.steps,
                            res.wall_time_s, out.string());
+  return summary;
+}
+
+/// Seed 000 Section 4 repeats each cut on three specimens with different random packings: replicate k
+/// uses packing seed specimen.seed + k and writes DIR/replicate_k; DIR/summary.json has the per-replicate
+/// results and their mean and (sample) standard deviation.
+int run_cut_replicates(const Scene& scene, int replicates, Json summary, const fs::path& out) {
+  Json list = Json::array();
+  // Each result with the name of its spread over the replicates.
+  const std::vector<std::pair<std::string, std::string>> keys{
+      {"main_force_N", "main_force_replicate_std_N"},
+      {"thrust_force_N", "thrust_force_replicate_std_N"},
+      {"cracks_tensile", "cracks_tensile_replicate_std"},
+      {"cracks_shear", "cracks_shear_replicate_std"},
+      {"subsurface_damage_depth_um", "subsurface_damage_depth_replicate_std_um"}};
+  double wall = 0;
+  for (int k = 0; k < replicates; ++k) {
+    Scene s = scene;
+    s.specimen.seed = scene.specimen.seed + static_cast<std::uint64_t>(k);
+    SpecimenSpec spec;
+    SpecimenReport report;
+    double genesis_s = 0;
+    const Simulation specimen = obtain_specimen(s, spec, report, genesis_s);
+    const fs::path dir = out / fmt::format("replicate_{}", k + 1);
+    fs::create_directories(dir);
+    Json one = summary;
+    one["specimen"] = specimen_json(spec, report, genesis_s);
+    one = run_cut(s, specimen, one, dir);
+    Json row{{"replicate", k + 1}, {"seed", s.specimen.seed}, {"directory", dir.filename().string()}};
+    for (const auto& key : keys) row[key.first] = one["results"][key.first];
+    row["main_force_std_N"] = one["results"]["main_force_std_N"];
+    row["thrust_force_std_N"] = one["results"]["thrust_force_std_N"];
+    row["width_mm"] = one["results"]["width_mm"];
+    wall += one["wall_time_s"].get<double>();
+    list.push_back(row);
+  }
+  Json stats;
+  for (const auto& [key, spread] : keys) {
+    double sum = 0, sum2 = 0;
+    for (const auto& row : list) sum += row[key].get<double>(), sum2 += row[key].get<double>() * row[key].get<double>();
+    const double n = static_cast<double>(replicates), mean = sum / n;
+    stats[key] = mean;
+    stats[spread] = std::sqrt(std::max(0.0, (sum2 - n * mean * mean) / (n - 1)));
+  }
+  stats["width_mm"] = list[0]["width_mm"];
+  summary["cut"] = cut_params_to_json(scene.cut);
+  summary["replicates"] = list;
+  summary["results"] = stats;
+  summary["wall_time_s"] = wall;
+  write_file_atomically(out / "summary.json", summary.dump(2) + "\n");
+  std::cout << fmt::format("cut, {} replicates: main force {:.3g} N (replicate std {:.2g}), thrust force {:.3g} N "
+                           "(replicate std {:.2g}) per {:g} mm width -> {}\n",
+                           replicates, stats["main_force_N"].get<double>(), stats["main_force_replicate_std_N"].get<double>(),
+                           stats["thrust_force_N"].get<double>(), stats["thrust_force_replicate_std_N"].get<double>(),
+                           stats["width_mm"].get<double>(), out.string());
   return 0;
 }
 
 int run_command(const std::string& scene_path, const std::vector<std::string>& sets, const fs::path& out, int threads,
-                int checkpoint_every) {
+                int checkpoint_every, int replicates) {
   if (threads > 0) omp_set_num_threads(threads);
   Json doc = read_json_file(scene_path);
   for (const auto& s : sets) apply_override(doc, s);
   const Scene scene = read_scene(doc, fs::path(scene_path).parent_path());
   if (checkpoint_every > 0 && scene.kind != "tension" && scene.kind != "compression")
     throw InputError("--checkpoint-every", std::to_string(checkpoint_every), "checkpoints only for tension and compression scenes");
+  if (replicates > 1 && scene.kind != "cut")
+    throw InputError("--replicates", std::to_string(replicates), "replicates only for cut scenes");
+  if (replicates > 1 && scene.specimen_file)
+    throw InputError("--replicates", std::to_string(replicates),
+                     "a scene that generates its specimen (replicates differ in specimen.seed), not specimen.file");
   fs::create_directories(out);
+  if (replicates > 1) {
+    const Json summary{{"kind", scene.kind}, {"material", material_to_json(scene.material)},
+                       {"threads", omp_get_max_threads()}};
+    return run_cut_replicates(scene, replicates, summary, out);
+  }
   SpecimenSpec spec;
   SpecimenReport report;
   double genesis_s = 0;
@@ -506,7 +571,10 @@ int run_command(const std::string& scene_path, const std::vector<std::string>& s
     return 0;
   }
   if (scene.kind == "calibrate") return run_calibration(scene, specimen, summary, out);
-  if (scene.kind == "cut") return run_cut(scene, specimen, summary, out);
+  if (scene.kind == "cut") {
+    run_cut(scene, specimen, summary, out);
+    return 0;
+  }
   LabTestRun run(specimen, scene.loading);
   return continue_test(scene, doc, specimen, summary, out, checkpoint_every, std::move(run),
                        {{}, 0, fs::absolute(scene_path).parent_path().string()});
@@ -532,7 +600,7 @@ int main(int argc, char** argv) {
   std::string scene_path;
   std::vector<std::string> sets;
   std::string out_dir = "out";
-  int threads = 0, checkpoint_every = 0;
+  int threads = 0, checkpoint_every = 0, replicates = 1;
   std::string resume_dir;
   auto* run = app.add_subcommand("run", "run a scene (kind: specimen, tension, compression, calibrate, cut)");
   run->add_option("scene", scene_path, "scene JSON file")->required();
@@ -541,6 +609,8 @@ int main(int argc, char** argv) {
   run->add_option("--threads", threads, "OpenMP threads (default: all)")->check(CLI::Range(1, 1024));
   run->add_option("--checkpoint-every", checkpoint_every, "write DIR/checkpoint.bin every N samples (tests only)")
       ->check(CLI::Range(1, 100000000));
+  run->add_option("--replicates", replicates, "cut scenes: repeat on N packings (seeds specimen.seed + 0..N-1)")
+      ->check(CLI::Range(1, 1000));
   auto* resume = app.add_subcommand("resume", "continue a killed test from DIR/checkpoint.bin");
   resume->add_option("dir", resume_dir, "output directory of the killed run")->required();
   resume->add_option("--threads", threads, "OpenMP threads (default: all)")->check(CLI::Range(1, 1024));
@@ -552,7 +622,7 @@ int main(int argc, char** argv) {
   }
   try {
     if (resume->parsed()) return resume_command(resume_dir, threads);
-    return run_command(scene_path, sets, out_dir, threads, checkpoint_every);
+    return run_command(scene_path, sets, out_dir, threads, checkpoint_every, replicates);
   } catch (const InputError& e) {
     std::cerr << "kerf-dem: error: " << e.what() << "\n";
     return kExitInputError;

@@ -58,4 +58,13 @@ cmp -s "$work/c1/forces.csv" "$work/c2/forces.csv" || fail "a rerun gave differe
 in_range "$(result "$work/g1" particles_removed_by_grooves)" 0 1e9 || fail "grooves removed no disks"
 awk -v a="$(value "$work/g1" n_particles)" -v b="$(value "$work/c1" n_particles)" 'BEGIN { exit !(a < b) }' ||
   fail "grooved workpiece has no fewer disks"
+# Replicates: one directory per packing seed, mean and spread in the top summary.
+expect_input_error "--replicates = 2" run "$src/data/scenes/dem_tension.json" --replicates 2 --out "$work/x"
+"$bin" run "$scene" "${small[@]}" --set cut.length_mm=0.03 --replicates 2 --out "$work/r" --threads 1 >/dev/null 2>"$work/err" ||
+  fail "replicates: $(cat "$work/err")"
+for f in summary.json replicate_1/forces.csv replicate_2/forces.csv replicate_2/summary.json; do
+  [ -s "$work/r/$f" ] || fail "replicates: missing $f"
+done
+grep -q '"seed": 2' "$work/r/replicate_2/summary.json" || fail "replicate 2 does not use seed 2"
+in_range "$(result "$work/r" main_force_replicate_std_N)" 0 1e4 || fail "main_force_replicate_std_N"
 echo "dem_cut_cli: ok"

@@ -76,11 +76,15 @@ TEST_CASE("cutting: tool faces have the rake and clearance angles, tip at the cu
   CHECK_THAT(angle_deg(v[1], v[0]), WithinAbs(90 + 15, 1e-9));
   // Clearance face from the tip backwards (+x): rises 15 deg above the machined surface.
   CHECK_THAT(angle_deg(v[1], v[2]), WithinAbs(15, 1e-9));
+  // First contact with a workpiece whose top is one depth of cut above the tip: the rake face there,
+  // 0.1 mm tan 15 deg ahead of the tip.
+  CHECK_THAT(leading_x_in_band(v, 0.5e-3, 0.6e-3), WithinAbs(v[1][0] - 0.1e-3 * std::tan(15 * std::numbers::pi / 180), 1e-12));
   p.rake_deg = 10;
   p.clearance_deg = 7;
   const auto w = tool_outline(p, 0, 0);
   CHECK_THAT(angle_deg(w[1], w[0]), WithinAbs(90 - 10, 1e-9));
   CHECK_THAT(angle_deg(w[1], w[2]), WithinAbs(7, 1e-9));
+  CHECK_THAT(leading_x_in_band(w, 0, 0.1e-3), WithinAbs(w[1][0], 1e-12));  // positive rake: the tip leads
 }
 
 TEST_CASE("cutting: a rounded edge is tangent to both faces and touches the cut line", "[cutting]") {
@@ -177,7 +181,7 @@ TEST_CASE("cutting: a small cut regression (forces, cracks, determinism, grooves
   CutParams p;
   p.depth_of_cut_m = 0.05e-3;
   p.speed_m_per_s = 2;
-  p.length_m = 0.1e-3;
+  p.length_m = 0.08e-3;
   const auto run = [&](const CutParams& params) {
     CutRun r(specimen, params);
     while (r.advance()) {}

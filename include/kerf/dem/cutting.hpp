@@ -70,6 +70,10 @@ bool inside_any_groove(const CutParams& params, const std::vector<double>& centr
 /// the front-most point at `x_front_m`. Segment k joins vertex k to vertex k + 1 (mod n).
 std::vector<std::array<double, 2>> tool_outline(const CutParams& params, double x_front_m, double y_tip_m);
 
+/// The left-most x of the outline's edges within the band y0 <= y <= y1 (the part of the tool that meets
+/// the workpiece first when the band spans the cut line to the top surface); +inf if none.
+double leading_x_in_band(const std::vector<std::array<double, 2>>& outline, double y0_m, double y1_m);
+
 // --- running ---
 
 struct CutSample {
