@@ -10,6 +10,7 @@
 #include "kerf/error.hpp"
 #include "kerf/io.hpp"
 #include "kerf/units.hpp"
+#include "serial.hpp"
 
 namespace kerf::dem {
 
@@ -328,6 +329,53 @@ void CutRun::finish() {
   finished_ = true;
   steady_statistics(res_, params_.entry_fraction * params_.length_m);
   res_.cracks = count_cut_cracks(sim_.cracks(), res_.y_cut_m);
+}
+
+std::string CutRun::serialize() const {
+  using namespace serial;
+  std::string out = "KERFCUT1";
+  const auto& p = params_;
+  for (double v : {p.depth_of_cut_m, p.speed_m_per_s, p.length_m, p.rake_deg, p.clearance_deg, p.edge_radius_m,
+                   p.groove_depth_m, p.groove_pitch_m, p.groove_width_m, p.groove_bottom_width_m, p.entry_fraction})
+    put_raw(out, v);
+  put_raw(out, p.edge_segments), put_raw(out, p.sample_every_steps);
+  put_str(out, p.groove_shape);
+  put_vec(out, res_.samples);
+  for (double v : {res_.y_top_m, res_.y_cut_m, res_.width_m, res_.time_step_s, res_.wall_time_s, t0_}) put_raw(out, v);
+  put_raw(out, res_.workpiece_box_m);
+  put_raw(out, static_cast<std::uint64_t>(res_.n_particles)), put_raw(out, static_cast<std::uint64_t>(res_.n_removed_by_grooves));
+  put_raw(out, res_.steps), put_raw(out, first_tool_wall_), put_raw(out, n_tool_walls_), put_raw(out, finished_);
+  put_str(out, sim_.serialize());
+  return out;
+}
+
+CutRun CutRun::deserialize(std::string_view bytes) {
+  using namespace serial;
+  if (bytes.substr(0, 8) != "KERFCUT1") throw ModelError("dem", "not a kerf-dem cut checkpoint");
+  In in{bytes, 8};
+  CutRun run;
+  auto& p = run.params_;
+  for (double* v : {&p.depth_of_cut_m, &p.speed_m_per_s, &p.length_m, &p.rake_deg, &p.clearance_deg, &p.edge_radius_m,
+                    &p.groove_depth_m, &p.groove_pitch_m, &p.groove_width_m, &p.groove_bottom_width_m, &p.entry_fraction})
+    in.raw(*v);
+  in.raw(p.edge_segments), in.raw(p.sample_every_steps);
+  in.str(p.groove_shape);
+  in.vec(run.res_.samples);
+  for (double* v : {&run.res_.y_top_m, &run.res_.y_cut_m, &run.res_.width_m, &run.res_.time_step_s, &run.res_.wall_time_s, &run.t0_})
+    in.raw(*v);
+  in.raw(run.res_.workpiece_box_m);
+  std::uint64_t n = 0, removed = 0;
+  in.raw(n), in.raw(removed);
+  run.res_.n_particles = static_cast<std::size_t>(n);
+  run.res_.n_removed_by_grooves = static_cast<std::size_t>(removed);
+  in.raw(run.res_.steps), in.raw(run.first_tool_wall_), in.raw(run.n_tool_walls_), in.raw(run.finished_);
+  std::string state;
+  in.str(state);
+  if (in.at != bytes.size()) throw ModelError("dem", "cut checkpoint has trailing bytes");
+  validate_cut_params(p);
+  run.sim_ = Simulation::deserialize(state);
+  if (run.finished_) run.finish();
+  return run;
 }
 
 std::string cut_forces_csv(const CutResult& res) {

@@ -412,29 +412,35 @@ int continue_test(const Scene& scene, const Json& doc, const Simulation& specime
 }
 
 /// Orthogonal cutting (seed 000 Section 4): forces against tool travel, cracks by mode and place.
-Json run_cut(const Scene& scene, const Simulation& specimen, Json summary, const fs::path& out) {
-  CutRun run(specimen, scene.cut);
-  std::vector<std::pair<double, std::vector<std::string>>> frames;
+/// Runs (or continues, from a checkpoint) a cut to the end of its travel and writes the outputs.
+Json continue_cut(const Scene& scene, const Json& doc, Json summary, const fs::path& out, int checkpoint_every, CutRun run,
+                  TestProgress tp) {
   const auto write_frame = [&](const Simulation& sim) {
-    const std::string name = fmt::format("frame_{:04d}.vtp", frames.size());
-    const std::string cracks = fmt::format("cracks_{:04d}.vtp", frames.size());
+    const std::string name = fmt::format("frame_{:04d}.vtp", tp.frames.size());
+    const std::string cracks = fmt::format("cracks_{:04d}.vtp", tp.frames.size());
     write_vtp_frame(out / name, sim);
     write_cracks_vtp(out / cracks, sim.cracks());
-    frames.push_back({sim.time(), {name, cracks}});
+    tp.frames.push_back({sim.time(), {name, cracks}});
   };
-  if (scene.frame_every_samples > 0) write_frame(run.simulation());
+  if (scene.frame_every_samples > 0 && tp.sample_index == 0) write_frame(run.simulation());
   const double n = static_cast<double>(run.result().n_particles);
   const double steps = scene.cut.length_m / (scene.cut.speed_m_per_s * run.result().time_step_s);
   Progress progress("cut", static_cast<std::size_t>(n * steps), "particle-steps");
-  int sample = 0;
+  progress.advance(static_cast<std::size_t>(n * scene.cut.sample_every_steps * tp.sample_index));
   while (run.advance()) {
-    ++sample;
+    ++tp.sample_index;
     progress.advance(static_cast<std::size_t>(n * scene.cut.sample_every_steps));
-    if (scene.frame_every_samples > 0 && sample % scene.frame_every_samples == 0) write_frame(run.simulation());
+    if (scene.frame_every_samples > 0 && tp.sample_index % scene.frame_every_samples == 0) write_frame(run.simulation());
+    if (checkpoint_every > 0 && tp.sample_index % checkpoint_every == 0) {
+      // The cut holds its own workpiece: the checkpoint's specimen part stays empty.
+      Checkpoint c{doc, summary, tp.frames, tp.sample_index, checkpoint_every, tp.scene_dir, std::string(), run.serialize()};
+      write_file_atomically(out / "checkpoint.bin", c.bytes());
+    }
   }
   progress.finish();
   if (scene.frame_every_samples > 0) write_frame(run.simulation());
   const CutResult& res = run.result();
+  const auto& frames = tp.frames;
   summary["cut"] = cut_params_to_json(scene.cut);
   summary["results"] = Json{{"main_force_N", res.main_force_n},
                             {"thrust_force_N", res.thrust_force_n},
@@ -464,6 +470,8 @@ Json run_cut(const Scene& scene, const Simulation& specimen, Json summary, const
   write_specimen_png(out / "specimen.png", run.simulation(), "cut, final state",
                      std::array<double, 4>{box[0], box[1] + margin, box[2], box[3] + margin});
   write_file_atomically(out / "summary.json", summary.dump(2) + "\n");
+  std::error_code ignored;
+  fs::remove(out / "checkpoint.bin", ignored);  // finished: nothing to resume
   std::cout << fmt::format("cut: main force {:.3g} N (std {:.2g}), thrust force {:.3g} N (std {:.2g}) per {:g} mm width; "
                            "{} tensile + {} shear cracks ({} chip, {} subsurface, damage depth {:.1f} um); {} steps, {:.1f} s -> {}\n",
                            res.main_force_n, res.main_force_std_n, res.thrust_force_n, res.thrust_force_std_n,
@@ -497,7 +505,7 @@ int run_cut_replicates(const Scene& scene, int replicates, Json summary, const f
     fs::create_directories(dir);
     Json one = summary;
     one["specimen"] = specimen_json(spec, report, genesis_s);
-    one = run_cut(s, specimen, one, dir);
+    one = continue_cut(s, Json(), one, dir, 0, CutRun(specimen, s.cut), {});
     Json row{{"replicate", k + 1}, {"seed", s.specimen.seed}, {"directory", dir.filename().string()}};
     for (const auto& key : keys) row[key.first] = one["results"][key.first];
     row["main_force_std_N"] = one["results"]["main_force_std_N"];
@@ -534,8 +542,11 @@ int run_command(const std::string& scene_path, const std::vector<std::string>& s
   Json doc = read_json_file(scene_path);
   for (const auto& s : sets) apply_override(doc, s);
   const Scene scene = read_scene(doc, fs::path(scene_path).parent_path());
-  if (checkpoint_every > 0 && scene.kind != "tension" && scene.kind != "compression")
-    throw InputError("--checkpoint-every", std::to_string(checkpoint_every), "checkpoints only for tension and compression scenes");
+  if (checkpoint_every > 0 && scene.kind != "tension" && scene.kind != "compression" && scene.kind != "cut")
+    throw InputError("--checkpoint-every", std::to_string(checkpoint_every),
+                     "checkpoints only for tension, compression and cut scenes");
+  if (checkpoint_every > 0 && replicates > 1)
+    throw InputError("--checkpoint-every", std::to_string(checkpoint_every), "no checkpoints with --replicates");
   if (replicates > 1 && scene.kind != "cut")
     throw InputError("--replicates", std::to_string(replicates), "replicates only for cut scenes");
   if (replicates > 1 && scene.specimen_file)
@@ -572,7 +583,8 @@ int run_command(const std::string& scene_path, const std::vector<std::string>& s
   }
   if (scene.kind == "calibrate") return run_calibration(scene, specimen, summary, out);
   if (scene.kind == "cut") {
-    run_cut(scene, specimen, summary, out);
+    continue_cut(scene, doc, summary, out, checkpoint_every, CutRun(specimen, scene.cut),
+                 {{}, 0, fs::absolute(scene_path).parent_path().string()});
     return 0;
   }
   LabTestRun run(specimen, scene.loading);
@@ -588,6 +600,11 @@ int resume_command(const fs::path& dir, int threads) {
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   Checkpoint c = Checkpoint::parse(bytes);
   const Scene scene = read_scene(c.scene, c.scene_dir);
+  if (scene.kind == "cut") {
+    continue_cut(scene, c.scene, c.summary, dir, c.checkpoint_every, CutRun::deserialize(c.run),
+                 {c.frames, c.sample_index, c.scene_dir});
+    return 0;
+  }
   const Simulation specimen = Simulation::deserialize(c.specimen);
   return continue_test(scene, c.scene, specimen, c.summary, dir, c.checkpoint_every, LabTestRun::deserialize(c.run),
                        {c.frames, c.sample_index, c.scene_dir});
@@ -607,11 +624,11 @@ int main(int argc, char** argv) {
   run->add_option("--set", sets, "override a scene value: key.path=value (repeatable)");
   run->add_option("--out", out_dir, "output directory (default: out)");
   run->add_option("--threads", threads, "OpenMP threads (default: all)")->check(CLI::Range(1, 1024));
-  run->add_option("--checkpoint-every", checkpoint_every, "write DIR/checkpoint.bin every N samples (tests only)")
+  run->add_option("--checkpoint-every", checkpoint_every, "write DIR/checkpoint.bin every N samples (tension, compression, cut)")
       ->check(CLI::Range(1, 100000000));
   run->add_option("--replicates", replicates, "cut scenes: repeat on N packings (seeds specimen.seed + 0..N-1)")
       ->check(CLI::Range(1, 1000));
-  auto* resume = app.add_subcommand("resume", "continue a killed test from DIR/checkpoint.bin");
+  auto* resume = app.add_subcommand("resume", "continue a killed test or cut from DIR/checkpoint.bin");
   resume->add_option("dir", resume_dir, "output directory of the killed run")->required();
   resume->add_option("--threads", threads, "OpenMP threads (default: all)")->check(CLI::Range(1, 1024));
   try {

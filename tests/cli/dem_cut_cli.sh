@@ -58,6 +58,22 @@ cmp -s "$work/c1/forces.csv" "$work/c2/forces.csv" || fail "a rerun gave differe
 in_range "$(result "$work/g1" particles_removed_by_grooves)" 0 1e9 || fail "grooves removed no disks"
 awk -v a="$(value "$work/g1" n_particles)" -v b="$(value "$work/c1" n_particles)" 'BEGIN { exit !(a < b) }' ||
   fail "grooved workpiece has no fewer disks"
+# Killed and resumed equals uninterrupted (forces, crack table, frame list).
+"$bin" run "$scene" "${small[@]}" --set output.frame_every_samples=200 --out "$work/k_full" --threads 1 >/dev/null 2>&1 ||
+  fail "uninterrupted cut"
+"$bin" run "$scene" "${small[@]}" --set output.frame_every_samples=200 --out "$work/k_kill" --threads 1 --checkpoint-every 40 \
+    >/dev/null 2>&1 &
+pid=$!
+for _ in $(seq 1500); do [ -e "$work/k_kill/checkpoint.bin" ] && break; sleep 0.01; done
+kill -9 $pid 2>/dev/null || fail "the cut ended before it could be killed"
+wait $pid 2>/dev/null
+[ ! -e "$work/k_kill/summary.json" ] || fail "the killed cut had already finished"
+"$bin" resume "$work/k_kill" --threads 1 >/dev/null 2>"$work/err" || fail "resume cut: $(cat "$work/err")"
+for f in forces.csv cracks.csv result.pvd; do
+  cmp -s "$work/k_full/$f" "$work/k_kill/$f" || fail "resumed $f differs from the uninterrupted cut"
+done
+[ ! -e "$work/k_kill/checkpoint.bin" ] || fail "checkpoint left after the finished cut"
+
 # Replicates: one directory per packing seed, mean and spread in the top summary.
 expect_input_error "--replicates = 2" run "$src/data/scenes/dem_tension.json" --replicates 2 --out "$work/x"
 "$bin" run "$scene" "${small[@]}" --set cut.length_mm=0.03 --replicates 2 --out "$work/r" --threads 1 >/dev/null 2>"$work/err" ||

@@ -124,8 +124,12 @@ class CutRun {
   const CutParams& params() const { return params_; }
   /// The result so far (steady statistics and crack counts filled in once finished).
   const CutResult& result() const { return res_; }
+  /// The complete state (checkpoints): restoring it and running on equals the uninterrupted run.
+  std::string serialize() const;
+  static CutRun deserialize(std::string_view bytes);
 
  private:
+  CutRun() : sim_(Material{}, SimulationOptions{}) {}
   Simulation sim_;
   CutParams params_;
   CutResult res_;
