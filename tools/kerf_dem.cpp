@@ -411,8 +411,8 @@ int continue_test(const Scene& scene, const Json& doc, const Simulation& specime
   return 0;
 }
 
-/// Orthogonal cutting (seed 000 Section 4): forces against tool travel, cracks by mode and place.
-/// Runs (or continues, from a checkpoint) a cut to the end of its travel and writes the outputs.
+/// Orthogonal cutting (seed 000 Section 4), forces against tool travel and cracks by mode and place:
+/// runs (or continues, from a checkpoint) a cut to the end of its travel and writes the outputs.
 Json continue_cut(const Scene& scene, const Json& doc, Json summary, const fs::path& out, int checkpoint_every, CutRun run,
                   TestProgress tp) {
   const auto write_frame = [&](const Simulation& sim) {
