@@ -227,4 +227,17 @@ TEST_CASE("cutting: a small cut regression (forces, cracks, determinism, grooves
   CHECK(removed > 0);
   CHECK(work.particles().size() + removed == specimen.particles().size());
   CHECK(work.bonds().size() < specimen.bonds().size());
+  // An inverted trapezoid with the same top width removes fewer disks than the rectangle.
+  g.groove_width_m = 0.08e-3;
+  std::size_t removed_rectangle = 0, removed_trapezoid = 0;
+  make_workpiece(specimen, g, removed_rectangle);
+  g.groove_shape = "trapezoidal";
+  g.groove_bottom_width_m = 0.01e-3;
+  make_workpiece(specimen, g, removed_trapezoid);
+  CHECK(removed_trapezoid > 0);
+  CHECK(removed_trapezoid < removed_rectangle);
+  // Held disks: the left and bottom boundary (group 1), none at the free top right.
+  int held = 0;
+  for (std::size_t k = 0; k < work.particles().size(); ++k) held += work.particles().group[k] == 1;
+  CHECK(held > 0);
 }
