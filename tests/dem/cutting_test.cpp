@@ -238,6 +238,12 @@ TEST_CASE("cutting: a small cut regression (forces, cracks, determinism, grooves
   CHECK(removed_trapezoid < removed_rectangle);
   // Held disks: the left and bottom boundary (group 1), none at the free top right.
   int held = 0;
-  for (std::size_t k = 0; k < work.particles().size(); ++k) held += work.particles().group[k] == 1;
+  std::size_t top_right = 0;
+  const auto& q = work.particles();
+  for (std::size_t k = 0; k < q.size(); ++k) {
+    held += q.group[k] == 1;
+    if (q.x[k] + q.y[k] > q.x[top_right] + q.y[top_right]) top_right = k;
+  }
   CHECK(held > 0);
+  CHECK(q.group[top_right] == 0);
 }
