@@ -4,8 +4,8 @@
 // The workpiece is a specimen whose left and bottom boundary disks are held (a prescribed-zero-velocity
 // group, as the tension grips use) and whose top is free. The tool is rigid: wall segments (rake face,
 // optional edge rounding, clearance face, a closing back face) whose lowest point lies `depth_of_cut`
-// below the top surface. It starts just right of the workpiece and moves in -x at the cutting speed over
-// `length`, so the chip flows up its rake face and the material is pushed towards the held left side.
+// below the top surface. It starts with its leading edge just right of the workpiece and moves in -x at
+// the cutting speed over `length`, so the chip flows up its rake face and the material is pushed towards the held left side.
 // Micro-grooves across the cut path are made as in the paper, by deleting the disks whose centres lie
 // inside each groove's outline (rectangular, or the inverted trapezoid of the real laser grooves).
 //
@@ -65,9 +65,10 @@ std::vector<double> groove_centres(const CutParams& params, double x_left_m, dou
 bool inside_any_groove(const CutParams& params, const std::vector<double>& centres, double y_top_m, double x_m,
                        double y_m);
 
-/// The tool outline as a closed polygon (counter-clockwise is not guaranteed): rake-face top, the edge
-/// (tip, or arc points), clearance-face end. Lowest point at (`x_front_m` + its offset, `y_tip_m`) and
-/// the front-most point at `x_front_m`. Segment k joins vertex k to vertex k + 1 (mod n).
+/// The tool outline, a closed polygon: rake-face top, the edge (the sharp tip, or the arc points of a
+/// rounded edge), the clearance-face end; segment k joins vertex k to vertex k + 1 (mod n), so the last
+/// one is the back face. Placed with its lowest point at height `y_tip_m` and its front-most (smallest x)
+/// point at `x_front_m`.
 std::vector<std::array<double, 2>> tool_outline(const CutParams& params, double x_front_m, double y_tip_m);
 
 /// The left-most x of the outline's edges within the band y0 <= y <= y1 (the part of the tool that meets
