@@ -7,8 +7,11 @@
 #include <cstring>
 
 #include "kerf/error.hpp"
+#include "serial.hpp"
 
 namespace kerf::dem {
+
+using namespace serial;
 
 LoadingSpec read_loading_spec(ObjectReader& r, const std::string& test) {
   LoadingSpec s;
@@ -122,42 +125,6 @@ bool LabTestRun::advance() {
   return !finished_;
 }
 
-namespace {
-template <class T>
-void put_raw(std::string& out, const T& v) {
-  out.append(reinterpret_cast<const char*>(&v), sizeof(T));
-}
-template <class T>
-void put_vec(std::string& out, const std::vector<T>& v) {
-  put_raw(out, static_cast<std::uint64_t>(v.size()));
-  out.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
-}
-void put_str(std::string& out, const std::string& s) { put_vec(out, std::vector<char>(s.begin(), s.end())); }
-struct In {
-  std::string_view b;
-  std::size_t at = 0;
-  void take(void* d, std::size_t n) {
-    if (at + n > b.size()) throw ModelError("dem", "truncated test checkpoint");
-    std::memcpy(d, b.data() + at, n);
-    at += n;
-  }
-  template <class T>
-  void raw(T& v) { take(&v, sizeof(T)); }
-  template <class T>
-  void vec(std::vector<T>& v) {
-    std::uint64_t n = 0;
-    raw(n);
-    if (n > b.size()) throw ModelError("dem", "corrupt test checkpoint");
-    v.resize(static_cast<std::size_t>(n));
-    take(v.data(), v.size() * sizeof(T));
-  }
-  void str(std::string& s) {
-    std::vector<char> c;
-    vec(c);
-    s.assign(c.begin(), c.end());
-  }
-};
-}  // namespace
 
 std::string LabTestRun::serialize() const {
   std::string out = "KERFLAB1";

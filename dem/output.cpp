@@ -1,6 +1,8 @@
 // VTK XML PolyData (ASCII) and CSV writers for DEM results.
 #include "kerf/dem/output.hpp"
 
+#include "kerf/dem/cutting.hpp"
+
 #include <fmt/format.h>
 
 #include "kerf/io.hpp"
@@ -87,13 +89,26 @@ std::string curve_csv(const LabTestResult& r) {
   return out;
 }
 
-std::string cracks_csv(const std::vector<CrackEvent>& cracks) {
-  std::string out = csv_line({"time_s", "x_mm", "y_mm", "orientation_deg", "length_um", "mode", "bond", "element"});
-  for (const auto& c : cracks)
-    out += csv_line({csv_number(c.time_s), csv_number(units::m_to_mm(c.x_m)), csv_number(units::m_to_mm(c.y_m)),
-                     csv_number(units::rad_to_deg(c.orientation_rad)), csv_number(units::m_to_um(c.length_m)),
-                     c.mode == BreakMode::tension ? "tension" : "shear", std::to_string(c.bond), std::to_string(c.element)});
+namespace {
+std::string cracks_table(const std::vector<CrackEvent>& cracks, const double* y_cut_m) {
+  std::vector<std::string> head{"time_s", "x_mm", "y_mm", "orientation_deg", "length_um", "mode", "bond", "element"};
+  if (y_cut_m) head.push_back("place");
+  std::string out = csv_line(head);
+  for (const auto& c : cracks) {
+    std::vector<std::string> row{csv_number(c.time_s), csv_number(units::m_to_mm(c.x_m)), csv_number(units::m_to_mm(c.y_m)),
+                                 csv_number(units::rad_to_deg(c.orientation_rad)), csv_number(units::m_to_um(c.length_m)),
+                                 c.mode == BreakMode::tension ? "tension" : "shear", std::to_string(c.bond),
+                                 std::to_string(c.element)};
+    // Orthogonal cutting (seed 000 Section 4): chip above the cut line, subsurface on or below it.
+    if (y_cut_m) row.push_back(crack_place(c.y_m, *y_cut_m));
+    out += csv_line(row);
+  }
   return out;
 }
+}  // namespace
+
+std::string cracks_csv(const std::vector<CrackEvent>& cracks) { return cracks_table(cracks, nullptr); }
+
+std::string cracks_csv(const std::vector<CrackEvent>& cracks, double y_cut_m) { return cracks_table(cracks, &y_cut_m); }
 
 }  // namespace kerf::dem

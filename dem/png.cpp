@@ -11,7 +11,8 @@
 
 namespace kerf::dem {
 
-void write_specimen_png(const std::filesystem::path& path, const Simulation& sim, const std::string& title) {
+void write_specimen_png(const std::filesystem::path& path, const Simulation& sim, const std::string& title,
+                        const std::optional<std::array<double, 4>>& view_m) {
   const auto& p = sim.particles();
   if (p.size() == 0) return;
   double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
@@ -19,6 +20,7 @@ void write_specimen_png(const std::filesystem::path& path, const Simulation& sim
     x0 = std::min(x0, p.x[i] - p.radius[i]), x1 = std::max(x1, p.x[i] + p.radius[i]);
     y0 = std::min(y0, p.y[i] - p.radius[i]), y1 = std::max(y1, p.y[i] + p.radius[i]);
   }
+  if (view_m) x0 = (*view_m)[0], x1 = (*view_m)[1], y0 = (*view_m)[2], y1 = (*view_m)[3];
   // Millimetres on the axes; about 1000 pixels along the longer side.
   const double mx = units::m_to_mm(1.0);
   const double aspect = (y1 - y0) / (x1 - x0);
@@ -48,6 +50,10 @@ void write_specimen_png(const std::filesystem::path& path, const Simulation& sim
     const double dx = 0.5 * c.length_m * std::cos(c.orientation_rad), dy = 0.5 * c.length_m * std::sin(c.orientation_rad);
     pljoin((c.x_m - dx) * mx, (c.y_m - dy) * mx, (c.x_m + dx) * mx, (c.y_m + dy) * mx);
   }
+  // Walls (platens, the cutting tool) in black, clipped to the picture.
+  plcol0(1);
+  for (const auto& w : sim.walls())
+    if (w.enabled) pljoin(w.x0 * mx, w.y0 * mx, w.x1 * mx, w.y1 * mx);
   plend();
   std::error_code ec;
   if (!std::filesystem::exists(tmp, ec)) throw std::runtime_error("PLplot wrote no picture to " + tmp.string());

@@ -1,9 +1,9 @@
 // kerf-dem: the 2D bonded-particle DEM with flat joints (issue 4).
 //
-//   kerf-dem run SCENE.json [--set key.path=value]... [--out DIR] [--threads N]
+//   kerf-dem run SCENE.json [--set key.path=value]... [--out DIR] [--threads N] [--replicates N]
 //
 // Scene kinds: "specimen" (genesis, saved for reuse), "tension", "compression" (seed 000 calibration
-// tests). Exit status 2 for bad input (the message names the field, the value and what was expected),
+// tests), "calibrate", "cut" (orthogonal cutting, seed 000 Section 4). Exit status 2 for bad input (the message names the field, the value and what was expected),
 // 3 when the model fails (e.g. an unstable run).
 #include <omp.h>
 
@@ -20,6 +20,7 @@
 #include <optional>
 
 #include "kerf/dem/calibration.hpp"
+#include "kerf/dem/cutting.hpp"
 #include "kerf/dem/lab_test.hpp"
 #include "kerf/dem/material.hpp"
 #include "kerf/dem/output.hpp"
@@ -43,6 +44,7 @@ struct Scene {
   std::optional<std::string> specimen_file;
   SpecimenSpec specimen;
   LoadingSpec loading;
+  CutParams cut;
   double time_step_safety = 0.8;
   int min_parallel_items = 4096;
   int frame_every_samples = 100;
@@ -86,7 +88,7 @@ MacroProperties read_targets_csv(const std::string& path, const std::string& row
 Scene read_scene(const Json& doc, const fs::path& scene_dir) {
   ObjectReader root(doc, "");
   Scene s;
-  s.kind = root.get_choice("kind", {"specimen", "tension", "compression", "calibrate"});
+  s.kind = root.get_choice("kind", {"specimen", "tension", "compression", "calibrate", "cut"});
   root.ignore("description");
   static const Json empty = Json::object();
   const Json* material = root.find("material");
@@ -116,6 +118,7 @@ Scene read_scene(const Json& doc, const fs::path& scene_dir) {
       s.loading = read_loading_spec(none, s.kind);
     }
   }
+  if (s.kind == "cut") s.cut = read_cut_params(root);
   if (s.kind == "calibrate") {
     auto& c = s.calibration;
     ObjectReader cal = root.get_object("calibration");
@@ -408,15 +411,153 @@ int continue_test(const Scene& scene, const Json& doc, const Simulation& specime
   return 0;
 }
 
+/// Orthogonal cutting (seed 000 Section 4), forces against tool travel and cracks by mode and place:
+/// runs (or continues, from a checkpoint) a cut to the end of its travel and writes the outputs.
+Json continue_cut(const Scene& scene, const Json& doc, Json summary, const fs::path& out, int checkpoint_every, CutRun run,
+                  TestProgress tp) {
+  const auto write_frame = [&](const Simulation& sim) {
+    const std::string name = fmt::format("frame_{:04d}.vtp", tp.frames.size());
+    const std::string cracks = fmt::format("cracks_{:04d}.vtp", tp.frames.size());
+    write_vtp_frame(out / name, sim);
+    write_cracks_vtp(out / cracks, sim.cracks());
+    tp.frames.push_back({sim.time(), {name, cracks}});
+  };
+  if (scene.frame_every_samples > 0 && tp.sample_index == 0) write_frame(run.simulation());
+  const double n = static_cast<double>(run.result().n_particles);
+  const double steps = scene.cut.length_m / (scene.cut.speed_m_per_s * run.result().time_step_s);
+  Progress progress("cut", static_cast<std::size_t>(n * steps), "particle-steps");
+  progress.advance(static_cast<std::size_t>(n * scene.cut.sample_every_steps * tp.sample_index));
+  while (run.advance()) {
+    ++tp.sample_index;
+    progress.advance(static_cast<std::size_t>(n * scene.cut.sample_every_steps));
+    if (scene.frame_every_samples > 0 && tp.sample_index % scene.frame_every_samples == 0) write_frame(run.simulation());
+    if (checkpoint_every > 0 && tp.sample_index % checkpoint_every == 0) {
+      // The cut holds its own workpiece: the checkpoint's specimen part stays empty.
+      Checkpoint c{doc, summary, tp.frames, tp.sample_index, checkpoint_every, tp.scene_dir, std::string(), run.serialize()};
+      write_file_atomically(out / "checkpoint.bin", c.bytes());
+    }
+  }
+  progress.finish();
+  if (scene.frame_every_samples > 0) write_frame(run.simulation());
+  const CutResult& res = run.result();
+  const auto& frames = tp.frames;
+  summary["cut"] = cut_params_to_json(scene.cut);
+  summary["results"] = Json{{"main_force_N", res.main_force_n},
+                            {"thrust_force_N", res.thrust_force_n},
+                            {"main_force_std_N", res.main_force_std_n},
+                            {"thrust_force_std_N", res.thrust_force_std_n},
+                            {"steady_from_travel_mm", units::m_to_mm(scene.cut.entry_fraction * scene.cut.length_m)},
+                            {"steady_samples", res.n_steady_samples},
+                            {"width_mm", units::m_to_mm(res.width_m)},
+                            {"cracks_tensile", res.cracks.tensile},
+                            {"cracks_shear", res.cracks.shear},
+                            {"cracks_chip", res.cracks.chip},
+                            {"cracks_subsurface", res.cracks.subsurface},
+                            {"subsurface_damage_depth_um", units::m_to_um(res.cracks.subsurface_damage_depth_m)},
+                            {"surface_y_mm", units::m_to_mm(res.y_top_m)},
+                            {"cut_line_y_mm", units::m_to_mm(res.y_cut_m)},
+                            {"particles_removed_by_grooves", res.n_removed_by_grooves}};
+  summary["n_particles"] = res.n_particles;
+  summary["steps"] = res.steps;
+  summary["wall_time_s"] = res.wall_time_s;
+  summary["particle_steps_per_s"] = static_cast<double>(res.n_particles) * static_cast<double>(res.steps) / res.wall_time_s;
+  write_file_atomically(out / "forces.csv", cut_forces_csv(res));
+  write_file_atomically(out / "cracks.csv", cracks_csv(run.simulation().cracks(), res.y_cut_m));
+  if (scene.frame_every_samples > 0) write_pvd(out / "result.pvd", frames);
+  // The workpiece with room for the tool on the right and the chip above.
+  const auto& box = res.workpiece_box_m;
+  const double margin = 2 * scene.cut.depth_of_cut_m;
+  write_specimen_png(out / "specimen.png", run.simulation(), "cut, final state",
+                     std::array<double, 4>{box[0], box[1] + margin, box[2], box[3] + margin});
+  write_file_atomically(out / "summary.json", summary.dump(2) + "\n");
+  std::error_code ignored;
+  fs::remove(out / "checkpoint.bin", ignored);  // finished: nothing to resume
+  std::cout << fmt::format("cut: main force {:.3g} N (std {:.2g}), thrust force {:.3g} N (std {:.2g}) per {:g} mm width; "
+                           "{} tensile + {} shear cracks ({} chip, {} subsurface, damage depth {:.1f} um); {} steps, {:.1f} s -> {}\n",
+                           res.main_force_n, res.main_force_std_n, res.thrust_force_n, res.thrust_force_std_n,
+                           units::m_to_mm(res.width_m), res.cracks.tensile, res.cracks.shear, res.cracks.chip,
+                           res.cracks.subsurface, units::m_to_um(res.cracks.subsurface_damage_depth_m), res.steps,
+                           res.wall_time_s, out.string());
+  return summary;
+}
+
+/// Seed 000 Section 4 repeats each cut on three specimens with different random packings: replicate k
+/// uses packing seed specimen.seed + k and writes DIR/replicate_k; DIR/summary.json has the per-replicate
+/// results and their mean and (sample) standard deviation.
+int run_cut_replicates(const Scene& scene, int replicates, Json summary, const fs::path& out) {
+  Json list = Json::array();
+  // Each result with the name of its spread over the replicates.
+  const std::vector<std::pair<std::string, std::string>> keys{
+      {"main_force_N", "main_force_replicate_std_N"},
+      {"thrust_force_N", "thrust_force_replicate_std_N"},
+      {"cracks_tensile", "cracks_tensile_replicate_std"},
+      {"cracks_shear", "cracks_shear_replicate_std"},
+      {"subsurface_damage_depth_um", "subsurface_damage_depth_replicate_std_um"}};
+  double wall = 0;
+  for (int k = 0; k < replicates; ++k) {
+    Scene s = scene;
+    s.specimen.seed = scene.specimen.seed + static_cast<std::uint64_t>(k);
+    SpecimenSpec spec;
+    SpecimenReport report;
+    double genesis_s = 0;
+    const Simulation specimen = obtain_specimen(s, spec, report, genesis_s);
+    const fs::path dir = out / fmt::format("replicate_{}", k + 1);
+    fs::create_directories(dir);
+    Json one = summary;
+    one["specimen"] = specimen_json(spec, report, genesis_s);
+    one = continue_cut(s, Json(), one, dir, 0, CutRun(specimen, s.cut), {});
+    Json row{{"replicate", k + 1}, {"seed", s.specimen.seed}, {"directory", dir.filename().string()}};
+    for (const auto& key : keys) row[key.first] = one["results"][key.first];
+    row["main_force_std_N"] = one["results"]["main_force_std_N"];
+    row["thrust_force_std_N"] = one["results"]["thrust_force_std_N"];
+    row["width_mm"] = one["results"]["width_mm"];
+    wall += one["wall_time_s"].get<double>();
+    list.push_back(row);
+  }
+  Json stats;
+  for (const auto& [key, spread] : keys) {
+    double sum = 0, sum2 = 0;
+    for (const auto& row : list) sum += row[key].get<double>(), sum2 += row[key].get<double>() * row[key].get<double>();
+    const double n = static_cast<double>(replicates), mean = sum / n;
+    stats[key] = mean;
+    stats[spread] = std::sqrt(std::max(0.0, (sum2 - n * mean * mean) / (n - 1)));
+  }
+  stats["width_mm"] = list[0]["width_mm"];
+  summary["cut"] = cut_params_to_json(scene.cut);
+  summary["replicates"] = list;
+  summary["results"] = stats;
+  summary["wall_time_s"] = wall;
+  write_file_atomically(out / "summary.json", summary.dump(2) + "\n");
+  std::cout << fmt::format("cut, {} replicates: main force {:.3g} N (replicate std {:.2g}), thrust force {:.3g} N "
+                           "(replicate std {:.2g}) per {:g} mm width -> {}\n",
+                           replicates, stats["main_force_N"].get<double>(), stats["main_force_replicate_std_N"].get<double>(),
+                           stats["thrust_force_N"].get<double>(), stats["thrust_force_replicate_std_N"].get<double>(),
+                           stats["width_mm"].get<double>(), out.string());
+  return 0;
+}
+
 int run_command(const std::string& scene_path, const std::vector<std::string>& sets, const fs::path& out, int threads,
-                int checkpoint_every) {
+                int checkpoint_every, int replicates) {
   if (threads > 0) omp_set_num_threads(threads);
   Json doc = read_json_file(scene_path);
   for (const auto& s : sets) apply_override(doc, s);
   const Scene scene = read_scene(doc, fs::path(scene_path).parent_path());
-  if (checkpoint_every > 0 && scene.kind != "tension" && scene.kind != "compression")
-    throw InputError("--checkpoint-every", std::to_string(checkpoint_every), "checkpoints only for tension and compression scenes");
+  if (checkpoint_every > 0 && scene.kind != "tension" && scene.kind != "compression" && scene.kind != "cut")
+    throw InputError("--checkpoint-every", std::to_string(checkpoint_every),
+                     "checkpoints only for tension, compression and cut scenes");
+  if (checkpoint_every > 0 && replicates > 1)
+    throw InputError("--checkpoint-every", std::to_string(checkpoint_every), "no checkpoints with --replicates");
+  if (replicates > 1 && scene.kind != "cut")
+    throw InputError("--replicates", std::to_string(replicates), "replicates only for cut scenes");
+  if (replicates > 1 && scene.specimen_file)
+    throw InputError("--replicates", std::to_string(replicates),
+                     "a scene that generates its specimen (replicates differ in specimen.seed), not specimen.file");
   fs::create_directories(out);
+  if (replicates > 1) {
+    const Json summary{{"kind", scene.kind}, {"material", material_to_json(scene.material)},
+                       {"threads", omp_get_max_threads()}};
+    return run_cut_replicates(scene, replicates, summary, out);
+  }
   SpecimenSpec spec;
   SpecimenReport report;
   double genesis_s = 0;
@@ -441,6 +582,11 @@ int run_command(const std::string& scene_path, const std::vector<std::string>& s
     return 0;
   }
   if (scene.kind == "calibrate") return run_calibration(scene, specimen, summary, out);
+  if (scene.kind == "cut") {
+    continue_cut(scene, doc, summary, out, checkpoint_every, CutRun(specimen, scene.cut),
+                 {{}, 0, fs::absolute(scene_path).parent_path().string()});
+    return 0;
+  }
   LabTestRun run(specimen, scene.loading);
   return continue_test(scene, doc, specimen, summary, out, checkpoint_every, std::move(run),
                        {{}, 0, fs::absolute(scene_path).parent_path().string()});
@@ -454,6 +600,11 @@ int resume_command(const fs::path& dir, int threads) {
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   Checkpoint c = Checkpoint::parse(bytes);
   const Scene scene = read_scene(c.scene, c.scene_dir);
+  if (scene.kind == "cut") {
+    continue_cut(scene, c.scene, c.summary, dir, c.checkpoint_every, CutRun::deserialize(c.run),
+                 {c.frames, c.sample_index, c.scene_dir});
+    return 0;
+  }
   const Simulation specimen = Simulation::deserialize(c.specimen);
   return continue_test(scene, c.scene, specimen, c.summary, dir, c.checkpoint_every, LabTestRun::deserialize(c.run),
                        {c.frames, c.sample_index, c.scene_dir});
@@ -466,16 +617,18 @@ int main(int argc, char** argv) {
   std::string scene_path;
   std::vector<std::string> sets;
   std::string out_dir = "out";
-  int threads = 0, checkpoint_every = 0;
+  int threads = 0, checkpoint_every = 0, replicates = 1;
   std::string resume_dir;
-  auto* run = app.add_subcommand("run", "run a scene (kind: specimen, tension, compression, calibrate)");
+  auto* run = app.add_subcommand("run", "run a scene (kind: specimen, tension, compression, calibrate, cut)");
   run->add_option("scene", scene_path, "scene JSON file")->required();
   run->add_option("--set", sets, "override a scene value: key.path=value (repeatable)");
   run->add_option("--out", out_dir, "output directory (default: out)");
   run->add_option("--threads", threads, "OpenMP threads (default: all)")->check(CLI::Range(1, 1024));
-  run->add_option("--checkpoint-every", checkpoint_every, "write DIR/checkpoint.bin every N samples (tests only)")
+  run->add_option("--checkpoint-every", checkpoint_every, "write DIR/checkpoint.bin every N samples (tension, compression, cut)")
       ->check(CLI::Range(1, 100000000));
-  auto* resume = app.add_subcommand("resume", "continue a killed test from DIR/checkpoint.bin");
+  run->add_option("--replicates", replicates, "cut scenes: repeat on N packings (seeds specimen.seed + 0..N-1)")
+      ->check(CLI::Range(1, 1000));
+  auto* resume = app.add_subcommand("resume", "continue a killed test or cut from DIR/checkpoint.bin");
   resume->add_option("dir", resume_dir, "output directory of the killed run")->required();
   resume->add_option("--threads", threads, "OpenMP threads (default: all)")->check(CLI::Range(1, 1024));
   try {
@@ -486,7 +639,7 @@ int main(int argc, char** argv) {
   }
   try {
     if (resume->parsed()) return resume_command(resume_dir, threads);
-    return run_command(scene_path, sets, out_dir, threads, checkpoint_every);
+    return run_command(scene_path, sets, out_dir, threads, checkpoint_every, replicates);
   } catch (const InputError& e) {
     std::cerr << "kerf-dem: error: " << e.what() << "\n";
     return kExitInputError;

@@ -27,5 +27,7 @@ void write_pvd(const std::filesystem::path& path, const std::vector<std::pair<do
 std::string curve_csv(const LabTestResult& result);
 /// "time_s,x_mm,y_mm,orientation_deg,length_um,mode,bond,element".
 std::string cracks_csv(const std::vector<CrackEvent>& cracks);
+/// The same plus "place": chip (y above the cut line y_cut_m) or subsurface (orthogonal cutting).
+std::string cracks_csv(const std::vector<CrackEvent>& cracks, double y_cut_m);
 
 }  // namespace kerf::dem

@@ -1,15 +1,21 @@
 #pragma once
 // A PNG picture of a specimen (PLplot, cairo driver): disks in grey outline, cracks as short segments
-// along the broken interface, red for tension and blue for shear. Written whole or not at all.
+// along the broken interface, red for tension and blue for shear; walls (platens, the cutting tool) as
+// black lines. Written whole or not at all.
 //
 //   write_specimen_png("out/specimen.png", sim, "compression, final state");
+#include <array>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "kerf/dem/simulation.hpp"
 
 namespace kerf::dem {
 
-void write_specimen_png(const std::filesystem::path& path, const Simulation& sim, const std::string& title);
+/// `view_m` (x0, x1, y0, y1): the region shown; default: the disks' extent (a cut's flying fragments would
+/// shrink the workpiece to a few pixels, so the cut passes the workpiece's region).
+void write_specimen_png(const std::filesystem::path& path, const Simulation& sim, const std::string& title,
+                        const std::optional<std::array<double, 4>>& view_m = std::nullopt);
 
 }  // namespace kerf::dem

@@ -122,6 +122,7 @@ class Simulation {
   std::vector<Wall>& walls() { return walls_; }
   const std::vector<Wall>& walls() const { return walls_; }
   std::vector<ParticleType>& types() { return types_; }
+  const std::vector<ParticleType>& types() const { return types_; }
   const std::vector<CrackEvent>& cracks() const { return cracks_; }
   std::vector<CrackEvent>& cracks() { return cracks_; }
   const Material& material() const { return material_; }

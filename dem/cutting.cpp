@@ -1,0 +1,389 @@
+// Orthogonal cutting (seed 000, Section 4; physics-dem.md section 4).
+#include "kerf/dem/cutting.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "kerf/error.hpp"
+#include "kerf/io.hpp"
+#include "kerf/units.hpp"
+#include "serial.hpp"
+
+namespace kerf::dem {
+
+namespace {
+constexpr double kPi = std::numbers::pi;
+
+void require(bool ok, const std::string& key, double value, const std::string& expected) {
+  if (!ok) throw InputError(key, format_value(value), expected);
+}
+
+/// Wedge angle between the rake and clearance faces [rad]: 90 deg - rake - clearance.
+double wedge_angle_rad(const CutParams& p) { return units::deg_to_rad(90.0 - p.rake_deg - p.clearance_deg); }
+}  // namespace
+
+void validate_cut_params(const CutParams& p) {
+  require(p.depth_of_cut_m > 0, "cut.depth_of_cut_mm", units::m_to_mm(p.depth_of_cut_m), "a positive value in mm");
+  require(p.speed_m_per_s > 0, "cut.speed_m_per_s", p.speed_m_per_s, "a positive value in m/s");
+  require(p.length_m > 0, "cut.length_mm", units::m_to_mm(p.length_m), "a positive value in mm");
+  require(p.entry_fraction >= 0 && p.entry_fraction < 1, "cut.entry_fraction", p.entry_fraction, "a value in [0, 1)");
+  require(p.sample_every_steps >= 1, "cut.sample_every_steps", p.sample_every_steps, "an integer >= 1");
+  require(p.rake_deg > -90 && p.rake_deg < 90, "tool.rake_deg", p.rake_deg, "a value in (-90, 90) deg");
+  require(p.clearance_deg >= 0 && p.clearance_deg < 90, "tool.clearance_deg", p.clearance_deg, "a value in [0, 90) deg");
+  // The wedge between the two faces must be a real wedge: rake + clearance < 90 deg.
+  require(p.rake_deg + p.clearance_deg < 89, "tool.clearance_deg", p.clearance_deg,
+          "rake_deg + clearance_deg below 89 deg (a tool wedge angle of at least 1 deg)");
+  require(p.edge_radius_m >= 0, "tool.edge_radius_um", units::m_to_um(p.edge_radius_m), "a value >= 0 um");
+  // The rounded edge must fit on the faces (each face is at least 2 depths of cut long, see tool_outline).
+  const double tangent = p.edge_radius_m / std::tan(0.5 * wedge_angle_rad(p));
+  require(tangent < 2 * p.depth_of_cut_m, "tool.edge_radius_um", units::m_to_um(p.edge_radius_m),
+          "an edge radius whose rounding fits within twice the depth of cut along each face");
+  require(p.edge_segments >= 1 && p.edge_segments <= 64, "tool.edge_segments", p.edge_segments, "an integer in [1, 64]");
+  if (p.groove_shape == "none") return;
+  if (p.groove_shape != "rectangular" && p.groove_shape != "trapezoidal")
+    throw InputError("grooves.shape", p.groove_shape, "one of 'none', 'rectangular', 'trapezoidal'");
+  require(p.groove_depth_m > 0, "grooves.depth_mm", units::m_to_mm(p.groove_depth_m), "a positive value in mm");
+  require(p.groove_pitch_m > 0, "grooves.pitch_mm", units::m_to_mm(p.groove_pitch_m), "a positive value in mm");
+  require(p.groove_width_m > 0 && p.groove_width_m < p.groove_pitch_m, "grooves.width_mm", units::m_to_mm(p.groove_width_m),
+          "a positive width below grooves.pitch_mm (" + format_value(units::m_to_mm(p.groove_pitch_m)) + " mm)");
+  if (p.groove_shape == "trapezoidal")
+    require(p.groove_bottom_width_m >= 0 && p.groove_bottom_width_m < p.groove_width_m, "grooves.bottom_width_mm",
+            units::m_to_mm(p.groove_bottom_width_m),
+            "a value in [0, grooves.width_mm) (an inverted trapezoid is narrower at the bottom)");
+}
+
+CutParams read_cut_params(ObjectReader& root) {
+  CutParams p;
+  ObjectReader cut = root.get_object("cut");
+  p.depth_of_cut_m = units::mm_to_m(cut.get_number("depth_of_cut_mm", Range::positive(), "mm"));
+  p.speed_m_per_s = cut.get_number_or("speed_m_per_s", p.speed_m_per_s, Range::positive(), "m/s");
+  p.length_m = units::mm_to_m(cut.get_number("length_mm", Range::positive(), "mm"));
+  p.entry_fraction = cut.get_number_or("entry_fraction", p.entry_fraction, Range{0.0, 1.0, false, true}, "");
+  p.sample_every_steps = cut.get_int_or("sample_every_steps", p.sample_every_steps, 1, 1000000);
+  cut.finish();
+  if (auto tool = root.find_object("tool")) {
+    p.rake_deg = tool->get_number_or("rake_deg", p.rake_deg, Range::open(-90.0, 90.0), "deg");
+    p.clearance_deg = tool->get_number_or("clearance_deg", p.clearance_deg, Range{0.0, 90.0, false, true}, "deg");
+    p.edge_radius_m = units::um_to_m(tool->get_number_or("edge_radius_um", 0, Range::non_negative(), "um"));
+    p.edge_segments = tool->get_int_or("edge_segments", p.edge_segments, 1, 64);
+    tool->finish();
+  }
+  if (auto grooves = root.find_object("grooves")) {
+    p.groove_shape = grooves->get_choice_or("shape", "none", {"none", "rectangular", "trapezoidal"});
+    // Seed 000 Section 4: groove depth = depth of cut, pitch 0.2 mm, width 0.06 mm.
+    p.groove_depth_m = units::mm_to_m(grooves->get_number_or("depth_mm", units::m_to_mm(p.depth_of_cut_m), Range::positive(), "mm"));
+    p.groove_pitch_m = units::mm_to_m(grooves->get_number_or("pitch_mm", 0.2, Range::positive(), "mm"));
+    p.groove_width_m = units::mm_to_m(grooves->get_number_or("width_mm", 0.06, Range::positive(), "mm"));
+    p.groove_bottom_width_m = units::mm_to_m(grooves->get_number_or(
+        "bottom_width_mm", units::m_to_mm(0.5 * p.groove_width_m), Range::non_negative(), "mm"));
+    grooves->finish();
+  }
+  validate_cut_params(p);
+  return p;
+}
+
+Json cut_params_to_json(const CutParams& p) {
+  Json j{{"cut", {{"depth_of_cut_mm", units::m_to_mm(p.depth_of_cut_m)}, {"speed_m_per_s", p.speed_m_per_s},
+                  {"length_mm", units::m_to_mm(p.length_m)}, {"entry_fraction", p.entry_fraction},
+                  {"sample_every_steps", p.sample_every_steps}}},
+         {"tool", {{"rake_deg", p.rake_deg}, {"clearance_deg", p.clearance_deg},
+                   {"edge_radius_um", units::m_to_um(p.edge_radius_m)}, {"edge_segments", p.edge_segments}}},
+         {"grooves", {{"shape", p.groove_shape}}}};
+  if (p.groove_shape != "none") {
+    j["grooves"]["depth_mm"] = units::m_to_mm(p.groove_depth_m);
+    j["grooves"]["pitch_mm"] = units::m_to_mm(p.groove_pitch_m);
+    j["grooves"]["width_mm"] = units::m_to_mm(p.groove_width_m);
+    if (p.groove_shape == "trapezoidal") j["grooves"]["bottom_width_mm"] = units::m_to_mm(p.groove_bottom_width_m);
+  }
+  return j;
+}
+
+bool inside_groove_outline(const CutParams& p, double dx_m, double depth_m) {
+  if (p.groove_shape == "none" || depth_m < 0 || depth_m > p.groove_depth_m) return false;
+  double width = p.groove_width_m;
+  // The laser grooves are inverted trapezoids (seed 000 Section 4, discussion of Figure 18): the width
+  // falls linearly from the top width at the surface to the bottom width at the groove depth.
+  if (p.groove_shape == "trapezoidal")
+    width += (p.groove_bottom_width_m - p.groove_width_m) * depth_m / p.groove_depth_m;
+  return std::abs(dx_m) <= 0.5 * width;
+}
+
+std::vector<double> groove_centres(const CutParams& p, double x_left_m, double x_right_m) {
+  std::vector<double> out;
+  if (p.groove_shape == "none") return out;
+  const double half = 0.5 * p.groove_width_m;
+  for (double c = x_right_m - 0.5 * p.groove_pitch_m; c - half > x_left_m && c + half > x_right_m - p.length_m;
+       c -= p.groove_pitch_m)
+    out.push_back(c);
+  return out;
+}
+
+bool inside_any_groove(const CutParams& p, const std::vector<double>& centres, double y_top_m, double x_m, double y_m) {
+  for (double c : centres)
+    if (inside_groove_outline(p, x_m - c, y_top_m - y_m)) return true;
+  return false;
+}
+
+std::vector<std::array<double, 2>> tool_outline(const CutParams& p, double x_front_m, double y_tip_m) {
+  // Built with the sharp tip at the origin, then moved. The tool moves in -x, so "back" is +x.
+  // Rake face (from the tip upwards): rotated from the vertical towards the back by the rake angle; a
+  // negative rake leans it forwards, over the chip. Clearance face (from the tip backwards): rises from
+  // the machined surface by the clearance angle.
+  const double g = units::deg_to_rad(p.rake_deg), a = units::deg_to_rad(p.clearance_deg);
+  const std::array<double, 2> r{std::sin(g), std::cos(g)}, c{std::cos(a), std::sin(a)};
+  // Face lengths: the rake face reaches 3 depths of cut above the tip (room for the chip), the clearance
+  // face is 2 depths of cut long; a back face closes the outline so that no disk can get inside the tool.
+  const double lr = 3 * p.depth_of_cut_m / std::cos(g), lc = 2 * p.depth_of_cut_m;
+  std::vector<std::array<double, 2>> v;
+  v.push_back({lr * r[0], lr * r[1]});
+  if (p.edge_radius_m > 0) {
+    const double beta = wedge_angle_rad(p), rho = p.edge_radius_m;
+    const double t = rho / std::tan(0.5 * beta), h = rho / std::sin(0.5 * beta);
+    const double bx = r[0] + c[0], by = r[1] + c[1], bn = std::hypot(bx, by);
+    const double cx = h * bx / bn, cy = h * by / bn;  // arc centre on the bisector
+    const double a0 = std::atan2(t * r[1] - cy, t * r[0] - cx);
+    double sweep = std::atan2(t * c[1] - cy, t * c[0] - cx) - a0;
+    while (sweep > kPi) sweep -= 2 * kPi;
+    while (sweep <= -kPi) sweep += 2 * kPi;
+    for (int k = 0; k <= p.edge_segments; ++k) {
+      const double phi = a0 + sweep * k / p.edge_segments;
+      v.push_back({cx + rho * std::cos(phi), cy + rho * std::sin(phi)});
+    }
+  } else {
+    v.push_back({0, 0});
+  }
+  v.push_back({lc * c[0], lc * c[1]});
+  double x_min = 1e300, y_min = 1e300;
+  for (const auto& q : v) x_min = std::min(x_min, q[0]), y_min = std::min(y_min, q[1]);
+  for (auto& q : v) q = {q[0] - x_min + x_front_m, q[1] - y_min + y_tip_m};
+  return v;
+}
+
+double leading_x_in_band(const std::vector<std::array<double, 2>>& v, double y0, double y1) {
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    auto a = v[k], b = v[(k + 1) % v.size()];
+    if (a[1] > b[1]) std::swap(a, b);
+    if (b[1] < y0 || a[1] > y1) continue;
+    // Clip the edge to the band; x is linear in y along it (a horizontal edge keeps both ends).
+    for (double y : {std::max(a[1], y0), std::min(b[1], y1)}) {
+      const double x = b[1] > a[1] ? a[0] + (b[0] - a[0]) * (y - a[1]) / (b[1] - a[1]) : std::min(a[0], b[0]);
+      best = std::min(best, x);
+    }
+  }
+  return best;
+}
+
+CutCrackCounts count_cut_cracks(const std::vector<CrackEvent>& cracks, double y_cut_m) {
+  CutCrackCounts n;
+  for (const auto& c : cracks) {
+    (c.mode == BreakMode::tension ? n.tensile : n.shear)++;
+    if (is_chip_crack(c.y_m, y_cut_m)) {
+      ++n.chip;
+    } else {
+      ++n.subsurface;
+      n.subsurface_damage_depth_m = std::max(n.subsurface_damage_depth_m, y_cut_m - c.y_m);
+    }
+  }
+  return n;
+}
+
+void steady_statistics(CutResult& res, double from_travel_m) {
+  double sm = 0, st = 0, sm2 = 0, st2 = 0;
+  int n = 0;
+  for (const auto& s : res.samples) {
+    if (s.travel_m < from_travel_m) continue;
+    sm += s.main_force_n, st += s.thrust_force_n;
+    sm2 += s.main_force_n * s.main_force_n, st2 += s.thrust_force_n * s.thrust_force_n;
+    ++n;
+  }
+  res.n_steady_samples = n;
+  if (n == 0) {
+    res.main_force_n = res.thrust_force_n = res.main_force_std_n = res.thrust_force_std_n = 0;
+    return;
+  }
+  res.main_force_n = sm / n;
+  res.thrust_force_n = st / n;
+  res.main_force_std_n = std::sqrt(std::max(0.0, sm2 / n - res.main_force_n * res.main_force_n));
+  res.thrust_force_std_n = std::sqrt(std::max(0.0, st2 / n - res.thrust_force_n * res.thrust_force_n));
+}
+
+namespace {
+struct Bounds {
+  double x_min = 1e300, x_max = -1e300, y_min = 1e300, y_max = -1e300, r_max = 0;
+};
+Bounds bounds_of(const Particles& p) {
+  Bounds b;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    b.x_min = std::min(b.x_min, p.x[i] - p.radius[i]);
+    b.x_max = std::max(b.x_max, p.x[i] + p.radius[i]);
+    b.y_min = std::min(b.y_min, p.y[i] - p.radius[i]);
+    b.y_max = std::max(b.y_max, p.y[i] + p.radius[i]);
+    b.r_max = std::max(b.r_max, p.radius[i]);
+  }
+  return b;
+}
+}  // namespace
+
+Simulation make_workpiece(const Simulation& specimen, const CutParams& params, std::size_t& n_removed) {
+  const auto& p = specimen.particles();
+  const Bounds b = bounds_of(p);
+  const auto centres = groove_centres(params, b.x_min, b.x_max);
+  // Grooves: the paper deletes the disks inside each groove (seed 000 Section 4); a disk goes when its
+  // centre lies inside the outline.
+  Simulation sim(specimen.material(), specimen.options());
+  sim.types() = specimen.types();
+  std::vector<std::int32_t> index(p.size(), -1);
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    if (inside_any_groove(params, centres, b.y_max, p.x[k], p.y[k])) continue;
+    index[k] = sim.add_particle(p.x[k], p.y[k], p.radius[k], p.type[k]);
+    auto& q = sim.particles();
+    const auto u = static_cast<std::size_t>(index[k]);
+    q.theta[u] = p.theta[k];
+    q.vx[u] = p.vx[k], q.vy[u] = p.vy[k], q.omega[u] = p.omega[k];
+  }
+  n_removed = p.size() - sim.particles().size();
+  const auto& bs = specimen.bonds();
+  const auto stride = static_cast<std::size_t>(bs.stride);
+  for (std::size_t k = 0; k < bs.size(); ++k) {
+    const auto i = index[static_cast<std::size_t>(bs.i[k])], j = index[static_cast<std::size_t>(bs.j[k])];
+    if (!bs.active[k] || i < 0 || j < 0) continue;
+    const auto id = static_cast<std::size_t>(sim.install_bond(i, j, bs.ref_distance_m[k], bs.ref_rotation_rad[k]));
+    for (std::size_t e = 0; e < stride; ++e) {
+      sim.bonds().bonded[id * stride + e] = bs.bonded[k * stride + e];
+      sim.bonds().shear_force_n[id * stride + e] = bs.shear_force_n[k * stride + e];
+    }
+  }
+  // Seed 000 Section 4: the particles on the left side and the bottom are fixed (zero prescribed
+  // velocity, group 1); the top is free. "On the side" = centre within 2 R_max of the edge, as the grips.
+  auto& q = sim.particles();
+  for (std::size_t k = 0; k < q.size(); ++k) {
+    if (q.x[k] < b.x_min + 2 * b.r_max || q.y[k] < b.y_min + 2 * b.r_max) {
+      q.group[k] = 1;
+      q.vx[k] = q.vy[k] = q.omega[k] = 0;
+    }
+  }
+  return sim;
+}
+
+CutRun::CutRun(const Simulation& specimen, const CutParams& params)
+    : sim_(specimen.material(), specimen.options()), params_(params) {
+  validate_cut_params(params_);
+  const Bounds b0 = bounds_of(specimen.particles());
+  if (params_.depth_of_cut_m >= b0.y_max - b0.y_min - 2 * b0.r_max)
+    throw InputError("cut.depth_of_cut_mm", format_value(units::m_to_mm(params_.depth_of_cut_m)),
+                     "a depth of cut above the held bottom row (workpiece height " +
+                         format_value(units::m_to_mm(b0.y_max - b0.y_min)) + " mm)");
+  sim_ = make_workpiece(specimen, params_, res_.n_removed_by_grooves);
+  res_.y_top_m = b0.y_max;
+  res_.workpiece_box_m = {b0.x_min, b0.x_max, b0.y_min, b0.y_max};
+  res_.y_cut_m = b0.y_max - params_.depth_of_cut_m;
+  res_.width_m = sim_.options().thickness_m;
+  // The tool starts with the part that meets the workpiece first (its left-most point between the cut
+  // line and the top surface: the rake face at the surface for a negative rake) half a largest radius
+  // right of the workpiece, so the travel is not spent in the air. It moves in -x.
+  auto outline = tool_outline(params_, 0, res_.y_cut_m);
+  const double shift = b0.x_max + 0.5 * b0.r_max - leading_x_in_band(outline, res_.y_cut_m, res_.y_top_m);
+  for (auto& q : outline) q[0] += shift;
+  first_tool_wall_ = static_cast<std::int32_t>(sim_.walls().size());
+  for (std::size_t k = 0; k < outline.size(); ++k) {
+    const auto& a = outline[k];
+    const auto& e = outline[(k + 1) % outline.size()];
+    sim_.add_wall({a[0], a[1], e[0], e[1], -params_.speed_m_per_s, 0});
+  }
+  n_tool_walls_ = static_cast<std::int32_t>(outline.size());
+  sim_.invalidate_neighbours();
+  sim_.initialise();
+  sim_.cracks().clear();  // only the cut's cracks count
+  t0_ = sim_.time();
+  res_.n_particles = sim_.particles().size();
+  res_.time_step_s = sim_.time_step();
+  res_.samples.push_back({0, 0, 0, 0});
+}
+
+bool CutRun::advance() {
+  if (finished_) return false;
+  const auto start = std::chrono::steady_clock::now();
+  double fx = 0, fy = 0;
+  const auto& walls = sim_.walls();
+  for (int s = 0; s < params_.sample_every_steps; ++s) {
+    sim_.step();
+    for (std::int32_t w = 0; w < n_tool_walls_; ++w) {
+      fx += walls[static_cast<std::size_t>(first_tool_wall_ + w)].fx;
+      fy += walls[static_cast<std::size_t>(first_tool_wall_ + w)].fy;
+    }
+  }
+  const auto f = tool_force_components(fx / params_.sample_every_steps, fy / params_.sample_every_steps);
+  const double elapsed = sim_.time() - t0_, travel = params_.speed_m_per_s * elapsed;
+  res_.samples.push_back({travel, elapsed, f[0], f[1]});
+  res_.steps = sim_.step_count();
+  res_.wall_time_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (travel >= params_.length_m) finish();
+  return !finished_;
+}
+
+void CutRun::finish() {
+  finished_ = true;
+  steady_statistics(res_, params_.entry_fraction * params_.length_m);
+  res_.cracks = count_cut_cracks(sim_.cracks(), res_.y_cut_m);
+}
+
+std::string CutRun::serialize() const {
+  using namespace serial;
+  std::string out = "KERFCUT1";
+  const auto& p = params_;
+  for (double v : {p.depth_of_cut_m, p.speed_m_per_s, p.length_m, p.rake_deg, p.clearance_deg, p.edge_radius_m,
+                   p.groove_depth_m, p.groove_pitch_m, p.groove_width_m, p.groove_bottom_width_m, p.entry_fraction})
+    put_raw(out, v);
+  put_raw(out, p.edge_segments), put_raw(out, p.sample_every_steps);
+  put_str(out, p.groove_shape);
+  put_vec(out, res_.samples);
+  for (double v : {res_.y_top_m, res_.y_cut_m, res_.width_m, res_.time_step_s, res_.wall_time_s, t0_}) put_raw(out, v);
+  put_raw(out, res_.workpiece_box_m);
+  put_raw(out, static_cast<std::uint64_t>(res_.n_particles)), put_raw(out, static_cast<std::uint64_t>(res_.n_removed_by_grooves));
+  put_raw(out, res_.steps), put_raw(out, first_tool_wall_), put_raw(out, n_tool_walls_), put_raw(out, finished_);
+  put_str(out, sim_.serialize());
+  return out;
+}
+
+CutRun CutRun::deserialize(std::string_view bytes) {
+  using namespace serial;
+  if (bytes.substr(0, 8) != "KERFCUT1") throw ModelError("dem", "not a kerf-dem cut checkpoint");
+  In in{bytes, 8};
+  CutRun run;
+  auto& p = run.params_;
+  for (double* v : {&p.depth_of_cut_m, &p.speed_m_per_s, &p.length_m, &p.rake_deg, &p.clearance_deg, &p.edge_radius_m,
+                    &p.groove_depth_m, &p.groove_pitch_m, &p.groove_width_m, &p.groove_bottom_width_m, &p.entry_fraction})
+    in.raw(*v);
+  in.raw(p.edge_segments), in.raw(p.sample_every_steps);
+  in.str(p.groove_shape);
+  in.vec(run.res_.samples);
+  for (double* v : {&run.res_.y_top_m, &run.res_.y_cut_m, &run.res_.width_m, &run.res_.time_step_s, &run.res_.wall_time_s, &run.t0_})
+    in.raw(*v);
+  in.raw(run.res_.workpiece_box_m);
+  std::uint64_t n = 0, removed = 0;
+  in.raw(n), in.raw(removed);
+  run.res_.n_particles = static_cast<std::size_t>(n);
+  run.res_.n_removed_by_grooves = static_cast<std::size_t>(removed);
+  in.raw(run.res_.steps), in.raw(run.first_tool_wall_), in.raw(run.n_tool_walls_), in.raw(run.finished_);
+  std::string state;
+  in.str(state);
+  if (in.at != bytes.size()) throw ModelError("dem", "cut checkpoint has trailing bytes");
+  validate_cut_params(p);
+  run.sim_ = Simulation::deserialize(state);
+  if (run.finished_) run.finish();
+  return run;
+}
+
+std::string cut_forces_csv(const CutResult& res) {
+  std::string out = csv_line({"tool_travel_mm", "time_s", "main_force_N", "thrust_force_N"});
+  for (const auto& s : res.samples)
+    out += csv_line({csv_number(units::m_to_mm(s.travel_m)), csv_number(s.time_s), csv_number(s.main_force_n),
+                     csv_number(s.thrust_force_n)});
+  return out;
+}
+
+}  // namespace kerf::dem

@@ -1,0 +1,49 @@
+#pragma once
+// Byte-level helpers for the resumable runs' checkpoints (LabTestRun, CutRun): raw values and vectors with
+// a length prefix, native endianness (a checkpoint is read back by the same build). Internal to dem/.
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "kerf/error.hpp"
+
+namespace kerf::dem::serial {
+
+template <class T>
+void put_raw(std::string& out, const T& v) {
+  out.append(reinterpret_cast<const char*>(&v), sizeof(T));
+}
+template <class T>
+void put_vec(std::string& out, const std::vector<T>& v) {
+  put_raw(out, static_cast<std::uint64_t>(v.size()));
+  out.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
+}
+inline void put_str(std::string& out, const std::string& s) { put_vec(out, std::vector<char>(s.begin(), s.end())); }
+struct In {
+  std::string_view b;
+  std::size_t at = 0;
+  void take(void* d, std::size_t n) {
+    if (at + n > b.size()) throw ModelError("dem", "truncated run checkpoint");
+    std::memcpy(d, b.data() + at, n);
+    at += n;
+  }
+  template <class T>
+  void raw(T& v) { take(&v, sizeof(T)); }
+  template <class T>
+  void vec(std::vector<T>& v) {
+    std::uint64_t n = 0;
+    raw(n);
+    if (n > b.size()) throw ModelError("dem", "corrupt run checkpoint");
+    v.resize(static_cast<std::size_t>(n));
+    take(v.data(), v.size() * sizeof(T));
+  }
+  void str(std::string& s) {
+    std::vector<char> c;
+    vec(c);
+    s.assign(c.begin(), c.end());
+  }
+};
+
+}  // namespace kerf::dem::serial

@@ -1,0 +1,146 @@
+#pragma once
+// Orthogonal cutting of a bonded-particle workpiece (seed 000, Section 4; physics-dem.md section 4).
+//
+// The workpiece is a specimen whose left and bottom boundary disks are held (a prescribed-zero-velocity
+// group, as the tension grips use) and whose top is free. The tool is rigid: wall segments (rake face,
+// optional edge rounding, clearance face, a closing back face) whose lowest point lies `depth_of_cut`
+// below the top surface. It starts with its leading edge just right of the workpiece and moves in -x at
+// the cutting speed over `length`, so the chip flows up its rake face and the material is pushed towards the held left side.
+// Micro-grooves across the cut path are made as in the paper, by deleting the disks whose centres lie
+// inside each groove's outline (rectangular, or the inverted trapezoid of the real laser grooves).
+//
+// Sign convention (tested): main force = force the tool exerts on the workpiece along the cutting
+// direction (-x), thrust force = force the tool exerts on the workpiece into it (-y). A tool pushing into
+// material has positive main and thrust forces.
+//
+//   CutParams params = read_cut_params(root);        // the "cut", "tool" and "grooves" objects
+//   CutRun run(specimen, params);
+//   while (run.advance()) {}
+//   CutResult res = run.result();
+#include <array>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "kerf/dem/simulation.hpp"
+#include "kerf/json_reader.hpp"
+
+namespace kerf::dem {
+
+struct CutParams {
+  double depth_of_cut_m = 0.1e-3;
+  double speed_m_per_s = 1.0;   ///< the seed's 4.23 mm/s is scaled up (physics-dem.md section 4)
+  double length_m = 0.5e-3;     ///< tool travel
+  double rake_deg = -15, clearance_deg = 15;  ///< seed 000 Section 4
+  double edge_radius_m = 0;     ///< 0: sharp edge
+  int edge_segments = 4;        ///< wall segments approximating a rounded edge
+  std::string groove_shape = "none";  ///< "none", "rectangular", "trapezoidal"
+  double groove_depth_m = 0.1e-3, groove_pitch_m = 0.2e-3, groove_width_m = 0.06e-3;
+  double groove_bottom_width_m = 0.03e-3;  ///< trapezoidal only: width at the groove bottom
+  /// Part of the travel excluded from the mean forces (the entry), as a fraction of the travel.
+  double entry_fraction = 0.25;
+  int sample_every_steps = 50;
+};
+
+/// Checks cross-field constraints (groove narrower than its pitch, trapezoid bottom narrower than its
+/// top, the tool's wedge angle positive ...); InputError names the dotted key, value and expectation.
+void validate_cut_params(const CutParams& params);
+
+/// Reads the "cut" object (depth_of_cut_mm, speed_m_per_s, length_mm, entry_fraction,
+/// sample_every_steps), the optional "tool" (rake_deg, clearance_deg, edge_radius_um, edge_segments)
+/// and "grooves" (shape, depth_mm, pitch_mm, width_mm, bottom_width_mm) objects of a scene, then validates.
+CutParams read_cut_params(ObjectReader& root);
+Json cut_params_to_json(const CutParams& params);
+
+// --- pure geometry ---
+
+/// Whether a point `dx` from a groove's centre line and `depth` below the top surface lies inside the
+/// groove's outline (depth in [0, groove depth]; half-width linear in depth for a trapezoid).
+bool inside_groove_outline(const CutParams& params, double dx_m, double depth_m);
+/// Centres of the grooves across the cut path: the first half a pitch left of the right edge, then every
+/// pitch, as long as the groove lies right of `x_left_m` and within the tool's travel.
+std::vector<double> groove_centres(const CutParams& params, double x_left_m, double x_right_m);
+/// Whether (x, y) lies inside any groove of a workpiece with top surface at `y_top_m`.
+bool inside_any_groove(const CutParams& params, const std::vector<double>& centres, double y_top_m, double x_m,
+                       double y_m);
+
+/// The tool outline, a closed polygon: rake-face top, the edge (the sharp tip, or the arc points of a
+/// rounded edge), the clearance-face end; segment k joins vertex k to vertex k + 1 (mod n), so the last
+/// one is the back face. Placed with its lowest point at height `y_tip_m` and its front-most (smallest x)
+/// point at `x_front_m`.
+std::vector<std::array<double, 2>> tool_outline(const CutParams& params, double x_front_m, double y_tip_m);
+
+/// The left-most x of the outline's edges within the band y0 <= y <= y1 (the part of the tool that meets
+/// the workpiece first when the band spans the cut line to the top surface); +inf if none.
+double leading_x_in_band(const std::vector<std::array<double, 2>>& outline, double y0_m, double y1_m);
+
+// --- running ---
+
+struct CutSample {
+  double travel_m, time_s, main_force_n, thrust_force_n;  ///< forces averaged over the sample interval
+};
+
+struct CutCrackCounts {
+  int tensile = 0, shear = 0, chip = 0, subsurface = 0;
+  double subsurface_damage_depth_m = 0;  ///< deepest subsurface crack below the cut line
+};
+
+/// "chip" above the cut line (y > surface - depth of cut), else "subsurface".
+inline bool is_chip_crack(double y_m, double y_cut_m) { return y_m > y_cut_m; }
+inline const char* crack_place(double y_m, double y_cut_m) { return is_chip_crack(y_m, y_cut_m) ? "chip" : "subsurface"; }
+CutCrackCounts count_cut_cracks(const std::vector<CrackEvent>& cracks, double y_cut_m);
+
+struct CutResult {
+  std::vector<CutSample> samples;
+  double main_force_n = 0, thrust_force_n = 0, main_force_std_n = 0, thrust_force_std_n = 0;  ///< steady part
+  int n_steady_samples = 0;
+  CutCrackCounts cracks;
+  double y_top_m = 0, y_cut_m = 0, width_m = 0;  ///< width = out-of-plane thickness
+  std::array<double, 4> workpiece_box_m{};       ///< x_min, x_max, y_min, y_max before the cut
+  std::size_t n_particles = 0, n_removed_by_grooves = 0;
+  std::int64_t steps = 0;
+  double time_step_s = 0, wall_time_s = 0;
+};
+
+/// {main, thrust} from the force the disks exert on the tool (cutting direction -x): main = F_x, thrust = F_y.
+inline std::array<double, 2> tool_force_components(double fx_on_tool_n, double fy_on_tool_n) {
+  return {fx_on_tool_n, fy_on_tool_n};
+}
+
+/// Mean and (population) standard deviation of main and thrust forces over samples with travel >= from.
+void steady_statistics(CutResult& result, double from_travel_m);
+
+/// The workpiece: the specimen without the groove disks, left and bottom boundary disks held (group 1).
+Simulation make_workpiece(const Simulation& specimen, const CutParams& params, std::size_t& n_removed);
+
+/// A cut in progress, advanced one sample at a time.
+class CutRun {
+ public:
+  CutRun(const Simulation& specimen, const CutParams& params);
+  /// Runs one sample interval; returns false once the tool has travelled `length`.
+  bool advance();
+  bool finished() const { return finished_; }
+  const Simulation& simulation() const { return sim_; }
+  const CutParams& params() const { return params_; }
+  /// The result so far (steady statistics and crack counts filled in once finished).
+  const CutResult& result() const { return res_; }
+  /// The complete state (checkpoints): restoring it and running on equals the uninterrupted run.
+  std::string serialize() const;
+  static CutRun deserialize(std::string_view bytes);
+
+ private:
+  CutRun() : sim_(Material{}, SimulationOptions{}) {}
+  Simulation sim_;
+  CutParams params_;
+  CutResult res_;
+  std::int32_t first_tool_wall_ = 0, n_tool_walls_ = 0;
+  double t0_ = 0;
+  bool finished_ = false;
+  void finish();
+};
+
+/// "tool_travel_mm,time_s,main_force_N,thrust_force_N".
+std::string cut_forces_csv(const CutResult& result);
+
+}  // namespace kerf::dem

@@ -1,0 +1,86 @@
+#!/usr/bin/env bash
+# kerf-dem kind "cut" (orthogonal cutting, seed 000 Section 4): bad cut parameters exit 2 naming the key;
+# a small cut writes forces.csv, cracks.csv (with place), summary.json, frames and a PNG; the grooved
+# scene removes disks; a rerun gives identical forces.
+# Usage: dem_cut_cli.sh <dir of built programs> <source dir>
+set -uo pipefail
+bin="$1/kerf-dem"
+src="$2"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+export KERF_DATA_DIR="$src/data"
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+expect_input_error() {  # expect_input_error <text expected on stderr> <args...>
+  local want="$1"; shift
+  "$bin" "$@" >"$work/out" 2>"$work/err"
+  local rc=$?
+  [ $rc -eq 2 ] || fail "exit $rc (expected 2) for: $* ($(cat "$work/err"))"
+  grep -qF -- "$want" "$work/err" || fail "stderr lacks '$want' for: $*: $(cat "$work/err")"
+}
+
+scene="$src/data/scenes/dem_cut.json"
+grooved="$src/data/scenes/dem_cut_grooved.json"
+expect_input_error "cut.depth_of_cut_mm = -0.1" run "$scene" --set cut.depth_of_cut_mm=-0.1 --out "$work/x"
+expect_input_error "tool.rake_deg = 95" run "$scene" --set tool.rake_deg=95 --out "$work/x"
+expect_input_error "grooves.shape = triangle" run "$grooved" --set grooves.shape=triangle --out "$work/x"
+expect_input_error "grooves.bottom_width_mm = 0.08" run "$grooved" --set grooves.shape=trapezoidal \
+    --set grooves.bottom_width_mm=0.08 --out "$work/x"
+expect_input_error "did you mean 'depth_of_cut_mm'" run "$scene" --set cut.depth_of_cut=0.1 --out "$work/x"
+[ ! -e "$work/x/summary.json" ] || fail "a rejected scene wrote output"
+
+small=(--set specimen.width_mm=0.4 --set specimen.height_mm=0.25 --set specimen.growth_steps=2000
+       --set specimen.relax_steps=500 --set cut.depth_of_cut_mm=0.05 --set cut.length_mm=0.08
+       --set output.frame_every_samples=500)
+"$bin" run "$scene" "${small[@]}" --out "$work/c1" --threads 1 >/dev/null 2>"$work/err" || fail "cut run: $(cat "$work/err")"
+for f in summary.json forces.csv cracks.csv result.pvd frame_0000.vtp cracks_0000.vtp specimen.png; do
+  [ -s "$work/c1/$f" ] || fail "missing $f"
+done
+head -1 "$work/c1/forces.csv" | grep -qx "tool_travel_mm,time_s,main_force_N,thrust_force_N" || fail "forces.csv header"
+head -1 "$work/c1/cracks.csv" | grep -qx "time_s,x_mm,y_mm,orientation_deg,length_um,mode,bond,element,place" || fail "cracks.csv header"
+grep -q ",chip$" "$work/c1/cracks.csv" || fail "no chip cracks in cracks.csv"
+result() { sed -n '/^  "results": {/,/^  }/p' "$1/summary.json" | grep -o "\"$2\": [-0-9.e+]*" | head -1 | awk '{print $2}'; }
+value() { grep -o "\"$2\": [-0-9.e+]*" "$1/summary.json" | head -1 | awk '{print $2}'; }
+in_range() { awk -v x="$1" -v lo="$2" -v hi="$3" 'BEGIN { exit !(x > lo && x < hi) }'; }
+in_range "$(result "$work/c1" main_force_N)" 0 1e4 || fail "main_force_N = $(result "$work/c1" main_force_N)"
+in_range "$(result "$work/c1" thrust_force_N)" 0 1e4 || fail "thrust_force_N = $(result "$work/c1" thrust_force_N)"
+in_range "$(result "$work/c1" width_mm)" 0.999 1.001 || fail "width_mm"
+for k in main_force_std_N thrust_force_std_N cracks_tensile cracks_shear subsurface_damage_depth_um; do
+  in_range "$(result "$work/c1" $k)" -1 1e30 || fail "$k missing"
+done
+for k in n_particles steps wall_time_s particle_steps_per_s; do
+  in_range "$(value "$work/c1" $k)" 0 1e30 || fail "$k missing or not positive"
+done
+"$bin" run "$grooved" "${small[@]}" --set cut.length_mm=0.03 --set grooves.depth_mm=0.05 --set grooves.pitch_mm=0.05 --set grooves.width_mm=0.04 \
+    --out "$work/g1" --threads 1 >/dev/null 2>"$work/err" || fail "grooved cut: $(cat "$work/err")"
+in_range "$(result "$work/g1" particles_removed_by_grooves)" 0 1e9 || fail "grooves removed no disks"
+awk -v a="$(value "$work/g1" n_particles)" -v b="$(value "$work/c1" n_particles)" 'BEGIN { exit !(a < b) }' ||
+  fail "grooved workpiece has no fewer disks"
+# A rerun (other frame spacing) gives identical forces; killed and resumed equals uninterrupted (forces,
+# crack table, frame list).
+"$bin" run "$scene" "${small[@]}" --set output.frame_every_samples=200 --out "$work/k_full" --threads 1 >/dev/null 2>&1 ||
+  fail "uninterrupted cut"
+cmp -s "$work/c1/forces.csv" "$work/k_full/forces.csv" || fail "a rerun gave different forces"
+"$bin" run "$scene" "${small[@]}" --set output.frame_every_samples=200 --out "$work/k_kill" --threads 1 --checkpoint-every 40 \
+    >/dev/null 2>&1 &
+pid=$!
+for _ in $(seq 1500); do [ -e "$work/k_kill/checkpoint.bin" ] && break; sleep 0.01; done
+kill -9 $pid 2>/dev/null || fail "the cut ended before it could be killed"
+wait $pid 2>/dev/null
+[ ! -e "$work/k_kill/summary.json" ] || fail "the killed cut had already finished"
+"$bin" resume "$work/k_kill" --threads 1 >/dev/null 2>"$work/err" || fail "resume cut: $(cat "$work/err")"
+for f in forces.csv cracks.csv result.pvd; do
+  cmp -s "$work/k_full/$f" "$work/k_kill/$f" || fail "resumed $f differs from the uninterrupted cut"
+done
+[ ! -e "$work/k_kill/checkpoint.bin" ] || fail "checkpoint left after the finished cut"
+
+# Replicates: one directory per packing seed, mean and spread in the top summary.
+expect_input_error "--replicates = 2" run "$src/data/scenes/dem_tension.json" --replicates 2 --out "$work/x"
+"$bin" run "$scene" "${small[@]}" --set cut.length_mm=0.03 --replicates 2 --out "$work/r" --threads 1 >/dev/null 2>"$work/err" ||
+  fail "replicates: $(cat "$work/err")"
+for f in summary.json replicate_1/forces.csv replicate_2/forces.csv replicate_2/summary.json; do
+  [ -s "$work/r/$f" ] || fail "replicates: missing $f"
+done
+grep -q '"seed": 2' "$work/r/replicate_2/summary.json" || fail "replicate 2 does not use seed 2"
+in_range "$(result "$work/r" main_force_replicate_std_N)" 0 1e4 || fail "main_force_replicate_std_N"
+echo "dem_cut_cli: ok"

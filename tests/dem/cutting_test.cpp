@@ -1,0 +1,249 @@
+// Orthogonal cutting (seed 000 Section 4): groove and tool geometry, force sign convention, parameter
+// validation, and a small cut as a regression (forces, cracks, determinism, grooves).
+#include "kerf/dem/cutting.hpp"
+
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <numbers>
+
+#include "kerf/dem/specimen.hpp"
+#include "kerf/error.hpp"
+
+using namespace kerf::dem;
+using Catch::Matchers::WithinAbs;
+using Catch::Matchers::WithinRel;
+
+namespace {
+
+CutParams grooved(const std::string& shape) {
+  CutParams p;
+  p.groove_shape = shape;
+  p.groove_depth_m = 0.1e-3;
+  p.groove_pitch_m = 0.2e-3;
+  p.groove_width_m = 0.06e-3;
+  p.groove_bottom_width_m = 0.02e-3;
+  p.length_m = 1e-3;
+  return p;
+}
+
+double angle_deg(const std::array<double, 2>& a, const std::array<double, 2>& b) {
+  return std::atan2(b[1] - a[1], b[0] - a[0]) * 180 / std::numbers::pi;
+}
+
+}  // namespace
+
+TEST_CASE("cutting: groove outline membership", "[cutting]") {
+  const CutParams rect = grooved("rectangular");
+  CHECK(inside_groove_outline(rect, 0, 0.05e-3));
+  CHECK(inside_groove_outline(rect, 0.029e-3, 0.099e-3));
+  CHECK_FALSE(inside_groove_outline(rect, 0.031e-3, 0.05e-3));  // beyond the half-width
+  CHECK_FALSE(inside_groove_outline(rect, 0, 0.101e-3));        // below the groove bottom
+  CHECK_FALSE(inside_groove_outline(rect, 0, -1e-6));           // above the surface
+  const CutParams trap = grooved("trapezoidal");
+  // Top as wide as the rectangle, bottom 0.02 mm: at mid-depth the half-width is 0.02 mm.
+  CHECK(inside_groove_outline(trap, 0.029e-3, 0.001e-3));
+  CHECK(inside_groove_outline(trap, 0.019e-3, 0.05e-3));
+  CHECK_FALSE(inside_groove_outline(trap, 0.021e-3, 0.05e-3));
+  CHECK_FALSE(inside_groove_outline(trap, 0.011e-3, 0.1e-3));  // bottom narrower than the top
+  CHECK(inside_groove_outline(trap, 0.009e-3, 0.1e-3));
+  CHECK_FALSE(inside_groove_outline(CutParams{}, 0, 0.05e-3));  // shape none
+}
+
+TEST_CASE("cutting: grooves every pitch across the cut path", "[cutting]") {
+  CutParams p = grooved("rectangular");
+  auto c = groove_centres(p, 0, 1e-3);
+  REQUIRE(c.size() == 5);  // 0.9, 0.7, 0.5, 0.3, 0.1 mm: the last still right of the left edge
+  for (std::size_t k = 0; k < c.size(); ++k) CHECK_THAT(c[k], WithinAbs(0.9e-3 - 0.2e-3 * static_cast<double>(k), 1e-12));
+  p.length_m = 0.3e-3;  // only the grooves the tool reaches
+  c = groove_centres(p, 0, 1e-3);
+  CHECK(c.size() == 2);
+  CHECK(inside_any_groove(p, c, 1e-3, 0.9e-3, 0.95e-3));
+  CHECK_FALSE(inside_any_groove(p, c, 1e-3, 0.8e-3, 0.95e-3));  // between grooves
+  CHECK(groove_centres(CutParams{}, 0, 1e-3).empty());
+}
+
+TEST_CASE("cutting: tool faces have the rake and clearance angles, tip at the cut depth", "[cutting]") {
+  CutParams p;
+  p.depth_of_cut_m = 0.1e-3;
+  const auto v = tool_outline(p, 2e-3, 0.5e-3);
+  REQUIRE(v.size() == 3);  // rake top, tip, clearance end (closed by the back face)
+  // Tip = lowest point at the cut line; front-most point at x_front.
+  CHECK_THAT(v[1][1], WithinAbs(0.5e-3, 1e-15));
+  CHECK_THAT(std::min({v[0][0], v[1][0], v[2][0]}), WithinAbs(2e-3, 1e-15));
+  // Rake face from the tip upwards: the tool moves in -x, a rake of -15 deg leans the face forwards
+  // (towards -x) by 15 deg from the vertical.
+  CHECK_THAT(angle_deg(v[1], v[0]), WithinAbs(90 + 15, 1e-9));
+  // Clearance face from the tip backwards (+x): rises 15 deg above the machined surface.
+  CHECK_THAT(angle_deg(v[1], v[2]), WithinAbs(15, 1e-9));
+  // First contact with a workpiece whose top is one depth of cut above the tip: the rake face there,
+  // 0.1 mm tan 15 deg ahead of the tip.
+  CHECK_THAT(leading_x_in_band(v, 0.5e-3, 0.6e-3), WithinAbs(v[1][0] - 0.1e-3 * std::tan(15 * std::numbers::pi / 180), 1e-12));
+  p.rake_deg = 10;
+  p.clearance_deg = 7;
+  const auto w = tool_outline(p, 0, 0);
+  CHECK_THAT(angle_deg(w[1], w[0]), WithinAbs(90 - 10, 1e-9));
+  CHECK_THAT(angle_deg(w[1], w[2]), WithinAbs(7, 1e-9));
+  CHECK_THAT(leading_x_in_band(w, 0, 0.1e-3), WithinAbs(w[1][0], 1e-12));  // positive rake: the tip leads
+}
+
+TEST_CASE("cutting: a rounded edge is tangent to both faces and touches the cut line", "[cutting]") {
+  CutParams p;
+  p.edge_radius_m = 5e-6;
+  p.edge_segments = 6;
+  const auto v = tool_outline(p, 0, 1e-3);
+  REQUIRE(v.size() == 2 + 7);
+  CHECK_THAT(angle_deg(v[1], v[0]), WithinAbs(105, 1e-9));  // rake face direction kept
+  CHECK_THAT(angle_deg(v[7], v[8]), WithinAbs(15, 1e-9));   // clearance face direction kept
+  double y_min = 1e300;
+  for (const auto& q : v) y_min = std::min(y_min, q[1]);
+  CHECK_THAT(y_min, WithinAbs(1e-3, 1e-15));
+  // Arc points all at the radius from a common centre: equal chords.
+  const double chord = std::hypot(v[2][0] - v[1][0], v[2][1] - v[1][1]);
+  for (int k = 2; k < 7; ++k)
+    CHECK_THAT(std::hypot(v[static_cast<std::size_t>(k + 1)][0] - v[static_cast<std::size_t>(k)][0],
+                          v[static_cast<std::size_t>(k + 1)][1] - v[static_cast<std::size_t>(k)][1]),
+               WithinRel(chord, 1e-9));
+}
+
+TEST_CASE("cutting: force signs (material resisting the tool gives positive main and thrust)", "[cutting]") {
+  // The tool moves in -x: disks pushed ahead of it push it back (+x) and up (+y).
+  const auto f = tool_force_components(3.0, 2.0);
+  CHECK(f[0] == 3.0);
+  CHECK(f[1] == 2.0);
+  // Engine check: one held disk in the tool's path.
+  Material m;
+  Simulation sim(m, {});
+  const int d = sim.add_particle(0, 0, 10e-6);
+  sim.particles().group[static_cast<std::size_t>(d)] = 1;
+  CutParams p;
+  p.depth_of_cut_m = 20e-6;
+  for (auto [a, b] : {std::pair{0, 1}, std::pair{1, 2}, std::pair{2, 0}}) {
+    // Tip 5 um below the disk's centre, rake face crossing y = 0 at x = 8 um: it overlaps the disk's right side.
+    const double x_front = 8e-6 - 55e-6 * std::tan(15 * std::numbers::pi / 180);
+    const auto v = tool_outline(p, x_front, -5e-6);
+    sim.add_wall({v[static_cast<std::size_t>(a)][0], v[static_cast<std::size_t>(a)][1], v[static_cast<std::size_t>(b)][0],
+                  v[static_cast<std::size_t>(b)][1], -1, 0});
+  }
+  sim.initialise();
+  sim.evaluate_forces();
+  double fx = 0, fy = 0;
+  for (const auto& w : sim.walls()) fx += w.fx, fy += w.fy;
+  const auto g = tool_force_components(fx, fy);
+  CHECK(g[0] > 0);
+  CHECK(g[1] > 0);  // the negative rake face presses the disk down: the disk pushes the tool up
+}
+
+TEST_CASE("cutting: parameters are validated with the dotted key", "[cutting]") {
+  CutParams p = grooved("trapezoidal");
+  p.groove_bottom_width_m = 0.07e-3;
+  CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains("grooves.bottom_width_mm = 0.07"));
+  p = grooved("rectangular");
+  p.groove_width_m = 0.3e-3;
+  CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains("grooves.width_mm = 0.3"));
+  p = CutParams{};
+  p.rake_deg = 60;
+  p.clearance_deg = 40;
+  CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains("tool.clearance_deg = 40"));
+  p = CutParams{};
+  p.edge_radius_m = 1e-3;
+  CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains("tool.edge_radius_um = 1000"));
+  kerf::Json scene{{"cut", {{"depth_of_cut_mm", 0.1}, {"length_mm", 0.2}}}, {"grooves", {{"shape", "triangular"}}}};
+  kerf::ObjectReader root(scene, "");
+  CHECK_THROWS_AS(read_cut_params(root), kerf::InputError);
+}
+
+TEST_CASE("cutting: crack places and subsurface damage depth", "[cutting]") {
+  std::vector<CrackEvent> cracks{{0, 0, 1.0e-3, 0, 1e-6, BreakMode::tension, 0, 0},
+                                 {0, 0, 0.85e-3, 0, 1e-6, BreakMode::shear, 1, 0},
+                                 {0, 0, 0.80e-3, 0, 1e-6, BreakMode::tension, 2, 0}};
+  const CutCrackCounts n = count_cut_cracks(cracks, 0.9e-3);
+  CHECK(n.tensile == 2);
+  CHECK(n.shear == 1);
+  CHECK(n.chip == 1);
+  CHECK(n.subsurface == 2);
+  CHECK_THAT(n.subsurface_damage_depth_m, WithinAbs(0.1e-3, 1e-15));
+  CHECK(std::string(crack_place(0.95e-3, 0.9e-3)) == "chip");
+}
+
+TEST_CASE("cutting: a small cut regression (forces, cracks, determinism, grooves)", "[cutting]") {
+  SpecimenSpec spec;
+  spec.width_m = 0.4e-3;
+  spec.height_m = 0.25e-3;
+  spec.radius_min_m = 10e-6;
+  spec.radius_max_m = 13e-6;
+  spec.growth_steps = 2000;
+  spec.relax_steps = 500;
+  spec.seed = 3;
+  Material m;
+  SpecimenReport report;
+  const Simulation specimen = make_specimen(m, spec, report);
+  CutParams p;
+  p.depth_of_cut_m = 0.05e-3;
+  p.speed_m_per_s = 2;
+  p.length_m = 0.08e-3;
+  const auto run = [&](const CutParams& params) {
+    CutRun r(specimen, params);
+    while (r.advance()) {}
+    return r.result();
+  };
+  const CutResult a = run(p);
+  INFO("main " << a.main_force_n << " N, thrust " << a.thrust_force_n << " N, cracks " << a.cracks.tensile << "+"
+               << a.cracks.shear << " (chip " << a.cracks.chip << ")");
+  CHECK(std::isfinite(a.main_force_n));
+  CHECK(std::isfinite(a.thrust_force_n));
+  CHECK(a.main_force_n > 0);
+  CHECK(a.thrust_force_n > 0);
+  CHECK(a.main_force_std_n > 0);
+  CHECK(a.n_steady_samples > 10);
+  CHECK(a.cracks.tensile + a.cracks.shear > 0);
+  CHECK(a.cracks.chip > 0);
+  CHECK(a.samples.back().travel_m >= p.length_m);
+  CHECK(a.n_removed_by_grooves == 0);
+  // Same specimen and parameters: bit-identical forces.
+  const CutResult b = run(p);
+  REQUIRE(b.samples.size() == a.samples.size());
+  for (std::size_t k = 0; k < a.samples.size(); ++k) {
+    CHECK(a.samples[k].main_force_n == b.samples[k].main_force_n);
+    CHECK(a.samples[k].thrust_force_n == b.samples[k].thrust_force_n);
+  }
+  // Saved halfway and restored: the rest of the cut is bit-identical.
+  CutRun half(specimen, p);
+  for (std::size_t k = 0; k < a.samples.size() / 2; ++k) half.advance();
+  CutRun restored = CutRun::deserialize(half.serialize());
+  while (restored.advance()) {}
+  REQUIRE(restored.result().samples.size() == a.samples.size());
+  CHECK(restored.result().samples.back().main_force_n == a.samples.back().main_force_n);
+  CHECK(restored.result().main_force_n == a.main_force_n);
+  CHECK(restored.result().cracks.chip == a.cracks.chip);
+  // Grooves: fewer particles.
+  CutParams g = p;
+  g.groove_shape = "rectangular";
+  g.groove_depth_m = p.depth_of_cut_m;
+  g.groove_pitch_m = 0.1e-3;
+  g.groove_width_m = 0.04e-3;
+  std::size_t removed = 0;
+  const Simulation work = make_workpiece(specimen, g, removed);
+  CHECK(removed > 0);
+  CHECK(work.particles().size() + removed == specimen.particles().size());
+  CHECK(work.bonds().size() < specimen.bonds().size());
+  // An inverted trapezoid with the same top width removes fewer disks than the rectangle.
+  g.groove_width_m = 0.08e-3;
+  std::size_t removed_rectangle = 0, removed_trapezoid = 0;
+  make_workpiece(specimen, g, removed_rectangle);
+  g.groove_shape = "trapezoidal";
+  g.groove_bottom_width_m = 0.01e-3;
+  make_workpiece(specimen, g, removed_trapezoid);
+  CHECK(removed_trapezoid > 0);
+  CHECK(removed_trapezoid < removed_rectangle);
+  // Held disks: the left and bottom boundary (group 1), none at the free top right.
+  int held = 0;
+  std::size_t top_right = 0;
+  const auto& q = work.particles();
+  for (std::size_t k = 0; k < q.size(); ++k) {
+    held += q.group[k] == 1;
+    if (q.x[k] + q.y[k] > q.x[top_right] + q.y[top_right]) top_right = k;
+  }
+  CHECK(held > 0);
+  CHECK(q.group[top_right] == 0);
+}
