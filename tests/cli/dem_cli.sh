@@ -2,21 +2,7 @@
 # kerf-dem command-line behaviour: bad input exits 2 naming field, value and expectation; a small tension
 # run writes complete outputs; the same run on 1 and 2 threads gives identical curves.
 # Usage: dem_cli.sh <dir of built programs> <source dir>
-set -uo pipefail
-bin="$1/kerf-dem"
-src="$2"
-work="$(mktemp -d)"
-trap 'rm -rf "$work"' EXIT
-export KERF_DATA_DIR="$src/data"
-fail() { echo "FAIL: $*" >&2; exit 1; }
-
-expect_input_error() {  # expect_input_error <text expected on stderr> <args...>
-  local want="$1"; shift
-  "$bin" "$@" >"$work/out" 2>"$work/err"
-  local rc=$?
-  [ $rc -eq 2 ] || fail "exit $rc (expected 2) for: $* ($(cat "$work/err"))"
-  grep -qF -- "$want" "$work/err" || fail "stderr lacks '$want' for: $*: $(cat "$work/err")"
-}
+source "$(dirname "$0")/lib/dem_common.sh" "$@"
 
 scene="$src/data/scenes/dem_tension.json"
 expect_input_error "specimen.radius_min_um = -1: expected a positive value" run "$scene" --set specimen.radius_min_um=-1 --out "$work/x"

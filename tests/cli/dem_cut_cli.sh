@@ -3,21 +3,7 @@
 # a small cut writes forces.csv, cracks.csv (with place), summary.json, frames and a PNG; the grooved
 # scene removes disks; a rerun gives identical forces.
 # Usage: dem_cut_cli.sh <dir of built programs> <source dir>
-set -uo pipefail
-bin="$1/kerf-dem"
-src="$2"
-work="$(mktemp -d)"
-trap 'rm -rf "$work"' EXIT
-export KERF_DATA_DIR="$src/data"
-fail() { echo "FAIL: $*" >&2; exit 1; }
-
-expect_input_error() {  # expect_input_error <text expected on stderr> <args...>
-  local want="$1"; shift
-  "$bin" "$@" >"$work/out" 2>"$work/err"
-  local rc=$?
-  [ $rc -eq 2 ] || fail "exit $rc (expected 2) for: $* ($(cat "$work/err"))"
-  grep -qF -- "$want" "$work/err" || fail "stderr lacks '$want' for: $*: $(cat "$work/err")"
-}
+source "$(dirname "$0")/lib/dem_common.sh" "$@"
 
 scene="$src/data/scenes/dem_cut.json"
 grooved="$src/data/scenes/dem_cut_grooved.json"
