@@ -273,17 +273,18 @@ AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
   }
   scene.flow_stress_terms = terms;
   const auto has_term = [&](const char* t) { return std::find(terms.begin(), terms.end(), t) != terms.end(); };
-  if (has_term("johnson_cook") || scene.force == ForceModel::oxley || scene.deformation == DeformationModel::oxley) {
-    scene.flow_stress.johnson_cook = johnson_cook_from_material(scene.material, "material");
-  }
-  if (!has_term("johnson_cook") && scene.force != ForceModel::oxley) scene.flow_stress.johnson_cook.reset();
+  // Oxley needs the Johnson-Cook law even when the flow stress of the force model does not add it.
+  const bool uses_oxley = scene.force == ForceModel::oxley || scene.deformation == DeformationModel::oxley;
+  std::optional<JohnsonCookParams> johnson_cook;
+  if (has_term("johnson_cook") || uses_oxley) johnson_cook = johnson_cook_from_material(scene.material, "material");
+  if (has_term("johnson_cook") || scene.force == ForceModel::oxley) scene.flow_stress.johnson_cook = johnson_cook;
   if (has_term("hall_petch") || has_term("dislocation")) {
     const auto micro = microstructure_from_material(scene.material, "material");
     if (has_term("hall_petch")) scene.flow_stress.hall_petch = micro.hall_petch;
     if (has_term("dislocation")) scene.flow_stress.dislocation = micro.dislocation;
   }
   const double room_K =
-      scene.flow_stress.johnson_cook ? scene.flow_stress.johnson_cook->room_temperature_K : 293.15;
+      johnson_cook ? johnson_cook->room_temperature_K : 293.15;
   scene.workpiece_temperature_K = workpiece_temperature.value_or(room_K);
   if (const Json* jc_group = scene.material.group("johnson_cook"); jc_group && jc_group->contains("melting_temperature_K")) {
     scene.flow_stress.melting_temperature_K = jc_group->at("melting_temperature_K").get<double>();
@@ -307,9 +308,9 @@ AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
                      "johnson_cook alone with models.force = oxley (Oxley's solution uses the Johnson-Cook law; "
                      "use force merchant or liu_li with deformation oxley to add microstructure terms)");
   }
-  if (scene.force == ForceModel::oxley || scene.deformation == DeformationModel::oxley) {
+  if (uses_oxley) {
     OxleyParams oxley;
-    oxley.johnson_cook = *scene.flow_stress.johnson_cook;
+    oxley.johnson_cook = *johnson_cook;
     oxley.policy = scene.flow_stress.policy;
     oxley.thermal = thermal_from_material(scene.material, "material");
     const auto factors = oxley_factors_from_material(scene.material, "material");

@@ -196,3 +196,16 @@ TEST_CASE("Oxley refuses microstructure terms it cannot use", "[scene][oxley]") 
   doc["models"]["force"] = "oxley";
   CHECK_THROWS_WITH(kerf::parse_analytic_scene(doc), Contains("models.flow_stress"));
 }
+
+TEST_CASE("Oxley deformation works when the force model's flow stress leaves Johnson-Cook out", "[scene][oxley]") {
+  auto doc = orthogonal_scene();
+  doc["models"]["deformation"] = "oxley";
+  doc["models"]["flow_stress"] = Json::array({"hall_petch"});
+  const auto scene = kerf::parse_analytic_scene(doc);
+  CHECK_FALSE(scene.flow_stress.johnson_cook.has_value());
+  REQUIRE(scene.oxley.has_value());
+  CHECK_THAT(scene.oxley->johnson_cook.A_Pa, WithinRel(8000e6, 1e-12));  // p-SiC's (assumed) Johnson-Cook A
+  const auto p = kerf::predict(scene);
+  CHECK(p.flow.johnson_cook_Pa == 0.0);
+  CHECK(p.flow.total_Pa == p.flow.hall_petch_Pa);
+}
