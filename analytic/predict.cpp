@@ -20,7 +20,6 @@ namespace {
 constexpr double kTypicalStrainRateConstant = 5.0;
 // Seed 003 validated the contact-length models for A2024-T351 up to h = 0.1 mm (chip segmentation above).
 constexpr double kContactLengthValidatedThickness_m = 0.1e-3;
-constexpr double kSharpEdgeRatio = 0.05;
 
 /// Shear-plane strain and Oxley's strain-rate estimate for a sharp tool (physics-analytic.md §3).
 DeformationState shear_plane_state(const AnalyticScene& scene, double shear_angle_rad) {
@@ -82,6 +81,14 @@ void add_contact_lengths(const AnalyticScene& scene, double friction_angle_rad, 
   }
 }
 
+/// The sharp-tool models (Merchant, Oxley) ignore the edge: say so when it is not small against t0.
+void warn_if_edge_ignored(const AnalyticScene& scene, const char* model_and_remedy, Prediction& p) {
+  const double ratio = scene.edge_radius_m / scene.uncut_chip_thickness_m;
+  if (ratio <= kSharpEdgeRatio) return;
+  p.warnings.push_back(
+      fmt::format("edge radius is {:.0f} % of the uncut chip thickness: {}", 100.0 * ratio, model_and_remedy));
+}
+
 /// models.force = oxley: forces, shear angle and friction angle are Oxley's own; the flow stress reported is
 /// the Johnson-Cook stress in zone AB.
 Prediction predict_oxley_forces(const AnalyticScene& scene, const OxleyResult& oxley, Prediction p) {
@@ -95,11 +102,8 @@ Prediction predict_oxley_forces(const AnalyticScene& scene, const OxleyResult& o
   p.state = shear_plane_state_of(oxley);
   p.flow.johnson_cook_Pa = p.flow.total_Pa = oxley.shear_plane_flow_stress_Pa;
   p.flow.shear_Pa = oxley.shear_plane_shear_stress_Pa;
-  if (scene.edge_radius_m > kSharpEdgeRatio * scene.uncut_chip_thickness_m) {
-    p.warnings.push_back(fmt::format("edge radius is {:.0f} % of the uncut chip thickness: extended Oxley assumes a "
-                                     "sharp tool (use models.force = liu_li with deformation = oxley)",
-                                     100.0 * scene.edge_radius_m / scene.uncut_chip_thickness_m));
-  }
+  warn_if_edge_ignored(scene, "extended Oxley assumes a sharp tool (use models.force = liu_li with deformation = oxley)",
+                       p);
   // Contact lengths use the scene's friction if given, else Oxley's friction angle lambda.
   add_contact_lengths(scene, p.friction_angle_rad, p);
   return p;
@@ -147,7 +151,6 @@ Prediction predict(const AnalyticScene& scene) {
     const auto model =
         scene.shear_angle == ShearAngleSource::merchant ? ShearAngleModel::merchant : ShearAngleModel::lee_shaffer;
     p.shear_angle_rad = shear_angle(model, scene.rake_rad, beta);
-    check_shear_angle(p.shear_angle_rad, scene);
     p.chip_ratio = chip_ratio_from_shear_angle(p.shear_angle_rad, scene.rake_rad);
   }
   check_shear_angle(p.shear_angle_rad, scene);
@@ -164,11 +167,7 @@ Prediction predict(const AnalyticScene& scene) {
   ForcePerWidth per_width;
   if (scene.force == ForceModel::merchant) {
     per_width = sharp_tool_force_per_width(k_s, t0, p.shear_angle_rad, beta, scene.rake_rad);
-    if (scene.edge_radius_m > kSharpEdgeRatio * t0) {
-      p.warnings.push_back(fmt::format("edge radius is {:.0f} % of the uncut chip thickness: the sharp-tool model "
-                                       "ignores it (use models.force = liu_li)",
-                                       100.0 * scene.edge_radius_m / t0));
-    }
+    warn_if_edge_ignored(scene, "the sharp-tool model ignores it (use models.force = liu_li)", p);
   } else {
     LiuLiParams params = scene.liu_li;
     params.rake_rad = scene.rake_rad;

@@ -33,8 +33,6 @@ const MaterialRecord& MaterialCache::get(const Json& spec, const std::string& pa
 
 namespace {
 
-// Selection rule of models.force = "auto": the cheapest model that is valid for the scene.
-constexpr double kSharpEdgeRatio = 0.05;  // r / t0 below which the edge changes the force by only a few percent
 
 template <typename Enum>
 Enum choice_index(const std::string& name, const std::vector<std::string>& names) {

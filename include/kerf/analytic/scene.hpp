@@ -26,6 +26,10 @@
 namespace kerf {
 
 enum class ForceModel { merchant, liu_li, oxley };
+
+/// r / t0 below which the edge changes the force by only a few percent: models.force = auto takes the
+/// sharp-tool model there, and the sharp-tool models warn above it.
+inline constexpr double kSharpEdgeRatio = 0.05;
 enum class DeformationModel { room_temperature, given, oxley };
 enum class ShearAngleSource { merchant, lee_shaffer, chip_ratio };
 enum class TurningThickness { equivalent, maximum };
