@@ -6,6 +6,7 @@
 #include <cctype>
 #include <cmath>
 #include <map>
+#include <memory>
 
 #include "kerf/analytic/evaluate.hpp"
 #include "kerf/comparison_config.hpp"
@@ -236,13 +237,14 @@ SceneComparison compare_scene(const Json& scene_document, const std::filesystem:
   }
 
   // Predictions at each measured row's conditions, and a model curve for the plots.
-  const auto predict_at = [document, conditions, quantities, spec](const std::vector<ConditionValue>& at) {
+  // The curve is evaluated at many points for the plots: one material cache serves them all.
+  auto cache = std::make_shared<MaterialCache>();
+  const auto predict_at = [document, conditions, quantities, spec, cache](const std::vector<ConditionValue>& at) {
     Json d = document;
     for (std::size_t i = 0; i < conditions.size(); ++i) {
       set_path(d, conditions[i].scene_path, at[i].si.value_or(0.0) / spec.conditions[i].unit.si);
     }
-    MaterialCache cache;
-    const Columns columns = evaluate_scene_columns(d, &cache);
+    const Columns columns = evaluate_scene_columns(d, cache.get());
     std::vector<double> values;
     for (std::size_t q = 0; q < quantities.size(); ++q) {
       values.push_back(column_value(columns, quantities[q].prediction_column) * spec.quantities[q].unit.si);
