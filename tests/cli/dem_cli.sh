@@ -41,17 +41,8 @@ ck=(--set specimen.width_mm=0.2 --set specimen.height_mm=0.4 --set specimen.grow
     --set loading.quasi_static_check=false --set loading.speed_m_per_s=0.1 --set output.frame_every_samples=20)
 comp="$src/data/scenes/dem_compression.json"
 "$bin" run "$comp" "${ck[@]}" --out "$work/c_full" --threads 1 >/dev/null 2>&1 || fail "uninterrupted compression"
-"$bin" run "$comp" "${ck[@]}" --out "$work/c_kill" --threads 1 --checkpoint-every 3 >/dev/null 2>&1 &
-pid=$!
-for _ in $(seq 1500); do [ -e "$work/c_kill/checkpoint.bin" ] && break; sleep 0.02; done
-kill -9 $pid 2>/dev/null || fail "the run ended before it could be killed"
-wait $pid 2>/dev/null
-[ ! -e "$work/c_kill/summary.json" ] || fail "the killed run had already finished"
-"$bin" resume "$work/c_kill" --threads 1 >/dev/null 2>"$work/err" || fail "resume: $(cat "$work/err")"
-for f in curve.csv cracks.csv result.pvd; do
-  cmp -s "$work/c_full/$f" "$work/c_kill/$f" || fail "resumed $f differs from the uninterrupted run"
-done
-[ ! -e "$work/c_kill/checkpoint.bin" ] || fail "checkpoint left after the finished run"
+expect_kill_resume_equal "$work/c_full" "$work/c_kill" "curve.csv cracks.csv result.pvd" \
+  run "$comp" "${ck[@]}" --threads 1 --checkpoint-every 3
 expect_input_error "DIR = $work/nowhere" resume "$work/nowhere"
 expect_input_error "calibration.free = stiffness" run "$src/data/scenes/dem_calibrate.json" --set 'calibration.free=["stiffness"]' --out "$work/x"
 

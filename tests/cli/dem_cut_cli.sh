@@ -47,18 +47,8 @@ awk -v a="$(value "$work/g1" n_particles)" -v b="$(value "$work/c1" n_particles)
 "$bin" run "$scene" "${small[@]}" --set output.frame_every_samples=200 --out "$work/k_full" --threads 1 >/dev/null 2>&1 ||
   fail "uninterrupted cut"
 cmp -s "$work/c1/forces.csv" "$work/k_full/forces.csv" || fail "a rerun gave different forces"
-"$bin" run "$scene" "${small[@]}" --set output.frame_every_samples=200 --out "$work/k_kill" --threads 1 --checkpoint-every 40 \
-    >/dev/null 2>&1 &
-pid=$!
-for _ in $(seq 1500); do [ -e "$work/k_kill/checkpoint.bin" ] && break; sleep 0.01; done
-kill -9 $pid 2>/dev/null || fail "the cut ended before it could be killed"
-wait $pid 2>/dev/null
-[ ! -e "$work/k_kill/summary.json" ] || fail "the killed cut had already finished"
-"$bin" resume "$work/k_kill" --threads 1 >/dev/null 2>"$work/err" || fail "resume cut: $(cat "$work/err")"
-for f in forces.csv cracks.csv result.pvd; do
-  cmp -s "$work/k_full/$f" "$work/k_kill/$f" || fail "resumed $f differs from the uninterrupted cut"
-done
-[ ! -e "$work/k_kill/checkpoint.bin" ] || fail "checkpoint left after the finished cut"
+expect_kill_resume_equal "$work/k_full" "$work/k_kill" "forces.csv cracks.csv result.pvd" \
+  run "$scene" "${small[@]}" --set output.frame_every_samples=200 --threads 1 --checkpoint-every 40
 
 # Replicates: one directory per packing seed, mean and spread in the top summary.
 expect_input_error "--replicates = 2" run "$src/data/scenes/dem_tension.json" --replicates 2 --out "$work/x"

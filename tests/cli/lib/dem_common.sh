@@ -15,3 +15,23 @@ expect_input_error() {  # expect_input_error <text expected on stderr> <args...>
   [ $rc -eq 2 ] || fail "exit $rc (expected 2) for: $* ($(cat "$work/err"))"
   grep -qF -- "$want" "$work/err" || fail "stderr lacks '$want' for: $*: $(cat "$work/err")"
 }
+
+# expect_kill_resume_equal <full dir> <kill dir> "<files>" <run args...>: runs kerf-dem with the args and
+# --out <kill dir> in the background, kills it (-9) once it has written a checkpoint, resumes it, and checks
+# that each file equals the one in <full dir> (an uninterrupted run of the same args) and that no
+# checkpoint is left.
+expect_kill_resume_equal() {
+  local full="$1" kill_dir="$2" files="$3"; shift 3
+  "$bin" "$@" --out "$kill_dir" >/dev/null 2>&1 &
+  local pid=$!
+  for _ in $(seq 1500); do [ -e "$kill_dir/checkpoint.bin" ] && break; sleep 0.01; done
+  kill -9 $pid 2>/dev/null || fail "the run ended before it could be killed: $*"
+  wait $pid 2>/dev/null
+  [ ! -e "$kill_dir/summary.json" ] || fail "the killed run had already finished: $*"
+  "$bin" resume "$kill_dir" --threads 1 >/dev/null 2>"$work/err" || fail "resume: $(cat "$work/err")"
+  local f
+  for f in $files; do
+    cmp -s "$full/$f" "$kill_dir/$f" || fail "resumed $f differs from the uninterrupted run: $*"
+  done
+  [ ! -e "$kill_dir/checkpoint.bin" ] || fail "checkpoint left after the finished run: $*"
+}
