@@ -5,6 +5,8 @@
 
 #include <catch2/catch.hpp>
 
+#include "quick_specimen.hpp"
+
 #include "kerf/dem/specimen.hpp"
 
 using namespace kerf::dem;
@@ -13,12 +15,7 @@ using Catch::Matchers::WithinRel;
 namespace {
 
 Simulation tiny_specimen() {
-  SpecimenSpec spec;
-  spec.width_m = 0.16e-3;
-  spec.height_m = 0.32e-3;
-  spec.growth_steps = 2000;
-  spec.relax_steps = 500;
-  spec.seed = 3;
+  const SpecimenSpec spec = kerf::dem::testing::quick_random_spec(0.16e-3, 0.32e-3, 3);
   SpecimenReport report;
   return make_specimen(Material{}, spec, report);
 }

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <catch2/catch.hpp>
+
+#include "quick_specimen.hpp"
 #include <cmath>
 #include <numbers>
 
@@ -167,14 +169,9 @@ TEST_CASE("cutting: crack places and subsurface damage depth", "[cutting]") {
 }
 
 TEST_CASE("cutting: a small cut regression (forces, cracks, determinism, grooves)", "[cutting]") {
-  SpecimenSpec spec;
-  spec.width_m = 0.4e-3;
-  spec.height_m = 0.25e-3;
+  SpecimenSpec spec = kerf::dem::testing::quick_random_spec(0.4e-3, 0.25e-3, 3);
   spec.radius_min_m = 10e-6;
   spec.radius_max_m = 13e-6;
-  spec.growth_steps = 2000;
-  spec.relax_steps = 500;
-  spec.seed = 3;
   Material m;
   SpecimenReport report;
   const Simulation specimen = make_specimen(m, spec, report);

@@ -3,6 +3,8 @@
 #include "kerf/dem/lab_test.hpp"
 
 #include <catch2/catch.hpp>
+
+#include "quick_specimen.hpp"
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -57,12 +59,7 @@ TEST_CASE("lab test: hexagonal specimen's E and nu match the lattice closed form
 TEST_CASE("lab test: small random specimen regression", "[lab_test]") {
   // Reference values with their tolerance; regenerate with KERF_REGENERATE_REFERENCE=1.
   const std::string file = std::string(KERF_SOURCE_DIR) + "/tests/dem/reference/lab_small.json";
-  SpecimenSpec spec;
-  spec.width_m = 0.2e-3;
-  spec.height_m = 0.4e-3;
-  spec.growth_steps = 2000;
-  spec.relax_steps = 500;
-  spec.seed = 7;
+  const SpecimenSpec spec = kerf::dem::testing::quick_random_spec(0.2e-3, 0.4e-3, 7);
   Material m;
   SpecimenReport report;
   const Simulation sim = make_specimen(m, spec, report);

@@ -1,0 +1,20 @@
+#pragma once
+// A random specimen spec with a short genesis (2000 growth and 500 relaxation steps), for tests that need a
+// small bonded specimen in well under a second. Default radii of SpecimenSpec unless the test sets them.
+#include <cstdint>
+
+#include "kerf/dem/specimen.hpp"
+
+namespace kerf::dem::testing {
+
+inline SpecimenSpec quick_random_spec(double width_m, double height_m, std::uint64_t seed) {
+  SpecimenSpec spec;
+  spec.width_m = width_m;
+  spec.height_m = height_m;
+  spec.growth_steps = 2000;
+  spec.relax_steps = 500;
+  spec.seed = seed;
+  return spec;
+}
+
+}  // namespace kerf::dem::testing
