@@ -343,17 +343,20 @@ struct TestProgress {
   std::string scene_dir;
 };
 
+/// Writes the next VTK frame (particles and bonds, cracks) and records it for the .pvd series.
+void write_frame_files(const fs::path& out, const Simulation& sim, TestProgress& tp) {
+  const std::string name = fmt::format("frame_{:04d}.vtp", tp.frames.size());
+  const std::string cracks = fmt::format("cracks_{:04d}.vtp", tp.frames.size());
+  write_vtp_frame(out / name, sim);
+  write_cracks_vtp(out / cracks, sim.cracks());
+  tp.frames.push_back({sim.time(), {name, cracks}});
+}
+
 /// Runs (or continues) a tension or compression test to its end, then the quasi-static check and outputs.
 int continue_test(const Scene& scene, const Json& doc, const Simulation& specimen, Json summary, const fs::path& out,
                   int checkpoint_every, LabTestRun run, TestProgress tp) {
   // Frames: every frame_every_samples samples, plus the final state.
-  const auto write_frame = [&](const Simulation& sim) {
-    const std::string name = fmt::format("frame_{:04d}.vtp", tp.frames.size());
-    const std::string cracks = fmt::format("cracks_{:04d}.vtp", tp.frames.size());
-    write_vtp_frame(out / name, sim);
-    write_cracks_vtp(out / cracks, sim.cracks());
-    tp.frames.push_back({sim.time(), {name, cracks}});
-  };
+  const auto write_frame = [&](const Simulation& sim) { write_frame_files(out, sim, tp); };
   if (scene.frame_every_samples > 0 && tp.sample_index == 0) write_frame(specimen);
   const double n = static_cast<double>(specimen.particles().size());
   const double steps = scene.loading.max_strain * run.result().height_m / (2 * scene.loading.speed_m_per_s * run.simulation().time_step());
@@ -415,13 +418,7 @@ int continue_test(const Scene& scene, const Json& doc, const Simulation& specime
 /// runs (or continues, from a checkpoint) a cut to the end of its travel and writes the outputs.
 Json continue_cut(const Scene& scene, const Json& doc, Json summary, const fs::path& out, int checkpoint_every, CutRun run,
                   TestProgress tp) {
-  const auto write_frame = [&](const Simulation& sim) {
-    const std::string name = fmt::format("frame_{:04d}.vtp", tp.frames.size());
-    const std::string cracks = fmt::format("cracks_{:04d}.vtp", tp.frames.size());
-    write_vtp_frame(out / name, sim);
-    write_cracks_vtp(out / cracks, sim.cracks());
-    tp.frames.push_back({sim.time(), {name, cracks}});
-  };
+  const auto write_frame = [&](const Simulation& sim) { write_frame_files(out, sim, tp); };
   if (scene.frame_every_samples > 0 && tp.sample_index == 0) write_frame(run.simulation());
   const double n = static_cast<double>(run.result().n_particles);
   const double steps = scene.cut.length_m / (scene.cut.speed_m_per_s * run.result().time_step_s);
