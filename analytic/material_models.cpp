@@ -92,4 +92,17 @@ OxleyHeatFactors oxley_factors_from_material(const MaterialRecord& material, con
   return f;
 }
 
+OxleyParams oxley_params_from_material(const MaterialRecord& material, const std::string& path,
+                                       const JohnsonCookPolicy& policy) {
+  OxleyParams oxley;
+  oxley.johnson_cook = johnson_cook_from_material(material, path);
+  oxley.policy = policy;
+  oxley.thermal = thermal_from_material(material, path);
+  const auto factors = oxley_factors_from_material(material, path);
+  oxley.eta = factors.eta;
+  oxley.psi = factors.psi;
+  oxley.validate(path);
+  return oxley;
+}
+
 }  // namespace kerf

@@ -306,17 +306,7 @@ AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
                      "johnson_cook alone with models.force = oxley (Oxley's solution uses the Johnson-Cook law; "
                      "use force merchant or liu_li with deformation oxley to add microstructure terms)");
   }
-  if (uses_oxley) {
-    OxleyParams oxley;
-    oxley.johnson_cook = *johnson_cook;
-    oxley.policy = scene.flow_stress.policy;
-    oxley.thermal = thermal_from_material(scene.material, "material");
-    const auto factors = oxley_factors_from_material(scene.material, "material");
-    oxley.eta = factors.eta;
-    oxley.psi = factors.psi;
-    oxley.validate("material");
-    scene.oxley = oxley;
-  }
+  if (uses_oxley) scene.oxley = oxley_params_from_material(scene.material, "material", scene.flow_stress.policy);
 
   // The regime check needs E, H and K_c; metals carry no brittle group and get none.
   if (const Json* brittle = scene.material.group("brittle");

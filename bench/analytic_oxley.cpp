@@ -22,6 +22,7 @@
 
 #include "kerf/analytic/oxley.hpp"
 #include "bench_util.hpp"
+#include "kerf/analytic/material_models.hpp"
 #include "kerf/io.hpp"
 #include "kerf/units.hpp"
 
@@ -29,17 +30,6 @@ namespace {
 
 using kerf::bench::relative_error;
 using kerf::bench::thread_cpu_seconds;
-
-kerf::OxleyParams aisi_1045() {
-  kerf::OxleyParams p;
-  p.johnson_cook = {.A_Pa = 553.1e6, .B_Pa = 600.8e6, .n = 0.234, .C = 0.0134, .m = 1.0,
-                    .reference_strain_rate_per_s = 1.0, .room_temperature_K = 298.15,
-                    .melting_temperature_K = 1733.15};
-  p.thermal = {.density_kg_per_m3 = 8000.0,
-               .conductivity_W_per_m_K = {52.61, -0.0281, 273.15},
-               .specific_heat_J_per_kg_K = {420.0, 0.504, 273.15}};
-  return p;
-}
 
 kerf::OxleyCut cut(double v_m_per_min, double t1_mm, double rake_deg) {
   return {.rake_rad = kerf::units::deg_to_rad(rake_deg), .uncut_chip_thickness_m = t1_mm * 1e-3, .width_m = 1.6e-3,
@@ -103,7 +93,9 @@ Row measure(const kerf::OxleyParams& params, const std::vector<kerf::OxleyCut>& 
 }  // namespace
 
 int main(int argc, char** argv) {
-  const kerf::OxleyParams params = aisi_1045();
+  // AISI 1045 from the bundled library (Jaspers & Dautzenberg 2002; Lalwani et al. 2009).
+  const kerf::OxleyParams params =
+      kerf::oxley_params_from_material(kerf::load_material(kerf::Json("aisi_1045"), "material"), "material");
   std::string csv = kerf::csv_line({"case_set", "tolerance", "n_cases", "converged", "time_per_solve_us",
                                     "solves_per_s", "wall_time_per_solve_us", "evaluations_per_solve",
                                     "max_rel_error_Fc", "max_rel_error_Ft",

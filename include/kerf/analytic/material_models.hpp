@@ -9,6 +9,7 @@
 #include "kerf/analytic/dislocation.hpp"
 #include "kerf/analytic/hall_petch.hpp"
 #include "kerf/analytic/johnson_cook.hpp"
+#include "kerf/analytic/oxley.hpp"
 #include "kerf/analytic/thermal.hpp"
 #include "kerf/material.hpp"
 
@@ -35,5 +36,8 @@ JohnsonCookParams johnson_cook_from_material(const MaterialRecord& material, con
 ThermalProperties thermal_from_material(const MaterialRecord& material, const std::string& path);
 MicrostructureModels microstructure_from_material(const MaterialRecord& material, const std::string& path);
 OxleyHeatFactors oxley_factors_from_material(const MaterialRecord& material, const std::string& path);
+/// The extended-Oxley material side: Johnson-Cook, thermal properties and eta/psi, validated.
+OxleyParams oxley_params_from_material(const MaterialRecord& material, const std::string& path,
+                                       const JohnsonCookPolicy& policy = {});
 
 }  // namespace kerf
