@@ -110,21 +110,22 @@ TrepanningValidation run_trepanning_validation(const std::filesystem::path& case
 
   // Acceptance.
   const auto& acc = v.acceptance;
-  if (v.theory_fit.axial.fit.max_abs_error_pct > acc.theory_column_max_abs_error_pct) {
-    v.failures.push_back(fmt::format("theory column, axial force: max |error| {:.2f} % > {:.2f} %",
-                                     v.theory_fit.axial.fit.max_abs_error_pct, acc.theory_column_max_abs_error_pct));
-  }
-  if (v.theory_fit.torque.fit.max_abs_error_pct > acc.theory_column_max_abs_error_pct) {
-    v.failures.push_back(fmt::format("theory column, torque: max |error| {:.2f} % > {:.2f} %",
-                                     v.theory_fit.torque.fit.max_abs_error_pct, acc.theory_column_max_abs_error_pct));
-  }
-  if (v.measured_fit.axial.fit.mean_abs_error_pct > acc.axial_mean_abs_error_pct) {
-    v.failures.push_back(fmt::format("fitted axial force: mean |error| {:.2f} % > {:.2f} %",
-                                     v.measured_fit.axial.fit.mean_abs_error_pct, acc.axial_mean_abs_error_pct));
-  }
-  if (v.measured_fit.torque.fit.mean_abs_error_pct > acc.torque_mean_abs_error_pct) {
-    v.failures.push_back(fmt::format("fitted torque: mean |error| {:.2f} % > {:.2f} %",
-                                     v.measured_fit.torque.fit.mean_abs_error_pct, acc.torque_mean_abs_error_pct));
+  struct Band {
+    const char* what;
+    const char* metric;
+    double value_pct, limit_pct;
+  };
+  const Band bands[] = {
+      {"theory column, axial force", "max", v.theory_fit.axial.fit.max_abs_error_pct, acc.theory_column_max_abs_error_pct},
+      {"theory column, torque", "max", v.theory_fit.torque.fit.max_abs_error_pct, acc.theory_column_max_abs_error_pct},
+      {"fitted axial force", "mean", v.measured_fit.axial.fit.mean_abs_error_pct, acc.axial_mean_abs_error_pct},
+      {"fitted torque", "mean", v.measured_fit.torque.fit.mean_abs_error_pct, acc.torque_mean_abs_error_pct},
+  };
+  for (const auto& band : bands) {
+    if (band.value_pct > band.limit_pct) {
+      v.failures.push_back(fmt::format("{}: {} |error| {:.2f} % > {:.2f} %", band.what, band.metric, band.value_pct,
+                                       band.limit_pct));
+    }
   }
   if (out_dir.empty()) return v;
 
