@@ -7,6 +7,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "kerf/plot.hpp"
 #include "kerf/units.hpp"
 
 namespace kerf::dem {
@@ -27,7 +28,11 @@ void write_specimen_png(const std::filesystem::path& path, const Simulation& sim
   const int width = aspect > 1 ? static_cast<int>(1000 / aspect) + 120 : 1100;
   const int height = aspect > 1 ? 1100 : static_cast<int>(1000 * aspect) + 120;
   const std::filesystem::path tmp = path.string() + ".tmp-png";
-  plsstrm(0);
+  // A stream of its own, closed with plend1() (plend() would end every stream), under the PLplot lock.
+  const auto plplot = lock_plplot();
+  PLINT previous_stream = 0, stream = 0;
+  plgstrm(&previous_stream);
+  plmkstrm(&stream);
   plsdev("pngcairo");
   plsfnam(tmp.string().c_str());
   plspage(0, 0, width, height, 0, 0);
@@ -54,7 +59,8 @@ void write_specimen_png(const std::filesystem::path& path, const Simulation& sim
   plcol0(1);
   for (const auto& w : sim.walls())
     if (w.enabled) pljoin(w.x0 * mx, w.y0 * mx, w.x1 * mx, w.y1 * mx);
-  plend();
+  plend1();
+  plsstrm(previous_stream);
   std::error_code ec;
   if (!std::filesystem::exists(tmp, ec)) throw std::runtime_error("PLplot wrote no picture to " + tmp.string());
   std::filesystem::rename(tmp, path);

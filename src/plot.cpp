@@ -292,6 +292,11 @@ void draw(const FigureSpec& fig, const std::pair<double, double>& xr, const std:
 
 }  // namespace
 
+std::unique_lock<std::mutex> lock_plplot() {
+  static std::mutex plplot_state;  // guards a library-wide resource, not model state
+  return std::unique_lock<std::mutex>(plplot_state);
+}
+
 void render_png(const FigureSpec& fig, const std::filesystem::path& path) {
   namespace fs = std::filesystem;
   // Validate everything PLplot would otherwise exit() on.
@@ -347,6 +352,7 @@ void render_png(const FigureSpec& fig, const std::filesystem::path& path) {
   std::random_device entropy;
   const fs::path temporary = path.string() + fmt::format(".tmp-{:08x}.png", entropy());
 
+  const auto plplot = lock_plplot();
   PLINT previous_stream = 0, stream = 0;
   plgstrm(&previous_stream);
   plmkstrm(&stream);

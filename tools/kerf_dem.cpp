@@ -178,7 +178,8 @@ Scene read_scene(const Json& doc, const fs::path& scene_dir) {
   return s;
 }
 
-Simulation obtain_specimen(const Scene& scene, SpecimenSpec& spec, SpecimenReport& report, double& wall_s) {
+Simulation obtain_specimen(const Scene& scene, SpecimenSpec& spec, SpecimenReport& report, double& wall_s,
+                           bool show_progress = true) {
   const auto start = std::chrono::steady_clock::now();
   std::optional<Simulation> sim;
   if (scene.specimen_file) {
@@ -188,6 +189,7 @@ Simulation obtain_specimen(const Scene& scene, SpecimenSpec& spec, SpecimenRepor
     std::optional<Progress> progress;
     std::int64_t shown = 0;
     sim.emplace(make_specimen(scene.material, spec, report, [&](std::int64_t done, std::int64_t total) {
+      if (!show_progress) return;
       if (!progress) progress.emplace("specimen genesis", static_cast<std::size_t>(total), "steps");
       progress->advance(static_cast<std::size_t>(done - shown));
       shown = done;
@@ -341,6 +343,7 @@ struct TestProgress {
   std::vector<std::pair<double, std::vector<std::string>>> frames;
   int sample_index = 0;
   std::string scene_dir;
+  bool show_progress = true;  ///< false for replicates run side by side (one bar each would garble the terminal)
 };
 
 /// Writes the next VTK frame (particles and bonds, cracks) and records it for the .pvd series.
@@ -422,11 +425,14 @@ Json continue_cut(const Scene& scene, const Json& doc, Json summary, const fs::p
   if (scene.frame_every_samples > 0 && tp.sample_index == 0) write_frame(run.simulation());
   const double n = static_cast<double>(run.result().n_particles);
   const double steps = scene.cut.length_m / (scene.cut.speed_m_per_s * run.result().time_step_s);
-  Progress progress("cut", static_cast<std::size_t>(n * steps), "particle-steps");
-  progress.advance(static_cast<std::size_t>(n * scene.cut.sample_every_steps * tp.sample_index));
+  std::optional<Progress> progress;
+  if (tp.show_progress) {
+    progress.emplace("cut", static_cast<std::size_t>(n * steps), "particle-steps");
+    progress->advance(static_cast<std::size_t>(n * scene.cut.sample_every_steps * tp.sample_index));
+  }
   while (run.advance()) {
     ++tp.sample_index;
-    progress.advance(static_cast<std::size_t>(n * scene.cut.sample_every_steps));
+    if (progress) progress->advance(static_cast<std::size_t>(n * scene.cut.sample_every_steps));
     if (scene.frame_every_samples > 0 && tp.sample_index % scene.frame_every_samples == 0) write_frame(run.simulation());
     if (checkpoint_every > 0 && tp.sample_index % checkpoint_every == 0) {
       // The cut holds its own workpiece: the checkpoint's specimen part stays empty.
@@ -434,7 +440,7 @@ Json continue_cut(const Scene& scene, const Json& doc, Json summary, const fs::p
       write_file_atomically(out / "checkpoint.bin", c.bytes());
     }
   }
-  progress.finish();
+  if (progress) progress->finish();
   if (scene.frame_every_samples > 0) write_frame(run.simulation());
   const CutResult& res = run.result();
   const auto& frames = tp.frames;
@@ -469,6 +475,7 @@ Json continue_cut(const Scene& scene, const Json& doc, Json summary, const fs::p
   write_file_atomically(out / "summary.json", summary.dump(2) + "\n");
   std::error_code ignored;
   fs::remove(out / "checkpoint.bin", ignored);  // finished: nothing to resume
+#pragma omp critical(kerf_dem_stdout)
   std::cout << fmt::format("cut: main force {:.3g} N (std {:.2g}), thrust force {:.3g} N (std {:.2g}) per {:g} mm width; "
                            "{} tensile + {} shear cracks ({} chip, {} subsurface, damage depth {:.1f} um); {} steps, {:.1f} s -> {}\n",
                            res.main_force_n, res.main_force_std_n, res.thrust_force_n, res.thrust_force_std_n,
@@ -481,8 +488,12 @@ Json continue_cut(const Scene& scene, const Json& doc, Json summary, const fs::p
 /// Seed 000 Section 4 repeats each cut on three specimens with different random packings: replicate k
 /// uses packing seed specimen.seed + k and writes DIR/replicate_k; DIR/summary.json has the per-replicate
 /// results and their mean and (sample) standard deviation.
+///
+/// Replicates run side by side, one thread each, as long as there are threads to spare (a cut of a few
+/// thousand disks scales better over replicates than over threads: no barrier per step); leftover threads
+/// go to each replicate's force loops. A replicate whose DIR/replicate_k/summary.json already holds the same
+/// material, specimen and cut is reused, so an interrupted study loses only the replicates in flight.
 int run_cut_replicates(const Scene& scene, int replicates, Json summary, const fs::path& out) {
-  Json list = Json::array();
   // Each result with the name of its spread over the replicates.
   const std::vector<std::pair<std::string, std::string>> keys{
       {"main_force_N", "main_force_replicate_std_N"},
@@ -490,24 +501,60 @@ int run_cut_replicates(const Scene& scene, int replicates, Json summary, const f
       {"cracks_tensile", "cracks_tensile_replicate_std"},
       {"cracks_shear", "cracks_shear_replicate_std"},
       {"subsurface_damage_depth_um", "subsurface_damage_depth_replicate_std_um"}};
+  const auto start = std::chrono::steady_clock::now();
+  const int threads = omp_get_max_threads();
+  const int side_by_side = std::min(threads, replicates);
+  const int inner_threads = std::max(1, threads / side_by_side);
+  std::vector<Json> done(static_cast<std::size_t>(replicates));
+  std::vector<std::exception_ptr> failed(static_cast<std::size_t>(replicates));
+  const int max_levels = omp_get_max_active_levels();
+  omp_set_max_active_levels(2);
+#pragma omp parallel for schedule(dynamic, 1) num_threads(side_by_side)
+  for (int k = 0; k < replicates; ++k) {
+    try {
+      omp_set_num_threads(inner_threads);
+      Scene s = scene;
+      s.specimen.seed = scene.specimen.seed + static_cast<std::uint64_t>(k);
+      const fs::path dir = out / fmt::format("replicate_{}", k + 1);
+      // What makes a replicate: reused only when all of it is unchanged.
+      const Json inputs{{"material", material_to_json(s.material)}, {"specimen", specimen_spec_to_json(s.specimen)},
+                        {"cut", cut_params_to_json(s.cut)}};
+      if (fs::exists(dir / "summary.json")) {
+        const Json old = read_json_file((dir / "summary.json").string());
+        if (old.value("replicate_inputs", Json()) == inputs && old.contains("results")) {
+#pragma omp critical(kerf_dem_stdout)
+          std::cout << fmt::format("replicate {}: reusing the finished run in {}\n", k + 1, dir.string());
+          done[static_cast<std::size_t>(k)] = old;
+          continue;
+        }
+      }
+      SpecimenSpec spec;
+      SpecimenReport report;
+      double genesis_s = 0;
+      const bool show_progress = side_by_side == 1;
+      const Simulation specimen = obtain_specimen(s, spec, report, genesis_s, show_progress);
+      fs::create_directories(dir);
+      Json one = summary;
+      one["threads"] = inner_threads;
+      one["replicate_inputs"] = inputs;
+      one["specimen"] = specimen_json(spec, report, genesis_s);
+      done[static_cast<std::size_t>(k)] =
+          continue_cut(s, Json(), one, dir, 0, CutRun(specimen, s.cut), {{}, 0, std::string(), show_progress});
+    } catch (...) {
+      failed[static_cast<std::size_t>(k)] = std::current_exception();
+    }
+  }
+  omp_set_max_active_levels(max_levels);
+  for (const auto& e : failed)
+    if (e) std::rethrow_exception(e);
+  Json list = Json::array();
   double wall = 0;
   for (int k = 0; k < replicates; ++k) {
-    Scene s = scene;
-    s.specimen.seed = scene.specimen.seed + static_cast<std::uint64_t>(k);
-    SpecimenSpec spec;
-    SpecimenReport report;
-    double genesis_s = 0;
-    const Simulation specimen = obtain_specimen(s, spec, report, genesis_s);
-    const fs::path dir = out / fmt::format("replicate_{}", k + 1);
-    fs::create_directories(dir);
-    Json one = summary;
-    one["specimen"] = specimen_json(spec, report, genesis_s);
-    one = continue_cut(s, Json(), one, dir, 0, CutRun(specimen, s.cut), {});
-    Json row{{"replicate", k + 1}, {"seed", s.specimen.seed}, {"directory", dir.filename().string()}};
+    const Json& one = done[static_cast<std::size_t>(k)];
+    Json row{{"replicate", k + 1}, {"seed", one["specimen"]["seed"]}, {"directory", fmt::format("replicate_{}", k + 1)}};
     for (const auto& key : keys) row[key.first] = one["results"][key.first];
-    row["main_force_std_N"] = one["results"]["main_force_std_N"];
-    row["thrust_force_std_N"] = one["results"]["thrust_force_std_N"];
-    row["width_mm"] = one["results"]["width_mm"];
+    for (const char* key : {"main_force_std_N", "thrust_force_std_N", "width_mm"}) row[key] = one["results"][key];
+    row["wall_time_s"] = one["wall_time_s"];
     wall += one["wall_time_s"].get<double>();
     list.push_back(row);
   }
@@ -523,7 +570,9 @@ int run_cut_replicates(const Scene& scene, int replicates, Json summary, const f
   summary["cut"] = cut_params_to_json(scene.cut);
   summary["replicates"] = list;
   summary["results"] = stats;
-  summary["wall_time_s"] = wall;
+  summary["replicates_side_by_side"] = side_by_side;
+  summary["wall_time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  summary["wall_time_s_sum_over_replicates"] = wall;
   write_file_atomically(out / "summary.json", summary.dump(2) + "\n");
   std::cout << fmt::format("cut, {} replicates: main force {:.3g} N (replicate std {:.2g}), thrust force {:.3g} N "
                            "(replicate std {:.2g}) per {:g} mm width -> {}\n",

@@ -9,9 +9,11 @@
 //   fig.series.push_back({"kerf", measured, predicted, {}, {}, kerf::SeriesStyle::points, 0, 0});
 //   kerf::render_png(fig, "out/parity_axial_force.png");
 //
-// Labels are UTF-8 with PLplot's escapes (#d subscript, #u superscript). PLplot keeps its state in the library;
-// render_png() opens its own stream and closes it, and must not be called from two threads at once.
+// Labels are UTF-8 with PLplot's escapes (#d subscript, #u superscript). PLplot keeps its state in the library:
+// render_png() opens its own stream, closes it, and holds lock_plplot() meanwhile, so it may be called from
+// several threads (the drawings are serialised).
 #include <filesystem>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -49,6 +51,10 @@ struct FigureSpec {
   std::string legend_position = "best";
   int width_px = 1200, height_px = 900;
 };
+
+/// The one lock around PLplot's library-wide state: every drawing (render_png, the DEM pictures) holds it
+/// from opening its stream to closing it.
+std::unique_lock<std::mutex> lock_plplot();
 
 /// Renders the figure to a PNG. Throws InputError for a figure that cannot be drawn (no finite points,
 /// mismatched sizes) and std::runtime_error when the file cannot be written.

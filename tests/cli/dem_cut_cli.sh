@@ -59,4 +59,20 @@ for f in summary.json replicate_1/forces.csv replicate_2/forces.csv replicate_2/
 done
 grep -q '"seed": 2' "$work/r/replicate_2/summary.json" || fail "replicate 2 does not use seed 2"
 in_range "$(result "$work/r" main_force_replicate_std_N)" 0 1e4 || fail "main_force_replicate_std_N"
+# Side by side on two threads: the same forces as one after the other on one thread.
+"$bin" run "$scene" "${small[@]}" --set cut.length_mm=0.03 --replicates 2 --out "$work/r2" --threads 2 >/dev/null 2>"$work/err" ||
+  fail "replicates on 2 threads: $(cat "$work/err")"
+for k in 1 2; do
+  cmp -s "$work/r/replicate_$k/forces.csv" "$work/r2/replicate_$k/forces.csv" || fail "replicate $k differs on 2 threads"
+done
+# A rerun reuses finished replicates and redoes only a missing one; a changed scene redoes all.
+rm "$work/r2/replicate_2/summary.json"
+"$bin" run "$scene" "${small[@]}" --set cut.length_mm=0.03 --replicates 2 --out "$work/r2" --threads 2 >"$work/log" 2>&1 ||
+  fail "replicates rerun: $(cat "$work/log")"
+grep -q "replicate 1: reusing" "$work/log" || fail "finished replicate 1 was not reused"
+! grep -q "replicate 2: reusing" "$work/log" || fail "replicate 2 had no summary but was reused"
+cmp -s "$work/r/replicate_2/forces.csv" "$work/r2/replicate_2/forces.csv" || fail "rerun replicate 2 differs"
+"$bin" run "$scene" "${small[@]}" --set cut.length_mm=0.03 --set cut.speed_m_per_s=1.5 --replicates 2 --out "$work/r2" --threads 2 \
+    >"$work/log" 2>&1 || fail "replicates with a changed scene: $(cat "$work/log")"
+! grep -q "reusing" "$work/log" || fail "a changed scene reused old replicates"
 echo "dem_cut_cli: ok"
