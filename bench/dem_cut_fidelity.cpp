@@ -1,0 +1,249 @@
+// Speed against accuracy of the DEM cut (issue 5): mean main and thrust force, and the cost, against the
+// three fidelity knobs a user turns — tool speed, particle size (radii scaled at fixed micro-parameters,
+// i.e. at fixed calibrated macro-properties, see docs/performance.md) and Cundall's local damping — each on
+// several packings, since one cut's mean force scatters by tens of percent from packing to packing.
+//
+//   build/bench/bench_dem_cut_fidelity [--knob speed|radius|damping|all] [--replicates 3] [--threads 2]
+//       [--out-dir bench-out/dem_cut_fidelity]
+//
+// Writes, in --out-dir: runs.csv (one row per knob value and packing; the file is rewritten whole after
+// every run and read back at start, so an interrupted benchmark resumes with the runs it finished),
+// summary.csv (per knob value: replicate mean, replicate std, standard error of the mean, change against
+// the reference value, thread CPU seconds per cut, genesis excluded) and fidelity_<knob>.png (mean +- standard error).
+//
+// Base case: the bundled scene's workpiece (data/scenes/dem_cut.json): 1 mm x 0.5 mm, radii 10-13 um,
+// material soda_lime_glass_fj, rake -15 deg, clearance 15 deg, sharp, depth of cut 0.1 mm, travel 0.3 mm,
+// entry 25 % excluded. Cuts run side by side, one thread each (the cost figures are thread CPU seconds).
+#include <omp.h>
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fmt/format.h>
+#include <map>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "bench_util.hpp"
+#include "kerf/csv_table.hpp"
+#include "kerf/dem/cutting.hpp"
+#include "kerf/dem/material.hpp"
+#include "kerf/dem/specimen.hpp"
+#include "kerf/error.hpp"
+#include "kerf/io.hpp"
+#include "kerf/plot.hpp"
+
+namespace fs = std::filesystem;
+using namespace kerf;
+using namespace kerf::dem;
+
+namespace {
+
+struct Case {
+  std::string knob;  ///< speed, radius, damping
+  double value = 0;  ///< m/s, radius scale (1 = radii 10-13 um), alpha
+  int replicate = 1; ///< packing seed
+};
+
+struct Run {
+  Case c;
+  int n_particles = 0;
+  std::int64_t steps = 0;
+  double main_force_n = 0, thrust_force_n = 0, cpu_s = 0;  ///< cpu_s: the cut alone (genesis excluded)
+};
+
+struct Base {
+  double speed_m_per_s = 0.25, radius_scale = 1, damping = 0.7;
+};
+
+std::string key_of(const Case& c) { return fmt::format("{}|{:.6g}|{}", c.knob, c.value, c.replicate); }
+
+Run run_case(const Material& library, const Case& c, const Base& base) {
+  Material m = library;
+  SpecimenSpec spec;
+  spec.width_m = 1e-3, spec.height_m = 0.5e-3, spec.thickness_m = 1e-3;
+  const double scale = c.knob == "radius" ? c.value : base.radius_scale;
+  spec.radius_min_m = 10e-6 * scale, spec.radius_max_m = 13e-6 * scale;
+  spec.seed = static_cast<std::uint64_t>(c.replicate);
+  m.local_damping = c.knob == "damping" ? c.value : base.damping;
+  CutParams cut;
+  cut.depth_of_cut_m = 0.1e-3, cut.length_m = 0.3e-3, cut.entry_fraction = 0.25;
+  cut.speed_m_per_s = c.knob == "speed" ? c.value : base.speed_m_per_s;
+  SpecimenReport report;
+  const Simulation specimen = make_specimen(m, spec, report);
+  const double start = bench::thread_cpu_seconds();
+  CutRun cutting(specimen, cut);
+  while (cutting.advance()) {
+  }
+  const CutResult& r = cutting.result();
+  return {c, static_cast<int>(r.n_particles), r.steps, r.main_force_n, r.thrust_force_n,
+          bench::thread_cpu_seconds() - start};
+}
+
+const std::vector<std::string> kRunColumns{"knob", "value", "replicate", "n_particles", "steps",
+                                           "main_force_N", "thrust_force_N", "cpu_s"};
+
+std::string runs_csv(const std::vector<Run>& runs) {
+  std::string out = csv_line(kRunColumns);
+  for (const auto& r : runs)
+    out += csv_line({r.c.knob, csv_number(r.c.value), std::to_string(r.c.replicate), std::to_string(r.n_particles),
+                     std::to_string(r.steps), csv_number(r.main_force_n), csv_number(r.thrust_force_n), csv_number(r.cpu_s)});
+  return out;
+}
+
+std::vector<Run> read_runs(const fs::path& file) {
+  std::vector<Run> runs;
+  if (!fs::exists(file)) return runs;
+  const CsvTable t = read_csv_file(file);
+  std::vector<std::size_t> col;
+  for (const auto& name : kRunColumns) col.push_back(t.column_index(name));
+  for (std::size_t i = 0; i < t.rows.size(); ++i) {
+    Run r;
+    r.c = {t.text(i, col[0]), t.number(i, col[1]), static_cast<int>(t.number(i, col[2]))};
+    r.n_particles = static_cast<int>(t.number(i, col[3]));
+    r.steps = static_cast<std::int64_t>(t.number(i, col[4]));
+    r.main_force_n = t.number(i, col[5]), r.thrust_force_n = t.number(i, col[6]), r.cpu_s = t.number(i, col[7]);
+    runs.push_back(r);
+  }
+  return runs;
+}
+
+struct Stats {
+  double mean = 0, std = 0, sem = 0;
+};
+Stats stats_of(const std::vector<double>& v) {
+  Stats s;
+  const double n = static_cast<double>(v.size());
+  for (double x : v) s.mean += x / n;
+  if (v.size() > 1) {
+    for (double x : v) s.std += (x - s.mean) * (x - s.mean) / (n - 1);
+    s.std = std::sqrt(s.std);
+    s.sem = s.std / std::sqrt(n);
+  }
+  return s;
+}
+
+/// The reference of each knob: the finest setting (lowest speed, smallest disks); damping has none that is
+/// "converged" (it is a model parameter), so its changes are against the default 0.7.
+double reference_value(const std::string& knob, const std::vector<double>& values) {
+  if (knob == "damping") return 0.7;
+  return *std::min_element(values.begin(), values.end());
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"DEM cut: forces and cost against tool speed, particle size and local damping"};
+  std::string knob = "all", out_dir = "bench-out/dem_cut_fidelity";
+  int replicates = 3, threads = 2;
+  Base base;
+  std::vector<double> speeds{2, 1, 0.5, 0.25, 0.125}, radius_scales{1.5, 1.0, 0.75}, dampings{0.3, 0.5, 0.7, 0.9};
+  app.add_option("--knob", knob, "speed, radius, damping or all")->check(CLI::IsMember({"speed", "radius", "damping", "all"}));
+  app.add_option("--replicates", replicates, "packings per setting (seeds 1..N)")->check(CLI::Range(1, 100));
+  app.add_option("--threads", threads, "cuts run side by side")->check(CLI::Range(1, 256));
+  app.add_option("--out-dir", out_dir, "output directory");
+  app.add_option("--speeds", speeds, "tool speeds, m/s")->check(CLI::PositiveNumber);
+  app.add_option("--radius-scales", radius_scales, "radius scales (1: radii 10-13 um)")->check(CLI::PositiveNumber);
+  app.add_option("--dampings", dampings, "local damping values")->check(CLI::Range(0.0, 0.99));
+  app.add_option("--base-speed", base.speed_m_per_s, "tool speed of the radius and damping studies, m/s")
+      ->check(CLI::PositiveNumber);
+  CLI11_PARSE(app, argc, argv);
+  try {
+    const Material library = read_material(Json{{"base", "soda_lime_glass_fj"}}, "material");
+    std::vector<Case> cases;
+    const auto add = [&](const std::string& name, const std::vector<double>& values) {
+      if (knob != "all" && knob != name) return;
+      for (double v : values)
+        for (int k = 1; k <= replicates; ++k) cases.push_back({name, v, k});
+    };
+    add("speed", speeds);
+    add("radius", radius_scales);
+    add("damping", dampings);
+    fs::create_directories(out_dir);
+    const fs::path runs_file = fs::path(out_dir) / "runs.csv";
+    std::vector<Run> runs = read_runs(runs_file);
+    std::map<std::string, bool> finished;
+    for (const auto& r : runs) finished[key_of(r.c)] = true;
+    std::vector<Case> todo;
+    for (const auto& c : cases)
+      if (!finished.count(key_of(c))) todo.push_back(c);
+    // The dearest cuts first (cost ~ 1 / speed and ~ 1 / radius^3), so the last ones fill the gaps.
+    const auto cost = [&](const Case& c) {
+      const double v = c.knob == "speed" ? c.value : base.speed_m_per_s, s = c.knob == "radius" ? c.value : base.radius_scale;
+      return 1 / (v * s * s * s);
+    };
+    std::stable_sort(todo.begin(), todo.end(), [&](const Case& a, const Case& b) { return cost(a) > cost(b); });
+    std::fprintf(stderr, "%zu cuts to run (%zu already in %s)\n", todo.size(), cases.size() - todo.size(),
+                 runs_file.c_str());
+    std::mutex lock;
+    Progress progress("cuts", todo.size(), "cuts");
+    omp_set_max_active_levels(1);  // each cut on one thread
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+    for (std::size_t i = 0; i < todo.size(); ++i) {
+      const Run r = run_case(library, todo[i], base);
+      const std::lock_guard<std::mutex> guard(lock);
+      runs.push_back(r);
+      write_file_atomically(runs_file, runs_csv(runs));
+      progress.advance(1);
+    }
+    progress.finish();
+
+    // Summary and plots, one knob at a time, in the order the options list the values.
+    std::string summary = csv_line({"knob", "value", "replicates", "n_particles", "main_force_N", "main_force_replicate_std_N",
+                                    "main_force_sem_N", "thrust_force_N", "thrust_force_replicate_std_N",
+                                    "thrust_force_sem_N", "main_force_change_vs_reference", "thrust_force_change_vs_reference",
+                                    "cpu_s_per_cut", "cost_vs_reference"});
+    for (const auto& [name, values] : std::vector<std::pair<std::string, std::vector<double>>>{
+             {"speed", speeds}, {"radius", radius_scales}, {"damping", dampings}}) {
+      if (knob != "all" && knob != name) continue;
+      struct Row {
+        double value;
+        Stats main, thrust, cpu;
+        int n, particles;
+      };
+      std::vector<Row> rows;
+      for (double v : values) {
+        std::vector<double> fm, ft, cpu;
+        int particles = 0;
+        for (const auto& r : runs)
+          if (r.c.knob == name && key_of(r.c) == key_of({name, v, r.c.replicate}) && r.c.replicate <= replicates)
+            fm.push_back(r.main_force_n), ft.push_back(r.thrust_force_n), cpu.push_back(r.cpu_s), particles = r.n_particles;
+        if (!fm.empty()) rows.push_back({v, stats_of(fm), stats_of(ft), stats_of(cpu), static_cast<int>(fm.size()), particles});
+      }
+      if (rows.empty()) continue;
+      std::vector<double> vs;
+      for (const auto& r : rows) vs.push_back(r.value);
+      const double ref = reference_value(name, vs);
+      const auto ref_row = std::find_if(rows.begin(), rows.end(), [&](const Row& r) { return r.value == ref; });
+      FigureSpec fig;
+      fig.title = fmt::format("DEM cut, {} replicates: forces against {}", replicates, name);
+      fig.x_label = name == "speed" ? "tool speed (m/s)" : name == "radius" ? "radius scale (1: radii 10-13 um)" : "local damping";
+      fig.y_label = "force per 1 mm width (N)";
+      PlotSeries main{"main force", {}, {}, {}, {}, SeriesStyle::points_and_line, 0, 0};
+      PlotSeries thrust{"thrust force", {}, {}, {}, {}, SeriesStyle::points_and_line, 1, 2};
+      for (const auto& r : rows) {
+        const double dm = ref_row == rows.end() ? NAN : r.main.mean / ref_row->main.mean - 1;
+        const double dt = ref_row == rows.end() ? NAN : r.thrust.mean / ref_row->thrust.mean - 1;
+        const double dc = ref_row == rows.end() ? NAN : r.cpu.mean / ref_row->cpu.mean;
+        summary += csv_line({name, csv_number(r.value), std::to_string(r.n), std::to_string(r.particles),
+                             csv_number(r.main.mean), csv_number(r.main.std), csv_number(r.main.sem), csv_number(r.thrust.mean),
+                             csv_number(r.thrust.std), csv_number(r.thrust.sem), csv_number(dm), csv_number(dt),
+                             csv_number(r.cpu.mean), csv_number(dc)});
+        main.x.push_back(r.value), main.y.push_back(r.main.mean), main.y_error.push_back(r.main.sem);
+        thrust.x.push_back(r.value), thrust.y.push_back(r.thrust.mean), thrust.y_error.push_back(r.thrust.sem);
+      }
+      fig.series = {main, thrust};
+      fig.y_min = 0;
+      render_png(fig, fs::path(out_dir) / ("fidelity_" + name + ".png"));
+    }
+    write_file_atomically(fs::path(out_dir) / "summary.csv", summary);
+    std::printf("%s", summary.c_str());
+    return 0;
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "bench_dem_cut_fidelity: %s\n", e.what());
+    return kExitInputError;
+  }
+}
