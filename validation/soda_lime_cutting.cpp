@@ -1,0 +1,312 @@
+// Seed 000's orthogonal cutting of soda-lime glass (validation/soda_lime_cutting/): runs every condition of
+// validation.json with kerf-dem (replicates on different packings), collects the forces, compares them through
+// the report layer with the experiments (Table 6, 25.4 mm wide) and the paper's DEM (Table 4, 1 mm), and checks
+// the acceptance bands. See validation/soda_lime_cutting/README.md.
+#include "soda_lime_cutting.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <map>
+
+#include "kerf/comparison_config.hpp"
+#include "kerf/error.hpp"
+#include "kerf/io.hpp"
+#include "kerf/json_reader.hpp"
+#include "kerf/material.hpp"
+
+namespace kerf {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Condition {
+  std::string name, surface, groove_shape;
+  double depth_of_cut_mm = 0;
+};
+
+struct Spec {
+  fs::path scene, experiments;
+  int replicates = 3;
+  std::vector<Condition> conditions;
+  double regular_max_error_pct = 20, grooved_ratio_max = 1.0 / 3;
+};
+
+Spec read_spec(const fs::path& case_dir) {
+  const Json doc = read_json_file(case_dir / "validation.json");
+  ObjectReader r(doc, "validation");
+  Spec s;
+  s.scene = case_dir / r.get_string("scene");
+  s.experiments = case_dir / r.get_string("experiments");
+  s.replicates = r.get_int_or("replicates", 3, 2, 100);
+  const Json& list = r.get("conditions");
+  if (!list.is_array() || list.empty())
+    throw InputError("validation.conditions", list.dump(), "a non-empty list of conditions");
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    ObjectReader c(list[k], fmt::format("validation.conditions[{}]", k));
+    Condition cond{c.get_string("name"), c.get_choice("surface", {"regular", "grooved", "grooved_trapezoidal"}),
+                   c.get_choice("groove_shape", {"none", "rectangular", "trapezoidal"}),
+                   c.get_number("depth_of_cut_mm", Range::positive(), "mm")};
+    c.finish();
+    s.conditions.push_back(cond);
+  }
+  ObjectReader a = r.get_object("acceptance");
+  s.regular_max_error_pct = a.get_number("regular_force_max_abs_error_vs_paper_dem_pct", Range::positive(), "%");
+  s.grooved_ratio_max = a.get_number("grooved_to_regular_main_force_ratio_max", Range::positive(), "");
+  a.finish();
+  r.finish();
+  return s;
+}
+
+std::string quoted(const fs::path& p) {
+  std::string out = "'";
+  for (char ch : p.string()) out += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
+  return out + "'";
+}
+
+/// Replicate results of one condition, read from kerf-dem's summaries.
+struct ConditionResult {
+  Condition condition;
+  Json replicates;  ///< kerf-dem's per-replicate rows, with chip/subsurface crack counts added
+  double main_n = 0, thrust_n = 0, main_std_n = 0, thrust_std_n = 0, width_mm = 1;
+  double cracks_tensile = 0, cracks_shear = 0, cracks_chip = 0, cracks_subsurface = 0, subsurface_depth_um = 0;
+  double wall_time_s = 0;
+};
+
+ConditionResult collect(const Condition& c, const fs::path& run_dir) {
+  const Json summary = read_json_file(run_dir / "summary.json");
+  ConditionResult r;
+  r.condition = c;
+  r.replicates = summary.at("replicates");
+  const Json& res = summary.at("results");
+  r.main_n = res.at("main_force_N"), r.thrust_n = res.at("thrust_force_N");
+  r.main_std_n = res.at("main_force_replicate_std_N"), r.thrust_std_n = res.at("thrust_force_replicate_std_N");
+  r.width_mm = res.at("width_mm");
+  r.wall_time_s = summary.at("wall_time_s");
+  const double n = static_cast<double>(r.replicates.size());
+  for (auto& row : r.replicates) {
+    const Json one = read_json_file(run_dir / row.at("directory").get<std::string>() / "summary.json").at("results");
+    row["cracks_chip"] = one.at("cracks_chip");
+    row["cracks_subsurface"] = one.at("cracks_subsurface");
+    r.cracks_tensile += row.at("cracks_tensile").get<double>() / n;
+    r.cracks_shear += row.at("cracks_shear").get<double>() / n;
+    r.cracks_chip += one.at("cracks_chip").get<double>() / n;
+    r.cracks_subsurface += one.at("cracks_subsurface").get<double>() / n;
+    r.subsurface_depth_um += row.at("subsurface_damage_depth_um").get<double>() / n;
+  }
+  return r;
+}
+
+/// Mean of the paper's rows (source, surface, depth) for one force column.
+double paper_mean(const CsvTable& t, const std::string& source, const std::string& surface, double depth_mm,
+                  const std::string& column) {
+  const std::size_t cs = t.column_index("source"), cf = t.column_index("surface"), cd = t.column_index("depth_of_cut_mm");
+  const std::size_t cv = t.column_index(column);
+  double sum = 0;
+  int n = 0;
+  for (std::size_t i = 0; i < t.rows.size(); ++i)
+    if (t.text(i, cs) == source && t.text(i, cf) == surface && std::abs(t.number(i, cd) - depth_mm) < 1e-9)
+      sum += t.number(i, cv), ++n;
+  if (n == 0) throw InputError("validation.experiments", fmt::format("{} {} {} mm", source, surface, depth_mm), "rows for this condition");
+  return sum / n;
+}
+
+Json comparison_document(const fs::path& experiments, const fs::path& kerf_csv, const std::string& title,
+                         bool against_paper_dem) {
+  const Json conditions = Json::array({Json{{"key", "surface"}, {"label", "Surface"}, {"text", true}},
+                                       Json{{"key", "depth_of_cut"}, {"label", "Depth of cut a#dc#u"}, {"unit", "mm"}}});
+  const Json quantities = Json::array({Json{{"key", "main_force"}, {"label", "Main force F#dc#u"}, {"unit", "N"}},
+                                       Json{{"key", "thrust_force"}, {"label", "Thrust force F#dt#u"}, {"unit", "N"}}});
+  const Json columns{{"surface", "surface"}, {"depth_of_cut", "depth_of_cut_mm"}, {"main_force", "main_force_N"},
+                     {"thrust_force", "thrust_force_N"}};
+  const auto set = [&](const fs::path& file, const std::string& name, const std::string& source) {
+    return Json{{"file", file.string()}, {"name", name}, {"filter", {{"source", source}}},
+                {"width", {{"column_mm", "width_mm"}}}, {"columns", columns}};
+  };
+  Json doc{{"title", title}, {"conditions", conditions}, {"quantities", quantities}};
+  if (against_paper_dem) {
+    doc["description"] = "kerf-dem (mean of the replicates) against the paper's DEM replicates (seed 000 Table 4); both 1 mm wide.";
+    doc["views"] = Json::array({"as_published"});
+    doc["measured"] = set(experiments, "paper's DEM (Table 4)", "paper_dem");
+    doc["predictions"] = Json::array({set(kerf_csv, "kerf-dem", "kerf_dem")});
+  } else {
+    doc["description"] = "Experiments (seed 000 Table 6, 25.4 mm wide) against the paper's DEM (Table 4, 1 mm) and kerf-dem "
+                         "(1 mm): the paper's direct comparison and the per-unit-width one.";
+    doc["views"] = Json::array({"as_published", "per_unit_width"});
+    doc["measured"] = set(experiments, "experiment (Table 6)", "experiment");
+    doc["predictions"] = Json::array({set(experiments, "paper's DEM (Table 4)", "paper_dem"), set(kerf_csv, "kerf-dem", "kerf_dem")});
+  }
+  return doc;
+}
+
+std::string pct(double x) { return fmt::format("{:+.1f} %", 100 * x); }
+
+}  // namespace
+
+CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, const fs::path& kerf_dem) {
+  const fs::path case_dir = data_directory().parent_path() / "validation" / "soda_lime_cutting";
+  const Spec spec = read_spec(case_dir);
+  const CsvTable table = read_csv_file(spec.experiments);
+  fs::create_directories(out_dir / "runs");
+  CuttingValidation v;
+
+  // 1. The runs: kerf-dem reuses finished replicates, so an interrupted validation resumes where it stopped.
+  std::map<std::string, ConditionResult> results;
+  for (const auto& c : spec.conditions) {
+    const fs::path run_dir = out_dir / "runs" / c.name;
+    const std::string command = fmt::format(
+        "{} run {} --set cut.depth_of_cut_mm={} --set grooves.shape={} --replicates {} --out {}", quoted(kerf_dem),
+        quoted(spec.scene), c.depth_of_cut_mm, c.groove_shape, spec.replicates, quoted(run_dir));
+    fmt::print("{}: {}\n", c.name, command);
+    std::fflush(stdout);
+    const int status = std::system(command.c_str());
+    if (status != 0) throw ModelError("validation", fmt::format("kerf-dem failed for condition {} (status {})", c.name, status));
+    results[c.name] = collect(c, run_dir);
+  }
+
+  // 2. The kerf-dem table: one row per replicate, and the means that the report layer compares. Trapezoidal
+  // grooves go beyond the paper (no measured counterpart): their rows carry their own source.
+  std::string rows = csv_line({"source", "surface", "groove_shape", "depth_of_cut_mm", "replicate", "seed", "width_mm",
+                               "main_force_N", "thrust_force_N", "cracks_tensile", "cracks_shear", "cracks_chip",
+                               "cracks_subsurface", "subsurface_damage_depth_um", "wall_time_s"});
+  std::string means = csv_line({"source", "surface", "groove_shape", "depth_of_cut_mm", "width_mm", "main_force_N",
+                                "main_force_replicate_std_N", "thrust_force_N", "thrust_force_replicate_std_N",
+                                "cracks_tensile", "cracks_shear", "cracks_chip", "cracks_subsurface",
+                                "subsurface_damage_depth_um"});
+  for (const auto& c : spec.conditions) {
+    const ConditionResult& r = results.at(c.name);
+    const std::string source = c.groove_shape == "trapezoidal" ? "kerf_dem_trapezoidal" : "kerf_dem";
+    for (const auto& row : r.replicates)
+      rows += csv_line({source, c.surface, c.groove_shape, csv_number(c.depth_of_cut_mm), std::to_string(row.at("replicate").get<int>()),
+                        std::to_string(row.at("seed").get<long long>()), csv_number(row.at("width_mm")),
+                        csv_number(row.at("main_force_N")), csv_number(row.at("thrust_force_N")),
+                        csv_number(row.at("cracks_tensile")), csv_number(row.at("cracks_shear")),
+                        csv_number(row.at("cracks_chip")), csv_number(row.at("cracks_subsurface")),
+                        csv_number(row.at("subsurface_damage_depth_um")), csv_number(row.at("wall_time_s"))});
+    means += csv_line({source, c.surface, c.groove_shape, csv_number(c.depth_of_cut_mm), csv_number(r.width_mm),
+                       csv_number(r.main_n), csv_number(r.main_std_n), csv_number(r.thrust_n), csv_number(r.thrust_std_n),
+                       csv_number(r.cracks_tensile), csv_number(r.cracks_shear), csv_number(r.cracks_chip),
+                       csv_number(r.cracks_subsurface), csv_number(r.subsurface_depth_um)});
+  }
+  write_file_atomically(out_dir / "kerf_dem_replicates.csv", rows);
+  write_file_atomically(out_dir / "kerf_dem_means.csv", means);
+  v.files = {out_dir / "kerf_dem_replicates.csv", out_dir / "kerf_dem_means.csv"};
+
+  // 3. Through the report layer: against the experiments (both width views) and against the paper's DEM.
+  const fs::path means_csv = fs::absolute(out_dir / "kerf_dem_means.csv");
+  for (const auto& [name, against_dem] : std::vector<std::pair<std::string, bool>>{{"vs_experiment", false}, {"vs_paper_dem", true}}) {
+    const Json doc = comparison_document(fs::absolute(spec.experiments), means_csv,
+                                         against_dem ? "Soda-lime glass, orthogonal cutting: kerf-dem vs the paper's DEM (seed 000)"
+                                                     : "Soda-lime glass, orthogonal cutting: experiment vs the paper's DEM and kerf-dem (seed 000)",
+                                         against_dem);
+    write_file_atomically(out_dir / (name + ".json"), doc.dump(2) + "\n");
+    const Comparison comparison = run_comparison(parse_comparison_config(doc, out_dir));
+    for (const auto& f : write_report(comparison, out_dir / name)) v.files.push_back(f);
+  }
+
+  // 4. Acceptance and the expected physics.
+  std::string md = "# Validation: soda-lime glass, orthogonal cutting (seed 000)\n\n";
+  md += fmt::format("kerf-dem, scene `{}` ({} replicates per condition, packing seeds 1..{}); forces per **1 mm** width "
+                    "(the DEM's out-of-plane thickness) unless stated. Experiments: seed 000 Table 6, **25.4 mm** wide; "
+                    "the paper's DEM: Table 4, 1 mm.\n\n",
+                    spec.scene.filename().string(), spec.replicates, spec.replicates);
+  md += "| condition | kerf-dem main (N) | kerf-dem thrust (N) | paper DEM main / thrust (N, 1 mm) | experiment main / thrust "
+        "(N, 25.4 mm) | experiment per 1 mm (N) | cracks tension + shear (chip / subsurface) | subsurface depth (um) | "
+        "wall (s) |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (const auto& c : spec.conditions) {
+    const ConditionResult& r = results.at(c.name);
+    std::string paper = "—", experiment = "—", per_mm = "—";
+    if (c.groove_shape != "trapezoidal") {
+      paper = fmt::format("{:.2f} / {:.2f}", paper_mean(table, "paper_dem", c.surface, c.depth_of_cut_mm, "main_force_N"),
+                          paper_mean(table, "paper_dem", c.surface, c.depth_of_cut_mm, "thrust_force_N"));
+      const double em = paper_mean(table, "experiment", c.surface, c.depth_of_cut_mm, "main_force_N");
+      const double et = paper_mean(table, "experiment", c.surface, c.depth_of_cut_mm, "thrust_force_N");
+      experiment = fmt::format("{:.2f} / {:.2f}", em, et);
+      per_mm = fmt::format("{:.3f} / {:.3f}", em / 25.4, et / 25.4);
+    }
+    md += fmt::format("| {} | {:.2f} ± {:.2f} | {:.2f} ± {:.2f} | {} | {} | {} | {:.0f} + {:.0f} ({:.0f} / {:.0f}) | {:.0f} | {:.0f} |\n",
+                      c.name, r.main_n, r.main_std_n, r.thrust_n, r.thrust_std_n, paper, experiment, per_mm,
+                      r.cracks_tensile, r.cracks_shear, r.cracks_chip, r.cracks_subsurface, r.subsurface_depth_um,
+                      r.wall_time_s);
+  }
+  md += "\n± is the standard deviation over the replicates.\n\n## Acceptance\n\n";
+  Json checks = Json::array();
+  const auto check = [&](const std::string& what, double value, bool pass, const std::string& band) {
+    checks.push_back(Json{{"check", what}, {"value", value}, {"band", band}, {"passed", pass}});
+    md += fmt::format("- {} **{}**: {} (band: {})\n", pass ? "PASS" : "FAIL", what, fmt::format("{:.4g}", value), band);
+    if (!pass) v.failures.push_back(fmt::format("{} = {:.4g} (band: {})", what, value, band));
+  };
+  const auto find = [&](const std::string& shape, double depth) -> const ConditionResult* {
+    for (const auto& [name, r] : results)
+      if (r.condition.groove_shape == shape && std::abs(r.condition.depth_of_cut_mm - depth) < 1e-9) return &r;
+    return nullptr;
+  };
+  for (double depth : {0.1, 0.2}) {
+    const ConditionResult* regular = find("none", depth);
+    const ConditionResult* grooved = find("rectangular", depth);
+    if (regular) {
+      for (const auto& [label, column, value] : std::vector<std::tuple<std::string, std::string, double>>{
+               {"main", "main_force_N", regular->main_n}, {"thrust", "thrust_force_N", regular->thrust_n}}) {
+        const double paper = paper_mean(table, "paper_dem", "regular", depth, column);
+        const double error = value / paper - 1;
+        check(fmt::format("regular {} mm: {} force vs the paper's DEM mean ({:.2f} N), relative error", depth, label, paper),
+              error, std::abs(error) <= spec.regular_max_error_pct / 100, fmt::format("|error| <= {:g} %", spec.regular_max_error_pct));
+      }
+    }
+    if (regular && grooved) {
+      const double ratio = grooved->main_n / regular->main_n;
+      check(fmt::format("grooved / regular main force at {} mm", depth), ratio, ratio < spec.grooved_ratio_max,
+            fmt::format("< {:.3f}", spec.grooved_ratio_max));
+    }
+  }
+  md += "\n## Expected physics and beyond the paper (reported, not bands)\n\n";
+  Json physics = Json::object();
+  if (const auto *a = find("none", 0.1), *b = find("none", 0.2); a && b) {
+    md += fmt::format("- Regular, 0.1 -> 0.2 mm: main force {}, thrust {} (the paper's DEM: {}, {}).\n",
+                      pct(b->main_n / a->main_n - 1), pct(b->thrust_n / a->thrust_n - 1),
+                      pct(paper_mean(table, "paper_dem", "regular", 0.2, "main_force_N") /
+                              paper_mean(table, "paper_dem", "regular", 0.1, "main_force_N") - 1),
+                      pct(paper_mean(table, "paper_dem", "regular", 0.2, "thrust_force_N") /
+                              paper_mean(table, "paper_dem", "regular", 0.1, "thrust_force_N") - 1));
+    physics["regular_main_force_change_0.1_to_0.2"] = b->main_n / a->main_n - 1;
+  }
+  for (double depth : {0.1, 0.2}) {
+    const ConditionResult *regular = find("none", depth), *rect = find("rectangular", depth), *trap = find("trapezoidal", depth);
+    if (regular && rect)
+      md += fmt::format("- {} mm, grooved vs regular: cracks {:.0f} vs {:.0f} (subsurface {:.0f} vs {:.0f}), subsurface depth "
+                        "{:.0f} vs {:.0f} um.\n",
+                        depth, rect->cracks_tensile + rect->cracks_shear, regular->cracks_tensile + regular->cracks_shear,
+                        rect->cracks_subsurface, regular->cracks_subsurface, rect->subsurface_depth_um, regular->subsurface_depth_um);
+    if (rect && trap) {
+      md += fmt::format("- {} mm, trapezoidal vs rectangular grooves (the paper's suspected cause of its thrust error): thrust "
+                        "{:.2f} vs {:.2f} N ({}), main {:.2f} vs {:.2f} N.\n",
+                        depth, trap->thrust_n, rect->thrust_n, pct(trap->thrust_n / rect->thrust_n - 1), trap->main_n, rect->main_n);
+      physics[fmt::format("trapezoidal_vs_rectangular_thrust_change_{}", depth)] = trap->thrust_n / rect->thrust_n - 1;
+    }
+  }
+  md += "\nReports through the report layer: [vs_experiment/report.md](vs_experiment/report.md) (the paper's direct "
+        "comparison and the per-unit-width one), [vs_paper_dem/report.md](vs_paper_dem/report.md). Per-replicate "
+        "results: `kerf_dem_replicates.csv`; each run's forces, cracks and picture: `runs/<condition>/replicate_<k>/`.\n";
+  if (fs::exists(out_dir / "runs" / "regular_0.1" / "replicate_1" / "specimen.png")) {
+    fs::copy_file(out_dir / "runs" / "regular_0.1" / "replicate_1" / "specimen.png", out_dir / "snapshot_regular_0.1.png",
+                  fs::copy_options::overwrite_existing);
+    md += "\n![regular, 0.1 mm, replicate 1](snapshot_regular_0.1.png)\n";
+  }
+  if (fs::exists(out_dir / "runs" / "grooved_0.1" / "replicate_1" / "specimen.png")) {
+    fs::copy_file(out_dir / "runs" / "grooved_0.1" / "replicate_1" / "specimen.png", out_dir / "snapshot_grooved_0.1.png",
+                  fs::copy_options::overwrite_existing);
+    md += "\n![grooved, 0.1 mm, replicate 1](snapshot_grooved_0.1.png)\n";
+  }
+  md += fmt::format("\n**{}**\n", v.failures.empty() ? "PASSED" : "FAILED");
+  write_file_atomically(out_dir / "report.md", md);
+  write_file_atomically(out_dir / "summary.json",
+                        Json{{"passed", v.failures.empty()}, {"checks", checks}, {"physics", physics}}.dump(2) + "\n");
+  v.files.push_back(out_dir / "report.md");
+  v.files.push_back(out_dir / "summary.json");
+  return v;
+}
+
+}  // namespace kerf
