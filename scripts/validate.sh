@@ -1,8 +1,16 @@
 #!/usr/bin/env bash
-# Regenerates every validation report (validation/<case>/) into out/validation/<case>/ and checks the
+# Regenerates the validation reports (validation/<case>/) into out/validation/<case>/ and checks the
 # acceptance bands: exit status 0 when all hold. Installs and builds first, like the quick start.
+#
+#   bash scripts/validate.sh                      # every case
+#   bash scripts/validate.sh soda_lime_cutting    # one case: k9_trepanning (seconds) or soda_lime_cutting
+#                                                 # (kerf-dem runs, about half an hour on 2 cores; rerunning
+#                                                 # reuses the replicates already finished)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+case="${1:-all}"
 bash "$root/scripts/install-deps.sh"
 bash "$root/scripts/build.sh" >/dev/null
-"${KERF_BUILD_DIR:-$root/build}/validation/run_validation" all "$root/out/validation"
+out="$root/out/validation"
+[ "$case" = all ] || out="$out/$case"
+"${KERF_BUILD_DIR:-$root/build}/validation/run_validation" "$case" "$out"

@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# run_validation soda_lime_cutting on a miniature copy of the case (tiny workpiece, two conditions, two
+# packings): it runs kerf-dem, writes the tables, both comparison reports and the acceptance summary, exits
+# 0 or 1 (bands held or not; never a crash), reuses finished replicates on a rerun, and rejects a bad
+# validation.json with exit status 2.
+# Usage: validation_soda_lime_cutting.sh <dir of built programs> <source dir>
+source "$(dirname "$0")/lib/dem_common.sh" "$@"
+validate="$1/../validation/run_validation"
+[ -x "$validate" ] || fail "no run_validation next to $1"
+
+# The case is found beside the data directory: a scratch tree with the real data and a miniature case.
+mkdir -p "$work/tree/validation/soda_lime_cutting"
+ln -s "$(cd "$src" && pwd)/data" "$work/tree/data"
+case_dir="$work/tree/validation/soda_lime_cutting"
+cp "$src/validation/soda_lime_cutting/soda_lime_orthogonal_cutting.csv" "$case_dir/"
+cat >"$case_dir/scene.json" <<'JSON'
+{"kind": "cut", "material": {"base": "soda_lime_glass_fj"},
+ "specimen": {"width_mm": 0.4, "height_mm": 0.25, "radius_min_um": 10, "radius_max_um": 13, "seed": 1,
+              "growth_steps": 2000, "relax_steps": 500},
+ "cut": {"depth_of_cut_mm": 0.05, "speed_m_per_s": 2, "length_mm": 0.05},
+ "grooves": {"shape": "none", "pitch_mm": 0.04, "width_mm": 0.015},
+ "output": {"frame_every_samples": 0}}
+JSON
+cat >"$case_dir/validation.json" <<'JSON'
+{"scene": "scene.json", "experiments": "soda_lime_orthogonal_cutting.csv", "replicates": 2,
+ "conditions": [
+   {"name": "regular_0.1", "surface": "regular", "depth_of_cut_mm": 0.1, "groove_shape": "none"},
+   {"name": "grooved_0.1", "surface": "grooved", "depth_of_cut_mm": 0.1, "groove_shape": "rectangular"}],
+ "acceptance": {"regular_force_max_abs_error_vs_paper_dem_pct": 20, "grooved_to_regular_main_force_ratio_max": 0.3333}}
+JSON
+export KERF_DATA_DIR="$work/tree/data"
+"$validate" soda_lime_cutting "$work/out" >"$work/log" 2>&1
+rc=$?
+[ $rc -eq 0 ] || [ $rc -eq 1 ] || fail "exit $rc: $(tail -5 "$work/log")"
+for f in report.md summary.json kerf_dem_replicates.csv kerf_dem_means.csv vs_experiment/report.md vs_paper_dem/report.md \
+         vs_experiment/parity_main_force_per_width.png snapshot_regular_0.1.png runs/grooved_0.1/replicate_2/forces.csv; do
+  [ -s "$work/out/$f" ] || fail "missing $f"
+done
+grep -q "per_unit_width" "$work/out/vs_experiment/report.md" || fail "no per-unit-width view"
+grep -q "grooved / regular main force at 0.1 mm" "$work/out/report.md" || fail "no groove ratio check"
+grep -q '"passed"' "$work/out/summary.json" || fail "no verdict in summary.json"
+[ "$(grep -c '^kerf_dem,' "$work/out/kerf_dem_replicates.csv")" -eq 4 ] || fail "expected 4 replicate rows"
+# The grooves removed disks: the grooved rows differ from the regular ones.
+awk -F, 'NR > 1 { m[$2] = $6 } END { exit !(m["regular"] != m["grooved"]) }' "$work/out/kerf_dem_means.csv" ||
+  fail "grooved and regular forces identical"
+# A rerun reuses every finished replicate and gives the same table.
+cp "$work/out/kerf_dem_replicates.csv" "$work/first.csv"
+"$validate" soda_lime_cutting "$work/out" >"$work/log" 2>&1
+[ "$(grep -c "reusing" "$work/log")" -eq 4 ] || fail "rerun did not reuse the 4 replicates: $(cat "$work/log")"
+cmp -s "$work/first.csv" "$work/out/kerf_dem_replicates.csv" || fail "rerun changed the table"
+# Bad input: exit 2 naming the field.
+sed -i 's/"surface": "grooved"/"surface": "polished"/' "$case_dir/validation.json"
+"$validate" soda_lime_cutting "$work/bad" >"$work/log" 2>&1
+[ $? -eq 2 ] || fail "bad surface did not exit 2"
+grep -q "validation.conditions\[1\].surface" "$work/log" || fail "error does not name the field: $(cat "$work/log")"
+echo "validation_soda_lime_cutting: ok"
