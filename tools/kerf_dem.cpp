@@ -153,6 +153,8 @@ Scene read_scene(const Json& doc, const fs::path& scene_dir) {
     }
     c.tolerance = cal.get_number_or("tolerance_percent", 3, Range::open(0.0, 100.0), "%") / 100;
     c.max_evaluations = cal.get_int_or("max_evaluations", 24, 1, 1000);
+    c.method = cal.get_choice_or("method", "hybrid", {"hybrid", "secant"}) == "secant" ? CalibrationMethod::secant
+                                                                                      : CalibrationMethod::hybrid;
     s.calibrated_name = cal.get_string_or("material_name", "calibrated");
     if (s.calibrated_name.empty() || s.calibrated_name.find_first_of("/\\. ") != std::string::npos)
       throw InputError(cal.key_path("material_name"), s.calibrated_name, "a file name without '/', '.', spaces");
