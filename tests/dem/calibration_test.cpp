@@ -116,7 +116,7 @@ TEST_CASE("calibration: the secant method recovers reachable targets within 3 %"
   CHECK(r.max_relative_error <= 0.03);
 }
 
-TEST_CASE("calibration: evaluations serialise bit-exactly; corrupt bytes are rejected", "[calibration]") {
+TEST_CASE("calibration: evaluations serialise bit-exactly, corrupt bytes are rejected", "[calibration]") {
   CalibrationEvaluation e;
   e.index = 3;
   e.material.name = "x";
