@@ -1,11 +1,22 @@
-// Calibration of micro-parameters: exact proportional trends plus GSL trust-region least squares.
+// Calibration of micro-parameters: exact proportional trends plus Powell's hybrid method (GSL) or a secant
+// iteration on the remaining 2-D problem (see the header).
 #include "kerf/dem/calibration.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
+#include <exception>
+#include <memory>
+#include <new>
+#include <tuple>
+#include <utility>
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_multiroots.h>
 
 #include "kerf/dem/specimen.hpp"
+#include "serial.hpp"
 #include "kerf/error.hpp"
 
 namespace kerf::dem {
@@ -31,20 +42,37 @@ struct Context {
   const Simulation* specimen;
   const CalibrationSpec* spec;
   const std::function<void(const CalibrationEvaluation&)>* on_evaluation;
+  const std::vector<CalibrationEvaluation>* known;  ///< answers from an interrupted run
   Material current;  ///< E* and sigma_c here carry the proportional corrections
   CalibrationResult result;
   bool done = false;
+  int repeats = 0;  ///< evaluations answered from this run's own log (no new information)
 };
 
-/// Evaluates `m`, logs it, keeps the best, and applies the proportional corrections to ctx.current.
+/// Evaluates `m` (or takes its result from this run's log or from `known`), logs it, keeps the best, and
+/// applies the proportional corrections to ctx.current.
 MacroProperties evaluate(Context& ctx, const Material& m) {
-  const auto start = std::chrono::steady_clock::now();
+  for (const auto& e : ctx.result.log) {
+    if (!same_micro_parameters(e.material, m)) continue;
+    // A repeat tells nothing new: neither logged nor counted, and ctx.current keeps the later corrections.
+    // Bounded, so that a solver circling among old points still ends.
+    if (++ctx.repeats > ctx.spec->max_evaluations) ctx.done = true;
+    return e.macro;
+  }
   CalibrationEvaluation e;
+  const auto known = std::find_if(ctx.known->begin(), ctx.known->end(),
+                                  [&](const CalibrationEvaluation& k) { return same_micro_parameters(k.material, m); });
+  if (known != ctx.known->end()) {
+    e = *known;
+    e.from_checkpoint = true;
+  } else {
+    const auto start = std::chrono::steady_clock::now();
+    e.macro = measure_macro_properties(*ctx.specimen, m, ctx.spec->tension, ctx.spec->compression);
+    e.max_relative_error = max_relative_error(e.macro, ctx.spec->targets);
+    e.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
   e.index = static_cast<int>(ctx.result.log.size());
   e.material = m;
-  e.macro = measure_macro_properties(*ctx.specimen, m, ctx.spec->tension, ctx.spec->compression);
-  e.max_relative_error = max_relative_error(e.macro, ctx.spec->targets);
-  e.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   ctx.result.log.push_back(e);
   if (ctx.result.log.size() == 1 || e.max_relative_error < ctx.result.max_relative_error) {
     ctx.result.material = m;
@@ -74,42 +102,53 @@ MacroProperties evaluate(Context& ctx, const Material& m) {
 // Ranges of the two iterated variables (c >= sigma_c: below it the tensile strength follows c, not
 // sigma_c, and sigma_c,macro / sigma_t,macro stops responding).
 constexpr double kKappaMin = 1.2, kKappaMax = 10.0, kRatioMin = 1.0, kRatioMax = 12.0;
+// Trend slopes measured on the seed specimen: d ln nu / d ln kappa, d ln R / d ln(c / sigma_c); and the
+// bounds a secant estimate is kept within (both responses increase; the R slope grows with c / sigma_c).
+constexpr double kSlopeNu = 0.8, kSlopeR = 0.6, kSlopeNuMin = 0.2, kSlopeRMin = 0.15, kSlopeMax = 3.0;
+// Smallest move of a variable (in ln) that a secant slope is taken over: below it DEM noise dominates.
+constexpr double kSecantMinStep = 0.02;
 
+/// The current material with kappa* = kappabar* = exp(ln_kappa) and c = exp(ln_ratio) sigma_c for the free
+/// ones, clamped to their ranges.
+Material material_at(const Context& ctx, double ln_kappa, double ln_ratio) {
+  Material m = ctx.current;
+  if (ctx.spec->free_stiffness_ratio)
+    m.contact.stiffness_ratio = m.joint.stiffness_ratio = std::exp(std::clamp(ln_kappa, std::log(kKappaMin), std::log(kKappaMax)));
+  if (ctx.spec->free_cohesion)
+    m.joint.cohesion_pa = std::exp(std::clamp(ln_ratio, std::log(kRatioMin), std::log(kRatioMax))) * m.joint.tensile_strength_pa;
+  m.joint = FlatJointParams::validated(m.joint, "material");
+  return m;
+}
 
-}  // namespace
+double ln_strength_ratio(const MacroProperties& p) { return std::log(p.compressive_strength_pa / p.tensile_strength_pa); }
 
-CalibrationResult calibrate(const Simulation& specimen, const Material& start, const CalibrationSpec& spec,
-                            const std::function<void(const CalibrationEvaluation&)>& on_evaluation) {
-  Context ctx{&specimen, &spec, &on_evaluation, start, {}, false};
-  const std::size_t n = (spec.free_stiffness_ratio ? 1u : 0u) + (spec.free_cohesion ? 1u : 0u);
-  if (n == 0) {
-    while (!ctx.done) evaluate(ctx, ctx.current);
-    return ctx.result;
-  }
-  // Diagonal quasi-Newton (secant) iteration in log variables: nu responds to kappa, R = sigma_c,macro /
-  // sigma_t,macro to c / sigma_c (the off-diagonal responses are weak). Each slope starts from a trend
-  // measured on the seed specimen and is re-estimated by the secant through the last two evaluations that
-  // moved that variable; steps are capped (30 % in kappa, 40 % in c / sigma_c) because the response is not
-  // smooth and its slope grows with c / sigma_c.
+/// The start point in the log variables.
+std::pair<double, double> start_point(const Material& start) {
+  // c / sigma_c starts at >= 1.5: for c <~ sigma_c the strength ratio barely responds (see the ranges).
+  return {std::log(std::clamp(start.joint.stiffness_ratio, kKappaMin, kKappaMax)),
+          std::log(std::clamp(start.joint.cohesion_pa / start.joint.tensile_strength_pa, 1.5, kRatioMax))};
+}
+
+/// The secant iteration (CalibrationMethod::secant). Diagonal quasi-Newton in log variables: nu responds to
+/// kappa, R to c / sigma_c (the off-diagonal responses are weak). Each slope starts from its trend and is
+/// re-estimated by the secant through the last two evaluations that moved that variable; steps are capped
+/// (30 % in kappa, 40 % in c / sigma_c) because the response is not smooth and its slope grows with c / sigma_c.
+void solve_secant(Context& ctx) {
+  const auto& spec = *ctx.spec;
   const auto& t = spec.targets;
   const double ln_r_target = std::log(t.compressive_strength_pa / t.tensile_strength_pa);
-  double ln_kappa = std::log(std::clamp(start.joint.stiffness_ratio, kKappaMin, kKappaMax));
-  // Start at c / sigma_c >= 1.5: for c <~ sigma_c the strength ratio barely responds (see the header).
-  double ln_ratio = std::log(std::clamp(start.joint.cohesion_pa / start.joint.tensile_strength_pa, 1.5, kRatioMax));
-  double slope_nu = 0.8, slope_r = 0.6;  // d ln nu / d ln kappa, d ln R / d ln(c / sigma_c)
+  auto [ln_kappa, ln_ratio] = start_point(ctx.current);
+  double slope_nu = kSlopeNu, slope_r = kSlopeR;
   double prev_ln_kappa = 0, prev_ln_nu = 0, prev_ln_ratio = 0, prev_ln_r = 0;
   bool have_prev = false;
   while (!ctx.done) {
-    Material m = ctx.current;
-    if (spec.free_stiffness_ratio) m.contact.stiffness_ratio = m.joint.stiffness_ratio = std::exp(ln_kappa);
-    if (spec.free_cohesion) m.joint.cohesion_pa = std::exp(ln_ratio) * m.joint.tensile_strength_pa;
-    m.joint = FlatJointParams::validated(m.joint, "material");
-    const MacroProperties got = evaluate(ctx, m);
-    const double ln_nu = std::log(got.poissons_ratio), ln_r = std::log(got.compressive_strength_pa / got.tensile_strength_pa);
+    const MacroProperties got = evaluate(ctx, material_at(ctx, ln_kappa, ln_ratio));
+    const double ln_nu = std::log(got.poissons_ratio), ln_r = ln_strength_ratio(got);
     if (have_prev) {
-      // Secant slopes, kept within physical bounds (both responses increase).
-      if (std::abs(ln_kappa - prev_ln_kappa) > 0.02) slope_nu = std::clamp((ln_nu - prev_ln_nu) / (ln_kappa - prev_ln_kappa), 0.2, 3.0);
-      if (std::abs(ln_ratio - prev_ln_ratio) > 0.02) slope_r = std::clamp((ln_r - prev_ln_r) / (ln_ratio - prev_ln_ratio), 0.15, 3.0);
+      if (std::abs(ln_kappa - prev_ln_kappa) > kSecantMinStep)
+        slope_nu = std::clamp((ln_nu - prev_ln_nu) / (ln_kappa - prev_ln_kappa), kSlopeNuMin, kSlopeMax);
+      if (std::abs(ln_ratio - prev_ln_ratio) > kSecantMinStep)
+        slope_r = std::clamp((ln_r - prev_ln_r) / (ln_ratio - prev_ln_ratio), kSlopeRMin, kSlopeMax);
     }
     prev_ln_kappa = ln_kappa, prev_ln_nu = ln_nu, prev_ln_ratio = ln_ratio, prev_ln_r = ln_r;
     have_prev = true;
@@ -119,6 +158,185 @@ CalibrationResult calibrate(const Simulation& specimen, const Material& start, c
     if (spec.free_cohesion)
       ln_ratio = std::clamp(ln_ratio + std::clamp((ln_r_target - ln_r) / slope_r, -0.4, 0.4), std::log(kRatioMin),
                             std::log(kRatioMax));
+  }
+}
+
+/// The reduced problem handed to GSL: the free ones of x = (ln kappa, ln(c / sigma_c)).
+struct Reduced {
+  Context* ctx;
+  bool kappa_free, ratio_free;
+  std::exception_ptr error;  ///< C++ exceptions must not unwind through GSL's C frames
+
+  std::size_t size() const { return (kappa_free ? 1u : 0u) + (ratio_free ? 1u : 0u); }
+  /// Full (ln kappa, ln ratio) from the solver's vector (material_at ignores a fixed variable's value).
+  std::pair<double, double> full(const gsl_vector* x) const {
+    std::size_t i = 0;
+    const double ln_kappa = kappa_free ? gsl_vector_get(x, i++) : 0.0;
+    const double ln_ratio = ratio_free ? gsl_vector_get(x, i) : 0.0;
+    return {ln_kappa, ln_ratio};
+  }
+  int residual(const gsl_vector* x, gsl_vector* f) {
+    // Stop asking for evaluations once done; the driver sees ctx->done and ends.
+    if (ctx->done) return GSL_EBADFUNC;
+    try {
+      const auto [ln_kappa, ln_ratio] = full(x);
+      const MacroProperties got = evaluate(*ctx, material_at(*ctx, ln_kappa, ln_ratio));
+      const auto& t = ctx->spec->targets;
+      std::size_t i = 0;
+      if (kappa_free) gsl_vector_set(f, i++, std::log(got.poissons_ratio / t.poissons_ratio));
+      if (ratio_free) gsl_vector_set(f, i, ln_strength_ratio(got) - std::log(t.compressive_strength_pa / t.tensile_strength_pa));
+      return GSL_SUCCESS;
+    } catch (...) {
+      error = std::current_exception();
+      return GSL_EBADFUNC;
+    }
+  }
+  /// The trend Jacobian: diagonal, each slope from the secant through the two latest evaluations that moved
+  /// its variable by more than kSecantMinStep, else the measured trend.
+  int jacobian(gsl_matrix* j) const {
+    double slope_nu = kSlopeNu, slope_r = kSlopeR;
+    bool have_nu = false, have_r = false;
+    const auto& log = ctx->result.log;
+    for (std::size_t b = log.size(); b-- > 1 && !(have_nu && have_r);) {
+      const auto& mb = log[b].material.joint;
+      const auto& pb = log[b].macro;
+      for (std::size_t a = b; a-- > 0 && !(have_nu && have_r);) {
+        const auto& ma = log[a].material.joint;
+        const auto& pa = log[a].macro;
+        const double dk = std::log(mb.stiffness_ratio / ma.stiffness_ratio);
+        const double dr = std::log((mb.cohesion_pa / mb.tensile_strength_pa) / (ma.cohesion_pa / ma.tensile_strength_pa));
+        if (!have_nu && std::abs(dk) > kSecantMinStep) {
+          slope_nu = std::clamp(std::log(pb.poissons_ratio / pa.poissons_ratio) / dk, kSlopeNuMin, kSlopeMax);
+          have_nu = true;
+        }
+        if (!have_r && std::abs(dr) > kSecantMinStep) {
+          slope_r = std::clamp((ln_strength_ratio(pb) - ln_strength_ratio(pa)) / dr, kSlopeRMin, kSlopeMax);
+          have_r = true;
+        }
+      }
+    }
+    gsl_matrix_set_zero(j);
+    std::size_t i = 0;
+    if (kappa_free) gsl_matrix_set(j, i, i, slope_nu), ++i;
+    if (ratio_free) gsl_matrix_set(j, i, i, slope_r);
+    return GSL_SUCCESS;
+  }
+};
+
+int reduced_f(const gsl_vector* x, void* params, gsl_vector* f) { return static_cast<Reduced*>(params)->residual(x, f); }
+int reduced_df(const gsl_vector*, void* params, gsl_matrix* j) { return static_cast<Reduced*>(params)->jacobian(j); }
+int reduced_fdf(const gsl_vector* x, void* params, gsl_vector* f, gsl_matrix* j) {
+  auto* r = static_cast<Reduced*>(params);
+  const int status = r->residual(x, f);
+  return status != GSL_SUCCESS ? status : r->jacobian(j);
+}
+
+/// Powell's hybrid method (CalibrationMethod::hybrid) on the reduced problem. GSL's own convergence tests are
+/// not used: only the four targets within tolerance (checked after each evaluation) end the calibration,
+/// since the residual can be zero while E or sigma_t still wait for their proportional correction (then the
+/// next trial point, near the current one, carries it). When GSL reports no progress, the solver is
+/// restarted at the best point with a fresh trend Jacobian.
+void solve_hybrid(Context& ctx) {
+  Reduced reduced{&ctx, ctx.spec->free_stiffness_ratio, ctx.spec->free_cohesion, nullptr};
+  const std::size_t n = reduced.size();
+  gsl_multiroot_function_fdf fdf{&reduced_f, &reduced_df, &reduced_fdf, n, &reduced};
+  const std::unique_ptr<gsl_multiroot_fdfsolver, void (*)(gsl_multiroot_fdfsolver*)> solver(
+      gsl_multiroot_fdfsolver_alloc(gsl_multiroot_fdfsolver_hybridsj, n), &gsl_multiroot_fdfsolver_free);
+  const std::unique_ptr<gsl_vector, void (*)(gsl_vector*)> x(gsl_vector_alloc(n), &gsl_vector_free);
+  if (!solver || !x) throw std::bad_alloc();
+  const auto set_start = [&](double ln_kappa, double ln_ratio) {
+    std::size_t i = 0;
+    if (reduced.kappa_free) gsl_vector_set(x.get(), i++, ln_kappa);
+    if (reduced.ratio_free) gsl_vector_set(x.get(), i, ln_ratio);
+    return gsl_multiroot_fdfsolver_set(solver.get(), &fdf, x.get());
+  };
+  gsl_error_handler_t* const previous = gsl_set_error_handler_off();  // statuses are handled here
+  int status = std::apply(set_start, start_point(ctx.current));
+  while (!ctx.done && !reduced.error) {
+    if (status != GSL_SUCCESS) {
+      // No progress (GSL_ENOPROG, GSL_ENOPROGJ) or a failed restart: start again from the best point so far
+      // (its kappa and c / sigma_c, the current proportional corrections) with a fresh Jacobian.
+      const auto& best = ctx.result.material.joint;
+      status = set_start(std::log(best.stiffness_ratio), std::log(best.cohesion_pa / best.tensile_strength_pa));
+      continue;
+    }
+    status = gsl_multiroot_fdfsolver_iterate(solver.get());
+  }
+  gsl_set_error_handler(previous);
+  if (reduced.error) std::rethrow_exception(reduced.error);
+}
+
+}  // namespace
+
+bool same_micro_parameters(const Material& a, const Material& b) {
+  // Every numeric field (a new field must be added here and to serialize_evaluations).
+  static_assert(sizeof(LinearContactParams) == 3 * sizeof(double) && sizeof(FlatJointParams) == 9 * sizeof(double));
+  const auto& ca = a.contact;
+  const auto& cb = b.contact;
+  const auto& ja = a.joint;
+  const auto& jb = b.joint;
+  return a.density_kg_per_m3 == b.density_kg_per_m3 && a.local_damping == b.local_damping &&
+         ca.effective_modulus_pa == cb.effective_modulus_pa && ca.stiffness_ratio == cb.stiffness_ratio &&
+         ca.friction_coefficient == cb.friction_coefficient && ja.effective_modulus_pa == jb.effective_modulus_pa &&
+         ja.stiffness_ratio == jb.stiffness_ratio && ja.tensile_strength_pa == jb.tensile_strength_pa &&
+         ja.cohesion_pa == jb.cohesion_pa && ja.friction_angle_rad == jb.friction_angle_rad &&
+         ja.friction_coefficient == jb.friction_coefficient && ja.n_elements == jb.n_elements &&
+         ja.radius_multiplier == jb.radius_multiplier && ja.tan_friction_angle == jb.tan_friction_angle;
+}
+
+namespace {
+constexpr std::uint64_t kEvaluationsMagic = 0x4b45524643414c31;  // "KERFCAL1"
+
+template <class Visit>
+void visit_evaluation(CalibrationEvaluation& e, Visit&& v) {
+  auto& m = e.material;
+  v(m.density_kg_per_m3), v(m.local_damping);
+  v(m.contact.effective_modulus_pa), v(m.contact.stiffness_ratio), v(m.contact.friction_coefficient);
+  v(m.joint.effective_modulus_pa), v(m.joint.stiffness_ratio), v(m.joint.tensile_strength_pa), v(m.joint.cohesion_pa);
+  v(m.joint.friction_angle_rad), v(m.joint.friction_coefficient), v(m.joint.n_elements), v(m.joint.radius_multiplier);
+  v(m.joint.tan_friction_angle);
+  v(e.macro.youngs_modulus_pa), v(e.macro.poissons_ratio), v(e.macro.tensile_strength_pa), v(e.macro.compressive_strength_pa);
+  v(e.index), v(e.max_relative_error), v(e.wall_time_s);
+}
+}  // namespace
+
+std::string serialize_evaluations(const std::vector<CalibrationEvaluation>& log) {
+  std::string out;
+  serial::put_raw(out, kEvaluationsMagic);
+  serial::put_raw(out, static_cast<std::uint64_t>(log.size()));
+  for (CalibrationEvaluation e : log) {
+    serial::put_str(out, e.material.name);
+    visit_evaluation(e, [&](const auto& v) { serial::put_raw(out, v); });
+  }
+  return out;
+}
+
+std::vector<CalibrationEvaluation> deserialize_evaluations(std::string_view bytes) {
+  serial::In in{bytes};
+  std::uint64_t magic = 0, n = 0;
+  in.raw(magic);
+  if (magic != kEvaluationsMagic) throw ModelError("calibrate", "not a list of calibration evaluations");
+  in.raw(n);
+  if (n > bytes.size()) throw ModelError("calibrate", "corrupt list of calibration evaluations");
+  std::vector<CalibrationEvaluation> log(static_cast<std::size_t>(n));
+  for (auto& e : log) {
+    in.str(e.material.name);
+    visit_evaluation(e, [&](auto& v) { in.raw(v); });
+  }
+  return log;
+}
+
+CalibrationResult calibrate(const Simulation& specimen, const Material& start, const CalibrationSpec& spec,
+                            const std::function<void(const CalibrationEvaluation&)>& on_evaluation,
+                            const std::vector<CalibrationEvaluation>& known) {
+  Context ctx{&specimen, &spec, &on_evaluation, &known, start, {}, false, 0};
+  if (!spec.free_stiffness_ratio && !spec.free_cohesion) {
+    // Only the proportional corrections: repeat them until within tolerance.
+    while (!ctx.done) evaluate(ctx, ctx.current);
+  } else if (spec.method == CalibrationMethod::secant) {
+    solve_secant(ctx);
+  } else {
+    solve_hybrid(ctx);
   }
   return ctx.result;
 }

@@ -1,6 +1,7 @@
 // kerf-dem: the 2D bonded-particle DEM with flat joints (issue 4).
 //
-//   kerf-dem run SCENE.json [--set key.path=value]... [--out DIR] [--threads N] [--replicates N]
+//   kerf-dem run SCENE.json [--set key.path=value]... [--out DIR] [--threads N] [--checkpoint-every N] [--replicates N]
+//   kerf-dem resume DIR [--threads N]
 //
 // Scene kinds: "specimen" (genesis, saved for reuse), "tension", "compression" (seed 000 calibration
 // tests), "calibrate", "cut" (orthogonal cutting, seed 000 Section 4). Exit status 2 for bad input (the message names the field, the value and what was expected),
@@ -153,6 +154,8 @@ Scene read_scene(const Json& doc, const fs::path& scene_dir) {
     }
     c.tolerance = cal.get_number_or("tolerance_percent", 3, Range::open(0.0, 100.0), "%") / 100;
     c.max_evaluations = cal.get_int_or("max_evaluations", 24, 1, 1000);
+    c.method = cal.get_choice_or("method", "hybrid", {"hybrid", "secant"}) == "secant" ? CalibrationMethod::secant
+                                                                                      : CalibrationMethod::hybrid;
     s.calibrated_name = cal.get_string_or("material_name", "calibrated");
     if (s.calibrated_name.empty() || s.calibrated_name.find_first_of("/\\. ") != std::string::npos)
       throw InputError(cal.key_path("material_name"), s.calibrated_name, "a file name without '/', '.', spaces");
@@ -237,62 +240,6 @@ Json macro_json(const MacroProperties& m) {
               {"compressive_strength_MPa", units::pa_to_mpa(m.compressive_strength_pa)}};
 }
 
-int run_calibration(const Scene& scene, const Simulation& specimen, Json& summary, const fs::path& out) {
-  const auto start = std::chrono::steady_clock::now();
-  std::string log = csv_line({"evaluation", "effective_modulus_GPa", "stiffness_ratio", "tensile_strength_MPa",
-                              "cohesion_MPa", "youngs_modulus_GPa", "poissons_ratio", "macro_tensile_strength_MPa",
-                              "macro_compressive_strength_MPa", "max_error_percent", "wall_time_s"});
-  const CalibrationResult r = calibrate(specimen, scene.material, scene.calibration, [&](const CalibrationEvaluation& e) {
-    const auto& m = e.material;
-    log += csv_line({std::to_string(e.index), csv_number(units::pa_to_gpa(m.contact.effective_modulus_pa)),
-                     csv_number(m.joint.stiffness_ratio), csv_number(units::pa_to_mpa(m.joint.tensile_strength_pa)),
-                     csv_number(units::pa_to_mpa(m.joint.cohesion_pa)), csv_number(units::pa_to_gpa(e.macro.youngs_modulus_pa)),
-                     csv_number(e.macro.poissons_ratio), csv_number(units::pa_to_mpa(e.macro.tensile_strength_pa)),
-                     csv_number(units::pa_to_mpa(e.macro.compressive_strength_pa)), csv_number(100 * e.max_relative_error),
-                     csv_number(e.wall_time_s)});
-    write_file_atomically(out / "calibration_log.csv", log);
-    std::cout << fmt::format("evaluation {}: E* {:.2f} GPa, kappa {:.3f}, sigma_c {:.1f} MPa, c {:.1f} MPa -> E {:.2f} GPa, "
-                             "nu {:.3f}, sigma_t {:.1f} MPa, sigma_C {:.1f} MPa (max error {:.1f} %, {:.0f} s)\n",
-                             e.index, units::pa_to_gpa(m.contact.effective_modulus_pa), m.joint.stiffness_ratio,
-                             units::pa_to_mpa(m.joint.tensile_strength_pa), units::pa_to_mpa(m.joint.cohesion_pa),
-                             units::pa_to_gpa(e.macro.youngs_modulus_pa), e.macro.poissons_ratio,
-                             units::pa_to_mpa(e.macro.tensile_strength_pa), units::pa_to_mpa(e.macro.compressive_strength_pa),
-                             100 * e.max_relative_error, e.wall_time_s)
-              << std::flush;
-  });
-  Material calibrated = r.material;
-  calibrated.name = scene.calibrated_name;
-  const std::string description = fmt::format(
-      "Calibrated by kerf-dem calibrate ({} evaluations, {}converged: max error {:.2f} % against targets E {:.1f} GPa, "
-      "nu {:.3f}, sigma_t {:.1f} MPa, sigma_c {:.1f} MPa) on a {} specimen of {} disks.",
-      r.log.size(), r.converged ? "" : "NOT ", 100 * r.max_relative_error, units::pa_to_gpa(scene.calibration.targets.youngs_modulus_pa),
-      scene.calibration.targets.poissons_ratio, units::pa_to_mpa(scene.calibration.targets.tensile_strength_pa),
-      units::pa_to_mpa(scene.calibration.targets.compressive_strength_pa), summary["specimen"]["packing"].get<std::string>(),
-      specimen.particles().size());
-  const Json material = library_material_json(calibrated, "Flat-joint DEM material calibrated by kerf-dem",
-                                              description, "kerf-dem calibrate (see description)");
-  write_file_atomically(out / (scene.calibrated_name + ".json"), material.dump(2) + "\n");
-  if (scene.install_material) {
-    const fs::path installed = kerf::data_directory() / "materials" / (scene.calibrated_name + ".json");
-    write_file_atomically(installed, material.dump(2) + "\n");
-    summary["installed_material"] = installed.string();
-  }
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  summary["results"] = Json{{"converged", r.converged},
-                            {"max_error_percent", 100 * r.max_relative_error},
-                            {"evaluations", r.log.size()},
-                            {"targets", macro_json(scene.calibration.targets)},
-                            {"achieved", macro_json(r.macro)},
-                            {"calibrated_material", material}};
-  summary["n_particles"] = specimen.particles().size();
-  summary["wall_time_s"] = wall;
-  write_file_atomically(out / "summary.json", summary.dump(2) + "\n");
-  std::cout << fmt::format("calibration {} after {} evaluations (max error {:.2f} %), {:.0f} s -> {}\n",
-                           r.converged ? "converged" : "did NOT converge", r.log.size(), 100 * r.max_relative_error, wall,
-                           (out / (scene.calibrated_name + ".json")).string());
-  return r.converged ? 0 : kExitModelError;
-}
-
 /// What a test needs to continue after a kill (written atomically every --checkpoint-every samples).
 struct Checkpoint {
   Json scene, summary;
@@ -338,6 +285,75 @@ struct Checkpoint {
     return c;
   }
 };
+
+/// Runs (or, with `known` from a checkpoint, continues) a calibration. With checkpoint_every > 0 a checkpoint
+/// is written after every evaluation (an evaluation is the unit of work that cannot be cut short).
+int run_calibration(const Scene& scene, const Json& doc, const Simulation& specimen, Json summary, const fs::path& out,
+                    int checkpoint_every, const std::string& scene_dir, const std::vector<CalibrationEvaluation>& known) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::string specimen_bytes = checkpoint_every > 0 ? specimen.serialize() : std::string();
+  std::vector<CalibrationEvaluation> done;
+  std::string log = csv_line({"evaluation", "effective_modulus_GPa", "stiffness_ratio", "tensile_strength_MPa",
+                              "cohesion_MPa", "youngs_modulus_GPa", "poissons_ratio", "macro_tensile_strength_MPa",
+                              "macro_compressive_strength_MPa", "max_error_percent", "wall_time_s"});
+  const CalibrationResult r = calibrate(specimen, scene.material, scene.calibration, [&](const CalibrationEvaluation& e) {
+    const auto& m = e.material;
+    log += csv_line({std::to_string(e.index), csv_number(units::pa_to_gpa(m.contact.effective_modulus_pa)),
+                     csv_number(m.joint.stiffness_ratio), csv_number(units::pa_to_mpa(m.joint.tensile_strength_pa)),
+                     csv_number(units::pa_to_mpa(m.joint.cohesion_pa)), csv_number(units::pa_to_gpa(e.macro.youngs_modulus_pa)),
+                     csv_number(e.macro.poissons_ratio), csv_number(units::pa_to_mpa(e.macro.tensile_strength_pa)),
+                     csv_number(units::pa_to_mpa(e.macro.compressive_strength_pa)), csv_number(100 * e.max_relative_error),
+                     csv_number(e.wall_time_s)});
+    write_file_atomically(out / "calibration_log.csv", log);
+    done.push_back(e);
+    if (checkpoint_every > 0) {
+      const Checkpoint c{doc, summary, {}, static_cast<int>(done.size()), checkpoint_every, scene_dir, specimen_bytes,
+                         serialize_evaluations(done)};
+      write_file_atomically(out / "checkpoint.bin", c.bytes());
+    }
+    std::cout << fmt::format("evaluation {}: E* {:.2f} GPa, kappa {:.3f}, sigma_c {:.1f} MPa, c {:.1f} MPa -> E {:.2f} GPa, "
+                             "nu {:.3f}, sigma_t {:.1f} MPa, sigma_C {:.1f} MPa (max error {:.1f} %, {:.0f} s{})\n",
+                             e.index, units::pa_to_gpa(m.contact.effective_modulus_pa), m.joint.stiffness_ratio,
+                             units::pa_to_mpa(m.joint.tensile_strength_pa), units::pa_to_mpa(m.joint.cohesion_pa),
+                             units::pa_to_gpa(e.macro.youngs_modulus_pa), e.macro.poissons_ratio,
+                             units::pa_to_mpa(e.macro.tensile_strength_pa), units::pa_to_mpa(e.macro.compressive_strength_pa),
+                             100 * e.max_relative_error, e.wall_time_s, e.from_checkpoint ? ", from the checkpoint" : "")
+              << std::flush;
+  }, known);
+  Material calibrated = r.material;
+  calibrated.name = scene.calibrated_name;
+  const std::string description = fmt::format(
+      "Calibrated by kerf-dem calibrate ({} evaluations, {}converged: max error {:.2f} % against targets E {:.1f} GPa, "
+      "nu {:.3f}, sigma_t {:.1f} MPa, sigma_c {:.1f} MPa) on a {} specimen of {} disks.",
+      r.log.size(), r.converged ? "" : "NOT ", 100 * r.max_relative_error, units::pa_to_gpa(scene.calibration.targets.youngs_modulus_pa),
+      scene.calibration.targets.poissons_ratio, units::pa_to_mpa(scene.calibration.targets.tensile_strength_pa),
+      units::pa_to_mpa(scene.calibration.targets.compressive_strength_pa), summary["specimen"]["packing"].get<std::string>(),
+      specimen.particles().size());
+  const Json material = library_material_json(calibrated, "Flat-joint DEM material calibrated by kerf-dem",
+                                              description, "kerf-dem calibrate (see description)");
+  write_file_atomically(out / (scene.calibrated_name + ".json"), material.dump(2) + "\n");
+  if (scene.install_material) {
+    const fs::path installed = kerf::data_directory() / "materials" / (scene.calibrated_name + ".json");
+    write_file_atomically(installed, material.dump(2) + "\n");
+    summary["installed_material"] = installed.string();
+  }
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  summary["results"] = Json{{"converged", r.converged},
+                            {"max_error_percent", 100 * r.max_relative_error},
+                            {"evaluations", r.log.size()},
+                            {"targets", macro_json(scene.calibration.targets)},
+                            {"achieved", macro_json(r.macro)},
+                            {"calibrated_material", material}};
+  summary["n_particles"] = specimen.particles().size();
+  summary["wall_time_s"] = wall;
+  write_file_atomically(out / "summary.json", summary.dump(2) + "\n");
+  std::error_code ignored;
+  fs::remove(out / "checkpoint.bin", ignored);  // finished: nothing to resume
+  std::cout << fmt::format("calibration {} after {} evaluations (max error {:.2f} %), {:.0f} s -> {}\n",
+                           r.converged ? "converged" : "did NOT converge", r.log.size(), 100 * r.max_relative_error, wall,
+                           (out / (scene.calibrated_name + ".json")).string());
+  return r.converged ? 0 : kExitModelError;
+}
 
 struct TestProgress {
   std::vector<std::pair<double, std::vector<std::string>>> frames;
@@ -588,9 +604,9 @@ int run_command(const std::string& scene_path, const std::vector<std::string>& s
   Json doc = read_json_file(scene_path);
   for (const auto& s : sets) apply_override(doc, s);
   const Scene scene = read_scene(doc, fs::path(scene_path).parent_path());
-  if (checkpoint_every > 0 && scene.kind != "tension" && scene.kind != "compression" && scene.kind != "cut")
+  if (checkpoint_every > 0 && scene.kind == "specimen")
     throw InputError("--checkpoint-every", std::to_string(checkpoint_every),
-                     "checkpoints only for tension, compression and cut scenes");
+                     "checkpoints only for tension, compression, calibrate and cut scenes");
   if (checkpoint_every > 0 && replicates > 1)
     throw InputError("--checkpoint-every", std::to_string(checkpoint_every), "no checkpoints with --replicates");
   if (replicates > 1 && scene.kind != "cut")
@@ -627,7 +643,9 @@ int run_command(const std::string& scene_path, const std::vector<std::string>& s
                              (out / "specimen.json").string());
     return 0;
   }
-  if (scene.kind == "calibrate") return run_calibration(scene, specimen, summary, out);
+  if (scene.kind == "calibrate")
+    return run_calibration(scene, doc, specimen, summary, out, checkpoint_every,
+                           fs::absolute(scene_path).parent_path().string(), {});
   if (scene.kind == "cut") {
     continue_cut(scene, doc, summary, out, checkpoint_every, CutRun(specimen, scene.cut),
                  {{}, 0, fs::absolute(scene_path).parent_path().string()});
@@ -652,6 +670,9 @@ int resume_command(const fs::path& dir, int threads) {
     return 0;
   }
   const Simulation specimen = Simulation::deserialize(c.specimen);
+  if (scene.kind == "calibrate")
+    return run_calibration(scene, c.scene, specimen, c.summary, dir, c.checkpoint_every, c.scene_dir,
+                           deserialize_evaluations(c.run));
   return continue_test(scene, c.scene, specimen, c.summary, dir, c.checkpoint_every, LabTestRun::deserialize(c.run),
                        {c.frames, c.sample_index, c.scene_dir});
 }
@@ -670,11 +691,11 @@ int main(int argc, char** argv) {
   run->add_option("--set", sets, "override a scene value: key.path=value (repeatable)");
   run->add_option("--out", out_dir, "output directory (default: out)");
   run->add_option("--threads", threads, "OpenMP threads (default: all)")->check(CLI::Range(1, 1024));
-  run->add_option("--checkpoint-every", checkpoint_every, "write DIR/checkpoint.bin every N samples (tension, compression, cut)")
+  run->add_option("--checkpoint-every", checkpoint_every, "write DIR/checkpoint.bin every N samples (tension, compression, cut; calibrate: after every evaluation)")
       ->check(CLI::Range(1, 100000000));
   run->add_option("--replicates", replicates, "cut scenes: repeat on N packings (seeds specimen.seed + 0..N-1)")
       ->check(CLI::Range(1, 1000));
-  auto* resume = app.add_subcommand("resume", "continue a killed test or cut from DIR/checkpoint.bin");
+  auto* resume = app.add_subcommand("resume", "continue a killed test, cut or calibration from DIR/checkpoint.bin");
   resume->add_option("dir", resume_dir, "output directory of the killed run")->required();
   resume->add_option("--threads", threads, "OpenMP threads (default: all)")->check(CLI::Range(1, 1024));
   try {

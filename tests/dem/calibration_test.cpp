@@ -1,13 +1,17 @@
-// Calibration: the exact proportional trends, and a small-specimen calibration that must recover macro
+// Calibration: the exact proportional trends, a small-specimen calibration that must recover macro
 // properties produced by known micro-parameters (a self-consistent target, so the test is exact about
-// what is reachable).
+// what is reachable), and resuming from saved evaluations (what `kerf-dem resume` relies on).
 #include "kerf/dem/calibration.hpp"
 
 #include <catch2/catch.hpp>
+#include <cmath>
+#include <string>
+#include <string_view>
 
 #include "quick_specimen.hpp"
 
 #include "kerf/dem/specimen.hpp"
+#include "kerf/error.hpp"
 
 using namespace kerf::dem;
 using Catch::Matchers::WithinRel;
@@ -47,8 +51,9 @@ TEST_CASE("calibration: E follows E*, strengths follow (sigma_c, c)", "[calibrat
   CHECK_THAT(b.compressive_strength_pa, WithinRel(1.5 * a.compressive_strength_pa, 0.03));
 }
 
-TEST_CASE("calibration: recovers reachable targets within 3 % on a small specimen", "[calibration]") {
-  const Simulation specimen = tiny_specimen();
+namespace {
+
+CalibrationSpec reachable_spec(const Simulation& specimen) {
   Material hidden;
   hidden.contact.effective_modulus_pa = hidden.joint.effective_modulus_pa = 80e9;
   hidden.contact.stiffness_ratio = hidden.joint.stiffness_ratio = 2.5;
@@ -59,6 +64,26 @@ TEST_CASE("calibration: recovers reachable targets within 3 % on a small specime
   spec.compression = loading("compression");
   spec.targets = measure_macro_properties(specimen, hidden, spec.tension, spec.compression);
   spec.max_evaluations = 16;
+  return spec;
+}
+
+void check_same_log(const std::vector<CalibrationEvaluation>& a, const std::vector<CalibrationEvaluation>& b) {
+  REQUIRE(a.size() == b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    CHECK(same_micro_parameters(a[i].material, b[i].material));
+    CHECK(a[i].macro.youngs_modulus_pa == b[i].macro.youngs_modulus_pa);
+    CHECK(a[i].macro.poissons_ratio == b[i].macro.poissons_ratio);
+    CHECK(a[i].macro.tensile_strength_pa == b[i].macro.tensile_strength_pa);
+    CHECK(a[i].macro.compressive_strength_pa == b[i].macro.compressive_strength_pa);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("calibration: recovers reachable targets within 3 % on a small specimen (hybrid)", "[calibration]") {
+  const Simulation specimen = tiny_specimen();
+  const CalibrationSpec spec = reachable_spec(specimen);
+  REQUIRE(spec.method == CalibrationMethod::hybrid);
   int n = 0;
   const CalibrationResult r = calibrate(specimen, Material{}, spec, [&](const CalibrationEvaluation&) { ++n; });
   CHECK(r.converged);
@@ -66,4 +91,50 @@ TEST_CASE("calibration: recovers reachable targets within 3 % on a small specime
   CHECK(r.max_relative_error <= 0.03);
   const MacroProperties check = measure_macro_properties(specimen, r.material, spec.tension, spec.compression);
   CHECK(max_relative_error(check, spec.targets) <= 0.03);
+
+  SECTION("resumed from all but the last evaluation: the same calibration, only the last one re-run") {
+    REQUIRE(r.log.size() >= 2);
+    // Through the checkpoint's byte form, as kerf-dem resume does.
+    const std::vector<CalibrationEvaluation> saved(r.log.begin(), r.log.end() - 1);
+    const auto known = deserialize_evaluations(serialize_evaluations(saved));
+    check_same_log(saved, known);
+    CHECK(known.back().wall_time_s == saved.back().wall_time_s);
+    const CalibrationResult resumed = calibrate(specimen, Material{}, spec, {}, known);
+    check_same_log(r.log, resumed.log);
+    for (std::size_t i = 0; i < resumed.log.size(); ++i) CHECK(resumed.log[i].from_checkpoint == (i + 1 < r.log.size()));
+    CHECK(resumed.converged);
+    CHECK(same_micro_parameters(resumed.material, r.material));
+  }
+}
+
+TEST_CASE("calibration: the secant method recovers reachable targets within 3 %", "[calibration]") {
+  const Simulation specimen = tiny_specimen();
+  CalibrationSpec spec = reachable_spec(specimen);
+  spec.method = CalibrationMethod::secant;
+  const CalibrationResult r = calibrate(specimen, Material{}, spec);
+  CHECK(r.converged);
+  CHECK(r.max_relative_error <= 0.03);
+}
+
+TEST_CASE("calibration: evaluations serialise bit-exactly, corrupt bytes are rejected", "[calibration]") {
+  CalibrationEvaluation e;
+  e.index = 3;
+  e.material.name = "x";
+  e.material.joint.cohesion_pa = 0.1 + 0.2;  // not a short decimal
+  e.macro = {7.1e10 / 3, 0.23 / 7, 4.1e7 / 9, 3.3e8 / 11};
+  e.max_relative_error = 1.0 / 3;
+  e.wall_time_s = 2.0 / 3;
+  const auto back = deserialize_evaluations(serialize_evaluations({e, e}));
+  REQUIRE(back.size() == 2);
+  check_same_log({e, e}, back);
+  CHECK(back[1].index == 3);
+  CHECK(back[1].material.name == "x");
+  CHECK(back[1].max_relative_error == e.max_relative_error);
+  CHECK_THROWS_AS(deserialize_evaluations("not a list"), kerf::ModelError);
+  const std::string bytes = serialize_evaluations({e});
+  CHECK_THROWS_AS(deserialize_evaluations(std::string_view(bytes).substr(0, bytes.size() - 1)), kerf::ModelError);
+  Material other = e.material;
+  CHECK(same_micro_parameters(other, e.material));
+  other.joint.cohesion_pa = std::nextafter(other.joint.cohesion_pa, 1.0);
+  CHECK_FALSE(same_micro_parameters(other, e.material));
 }

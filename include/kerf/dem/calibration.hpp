@@ -5,16 +5,25 @@
 // Method. Two trends are exact for a linear-elastic-brittle assembly loaded quasi-statically: scaling all
 // moduli (E*, Ebar*) by a scales E and leaves nu and the strengths unchanged; scaling both bond strengths
 // (sigma_c, c) by b scales both strengths and leaves E and nu unchanged. So after every evaluation E* is
-// corrected by E_target / E and sigma_c, c by sigma_t,target / sigma_t. What remains are two nearly
-// decoupled responses, solved together by a diagonal quasi-Newton (secant) iteration in log variables with
-// capped steps: the stiffness ratio (kappa* = kappabar*) for nu, and the cohesion-to-tensile-strength
-// ratio c / sigma_c for sigma_c,macro / sigma_t,macro. (GSL's Levenberg-Marquardt with a finite-difference
-// Jacobian and its Nelder-Mead simplex were tried first: on the non-smooth DEM response both spent most
-// evaluations on rejected or exploratory moves and did not reach 3 % within 16 evaluations; see docs/dem.md.)
+// corrected by E_target / E and sigma_c, c by sigma_t,target / sigma_t. What remains is a 2-D root problem
+// in log variables, x = (ln kappa*, ln(c / sigma_c)) (kappa* = kappabar*), f = (ln nu - ln nu_target,
+// ln R - ln R_target) with R = sigma_c,macro / sigma_t,macro. Two solvers (CalibrationSpec::method):
+//  - hybrid: GSL's gsl_multiroot_fdfsolver_hybridsj (Powell's hybrid dogleg with a trust region). Its
+//    Jacobian comes from the near-proportional trends, diagonal (d ln nu / d ln kappa from 0.8, d ln R /
+//    d ln(c / sigma_c) from 0.6, re-estimated by secants through the evaluation history whenever GSL asks
+//    for a fresh one; between those GSL updates it by Broyden), so no DEM evaluation is spent on finite
+//    differences. Variables are clamped to their ranges inside the function.
+//  - secant: a hand-written diagonal secant iteration with capped steps (the method before the hybrid).
+// Evaluations are memoised by their exact micro-parameters (a repeated point is not re-run, and is not
+// counted against max_evaluations), and `known` answers evaluations from an interrupted run: calibrate is
+// deterministic given its answers, so a resumed calibration repeats the uninterrupted one exactly.
 //
 //   CalibrationResult r = calibrate(specimen, start_material, spec, [](const CalibrationEvaluation& e) { ... });
+//   // after a kill: the evaluations saved by serialize_evaluations are answered, not re-run
+//   CalibrationResult same = calibrate(specimen, start_material, spec, on_evaluation, deserialize_evaluations(bytes));
 #include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "kerf/dem/lab_test.hpp"
@@ -27,6 +36,8 @@ struct MacroProperties {
   double youngs_modulus_pa = 0, poissons_ratio = 0, tensile_strength_pa = 0, compressive_strength_pa = 0;
 };
 
+enum class CalibrationMethod { hybrid, secant };
+
 struct CalibrationSpec {
   MacroProperties targets{71e9, 0.23, 41e6, 330e6};  ///< seed 000 Table 2
   bool free_modulus = true;         ///< effective_modulus_GPa (with bond_effective_modulus_GPa)
@@ -34,7 +45,8 @@ struct CalibrationSpec {
   bool free_tensile_strength = true;///< tensile_strength_MPa (cohesion scaled with it)
   bool free_cohesion = true;        ///< cohesion_MPa
   double tolerance = 0.03;          ///< relative, on each of the four
-  int max_evaluations = 24;
+  int max_evaluations = 24;         ///< DEM evaluations (memoised repeats are free)
+  CalibrationMethod method = CalibrationMethod::hybrid;
   LoadingSpec tension, compression;
 };
 
@@ -44,6 +56,7 @@ struct CalibrationEvaluation {
   MacroProperties macro;
   double max_relative_error = 0;
   double wall_time_s = 0;
+  bool from_checkpoint = false;  ///< answered from `known` (wall_time_s is the original run's)
 };
 
 struct CalibrationResult {
@@ -61,7 +74,18 @@ MacroProperties measure_macro_properties(const Simulation& specimen, const Mater
 /// Largest relative deviation of the four properties from the targets.
 double max_relative_error(const MacroProperties& got, const MacroProperties& target);
 
+/// `known`: evaluations of an interrupted run of the same calibration (same specimen, start and spec); an
+/// evaluation whose micro-parameters equal one of them bit for bit takes its result instead of running.
 CalibrationResult calibrate(const Simulation& specimen, const Material& start, const CalibrationSpec& spec,
-                            const std::function<void(const CalibrationEvaluation&)>& on_evaluation = {});
+                            const std::function<void(const CalibrationEvaluation&)>& on_evaluation = {},
+                            const std::vector<CalibrationEvaluation>& known = {});
+
+/// Bit-exact binary form of a list of evaluations (native endianness: read back by the same build), for
+/// checkpoints of a calibration.
+std::string serialize_evaluations(const std::vector<CalibrationEvaluation>& log);
+std::vector<CalibrationEvaluation> deserialize_evaluations(std::string_view bytes);
+
+/// True when every micro-parameter of a and b is bitwise equal (the name is not compared).
+bool same_micro_parameters(const Material& a, const Material& b);
 
 }  // namespace kerf::dem
