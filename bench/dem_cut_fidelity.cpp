@@ -50,6 +50,7 @@ struct Case {
 
 struct Run {
   Case c;
+  double speed_m_per_s = 0, radius_scale = 1, local_damping = 0.7;  ///< the cut actually run
   int n_particles = 0;
   std::int64_t steps = 0;
   double main_force_n = 0, thrust_force_n = 0, cpu_s = 0;  ///< cpu_s: the cut alone (genesis excluded)
@@ -59,7 +60,22 @@ struct Base {
   double speed_m_per_s = 0.25, radius_scale = 1, damping = 0.7;
 };
 
-std::string key_of(const Case& c) { return fmt::format("{}|{:.6g}|{}", c.knob, c.value, c.replicate); }
+/// The cut a case runs: speed, radius scale, damping, seed. Cases of different knobs can be the same cut
+/// (the damping study's 0.7 and the radius study's 1 are the speed study's base speed): it runs once.
+std::string cut_of(const Case& c, const Base& base) {
+  return fmt::format("{:.6g}|{:.6g}|{:.6g}|{}", c.knob == "speed" ? c.value : base.speed_m_per_s,
+                     c.knob == "radius" ? c.value : base.radius_scale, c.knob == "damping" ? c.value : base.damping,
+                     c.replicate);
+}
+std::string cut_of(const Run& r) {
+  return fmt::format("{:.6g}|{:.6g}|{:.6g}|{}", r.speed_m_per_s, r.radius_scale, r.local_damping, r.c.replicate);
+}
+/// A run answers a case when it is the case's knob and value and the same cut (a run made with another
+/// --base-speed does not answer the radius and damping cases of this one).
+bool answers(const Run& r, const Case& c, const Base& base) {
+  return r.c.knob == c.knob && fmt::format("{:.6g}", r.c.value) == fmt::format("{:.6g}", c.value) &&
+         cut_of(r) == cut_of(c, base);
+}
 
 Run run_case(const Material& library, const Case& c, const Base& base) {
   Material m = library;
@@ -79,18 +95,24 @@ Run run_case(const Material& library, const Case& c, const Base& base) {
   while (cutting.advance()) {
   }
   const CutResult& r = cutting.result();
-  return {c, static_cast<int>(r.n_particles), r.steps, r.main_force_n, r.thrust_force_n,
-          bench::thread_cpu_seconds() - start};
+  Run run;
+  run.c = c;
+  run.speed_m_per_s = cut.speed_m_per_s, run.radius_scale = scale, run.local_damping = m.local_damping;
+  run.n_particles = static_cast<int>(r.n_particles), run.steps = r.steps;
+  run.main_force_n = r.main_force_n, run.thrust_force_n = r.thrust_force_n;
+  run.cpu_s = bench::thread_cpu_seconds() - start;
+  return run;
 }
 
-const std::vector<std::string> kRunColumns{"knob", "value", "replicate", "n_particles", "steps",
-                                           "main_force_N", "thrust_force_N", "cpu_s"};
+const std::vector<std::string> kRunColumns{"knob", "value", "replicate", "n_particles", "steps", "main_force_N",
+                                           "thrust_force_N", "cpu_s", "speed_m_per_s", "radius_scale", "local_damping"};
 
 std::string runs_csv(const std::vector<Run>& runs) {
   std::string out = csv_line(kRunColumns);
   for (const auto& r : runs)
     out += csv_line({r.c.knob, csv_number(r.c.value), std::to_string(r.c.replicate), std::to_string(r.n_particles),
-                     std::to_string(r.steps), csv_number(r.main_force_n), csv_number(r.thrust_force_n), csv_number(r.cpu_s)});
+                     std::to_string(r.steps), csv_number(r.main_force_n), csv_number(r.thrust_force_n), csv_number(r.cpu_s),
+                     csv_number(r.speed_m_per_s), csv_number(r.radius_scale), csv_number(r.local_damping)});
   return out;
 }
 
@@ -99,13 +121,23 @@ std::vector<Run> read_runs(const fs::path& file) {
   if (!fs::exists(file)) return runs;
   const CsvTable t = read_csv_file(file);
   std::vector<std::size_t> col;
-  for (const auto& name : kRunColumns) col.push_back(t.column_index(name));
+  // Files written before the cut columns existed hold speed-study rows only (radius 1, damping 0.7).
+  const bool has_cut = t.has_column("speed_m_per_s");
+  for (const auto& name : kRunColumns)
+    if (has_cut || t.has_column(name)) col.push_back(t.column_index(name));
   for (std::size_t i = 0; i < t.rows.size(); ++i) {
     Run r;
     r.c = {t.text(i, col[0]), t.number(i, col[1]), static_cast<int>(t.number(i, col[2]))};
     r.n_particles = static_cast<int>(t.number(i, col[3]));
     r.steps = static_cast<std::int64_t>(t.number(i, col[4]));
     r.main_force_n = t.number(i, col[5]), r.thrust_force_n = t.number(i, col[6]), r.cpu_s = t.number(i, col[7]);
+    if (has_cut) {
+      r.speed_m_per_s = t.number(i, col[8]), r.radius_scale = t.number(i, col[9]), r.local_damping = t.number(i, col[10]);
+    } else if (r.c.knob == "speed") {
+      r.speed_m_per_s = r.c.value;
+    } else {
+      throw InputError(file.string(), r.c.knob, "the columns speed_m_per_s, radius_scale, local_damping");
+    }
     runs.push_back(r);
   }
   return runs;
@@ -165,19 +197,32 @@ int main(int argc, char** argv) {
     fs::create_directories(out_dir);
     const fs::path runs_file = fs::path(out_dir) / "runs.csv";
     std::vector<Run> runs = read_runs(runs_file);
-    std::map<std::string, bool> finished;
-    for (const auto& r : runs) finished[key_of(r.c)] = true;
+    const auto done = [&](const Case& c) {
+      return std::any_of(runs.begin(), runs.end(), [&](const Run& r) { return answers(r, c, base); });
+    };
+    const auto same_cut = [&](const Case& c) {
+      return std::find_if(runs.begin(), runs.end(), [&](const Run& r) { return cut_of(r) == cut_of(c, base); });
+    };
     std::vector<Case> todo;
-    for (const auto& c : cases)
-      if (!finished.count(key_of(c))) todo.push_back(c);
+    for (const auto& c : cases) {
+      if (done(c)) continue;
+      if (const auto same = same_cut(c); same != runs.end()) {
+        Run copy = *same;  // the same cut, already run for another knob
+        copy.c = c;
+        runs.push_back(copy);
+        continue;
+      }
+      if (std::none_of(todo.begin(), todo.end(), [&](const Case& t) { return cut_of(t, base) == cut_of(c, base); }))
+        todo.push_back(c);
+    }
     // The dearest cuts first (cost ~ 1 / speed and ~ 1 / radius^3), so the last ones fill the gaps.
     const auto cost = [&](const Case& c) {
       const double v = c.knob == "speed" ? c.value : base.speed_m_per_s, s = c.knob == "radius" ? c.value : base.radius_scale;
       return 1 / (v * s * s * s);
     };
     std::stable_sort(todo.begin(), todo.end(), [&](const Case& a, const Case& b) { return cost(a) > cost(b); });
-    std::fprintf(stderr, "%zu cuts to run (%zu already in %s)\n", todo.size(), cases.size() - todo.size(),
-                 runs_file.c_str());
+    std::fprintf(stderr, "%zu cuts to run for %zu cases (the others are answered by %s or share a cut)\n", todo.size(),
+                 cases.size(), runs_file.c_str());
     std::mutex lock;
     Progress progress("cuts", todo.size(), "cuts");
     omp_set_max_active_levels(1);  // each cut on one thread
@@ -190,6 +235,13 @@ int main(int argc, char** argv) {
       progress.advance(1);
     }
     progress.finish();
+    for (const auto& c : cases)  // cases that shared a cut run in this invocation
+      if (!done(c)) {
+        Run copy = *same_cut(c);
+        copy.c = c;
+        runs.push_back(copy);
+      }
+    write_file_atomically(runs_file, runs_csv(runs));
 
     // Summary and plots, one knob at a time, in the order the options list the values.
     std::string summary = csv_line({"knob", "value", "replicates", "n_particles", "main_force_N", "main_force_replicate_std_N",
@@ -209,7 +261,7 @@ int main(int argc, char** argv) {
         std::vector<double> fm, ft, cpu;
         int particles = 0;
         for (const auto& r : runs)
-          if (r.c.knob == name && key_of(r.c) == key_of({name, v, r.c.replicate}) && r.c.replicate <= replicates)
+          if (r.c.replicate <= replicates && answers(r, {name, v, r.c.replicate}, base))
             fm.push_back(r.main_force_n), ft.push_back(r.thrust_force_n), cpu.push_back(r.cpu_s), particles = r.n_particles;
         if (!fm.empty()) rows.push_back({v, stats_of(fm), stats_of(ft), stats_of(cpu), static_cast<int>(fm.size()), particles});
       }
