@@ -82,6 +82,8 @@ Run run_case(const Material& library, const Case& c, const Base& base) {
   SpecimenSpec spec;
   spec.width_m = 1e-3, spec.height_m = 0.5e-3, spec.thickness_m = 1e-3;
   const double scale = c.knob == "radius" ? c.value : base.radius_scale;
+  // Radii in SI literals: they may differ from a scene's um-to-m conversion by one ulp, and the cut is
+  // chaotic, so seed k here is a packing statistically like, not equal to, a scene's seed k (docs/performance.md).
   spec.radius_min_m = 10e-6 * scale, spec.radius_max_m = 13e-6 * scale;
   spec.seed = static_cast<std::uint64_t>(c.replicate);
   m.local_damping = c.knob == "damping" ? c.value : base.damping;
