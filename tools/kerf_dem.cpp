@@ -47,7 +47,7 @@ struct Scene {
   LoadingSpec loading;
   CutParams cut;
   double time_step_safety = 0.8;
-  int min_parallel_items = 4096;
+  int min_parallel_items = 1024;
   int frame_every_samples = 100;
   CalibrationSpec calibration;
   std::string calibrated_name = "calibrated";
@@ -107,7 +107,7 @@ Scene read_scene(const Json& doc, const fs::path& scene_dir) {
   }
   if (auto engine = root.find_object("engine")) {
     s.time_step_safety = engine->get_number_or("time_step_safety", 0.8, Range{0.0, 1.0, true, false}, "");
-    s.min_parallel_items = engine->get_int_or("min_parallel_items", 4096, 0, 1 << 30);
+    s.min_parallel_items = engine->get_int_or("min_parallel_items", 1024, 0, 1 << 30);
     engine->finish();
   }
   if (s.kind == "tension" || s.kind == "compression") {

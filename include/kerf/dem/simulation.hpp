@@ -81,7 +81,7 @@ struct SimulationOptions {
   int check_every = 50;            ///< steps between instability checks
   /// Loops shorter than this run on one thread (fork/join costs more than it saves on small systems).
   /// Results do not depend on it: every sum is taken in a fixed order.
-  std::int64_t min_parallel_items = 4096;
+  std::int64_t min_parallel_items = 1024;
 };
 
 class Simulation {
