@@ -7,6 +7,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <fmt/format.h>
+
 #include "kerf/plot.hpp"
 #include "kerf/units.hpp"
 
@@ -64,6 +66,27 @@ void write_specimen_png(const std::filesystem::path& path, const Simulation& sim
   std::error_code ec;
   if (!std::filesystem::exists(tmp, ec)) throw std::runtime_error("PLplot wrote no picture to " + tmp.string());
   std::filesystem::rename(tmp, path);
+}
+
+void write_cut_forces_png(const std::filesystem::path& path, const CutResult& result, double steady_from_m) {
+  FigureSpec fig;
+  fig.title = fmt::format("cut: force on the tool per {:g} mm width", units::m_to_mm(result.width_m));
+  fig.x_label = "tool travel (mm)";
+  fig.y_label = "force (N)";
+  PlotSeries main{"main force", {}, {}, {}, {}, SeriesStyle::line, 0, 0};
+  PlotSeries thrust{"thrust force", {}, {}, {}, {}, SeriesStyle::line, 1, 0};
+  for (const auto& s : result.samples) {
+    main.x.push_back(units::m_to_mm(s.travel_m)), main.y.push_back(s.main_force_n);
+    thrust.x.push_back(units::m_to_mm(s.travel_m)), thrust.y.push_back(s.thrust_force_n);
+  }
+  const double x0 = units::m_to_mm(steady_from_m), x1 = main.x.empty() ? x0 : main.x.back();
+  PlotSeries main_mean{fmt::format("mean {:.3g} N (steady part)", result.main_force_n), {x0, x1},
+                       {result.main_force_n, result.main_force_n}, {}, {}, SeriesStyle::dashed_line, 0, 0};
+  PlotSeries thrust_mean{fmt::format("mean {:.3g} N (steady part)", result.thrust_force_n), {x0, x1},
+                         {result.thrust_force_n, result.thrust_force_n}, {}, {}, SeriesStyle::dashed_line, 1, 0};
+  fig.series = {main, thrust, main_mean, thrust_mean};
+  fig.legend_position = "top_left";
+  render_png(fig, path);
 }
 
 }  // namespace kerf::dem

@@ -488,6 +488,7 @@ Json continue_cut(const Scene& scene, const Json& doc, Json summary, const fs::p
   const double margin = 2 * scene.cut.depth_of_cut_m;
   write_specimen_png(out / "specimen.png", run.simulation(), "cut, final state",
                      std::array<double, 4>{box[0], box[1] + margin, box[2], box[3] + margin});
+  write_cut_forces_png(out / "forces.png", res, scene.cut.entry_fraction * scene.cut.length_m);
   write_file_atomically(out / "summary.json", summary.dump(2) + "\n");
   std::error_code ignored;
   fs::remove(out / "checkpoint.bin", ignored);  // finished: nothing to resume

@@ -19,7 +19,7 @@ small=(--set specimen.width_mm=0.4 --set specimen.height_mm=0.25 --set specimen.
        --set specimen.relax_steps=500 --set cut.depth_of_cut_mm=0.05 --set cut.length_mm=0.08
        --set output.frame_every_samples=500 --set cut.speed_m_per_s=2)
 "$bin" run "$scene" "${small[@]}" --out "$work/c1" --threads 1 >/dev/null 2>"$work/err" || fail "cut run: $(cat "$work/err")"
-for f in summary.json forces.csv cracks.csv result.pvd frame_0000.vtp cracks_0000.vtp specimen.png; do
+for f in summary.json forces.csv cracks.csv result.pvd frame_0000.vtp cracks_0000.vtp specimen.png forces.png; do
   [ -s "$work/c1/$f" ] || fail "missing $f"
 done
 head -1 "$work/c1/forces.csv" | grep -qx "tool_travel_mm,time_s,main_force_N,thrust_force_N" || fail "forces.csv header"

@@ -4,11 +4,13 @@
 // black lines. Written whole or not at all.
 //
 //   write_specimen_png("out/specimen.png", sim, "compression, final state");
+//   write_cut_forces_png("out/forces.png", cut_result, steady_from_m);   // force against tool travel
 #include <array>
 #include <filesystem>
 #include <optional>
 #include <string>
 
+#include "kerf/dem/cutting.hpp"
 #include "kerf/dem/simulation.hpp"
 
 namespace kerf::dem {
@@ -17,5 +19,9 @@ namespace kerf::dem {
 /// shrink the workpiece to a few pixels, so the cut passes the workpiece's region).
 void write_specimen_png(const std::filesystem::path& path, const Simulation& sim, const std::string& title,
                         const std::optional<std::array<double, 4>>& view_m = std::nullopt);
+
+/// Main and thrust force against tool travel (the samples of forces.csv), with the steady-part means drawn
+/// from `steady_from_m` on as dashed lines.
+void write_cut_forces_png(const std::filesystem::path& path, const CutResult& result, double steady_from_m);
 
 }  // namespace kerf::dem
