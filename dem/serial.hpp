@@ -1,10 +1,12 @@
 #pragma once
-// Byte-level helpers for the resumable runs' checkpoints (LabTestRun, CutRun): raw values and vectors with
-// a length prefix, native endianness (a checkpoint is read back by the same build). Internal to dem/.
+// Byte-level helpers for the checkpoints (the engine state, LabTestRun, CutRun, calibration evaluations): raw
+// values and vectors with a length prefix, native endianness (a checkpoint is read back by the same build).
+// Internal to dem/.
 #include <cstdint>
 #include <cstring>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include "kerf/error.hpp"
@@ -13,10 +15,12 @@ namespace kerf::dem::serial {
 
 template <class T>
 void put_raw(std::string& out, const T& v) {
+  static_assert(std::is_trivially_copyable_v<T>);
   out.append(reinterpret_cast<const char*>(&v), sizeof(T));
 }
 template <class T>
 void put_vec(std::string& out, const std::vector<T>& v) {
+  static_assert(std::is_trivially_copyable_v<T>);
   put_raw(out, static_cast<std::uint64_t>(v.size()));
   out.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
 }
@@ -25,17 +29,20 @@ struct In {
   std::string_view b;
   std::size_t at = 0;
   void take(void* d, std::size_t n) {
-    if (at + n > b.size()) throw ModelError("dem", "truncated run checkpoint");
+    if (at + n > b.size()) throw ModelError("dem", "truncated checkpoint");
     std::memcpy(d, b.data() + at, n);
     at += n;
   }
   template <class T>
-  void raw(T& v) { take(&v, sizeof(T)); }
+  void raw(T& v) {
+    static_assert(std::is_trivially_copyable_v<T>);  // a vector goes through vec()
+    take(&v, sizeof(T));
+  }
   template <class T>
   void vec(std::vector<T>& v) {
     std::uint64_t n = 0;
     raw(n);
-    if (n > b.size()) throw ModelError("dem", "corrupt run checkpoint");
+    if (n > b.size()) throw ModelError("dem", "corrupt checkpoint");
     v.resize(static_cast<std::size_t>(n));
     take(v.data(), v.size() * sizeof(T));
   }

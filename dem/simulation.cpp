@@ -12,6 +12,7 @@
 #include <type_traits>
 
 #include "kerf/error.hpp"
+#include "serial.hpp"
 
 namespace kerf::dem {
 
@@ -542,138 +543,103 @@ namespace {
 
 constexpr std::string_view kStateMagic = "KERFDEM1";
 
-template <class T>
-void put(std::string& out, const T& value) {
-  static_assert(std::is_trivially_copyable_v<T>);
-  out.append(reinterpret_cast<const char*>(&value), sizeof(T));
-}
-template <class T>
-void put(std::string& out, const std::vector<T>& v) {
-  static_assert(std::is_trivially_copyable_v<T>);
-  put(out, static_cast<std::uint64_t>(v.size()));
-  out.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
-}
-
-struct Reader {
-  std::string_view bytes;
-  std::size_t at = 0;
-  void take(void* dst, std::size_t n) {
-    if (at + n > bytes.size()) throw ModelError("dem", "truncated engine state");
-    std::memcpy(dst, bytes.data() + at, n);
-    at += n;
-  }
-  template <class T>
-  void get(T& value) {
-    take(&value, sizeof(T));
-  }
-  template <class T>
-  void get(std::vector<T>& v) {
-    std::uint64_t n = 0;
-    get(n);
-    if (n > bytes.size()) throw ModelError("dem", "corrupt engine state");
-    v.resize(static_cast<std::size_t>(n));
-    take(v.data(), v.size() * sizeof(T));
-  }
-};
-
 }  // namespace
 
 std::string Simulation::serialize() const {
+  using namespace serial;
   std::string out(kStateMagic);
-  put(out, material_.density_kg_per_m3);
-  put(out, material_.contact);
-  put(out, material_.joint);
-  put(out, material_.local_damping);
-  put(out, std::vector<char>(material_.name.begin(), material_.name.end()));
-  put(out, opt_);
-  put(out, types_);
+  put_raw(out, material_.density_kg_per_m3);
+  put_raw(out, material_.contact);
+  put_raw(out, material_.joint);
+  put_raw(out, material_.local_damping);
+  put_str(out, material_.name);
+  put_raw(out, opt_);
+  put_vec(out, types_);
   for (const auto* v : {&p_.x, &p_.y, &p_.vx, &p_.vy, &p_.theta, &p_.omega, &p_.fx, &p_.fy, &p_.torque, &p_.radius,
                         &p_.inv_mass, &p_.inv_inertia})
-    put(out, *v);
-  put(out, p_.type);
-  put(out, p_.group);
-  put(out, b_.stride);
-  put(out, b_.i);
-  put(out, b_.j);
-  put(out, b_.ref_distance_m);
-  put(out, b_.ref_rotation_rad);
-  put(out, b_.geometry);
-  put(out, b_.active);
-  put(out, b_.shear_force_n);
-  put(out, b_.bonded);
-  put(out, b_.pending);
-  put(out, b_.out);
-  put(out, walls_);
-  put(out, cracks_);
-  put(out, pairs_);
-  put(out, pair_shear_);
-  put(out, pair_out_);
-  put(out, wall_contacts_);
-  put(out, wall_shear_);
-  put(out, wall_out_);
-  put(out, incidence_start_);
-  put(out, incidence_);
-  put(out, x_ref_);
-  put(out, y_ref_);
-  put(out, wall_ref_);
-  put(out, fixed_);
-  for (bool flag : {need_rebuild_, need_breaks_, initialised_, dt_fixed_}) put(out, static_cast<std::uint8_t>(flag));
-  for (double v : {dt_, time_, skin_, speed_limit_}) put(out, v);
-  put(out, steps_);
+    put_vec(out, *v);
+  put_vec(out, p_.type);
+  put_vec(out, p_.group);
+  put_raw(out, b_.stride);
+  put_vec(out, b_.i);
+  put_vec(out, b_.j);
+  put_vec(out, b_.ref_distance_m);
+  put_vec(out, b_.ref_rotation_rad);
+  put_vec(out, b_.geometry);
+  put_vec(out, b_.active);
+  put_vec(out, b_.shear_force_n);
+  put_vec(out, b_.bonded);
+  put_vec(out, b_.pending);
+  put_vec(out, b_.out);
+  put_vec(out, walls_);
+  put_vec(out, cracks_);
+  put_vec(out, pairs_);
+  put_vec(out, pair_shear_);
+  put_vec(out, pair_out_);
+  put_vec(out, wall_contacts_);
+  put_vec(out, wall_shear_);
+  put_vec(out, wall_out_);
+  put_vec(out, incidence_start_);
+  put_vec(out, incidence_);
+  put_vec(out, x_ref_);
+  put_vec(out, y_ref_);
+  put_vec(out, wall_ref_);
+  put_vec(out, fixed_);
+  for (bool flag : {need_rebuild_, need_breaks_, initialised_, dt_fixed_}) put_raw(out, static_cast<std::uint8_t>(flag));
+  for (double v : {dt_, time_, skin_, speed_limit_}) put_raw(out, v);
+  put_raw(out, steps_);
   return out;
 }
 
 Simulation Simulation::deserialize(std::string_view bytes) {
   if (bytes.substr(0, kStateMagic.size()) != kStateMagic) throw ModelError("dem", "not a kerf-dem engine state");
-  Reader r{bytes, kStateMagic.size()};
+  serial::In r{bytes, kStateMagic.size()};
   Material m;
-  r.get(m.density_kg_per_m3);
-  r.get(m.contact);
-  r.get(m.joint);
-  r.get(m.local_damping);
-  std::vector<char> name;
-  r.get(name);
-  m.name.assign(name.begin(), name.end());
+  r.raw(m.density_kg_per_m3);
+  r.raw(m.contact);
+  r.raw(m.joint);
+  r.raw(m.local_damping);
+  r.str(m.name);
   SimulationOptions opt;
-  r.get(opt);
+  r.raw(opt);
   Simulation sim(m, opt);
-  r.get(sim.types_);
+  r.vec(sim.types_);
   auto& p = sim.p_;
   for (auto* v : {&p.x, &p.y, &p.vx, &p.vy, &p.theta, &p.omega, &p.fx, &p.fy, &p.torque, &p.radius, &p.inv_mass, &p.inv_inertia})
-    r.get(*v);
-  r.get(p.type);
-  r.get(p.group);
+    r.vec(*v);
+  r.vec(p.type);
+  r.vec(p.group);
   auto& b = sim.b_;
-  r.get(b.stride);
-  r.get(b.i);
-  r.get(b.j);
-  r.get(b.ref_distance_m);
-  r.get(b.ref_rotation_rad);
-  r.get(b.geometry);
-  r.get(b.active);
-  r.get(b.shear_force_n);
-  r.get(b.bonded);
-  r.get(b.pending);
-  r.get(b.out);
-  r.get(sim.walls_);
-  r.get(sim.cracks_);
-  r.get(sim.pairs_);
-  r.get(sim.pair_shear_);
-  r.get(sim.pair_out_);
-  r.get(sim.wall_contacts_);
-  r.get(sim.wall_shear_);
-  r.get(sim.wall_out_);
-  r.get(sim.incidence_start_);
-  r.get(sim.incidence_);
-  r.get(sim.x_ref_);
-  r.get(sim.y_ref_);
-  r.get(sim.wall_ref_);
-  r.get(sim.fixed_);
+  r.raw(b.stride);
+  r.vec(b.i);
+  r.vec(b.j);
+  r.vec(b.ref_distance_m);
+  r.vec(b.ref_rotation_rad);
+  r.vec(b.geometry);
+  r.vec(b.active);
+  r.vec(b.shear_force_n);
+  r.vec(b.bonded);
+  r.vec(b.pending);
+  r.vec(b.out);
+  r.vec(sim.walls_);
+  r.vec(sim.cracks_);
+  r.vec(sim.pairs_);
+  r.vec(sim.pair_shear_);
+  r.vec(sim.pair_out_);
+  r.vec(sim.wall_contacts_);
+  r.vec(sim.wall_shear_);
+  r.vec(sim.wall_out_);
+  r.vec(sim.incidence_start_);
+  r.vec(sim.incidence_);
+  r.vec(sim.x_ref_);
+  r.vec(sim.y_ref_);
+  r.vec(sim.wall_ref_);
+  r.vec(sim.fixed_);
   std::uint8_t flags[4];
-  for (auto& f : flags) r.get(f);
+  for (auto& f : flags) r.raw(f);
   sim.need_rebuild_ = flags[0], sim.need_breaks_ = flags[1], sim.initialised_ = flags[2], sim.dt_fixed_ = flags[3];
-  for (double* v : {&sim.dt_, &sim.time_, &sim.skin_, &sim.speed_limit_}) r.get(*v);
-  r.get(sim.steps_);
+  for (double* v : {&sim.dt_, &sim.time_, &sim.skin_, &sim.speed_limit_}) r.raw(*v);
+  r.raw(sim.steps_);
   if (r.at != bytes.size()) throw ModelError("dem", "engine state has trailing bytes");
   return sim;
 }
