@@ -34,6 +34,7 @@
 #include "kerf/dem/specimen.hpp"
 #include "kerf/error.hpp"
 #include "kerf/io.hpp"
+#include "kerf/metrics.hpp"
 #include "kerf/plot.hpp"
 
 namespace fs = std::filesystem;
@@ -149,15 +150,9 @@ struct Stats {
   double mean = 0, std = 0, sem = 0;
 };
 Stats stats_of(const std::vector<double>& v) {
-  Stats s;
-  const double n = static_cast<double>(v.size());
-  for (double x : v) s.mean += x / n;
-  if (v.size() > 1) {
-    for (double x : v) s.std += (x - s.mean) * (x - s.mean) / (n - 1);
-    s.std = std::sqrt(s.std);
-    s.sem = s.std / std::sqrt(n);
-  }
-  return s;
+  if (v.size() < 2) return {v.empty() ? 0 : v[0], 0, 0};  // one packing: no spread to report
+  const SampleStatistics st = sample_statistics(v);
+  return {st.mean, st.standard_deviation, st.standard_deviation / std::sqrt(static_cast<double>(v.size()))};
 }
 
 /// The reference of each knob: the finest setting (lowest speed, smallest disks); damping has none that is

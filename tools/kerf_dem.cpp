@@ -29,6 +29,7 @@
 #include "kerf/dem/specimen.hpp"
 #include "kerf/error.hpp"
 #include "kerf/material.hpp"
+#include "kerf/metrics.hpp"
 #include "kerf/io.hpp"
 #include "kerf/json_reader.hpp"
 #include "kerf/units.hpp"
@@ -577,11 +578,11 @@ int run_cut_replicates(const Scene& scene, int replicates, Json summary, const f
   }
   Json stats;
   for (const auto& [key, spread] : keys) {
-    double sum = 0, sum2 = 0;
-    for (const auto& row : list) sum += row[key].get<double>(), sum2 += row[key].get<double>() * row[key].get<double>();
-    const double n = static_cast<double>(replicates), mean = sum / n;
-    stats[key] = mean;
-    stats[spread] = std::sqrt(std::max(0.0, (sum2 - n * mean * mean) / (n - 1)));
+    std::vector<double> values;
+    for (const auto& row : list) values.push_back(row[key].get<double>());
+    const SampleStatistics st = sample_statistics(values);  // replicates >= 2: a finite sample std
+    stats[key] = st.mean;
+    stats[spread] = st.standard_deviation;
   }
   stats["width_mm"] = list[0]["width_mm"];
   summary["cut"] = cut_params_to_json(scene.cut);
