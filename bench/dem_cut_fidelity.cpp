@@ -49,48 +49,55 @@ struct Case {
   int replicate = 1; ///< packing seed
 };
 
+/// The three knobs of one cut. The base setting is the one the studies of the other knobs hold fixed.
+struct CutSettings {
+  double speed_m_per_s = 0.25, radius_scale = 1, local_damping = 0.7;
+};
+
+/// What a case runs: its knob at its value, the others at the base.
+CutSettings settings_of(const Case& c, const CutSettings& base) {
+  CutSettings s = base;
+  if (c.knob == "speed") s.speed_m_per_s = c.value;
+  if (c.knob == "radius") s.radius_scale = c.value;
+  if (c.knob == "damping") s.local_damping = c.value;
+  return s;
+}
+
 struct Run {
   Case c;
-  double speed_m_per_s = 0, radius_scale = 1, local_damping = 0.7;  ///< the cut actually run
+  CutSettings cut;  ///< the cut actually run
   int n_particles = 0;
   std::int64_t steps = 0;
   double main_force_n = 0, thrust_force_n = 0, cpu_s = 0;  ///< cpu_s: the cut alone (genesis excluded)
 };
 
-struct Base {
-  double speed_m_per_s = 0.25, radius_scale = 1, damping = 0.7;
-};
-
-/// The cut a case runs: speed, radius scale, damping, seed. Cases of different knobs can be the same cut
-/// (the damping study's 0.7 and the radius study's 1 are the speed study's base speed): it runs once.
-std::string cut_of(const Case& c, const Base& base) {
-  return fmt::format("{:.6g}|{:.6g}|{:.6g}|{}", c.knob == "speed" ? c.value : base.speed_m_per_s,
-                     c.knob == "radius" ? c.value : base.radius_scale, c.knob == "damping" ? c.value : base.damping,
-                     c.replicate);
+/// The cut a case runs, as a key: settings and seed. Cases of different knobs can be the same cut (the
+/// damping study's 0.7 and the radius study's 1 are the speed study's base speed): it runs once.
+std::string cut_key(const CutSettings& s, int replicate) {
+  return fmt::format("{:.6g}|{:.6g}|{:.6g}|{}", s.speed_m_per_s, s.radius_scale, s.local_damping, replicate);
 }
-std::string cut_of(const Run& r) {
-  return fmt::format("{:.6g}|{:.6g}|{:.6g}|{}", r.speed_m_per_s, r.radius_scale, r.local_damping, r.c.replicate);
-}
+std::string cut_of(const Case& c, const CutSettings& base) { return cut_key(settings_of(c, base), c.replicate); }
+std::string cut_of(const Run& r) { return cut_key(r.cut, r.c.replicate); }
 /// A run answers a case when it is the case's knob and value and the same cut (a run made with another
 /// --base-speed does not answer the radius and damping cases of this one).
-bool answers(const Run& r, const Case& c, const Base& base) {
+bool answers(const Run& r, const Case& c, const CutSettings& base) {
   return r.c.knob == c.knob && fmt::format("{:.6g}", r.c.value) == fmt::format("{:.6g}", c.value) &&
          cut_of(r) == cut_of(c, base);
 }
 
-Run run_case(const Material& library, const Case& c, const Base& base) {
+Run run_case(const Material& library, const Case& c, const CutSettings& base) {
+  const CutSettings settings = settings_of(c, base);
   Material m = library;
+  m.local_damping = settings.local_damping;
   SpecimenSpec spec;
   spec.width_m = 1e-3, spec.height_m = 0.5e-3, spec.thickness_m = 1e-3;
-  const double scale = c.knob == "radius" ? c.value : base.radius_scale;
   // Radii in SI literals: they may differ from a scene's um-to-m conversion by one ulp, and the cut is
   // chaotic, so seed k here is a packing statistically like, not equal to, a scene's seed k (docs/performance.md).
-  spec.radius_min_m = 10e-6 * scale, spec.radius_max_m = 13e-6 * scale;
+  spec.radius_min_m = 10e-6 * settings.radius_scale, spec.radius_max_m = 13e-6 * settings.radius_scale;
   spec.seed = static_cast<std::uint64_t>(c.replicate);
-  m.local_damping = c.knob == "damping" ? c.value : base.damping;
   CutParams cut;
   cut.depth_of_cut_m = 0.1e-3, cut.length_m = 0.3e-3, cut.entry_fraction = 0.25;
-  cut.speed_m_per_s = c.knob == "speed" ? c.value : base.speed_m_per_s;
+  cut.speed_m_per_s = settings.speed_m_per_s;
   SpecimenReport report;
   const Simulation specimen = make_specimen(m, spec, report);
   const double start = bench::thread_cpu_seconds();
@@ -100,7 +107,7 @@ Run run_case(const Material& library, const Case& c, const Base& base) {
   const CutResult& r = cutting.result();
   Run run;
   run.c = c;
-  run.speed_m_per_s = cut.speed_m_per_s, run.radius_scale = scale, run.local_damping = m.local_damping;
+  run.cut = settings;
   run.n_particles = static_cast<int>(r.n_particles), run.steps = r.steps;
   run.main_force_n = r.main_force_n, run.thrust_force_n = r.thrust_force_n;
   run.cpu_s = bench::thread_cpu_seconds() - start;
@@ -115,7 +122,7 @@ std::string runs_csv(const std::vector<Run>& runs) {
   for (const auto& r : runs)
     out += csv_line({r.c.knob, csv_number(r.c.value), std::to_string(r.c.replicate), std::to_string(r.n_particles),
                      std::to_string(r.steps), csv_number(r.main_force_n), csv_number(r.thrust_force_n), csv_number(r.cpu_s),
-                     csv_number(r.speed_m_per_s), csv_number(r.radius_scale), csv_number(r.local_damping)});
+                     csv_number(r.cut.speed_m_per_s), csv_number(r.cut.radius_scale), csv_number(r.cut.local_damping)});
   return out;
 }
 
@@ -135,9 +142,9 @@ std::vector<Run> read_runs(const fs::path& file) {
     r.steps = static_cast<std::int64_t>(t.number(i, col[4]));
     r.main_force_n = t.number(i, col[5]), r.thrust_force_n = t.number(i, col[6]), r.cpu_s = t.number(i, col[7]);
     if (has_cut) {
-      r.speed_m_per_s = t.number(i, col[8]), r.radius_scale = t.number(i, col[9]), r.local_damping = t.number(i, col[10]);
+      r.cut = {t.number(i, col[8]), t.number(i, col[9]), t.number(i, col[10])};
     } else if (r.c.knob == "speed") {
-      r.speed_m_per_s = r.c.value;
+      r.cut.speed_m_per_s = r.c.value;
     } else {
       throw InputError(file.string(), r.c.knob, "the columns speed_m_per_s, radius_scale, local_damping");
     }
@@ -168,7 +175,7 @@ int main(int argc, char** argv) {
   CLI::App app{"DEM cut: forces and cost against tool speed, particle size and local damping"};
   std::string knob = "all", out_dir = "bench-out/dem_cut_fidelity";
   int replicates = 3, threads = 2;
-  Base base;
+  CutSettings base;
   std::vector<double> speeds{2, 1, 0.5, 0.25, 0.125}, radius_scales{1.5, 1.0, 0.75}, dampings{0.3, 0.5, 0.7, 0.9};
   app.add_option("--knob", knob, "speed, radius, damping or all")->check(CLI::IsMember({"speed", "radius", "damping", "all"}));
   app.add_option("--replicates", replicates, "packings per setting (seeds 1..N)")->check(CLI::Range(1, 100));
@@ -214,8 +221,8 @@ int main(int argc, char** argv) {
     }
     // The dearest cuts first (cost ~ 1 / speed and ~ 1 / radius^3), so the last ones fill the gaps.
     const auto cost = [&](const Case& c) {
-      const double v = c.knob == "speed" ? c.value : base.speed_m_per_s, s = c.knob == "radius" ? c.value : base.radius_scale;
-      return 1 / (v * s * s * s);
+      const CutSettings s = settings_of(c, base);
+      return 1 / (s.speed_m_per_s * s.radius_scale * s.radius_scale * s.radius_scale);
     };
     std::stable_sort(todo.begin(), todo.end(), [&](const Case& a, const Case& b) { return cost(a) > cost(b); });
     std::fprintf(stderr, "%zu cuts to run for %zu cases (the others are answered by %s or share a cut)\n", todo.size(),
