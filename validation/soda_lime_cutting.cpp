@@ -16,6 +16,7 @@
 #include "kerf/io.hpp"
 #include "kerf/json_reader.hpp"
 #include "kerf/material.hpp"
+#include "kerf/units.hpp"
 
 namespace kerf {
 
@@ -100,18 +101,14 @@ ConditionResult collect(const Condition& c, const fs::path& run_dir) {
   return r;
 }
 
-/// Mean of the paper's rows (source, surface, depth) for one force column.
-double paper_mean(const CsvTable& t, const std::string& source, const std::string& surface, double depth_mm,
-                  const std::string& column) {
-  const std::size_t cs = t.column_index("source"), cf = t.column_index("surface"), cd = t.column_index("depth_of_cut_mm");
-  const std::size_t cv = t.column_index(column);
-  double sum = 0;
-  int n = 0;
-  for (std::size_t i = 0; i < t.rows.size(); ++i)
-    if (t.text(i, cs) == source && t.text(i, cf) == surface && std::abs(t.number(i, cd) - depth_mm) < 1e-9)
-      sum += t.number(i, cv), ++n;
-  if (n == 0) throw InputError("validation.experiments", fmt::format("{} {} {} mm", source, surface, depth_mm), "rows for this condition");
-  return sum / n;
+/// The group of one condition (surface, depth of cut) in a comparison's result for `key` ("main_force",
+/// "main_force_per_width", ...): the report layer's means of the replicates, SI in that view's basis.
+const GroupComparison& group_of(const Comparison& comparison, const std::string& key, const std::string& surface,
+                                double depth_mm) {
+  const std::vector<ConditionValue> wanted{ConditionValue::label(surface), ConditionValue::number(units::mm_to_m(depth_mm))};
+  for (const auto& g : comparison.result(key).groups)
+    if (conditions_match(g.conditions, wanted, 1e-6)) return g;
+  throw InputError("validation.experiments", fmt::format("{} {} mm", surface, depth_mm), "rows for this condition");
 }
 
 Json comparison_document(const fs::path& experiments, const fs::path& kerf_csv, const std::string& title,
@@ -149,7 +146,6 @@ std::string pct(double x) { return fmt::format("{:+.1f} %", 100 * x); }
 CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, const fs::path& kerf_dem) {
   const fs::path case_dir = data_directory().parent_path() / "validation" / "soda_lime_cutting";
   const Spec spec = read_spec(case_dir);
-  const CsvTable table = read_csv_file(spec.experiments);
   fs::create_directories(out_dir / "runs");
   CuttingValidation v;
 
@@ -197,15 +193,23 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
 
   // 3. Through the report layer: against the experiments (both width views) and against the paper's DEM.
   const fs::path means_csv = fs::absolute(out_dir / "kerf_dem_means.csv");
+  std::map<std::string, Comparison> comparisons;
   for (const auto& [name, against_dem] : std::vector<std::pair<std::string, bool>>{{"vs_experiment", false}, {"vs_paper_dem", true}}) {
     const Json doc = comparison_document(fs::absolute(spec.experiments), means_csv,
                                          against_dem ? "Soda-lime glass, orthogonal cutting: kerf-dem vs the paper's DEM (seed 000)"
                                                      : "Soda-lime glass, orthogonal cutting: experiment vs the paper's DEM and kerf-dem (seed 000)",
                                          against_dem);
     write_file_atomically(out_dir / (name + ".json"), doc.dump(2) + "\n");
-    const Comparison comparison = run_comparison(parse_comparison_config(doc, out_dir));
+    const Comparison& comparison = comparisons[name] = run_comparison(parse_comparison_config(doc, out_dir));
     for (const auto& f : write_report(comparison, out_dir / name)) v.files.push_back(f);
   }
+  // The reference means below come from these comparisons: measured = experiments (vs_experiment) or the
+  // paper's DEM (vs_paper_dem), prediction = kerf-dem in the latter.
+  const Comparison& vs_experiment = comparisons.at("vs_experiment");
+  const Comparison& vs_dem = comparisons.at("vs_paper_dem");
+  const auto paper_dem_mean = [&](const std::string& key, const std::string& surface, double depth_mm) {
+    return group_of(vs_dem, key, surface, depth_mm).measured_stats.mean;
+  };
 
   // 4. Acceptance and the expected physics.
   std::string md = "# Validation: soda-lime glass, orthogonal cutting (seed 000)\n\n";
@@ -220,12 +224,14 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
     const ConditionResult& r = results.at(c.name);
     std::string paper = "—", experiment = "—", per_mm = "—";
     if (c.groove_shape != "trapezoidal") {
-      paper = fmt::format("{:.2f} / {:.2f}", paper_mean(table, "paper_dem", c.surface, c.depth_of_cut_mm, "main_force_N"),
-                          paper_mean(table, "paper_dem", c.surface, c.depth_of_cut_mm, "thrust_force_N"));
-      const double em = paper_mean(table, "experiment", c.surface, c.depth_of_cut_mm, "main_force_N");
-      const double et = paper_mean(table, "experiment", c.surface, c.depth_of_cut_mm, "thrust_force_N");
-      experiment = fmt::format("{:.2f} / {:.2f}", em, et);
-      per_mm = fmt::format("{:.3f} / {:.3f}", em / 25.4, et / 25.4);
+      paper = fmt::format("{:.2f} / {:.2f}", paper_dem_mean("main_force", c.surface, c.depth_of_cut_mm),
+                          paper_dem_mean("thrust_force", c.surface, c.depth_of_cut_mm));
+      const auto measured = [&](const std::string& key) {
+        return group_of(vs_experiment, key, c.surface, c.depth_of_cut_mm).measured_stats.mean;
+      };
+      experiment = fmt::format("{:.2f} / {:.2f}", measured("main_force"), measured("thrust_force"));
+      // The per-unit-width view is in N/m: per 1 mm of width is 1e-3 of it.
+      per_mm = fmt::format("{:.3f} / {:.3f}", 1e-3 * measured("main_force_per_width"), 1e-3 * measured("thrust_force_per_width"));
     }
     md += fmt::format("| {} | {:.2f} ± {:.2f} | {:.2f} ± {:.2f} | {} | {} | {} | {:.0f} + {:.0f} ({:.0f} / {:.0f}) | {:.0f} | {:.0f} |\n",
                       c.name, r.main_n, r.main_std_n, r.thrust_n, r.thrust_std_n, paper, experiment, per_mm,
@@ -248,10 +254,9 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
     const ConditionResult* regular = find("none", depth);
     const ConditionResult* grooved = find("rectangular", depth);
     if (regular) {
-      for (const auto& [label, column, value] : std::vector<std::tuple<std::string, std::string, double>>{
-               {"main", "main_force_N", regular->main_n}, {"thrust", "thrust_force_N", regular->thrust_n}}) {
-        const double paper = paper_mean(table, "paper_dem", "regular", depth, column);
-        const double error = value / paper - 1;
+      for (const std::string label : {"main", "thrust"}) {
+        const GroupComparison& g = group_of(vs_dem, label + "_force", "regular", depth);
+        const double paper = g.measured_stats.mean, error = g.error_pct / 100;
         check(fmt::format("regular {} mm: {} force vs the paper's DEM mean ({:.2f} N), relative error", depth, label, paper),
               error, std::abs(error) <= spec.regular_max_error_pct / 100, fmt::format("|error| <= {:g} %", spec.regular_max_error_pct));
       }
@@ -267,10 +272,8 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
   if (const auto *a = find("none", 0.1), *b = find("none", 0.2); a && b) {
     md += fmt::format("- Regular, 0.1 -> 0.2 mm: main force {}, thrust {} (the paper's DEM: {}, {}).\n",
                       pct(b->main_n / a->main_n - 1), pct(b->thrust_n / a->thrust_n - 1),
-                      pct(paper_mean(table, "paper_dem", "regular", 0.2, "main_force_N") /
-                              paper_mean(table, "paper_dem", "regular", 0.1, "main_force_N") - 1),
-                      pct(paper_mean(table, "paper_dem", "regular", 0.2, "thrust_force_N") /
-                              paper_mean(table, "paper_dem", "regular", 0.1, "thrust_force_N") - 1));
+                      pct(paper_dem_mean("main_force", "regular", 0.2) / paper_dem_mean("main_force", "regular", 0.1) - 1),
+                      pct(paper_dem_mean("thrust_force", "regular", 0.2) / paper_dem_mean("thrust_force", "regular", 0.1) - 1));
     physics["regular_main_force_change_0.1_to_0.2"] = b->main_n / a->main_n - 1;
   }
   for (double depth : {0.1, 0.2}) {
