@@ -29,43 +29,31 @@ void write_specimen_png(const std::filesystem::path& path, const Simulation& sim
   const double aspect = (y1 - y0) / (x1 - x0);
   const int width = aspect > 1 ? static_cast<int>(1000 / aspect) + 120 : 1100;
   const int height = aspect > 1 ? 1100 : static_cast<int>(1000 * aspect) + 120;
-  const std::filesystem::path tmp = path.string() + ".tmp-png";
-  // A stream of its own, closed with plend1() (plend() would end every stream), under the PLplot lock.
-  const auto plplot = lock_plplot();
-  PLINT previous_stream = 0, stream = 0;
-  plgstrm(&previous_stream);
-  plmkstrm(&stream);
-  plsdev("pngcairo");
-  plsfnam(tmp.string().c_str());
-  plspage(0, 0, width, height, 0, 0);
-  plscolbg(255, 255, 255);
-  plscol0(1, 0, 0, 0);        // axes, labels
-  plscol0(2, 170, 170, 170);  // disks
-  plscol0(3, 220, 30, 30);    // tension cracks
-  plscol0(4, 30, 70, 220);    // shear cracks
-  plinit();
-  plcol0(1);
-  plschr(0, 0.75);
-  plenv(x0 * mx, x1 * mx, y0 * mx, y1 * mx, 1, 0);
-  pllab("x (mm)", "y (mm)", (title + "; cracks: red tension, blue shear").c_str());
-  plcol0(2);
-  plwidth(0.5);
-  for (std::size_t i = 0; i < p.size(); ++i) plarc(p.x[i] * mx, p.y[i] * mx, p.radius[i] * mx, p.radius[i] * mx, 0, 360, 0, 0);
-  plwidth(2.0);
-  for (const auto& c : sim.cracks()) {
-    plcol0(c.mode == BreakMode::tension ? 3 : 4);
-    const double dx = 0.5 * c.length_m * std::cos(c.orientation_rad), dy = 0.5 * c.length_m * std::sin(c.orientation_rad);
-    pljoin((c.x_m - dx) * mx, (c.y_m - dy) * mx, (c.x_m + dx) * mx, (c.y_m + dy) * mx);
-  }
-  // Walls (platens, the cutting tool) in black, clipped to the picture.
-  plcol0(1);
-  for (const auto& w : sim.walls())
-    if (w.enabled) pljoin(w.x0 * mx, w.y0 * mx, w.x1 * mx, w.y1 * mx);
-  plend1();
-  plsstrm(previous_stream);
-  std::error_code ec;
-  if (!std::filesystem::exists(tmp, ec)) throw std::runtime_error("PLplot wrote no picture to " + tmp.string());
-  std::filesystem::rename(tmp, path);
+  draw_png_with_plplot(path, width, height, [] {
+    plscolbg(255, 255, 255);
+    plscol0(1, 0, 0, 0);        // axes, labels
+    plscol0(2, 170, 170, 170);  // disks
+    plscol0(3, 220, 30, 30);    // tension cracks
+    plscol0(4, 30, 70, 220);    // shear cracks
+  }, [&] {
+    plcol0(1);
+    plschr(0, 0.75);
+    plenv(x0 * mx, x1 * mx, y0 * mx, y1 * mx, 1, 0);
+    pllab("x (mm)", "y (mm)", (title + "; cracks: red tension, blue shear").c_str());
+    plcol0(2);
+    plwidth(0.5);
+    for (std::size_t i = 0; i < p.size(); ++i) plarc(p.x[i] * mx, p.y[i] * mx, p.radius[i] * mx, p.radius[i] * mx, 0, 360, 0, 0);
+    plwidth(2.0);
+    for (const auto& c : sim.cracks()) {
+      plcol0(c.mode == BreakMode::tension ? 3 : 4);
+      const double dx = 0.5 * c.length_m * std::cos(c.orientation_rad), dy = 0.5 * c.length_m * std::sin(c.orientation_rad);
+      pljoin((c.x_m - dx) * mx, (c.y_m - dy) * mx, (c.x_m + dx) * mx, (c.y_m + dy) * mx);
+    }
+    // Walls (platens, the cutting tool) in black, clipped to the picture.
+    plcol0(1);
+    for (const auto& w : sim.walls())
+      if (w.enabled) pljoin(w.x0 * mx, w.y0 * mx, w.x1 * mx, w.y1 * mx);
+  });
 }
 
 void write_cut_forces_png(const std::filesystem::path& path, const CutResult& result, double steady_from_m) {

@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
+#include <mutex>
 #include <random>
 #include <stdexcept>
 #include <system_error>
@@ -292,13 +294,38 @@ void draw(const FigureSpec& fig, const std::pair<double, double>& xr, const std:
 
 }  // namespace
 
-std::unique_lock<std::mutex> lock_plplot() {
-  static std::mutex plplot_state;  // guards a library-wide resource, not model state
-  return std::unique_lock<std::mutex>(plplot_state);
+void draw_png_with_plplot(const std::filesystem::path& path, int width_px, int height_px,
+                          const std::function<void()>& before_init, const std::function<void()>& draw) {
+  namespace fs = std::filesystem;
+  if (path.has_parent_path()) fs::create_directories(path.parent_path());
+  std::random_device entropy;
+  const fs::path temporary = path.string() + fmt::format(".tmp-{:08x}.png", entropy());
+  {
+    // PLplot keeps library-wide state: one drawing at a time, on a stream of its own, closed with plend1()
+    // (plend() would end every stream).
+    static std::mutex plplot_state;  // guards a library resource, not model state
+    const std::lock_guard<std::mutex> lock(plplot_state);
+    PLINT previous_stream = 0, stream = 0;
+    plgstrm(&previous_stream);
+    plmkstrm(&stream);
+    plsdev("pngcairo");
+    plsfnam(temporary.c_str());
+    plspage(0.0, 0.0, width_px, height_px, 0, 0);
+    if (before_init) before_init();
+    plinit();
+    draw();
+    plend1();
+    plsstrm(previous_stream);
+  }
+  std::error_code error;
+  if (!fs::exists(temporary, error) || fs::file_size(temporary, error) == 0) {
+    fs::remove(temporary, error);
+    throw std::runtime_error(fmt::format("PLplot (pngcairo) did not write '{}'", path.string()));
+  }
+  move_into_place(temporary, path);
 }
 
 void render_png(const FigureSpec& fig, const std::filesystem::path& path) {
-  namespace fs = std::filesystem;
   // Validate everything PLplot would otherwise exit() on.
   Extent xe, ye;
   bool any_point = false;
@@ -348,38 +375,21 @@ void render_png(const FigureSpec& fig, const std::filesystem::path& path) {
                      "increasing axis limits");
   }
 
-  if (path.has_parent_path()) fs::create_directories(path.parent_path());
-  std::random_device entropy;
-  const fs::path temporary = path.string() + fmt::format(".tmp-{:08x}.png", entropy());
-
-  const auto plplot = lock_plplot();
-  PLINT previous_stream = 0, stream = 0;
-  plgstrm(&previous_stream);
-  plmkstrm(&stream);
-  plsdev("pngcairo");
-  plsfnam(temporary.c_str());
-  plspage(0.0, 0.0, fig.width_px, fig.height_px, 0, 0);
-  plscmap0n(kBandStart + static_cast<int>(kPalette.size()));
-  plscol0(0, 255, 255, 255);
-  plscol0(kBlack, 0, 0, 0);
-  plscol0(kGrid, 225, 225, 225);
-  for (std::size_t i = 0; i < kPalette.size(); ++i) {
-    const int c = static_cast<int>(i);
-    plscol0(kPaletteStart + c, kPalette[i][0], kPalette[i][1], kPalette[i][2]);
-    plscol0a(kBandStart + c, kPalette[i][0], kPalette[i][1], kPalette[i][2], 0.18);
-  }
-  plinit();
-  plschr(0.0, 1.25);
-  draw(fig, xr, yr, fig.legend_position == "best" ? best_corner(fig, xr, yr) : fig.legend_position);
-  plend1();
-  plsstrm(previous_stream);
-
-  std::error_code error;
-  if (!fs::exists(temporary, error) || fs::file_size(temporary, error) == 0) {
-    fs::remove(temporary, error);
-    throw std::runtime_error(fmt::format("PLplot (pngcairo) did not write '{}'", path.string()));
-  }
-  move_into_place(temporary, path);
+  const auto colours = [] {
+    plscmap0n(kBandStart + static_cast<int>(kPalette.size()));
+    plscol0(0, 255, 255, 255);
+    plscol0(kBlack, 0, 0, 0);
+    plscol0(kGrid, 225, 225, 225);
+    for (std::size_t i = 0; i < kPalette.size(); ++i) {
+      const int c = static_cast<int>(i);
+      plscol0(kPaletteStart + c, kPalette[i][0], kPalette[i][1], kPalette[i][2]);
+      plscol0a(kBandStart + c, kPalette[i][0], kPalette[i][1], kPalette[i][2], 0.18);
+    }
+  };
+  draw_png_with_plplot(path, fig.width_px, fig.height_px, colours, [&] {
+    plschr(0.0, 1.25);
+    draw(fig, xr, yr, fig.legend_position == "best" ? best_corner(fig, xr, yr) : fig.legend_position);
+  });
 }
 
 }  // namespace kerf

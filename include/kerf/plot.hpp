@@ -10,10 +10,10 @@
 //   kerf::render_png(fig, "out/parity_axial_force.png");
 //
 // Labels are UTF-8 with PLplot's escapes (#d subscript, #u superscript). PLplot keeps its state in the library:
-// render_png() opens its own stream, closes it, and holds lock_plplot() meanwhile, so it may be called from
-// several threads (the drawings are serialised).
+// render_png() draws through draw_png_with_plplot(), which gives it a stream of its own under one lock, so
+// it may be called from several threads (the drawings are serialised).
 #include <filesystem>
-#include <mutex>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -52,9 +52,12 @@ struct FigureSpec {
   int width_px = 1200, height_px = 900;
 };
 
-/// The one lock around PLplot's library-wide state: every drawing (render_png, the DEM pictures) holds it
-/// from opening its stream to closing it.
-std::unique_lock<std::mutex> lock_plplot();
+/// Draws one PNG with PLplot's pngcairo device: a stream of its own, `before_init` (colour maps, background)
+/// before plinit, then `draw`; under one lock around PLplot's library-wide state, so callers on several
+/// threads are serialised. Written to a temporary file beside `path`, then moved into place (whole or not
+/// at all); std::runtime_error when PLplot wrote nothing. render_png and the DEM pictures use it.
+void draw_png_with_plplot(const std::filesystem::path& path, int width_px, int height_px,
+                          const std::function<void()>& before_init, const std::function<void()>& draw);
 
 /// Renders the figure to a PNG. Throws InputError for a figure that cannot be drawn (no finite points,
 /// mismatched sizes) and std::runtime_error when the file cannot be written.
