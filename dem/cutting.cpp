@@ -31,6 +31,8 @@ void validate_cut_params(const CutParams& p) {
   require(p.length_m > 0, "cut.length_mm", units::m_to_mm(p.length_m), "a positive value in mm");
   require(p.entry_fraction >= 0 && p.entry_fraction < 1, "cut.entry_fraction", p.entry_fraction, "a value in [0, 1)");
   require(p.sample_every_steps >= 1, "cut.sample_every_steps", p.sample_every_steps, "an integer >= 1");
+  require(p.window_m > 0 && p.window_m >= 1e-3 * p.length_m, "cut.window_mm", units::m_to_mm(p.window_m),
+          "a positive window of at least 1/1000 of cut.length_mm");
   require(p.rake_deg > -90 && p.rake_deg < 90, "tool.rake_deg", p.rake_deg, "a value in (-90, 90) deg");
   require(p.clearance_deg >= 0 && p.clearance_deg < 90, "tool.clearance_deg", p.clearance_deg, "a value in [0, 90) deg");
   // The wedge between the two faces must be a real wedge: rake + clearance < 90 deg.
@@ -63,6 +65,7 @@ CutParams read_cut_params(ObjectReader& root) {
   p.length_m = units::mm_to_m(cut.get_number("length_mm", Range::positive(), "mm"));
   p.entry_fraction = cut.get_number_or("entry_fraction", p.entry_fraction, Range{0.0, 1.0, false, true}, "");
   p.sample_every_steps = cut.get_int_or("sample_every_steps", p.sample_every_steps, 1, 1000000);
+  p.window_m = units::mm_to_m(cut.get_number_or("window_mm", units::m_to_mm(p.window_m), Range::positive(), "mm"));
   cut.finish();
   if (auto tool = root.find_object("tool")) {
     p.rake_deg = tool->get_number_or("rake_deg", p.rake_deg, Range::open(-90.0, 90.0), "deg");
@@ -88,7 +91,7 @@ CutParams read_cut_params(ObjectReader& root) {
 Json cut_params_to_json(const CutParams& p) {
   Json j{{"cut", {{"depth_of_cut_mm", units::m_to_mm(p.depth_of_cut_m)}, {"speed_m_per_s", p.speed_m_per_s},
                   {"length_mm", units::m_to_mm(p.length_m)}, {"entry_fraction", p.entry_fraction},
-                  {"sample_every_steps", p.sample_every_steps}}},
+                  {"sample_every_steps", p.sample_every_steps}, {"window_mm", units::m_to_mm(p.window_m)}}},
          {"tool", {{"rake_deg", p.rake_deg}, {"clearance_deg", p.clearance_deg},
                    {"edge_radius_um", units::m_to_um(p.edge_radius_m)}, {"edge_segments", p.edge_segments}}},
          {"grooves", {{"shape", p.groove_shape}}}};
@@ -115,8 +118,9 @@ std::vector<double> groove_centres(const CutParams& p, double x_left_m, double x
   std::vector<double> out;
   if (p.groove_shape == "none") return out;
   const double half = 0.5 * p.groove_width_m;
-  for (double c = x_right_m - 0.5 * p.groove_pitch_m; c - half > x_left_m && c + half > x_right_m - p.length_m;
-       c -= p.groove_pitch_m)
+  // The laser treats the whole top surface, not only the tool's path: a groove ahead of the tool's end
+  // still stops a crack, and the workpiece does not change with the travel (seed 000 Fig. 10).
+  for (double c = x_right_m - 0.5 * p.groove_pitch_m; c - half > x_left_m; c -= p.groove_pitch_m)
     out.push_back(c);
   return out;
 }
@@ -209,6 +213,25 @@ void steady_statistics(CutResult& res, double from_travel_m) {
   res.thrust_force_n = st / n;
   res.main_force_std_n = std::sqrt(std::max(0.0, sm2 / n - res.main_force_n * res.main_force_n));
   res.thrust_force_std_n = std::sqrt(std::max(0.0, st2 / n - res.thrust_force_n * res.thrust_force_n));
+}
+
+std::vector<TravelWindow> travel_window_means(const std::vector<CutSample>& samples, double length_m, double window_m) {
+  // Whole windows, not one more for the rounding of length / window (0.6 / 0.1 is 6.000000000000001).
+  const auto n = static_cast<std::size_t>(std::max(1.0, std::ceil(length_m / window_m * (1 - 1e-12))));
+  std::vector<TravelWindow> out(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    out[k].from_m = static_cast<double>(k) * window_m;
+    out[k].to_m = std::min(length_m, static_cast<double>(k + 1) * window_m);
+  }
+  for (const auto& s : samples) {
+    const auto k = std::min(n - 1, static_cast<std::size_t>(std::max(0.0, s.travel_m / window_m)));
+    out[k].main_force_n += s.main_force_n;
+    out[k].thrust_force_n += s.thrust_force_n;
+    ++out[k].n_samples;
+  }
+  for (auto& w : out)
+    if (w.n_samples > 0) w.main_force_n /= w.n_samples, w.thrust_force_n /= w.n_samples;
+  return out;
 }
 
 namespace {
@@ -333,10 +356,10 @@ void CutRun::finish() {
 
 std::string CutRun::serialize() const {
   using namespace serial;
-  std::string out = "KERFCUT1";
+  std::string out = "KERFCUT2";
   const auto& p = params_;
   for (double v : {p.depth_of_cut_m, p.speed_m_per_s, p.length_m, p.rake_deg, p.clearance_deg, p.edge_radius_m,
-                   p.groove_depth_m, p.groove_pitch_m, p.groove_width_m, p.groove_bottom_width_m, p.entry_fraction})
+                   p.groove_depth_m, p.groove_pitch_m, p.groove_width_m, p.groove_bottom_width_m, p.entry_fraction, p.window_m})
     put_raw(out, v);
   put_raw(out, p.edge_segments), put_raw(out, p.sample_every_steps);
   put_str(out, p.groove_shape);
@@ -351,12 +374,12 @@ std::string CutRun::serialize() const {
 
 CutRun CutRun::deserialize(std::string_view bytes) {
   using namespace serial;
-  if (bytes.substr(0, 8) != "KERFCUT1") throw ModelError("dem", "not a kerf-dem cut checkpoint");
+  if (bytes.substr(0, 8) != "KERFCUT2") throw ModelError("dem", "not a kerf-dem cut checkpoint");
   In in{bytes, 8};
   CutRun run;
   auto& p = run.params_;
   for (double* v : {&p.depth_of_cut_m, &p.speed_m_per_s, &p.length_m, &p.rake_deg, &p.clearance_deg, &p.edge_radius_m,
-                    &p.groove_depth_m, &p.groove_pitch_m, &p.groove_width_m, &p.groove_bottom_width_m, &p.entry_fraction})
+                    &p.groove_depth_m, &p.groove_pitch_m, &p.groove_width_m, &p.groove_bottom_width_m, &p.entry_fraction, &p.window_m})
     in.raw(*v);
   in.raw(p.edge_segments), in.raw(p.sample_every_steps);
   in.str(p.groove_shape);

@@ -477,6 +477,11 @@ Json continue_cut(const Scene& scene, const Json& doc, Json summary, const fs::p
                             {"surface_y_mm", units::m_to_mm(res.y_top_m)},
                             {"cut_line_y_mm", units::m_to_mm(res.y_cut_m)},
                             {"particles_removed_by_grooves", res.n_removed_by_grooves}};
+  Json windows = Json::array();
+  for (const auto& w : travel_window_means(res.samples, scene.cut.length_m, scene.cut.window_m))
+    windows.push_back({{"from_travel_mm", units::m_to_mm(w.from_m)}, {"to_travel_mm", units::m_to_mm(w.to_m)},
+                       {"main_force_N", w.main_force_n}, {"thrust_force_N", w.thrust_force_n}, {"samples", w.n_samples}});
+  summary["results"]["travel_windows"] = windows;
   summary["n_particles"] = res.n_particles;
   summary["steps"] = res.steps;
   summary["wall_time_s"] = res.wall_time_s;

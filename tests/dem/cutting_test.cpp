@@ -57,9 +57,9 @@ TEST_CASE("cutting: grooves every pitch across the cut path", "[cutting]") {
   auto c = groove_centres(p, 0, 1e-3);
   REQUIRE(c.size() == 5);  // 0.9, 0.7, 0.5, 0.3, 0.1 mm: the last still right of the left edge
   for (std::size_t k = 0; k < c.size(); ++k) CHECK_THAT(c[k], WithinAbs(0.9e-3 - 0.2e-3 * static_cast<double>(k), 1e-12));
-  p.length_m = 0.3e-3;  // only the grooves the tool reaches
-  c = groove_centres(p, 0, 1e-3);
-  CHECK(c.size() == 2);
+  p.length_m = 0.3e-3;  // the whole surface is grooved, not only the tool's path
+  CHECK(groove_centres(p, 0, 1e-3) == c);
+  CHECK(groove_centres(p, 0.15e-3, 1e-3).size() == 4);  // 0.1 mm would reach past a left edge at 0.15 mm
   CHECK(inside_any_groove(p, c, 1e-3, 0.9e-3, 0.95e-3));
   CHECK_FALSE(inside_any_groove(p, c, 1e-3, 0.8e-3, 0.95e-3));  // between grooves
   CHECK(groove_centres(CutParams{}, 0, 1e-3).empty());
@@ -153,6 +153,37 @@ TEST_CASE("cutting: parameters are validated with the dotted key", "[cutting]") 
   kerf::Json scene{{"cut", {{"depth_of_cut_mm", 0.1}, {"length_mm", 0.2}}}, {"grooves", {{"shape", "triangular"}}}};
   kerf::ObjectReader root(scene, "");
   CHECK_THROWS_AS(read_cut_params(root), kerf::InputError);
+}
+
+TEST_CASE("cutting: mean forces per travel window", "[cutting]") {
+  // A force that steps from 1 N to 3 N (main) at 0.3 mm, sampled every 0.001 mm up to 0.6 mm; thrust = travel in mm.
+  std::vector<CutSample> samples;
+  for (int k = 0; k <= 600; ++k) {
+    const double travel = k * 1e-6;
+    samples.push_back({travel, 0, travel < 0.3e-3 ? 1.0 : 3.0, travel * 1e3});
+  }
+  const auto w = travel_window_means(samples, 0.6e-3, 0.1e-3);
+  REQUIRE(w.size() == 6);  // 0.6 / 0.1 rounds to 6.000000000000001: no seventh, empty window
+  int n = 0;
+  double sum = 0;
+  for (const auto& x : w) n += x.n_samples, sum += x.main_force_n * x.n_samples;
+  CHECK(n == static_cast<int>(samples.size()));  // every sample in exactly one window
+  double direct = 0;
+  for (const auto& s : samples) direct += s.main_force_n;
+  CHECK_THAT(sum, WithinRel(direct, 1e-12));      // the windows' weighted means give back the whole mean
+  CHECK(w[0].main_force_n == 1.0);
+  CHECK(w[4].main_force_n == 3.0);
+  CHECK_THAT(w[5].to_m, WithinAbs(0.6e-3, 1e-18));
+  CHECK(w[5].n_samples == 101);  // the sample at the end of the travel goes to the last window
+  for (std::size_t k = 0; k < w.size(); ++k)  // a linear force: each window's mean is its mid-travel value
+    CHECK_THAT(w[k].thrust_force_n, WithinAbs(0.1 * (static_cast<double>(k) + 0.5), 0.001));
+  // A window longer than the travel: one window, the whole mean.
+  const auto one = travel_window_means(samples, 0.6e-3, 1e-3);
+  REQUIRE(one.size() == 1);
+  CHECK_THAT(one[0].main_force_n, WithinRel(direct / static_cast<double>(samples.size()), 1e-12));
+  CutParams p;
+  p.window_m = 0;
+  CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains("cut.window_mm = 0"));
 }
 
 TEST_CASE("cutting: crack places and subsurface damage depth", "[cutting]") {

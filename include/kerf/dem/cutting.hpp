@@ -41,6 +41,8 @@ struct CutParams {
   /// Part of the travel excluded from the mean forces (the entry), as a fraction of the travel.
   double entry_fraction = 0.25;
   int sample_every_steps = 50;
+  /// Report only: the summary's mean forces per stretch of travel of this length (the steadiness check).
+  double window_m = 0.1e-3;
 };
 
 /// Checks cross-field constraints (groove narrower than its pitch, trapezoid bottom narrower than its
@@ -48,7 +50,7 @@ struct CutParams {
 void validate_cut_params(const CutParams& params);
 
 /// Reads the "cut" object (depth_of_cut_mm, speed_m_per_s, length_mm, entry_fraction,
-/// sample_every_steps), the optional "tool" (rake_deg, clearance_deg, edge_radius_um, edge_segments)
+/// sample_every_steps, window_mm), the optional "tool" (rake_deg, clearance_deg, edge_radius_um, edge_segments)
 /// and "grooves" (shape, depth_mm, pitch_mm, width_mm, bottom_width_mm) objects of a scene, then validates.
 CutParams read_cut_params(ObjectReader& root);
 Json cut_params_to_json(const CutParams& params);
@@ -58,8 +60,8 @@ Json cut_params_to_json(const CutParams& params);
 /// Whether a point `dx` from a groove's centre line and `depth` below the top surface lies inside the
 /// groove's outline (depth in [0, groove depth]; half-width linear in depth for a trapezoid).
 bool inside_groove_outline(const CutParams& params, double dx_m, double depth_m);
-/// Centres of the grooves across the cut path: the first half a pitch left of the right edge, then every
-/// pitch, as long as the groove lies right of `x_left_m` and within the tool's travel.
+/// Centres of the grooves across the top surface: the first half a pitch left of the right edge, then every
+/// pitch, as long as the groove lies right of `x_left_m` (whatever the tool's travel).
 std::vector<double> groove_centres(const CutParams& params, double x_left_m, double x_right_m);
 /// Whether (x, y) lies inside any groove of a workpiece with top surface at `y_top_m`.
 bool inside_any_groove(const CutParams& params, const std::vector<double>& centres, double y_top_m, double x_m,
@@ -110,6 +112,19 @@ inline std::array<double, 2> tool_force_components(double fx_on_tool_n, double f
 
 /// Mean and (population) standard deviation of main and thrust forces over samples with travel >= from.
 void steady_statistics(CutResult& result, double from_travel_m);
+
+/// The mean forces over one stretch of the tool's travel, [from, to).
+struct TravelWindow {
+  double from_m = 0, to_m = 0;
+  double main_force_n = 0, thrust_force_n = 0;
+  int n_samples = 0;
+};
+
+/// The travel [0, length] cut into consecutive windows of `window_m` (the last one shorter when the length
+/// is not a multiple of it, and holding every sample at or beyond `length`), with the mean forces in each.
+/// Windows whose means differ beyond the scatter show a cut that is not steady: the entry at the free
+/// edge, or a tool that has come near the held side.
+std::vector<TravelWindow> travel_window_means(const std::vector<CutSample>& samples, double length_m, double window_m);
 
 /// The workpiece: the specimen without the groove disks, left and bottom boundary disks held (group 1).
 Simulation make_workpiece(const Simulation& specimen, const CutParams& params, std::size_t& n_removed);
