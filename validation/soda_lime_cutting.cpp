@@ -7,9 +7,12 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdlib>
 #include <map>
+#include <mutex>
+#include <thread>
 
 #include "kerf/comparison_config.hpp"
 #include "kerf/error.hpp"
@@ -151,17 +154,39 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
   CuttingValidation v;
 
   // 1. The runs: kerf-dem reuses finished replicates, so an interrupted validation resumes where it stopped.
+  // Conditions run side by side, one kerf-dem with one thread each (its replicates one after the other), as
+  // many at a time as there are hardware threads: with one kerf-dem at a time running three replicates side
+  // by side on two cores, a core idles while the third replicate runs alone (12 rounds of cuts for 18 cuts
+  // instead of 9).
+  const std::size_t n_conditions = spec.conditions.size();
+  const std::size_t streams = std::min<std::size_t>(std::max(1u, std::thread::hardware_concurrency()), n_conditions);
+  std::vector<int> status(n_conditions, 0);
+  std::atomic<std::size_t> next{0};
+  std::mutex print_lock;
+  const auto run_conditions = [&] {
+    for (std::size_t k = next++; k < n_conditions; k = next++) {
+      const auto& c = spec.conditions[k];
+      const std::string command = fmt::format(
+          "{} run {} --set cut.depth_of_cut_mm={} --set grooves.shape={} --replicates {}{} --out {}", quoted(kerf_dem),
+          quoted(spec.scene), c.depth_of_cut_mm, c.groove_shape, spec.replicates, streams > 1 ? " --threads 1" : "",
+          quoted(out_dir / "runs" / c.name));
+      {
+        const std::lock_guard<std::mutex> lock(print_lock);
+        fmt::print("{}: {}\n", c.name, command);
+        std::fflush(stdout);
+      }
+      status[k] = std::system(command.c_str());
+    }
+  };
+  std::vector<std::thread> pool;
+  for (std::size_t t = 0; t < streams; ++t) pool.emplace_back(run_conditions);
+  for (auto& t : pool) t.join();
   std::map<std::string, ConditionResult> results;
-  for (const auto& c : spec.conditions) {
-    const fs::path run_dir = out_dir / "runs" / c.name;
-    const std::string command = fmt::format(
-        "{} run {} --set cut.depth_of_cut_mm={} --set grooves.shape={} --replicates {} --out {}", quoted(kerf_dem),
-        quoted(spec.scene), c.depth_of_cut_mm, c.groove_shape, spec.replicates, quoted(run_dir));
-    fmt::print("{}: {}\n", c.name, command);
-    std::fflush(stdout);
-    const int status = std::system(command.c_str());
-    if (status != 0) throw ModelError("validation", fmt::format("kerf-dem failed for condition {} (status {})", c.name, status));
-    results[c.name] = collect(c, run_dir);
+  for (std::size_t k = 0; k < n_conditions; ++k) {
+    const auto& c = spec.conditions[k];
+    if (status[k] != 0)
+      throw ModelError("validation", fmt::format("kerf-dem failed for condition {} (status {})", c.name, status[k]));
+    results[c.name] = collect(c, out_dir / "runs" / c.name);
   }
 
   // 2. The kerf-dem table: one row per replicate, and the means that the report layer compares. Trapezoidal

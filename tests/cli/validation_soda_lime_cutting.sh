@@ -40,6 +40,10 @@ grep -q "per_unit_width" "$work/out/vs_experiment/report.md" || fail "no per-uni
 grep -q "grooved / regular main force at 0.1 mm" "$work/out/report.md" || fail "no groove ratio check"
 grep -q '"passed"' "$work/out/summary.json" || fail "no verdict in summary.json"
 [ "$(grep -c '^kerf_dem,' "$work/out/kerf_dem_replicates.csv")" -eq 4 ] || fail "expected 4 replicate rows"
+# With two or more hardware threads the two conditions run side by side, one single-thread kerf-dem each.
+if [ "$(nproc)" -ge 2 ]; then
+  [ "$(grep -c -e '--threads 1' "$work/log")" -eq 2 ] || fail "conditions not run side by side: $(grep -e ' run ' "$work/log")"
+fi
 # The grooves removed disks: the grooved rows differ from the regular ones.
 awk -F, 'NR > 1 { m[$2] = $6 } END { exit !(m["regular"] != m["grooved"]) }' "$work/out/kerf_dem_means.csv" ||
   fail "grooved and regular forces identical"
