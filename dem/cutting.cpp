@@ -375,6 +375,9 @@ std::string CutRun::serialize() const {
 
 CutRun CutRun::deserialize(std::string_view bytes) {
   using namespace serial;
+  if (bytes.substr(0, 7) == "KERFCUT" && bytes.substr(0, 8) != "KERFCUT2")
+    throw ModelError("dem", "a cut checkpoint of another kerf-dem version (" + std::string(bytes.substr(0, 8)) +
+                                ", this one reads KERFCUT2): run the cut again");
   if (bytes.substr(0, 8) != "KERFCUT2") throw ModelError("dem", "not a kerf-dem cut checkpoint");
   In in{bytes, 8};
   CutRun run;

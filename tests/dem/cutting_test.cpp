@@ -155,6 +155,11 @@ TEST_CASE("cutting: parameters are validated with the dotted key", "[cutting]") 
   CHECK_THROWS_AS(read_cut_params(root), kerf::InputError);
 }
 
+TEST_CASE("cutting: a checkpoint of another format version is refused by name", "[cutting]") {
+  CHECK_THROWS_WITH(CutRun::deserialize("KERFCUT1 and the rest"), Catch::Contains("KERFCUT1"));
+  CHECK_THROWS_WITH(CutRun::deserialize("something else"), Catch::Contains("not a kerf-dem cut checkpoint"));
+}
+
 TEST_CASE("cutting: mean forces per travel window", "[cutting]") {
   // A force that steps from 1 N to 3 N (main) at 0.3 mm, sampled every 0.001 mm up to 0.6 mm; thrust = travel in mm.
   std::vector<CutSample> samples;
