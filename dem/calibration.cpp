@@ -287,42 +287,37 @@ bool same_micro_parameters(const Material& a, const Material& b) {
 namespace {
 constexpr std::uint64_t kEvaluationsMagic = 0x4b45524643414c31;  // "KERFCAL1"
 
-template <class Visit>
-void visit_evaluation(CalibrationEvaluation& e, Visit&& v) {
+/// One evaluation's fields in checkpoint order: io(field...) writes (serial::Out) or reads (serial::In) them.
+template <class Self, class Io>
+void evaluation_fields(Self& e, Io& io) {
   auto& m = e.material;
-  v(m.density_kg_per_m3), v(m.local_damping);
-  v(m.contact.effective_modulus_pa), v(m.contact.stiffness_ratio), v(m.contact.friction_coefficient);
-  v(m.joint.effective_modulus_pa), v(m.joint.stiffness_ratio), v(m.joint.tensile_strength_pa), v(m.joint.cohesion_pa);
-  v(m.joint.friction_angle_rad), v(m.joint.friction_coefficient), v(m.joint.n_elements), v(m.joint.radius_multiplier);
-  v(m.joint.tan_friction_angle);
-  v(e.macro.youngs_modulus_pa), v(e.macro.poissons_ratio), v(e.macro.tensile_strength_pa), v(e.macro.compressive_strength_pa);
-  v(e.index), v(e.max_relative_error), v(e.wall_time_s);
+  io(m.name, m.density_kg_per_m3, m.local_damping);
+  io(m.contact.effective_modulus_pa, m.contact.stiffness_ratio, m.contact.friction_coefficient);
+  io(m.joint.effective_modulus_pa, m.joint.stiffness_ratio, m.joint.tensile_strength_pa, m.joint.cohesion_pa);
+  io(m.joint.friction_angle_rad, m.joint.friction_coefficient, m.joint.n_elements, m.joint.radius_multiplier);
+  io(m.joint.tan_friction_angle);
+  io(e.macro.youngs_modulus_pa, e.macro.poissons_ratio, e.macro.tensile_strength_pa, e.macro.compressive_strength_pa);
+  io(e.index, e.max_relative_error, e.wall_time_s);
 }
 }  // namespace
 
 std::string serialize_evaluations(const std::vector<CalibrationEvaluation>& log) {
   std::string out;
-  serial::put_raw(out, kEvaluationsMagic);
-  serial::put_raw(out, static_cast<std::uint64_t>(log.size()));
-  for (CalibrationEvaluation e : log) {
-    serial::put_str(out, e.material.name);
-    visit_evaluation(e, [&](const auto& v) { serial::put_raw(out, v); });
-  }
+  serial::Out io{out};
+  io(kEvaluationsMagic, static_cast<std::uint64_t>(log.size()));
+  for (const auto& e : log) evaluation_fields(e, io);
   return out;
 }
 
 std::vector<CalibrationEvaluation> deserialize_evaluations(std::string_view bytes) {
-  serial::In in{bytes};
+  serial::In io{bytes};
   std::uint64_t magic = 0, n = 0;
-  in.raw(magic);
+  io(magic);
   if (magic != kEvaluationsMagic) throw ModelError("calibrate", "not a list of calibration evaluations");
-  in.raw(n);
+  io(n);
   if (n > bytes.size()) throw ModelError("calibrate", "corrupt list of calibration evaluations");
   std::vector<CalibrationEvaluation> log(static_cast<std::size_t>(n));
-  for (auto& e : log) {
-    in.str(e.material.name);
-    visit_evaluation(e, [&](auto& v) { in.raw(v); });
-  }
+  for (auto& e : log) evaluation_fields(e, io);
   return log;
 }
 

@@ -355,51 +355,42 @@ void CutRun::finish() {
   res_.cracks = count_cut_cracks(sim_.cracks(), res_.y_cut_m);
 }
 
+namespace {
+constexpr std::string_view kCutMagic = "KERFCUT2";
+}  // namespace
+
+template <class Self, class Io>
+void CutRun::state_fields(Self& run, Io& io) {
+  auto& p = run.params_;
+  auto& r = run.res_;
+  io(p.depth_of_cut_m, p.speed_m_per_s, p.length_m, p.rake_deg, p.clearance_deg, p.edge_radius_m, p.groove_depth_m,
+     p.groove_pitch_m, p.groove_width_m, p.groove_bottom_width_m, p.entry_fraction, p.window_m);
+  io(p.edge_segments, p.sample_every_steps, p.groove_shape, r.samples);
+  io(r.y_top_m, r.y_cut_m, r.width_m, r.time_step_s, r.wall_time_s, run.t0_, r.workpiece_box_m);
+  static_assert(sizeof(std::size_t) == sizeof(std::uint64_t), "counts are 8 bytes in the checkpoint format");
+  io(r.n_particles, r.n_removed_by_grooves, r.steps, run.first_tool_wall_, run.n_tool_walls_, run.finished_);
+}
+
 std::string CutRun::serialize() const {
-  using namespace serial;
-  std::string out = "KERFCUT2";
-  const auto& p = params_;
-  for (double v : {p.depth_of_cut_m, p.speed_m_per_s, p.length_m, p.rake_deg, p.clearance_deg, p.edge_radius_m,
-                   p.groove_depth_m, p.groove_pitch_m, p.groove_width_m, p.groove_bottom_width_m, p.entry_fraction, p.window_m})
-    put_raw(out, v);
-  put_raw(out, p.edge_segments), put_raw(out, p.sample_every_steps);
-  put_str(out, p.groove_shape);
-  put_vec(out, res_.samples);
-  for (double v : {res_.y_top_m, res_.y_cut_m, res_.width_m, res_.time_step_s, res_.wall_time_s, t0_}) put_raw(out, v);
-  put_raw(out, res_.workpiece_box_m);
-  put_raw(out, static_cast<std::uint64_t>(res_.n_particles)), put_raw(out, static_cast<std::uint64_t>(res_.n_removed_by_grooves));
-  put_raw(out, res_.steps), put_raw(out, first_tool_wall_), put_raw(out, n_tool_walls_), put_raw(out, finished_);
-  put_str(out, sim_.serialize());
+  std::string out(kCutMagic);
+  serial::Out io{out};
+  state_fields(*this, io);
+  io(sim_.serialize());
   return out;
 }
 
 CutRun CutRun::deserialize(std::string_view bytes) {
-  using namespace serial;
-  if (bytes.substr(0, 7) == "KERFCUT" && bytes.substr(0, 8) != "KERFCUT2")
+  if (bytes.substr(0, 7) == "KERFCUT" && bytes.substr(0, 8) != kCutMagic)
     throw ModelError("dem", "a cut checkpoint of another kerf-dem version (" + std::string(bytes.substr(0, 8)) +
-                                ", this one reads KERFCUT2): run the cut again");
-  if (bytes.substr(0, 8) != "KERFCUT2") throw ModelError("dem", "not a kerf-dem cut checkpoint");
-  In in{bytes, 8};
+                                ", this one reads " + std::string(kCutMagic) + "): run the cut again");
+  if (bytes.substr(0, 8) != kCutMagic) throw ModelError("dem", "not a kerf-dem cut checkpoint");
+  serial::In io{bytes, kCutMagic.size()};
   CutRun run;
-  auto& p = run.params_;
-  for (double* v : {&p.depth_of_cut_m, &p.speed_m_per_s, &p.length_m, &p.rake_deg, &p.clearance_deg, &p.edge_radius_m,
-                    &p.groove_depth_m, &p.groove_pitch_m, &p.groove_width_m, &p.groove_bottom_width_m, &p.entry_fraction, &p.window_m})
-    in.raw(*v);
-  in.raw(p.edge_segments), in.raw(p.sample_every_steps);
-  in.str(p.groove_shape);
-  in.vec(run.res_.samples);
-  for (double* v : {&run.res_.y_top_m, &run.res_.y_cut_m, &run.res_.width_m, &run.res_.time_step_s, &run.res_.wall_time_s, &run.t0_})
-    in.raw(*v);
-  in.raw(run.res_.workpiece_box_m);
-  std::uint64_t n = 0, removed = 0;
-  in.raw(n), in.raw(removed);
-  run.res_.n_particles = static_cast<std::size_t>(n);
-  run.res_.n_removed_by_grooves = static_cast<std::size_t>(removed);
-  in.raw(run.res_.steps), in.raw(run.first_tool_wall_), in.raw(run.n_tool_walls_), in.raw(run.finished_);
+  state_fields(run, io);
   std::string state;
-  in.str(state);
-  if (in.at != bytes.size()) throw ModelError("dem", "cut checkpoint has trailing bytes");
-  validate_cut_params(p);
+  io(state);
+  io.expect_end("cut checkpoint");
+  validate_cut_params(run.params_);
   run.sim_ = Simulation::deserialize(state);
   if (run.finished_) run.finish();
   return run;

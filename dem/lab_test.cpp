@@ -11,8 +11,6 @@
 
 namespace kerf::dem {
 
-using namespace serial;
-
 LoadingSpec read_loading_spec(ObjectReader& r, const std::string& test) {
   LoadingSpec s;
   s.test = test;
@@ -125,45 +123,39 @@ bool LabTestRun::advance() {
   return !finished_;
 }
 
+namespace {
+constexpr std::string_view kLabMagic = "KERFLAB1";
+}  // namespace
+
+template <class Self, class Io>
+void LabTestRun::state_fields(Self& run, Io& io) {
+  auto& spec = run.spec_;
+  auto& r = run.res_;
+  io(spec.test, spec.speed_m_per_s, spec.stop_fraction, spec.max_strain, spec.sample_every_steps,
+     spec.quasi_static_check, r.curve);
+  io(r.peak_stress_pa, r.strain_at_peak, r.width_m, r.height_m, r.speed_m_per_s, r.time_step_s, r.wall_time_s,
+     run.side0_, run.t0_);
+  static_assert(sizeof(std::size_t) == sizeof(std::uint64_t), "counts are 8 bytes in the checkpoint format");
+  io(r.steps, r.n_particles, r.stop_reason, run.left_, run.right_, run.counted_, run.n_tension_, run.n_shear_,
+     run.finished_);
+}
 
 std::string LabTestRun::serialize() const {
-  std::string out = "KERFLAB1";
-  put_str(out, spec_.test);
-  put_raw(out, spec_.speed_m_per_s), put_raw(out, spec_.stop_fraction), put_raw(out, spec_.max_strain);
-  put_raw(out, spec_.sample_every_steps), put_raw(out, spec_.quasi_static_check);
-  put_vec(out, res_.curve);
-  for (double v : {res_.peak_stress_pa, res_.strain_at_peak, res_.width_m, res_.height_m, res_.speed_m_per_s,
-                   res_.time_step_s, res_.wall_time_s, side0_, t0_})
-    put_raw(out, v);
-  put_raw(out, res_.steps), put_raw(out, static_cast<std::uint64_t>(res_.n_particles));
-  put_str(out, res_.stop_reason);
-  put_vec(out, left_), put_vec(out, right_);
-  put_raw(out, counted_), put_raw(out, n_tension_), put_raw(out, n_shear_), put_raw(out, finished_);
-  const std::string state = sim_.serialize();
-  put_str(out, state);
+  std::string out(kLabMagic);
+  serial::Out io{out};
+  state_fields(*this, io);
+  io(sim_.serialize());
   return out;
 }
 
 LabTestRun LabTestRun::deserialize(std::string_view bytes) {
-  if (bytes.substr(0, 8) != "KERFLAB1") throw ModelError("dem", "not a kerf-dem test checkpoint");
-  In in{bytes, 8};
+  if (bytes.substr(0, kLabMagic.size()) != kLabMagic) throw ModelError("dem", "not a kerf-dem test checkpoint");
+  serial::In io{bytes, kLabMagic.size()};
   LabTestRun run;
-  in.str(run.spec_.test);
-  in.raw(run.spec_.speed_m_per_s), in.raw(run.spec_.stop_fraction), in.raw(run.spec_.max_strain);
-  in.raw(run.spec_.sample_every_steps), in.raw(run.spec_.quasi_static_check);
-  in.vec(run.res_.curve);
-  for (double* v : {&run.res_.peak_stress_pa, &run.res_.strain_at_peak, &run.res_.width_m, &run.res_.height_m,
-                    &run.res_.speed_m_per_s, &run.res_.time_step_s, &run.res_.wall_time_s, &run.side0_, &run.t0_})
-    in.raw(*v);
-  std::uint64_t n = 0;
-  in.raw(run.res_.steps), in.raw(n);
-  run.res_.n_particles = static_cast<std::size_t>(n);
-  in.str(run.res_.stop_reason);
-  in.vec(run.left_), in.vec(run.right_);
-  in.raw(run.counted_), in.raw(run.n_tension_), in.raw(run.n_shear_), in.raw(run.finished_);
+  state_fields(run, io);
   std::string state;
-  in.str(state);
-  if (in.at != bytes.size()) throw ModelError("dem", "test checkpoint has trailing bytes");
+  io(state);
+  io.expect_end("test checkpoint");
   run.sim_ = Simulation::deserialize(state);
   run.res_.test = run.spec_.test;
   if (run.finished_) secant_properties(run.res_);

@@ -25,6 +25,34 @@ void put_vec(std::string& out, const std::vector<T>& v) {
   out.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
 }
 inline void put_str(std::string& out, const std::string& s) { put_vec(out, std::vector<char>(s.begin(), s.end())); }
+
+template <class T>
+struct is_vector : std::false_type {};
+template <class T, class A>
+struct is_vector<std::vector<T, A>> : std::true_type {};
+
+/// Writes fields in order: a string or vector with its length prefix, anything else as raw bytes. A state
+/// class lists its fields once, in a template `state_fields(self, io)`, and calls it with Out to write and
+/// In to read, so the two directions cannot drift apart.
+struct Out {
+  std::string& s;
+  template <class... T>
+  void operator()(const T&... v) {
+    (one(v), ...);
+  }
+
+ private:
+  template <class T>
+  void one(const T& v) {
+    if constexpr (std::is_same_v<T, std::string>)
+      put_str(s, v);
+    else if constexpr (is_vector<T>::value)
+      put_vec(s, v);
+    else
+      put_raw(s, v);
+  }
+};
+
 struct In {
   std::string_view b;
   std::size_t at = 0;
@@ -50,6 +78,26 @@ struct In {
     std::vector<char> c;
     vec(c);
     s.assign(c.begin(), c.end());
+  }
+  /// Reads fields in the order Out wrote them.
+  template <class... T>
+  void operator()(T&... v) {
+    (one(v), ...);
+  }
+  /// Throws unless every byte was read.
+  void expect_end(const char* what) const {
+    if (at != b.size()) throw ModelError("dem", std::string(what) + " has trailing bytes");
+  }
+
+ private:
+  template <class T>
+  void one(T& v) {
+    if constexpr (std::is_same_v<T, std::string>)
+      str(v);
+    else if constexpr (is_vector<T>::value)
+      vec(v);
+    else
+      raw(v);
   }
 };
 

@@ -545,102 +545,41 @@ constexpr std::string_view kStateMagic = "KERFDEM1";
 
 }  // namespace
 
+template <class Self, class Io>
+void Simulation::state_fields(Self& sim, Io& io) {
+  auto& p = sim.p_;
+  auto& b = sim.b_;
+  io(sim.types_);
+  for (auto* v : {&p.x, &p.y, &p.vx, &p.vy, &p.theta, &p.omega, &p.fx, &p.fy, &p.torque, &p.radius, &p.inv_mass,
+                  &p.inv_inertia})
+    io(*v);
+  io(p.type, p.group);
+  io(b.stride, b.i, b.j, b.ref_distance_m, b.ref_rotation_rad, b.geometry, b.active, b.shear_force_n, b.bonded,
+     b.pending, b.out);
+  io(sim.walls_, sim.cracks_, sim.pairs_, sim.pair_shear_, sim.pair_out_, sim.wall_contacts_, sim.wall_shear_,
+     sim.wall_out_, sim.incidence_start_, sim.incidence_, sim.x_ref_, sim.y_ref_, sim.wall_ref_, sim.fixed_);
+  static_assert(sizeof(bool) == 1, "the flags are one byte each in the state format");
+  io(sim.need_rebuild_, sim.need_breaks_, sim.initialised_, sim.dt_fixed_);
+  io(sim.dt_, sim.time_, sim.skin_, sim.speed_limit_, sim.steps_);
+}
+
 std::string Simulation::serialize() const {
-  using namespace serial;
   std::string out(kStateMagic);
-  put_raw(out, material_.density_kg_per_m3);
-  put_raw(out, material_.contact);
-  put_raw(out, material_.joint);
-  put_raw(out, material_.local_damping);
-  put_str(out, material_.name);
-  put_raw(out, opt_);
-  put_vec(out, types_);
-  for (const auto* v : {&p_.x, &p_.y, &p_.vx, &p_.vy, &p_.theta, &p_.omega, &p_.fx, &p_.fy, &p_.torque, &p_.radius,
-                        &p_.inv_mass, &p_.inv_inertia})
-    put_vec(out, *v);
-  put_vec(out, p_.type);
-  put_vec(out, p_.group);
-  put_raw(out, b_.stride);
-  put_vec(out, b_.i);
-  put_vec(out, b_.j);
-  put_vec(out, b_.ref_distance_m);
-  put_vec(out, b_.ref_rotation_rad);
-  put_vec(out, b_.geometry);
-  put_vec(out, b_.active);
-  put_vec(out, b_.shear_force_n);
-  put_vec(out, b_.bonded);
-  put_vec(out, b_.pending);
-  put_vec(out, b_.out);
-  put_vec(out, walls_);
-  put_vec(out, cracks_);
-  put_vec(out, pairs_);
-  put_vec(out, pair_shear_);
-  put_vec(out, pair_out_);
-  put_vec(out, wall_contacts_);
-  put_vec(out, wall_shear_);
-  put_vec(out, wall_out_);
-  put_vec(out, incidence_start_);
-  put_vec(out, incidence_);
-  put_vec(out, x_ref_);
-  put_vec(out, y_ref_);
-  put_vec(out, wall_ref_);
-  put_vec(out, fixed_);
-  for (bool flag : {need_rebuild_, need_breaks_, initialised_, dt_fixed_}) put_raw(out, static_cast<std::uint8_t>(flag));
-  for (double v : {dt_, time_, skin_, speed_limit_}) put_raw(out, v);
-  put_raw(out, steps_);
+  serial::Out io{out};
+  io(material_.density_kg_per_m3, material_.contact, material_.joint, material_.local_damping, material_.name, opt_);
+  state_fields(*this, io);
   return out;
 }
 
 Simulation Simulation::deserialize(std::string_view bytes) {
   if (bytes.substr(0, kStateMagic.size()) != kStateMagic) throw ModelError("dem", "not a kerf-dem engine state");
-  serial::In r{bytes, kStateMagic.size()};
+  serial::In io{bytes, kStateMagic.size()};
   Material m;
-  r.raw(m.density_kg_per_m3);
-  r.raw(m.contact);
-  r.raw(m.joint);
-  r.raw(m.local_damping);
-  r.str(m.name);
   SimulationOptions opt;
-  r.raw(opt);
+  io(m.density_kg_per_m3, m.contact, m.joint, m.local_damping, m.name, opt);
   Simulation sim(m, opt);
-  r.vec(sim.types_);
-  auto& p = sim.p_;
-  for (auto* v : {&p.x, &p.y, &p.vx, &p.vy, &p.theta, &p.omega, &p.fx, &p.fy, &p.torque, &p.radius, &p.inv_mass, &p.inv_inertia})
-    r.vec(*v);
-  r.vec(p.type);
-  r.vec(p.group);
-  auto& b = sim.b_;
-  r.raw(b.stride);
-  r.vec(b.i);
-  r.vec(b.j);
-  r.vec(b.ref_distance_m);
-  r.vec(b.ref_rotation_rad);
-  r.vec(b.geometry);
-  r.vec(b.active);
-  r.vec(b.shear_force_n);
-  r.vec(b.bonded);
-  r.vec(b.pending);
-  r.vec(b.out);
-  r.vec(sim.walls_);
-  r.vec(sim.cracks_);
-  r.vec(sim.pairs_);
-  r.vec(sim.pair_shear_);
-  r.vec(sim.pair_out_);
-  r.vec(sim.wall_contacts_);
-  r.vec(sim.wall_shear_);
-  r.vec(sim.wall_out_);
-  r.vec(sim.incidence_start_);
-  r.vec(sim.incidence_);
-  r.vec(sim.x_ref_);
-  r.vec(sim.y_ref_);
-  r.vec(sim.wall_ref_);
-  r.vec(sim.fixed_);
-  std::uint8_t flags[4];
-  for (auto& f : flags) r.raw(f);
-  sim.need_rebuild_ = flags[0], sim.need_breaks_ = flags[1], sim.initialised_ = flags[2], sim.dt_fixed_ = flags[3];
-  for (double* v : {&sim.dt_, &sim.time_, &sim.skin_, &sim.speed_limit_}) r.raw(*v);
-  r.raw(sim.steps_);
-  if (r.at != bytes.size()) throw ModelError("dem", "engine state has trailing bytes");
+  state_fields(sim, io);
+  io.expect_end("engine state");
   return sim;
 }
 

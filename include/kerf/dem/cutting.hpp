@@ -153,6 +153,9 @@ class CutRun {
   double t0_ = 0;
   bool finished_ = false;
   void finish();
+  /// The checkpoint's fields before the engine state, in order: io(field...) writes or reads them.
+  template <class Self, class Io>
+  static void state_fields(Self& run, Io& io);
 };
 
 /// "tool_travel_mm,time_s,main_force_N,thrust_force_N".

@@ -76,6 +76,9 @@ class LabTestRun {
   int n_tension_ = 0, n_shear_ = 0;
   bool finished_ = false;
   double side_distance() const;
+  /// The checkpoint's fields before the engine state, in order: io(field...) writes or reads them.
+  template <class Self, class Io>
+  static void state_fields(Self& run, Io& io);
 };
 
 /// Runs one test on a copy of the specimen. `on_sample(sim, sample)` is called after every sample (for

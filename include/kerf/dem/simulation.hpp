@@ -169,6 +169,9 @@ class Simulation {
   void apply_breaks();
   void check_stability() const;
   double mass_of(double radius_m, std::uint8_t type) const;
+  /// The state after the material and options, in checkpoint order: io(field...) writes or reads them.
+  template <class Self, class Io>
+  static void state_fields(Self& sim, Io& io);
 
   Material material_;
   SimulationOptions opt_;
