@@ -47,8 +47,9 @@ struct Scene {
   SpecimenSpec specimen;
   LoadingSpec loading;
   CutParams cut;
-  double time_step_safety = 0.8;
-  int min_parallel_items = 1024;
+  // The engine's own defaults (SimulationOptions), not copies of them.
+  double time_step_safety = SimulationOptions{}.time_step_safety;
+  int min_parallel_items = static_cast<int>(SimulationOptions{}.min_parallel_items);
   int frame_every_samples = 100;
   CalibrationSpec calibration;
   std::string calibrated_name = "calibrated";
@@ -107,8 +108,8 @@ Scene read_scene(const Json& doc, const fs::path& scene_dir) {
     spec->finish();
   }
   if (auto engine = root.find_object("engine")) {
-    s.time_step_safety = engine->get_number_or("time_step_safety", 0.8, Range{0.0, 1.0, true, false}, "");
-    s.min_parallel_items = engine->get_int_or("min_parallel_items", 1024, 0, 1 << 30);
+    s.time_step_safety = engine->get_number_or("time_step_safety", s.time_step_safety, Range{0.0, 1.0, true, false}, "");
+    s.min_parallel_items = engine->get_int_or("min_parallel_items", s.min_parallel_items, 0, 1 << 30);
     engine->finish();
   }
   if (s.kind == "tension" || s.kind == "compression") {
