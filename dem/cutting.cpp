@@ -352,6 +352,7 @@ bool CutRun::advance() {
 void CutRun::finish() {
   finished_ = true;
   steady_statistics(res_, params_.entry_fraction * params_.length_m);
+  res_.travel_windows = travel_window_means(res_.samples, params_.length_m, params_.window_m);
   res_.cracks = count_cut_cracks(sim_.cracks(), res_.y_cut_m);
 }
 

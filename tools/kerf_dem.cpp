@@ -479,7 +479,7 @@ Json continue_cut(const Scene& scene, const Json& doc, Json summary, const fs::p
                             {"cut_line_y_mm", units::m_to_mm(res.y_cut_m)},
                             {"particles_removed_by_grooves", res.n_removed_by_grooves}};
   Json windows = Json::array();
-  for (const auto& w : travel_window_means(res.samples, scene.cut.length_m, scene.cut.window_m))
+  for (const auto& w : res.travel_windows)
     // Window ends to 1 pm, so that 3 x 0.1 mm reads 0.3, not 0.30000000000000004.
     windows.push_back({{"from_travel_mm", std::round(units::m_to_mm(w.from_m) * 1e9) / 1e9},
                        {"to_travel_mm", std::round(units::m_to_mm(w.to_m) * 1e9) / 1e9},

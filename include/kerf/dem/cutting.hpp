@@ -41,7 +41,7 @@ struct CutParams {
   /// Part of the travel excluded from the mean forces (the entry), as a fraction of the travel.
   double entry_fraction = 0.25;
   int sample_every_steps = 50;
-  /// Report only: the summary's mean forces per stretch of travel of this length (the steadiness check).
+  /// Report only: CutResult::travel_windows, mean forces per stretch of travel of this length (steadiness).
   double window_m = 0.1e-3;
 };
 
@@ -93,10 +93,18 @@ inline bool is_chip_crack(double y_m, double y_cut_m) { return y_m > y_cut_m; }
 inline const char* crack_place(double y_m, double y_cut_m) { return is_chip_crack(y_m, y_cut_m) ? "chip" : "subsurface"; }
 CutCrackCounts count_cut_cracks(const std::vector<CrackEvent>& cracks, double y_cut_m);
 
+/// The mean forces over one stretch of the tool's travel, [from, to).
+struct TravelWindow {
+  double from_m = 0, to_m = 0;
+  double main_force_n = 0, thrust_force_n = 0;
+  int n_samples = 0;
+};
+
 struct CutResult {
   std::vector<CutSample> samples;
   double main_force_n = 0, thrust_force_n = 0, main_force_std_n = 0, thrust_force_std_n = 0;  ///< steady part
   int n_steady_samples = 0;
+  std::vector<TravelWindow> travel_windows;  ///< mean forces per params.window_m of travel (once finished)
   CutCrackCounts cracks;
   double y_top_m = 0, y_cut_m = 0, width_m = 0;  ///< width = out-of-plane thickness
   std::array<double, 4> workpiece_box_m{};       ///< x_min, x_max, y_min, y_max before the cut
@@ -113,12 +121,6 @@ inline std::array<double, 2> tool_force_components(double fx_on_tool_n, double f
 /// Mean and (population) standard deviation of main and thrust forces over samples with travel >= from.
 void steady_statistics(CutResult& result, double from_travel_m);
 
-/// The mean forces over one stretch of the tool's travel, [from, to).
-struct TravelWindow {
-  double from_m = 0, to_m = 0;
-  double main_force_n = 0, thrust_force_n = 0;
-  int n_samples = 0;
-};
 
 /// The travel [0, length] cut into consecutive windows of `window_m` (the last one shorter when the length
 /// is not a multiple of it, and holding every sample at or beyond `length`), with the mean forces in each.
