@@ -10,6 +10,8 @@
 //   FlatJointParams p = FlatJointParams::validated(raw, "material");
 //   FlatJointGeometry geo = flat_joint_geometry(p, r1, r2, thickness_m);
 //   FlatJointResult res = flat_joint_update(p, geo, {gap_m, rotation_rad, shear_increment_m}, shear, bonded, breaks);
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -69,9 +71,69 @@ enum class BreakMode : std::uint8_t { none = 0, tension = 1, shear = 2 };
 /// F_n,e = k_n t int_e min(g(xi), 0) dxi, with Coulomb friction |F_s,e| <= mu |F_n,e|.
 /// `breaks[e]` is set for elements over strength; the caller applies them after the whole force loop
 /// (physics-dem.md section 1), so this function never changes `bonded`.
-FlatJointResult flat_joint_update(const FlatJointParams& p, const FlatJointGeometry& geo, const FlatJointKinematics& kin,
-                                  std::span<double> shear_force_n, std::span<const std::uint8_t> bonded,
-                                  std::span<BreakMode> breaks);
+/// Defined in the header so that the engine's joint loop inlines it: a cut runs 15 % faster than with the call
+/// (same results to the bit; docs/performance.md).
+inline FlatJointResult flat_joint_update(const FlatJointParams& p, const FlatJointGeometry& geo,
+                                         const FlatJointKinematics& kin, std::span<double> shear_force_n,
+                                         std::span<const std::uint8_t> bonded, std::span<BreakMode> breaks) {
+  const int nr = p.n_elements;
+  const double le = 2.0 * geo.half_length_m / nr;
+  const double area = le * geo.thickness_m;
+  const double kn_t = geo.normal_stiffness * geo.thickness_m;  // force per gap per interface length
+  const double ks_area = geo.shear_stiffness * area;
+  const double theta = kin.rotation_rad;
+  const double tan_phi = p.tan_friction_angle;
+  FlatJointResult r;
+  for (int e = 0; e < nr; ++e) {
+    const double a = -geo.half_length_m + e * le;
+    const double xi_e = a + 0.5 * le;
+    double fn, me;
+    double fs = shear_force_n[e] - ks_area * kin.shear_increment_m;  // incremental shear
+    breaks[e] = BreakMode::none;
+    if (bonded[e]) {
+      // Bonded: the whole element is a linear spring, tension or compression.
+      fn = kn_t * le * (kin.gap_m - theta * xi_e);
+      me = -kn_t * theta * le * le * le / 12.0;
+      const double sigma = fn / area;
+      const double tau = std::abs(fs) / area;
+      if (sigma > p.tensile_strength_pa) {
+        breaks[e] = BreakMode::tension;
+        ++r.n_breaking;
+      } else if (tau >= p.cohesion_pa - sigma * tan_phi) {
+        breaks[e] = BreakMode::shear;
+        ++r.n_breaking;
+      }
+    } else {
+      // Unbonded: only the closed part of g(xi) = g_s - theta xi carries load (cut at the zero of g).
+      const double b = a + le;
+      const double ga = kin.gap_m - theta * a, gb = kin.gap_m - theta * b;
+      double c = a, d = b;
+      if (ga >= 0 && gb >= 0) {
+        c = d = a;
+      } else if (ga < 0 && gb > 0) {
+        d = kin.gap_m / theta;
+      } else if (ga > 0 && gb < 0) {
+        c = kin.gap_m / theta;
+      }
+      if (d > c) {
+        const double gc = kin.gap_m - theta * c, gd = kin.gap_m - theta * d;
+        const double integral = 0.5 * (gc + gd) * (d - c);  // int min(g, 0) dxi (<= 0)
+        const double m = 0.5 * (c + d);
+        fn = kn_t * integral;
+        me = kn_t * (integral * (m - xi_e) - theta * (d - c) * (d - c) * (d - c) / 12.0);
+        const double limit = p.friction_coefficient * std::abs(fn);
+        fs = std::clamp(fs, -limit, limit);  // Coulomb sliding
+      } else {
+        fn = me = fs = 0.0;  // open: no contact, no friction
+      }
+    }
+    shear_force_n[e] = fs;
+    r.normal_force_n += fn;
+    r.shear_force_n += fs;
+    r.moment_nm += fn * xi_e + me;
+  }
+  return r;
+}
 
 /// Elastic energy stored in the bonded elements (normal, bending and shear springs), for energy checks.
 double flat_joint_bonded_energy(const FlatJointParams& p, const FlatJointGeometry& geo, const FlatJointKinematics& kin,
