@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# bench_dem_cut_fidelity --scene: packing seed k of the benchmark is kerf-dem's replicate k of the same
+# scene (same workpiece, same cut, same forces), and a results directory of one base case refuses another.
+# Usage: dem_cut_fidelity_scene.sh <bench_dem_cut_fidelity> <kerf-dem> <source dir>
+set -uo pipefail
+bench="$1" dem="$2" src="$3"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+export KERF_DATA_DIR="$src/data"
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+cat >"$work/small.json" <<'JSON'
+{
+  "kind": "cut",
+  "description": "a small cut for the test",
+  "material": {"base": "soda_lime_glass_fj"},
+  "specimen": {"width_mm": 0.4, "height_mm": 0.25, "radius_min_um": 10, "radius_max_um": 13, "seed": 1,
+               "growth_steps": 2000, "relax_steps": 500},
+  "cut": {"depth_of_cut_mm": 0.05, "speed_m_per_s": 2, "length_mm": 0.05},
+  "tool": {"rake_deg": -15, "clearance_deg": 15},
+  "output": {"frame_every_samples": 0}
+}
+JSON
+"$dem" run "$work/small.json" --threads 1 --out "$work/dem" >/dev/null 2>"$work/err" || fail "kerf-dem: $(cat "$work/err")"
+"$bench" --scene "$work/small.json" --knob speed --speeds 2 --replicates 1 --threads 1 --out-dir "$work/b" \
+  >/dev/null 2>"$work/err" || fail "bench: $(cat "$work/err")"
+dem_main=$(sed -n '/^  "results": {/,/^  }/p' "$work/dem/summary.json" | grep -o '"main_force_N": [-0-9.e+]*' | head -1 | awk '{print $2}')
+col=$(head -1 "$work/b/runs.csv" | tr ',' '\n' | grep -nx main_force_N | cut -d: -f1)
+bench_main=$(sed -n 2p "$work/b/runs.csv" | cut -d, -f"$col")
+[ -n "$dem_main" ] && [ -n "$bench_main" ] || fail "no main force (kerf-dem '$dem_main', bench '$bench_main')"
+awk -v a="$dem_main" -v b="$bench_main" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(a > 0 && d <= 1e-12 * a) }' ||
+  fail "bench seed 1 main force $bench_main N differs from kerf-dem's $dem_main N"
+grep -qxF "$work/small.json" "$work/b/base_case.txt" || fail "base_case.txt does not name the scene"
+
+# The same directory with the built-in base case: refused, exit 2, nothing run.
+"$bench" --knob speed --speeds 2 --replicates 1 --threads 1 --out-dir "$work/b" >/dev/null 2>"$work/err"
+rc=$?
+[ $rc -eq 2 ] || fail "exit $rc (expected 2) for another base case in the same directory"
+grep -qF "another base case" "$work/err" || fail "stderr lacks the reason: $(cat "$work/err")"
+[ "$(wc -l <"$work/b/runs.csv")" -eq 2 ] || fail "the refused run changed runs.csv"
+exit 0
