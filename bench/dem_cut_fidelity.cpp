@@ -242,7 +242,7 @@ int main(int argc, char** argv) {
                  "default: the built-in case of docs/performance.md")
       ->check(CLI::ExistingFile);
   app.add_option("--speeds", speeds, "tool speeds, m/s")->check(CLI::PositiveNumber);
-  app.add_option("--radius-scales", radius_scales, "radius scales (1: radii 10-13 um)")->check(CLI::PositiveNumber);
+  app.add_option("--radius-scales", radius_scales, "radius scales (1: the base case's radii)")->check(CLI::PositiveNumber);
   app.add_option("--dampings", dampings, "local damping values")->check(CLI::Range(0.0, 0.99));
   app.add_option("--base-speed", base.speed_m_per_s, "tool speed of the radius and damping studies, m/s")
       ->check(CLI::PositiveNumber);
