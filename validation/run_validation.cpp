@@ -1,5 +1,5 @@
 // Regenerates validation reports end to end: run_validation CASE|all OUT_DIR (all: OUT_DIR/<case>/ each).
-// Cases: k9_trepanning (seconds), soda_lime_cutting (kerf-dem runs: about half an hour on 2 cores).
+// Cases: k9_trepanning (seconds), soda_lime_cutting (kerf-dem runs: 18 cuts, about an hour on 2 cores).
 // Exit status 0 when the acceptance bands hold, 1 when they do not, 2 for input errors.
 #include <fmt/format.h>
 
