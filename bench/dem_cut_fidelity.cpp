@@ -96,9 +96,9 @@ struct BaseCase {
   Material material;
   SpecimenSpec spec;
   CutParams cut;
-  /// Set after genesis, as kerf-dem does for a scene (its engine.time_step_safety or the default); the
-  /// built-in case keeps the genesis step, as when its figures were measured.
-  std::optional<double> time_step_safety;
+  /// Applied after genesis, as kerf-dem does for a scene; the built-in case keeps the genesis settings, as
+  /// when its figures were measured.
+  std::optional<EngineSettings> engine;
 };
 
 /// The published study's case (docs/performance.md): the bundled dem_cut.json workpiece, 1 mm x 0.5 mm,
@@ -132,12 +132,7 @@ BaseCase scene_base(const std::string& path) {
   ObjectReader spec = root.get_object("specimen");
   b.spec = read_specimen_spec(spec);
   spec.finish();
-  b.time_step_safety = SimulationOptions{}.time_step_safety;
-  if (auto engine = root.find_object("engine")) {
-    b.time_step_safety = engine->get_number_or("time_step_safety", *b.time_step_safety, Range{0.0, 1.0, true, false}, "");
-    engine->ignore("min_parallel_items");  // threads only: the results do not depend on it
-    engine->finish();
-  }
+  b.engine = read_engine_settings(root);
   b.cut = read_cut_params(root);
   root.finish();
   return b;
@@ -154,8 +149,7 @@ Run run_case(const BaseCase& base_case, const Case& c, const CutSettings& base) 
   cut.speed_m_per_s = settings.speed_m_per_s;
   SpecimenReport report;
   Simulation specimen = make_specimen(m, spec, report);
-  // As kerf-dem does for a scene: the step is recomputed with the engine's safety factor after genesis.
-  if (base_case.time_step_safety) specimen.set_time_step_safety(*base_case.time_step_safety);
+  if (base_case.engine) base_case.engine->apply_to(specimen);
   const double start = bench::thread_cpu_seconds();
   CutRun cutting(specimen, cut);
   while (cutting.advance()) {

@@ -368,7 +368,6 @@ void CutRun::state_fields(Self& run, Io& io) {
      p.groove_pitch_m, p.groove_width_m, p.groove_bottom_width_m, p.entry_fraction, p.window_m);
   io(p.edge_segments, p.sample_every_steps, p.groove_shape, r.samples);
   io(r.y_top_m, r.y_cut_m, r.width_m, r.time_step_s, r.wall_time_s, run.t0_, r.workpiece_box_m);
-  static_assert(sizeof(std::size_t) == sizeof(std::uint64_t), "counts are 8 bytes in the checkpoint format");
   io(r.n_particles, r.n_removed_by_grooves, r.steps, run.first_tool_wall_, run.n_tool_walls_, run.finished_);
 }
 

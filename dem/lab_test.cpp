@@ -135,7 +135,6 @@ void LabTestRun::state_fields(Self& run, Io& io) {
      spec.quasi_static_check, r.curve);
   io(r.peak_stress_pa, r.strain_at_peak, r.width_m, r.height_m, r.speed_m_per_s, r.time_step_s, r.wall_time_s,
      run.side0_, run.t0_);
-  static_assert(sizeof(std::size_t) == sizeof(std::uint64_t), "counts are 8 bytes in the checkpoint format");
   io(r.steps, r.n_particles, r.stop_reason, run.left_, run.right_, run.counted_, run.n_tension_, run.n_shear_,
      run.finished_);
 }

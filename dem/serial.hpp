@@ -13,6 +13,10 @@
 
 namespace kerf::dem::serial {
 
+// The formats write counts (std::size_t) as 8 bytes and flags (bool) as 1 byte, as earlier builds did.
+static_assert(sizeof(std::size_t) == sizeof(std::uint64_t), "counts are 8 bytes in the checkpoint formats");
+static_assert(sizeof(bool) == 1, "flags are one byte each in the checkpoint formats");
+
 template <class T>
 void put_raw(std::string& out, const T& v) {
   static_assert(std::is_trivially_copyable_v<T>);

@@ -558,7 +558,6 @@ void Simulation::state_fields(Self& sim, Io& io) {
      b.pending, b.out);
   io(sim.walls_, sim.cracks_, sim.pairs_, sim.pair_shear_, sim.pair_out_, sim.wall_contacts_, sim.wall_shear_,
      sim.wall_out_, sim.incidence_start_, sim.incidence_, sim.x_ref_, sim.y_ref_, sim.wall_ref_, sim.fixed_);
-  static_assert(sizeof(bool) == 1, "the flags are one byte each in the state format");
   io(sim.need_rebuild_, sim.need_breaks_, sim.initialised_, sim.dt_fixed_);
   io(sim.dt_, sim.time_, sim.skin_, sim.speed_limit_, sim.steps_);
 }

@@ -42,6 +42,22 @@ SpecimenSpec read_specimen_spec(ObjectReader& r) {
   return s;
 }
 
+void EngineSettings::apply_to(Simulation& sim) const {
+  sim.set_time_step_safety(time_step_safety);
+  sim.set_min_parallel_items(min_parallel_items);
+}
+
+EngineSettings read_engine_settings(ObjectReader& scene_root) {
+  EngineSettings e;
+  if (auto engine = scene_root.find_object("engine")) {
+    e.time_step_safety = engine->get_number_or("time_step_safety", e.time_step_safety, Range{0.0, 1.0, true, false}, "");
+    e.min_parallel_items =
+        engine->get_int_or("min_parallel_items", static_cast<int>(e.min_parallel_items), 0, 1 << 30);
+    engine->finish();
+  }
+  return e;
+}
+
 Json specimen_spec_to_json(const SpecimenSpec& s) {
   using namespace units;
   return Json{{"width_mm", m_to_mm(s.width_m)},

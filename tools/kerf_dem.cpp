@@ -47,9 +47,7 @@ struct Scene {
   SpecimenSpec specimen;
   LoadingSpec loading;
   CutParams cut;
-  // The engine's own defaults (SimulationOptions), not copies of them.
-  double time_step_safety = SimulationOptions{}.time_step_safety;
-  int min_parallel_items = static_cast<int>(SimulationOptions{}.min_parallel_items);
+  EngineSettings engine;
   int frame_every_samples = 100;
   CalibrationSpec calibration;
   std::string calibrated_name = "calibrated";
@@ -107,11 +105,7 @@ Scene read_scene(const Json& doc, const fs::path& scene_dir) {
     }
     spec->finish();
   }
-  if (auto engine = root.find_object("engine")) {
-    s.time_step_safety = engine->get_number_or("time_step_safety", s.time_step_safety, Range{0.0, 1.0, true, false}, "");
-    s.min_parallel_items = engine->get_int_or("min_parallel_items", s.min_parallel_items, 0, 1 << 30);
-    engine->finish();
-  }
+  s.engine = read_engine_settings(root);
   if (s.kind == "tension" || s.kind == "compression") {
     if (auto loading = root.find_object("loading")) {
       s.loading = read_loading_spec(*loading, s.kind);
@@ -201,8 +195,7 @@ Simulation obtain_specimen(const Scene& scene, SpecimenSpec& spec, SpecimenRepor
     }));
     if (progress) progress->finish();
   }
-  sim->set_time_step_safety(scene.time_step_safety);
-  sim->set_min_parallel_items(scene.min_parallel_items);
+  scene.engine.apply_to(*sim);
   wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return std::move(*sim);
 }

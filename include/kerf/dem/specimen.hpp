@@ -37,6 +37,18 @@ struct SpecimenSpec {
 SpecimenSpec read_specimen_spec(ObjectReader& reader);
 Json specimen_spec_to_json(const SpecimenSpec& spec);
 
+/// A scene's "engine" object: settings applied to a specimen once it is built (the genesis runs with its own).
+/// Defaults are the engine's (SimulationOptions).
+struct EngineSettings {
+  double time_step_safety = SimulationOptions{}.time_step_safety;
+  std::int64_t min_parallel_items = SimulationOptions{}.min_parallel_items;
+  /// Sets both on `sim`; the time step is recomputed with the safety factor.
+  void apply_to(Simulation& sim) const;
+};
+
+/// Reads the optional "engine" object of a scene (time_step_safety, min_parallel_items) and rejects other keys.
+EngineSettings read_engine_settings(ObjectReader& scene_root);
+
 struct SpecimenReport {
   int n_particles = 0, n_bonds = 0, n_floaters_enlarged = 0, n_floaters_left = 0;
   double packing_fraction = 0, coordination_number = 0, radius_scale = 1;
