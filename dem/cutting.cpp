@@ -380,11 +380,7 @@ std::string CutRun::serialize() const {
 }
 
 CutRun CutRun::deserialize(std::string_view bytes) {
-  if (bytes.substr(0, 7) == "KERFCUT" && bytes.substr(0, 8) != kCutMagic)
-    throw ModelError("dem", "a cut checkpoint of another kerf-dem version (" + std::string(bytes.substr(0, 8)) +
-                                ", this one reads " + std::string(kCutMagic) + "): run the cut again");
-  if (bytes.substr(0, 8) != kCutMagic) throw ModelError("dem", "not a kerf-dem cut checkpoint");
-  serial::In io{bytes, kCutMagic.size()};
+  serial::In io = serial::open_tagged(bytes, kCutMagic, "cut checkpoint");
   CutRun run;
   state_fields(run, io);
   std::string state;

@@ -148,8 +148,7 @@ std::string LabTestRun::serialize() const {
 }
 
 LabTestRun LabTestRun::deserialize(std::string_view bytes) {
-  if (bytes.substr(0, kLabMagic.size()) != kLabMagic) throw ModelError("dem", "not a kerf-dem test checkpoint");
-  serial::In io{bytes, kLabMagic.size()};
+  serial::In io = serial::open_tagged(bytes, kLabMagic, "test checkpoint");
   LabTestRun run;
   state_fields(run, io);
   std::string state;

@@ -105,4 +105,16 @@ struct In {
   }
 };
 
+/// Checks the format tag at the start of `bytes` (a name and a version digit, like "KERFCUT2") and returns a
+/// reader just after it. A tag of the same name with another version is refused by name, so that a user
+/// knows the file is old rather than foreign; `what` names the file kind in the messages.
+inline In open_tagged(std::string_view bytes, std::string_view tag, const std::string& what) {
+  const std::string_view head = bytes.substr(0, tag.size());
+  if (head.size() == tag.size() && head != tag && head.substr(0, tag.size() - 1) == tag.substr(0, tag.size() - 1))
+    throw ModelError("dem", "a " + what + " of another kerf-dem version (" + std::string(head) + ", this one reads " +
+                                std::string(tag) + "): start the run again");
+  if (head != tag) throw ModelError("dem", "not a kerf-dem " + what);
+  return In{bytes, tag.size()};
+}
+
 }  // namespace kerf::dem::serial

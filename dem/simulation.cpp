@@ -571,8 +571,7 @@ std::string Simulation::serialize() const {
 }
 
 Simulation Simulation::deserialize(std::string_view bytes) {
-  if (bytes.substr(0, kStateMagic.size()) != kStateMagic) throw ModelError("dem", "not a kerf-dem engine state");
-  serial::In io{bytes, kStateMagic.size()};
+  serial::In io = serial::open_tagged(bytes, kStateMagic, "engine state");
   Material m;
   SimulationOptions opt;
   io(m.density_kg_per_m3, m.contact, m.joint, m.local_damping, m.name, opt);
