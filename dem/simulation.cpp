@@ -25,9 +25,12 @@ constexpr std::uint32_t encode(std::size_t index, Kind kind, std::uint32_t role)
 }
 
 /// Cundall's local damping of one force component (physics-dem.md section 1): F (1 - alpha sign(F v)).
+/// Written as one product with a factor chosen without branches (the sign of F v is unpredictable, a branch
+/// mispredicts about half the time); the factors are exactly 1 - alpha, 1 + alpha and 1.
 inline double damp(double force, double velocity, double alpha) {
   const double fv = force * velocity;
-  return fv > 0 ? force * (1 - alpha) : (fv < 0 ? force * (1 + alpha) : force);
+  const double sign = static_cast<double>(fv > 0) - static_cast<double>(fv < 0);
+  return force * (1 - alpha * sign);
 }
 
 /// Closest point of segment (x0, y0)-(x1, y1) to (px, py).
@@ -285,6 +288,21 @@ void Simulation::evaluate_forces_with_increment() {
 }
 
 void Simulation::compute_forces() {
+  ForceCounts counts;
+#pragma omp parallel if (parallel_here())
+  force_loops(counts);
+  finish_forces(counts);
+}
+
+void Simulation::finish_forces(const ForceCounts& counts) {
+  if (counts.n_retired > 0) need_rebuild_ = true;
+  if (counts.n_breaking > 0) need_breaks_ = true;
+}
+
+// Called by every thread of a team (or by one thread outside any): orphaned worksharing loops, each contact
+// writing its own slot, then each particle summing its slots in a fixed order, so results are bit-identical
+// for any number of threads. Ends with a barrier (the gather).
+void Simulation::force_loops(ForceCounts& counts) {
   const double dt = dt_, t = opt_.thickness_m;
   const FlatJointParams& fj = material_.joint;
   const LinearContactParams& lc = material_.contact;
@@ -299,7 +317,8 @@ void Simulation::compute_forces() {
   const double* th = p_.theta.data();
   const double* rad = p_.radius.data();
 
-#pragma omp parallel for schedule(static) reduction(+ : n_breaking, n_retired) if (nb > opt_.min_parallel_items)
+  // The joint, pair and wall loops write disjoint slots: no barrier between them.
+#pragma omp for schedule(static) nowait
   for (std::int64_t bb = 0; bb < nb; ++bb) {
     const auto b = static_cast<std::size_t>(bb);
     auto& out = b_.out[b];
@@ -328,20 +347,20 @@ void Simulation::compute_forces() {
            -a1 * r.shear_force_n - r.moment_nm, -a2 * r.shear_force_n + r.moment_nm};
     // A fully broken joint whose interface is open everywhere (g_s - |theta_b| R > 0) and whose disks no
     // longer overlap carries no force under either model: hand the pair over to the unjointed contact.
-    if (r.n_breaking == 0 && surface_gap > 0 && kin.gap_m > std::abs(kin.rotation_rad) * b_.geometry[b].half_length_m) {
-      bool any_bonded = false;
-      for (std::size_t e = e0; e < e0 + us; ++e) any_bonded = any_bonded || b_.bonded[e];
-      if (!any_bonded) {
-        b_.active[b] = 0;
-        out = {0, 0, 0, 0};
-        ++n_retired;
-      }
+    // The predictable test first: almost every joint still has a bonded element, while the sign of the
+    // surface gap is a coin toss (a mispredicted branch per joint).
+    bool any_bonded = false;
+    for (std::size_t e = e0; e < e0 + us; ++e) any_bonded = any_bonded || b_.bonded[e];
+    if (!any_bonded && r.n_breaking == 0 && surface_gap > 0 &&
+        kin.gap_m > std::abs(kin.rotation_rad) * b_.geometry[b].half_length_m) {
+      b_.active[b] = 0;
+      out = {0, 0, 0, 0};
+      ++n_retired;
     }
   }
-  if (n_retired > 0) need_rebuild_ = true;
 
   const auto np = static_cast<std::int64_t>(pairs_.size());
-#pragma omp parallel for schedule(static) if (np > opt_.min_parallel_items)
+#pragma omp for schedule(static) nowait
   for (std::int64_t kk = 0; kk < np; ++kk) {
     const auto k = static_cast<std::size_t>(kk);
     const auto i = static_cast<std::size_t>(pairs_[k].i), j = static_cast<std::size_t>(pairs_[k].j);
@@ -364,7 +383,7 @@ void Simulation::compute_forces() {
   }
 
   const auto nw = static_cast<std::int64_t>(wall_contacts_.size());
-#pragma omp parallel for schedule(static) if (nw > opt_.min_parallel_items)
+#pragma omp for schedule(static)
   for (std::int64_t kk = 0; kk < nw; ++kk) {
     const auto k = static_cast<std::size_t>(kk);
     const Wall& w = walls_[static_cast<std::size_t>(wall_contacts_[k][0])];
@@ -385,16 +404,25 @@ void Simulation::compute_forces() {
     wall_out_[k] = {r.normal_force_n * nx + r.shear_force_n * sx, r.normal_force_n * ny + r.shear_force_n * sy,
                     -a * r.shear_force_n};
   }
-  for (auto& w : walls_) w.fx = w.fy = 0;
-  for (std::size_t k = 0; k < wall_contacts_.size(); ++k) {
-    auto& w = walls_[static_cast<std::size_t>(wall_contacts_[k][0])];
-    w.fx -= wall_out_[k][0];
-    w.fy -= wall_out_[k][1];
+#pragma omp single nowait
+  {
+    for (auto& w : walls_) w.fx = w.fy = 0;
+    for (std::size_t k = 0; k < wall_contacts_.size(); ++k) {
+      auto& w = walls_[static_cast<std::size_t>(wall_contacts_[k][0])];
+      w.fx -= wall_out_[k][0];
+      w.fy -= wall_out_[k][1];
+    }
+  }
+  if (n_breaking > 0 || n_retired > 0) {
+#pragma omp atomic
+    counts.n_breaking += n_breaking;
+#pragma omp atomic
+    counts.n_retired += n_retired;
   }
 
   // Gather: each particle sums its own entries in a fixed order (deterministic for any thread count).
   const auto n = static_cast<std::int64_t>(p_.size());
-#pragma omp parallel for schedule(static) if (n > opt_.min_parallel_items)
+#pragma omp for schedule(static)
   for (std::int64_t ii = 0; ii < n; ++ii) {
     const auto u = static_cast<std::size_t>(ii);
     double fx = 0, fy = 0, tq = 0;
@@ -408,17 +436,15 @@ void Simulation::compute_forces() {
         continue;
       }
       const auto& o = kind == kBond ? b_.out[idx] : pair_out_[idx];
-      if (role == 0) {
-        fx -= o[0], fy -= o[1], tq += o[2];
-      } else {
-        fx += o[0], fy += o[1], tq += o[3];
-      }
+      // Disk 1 (role 0) gets minus the force on disk 2, and its own moment: sign and index without a
+      // branch (roles alternate unpredictably); adding -f is the same to the bit as subtracting f.
+      const double sign = role == 0 ? -1.0 : 1.0;
+      fx += sign * o[0], fy += sign * o[1], tq += o[2 + role];
     }
     p_.fx[u] = fx;
     p_.fy[u] = fy;
     p_.torque[u] = tq;
   }
-  if (n_breaking > 0) need_breaks_ = true;
 }
 
 void Simulation::apply_breaks() {
@@ -475,45 +501,62 @@ void Simulation::step() {
   const double dt = dt_, half = 0.5 * dt, alpha = material_.local_damping;
   const auto n = static_cast<std::int64_t>(p_.size());
   double max_move2 = 0;
-#pragma omp parallel for schedule(static) reduction(max : max_move2) if (n > opt_.min_parallel_items)
-  for (std::int64_t ii = 0; ii < n; ++ii) {
-    const auto u = static_cast<std::size_t>(ii);
-    if (p_.group[u] == 0) {  // first half kick with the (damped) force of the last evaluation
-      p_.vx[u] += half * p_.fx[u] * p_.inv_mass[u];
-      p_.vy[u] += half * p_.fy[u] * p_.inv_mass[u];
-      p_.omega[u] += half * p_.torque[u] * p_.inv_inertia[u];
+  ForceCounts counts;
+  // One team for the whole step (not one per loop): the serial pieces run in `single` blocks and the
+  // threads meet at barriers only where a loop reads what the previous one wrote.
+#pragma omp parallel if (parallel_here())
+  {
+    double my_max_move2 = 0;
+#pragma omp for schedule(static) nowait
+    for (std::int64_t ii = 0; ii < n; ++ii) {
+      const auto u = static_cast<std::size_t>(ii);
+      if (p_.group[u] == 0) {  // first half kick with the (damped) force of the last evaluation
+        p_.vx[u] += half * p_.fx[u] * p_.inv_mass[u];
+        p_.vy[u] += half * p_.fy[u] * p_.inv_mass[u];
+        p_.omega[u] += half * p_.torque[u] * p_.inv_inertia[u];
+      }
+      p_.x[u] += dt * p_.vx[u];
+      p_.y[u] += dt * p_.vy[u];
+      p_.theta[u] += dt * p_.omega[u];
+      const double mx = p_.x[u] - x_ref_[u], my = p_.y[u] - y_ref_[u];
+      my_max_move2 = std::max(my_max_move2, mx * mx + my * my);
     }
-    p_.x[u] += dt * p_.vx[u];
-    p_.y[u] += dt * p_.vy[u];
-    p_.theta[u] += dt * p_.omega[u];
-    const double mx = p_.x[u] - x_ref_[u], my = p_.y[u] - y_ref_[u];
-    max_move2 = std::max(max_move2, mx * mx + my * my);
-  }
-  double wall_move = 0;
-  for (std::size_t w = 0; w < walls_.size(); ++w) {
-    auto& wl = walls_[w];
-    wl.x0 += dt * wl.vx, wl.x1 += dt * wl.vx, wl.y0 += dt * wl.vy, wl.y1 += dt * wl.vy;
-    if (2 * w + 1 < wall_ref_.size())
-      wall_move = std::max(wall_move, std::hypot(wl.x0 - wall_ref_[2 * w], wl.y0 - wall_ref_[2 * w + 1]));
-  }
-  time_ += dt;
-  const double max_move = std::sqrt(max_move2);
-  if (need_rebuild_ || 2 * max_move > skin_ || max_move + wall_move > skin_ || wall_ref_.size() != 2 * walls_.size())
-    rebuild_neighbours();
-  compute_forces();
-  apply_breaks();
-#pragma omp parallel for schedule(static) if (n > opt_.min_parallel_items)
-  for (std::int64_t ii = 0; ii < n; ++ii) {
-    const auto u = static_cast<std::size_t>(ii);
-    if (p_.group[u] != 0) continue;  // prescribed velocity: forces kept raw for the reaction
-    // Damp against the predicted end-of-step velocity, then the second half kick.
-    const double fx = damp(p_.fx[u], p_.vx[u] + half * p_.fx[u] * p_.inv_mass[u], alpha);
-    const double fy = damp(p_.fy[u], p_.vy[u] + half * p_.fy[u] * p_.inv_mass[u], alpha);
-    const double tq = damp(p_.torque[u], p_.omega[u] + half * p_.torque[u] * p_.inv_inertia[u], alpha);
-    p_.fx[u] = fx, p_.fy[u] = fy, p_.torque[u] = tq;
-    p_.vx[u] += half * fx * p_.inv_mass[u];
-    p_.vy[u] += half * fy * p_.inv_mass[u];
-    p_.omega[u] += half * tq * p_.inv_inertia[u];
+#pragma omp critical(kerf_dem_max_move)
+    max_move2 = std::max(max_move2, my_max_move2);  // a maximum: the same for any order
+#pragma omp barrier
+#pragma omp single
+    {
+      double wall_move = 0;
+      for (std::size_t w = 0; w < walls_.size(); ++w) {
+        auto& wl = walls_[w];
+        wl.x0 += dt * wl.vx, wl.x1 += dt * wl.vx, wl.y0 += dt * wl.vy, wl.y1 += dt * wl.vy;
+        if (2 * w + 1 < wall_ref_.size())
+          wall_move = std::max(wall_move, std::hypot(wl.x0 - wall_ref_[2 * w], wl.y0 - wall_ref_[2 * w + 1]));
+      }
+      time_ += dt;
+      const double max_move = std::sqrt(max_move2);
+      if (need_rebuild_ || 2 * max_move > skin_ || max_move + wall_move > skin_ || wall_ref_.size() != 2 * walls_.size())
+        rebuild_neighbours();
+    }
+    force_loops(counts);
+#pragma omp single nowait
+    {
+      finish_forces(counts);
+      apply_breaks();  // joints only: the kick below does not read them
+    }
+#pragma omp for schedule(static)
+    for (std::int64_t ii = 0; ii < n; ++ii) {
+      const auto u = static_cast<std::size_t>(ii);
+      if (p_.group[u] != 0) continue;  // prescribed velocity: forces kept raw for the reaction
+      // Damp against the predicted end-of-step velocity, then the second half kick.
+      const double fx = damp(p_.fx[u], p_.vx[u] + half * p_.fx[u] * p_.inv_mass[u], alpha);
+      const double fy = damp(p_.fy[u], p_.vy[u] + half * p_.fy[u] * p_.inv_mass[u], alpha);
+      const double tq = damp(p_.torque[u], p_.omega[u] + half * p_.torque[u] * p_.inv_inertia[u], alpha);
+      p_.fx[u] = fx, p_.fy[u] = fy, p_.torque[u] = tq;
+      p_.vx[u] += half * fx * p_.inv_mass[u];
+      p_.vy[u] += half * fy * p_.inv_mass[u];
+      p_.omega[u] += half * tq * p_.inv_inertia[u];
+    }
   }
   ++steps_;
   if (opt_.check_every > 0 && steps_ % opt_.check_every == 0) check_stability();

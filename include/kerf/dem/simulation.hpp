@@ -79,8 +79,8 @@ struct SimulationOptions {
   double time_step_safety = 0.8;   ///< f_safety in dt = f min(sqrt(m/k), sqrt(I/k_rot))
   double speed_limit_m_per_s = 0;  ///< runaway detection; 0: the p-wave speed sqrt(E*/rho)
   int check_every = 50;            ///< steps between instability checks
-  /// Loops shorter than this run on one thread (fork/join costs more than it saves on small systems).
-  /// Results do not depend on it: every sum is taken in a fixed order.
+  /// Systems with fewer particles and fewer joints than this run on one thread (a team costs more than it
+  /// saves on small systems). Results do not depend on it: every sum is taken in a fixed order.
   std::int64_t min_parallel_items = 1024;
 };
 
@@ -165,7 +165,18 @@ class Simulation {
 
  private:
   void rebuild_neighbours();
+  /// Breaks found and joints retired by one force evaluation (summed over threads).
+  struct ForceCounts {
+    int n_breaking = 0, n_retired = 0;
+  };
+  /// A team is worth starting: more particles or joints than options().min_parallel_items.
+  bool parallel_here() const {
+    return static_cast<std::int64_t>(std::max(p_.size(), b_.size())) > opt_.min_parallel_items;
+  }
   void compute_forces();
+  /// The force loops as orphaned worksharing: called by every thread of a team, or by one thread alone.
+  void force_loops(ForceCounts& counts);
+  void finish_forces(const ForceCounts& counts);
   void apply_breaks();
   void check_stability() const;
   double mass_of(double radius_m, std::uint8_t type) const;
