@@ -126,9 +126,7 @@ BaseCase scene_base(const std::string& path) {
   root.ignore("output");
   BaseCase b;
   b.name = path;
-  static const Json empty = Json::object();
-  const Json* material = root.find("material");
-  b.material = read_material(material ? *material : empty, "material");
+  b.material = read_scene_material(root);
   ObjectReader spec = root.get_object("specimen");
   b.spec = read_specimen_spec(spec);
   spec.finish();

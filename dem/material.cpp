@@ -65,6 +65,12 @@ Json library_material_json(const Material& m, const std::string& title, const st
   return Json{{"name", m.name}, {"title", title}, {"description", description}, {"dem", dem}};
 }
 
+Material read_scene_material(ObjectReader& scene) {
+  static const Json empty = Json::object();
+  const Json* material = scene.find("material");
+  return read_material(material ? *material : empty, "material");
+}
+
 Json material_to_json(const Material& m) {
   return Json{{"name", m.name},
               {"density_kg_per_m3", m.density_kg_per_m3},

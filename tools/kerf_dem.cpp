@@ -91,9 +91,7 @@ Scene read_scene(const Json& doc, const fs::path& scene_dir) {
   Scene s;
   s.kind = root.get_choice("kind", {"specimen", "tension", "compression", "calibrate", "cut"});
   root.ignore("description");
-  static const Json empty = Json::object();
-  const Json* material = root.find("material");
-  s.material = read_material(material ? *material : empty, "material");
+  s.material = read_scene_material(root);
   if (auto spec = root.find_object("specimen")) {
     if (spec->has("file")) {
       fs::path file = spec->get_string("file");
@@ -111,6 +109,7 @@ Scene read_scene(const Json& doc, const fs::path& scene_dir) {
       s.loading = read_loading_spec(*loading, s.kind);
       loading->finish();
     } else {
+      static const Json empty = Json::object();
       ObjectReader none(empty, "loading");
       s.loading = read_loading_spec(none, s.kind);
     }

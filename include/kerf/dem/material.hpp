@@ -1,8 +1,8 @@
 #pragma once
 // The micro-parameters of a bonded-particle material, read from JSON with units in the key names.
 //
-//   kerf::ObjectReader r(json.at("material"), "material");
-//   Material m = read_material(r);  // r.finish() is called; unknown keys are rejected
+//   Material m = read_material(json.at("material"), "material");  // unknown keys are rejected
+//   Material s = read_scene_material(scene_reader);  // a scene's "material", or seed 000 Table 1
 //
 // Keys (all optional, defaults are seed 000 Table 1): density_kg_per_m3, effective_modulus_GPa,
 // stiffness_ratio, bond_effective_modulus_GPa, bond_stiffness_ratio, tensile_strength_MPa, cohesion_MPa,
@@ -28,6 +28,10 @@ struct Material {
 /// Reads and validates a material object. "base" names a library material (kerf::load_material) whose "dem"
 /// group the other keys override.
 Material read_material(const Json& object, const std::string& path);
+
+/// A scene's "material" object, or the defaults (seed 000 Table 1) when the scene has none: what kerf-dem
+/// and the cut benchmark's --scene read.
+Material read_scene_material(ObjectReader& scene);
 
 /// The JSON form read_material accepts (every key written).
 Json material_to_json(const Material& m);
