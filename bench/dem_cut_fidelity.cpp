@@ -236,11 +236,16 @@ int main(int argc, char** argv) {
   app.add_option("--speeds", speeds, "tool speeds, m/s")->check(CLI::PositiveNumber);
   app.add_option("--radius-scales", radius_scales, "radius scales (1: the base case's radii)")->check(CLI::PositiveNumber);
   app.add_option("--dampings", dampings, "local damping values")->check(CLI::Range(0.0, 0.99));
-  app.add_option("--base-speed", base.speed_m_per_s, "tool speed of the radius and damping studies, m/s")
-      ->check(CLI::PositiveNumber);
+  auto* base_speed = app.add_option("--base-speed", base.speed_m_per_s,
+                                    "tool speed of the radius and damping studies, m/s (default: the --scene's "
+                                    "cut speed, else 0.25)")
+                         ->check(CLI::PositiveNumber);
   CLI11_PARSE(app, argc, argv);
   try {
     const BaseCase base_case = scene_path.empty() ? builtin_base() : scene_base(scene_path);
+    // The other knobs held at the scene's own settings, so that each study passes through the scene's cut.
+    if (!scene_path.empty() && base_speed->count() == 0) base.speed_m_per_s = base_case.cut.speed_m_per_s;
+    base.local_damping = base_case.material.local_damping;
     std::vector<Case> cases;
     const auto add = [&](const std::string& name, const std::vector<double>& values) {
       if (knob != "all" && knob != name) return;

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # bench_dem_cut_fidelity --scene: packing seed k of the benchmark is kerf-dem's replicate k of the same
-# scene (same workpiece, same cut, same forces), and a results directory of one base case refuses another.
+# scene (same workpiece, same cut, same forces), the other knobs' studies hold the scene's speed and damping,
+# and a results directory of one base case refuses another.
 # Usage: dem_cut_fidelity_scene.sh <bench_dem_cut_fidelity> <kerf-dem> <source dir>
 set -uo pipefail
 bench="$1" dem="$2" src="$3"
@@ -32,10 +33,16 @@ awk -v a="$dem_main" -v b="$bench_main" 'BEGIN { d = a - b; if (d < 0) d = -d; e
   fail "bench seed 1 main force $bench_main N differs from kerf-dem's $dem_main N"
 grep -qxF "$work/small.json" "$work/b/base_case.txt" || fail "base_case.txt does not name the scene"
 
+# The damping study holds the scene's own speed (2 m/s) and damping (0.7): its 0.7 case is the cut just run.
+"$bench" --scene "$work/small.json" --knob damping --dampings 0.7 --replicates 1 --threads 1 --out-dir "$work/b" \
+  >/dev/null 2>"$work/err" || fail "bench damping: $(cat "$work/err")"
+grep -qF "0 cuts to run" "$work/err" || fail "the damping study did not reuse the scene's cut: $(cat "$work/err")"
+grep -q '^damping,0.7,1,' "$work/b/runs.csv" || fail "no damping 0.7 row in runs.csv"
+
 # The same directory with the built-in base case: refused, exit 2, nothing run.
 "$bench" --knob speed --speeds 2 --replicates 1 --threads 1 --out-dir "$work/b" >/dev/null 2>"$work/err"
 rc=$?
 [ $rc -eq 2 ] || fail "exit $rc (expected 2) for another base case in the same directory"
 grep -qF "another base case" "$work/err" || fail "stderr lacks the reason: $(cat "$work/err")"
-[ "$(wc -l <"$work/b/runs.csv")" -eq 2 ] || fail "the refused run changed runs.csv"
+[ "$(wc -l <"$work/b/runs.csv")" -eq 3 ] || fail "the refused run changed runs.csv"
 exit 0
