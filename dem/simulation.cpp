@@ -301,7 +301,8 @@ void Simulation::finish_forces(const ForceCounts& counts) {
 
 // Called by every thread of a team (or by one thread outside any): orphaned worksharing loops, each contact
 // writing its own slot, then each particle summing its slots in a fixed order, so results are bit-identical
-// for any number of threads. Ends with a barrier (the gather).
+// for any number of threads. The counts are complete after the wall loop's barrier; the gather ends without
+// one (the region's end, or the caller's own schedule(static) loop over the particles, follows).
 void Simulation::force_loops(ForceCounts& counts) {
   const double dt = dt_, t = opt_.thickness_m;
   const FlatJointParams& fj = material_.joint;
@@ -359,6 +360,13 @@ void Simulation::force_loops(ForceCounts& counts) {
     }
   }
 
+  if (n_breaking > 0 || n_retired > 0) {  // complete for the caller after the wall loop's barrier
+#pragma omp atomic
+    counts.n_breaking += n_breaking;
+#pragma omp atomic
+    counts.n_retired += n_retired;
+  }
+
   const auto np = static_cast<std::int64_t>(pairs_.size());
 #pragma omp for schedule(static) nowait
   for (std::int64_t kk = 0; kk < np; ++kk) {
@@ -413,16 +421,11 @@ void Simulation::force_loops(ForceCounts& counts) {
       w.fy -= wall_out_[k][1];
     }
   }
-  if (n_breaking > 0 || n_retired > 0) {
-#pragma omp atomic
-    counts.n_breaking += n_breaking;
-#pragma omp atomic
-    counts.n_retired += n_retired;
-  }
 
-  // Gather: each particle sums its own entries in a fixed order (deterministic for any thread count).
+  // Gather: each particle sums its own entries in a fixed order (deterministic for any thread count). No
+  // barrier after it: a later schedule(static) loop over the particles gives each thread the same ones.
   const auto n = static_cast<std::int64_t>(p_.size());
-#pragma omp for schedule(static)
+#pragma omp for schedule(static) nowait
   for (std::int64_t ii = 0; ii < n; ++ii) {
     const auto u = static_cast<std::size_t>(ii);
     double fx = 0, fy = 0, tq = 0;
@@ -500,12 +503,25 @@ void Simulation::step() {
   if (!initialised_) initialise();
   const double dt = dt_, half = 0.5 * dt, alpha = material_.local_damping;
   const auto n = static_cast<std::int64_t>(p_.size());
-  double max_move2 = 0;
+  double max_move2 = 0, wall_move = 0;
+  bool must_rebuild = false;
   ForceCounts counts;
   // One team for the whole step (not one per loop): the serial pieces run in `single` blocks and the
-  // threads meet at barriers only where a loop reads what the previous one wrote.
+  // threads meet at barriers only where a loop reads what another thread wrote: after the drift, (when the
+  // neighbour lists are rebuilt), after the contact loops, and at the end.
 #pragma omp parallel if (parallel_here())
   {
+#pragma omp single nowait
+    {
+      for (std::size_t w = 0; w < walls_.size(); ++w) {
+        auto& wl = walls_[w];
+        wl.x0 += dt * wl.vx, wl.x1 += dt * wl.vx, wl.y0 += dt * wl.vy, wl.y1 += dt * wl.vy;
+        if (2 * w + 1 < wall_ref_.size())
+          wall_move = std::max(wall_move, std::hypot(wl.x0 - wall_ref_[2 * w], wl.y0 - wall_ref_[2 * w + 1]));
+      }
+      time_ += dt;
+      must_rebuild = need_rebuild_ || wall_ref_.size() != 2 * walls_.size();
+    }
     double my_max_move2 = 0;
 #pragma omp for schedule(static) nowait
     for (std::int64_t ii = 0; ii < n; ++ii) {
@@ -524,19 +540,11 @@ void Simulation::step() {
 #pragma omp critical(kerf_dem_max_move)
     max_move2 = std::max(max_move2, my_max_move2);  // a maximum: the same for any order
 #pragma omp barrier
+    // Every thread takes the same decision from the same shared values (none changes before the single).
+    const double max_move = std::sqrt(max_move2);
+    if (must_rebuild || 2 * max_move > skin_ || max_move + wall_move > skin_) {
 #pragma omp single
-    {
-      double wall_move = 0;
-      for (std::size_t w = 0; w < walls_.size(); ++w) {
-        auto& wl = walls_[w];
-        wl.x0 += dt * wl.vx, wl.x1 += dt * wl.vx, wl.y0 += dt * wl.vy, wl.y1 += dt * wl.vy;
-        if (2 * w + 1 < wall_ref_.size())
-          wall_move = std::max(wall_move, std::hypot(wl.x0 - wall_ref_[2 * w], wl.y0 - wall_ref_[2 * w + 1]));
-      }
-      time_ += dt;
-      const double max_move = std::sqrt(max_move2);
-      if (need_rebuild_ || 2 * max_move > skin_ || max_move + wall_move > skin_ || wall_ref_.size() != 2 * walls_.size())
-        rebuild_neighbours();
+      rebuild_neighbours();
     }
     force_loops(counts);
 #pragma omp single nowait
