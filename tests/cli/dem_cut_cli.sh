@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # kerf-dem kind "cut" (orthogonal cutting, seed 000 Section 4): bad cut parameters exit 2 naming the key;
 # a small cut writes forces.csv, cracks.csv (with place), summary.json, frames and a PNG; the grooved
-# scene removes disks; a rerun gives identical forces.
+# scene removes disks; a rerun gives identical forces, on one thread or a team of two.
 # Usage: dem_cut_cli.sh <dir of built programs> <source dir>
 source "$(dirname "$0")/lib/dem_common.sh" "$@"
 
@@ -59,6 +59,13 @@ for f in summary.json replicate_1/forces.csv replicate_2/forces.csv replicate_2/
 done
 grep -q '"seed": 2' "$work/r/replicate_2/summary.json" || fail "replicate 2 does not use seed 2"
 in_range "$(result "$work/r" main_force_replicate_std_N)" 0 1e4 || fail "main_force_replicate_std_N"
+# One cut on a team of two threads (every engine loop split, even on this small workpiece: moving tool
+# walls, breaks, neighbour rebuilds): the same forces and cracks as on one thread, to the bit.
+OMP_WAIT_POLICY=passive "$bin" run "$scene" "${small[@]}" --set engine.min_parallel_items=0 --out "$work/c2" \
+  --threads 2 >/dev/null 2>"$work/err" || fail "cut on 2 threads: $(cat "$work/err")"
+cmp -s "$work/c1/forces.csv" "$work/c2/forces.csv" || fail "forces differ between 1 and 2 threads"
+cmp -s "$work/c1/cracks.csv" "$work/c2/cracks.csv" || fail "cracks differ between 1 and 2 threads"
+
 # Side by side on two threads: the same forces as one after the other on one thread.
 "$bin" run "$scene" "${small[@]}" --set cut.length_mm=0.03 --replicates 2 --out "$work/r2" --threads 2 >/dev/null 2>"$work/err" ||
   fail "replicates on 2 threads: $(cat "$work/err")"
