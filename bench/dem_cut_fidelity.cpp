@@ -112,6 +112,7 @@ BaseCase builtin_base() {
   b.spec.width_m = 1e-3, b.spec.height_m = 0.5e-3, b.spec.thickness_m = 1e-3;
   b.spec.radius_min_m = 10e-6, b.spec.radius_max_m = 13e-6;
   b.cut.depth_of_cut_m = 0.1e-3, b.cut.length_m = 0.3e-3, b.cut.entry_fraction = 0.25;
+  b.cut.speed_m_per_s = 0.25;  // the base speed of its radius and damping studies unless --base-speed is given
   return b;
 }
 
@@ -237,14 +238,14 @@ int main(int argc, char** argv) {
   app.add_option("--radius-scales", radius_scales, "radius scales (1: the base case's radii)")->check(CLI::PositiveNumber);
   app.add_option("--dampings", dampings, "local damping values")->check(CLI::Range(0.0, 0.99));
   auto* base_speed = app.add_option("--base-speed", base.speed_m_per_s,
-                                    "tool speed of the radius and damping studies, m/s (default: the --scene's "
-                                    "cut speed, else 0.25)")
+                                    "tool speed of the radius and damping studies, m/s (default: the base case's, "
+                                    "the --scene's cut speed or 0.25 for the built-in case)")
                          ->check(CLI::PositiveNumber);
   CLI11_PARSE(app, argc, argv);
   try {
     const BaseCase base_case = scene_path.empty() ? builtin_base() : scene_base(scene_path);
-    // The other knobs held at the scene's own settings, so that each study passes through the scene's cut.
-    if (!scene_path.empty() && base_speed->count() == 0) base.speed_m_per_s = base_case.cut.speed_m_per_s;
+    // The other knobs held at the base case's own settings, so that each study passes through its cut.
+    if (base_speed->count() == 0) base.speed_m_per_s = base_case.cut.speed_m_per_s;
     base.local_damping = base_case.material.local_damping;
     std::vector<Case> cases;
     const auto add = [&](const std::string& name, const std::vector<double>& values) {
