@@ -1,9 +1,10 @@
 // Speed against accuracy of the DEM cut (issue 5): mean main and thrust force, and the cost, against the
-// three fidelity knobs a user turns — tool speed, particle size (radii scaled at fixed micro-parameters,
-// i.e. at fixed calibrated macro-properties, see docs/performance.md) and Cundall's local damping — each on
-// several packings, since one cut's mean force scatters by tens of percent from packing to packing.
+// four fidelity knobs a user turns — tool speed, particle size (radii scaled at fixed micro-parameters,
+// i.e. at fixed calibrated macro-properties, see docs/performance.md), Cundall's local damping and the
+// time-step safety factor (engine.time_step_safety) — each on several packings, since one cut's mean force
+// scatters by tens of percent from packing to packing.
 //
-//   build/bench/bench_dem_cut_fidelity [--knob speed|radius|damping|all] [--replicates 3] [--threads 2]
+//   build/bench/bench_dem_cut_fidelity [--knob speed|radius|damping|time_step|all] [--replicates 3] [--threads 2]
 //       [--out-dir bench-out/dem_cut_fidelity] [--scene validation/soda_lime_cutting/scene.json]
 //
 // Writes, in --out-dir: runs.csv (one row per knob value and packing; the file is rewritten whole after
@@ -49,14 +50,15 @@ using namespace kerf::dem;
 namespace {
 
 struct Case {
-  std::string knob;  ///< speed, radius, damping
-  double value = 0;  ///< m/s, radius scale (1 = radii 10-13 um), alpha
+  std::string knob;  ///< speed, radius, damping, time_step
+  double value = 0;  ///< m/s, radius scale (1 = radii 10-13 um), alpha, f_safety
   int replicate = 1; ///< packing seed
 };
 
-/// The three knobs of one cut. The base setting is the one the studies of the other knobs hold fixed.
+/// The four knobs of one cut. The base setting is the one the studies of the other knobs hold fixed.
 struct CutSettings {
   double speed_m_per_s = 0.25, radius_scale = 1, local_damping = 0.7;
+  double time_step_safety = SimulationOptions{}.time_step_safety;  ///< f in dt = f * the critical-step estimate
 };
 
 /// What a case runs: its knob at its value, the others at the base.
@@ -65,6 +67,7 @@ CutSettings settings_of(const Case& c, const CutSettings& base) {
   if (c.knob == "speed") s.speed_m_per_s = c.value;
   if (c.knob == "radius") s.radius_scale = c.value;
   if (c.knob == "damping") s.local_damping = c.value;
+  if (c.knob == "time_step") s.time_step_safety = c.value;
   return s;
 }
 
@@ -79,7 +82,8 @@ struct Run {
 /// The cut a case runs, as a key: settings and seed. Cases of different knobs can be the same cut (the
 /// damping study's 0.7 and the radius study's 1 are the speed study's base speed): it runs once.
 std::string cut_key(const CutSettings& s, int replicate) {
-  return fmt::format("{:.6g}|{:.6g}|{:.6g}|{}", s.speed_m_per_s, s.radius_scale, s.local_damping, replicate);
+  return fmt::format("{:.6g}|{:.6g}|{:.6g}|{:.6g}|{}", s.speed_m_per_s, s.radius_scale, s.local_damping,
+                     s.time_step_safety, replicate);
 }
 std::string cut_of(const Case& c, const CutSettings& base) { return cut_key(settings_of(c, base), c.replicate); }
 std::string cut_of(const Run& r) { return cut_key(r.cut, r.c.replicate); }
@@ -148,7 +152,13 @@ Run run_case(const BaseCase& base_case, const Case& c, const CutSettings& base) 
   cut.speed_m_per_s = settings.speed_m_per_s;
   SpecimenReport report;
   Simulation specimen = make_specimen(m, spec, report);
-  if (base_case.engine) base_case.engine->apply_to(specimen);
+  // A scene's engine settings apply after genesis, as in kerf-dem; the built-in case keeps the genesis
+  // settings (as when its figures were measured) unless the time-step study changes f.
+  if (base_case.engine || settings.time_step_safety != base.time_step_safety) {
+    EngineSettings engine = base_case.engine.value_or(EngineSettings{});
+    engine.time_step_safety = settings.time_step_safety;
+    engine.apply_to(specimen);
+  }
   const double start = bench::thread_cpu_seconds();
   CutRun cutting(specimen, cut);
   while (cutting.advance()) {
@@ -164,14 +174,16 @@ Run run_case(const BaseCase& base_case, const Case& c, const CutSettings& base) 
 }
 
 const std::vector<std::string> kRunColumns{"knob", "value", "replicate", "n_particles", "steps", "main_force_N",
-                                           "thrust_force_N", "cpu_s", "speed_m_per_s", "radius_scale", "local_damping"};
+                                           "thrust_force_N", "cpu_s", "speed_m_per_s", "radius_scale", "local_damping",
+                                           "time_step_safety"};
 
 std::string runs_csv(const std::vector<Run>& runs) {
   std::string out = csv_line(kRunColumns);
   for (const auto& r : runs)
     out += csv_line({r.c.knob, csv_number(r.c.value), std::to_string(r.c.replicate), std::to_string(r.n_particles),
                      std::to_string(r.steps), csv_number(r.main_force_n), csv_number(r.thrust_force_n), csv_number(r.cpu_s),
-                     csv_number(r.cut.speed_m_per_s), csv_number(r.cut.radius_scale), csv_number(r.cut.local_damping)});
+                     csv_number(r.cut.speed_m_per_s), csv_number(r.cut.radius_scale), csv_number(r.cut.local_damping),
+                     csv_number(r.cut.time_step_safety)});
   return out;
 }
 
@@ -180,10 +192,11 @@ std::vector<Run> read_runs(const fs::path& file) {
   if (!fs::exists(file)) return runs;
   const CsvTable t = read_csv_file(file);
   std::vector<std::size_t> col;
-  // Files written before the cut columns existed hold speed-study rows only (radius 1, damping 0.7).
-  const bool has_cut = t.has_column("speed_m_per_s");
+  // Files written before the cut columns existed hold speed-study rows only (radius 1, damping 0.7), and
+  // those written before the time-step study ran at the default time-step safety factor.
+  const bool has_cut = t.has_column("speed_m_per_s"), has_time_step = t.has_column("time_step_safety");
   for (const auto& name : kRunColumns)
-    if (has_cut || t.has_column(name)) col.push_back(t.column_index(name));
+    if (t.has_column(name) || (has_cut && name != "time_step_safety")) col.push_back(t.column_index(name));
   for (std::size_t i = 0; i < t.rows.size(); ++i) {
     Run r;
     r.c = {t.text(i, col[0]), t.number(i, col[1]), static_cast<int>(t.number(i, col[2]))};
@@ -191,7 +204,9 @@ std::vector<Run> read_runs(const fs::path& file) {
     r.steps = static_cast<std::int64_t>(t.number(i, col[4]));
     r.main_force_n = t.number(i, col[5]), r.thrust_force_n = t.number(i, col[6]), r.cpu_s = t.number(i, col[7]);
     if (has_cut) {
-      r.cut = {t.number(i, col[8]), t.number(i, col[9]), t.number(i, col[10])};
+      r.cut.speed_m_per_s = t.number(i, col[8]), r.cut.radius_scale = t.number(i, col[9]);
+      r.cut.local_damping = t.number(i, col[10]);
+      if (has_time_step) r.cut.time_step_safety = t.number(i, col[11]);
     } else if (r.c.knob == "speed") {
       r.cut.speed_m_per_s = r.c.value;
     } else {
@@ -211,7 +226,7 @@ Stats stats_of(const std::vector<double>& v) {
   return {st.mean, st.standard_deviation, st.standard_deviation / std::sqrt(static_cast<double>(v.size()))};
 }
 
-/// The reference of each knob: the finest setting (lowest speed, smallest disks); damping has none that is
+/// The reference of each knob: the finest setting (lowest speed, smallest disks, smallest step); damping has none that is
 /// "converged" (it is a model parameter), so its changes are against the default 0.7.
 double reference_value(const std::string& knob, const std::vector<double>& values) {
   if (knob == "damping") return 0.7;
@@ -221,12 +236,14 @@ double reference_value(const std::string& knob, const std::vector<double>& value
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"DEM cut: forces and cost against tool speed, particle size and local damping"};
+  CLI::App app{"DEM cut: forces and cost against tool speed, particle size, local damping and time step"};
   std::string knob = "all", out_dir = "bench-out/dem_cut_fidelity", scene_path;
   int replicates = 3, threads = 2;
   CutSettings base;
   std::vector<double> speeds{2, 1, 0.5, 0.25, 0.125}, radius_scales{1.5, 1.0, 0.75}, dampings{0.3, 0.5, 0.7, 0.9};
-  app.add_option("--knob", knob, "speed, radius, damping or all")->check(CLI::IsMember({"speed", "radius", "damping", "all"}));
+  std::vector<double> time_step_safeties{0.4, 0.8, 1.0};
+  app.add_option("--knob", knob, "speed, radius, damping, time_step or all")
+      ->check(CLI::IsMember({"speed", "radius", "damping", "time_step", "all"}));
   app.add_option("--replicates", replicates, "packings per setting (seeds 1..N)")->check(CLI::Range(1, 100));
   app.add_option("--threads", threads, "cuts run side by side")->check(CLI::Range(1, 256));
   app.add_option("--out-dir", out_dir, "output directory");
@@ -237,6 +254,9 @@ int main(int argc, char** argv) {
   app.add_option("--speeds", speeds, "tool speeds, m/s")->check(CLI::PositiveNumber);
   app.add_option("--radius-scales", radius_scales, "radius scales (1: the base case's radii)")->check(CLI::PositiveNumber);
   app.add_option("--dampings", dampings, "local damping values")->check(CLI::Range(0.0, 0.99));
+  app.add_option("--time-step-safeties", time_step_safeties,
+                 "time-step safety factors f (engine.time_step_safety: dt = f * the critical-step estimate)")
+      ->check(CLI::Range(0.01, 1.0));
   auto* base_speed = app.add_option("--base-speed", base.speed_m_per_s,
                                     "tool speed of the radius and damping studies, m/s (default: the base case's, "
                                     "the --scene's cut speed or 0.25 for the built-in case)")
@@ -247,6 +267,7 @@ int main(int argc, char** argv) {
     // The other knobs held at the base case's own settings, so that each study passes through its cut.
     if (base_speed->count() == 0) base.speed_m_per_s = base_case.cut.speed_m_per_s;
     base.local_damping = base_case.material.local_damping;
+    if (base_case.engine) base.time_step_safety = base_case.engine->time_step_safety;
     std::vector<Case> cases;
     const auto add = [&](const std::string& name, const std::vector<double>& values) {
       if (knob != "all" && knob != name) return;
@@ -256,6 +277,7 @@ int main(int argc, char** argv) {
     add("speed", speeds);
     add("radius", radius_scales);
     add("damping", dampings);
+    add("time_step", time_step_safeties);
     fs::create_directories(out_dir);
     // One directory, one base case: runs of another workpiece must not answer this one's cases.
     const fs::path base_file = fs::path(out_dir) / "base_case.txt";
@@ -285,10 +307,10 @@ int main(int argc, char** argv) {
       if (std::none_of(todo.begin(), todo.end(), [&](const Case& t) { return cut_of(t, base) == cut_of(c, base); }))
         todo.push_back(c);
     }
-    // The dearest cuts first (cost ~ 1 / speed and ~ 1 / radius^3), so the last ones fill the gaps.
+    // The dearest cuts first (cost ~ 1 / speed, ~ 1 / radius^3 and ~ 1 / f), so the last ones fill the gaps.
     const auto cost = [&](const Case& c) {
       const CutSettings s = settings_of(c, base);
-      return 1 / (s.speed_m_per_s * s.radius_scale * s.radius_scale * s.radius_scale);
+      return 1 / (s.speed_m_per_s * s.radius_scale * s.radius_scale * s.radius_scale * s.time_step_safety);
     };
     std::stable_sort(todo.begin(), todo.end(), [&](const Case& a, const Case& b) { return cost(a) > cost(b); });
     std::fprintf(stderr, "%zu cuts to run for %zu cases (the others are answered by %s or share a cut)\n", todo.size(),
@@ -322,7 +344,7 @@ int main(int argc, char** argv) {
                                     "thrust_force_sem_N", "main_force_change_vs_reference", "thrust_force_change_vs_reference",
                                     "cpu_s_per_cut", "cost_vs_reference"});
     for (const auto& [name, values] : std::vector<std::pair<std::string, std::vector<double>>>{
-             {"speed", speeds}, {"radius", radius_scales}, {"damping", dampings}}) {
+             {"speed", speeds}, {"radius", radius_scales}, {"damping", dampings}, {"time_step", time_step_safeties}}) {
       if (knob != "all" && knob != name) continue;
       struct Row {
         double value;
@@ -345,7 +367,10 @@ int main(int argc, char** argv) {
       const auto ref_row = std::find_if(rows.begin(), rows.end(), [&](const Row& r) { return r.value == ref; });
       FigureSpec fig;
       fig.title = fmt::format("DEM cut, {} replicates: forces against {}", replicates, name);
-      fig.x_label = name == "speed" ? "tool speed (m/s)" : name == "radius" ? "radius scale (1: the base case's radii)" : "local damping";
+      fig.x_label = name == "speed"    ? "tool speed (m/s)"
+                    : name == "radius" ? "radius scale (1: the base case's radii)"
+                    : name == "damping" ? "local damping"
+                                        : "time-step safety factor f";
       fig.y_label = "force per 1 mm width (N)";
       PlotSeries main{"main force", {}, {}, {}, {}, SeriesStyle::points_and_line, 0, 0};
       PlotSeries thrust{"thrust force", {}, {}, {}, {}, SeriesStyle::points_and_line, 1, 2};

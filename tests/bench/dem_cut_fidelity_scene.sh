@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # bench_dem_cut_fidelity --scene: packing seed k of the benchmark is kerf-dem's replicate k of the same
-# scene (same workpiece, same cut, same forces), the other knobs' studies hold the scene's speed and damping,
+# scene (same workpiece, same cut, same forces), the other knobs' studies hold the scene's speed, damping and
+# time step, the time-step study sets engine.time_step_safety as kerf-dem does,
 # and a results directory of one base case refuses another.
 # Usage: dem_cut_fidelity_scene.sh <bench_dem_cut_fidelity> <kerf-dem> <source dir>
 set -uo pipefail
@@ -39,10 +40,27 @@ grep -qxF "$work/small.json" "$work/b/base_case.txt" || fail "base_case.txt does
 grep -qF "0 cuts to run" "$work/err" || fail "the damping study did not reuse the scene's cut: $(cat "$work/err")"
 grep -q '^damping,0.7,1,' "$work/b/runs.csv" || fail "no damping 0.7 row in runs.csv"
 
+# The time-step study: f 0.8 (the scene's, the engine's default) is the cut just run; f 0.4 is kerf-dem's cut
+# with engine.time_step_safety 0.4 (same forces) and takes twice the steps.
+"$bench" --scene "$work/small.json" --knob time_step --time-step-safeties 0.8 0.4 --replicates 1 --threads 1 \
+  --out-dir "$work/b" >/dev/null 2>"$work/err" || fail "bench time_step: $(cat "$work/err")"
+grep -qF "1 cuts to run" "$work/err" || fail "the time-step study did not reuse the scene's cut: $(cat "$work/err")"
+"$dem" run "$work/small.json" --set engine.time_step_safety=0.4 --threads 1 --out "$work/dem04" >/dev/null 2>"$work/err" ||
+  fail "kerf-dem f 0.4: $(cat "$work/err")"
+dem04_main=$(sed -n '/^  "results": {/,/^  }/p' "$work/dem04/summary.json" | grep -o '"main_force_N": [-0-9.e+]*' | head -1 | awk '{print $2}')
+row04=$(grep '^time_step,0.4,1,' "$work/b/runs.csv") || fail "no time_step 0.4 row in runs.csv"
+row08=$(grep '^time_step,0.8,1,' "$work/b/runs.csv") || fail "no time_step 0.8 row in runs.csv"
+steps_col=$(head -1 "$work/b/runs.csv" | tr ',' '\n' | grep -nx steps | cut -d: -f1)
+awk -v a="$dem04_main" -v b="$(echo "$row04" | cut -d, -f"$col")" \
+  'BEGIN { d = a - b; if (d < 0) d = -d; exit !(a > 0 && d <= 1e-12 * a) }' ||
+  fail "bench f 0.4 main force $(echo "$row04" | cut -d, -f"$col") N differs from kerf-dem's $dem04_main N"
+awk -v a="$(echo "$row04" | cut -d, -f"$steps_col")" -v b="$(echo "$row08" | cut -d, -f"$steps_col")" \
+  'BEGIN { r = a / b; exit !(r > 1.9 && r < 2.1) }' || fail "f 0.4 does not take about twice the steps of f 0.8"
+
 # The same directory with the built-in base case: refused, exit 2, nothing run.
 "$bench" --knob speed --speeds 2 --replicates 1 --threads 1 --out-dir "$work/b" >/dev/null 2>"$work/err"
 rc=$?
 [ $rc -eq 2 ] || fail "exit $rc (expected 2) for another base case in the same directory"
 grep -qF "another base case" "$work/err" || fail "stderr lacks the reason: $(cat "$work/err")"
-[ "$(wc -l <"$work/b/runs.csv")" -eq 3 ] || fail "the refused run changed runs.csv"
+[ "$(wc -l <"$work/b/runs.csv")" -eq 5 ] || fail "the refused run changed runs.csv"
 exit 0
