@@ -366,7 +366,7 @@ int main(int argc, char** argv) {
       const double ref = reference_value(name, vs);
       const auto ref_row = std::find_if(rows.begin(), rows.end(), [&](const Row& r) { return r.value == ref; });
       FigureSpec fig;
-      fig.title = fmt::format("DEM cut, {} replicates: forces against {}", replicates, name);
+      fig.title = fmt::format("DEM cut, {} replicates: forces against {}", replicates, name == "time_step" ? "time step" : name);
       fig.x_label = name == "speed"    ? "tool speed (m/s)"
                     : name == "radius" ? "radius scale (1: the base case's radii)"
                     : name == "damping" ? "local damping"
