@@ -22,6 +22,7 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -31,6 +32,7 @@
 #include <map>
 #include <mutex>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "bench_util.hpp"
@@ -191,22 +193,20 @@ std::vector<Run> read_runs(const fs::path& file) {
   std::vector<Run> runs;
   if (!fs::exists(file)) return runs;
   const CsvTable t = read_csv_file(file);
-  std::vector<std::size_t> col;
   // Files written before the cut columns existed hold speed-study rows only (radius 1, damping 0.7), and
   // those written before the time-step study ran at the default time-step safety factor.
   const bool has_cut = t.has_column("speed_m_per_s"), has_time_step = t.has_column("time_step_safety");
-  for (const auto& name : kRunColumns)
-    if (t.has_column(name) || (has_cut && name != "time_step_safety")) col.push_back(t.column_index(name));
   for (std::size_t i = 0; i < t.rows.size(); ++i) {
+    const auto number = [&](std::string_view column) { return t.number(i, t.column_index(column)); };
     Run r;
-    r.c = {t.text(i, col[0]), t.number(i, col[1]), static_cast<int>(t.number(i, col[2]))};
-    r.n_particles = static_cast<int>(t.number(i, col[3]));
-    r.steps = static_cast<std::int64_t>(t.number(i, col[4]));
-    r.main_force_n = t.number(i, col[5]), r.thrust_force_n = t.number(i, col[6]), r.cpu_s = t.number(i, col[7]);
+    r.c = {t.text(i, t.column_index("knob")), number("value"), static_cast<int>(number("replicate"))};
+    r.n_particles = static_cast<int>(number("n_particles"));
+    r.steps = static_cast<std::int64_t>(number("steps"));
+    r.main_force_n = number("main_force_N"), r.thrust_force_n = number("thrust_force_N"), r.cpu_s = number("cpu_s");
     if (has_cut) {
-      r.cut.speed_m_per_s = t.number(i, col[8]), r.cut.radius_scale = t.number(i, col[9]);
-      r.cut.local_damping = t.number(i, col[10]);
-      if (has_time_step) r.cut.time_step_safety = t.number(i, col[11]);
+      r.cut.speed_m_per_s = number("speed_m_per_s"), r.cut.radius_scale = number("radius_scale");
+      r.cut.local_damping = number("local_damping");
+      if (has_time_step) r.cut.time_step_safety = number("time_step_safety");
     } else if (r.c.knob == "speed") {
       r.cut.speed_m_per_s = r.c.value;
     } else {
@@ -233,6 +233,12 @@ double reference_value(const std::string& knob, const std::vector<double>& value
   return *std::min_element(values.begin(), values.end());
 }
 
+/// One knob: its name (in runs.csv and --knob), what the plot calls it, and the values to cut.
+struct Knob {
+  std::string name, subject, axis_label;
+  std::vector<double> values;
+};
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -240,10 +246,14 @@ int main(int argc, char** argv) {
   std::string knob = "all", out_dir = "bench-out/dem_cut_fidelity", scene_path;
   int replicates = 3, threads = 2;
   CutSettings base;
-  std::vector<double> speeds{2, 1, 0.5, 0.25, 0.125}, radius_scales{1.5, 1.0, 0.75}, dampings{0.3, 0.5, 0.7, 0.9};
-  std::vector<double> time_step_safeties{0.4, 0.8, 1.0};
-  app.add_option("--knob", knob, "speed, radius, damping, time_step or all")
-      ->check(CLI::IsMember({"speed", "radius", "damping", "time_step", "all"}));
+  std::array<Knob, 4> knobs{{{"speed", "speed", "tool speed (m/s)", {2, 1, 0.5, 0.25, 0.125}},
+                             {"radius", "radius", "radius scale (1: the base case's radii)", {1.5, 1.0, 0.75}},
+                             {"damping", "damping", "local damping", {0.3, 0.5, 0.7, 0.9}},
+                             {"time_step", "time step", "time-step safety factor f", {0.4, 0.8, 1.0}}}};
+  auto& [speeds, radius_scales, dampings, time_step_safeties] = knobs;
+  std::vector<std::string> knob_choices{"all"};
+  for (const auto& k : knobs) knob_choices.push_back(k.name);
+  app.add_option("--knob", knob, "speed, radius, damping, time_step or all")->check(CLI::IsMember(knob_choices));
   app.add_option("--replicates", replicates, "packings per setting (seeds 1..N)")->check(CLI::Range(1, 100));
   app.add_option("--threads", threads, "cuts run side by side")->check(CLI::Range(1, 256));
   app.add_option("--out-dir", out_dir, "output directory");
@@ -251,10 +261,10 @@ int main(int argc, char** argv) {
                  "a kerf-dem cut scene as the base case (its workpiece, cut and material; seed k = its replicate k); "
                  "default: the built-in case of docs/performance.md")
       ->check(CLI::ExistingFile);
-  app.add_option("--speeds", speeds, "tool speeds, m/s")->check(CLI::PositiveNumber);
-  app.add_option("--radius-scales", radius_scales, "radius scales (1: the base case's radii)")->check(CLI::PositiveNumber);
-  app.add_option("--dampings", dampings, "local damping values")->check(CLI::Range(0.0, 0.99));
-  app.add_option("--time-step-safeties", time_step_safeties,
+  app.add_option("--speeds", speeds.values, "tool speeds, m/s")->check(CLI::PositiveNumber);
+  app.add_option("--radius-scales", radius_scales.values, "radius scales (1: the base case's radii)")->check(CLI::PositiveNumber);
+  app.add_option("--dampings", dampings.values, "local damping values")->check(CLI::Range(0.0, 0.99));
+  app.add_option("--time-step-safeties", time_step_safeties.values,
                  "time-step safety factors f (engine.time_step_safety: dt = f * the critical-step estimate)")
       ->check(CLI::Range(0.01, 1.0));
   auto* base_speed = app.add_option("--base-speed", base.speed_m_per_s,
@@ -268,16 +278,12 @@ int main(int argc, char** argv) {
     if (base_speed->count() == 0) base.speed_m_per_s = base_case.cut.speed_m_per_s;
     base.local_damping = base_case.material.local_damping;
     if (base_case.engine) base.time_step_safety = base_case.engine->time_step_safety;
+    const auto selected = [&](const Knob& k) { return knob == "all" || knob == k.name; };
     std::vector<Case> cases;
-    const auto add = [&](const std::string& name, const std::vector<double>& values) {
-      if (knob != "all" && knob != name) return;
-      for (double v : values)
-        for (int k = 1; k <= replicates; ++k) cases.push_back({name, v, k});
-    };
-    add("speed", speeds);
-    add("radius", radius_scales);
-    add("damping", dampings);
-    add("time_step", time_step_safeties);
+    for (const auto& k : knobs)
+      if (selected(k))
+        for (double v : k.values)
+          for (int seed = 1; seed <= replicates; ++seed) cases.push_back({k.name, v, seed});
     fs::create_directories(out_dir);
     // One directory, one base case: runs of another workpiece must not answer this one's cases.
     const fs::path base_file = fs::path(out_dir) / "base_case.txt";
@@ -343,16 +349,16 @@ int main(int argc, char** argv) {
                                     "main_force_sem_N", "thrust_force_N", "thrust_force_replicate_std_N",
                                     "thrust_force_sem_N", "main_force_change_vs_reference", "thrust_force_change_vs_reference",
                                     "cpu_s_per_cut", "cost_vs_reference"});
-    for (const auto& [name, values] : std::vector<std::pair<std::string, std::vector<double>>>{
-             {"speed", speeds}, {"radius", radius_scales}, {"damping", dampings}, {"time_step", time_step_safeties}}) {
-      if (knob != "all" && knob != name) continue;
+    for (const auto& k : knobs) {
+      if (!selected(k)) continue;
+      const std::string& name = k.name;
       struct Row {
         double value;
         Stats main, thrust, cpu;
         int n, particles;
       };
       std::vector<Row> rows;
-      for (double v : values) {
+      for (double v : k.values) {
         std::vector<double> fm, ft, cpu;
         int particles = 0;
         for (const auto& r : runs)
@@ -366,11 +372,8 @@ int main(int argc, char** argv) {
       const double ref = reference_value(name, vs);
       const auto ref_row = std::find_if(rows.begin(), rows.end(), [&](const Row& r) { return r.value == ref; });
       FigureSpec fig;
-      fig.title = fmt::format("DEM cut, {} replicates: forces against {}", replicates, name == "time_step" ? "time step" : name);
-      fig.x_label = name == "speed"    ? "tool speed (m/s)"
-                    : name == "radius" ? "radius scale (1: the base case's radii)"
-                    : name == "damping" ? "local damping"
-                                        : "time-step safety factor f";
+      fig.title = fmt::format("DEM cut, {} replicates: forces against {}", replicates, k.subject);
+      fig.x_label = k.axis_label;
       fig.y_label = "force per 1 mm width (N)";
       PlotSeries main{"main force", {}, {}, {}, {}, SeriesStyle::points_and_line, 0, 0};
       PlotSeries thrust{"thrust force", {}, {}, {}, {}, SeriesStyle::points_and_line, 1, 2};

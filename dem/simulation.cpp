@@ -273,12 +273,10 @@ void Simulation::rebuild_neighbours() {
 }
 
 void Simulation::evaluate_forces() {
-  if (need_rebuild_) rebuild_neighbours();
   const double dt = dt_;
-  dt_ = 0;  // no motion: no shear increments
-  compute_forces();
+  dt_ = 0;  // no motion: no shear increments (apply_breaks does not read the step)
+  evaluate_forces_with_increment();
   dt_ = dt;
-  apply_breaks();
 }
 
 void Simulation::evaluate_forces_with_increment() {

@@ -10,6 +10,9 @@ work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 export KERF_DATA_DIR="$src/data"
 fail() { echo "FAIL: $*" >&2; exit 1; }
+# The main force of a kerf-dem run's summary.json (its results object), and equality to 1e-12 relative.
+summary_main() { sed -n '/^  "results": {/,/^  }/p' "$1/summary.json" | grep -o '"main_force_N": [-0-9.e+]*' | head -1 | awk '{print $2}'; }
+same_force() { awk -v a="$1" -v b="$2" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(a > 0 && d <= 1e-12 * a) }'; }
 
 cat >"$work/small.json" <<'JSON'
 {
@@ -26,11 +29,11 @@ JSON
 "$dem" run "$work/small.json" --threads 1 --out "$work/dem" >/dev/null 2>"$work/err" || fail "kerf-dem: $(cat "$work/err")"
 "$bench" --scene "$work/small.json" --knob speed --speeds 2 --replicates 1 --threads 1 --out-dir "$work/b" \
   >/dev/null 2>"$work/err" || fail "bench: $(cat "$work/err")"
-dem_main=$(sed -n '/^  "results": {/,/^  }/p' "$work/dem/summary.json" | grep -o '"main_force_N": [-0-9.e+]*' | head -1 | awk '{print $2}')
+dem_main=$(summary_main "$work/dem")
 col=$(head -1 "$work/b/runs.csv" | tr ',' '\n' | grep -nx main_force_N | cut -d: -f1)
 bench_main=$(sed -n 2p "$work/b/runs.csv" | cut -d, -f"$col")
 [ -n "$dem_main" ] && [ -n "$bench_main" ] || fail "no main force (kerf-dem '$dem_main', bench '$bench_main')"
-awk -v a="$dem_main" -v b="$bench_main" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(a > 0 && d <= 1e-12 * a) }' ||
+same_force "$dem_main" "$bench_main" ||
   fail "bench seed 1 main force $bench_main N differs from kerf-dem's $dem_main N"
 grep -qxF "$work/small.json" "$work/b/base_case.txt" || fail "base_case.txt does not name the scene"
 
@@ -47,12 +50,11 @@ grep -q '^damping,0.7,1,' "$work/b/runs.csv" || fail "no damping 0.7 row in runs
 grep -qF "1 cuts to run" "$work/err" || fail "the time-step study did not reuse the scene's cut: $(cat "$work/err")"
 "$dem" run "$work/small.json" --set engine.time_step_safety=0.4 --threads 1 --out "$work/dem04" >/dev/null 2>"$work/err" ||
   fail "kerf-dem f 0.4: $(cat "$work/err")"
-dem04_main=$(sed -n '/^  "results": {/,/^  }/p' "$work/dem04/summary.json" | grep -o '"main_force_N": [-0-9.e+]*' | head -1 | awk '{print $2}')
+dem04_main=$(summary_main "$work/dem04")
 row04=$(grep '^time_step,0.4,1,' "$work/b/runs.csv") || fail "no time_step 0.4 row in runs.csv"
 row08=$(grep '^time_step,0.8,1,' "$work/b/runs.csv") || fail "no time_step 0.8 row in runs.csv"
 steps_col=$(head -1 "$work/b/runs.csv" | tr ',' '\n' | grep -nx steps | cut -d: -f1)
-awk -v a="$dem04_main" -v b="$(echo "$row04" | cut -d, -f"$col")" \
-  'BEGIN { d = a - b; if (d < 0) d = -d; exit !(a > 0 && d <= 1e-12 * a) }' ||
+same_force "$dem04_main" "$(echo "$row04" | cut -d, -f"$col")" ||
   fail "bench f 0.4 main force $(echo "$row04" | cut -d, -f"$col") N differs from kerf-dem's $dem04_main N"
 awk -v a="$(echo "$row04" | cut -d, -f"$steps_col")" -v b="$(echo "$row08" | cut -d, -f"$steps_col")" \
   'BEGIN { r = a / b; exit !(r > 1.9 && r < 2.1) }' || fail "f 0.4 does not take about twice the steps of f 0.8"
