@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -31,6 +32,61 @@ inline double damp(double force, double velocity, double alpha) {
   const double fv = force * velocity;
   const double sign = static_cast<double>(fv > 0) - static_cast<double>(fv < 0);
   return force * (1 - alpha * sign);
+}
+
+/// `a` where `take_a`, else `b`, as a bitwise blend: the same bits as the ternary, but GCC turns a ternary
+/// between a new value and the old one into a conditional store, which keeps a loop from vectorising.
+inline double blend(bool take_a, double a, double b) {
+  const std::uint64_t mask = -static_cast<std::uint64_t>(take_a);
+  return std::bit_cast<double>((std::bit_cast<std::uint64_t>(a) & mask) | (std::bit_cast<std::uint64_t>(b) & ~mask));
+}
+
+/// The first half kick of the free disks (group 0) with the (damped) forces of the last evaluation and the
+/// drift of all disks: this thread's share of a schedule(static) loop over the disks (orphaned worksharing).
+/// The arrays are distinct (restrict parameters) and a free disk is chosen by a select instead of a branch,
+/// so the loop vectorises: the same arithmetic on each disk, the same bits.
+void kick_and_drift_disks(std::int64_t n, double dt, const std::uint8_t* __restrict group,
+                          const double* __restrict inv_m, const double* __restrict inv_i, const double* __restrict fx,
+                          const double* __restrict fy, const double* __restrict tq, double* __restrict vx,
+                          double* __restrict vy, double* __restrict om, double* __restrict x, double* __restrict y,
+                          double* __restrict th) {
+  const double half = 0.5 * dt;
+#pragma omp for schedule(static) nowait
+  for (std::int64_t ii = 0; ii < n; ++ii) {
+    const auto u = static_cast<std::size_t>(ii);
+    const bool free_disk = group[u] == 0;
+    const double vxu = blend(free_disk, vx[u] + half * fx[u] * inv_m[u], vx[u]);
+    const double vyu = blend(free_disk, vy[u] + half * fy[u] * inv_m[u], vy[u]);
+    const double omu = blend(free_disk, om[u] + half * tq[u] * inv_i[u], om[u]);
+    vx[u] = vxu, vy[u] = vyu, om[u] = omu;
+    x[u] += dt * vxu;
+    y[u] += dt * vyu;
+    th[u] += dt * omu;
+  }
+}
+
+/// Cundall's damping of the new forces against the predicted end-of-step velocity, then the second half kick,
+/// for the free disks; a prescribed disk (group > 0) keeps its raw forces (the reaction) and its velocity.
+/// This thread's share of a schedule(static) loop over the disks; vectorised as kick_and_drift_disks.
+void damped_kick_disks(std::int64_t n, double dt, double alpha, const std::uint8_t* __restrict group,
+                       const double* __restrict inv_m, const double* __restrict inv_i, double* __restrict fx,
+                       double* __restrict fy, double* __restrict tq, double* __restrict vx, double* __restrict vy,
+                       double* __restrict om) {
+  const double half = 0.5 * dt;
+#pragma omp for schedule(static) nowait
+  for (std::int64_t ii = 0; ii < n; ++ii) {
+    const auto u = static_cast<std::size_t>(ii);
+    const bool free_disk = group[u] == 0;
+    const double fxu = damp(fx[u], vx[u] + half * fx[u] * inv_m[u], alpha);
+    const double fyu = damp(fy[u], vy[u] + half * fy[u] * inv_m[u], alpha);
+    const double tqu = damp(tq[u], om[u] + half * tq[u] * inv_i[u], alpha);
+    vx[u] = blend(free_disk, vx[u] + half * fxu * inv_m[u], vx[u]);
+    vy[u] = blend(free_disk, vy[u] + half * fyu * inv_m[u], vy[u]);
+    om[u] = blend(free_disk, om[u] + half * tqu * inv_i[u], om[u]);
+    fx[u] = blend(free_disk, fxu, fx[u]);
+    fy[u] = blend(free_disk, fyu, fy[u]);
+    tq[u] = blend(free_disk, tqu, tq[u]);
+  }
 }
 
 /// Closest point of segment (x0, y0)-(x1, y1) to (px, py).
@@ -336,10 +392,12 @@ void Simulation::force_loops(ForceCounts& counts) {
     const std::size_t e0 = b * static_cast<std::size_t>(stride);
     const auto us = static_cast<std::size_t>(stride);
     const FlatJointKinematics kin{d - b_.ref_distance_m[b], th[j] - th[i] - b_.ref_rotation_rad[b], vs * dt};
+    const bool intact = stride == 2 && b_.bonded[e0] && b_.bonded[e0 + 1];
     const FlatJointResult r =
-        flat_joint_update(fj, b_.geometry[b], kin, std::span<double>(b_.shear_force_n.data() + e0, us),
-                          std::span<const std::uint8_t>(b_.bonded.data() + e0, us),
-                          std::span<BreakMode>(b_.pending.data() + e0, us));
+        intact ? flat_joint_update_two_bonded(fj, b_.geometry[b], kin, b_.shear_force_n.data() + e0, b_.pending.data() + e0)
+               : flat_joint_update(fj, b_.geometry[b], kin, std::span<double>(b_.shear_force_n.data() + e0, us),
+                                   std::span<const std::uint8_t>(b_.bonded.data() + e0, us),
+                                   std::span<BreakMode>(b_.pending.data() + e0, us));
     n_breaking += r.n_breaking;
     // Force on disk 2: -F_n n + F_s s (tension positive pulls disk 2 back towards disk 1).
     out = {-r.normal_force_n * nx + r.shear_force_n * sx, -r.normal_force_n * ny + r.shear_force_n * sy,
@@ -348,8 +406,9 @@ void Simulation::force_loops(ForceCounts& counts) {
     // longer overlap carries no force under either model: hand the pair over to the unjointed contact.
     // The predictable test first: almost every joint still has a bonded element, while the sign of the
     // surface gap is a coin toss (a mispredicted branch per joint).
-    bool any_bonded = false;
-    for (std::size_t e = e0; e < e0 + us; ++e) any_bonded = any_bonded || b_.bonded[e];
+    bool any_bonded = intact;
+    if (!intact)
+      for (std::size_t e = e0; e < e0 + us; ++e) any_bonded = any_bonded || b_.bonded[e];
     if (!any_bonded && r.n_breaking == 0 && surface_gap > 0 &&
         kin.gap_m > std::abs(kin.rotation_rad) * b_.geometry[b].half_length_m) {
       b_.active[b] = 0;
@@ -497,10 +556,32 @@ void Simulation::check_stability() const {
   }
 }
 
+double Simulation::half_kick_and_drift(double dt) {
+  const auto n = static_cast<std::int64_t>(p_.size());
+  kick_and_drift_disks(n, dt, p_.group.data(), p_.inv_mass.data(), p_.inv_inertia.data(), p_.fx.data(), p_.fy.data(),
+                       p_.torque.data(), p_.vx.data(), p_.vy.data(), p_.omega.data(), p_.x.data(), p_.y.data(),
+                       p_.theta.data());
+  // The largest move in a loop of its own (a maximum of doubles does not vectorise): the same partition as
+  // the loop above, so each thread reads the positions it has just written.
+  double max_move2 = 0;
+#pragma omp for schedule(static) nowait
+  for (std::int64_t ii = 0; ii < n; ++ii) {
+    const auto u = static_cast<std::size_t>(ii);
+    const double mx = p_.x[u] - x_ref_[u], my = p_.y[u] - y_ref_[u];
+    max_move2 = std::max(max_move2, mx * mx + my * my);
+  }
+  return max_move2;
+}
+
+void Simulation::damped_half_kick(double dt) {
+  damped_kick_disks(static_cast<std::int64_t>(p_.size()), dt, material_.local_damping, p_.group.data(),
+                    p_.inv_mass.data(), p_.inv_inertia.data(), p_.fx.data(), p_.fy.data(), p_.torque.data(),
+                    p_.vx.data(), p_.vy.data(), p_.omega.data());
+}
+
 void Simulation::step() {
   if (!initialised_) initialise();
-  const double dt = dt_, half = 0.5 * dt, alpha = material_.local_damping;
-  const auto n = static_cast<std::int64_t>(p_.size());
+  const double dt = dt_;
   double max_move2 = 0, wall_move = 0;
   bool must_rebuild = false;
   ForceCounts counts;
@@ -520,21 +601,7 @@ void Simulation::step() {
       time_ += dt;
       must_rebuild = need_rebuild_ || wall_ref_.size() != 2 * walls_.size();
     }
-    double my_max_move2 = 0;
-#pragma omp for schedule(static) nowait
-    for (std::int64_t ii = 0; ii < n; ++ii) {
-      const auto u = static_cast<std::size_t>(ii);
-      if (p_.group[u] == 0) {  // first half kick with the (damped) force of the last evaluation
-        p_.vx[u] += half * p_.fx[u] * p_.inv_mass[u];
-        p_.vy[u] += half * p_.fy[u] * p_.inv_mass[u];
-        p_.omega[u] += half * p_.torque[u] * p_.inv_inertia[u];
-      }
-      p_.x[u] += dt * p_.vx[u];
-      p_.y[u] += dt * p_.vy[u];
-      p_.theta[u] += dt * p_.omega[u];
-      const double mx = p_.x[u] - x_ref_[u], my = p_.y[u] - y_ref_[u];
-      my_max_move2 = std::max(my_max_move2, mx * mx + my * my);
-    }
+    const double my_max_move2 = half_kick_and_drift(dt);
 #pragma omp critical(kerf_dem_max_move)
     max_move2 = std::max(max_move2, my_max_move2);  // a maximum: the same for any order
 #pragma omp barrier
@@ -550,19 +617,7 @@ void Simulation::step() {
       finish_forces(counts);
       apply_breaks();  // joints only: the kick below does not read them
     }
-#pragma omp for schedule(static)
-    for (std::int64_t ii = 0; ii < n; ++ii) {
-      const auto u = static_cast<std::size_t>(ii);
-      if (p_.group[u] != 0) continue;  // prescribed velocity: forces kept raw for the reaction
-      // Damp against the predicted end-of-step velocity, then the second half kick.
-      const double fx = damp(p_.fx[u], p_.vx[u] + half * p_.fx[u] * p_.inv_mass[u], alpha);
-      const double fy = damp(p_.fy[u], p_.vy[u] + half * p_.fy[u] * p_.inv_mass[u], alpha);
-      const double tq = damp(p_.torque[u], p_.omega[u] + half * p_.torque[u] * p_.inv_inertia[u], alpha);
-      p_.fx[u] = fx, p_.fy[u] = fy, p_.torque[u] = tq;
-      p_.vx[u] += half * fx * p_.inv_mass[u];
-      p_.vy[u] += half * fy * p_.inv_mass[u];
-      p_.omega[u] += half * tq * p_.inv_inertia[u];
-    }
+    damped_half_kick(dt);  // no barrier after it: the region's end is one
   }
   ++steps_;
   if (opt_.check_every > 0 && steps_ % opt_.check_every == 0) check_stability();

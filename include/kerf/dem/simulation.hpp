@@ -178,6 +178,11 @@ class Simulation {
   void force_loops(ForceCounts& counts);
   void finish_forces(const ForceCounts& counts);
   void apply_breaks();
+  /// Orphaned worksharing loops over the disks (every thread of the step's team calls them): the first half
+  /// kick of the free disks and the drift of all, returning this thread's largest squared move since the
+  /// last rebuild; the damped second half kick of the free disks.
+  double half_kick_and_drift(double dt);
+  void damped_half_kick(double dt);
   void check_stability() const;
   double mass_of(double radius_m, std::uint8_t type) const;
   /// The state after the material and options, in checkpoint order: io(field...) writes or reads them.
