@@ -208,6 +208,8 @@ class Simulation {
   // Per-particle incidence (CSR): entry = index << 3 | kind << 1 | role.
   std::vector<std::int32_t> incidence_start_;
   std::vector<std::uint32_t> incidence_;
+  // Where each particle's pair entries and wall entries begin (its joint entries begin at incidence_start_).
+  std::vector<std::int32_t> incidence_pair_begin_, incidence_wall_begin_;
   // Positions at the last rebuild.
   std::vector<double> x_ref_, y_ref_, wall_ref_;
   std::vector<std::int32_t> fixed_;  ///< indices of prescribed-velocity particles
