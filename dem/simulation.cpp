@@ -377,47 +377,68 @@ void Simulation::force_loops(ForceCounts& counts) {
   const double* rad = p_.radius.data();
 
   // The joint, pair and wall loops write disjoint slots: no barrier between them.
+  // Joints in blocks, each in two passes: first the kinematics of every joint of the block (independent from
+  // joint to joint, so the square roots and divisions of several joints are in flight at once instead of one
+  // joint's chain of them at a time), then the flat-joint law and the forces. The same operations on the
+  // same values as one pass: the same bits.
+  constexpr std::int64_t kBlock = 64;
+  const std::int64_t n_blocks = (nb + kBlock - 1) / kBlock;
 #pragma omp for schedule(static) nowait
-  for (std::int64_t bb = 0; bb < nb; ++bb) {
-    const auto b = static_cast<std::size_t>(bb);
-    auto& out = b_.out[b];
-    if (!b_.active[b]) {
-      out = {0, 0, 0, 0};
-      continue;
+  for (std::int64_t blk = 0; blk < n_blocks; ++blk) {
+    const std::int64_t first = blk * kBlock, count = std::min(kBlock, nb - first);
+    struct {
+      double nx[kBlock], ny[kBlock], a1[kBlock], a2[kBlock], surface_gap[kBlock], gap[kBlock], rotation[kBlock],
+          shear_increment[kBlock];
+    } k;
+    for (std::int64_t q = 0; q < count; ++q) {
+      const auto b = static_cast<std::size_t>(first + q);
+      const auto i = static_cast<std::size_t>(b_.i[b]), j = static_cast<std::size_t>(b_.j[b]);
+      const double dx = x[j] - x[i], dy = y[j] - y[i];
+      const double d = std::sqrt(dx * dx + dy * dy);
+      const double nx = dx / d, ny = dy / d, sx = -ny, sy = nx;
+      const double surface_gap = d - rad[i] - rad[j];
+      const double a1 = rad[i] + 0.5 * surface_gap, a2 = rad[j] + 0.5 * surface_gap;  // centre to interface
+      // Relative velocity of surface 2 w.r.t. surface 1 at the interface centre, along s (rotation included).
+      const double vs = (vx[j] - vx[i]) * sx + (vy[j] - vy[i]) * sy - a2 * om[j] - a1 * om[i];
+      k.nx[q] = nx, k.ny[q] = ny, k.a1[q] = a1, k.a2[q] = a2, k.surface_gap[q] = surface_gap;
+      k.gap[q] = d - b_.ref_distance_m[b];
+      k.rotation[q] = th[j] - th[i] - b_.ref_rotation_rad[b];
+      k.shear_increment[q] = vs * dt;
     }
-    const auto i = static_cast<std::size_t>(b_.i[b]), j = static_cast<std::size_t>(b_.j[b]);
-    const double dx = x[j] - x[i], dy = y[j] - y[i];
-    const double d = std::sqrt(dx * dx + dy * dy);
-    const double nx = dx / d, ny = dy / d, sx = -ny, sy = nx;
-    const double surface_gap = d - rad[i] - rad[j];
-    const double a1 = rad[i] + 0.5 * surface_gap, a2 = rad[j] + 0.5 * surface_gap;  // centre to interface
-    // Relative velocity of surface 2 w.r.t. surface 1 at the interface centre, along s (rotation included).
-    const double vs = (vx[j] - vx[i]) * sx + (vy[j] - vy[i]) * sy - a2 * om[j] - a1 * om[i];
-    const std::size_t e0 = b * static_cast<std::size_t>(stride);
-    const auto us = static_cast<std::size_t>(stride);
-    const FlatJointKinematics kin{d - b_.ref_distance_m[b], th[j] - th[i] - b_.ref_rotation_rad[b], vs * dt};
-    const bool intact = stride == 2 && b_.bonded[e0] && b_.bonded[e0 + 1];
-    const FlatJointResult r =
-        intact ? flat_joint_update_two_bonded(fj, b_.geometry[b], kin, b_.shear_force_n.data() + e0, b_.pending.data() + e0)
-               : flat_joint_update(fj, b_.geometry[b], kin, std::span<double>(b_.shear_force_n.data() + e0, us),
-                                   std::span<const std::uint8_t>(b_.bonded.data() + e0, us),
-                                   std::span<BreakMode>(b_.pending.data() + e0, us));
-    n_breaking += r.n_breaking;
-    // Force on disk 2: -F_n n + F_s s (tension positive pulls disk 2 back towards disk 1).
-    out = {-r.normal_force_n * nx + r.shear_force_n * sx, -r.normal_force_n * ny + r.shear_force_n * sy,
-           -a1 * r.shear_force_n - r.moment_nm, -a2 * r.shear_force_n + r.moment_nm};
-    // A fully broken joint whose interface is open everywhere (g_s - |theta_b| R > 0) and whose disks no
-    // longer overlap carries no force under either model: hand the pair over to the unjointed contact.
-    // The predictable test first: almost every joint still has a bonded element, while the sign of the
-    // surface gap is a coin toss (a mispredicted branch per joint).
-    bool any_bonded = intact;
-    if (!intact)
-      for (std::size_t e = e0; e < e0 + us; ++e) any_bonded = any_bonded || b_.bonded[e];
-    if (!any_bonded && r.n_breaking == 0 && surface_gap > 0 &&
-        kin.gap_m > std::abs(kin.rotation_rad) * b_.geometry[b].half_length_m) {
-      b_.active[b] = 0;
-      out = {0, 0, 0, 0};
-      ++n_retired;
+    for (std::int64_t q = 0; q < count; ++q) {
+      const auto b = static_cast<std::size_t>(first + q);
+      auto& out = b_.out[b];
+      if (!b_.active[b]) {
+        out = {0, 0, 0, 0};
+        continue;
+      }
+      const double nx = k.nx[q], ny = k.ny[q], sx = -ny, sy = nx, a1 = k.a1[q], a2 = k.a2[q];
+      const std::size_t e0 = b * static_cast<std::size_t>(stride);
+      const auto us = static_cast<std::size_t>(stride);
+      const FlatJointKinematics kin{k.gap[q], k.rotation[q], k.shear_increment[q]};
+      const bool intact = stride == 2 && b_.bonded[e0] && b_.bonded[e0 + 1];
+      const FlatJointResult r =
+          intact ? flat_joint_update_two_bonded(fj, b_.geometry[b], kin, b_.shear_force_n.data() + e0, b_.pending.data() + e0)
+                 : flat_joint_update(fj, b_.geometry[b], kin, std::span<double>(b_.shear_force_n.data() + e0, us),
+                                     std::span<const std::uint8_t>(b_.bonded.data() + e0, us),
+                                     std::span<BreakMode>(b_.pending.data() + e0, us));
+      n_breaking += r.n_breaking;
+      // Force on disk 2: -F_n n + F_s s (tension positive pulls disk 2 back towards disk 1).
+      out = {-r.normal_force_n * nx + r.shear_force_n * sx, -r.normal_force_n * ny + r.shear_force_n * sy,
+             -a1 * r.shear_force_n - r.moment_nm, -a2 * r.shear_force_n + r.moment_nm};
+      // A fully broken joint whose interface is open everywhere (g_s - |theta_b| R > 0) and whose disks no
+      // longer overlap carries no force under either model: hand the pair over to the unjointed contact.
+      // The predictable test first: almost every joint still has a bonded element, while the sign of the
+      // surface gap is a coin toss (a mispredicted branch per joint).
+      bool any_bonded = intact;
+      if (!intact)
+        for (std::size_t e = e0; e < e0 + us; ++e) any_bonded = any_bonded || b_.bonded[e];
+      if (!any_bonded && r.n_breaking == 0 && k.surface_gap[q] > 0 &&
+          kin.gap_m > std::abs(kin.rotation_rad) * b_.geometry[b].half_length_m) {
+        b_.active[b] = 0;
+        out = {0, 0, 0, 0};
+        ++n_retired;
+      }
     }
   }
 

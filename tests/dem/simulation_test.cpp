@@ -196,6 +196,40 @@ TEST_CASE("engine: a single joint pulled apart breaks at 2 R t sigma_c", "[simul
   CHECK(sim.group_force(2)[0] == 0);
 }
 
+TEST_CASE("engine: prescribed disks keep their velocity and their raw force under local damping", "[simulation]") {
+  // Two disks, both prescribed, pulled apart at a constant speed with strong damping: the kicks must leave
+  // their velocities exactly as set and their forces undamped (the reaction a test or a tool reads). A free
+  // disk bonded to the moving one does get damped forces (the blend chooses per disk).
+  Simulation sim(glass(0.7), {});
+  sim.add_particle(0, 0, 10e-6);
+  sim.add_particle(20e-6, 0, 10e-6);
+  sim.add_particle(40e-6, 0, 10e-6);
+  sim.install_bond(0, 1);
+  sim.install_bond(1, 2);
+  auto& p = sim.particles();
+  p.group[0] = 1;
+  p.group[1] = 2;
+  p.vx[1] = 1e-3;  // m/s
+  sim.initialise();
+  const auto& b = sim.bonds();
+  const double kn_area = b.geometry[0].normal_stiffness * 2 * b.geometry[0].half_length_m * b.geometry[0].thickness_m;
+  int n_damped = 0;
+  for (int s = 0; s < 200; ++s) {
+    sim.step();
+    REQUIRE(p.vx[0] == 0.0);
+    REQUIRE(p.vx[1] == 1e-3);
+    REQUIRE(p.vy[1] == 0.0);
+    // Disk 0 feels only joint 0-1: the raw joint force, tension positive pulls it towards disk 1.
+    const double gap = p.x[1] - p.x[0] - 20e-6;
+    CHECK_THAT(p.fx[0], WithinRel(kn_area * gap, 1e-9));
+    // The free disk's force is the damped one: (1 - alpha sign(F v)) times the raw sum, 0.3x or 1.7x it.
+    const double raw_on_free = -kn_area * (p.x[2] - p.x[1] - 20e-6);
+    if (raw_on_free != 0 && std::abs(p.fx[2] - raw_on_free) > 1e-9 * std::abs(raw_on_free)) ++n_damped;
+  }
+  CHECK(p.x[1] > 20e-6 + 199 * 1e-3 * sim.time_step());
+  CHECK(n_damped > 100);
+}
+
 TEST_CASE("engine: a run restored from its saved state equals the uninterrupted run", "[simulation]") {
   Simulation sim = cluster(glass(0.2), 10, 10, 9);
   sim.initialise();
