@@ -43,7 +43,7 @@ inline double blend(bool take_a, double a, double b) {
 
 /// The first half kick of the free disks (group 0) with the (damped) forces of the last evaluation and the
 /// drift of all disks: this thread's share of a schedule(static) loop over the disks (orphaned worksharing).
-/// The arrays are distinct (restrict parameters) and a free disk is chosen by a select instead of a branch,
+/// The arrays are distinct (restrict parameters) and a free disk is chosen by a bitwise blend, not a branch,
 /// so the loop vectorises: the same arithmetic on each disk, the same bits.
 void kick_and_drift_disks(std::int64_t n, double dt, const std::uint8_t* __restrict group,
                           const double* __restrict inv_m, const double* __restrict inv_i, const double* __restrict fx,
