@@ -380,7 +380,8 @@ void Simulation::force_loops(ForceCounts& counts) {
   // Joints in blocks, each in two passes: first the kinematics of every joint of the block (independent from
   // joint to joint, so the square roots and divisions of several joints are in flight at once instead of one
   // joint's chain of them at a time), then the flat-joint law and the forces. The same operations on the
-  // same values as one pass: the same bits.
+  // same values as one pass: the same bits. The first pass also takes the retired joints (a few per cent of
+  // a cut; the second skips them): no branch there, and a retired joint's numbers are never read.
   constexpr std::int64_t kBlock = 64;
   const std::int64_t n_blocks = (nb + kBlock - 1) / kBlock;
 #pragma omp for schedule(static) nowait
@@ -389,7 +390,7 @@ void Simulation::force_loops(ForceCounts& counts) {
     struct {
       double nx[kBlock], ny[kBlock], a1[kBlock], a2[kBlock], surface_gap[kBlock], gap[kBlock], rotation[kBlock],
           shear_increment[kBlock];
-    } k;
+    } block;
     for (std::int64_t q = 0; q < count; ++q) {
       const auto b = static_cast<std::size_t>(first + q);
       const auto i = static_cast<std::size_t>(b_.i[b]), j = static_cast<std::size_t>(b_.j[b]);
@@ -400,10 +401,10 @@ void Simulation::force_loops(ForceCounts& counts) {
       const double a1 = rad[i] + 0.5 * surface_gap, a2 = rad[j] + 0.5 * surface_gap;  // centre to interface
       // Relative velocity of surface 2 w.r.t. surface 1 at the interface centre, along s (rotation included).
       const double vs = (vx[j] - vx[i]) * sx + (vy[j] - vy[i]) * sy - a2 * om[j] - a1 * om[i];
-      k.nx[q] = nx, k.ny[q] = ny, k.a1[q] = a1, k.a2[q] = a2, k.surface_gap[q] = surface_gap;
-      k.gap[q] = d - b_.ref_distance_m[b];
-      k.rotation[q] = th[j] - th[i] - b_.ref_rotation_rad[b];
-      k.shear_increment[q] = vs * dt;
+      block.nx[q] = nx, block.ny[q] = ny, block.a1[q] = a1, block.a2[q] = a2, block.surface_gap[q] = surface_gap;
+      block.gap[q] = d - b_.ref_distance_m[b];
+      block.rotation[q] = th[j] - th[i] - b_.ref_rotation_rad[b];
+      block.shear_increment[q] = vs * dt;
     }
     for (std::int64_t q = 0; q < count; ++q) {
       const auto b = static_cast<std::size_t>(first + q);
@@ -412,10 +413,10 @@ void Simulation::force_loops(ForceCounts& counts) {
         out = {0, 0, 0, 0};
         continue;
       }
-      const double nx = k.nx[q], ny = k.ny[q], sx = -ny, sy = nx, a1 = k.a1[q], a2 = k.a2[q];
+      const double nx = block.nx[q], ny = block.ny[q], sx = -ny, sy = nx, a1 = block.a1[q], a2 = block.a2[q];
       const std::size_t e0 = b * static_cast<std::size_t>(stride);
       const auto us = static_cast<std::size_t>(stride);
-      const FlatJointKinematics kin{k.gap[q], k.rotation[q], k.shear_increment[q]};
+      const FlatJointKinematics kin{block.gap[q], block.rotation[q], block.shear_increment[q]};
       const bool intact = stride == 2 && b_.bonded[e0] && b_.bonded[e0 + 1];
       const FlatJointResult r =
           intact ? flat_joint_update_two_bonded(fj, b_.geometry[b], kin, b_.shear_force_n.data() + e0, b_.pending.data() + e0)
@@ -433,7 +434,7 @@ void Simulation::force_loops(ForceCounts& counts) {
       bool any_bonded = intact;
       if (!intact)
         for (std::size_t e = e0; e < e0 + us; ++e) any_bonded = any_bonded || b_.bonded[e];
-      if (!any_bonded && r.n_breaking == 0 && k.surface_gap[q] > 0 &&
+      if (!any_bonded && r.n_breaking == 0 && block.surface_gap[q] > 0 &&
           kin.gap_m > std::abs(kin.rotation_rad) * b_.geometry[b].half_length_m) {
         b_.active[b] = 0;
         out = {0, 0, 0, 0};

@@ -150,6 +150,7 @@ inline FlatJointResult flat_joint_update_two_bonded(const FlatJointParams& p, co
   const double kn_t = geo.normal_stiffness * geo.thickness_m;
   const double ks_area = geo.shear_stiffness * area;
   const double theta = kin.rotation_rad;
+  // Element starts and centroids written as the general loop computes them (-R + e l_e), for the same bits.
   const double a0 = -geo.half_length_m + 0 * le, a1 = -geo.half_length_m + 1 * le;
   const v2d xi = {a0 + 0.5 * le, a1 + 0.5 * le};
   const v2d fs = v2d{shear_force_n[0], shear_force_n[1]} - ks_area * kin.shear_increment_m;
