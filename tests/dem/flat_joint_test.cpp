@@ -221,3 +221,60 @@ TEST_CASE("flat joint: the two-element intact path equals the general update to 
   CHECK(n_shear > 2000);
   CHECK(n_none > 2000);
 }
+
+TEST_CASE("flat joint: the intact path decides breaks as the stress test does, ulps from the envelopes",
+          "[flat_joint]") {
+  // The fast path skips the stresses when an element is far from both envelopes; this scans each envelope in
+  // steps of one ulp of the load, across it, for random joints and for strengths that make the shear envelope
+  // cancel (c close to sigma_c tan phi) or vanish (c = 0, sigma_c = 0). Every decision and every bit must
+  // equal the general update's, which always forms the stresses.
+  std::mt19937_64 rng(20261123);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const auto same_bits = [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+  const auto step_ulps = [](double v, int n) {
+    for (int s = 0; s < std::abs(n); ++s) v = std::nextafter(v, n > 0 ? INFINITY : -INFINITY);
+    return v;
+  };
+  int scans_crossing = 0, n_scans = 0;
+  for (int k = 0; k < 600; ++k) {
+    FlatJointParams raw;
+    raw.effective_modulus_pa = 107e9 * (1 + 0.5 * unit(rng));
+    raw.friction_angle_rad = 0.4 * (1 + unit(rng));
+    raw.tensile_strength_pa = 200e6 * (1 + 0.9 * unit(rng));
+    raw.cohesion_pa = 113e6 * (1 + 0.9 * unit(rng));
+    if (k % 5 == 1) raw.cohesion_pa = raw.tensile_strength_pa * std::tan(raw.friction_angle_rad) * (1 + 1e-9 * unit(rng));
+    if (k % 5 == 2) raw.cohesion_pa = 0;
+    if (k % 5 == 3) raw.tensile_strength_pa = 0;
+    Joint general(raw, 10e-6 * (1.15 + 0.15 * unit(rng)), 10e-6 * (1.15 + 0.15 * unit(rng)));
+    const double area = general.element_area();
+    const double kn_t_le = general.geo.normal_stiffness * general.geo.thickness_m * general.geo.half_length_m;
+    const bool tension_scan = k % 2 == 0;
+    // Tension: g_s such that sigma = sigma_c. Shear: sigma somewhere below sigma_c, |F_s| on the envelope.
+    const double sigma = tension_scan ? general.p.tensile_strength_pa : general.p.tensile_strength_pa * (0.9 - 2 * std::abs(unit(rng)));
+    const double gap0 = sigma * area / kn_t_le;
+    const double shear0 = std::max(0.0, general.p.cohesion_pa - sigma * general.p.tan_friction_angle) * area *
+                          (unit(rng) < 0 ? -1 : 1);
+    bool seen_break = false, seen_intact = false;
+    for (int m = -40; m <= 40; ++m) {
+      Joint fast = general;
+      const double gap = tension_scan ? step_ulps(gap0, m) : gap0;
+      for (auto& s : general.shear) s = tension_scan ? 0.0 : step_ulps(shear0, m);
+      fast.shear = general.shear;
+      const FlatJointKinematics kin{gap, 0.0, 0.0};
+      const FlatJointResult a = flat_joint_update(general.p, general.geo, kin, general.shear, general.bonded, general.breaks);
+      const FlatJointResult b = flat_joint_update_two_bonded(fast.p, fast.geo, kin, fast.shear.data(), fast.breaks.data());
+      REQUIRE(same_bits(a.normal_force_n, b.normal_force_n));
+      REQUIRE(same_bits(a.shear_force_n, b.shear_force_n));
+      REQUIRE(a.n_breaking == b.n_breaking);
+      for (std::size_t e = 0; e < 2; ++e) {
+        REQUIRE(same_bits(general.shear[e], fast.shear[e]));
+        REQUIRE(general.breaks[e] == fast.breaks[e]);
+      }
+      (a.n_breaking > 0 ? seen_break : seen_intact) = true;
+    }
+    ++n_scans;
+    scans_crossing += seen_break && seen_intact;
+  }
+  // The scans do straddle the envelopes: most see both decisions within +-40 ulps.
+  CHECK(scans_crossing > n_scans / 2);
+}

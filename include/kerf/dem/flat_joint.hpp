@@ -137,9 +137,10 @@ inline FlatJointResult flat_joint_update(const FlatJointParams& p, const FlatJoi
 
 /// flat_joint_update for the intact joint of the default interface: N_r = 2 and both elements bonded (nearly
 /// every joint of a cut). The same operations on the same values in the same order, hence the same result to
-/// the bit, but the two elements' normal, strength and shear arithmetic runs as two-lane vector operations
-/// (one division instead of two for each of sigma and tau) and the bending moment, equal for both elements, is
-/// computed once. The divisions dominated the joint loop; tests/dem/flat_joint_test.cpp checks the equality.
+/// the bit, but the two elements' normal, strength and shear arithmetic runs as two-lane vector operations,
+/// the bending moment, equal for both elements, is computed once, and the stresses (two divisions) are formed
+/// only for a joint near a strength envelope. The divisions dominated the joint loop;
+/// tests/dem/flat_joint_test.cpp checks the equality, on random joints and ulp by ulp across the envelopes.
 /// Requires p.n_elements == 2 and both elements bonded (the caller tests it).
 inline FlatJointResult flat_joint_update_two_bonded(const FlatJointParams& p, const FlatJointGeometry& geo,
                                                     const FlatJointKinematics& kin, double* shear_force_n,
@@ -156,16 +157,36 @@ inline FlatJointResult flat_joint_update_two_bonded(const FlatJointParams& p, co
   const v2d fs = v2d{shear_force_n[0], shear_force_n[1]} - ks_area * kin.shear_increment_m;
   const v2d fn = kn_t * le * (kin.gap_m - theta * xi);
   const double me = -kn_t * theta * le * le * le / 12.0;
-  const v2d sigma = fn / area;
-  const v2d tau = v2d{std::abs(fs[0]), std::abs(fs[1])} / area;
-  const v2d shear_limit = p.cohesion_pa - sigma * p.tan_friction_angle;
+  const v2d abs_fs = {std::abs(fs[0]), std::abs(fs[1])};
   FlatJointResult r;
-  for (int e = 0; e < 2; ++e) {
-    breaks[e] = sigma[e] > p.tensile_strength_pa ? BreakMode::tension
-                : tau[e] >= shear_limit[e]        ? BreakMode::shear
-                                                  : BreakMode::none;
-    r.n_breaking += breaks[e] != BreakMode::none;
-    shear_force_n[e] = fs[e];
+  // Far from both strength envelopes (nearly every joint of every step) no element can break, and the
+  // stresses need not be formed: the test is then made on forces, without the two divisions. The margin,
+  // 1e-12 of the terms, is thousands of times the rounding error of either form (a few 1e-16 of the same
+  // terms), so this filter only ever passes elements that the exact test below also leaves intact: the
+  // break decisions, and so the results, are those of the stress test to the bit (tested near the
+  // envelopes in tests/dem/flat_joint_test.cpp). NaN fails the filter and takes the exact test.
+  //   tension: fl(fn / A) > sigma_c needs fn / A > sigma_c (rounding is monotone and sigma_c a double);
+  //   shear:   fl(|fs| / A) >= fl(c - fl(sigma) tan phi) needs |fs| >= c A - fn tan phi up to a few
+  //            rounding errors of c A + |fn| tan phi (both sides times A > 0).
+  const double tension_bound = p.tensile_strength_pa * area * (1.0 - 1e-12);
+  const double cohesion_force = p.cohesion_pa * area;
+  const v2d fn_tan = fn * p.tan_friction_angle;
+  const v2d envelope_scale = cohesion_force + v2d{std::abs(fn_tan[0]), std::abs(fn_tan[1])};
+  const auto intact = (fn < tension_bound) & (abs_fs + 1e-12 * envelope_scale < cohesion_force - fn_tan);
+  if (intact[0] && intact[1]) {
+    breaks[0] = breaks[1] = BreakMode::none;
+    shear_force_n[0] = fs[0], shear_force_n[1] = fs[1];
+  } else {
+    const v2d sigma = fn / area;
+    const v2d tau = abs_fs / area;
+    const v2d shear_limit = p.cohesion_pa - sigma * p.tan_friction_angle;
+    for (int e = 0; e < 2; ++e) {
+      breaks[e] = sigma[e] > p.tensile_strength_pa ? BreakMode::tension
+                  : tau[e] >= shear_limit[e]        ? BreakMode::shear
+                                                    : BreakMode::none;
+      r.n_breaking += breaks[e] != BreakMode::none;
+      shear_force_n[e] = fs[e];
+    }
   }
   r.normal_force_n = 0.0 + fn[0] + fn[1];
   r.shear_force_n = 0.0 + fs[0] + fs[1];
