@@ -4,7 +4,7 @@
 #
 #   bash scripts/validate.sh                      # every case
 #   bash scripts/validate.sh soda_lime_cutting    # one case: k9_trepanning (seconds) or soda_lime_cutting
-#                                                 # (18 kerf-dem cuts, about 40 min on 2 cores; rerunning
+#                                                 # (18 kerf-dem cuts, about 35 min on 2 cores; rerunning
 #                                                 # reuses the replicates already finished)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
