@@ -40,6 +40,25 @@ struct Joint {
   double element_area() const { return 2 * geo.half_length_m / p.n_elements * geo.thickness_m; }
 };
 
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+/// Runs the general update on `general` and the intact two-element path on `fast` (the same joint and shear
+/// state) and requires the same resultants, shear forces and break decisions to the bit; returns the general
+/// result.
+FlatJointResult require_fast_path_equal(Joint& general, Joint& fast, const FlatJointKinematics& kin) {
+  const FlatJointResult a = flat_joint_update(general.p, general.geo, kin, general.shear, general.bonded, general.breaks);
+  const FlatJointResult b = flat_joint_update_two_bonded(fast.p, fast.geo, kin, fast.shear.data(), fast.breaks.data());
+  REQUIRE(same_bits(a.normal_force_n, b.normal_force_n));
+  REQUIRE(same_bits(a.shear_force_n, b.shear_force_n));
+  REQUIRE(same_bits(a.moment_nm, b.moment_nm));
+  REQUIRE(a.n_breaking == b.n_breaking);
+  for (std::size_t e = 0; e < 2; ++e) {
+    REQUIRE(same_bits(general.shear[e], fast.shear[e]));
+    REQUIRE(general.breaks[e] == fast.breaks[e]);
+  }
+  return a;
+}
+
 }  // namespace
 
 TEST_CASE("flat joint: stiffness and bending closed forms", "[flat_joint]") {
@@ -188,7 +207,6 @@ TEST_CASE("flat joint: the two-element intact path equals the general update to 
   std::mt19937_64 rng(20261122);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   int n_tension = 0, n_shear = 0, n_none = 0;
-  const auto same_bits = [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; };
   for (int k = 0; k < 20000; ++k) {
     FlatJointParams raw;
     raw.effective_modulus_pa = 107e9 * (1 + 0.5 * unit(rng));
@@ -202,15 +220,8 @@ TEST_CASE("flat joint: the two-element intact path equals the general update to 
     const FlatJointKinematics kin{strain * R, 4e-3 * unit(rng), 2e-3 * R * unit(rng)};
     for (auto& s : general.shear) s = 1.5 * unit(rng);  // N; c A_e is about 1 N
     fast.shear = general.shear;
-    const FlatJointResult a = flat_joint_update(general.p, general.geo, kin, general.shear, general.bonded, general.breaks);
-    const FlatJointResult b = flat_joint_update_two_bonded(fast.p, fast.geo, kin, fast.shear.data(), fast.breaks.data());
-    REQUIRE(same_bits(a.normal_force_n, b.normal_force_n));
-    REQUIRE(same_bits(a.shear_force_n, b.shear_force_n));
-    REQUIRE(same_bits(a.moment_nm, b.moment_nm));
-    REQUIRE(a.n_breaking == b.n_breaking);
+    require_fast_path_equal(general, fast, kin);
     for (std::size_t e = 0; e < 2; ++e) {
-      REQUIRE(same_bits(general.shear[e], fast.shear[e]));
-      REQUIRE(general.breaks[e] == fast.breaks[e]);
       n_tension += general.breaks[e] == BreakMode::tension;
       n_shear += general.breaks[e] == BreakMode::shear;
       n_none += general.breaks[e] == BreakMode::none;
@@ -230,7 +241,6 @@ TEST_CASE("flat joint: the intact path decides breaks as the stress test does, u
   // equal the general update's, which always forms the stresses.
   std::mt19937_64 rng(20261123);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
-  const auto same_bits = [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; };
   const auto step_ulps = [](double v, int n) {
     for (int s = 0; s < std::abs(n); ++s) v = std::nextafter(v, n > 0 ? INFINITY : -INFINITY);
     return v;
@@ -260,16 +270,7 @@ TEST_CASE("flat joint: the intact path decides breaks as the stress test does, u
       const double gap = tension_scan ? step_ulps(gap0, m) : gap0;
       for (auto& s : general.shear) s = tension_scan ? 0.0 : step_ulps(shear0, m);
       fast.shear = general.shear;
-      const FlatJointKinematics kin{gap, 0.0, 0.0};
-      const FlatJointResult a = flat_joint_update(general.p, general.geo, kin, general.shear, general.bonded, general.breaks);
-      const FlatJointResult b = flat_joint_update_two_bonded(fast.p, fast.geo, kin, fast.shear.data(), fast.breaks.data());
-      REQUIRE(same_bits(a.normal_force_n, b.normal_force_n));
-      REQUIRE(same_bits(a.shear_force_n, b.shear_force_n));
-      REQUIRE(a.n_breaking == b.n_breaking);
-      for (std::size_t e = 0; e < 2; ++e) {
-        REQUIRE(same_bits(general.shear[e], fast.shear[e]));
-        REQUIRE(general.breaks[e] == fast.breaks[e]);
-      }
+      const FlatJointResult a = require_fast_path_equal(general, fast, {gap, 0.0, 0.0});
       (a.n_breaking > 0 ? seen_break : seen_intact) = true;
     }
     ++n_scans;
