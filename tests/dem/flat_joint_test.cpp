@@ -40,13 +40,16 @@ struct Joint {
   double element_area() const { return 2 * geo.half_length_m / p.n_elements * geo.thickness_m; }
 };
 
-bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+bool same_bits(double a, double b) {
+  return std::memcmp(&a, &b, sizeof a) == 0;
+}
 
 /// Runs the general update on `general` and the intact two-element path on `fast` (the same joint and shear
 /// state) and requires the same resultants, shear forces and break decisions to the bit; returns the general
 /// result.
 FlatJointResult require_fast_path_equal(Joint& general, Joint& fast, const FlatJointKinematics& kin) {
-  const FlatJointResult a = flat_joint_update(general.p, general.geo, kin, general.shear, general.bonded, general.breaks);
+  const FlatJointResult a =
+      flat_joint_update(general.p, general.geo, kin, general.shear, general.bonded, general.breaks);
   const FlatJointResult b = flat_joint_update_two_bonded(fast.p, fast.geo, kin, fast.shear.data(), fast.breaks.data());
   REQUIRE(same_bits(a.normal_force_n, b.normal_force_n));
   REQUIRE(same_bits(a.shear_force_n, b.shear_force_n));
@@ -252,7 +255,8 @@ TEST_CASE("flat joint: the intact path decides breaks as the stress test does, u
     raw.friction_angle_rad = 0.4 * (1 + unit(rng));
     raw.tensile_strength_pa = 200e6 * (1 + 0.9 * unit(rng));
     raw.cohesion_pa = 113e6 * (1 + 0.9 * unit(rng));
-    if (k % 5 == 1) raw.cohesion_pa = raw.tensile_strength_pa * std::tan(raw.friction_angle_rad) * (1 + 1e-9 * unit(rng));
+    if (k % 5 == 1)
+      raw.cohesion_pa = raw.tensile_strength_pa * std::tan(raw.friction_angle_rad) * (1 + 1e-9 * unit(rng));
     if (k % 5 == 2) raw.cohesion_pa = 0;
     if (k % 5 == 3) raw.tensile_strength_pa = 0;
     Joint general(raw, 10e-6 * (1.15 + 0.15 * unit(rng)), 10e-6 * (1.15 + 0.15 * unit(rng)));
@@ -260,10 +264,11 @@ TEST_CASE("flat joint: the intact path decides breaks as the stress test does, u
     const double kn_t_le = general.geo.normal_stiffness * general.geo.thickness_m * general.geo.half_length_m;
     const bool tension_scan = k % 2 == 0;
     // Tension: g_s such that sigma = sigma_c. Shear: sigma somewhere below sigma_c, |F_s| on the envelope.
-    const double sigma = tension_scan ? general.p.tensile_strength_pa : general.p.tensile_strength_pa * (0.9 - 2 * std::abs(unit(rng)));
+    const double sigma =
+        tension_scan ? general.p.tensile_strength_pa : general.p.tensile_strength_pa * (0.9 - 2 * std::abs(unit(rng)));
     const double gap0 = sigma * area / kn_t_le;
-    const double shear0 = std::max(0.0, general.p.cohesion_pa - sigma * general.p.tan_friction_angle) * area *
-                          (unit(rng) < 0 ? -1 : 1);
+    const double shear0 =
+        std::max(0.0, general.p.cohesion_pa - sigma * general.p.tan_friction_angle) * area * (unit(rng) < 0 ? -1 : 1);
     bool seen_break = false, seen_intact = false;
     for (int m = -40; m <= 40; ++m) {
       Joint fast = general;

@@ -182,8 +182,8 @@ inline FlatJointResult flat_joint_update_two_bonded(const FlatJointParams& p, co
     const v2d shear_limit = p.cohesion_pa - sigma * p.tan_friction_angle;
     for (int e = 0; e < 2; ++e) {
       breaks[e] = sigma[e] > p.tensile_strength_pa ? BreakMode::tension
-                  : tau[e] >= shear_limit[e]        ? BreakMode::shear
-                                                    : BreakMode::none;
+                  : tau[e] >= shear_limit[e]       ? BreakMode::shear
+                                                   : BreakMode::none;
       r.n_breaking += breaks[e] != BreakMode::none;
       shear_force_n[e] = fs[e];
     }
