@@ -22,8 +22,6 @@ namespace kerf::dem {
 
 namespace {
 
-using v2d = double __attribute__((vector_size(16)));  // two-lane SSE2 arithmetic, lane by lane IEEE
-
 /// Square root of each lane, correctly rounded as std::sqrt (one sqrtpd instead of two sqrtsd on x86-64).
 inline v2d lane_sqrt(v2d v) {
 #if defined(__SSE2__)

@@ -18,6 +18,15 @@
 
 namespace kerf::dem {
 
+/// Two doubles in one SSE2 register (GCC vector extension): arithmetic lane by lane, each lane the same
+/// correctly rounded IEEE operation as on a double, so two-lane code gives the bits of scalar code.
+using v2d = double __attribute__((vector_size(16)));
+
+/// |v| lane by lane.
+inline v2d lane_abs(v2d v) {
+  return v2d{std::abs(v[0]), std::abs(v[1])};
+}
+
 /// Micro-parameters of the flat joint (physics-dem.md section 1). SI units.
 struct FlatJointParams {
   double effective_modulus_pa = 107e9;  ///< Ebar*: k_n = Ebar* / (R1 + R2)
@@ -145,7 +154,6 @@ inline FlatJointResult flat_joint_update(const FlatJointParams& p, const FlatJoi
 inline FlatJointResult flat_joint_update_two_bonded(const FlatJointParams& p, const FlatJointGeometry& geo,
                                                     const FlatJointKinematics& kin, double* shear_force_n,
                                                     BreakMode* breaks) {
-  using v2d = double __attribute__((vector_size(16)));
   const double le = 2.0 * geo.half_length_m / 2;
   const double area = le * geo.thickness_m;
   const double kn_t = geo.normal_stiffness * geo.thickness_m;
@@ -157,7 +165,7 @@ inline FlatJointResult flat_joint_update_two_bonded(const FlatJointParams& p, co
   const v2d fs = v2d{shear_force_n[0], shear_force_n[1]} - ks_area * kin.shear_increment_m;
   const v2d fn = kn_t * le * (kin.gap_m - theta * xi);
   const double me = -kn_t * theta * le * le * le / 12.0;
-  const v2d abs_fs = {std::abs(fs[0]), std::abs(fs[1])};
+  const v2d abs_fs = lane_abs(fs);
   FlatJointResult r;
   // Far from both strength envelopes (nearly every joint of every step) no element can break, and the
   // stresses need not be formed: the test is then made on forces, without the two divisions. The margin,
@@ -171,9 +179,9 @@ inline FlatJointResult flat_joint_update_two_bonded(const FlatJointParams& p, co
   const double tension_bound = p.tensile_strength_pa * area * (1.0 - 1e-12);
   const double cohesion_force = p.cohesion_pa * area;
   const v2d fn_tan = fn * p.tan_friction_angle;
-  const v2d envelope_scale = cohesion_force + v2d{std::abs(fn_tan[0]), std::abs(fn_tan[1])};
-  const auto intact = (fn < tension_bound) & (abs_fs + 1e-12 * envelope_scale < cohesion_force - fn_tan);
-  if (intact[0] && intact[1]) {
+  const v2d envelope_scale = cohesion_force + lane_abs(fn_tan);
+  const auto below_envelopes = (fn < tension_bound) & (abs_fs + 1e-12 * envelope_scale < cohesion_force - fn_tan);
+  if (below_envelopes[0] && below_envelopes[1]) {
     breaks[0] = breaks[1] = BreakMode::none;
     shear_force_n[0] = fs[0], shear_force_n[1] = fs[1];
   } else {
