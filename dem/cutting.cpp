@@ -72,6 +72,8 @@ CutParams read_cut_params(ObjectReader& root) {
     p.clearance_deg = tool->get_number_or("clearance_deg", p.clearance_deg, Range{0.0, 90.0, false, true}, "deg");
     p.edge_radius_m = units::um_to_m(tool->get_number_or("edge_radius_um", 0, Range::non_negative(), "um"));
     p.edge_segments = tool->get_int_or("edge_segments", p.edge_segments, 1, 64);
+    if (auto mu = tool->get_optional_number("friction_coefficient", Range::non_negative(), ""))
+      p.tool_friction_coefficient = *mu;
     tool->finish();
   }
   if (auto grooves = root.find_object("grooves")) {
@@ -95,6 +97,8 @@ Json cut_params_to_json(const CutParams& p) {
          {"tool", {{"rake_deg", p.rake_deg}, {"clearance_deg", p.clearance_deg},
                    {"edge_radius_um", units::m_to_um(p.edge_radius_m)}, {"edge_segments", p.edge_segments}}},
          {"grooves", {{"shape", p.groove_shape}}}};
+  // Only when given: scenes without it keep their replicate_inputs (and so their reusable replicates).
+  if (p.tool_friction_coefficient >= 0) j["tool"]["friction_coefficient"] = p.tool_friction_coefficient;
   if (p.groove_shape != "none") {
     j["grooves"]["depth_mm"] = units::m_to_mm(p.groove_depth_m);
     j["grooves"]["pitch_mm"] = units::m_to_mm(p.groove_pitch_m);
@@ -316,7 +320,9 @@ CutRun::CutRun(const Simulation& specimen, const CutParams& params)
   for (std::size_t k = 0; k < outline.size(); ++k) {
     const auto& a = outline[k];
     const auto& e = outline[(k + 1) % outline.size()];
-    sim_.add_wall({a[0], a[1], e[0], e[1], -params_.speed_m_per_s, 0});
+    Wall face{a[0], a[1], e[0], e[1], -params_.speed_m_per_s, 0};
+    face.friction_coefficient = params_.tool_friction_coefficient;
+    sim_.add_wall(face);
   }
   n_tool_walls_ = static_cast<std::int32_t>(outline.size());
   sim_.invalidate_neighbours();
@@ -357,7 +363,7 @@ void CutRun::finish() {
 }
 
 namespace {
-constexpr std::string_view kCutMagic = "KERFCUT2";
+constexpr std::string_view kCutMagic = "KERFCUT3";  // 3: tool_friction_coefficient
 }  // namespace
 
 template <class Self, class Io>
@@ -365,7 +371,8 @@ void CutRun::state_fields(Self& run, Io& io) {
   auto& p = run.params_;
   auto& r = run.res_;
   io(p.depth_of_cut_m, p.speed_m_per_s, p.length_m, p.rake_deg, p.clearance_deg, p.edge_radius_m, p.groove_depth_m,
-     p.groove_pitch_m, p.groove_width_m, p.groove_bottom_width_m, p.entry_fraction, p.window_m);
+     p.groove_pitch_m, p.groove_width_m, p.groove_bottom_width_m, p.entry_fraction, p.window_m,
+     p.tool_friction_coefficient);
   io(p.edge_segments, p.sample_every_steps, p.groove_shape, r.samples);
   io(r.y_top_m, r.y_cut_m, r.width_m, r.time_step_s, r.wall_time_s, run.t0_, r.workpiece_box_m);
   io(r.n_particles, r.n_removed_by_grooves, r.steps, run.first_tool_wall_, run.n_tool_walls_, run.finished_);

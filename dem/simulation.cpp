@@ -513,7 +513,9 @@ void Simulation::force_loops(ForceCounts& counts) {
     const double nx = dx / d, ny = dy / d, sx = -ny, sy = nx;  // n from the wall to the disk
     const double overlap = rad[u] - d, a = rad[u] - 0.5 * overlap;
     const double vs = (vx[u] - w.vx) * sx + (vy[u] - w.vy) * sy - a * om[u];
-    const LinearContactResult r = linear_contact_update(lc, rad[u], 0.0, t, overlap, vs * dt, wall_shear_[k]);
+    LinearContactParams wall_lc = lc;
+    if (w.friction_coefficient >= 0) wall_lc.friction_coefficient = w.friction_coefficient;
+    const LinearContactResult r = linear_contact_update(wall_lc, rad[u], 0.0, t, overlap, vs * dt, wall_shear_[k]);
     wall_out_[k] = {r.normal_force_n * nx + r.shear_force_n * sx, r.normal_force_n * ny + r.shear_force_n * sy,
                     -a * r.shear_force_n};
   }
@@ -698,7 +700,7 @@ std::size_t Simulation::memory_bytes() const {
 
 namespace {
 
-constexpr std::string_view kStateMagic = "KERFDEM1";
+constexpr std::string_view kStateMagic = "KERFDEM2";  // 2: Wall::friction_coefficient
 
 }  // namespace
 

@@ -249,6 +249,19 @@ TEST_CASE("cutting: a small cut regression (forces, cracks, determinism, grooves
   CHECK(restored.result().samples.back().main_force_n == a.samples.back().main_force_n);
   CHECK(restored.result().main_force_n == a.main_force_n);
   CHECK(restored.result().cracks.chip == a.cracks.chip);
+  // A frictionless tool (the engine test checks the law itself): other forces, and a checkpoint keeps the
+  // tool's friction (restored halfway, the rest of the cut is bit-identical to the uninterrupted one).
+  CutParams frictionless = p;
+  frictionless.tool_friction_coefficient = 0;
+  const CutResult smooth = run(frictionless);
+  CHECK(smooth.main_force_n != a.main_force_n);
+  CutRun smooth_half(specimen, frictionless);
+  for (std::size_t k = 0; k < smooth.samples.size() / 2; ++k) smooth_half.advance();
+  CutRun smooth_restored = CutRun::deserialize(smooth_half.serialize());
+  while (smooth_restored.advance()) {}
+  CHECK(smooth_restored.params().tool_friction_coefficient == 0.0);
+  CHECK(smooth_restored.result().main_force_n == smooth.main_force_n);
+  CHECK(smooth_restored.result().thrust_force_n == smooth.thrust_force_n);
   // Grooves: fewer particles.
   CutParams g = p;
   g.groove_shape = "rectangular";

@@ -248,3 +248,26 @@ TEST_CASE("engine: a run restored from its saved state equals the uninterrupted 
   CHECK(resumed.time() == sim.time());
   CHECK_THROWS_AS(Simulation::deserialize(saved.substr(0, saved.size() / 2)), kerf::ModelError);
 }
+
+TEST_CASE("engine: a wall's own friction coefficient limits the shear of its contacts", "[simulation]") {
+  // A held disk pressed 0.1 um into a wall that slides past it: once sliding, the wall feels a tangential
+  // force of mu times the normal one, with mu the wall's own coefficient, or the material's when it has none.
+  const auto slide = [](double wall_mu) {
+    Simulation sim(glass(0.0), {});
+    sim.add_particle(0, 0, 10e-6);
+    sim.particles().group[0] = 1;
+    Wall w{-50e-6, -9.9e-6, 50e-6, -9.9e-6, 0.1, 0};
+    w.friction_coefficient = wall_mu;
+    sim.add_wall(w);
+    sim.initialise();
+    // Sliding starts after mu kappa* overlap of travel: 0.42 um at mu = 1.5; the run slides several times that.
+    sim.run(20000);
+    const Wall& after = sim.walls()[0];
+    REQUIRE(after.fy < 0);  // the disk pushes the wall down
+    return std::abs(after.fx) / std::abs(after.fy);
+  };
+  CHECK(slide(0.0) == 0.0);
+  CHECK_THAT(slide(0.2), WithinRel(0.2, 1e-9));
+  CHECK_THAT(slide(-1.0), WithinRel(Material{}.contact.friction_coefficient, 1e-9));
+  CHECK_THAT(slide(1.5), WithinRel(1.5, 1e-9));
+}

@@ -35,6 +35,9 @@ struct CutParams {
   double rake_deg = -15, clearance_deg = 15;  ///< seed 000 Section 4
   double edge_radius_m = 0;     ///< 0: sharp edge
   int edge_segments = 4;        ///< wall segments approximating a rounded edge
+  /// Tool-workpiece Coulomb friction on every tool face; negative (the default): the workpiece material's
+  /// particle friction mu, as for any disk-wall contact (PFC's default). Not given by seed 000.
+  double tool_friction_coefficient = -1;
   std::string groove_shape = "none";  ///< "none", "rectangular", "trapezoidal"
   double groove_depth_m = 0.1e-3, groove_pitch_m = 0.2e-3, groove_width_m = 0.06e-3;
   double groove_bottom_width_m = 0.03e-3;  ///< trapezoidal only: width at the groove bottom
@@ -50,7 +53,8 @@ struct CutParams {
 void validate_cut_params(const CutParams& params);
 
 /// Reads the "cut" object (depth_of_cut_mm, speed_m_per_s, length_mm, entry_fraction,
-/// sample_every_steps, window_mm), the optional "tool" (rake_deg, clearance_deg, edge_radius_um, edge_segments)
+/// sample_every_steps, window_mm), the optional "tool" (rake_deg, clearance_deg, edge_radius_um, edge_segments,
+/// friction_coefficient)
 /// and "grooves" (shape, depth_mm, pitch_mm, width_mm, bottom_width_mm) objects of a scene, then validates.
 CutParams read_cut_params(ObjectReader& root);
 Json cut_params_to_json(const CutParams& params);

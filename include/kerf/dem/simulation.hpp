@@ -62,6 +62,8 @@ struct Wall {
   double vx = 0, vy = 0;       ///< prescribed velocity [m/s]
   double fx = 0, fy = 0;       ///< force the disks exert on the wall [N], last evaluation
   bool enabled = true;
+  /// Coulomb friction of the disk-wall contacts (a tool face's own friction); negative: the material's mu.
+  double friction_coefficient = -1;
 };
 
 /// One bond-element break (physics-dem.md section 1: every break is a crack event).
