@@ -21,6 +21,7 @@
 #include <optional>
 
 #include "kerf/dem/calibration.hpp"
+#include "kerf/dem/cut_calibration.hpp"
 #include "kerf/dem/cutting.hpp"
 #include "kerf/dem/lab_test.hpp"
 #include "kerf/dem/material.hpp"
@@ -52,7 +53,24 @@ struct Scene {
   CalibrationSpec calibration;
   std::string calibrated_name = "calibrated";
   bool install_material = false;  ///< also write data/materials/<name>.json (the data directory in use)
+  /// kind calibrate_cut: the bond-strength factor fitted to one measured cut (kerf/dem/cut_calibration.hpp).
+  struct CutFit {
+    double target_main_force_n = 0;
+    std::string target_source;
+    int replicates = 3;
+    double tolerance = 0.10;
+    int max_evaluations = 4;
+    double start_factor = 1;
+  } cut_fit;
 };
+
+/// calibration.material_name (a file name) and calibration.install_material, as calibrate and calibrate_cut read them.
+void read_material_output(ObjectReader& cal, Scene& s, const std::string& fallback) {
+  s.calibrated_name = cal.get_string_or("material_name", fallback);
+  if (s.calibrated_name.empty() || s.calibrated_name.find_first_of("/\\. ") != std::string::npos)
+    throw InputError(cal.key_path("material_name"), s.calibrated_name, "a file name without '/', '.', spaces");
+  s.install_material = cal.get_bool_or("install_material", false);
+}
 
 /// Reads one row of a macro-property table (data/experiments/*.csv: '#' comment lines, a header with
 /// youngs_modulus_GPa, tensile_strength_MPa, compressive_strength_MPa, poissons_ratio).
@@ -89,7 +107,7 @@ MacroProperties read_targets_csv(const std::string& path, const std::string& row
 Scene read_scene(const Json& doc, const fs::path& scene_dir) {
   ObjectReader root(doc, "");
   Scene s;
-  s.kind = root.get_choice("kind", {"specimen", "tension", "compression", "calibrate", "cut"});
+  s.kind = root.get_choice("kind", {"specimen", "tension", "compression", "calibrate", "cut", "calibrate_cut"});
   root.ignore("description");
   s.material = read_scene_material(root);
   if (auto spec = root.find_object("specimen")) {
@@ -114,7 +132,19 @@ Scene read_scene(const Json& doc, const fs::path& scene_dir) {
       s.loading = read_loading_spec(none, s.kind);
     }
   }
-  if (s.kind == "cut") s.cut = read_cut_params(root);
+  if (s.kind == "cut" || s.kind == "calibrate_cut") s.cut = read_cut_params(root);
+  if (s.kind == "calibrate_cut") {
+    auto& f = s.cut_fit;
+    ObjectReader cal = root.get_object("calibration");
+    f.target_main_force_n = cal.get_number("target_main_force_N", Range::positive(), "N");
+    f.target_source = cal.get_string_or("target_source", "");
+    f.replicates = cal.get_int_or("replicates", f.replicates, 2, 64);
+    f.tolerance = cal.get_number_or("tolerance_percent", 100 * f.tolerance, Range::open(0.0, 100.0), "%") / 100;
+    f.max_evaluations = cal.get_int_or("max_evaluations", f.max_evaluations, 1, 50);
+    f.start_factor = cal.get_number_or("start_strength_factor", f.start_factor, Range::positive(), "");
+    read_material_output(cal, s, "cut_calibrated");
+    cal.finish();
+  }
   if (s.kind == "calibrate") {
     auto& c = s.calibration;
     ObjectReader cal = root.get_object("calibration");
@@ -151,10 +181,7 @@ Scene read_scene(const Json& doc, const fs::path& scene_dir) {
     c.max_evaluations = cal.get_int_or("max_evaluations", 24, 1, 1000);
     c.method = cal.get_choice_or("method", "hybrid", {"hybrid", "secant"}) == "secant" ? CalibrationMethod::secant
                                                                                       : CalibrationMethod::hybrid;
-    s.calibrated_name = cal.get_string_or("material_name", "calibrated");
-    if (s.calibrated_name.empty() || s.calibrated_name.find_first_of("/\\. ") != std::string::npos)
-      throw InputError(cal.key_path("material_name"), s.calibrated_name, "a file name without '/', '.', spaces");
-    s.install_material = cal.get_bool_or("install_material", false);
+    read_material_output(cal, s, "calibrated");
     cal.finish();
     LoadingSpec load;
     if (auto loading = root.find_object("loading")) {
@@ -282,6 +309,16 @@ struct Checkpoint {
 
 /// Runs (or, with `known` from a checkpoint, continues) a calibration. With checkpoint_every > 0 a checkpoint
 /// is written after every evaluation (an evaluation is the unit of work that cannot be cut short).
+/// Writes the fitted material to DIR/<material_name>.json and, with install_material, to the data directory.
+void write_material_output(const Scene& scene, const Json& material, const fs::path& out, Json& summary) {
+  write_file_atomically(out / (scene.calibrated_name + ".json"), material.dump(2) + "\n");
+  if (scene.install_material) {
+    const fs::path installed = kerf::data_directory() / "materials" / (scene.calibrated_name + ".json");
+    write_file_atomically(installed, material.dump(2) + "\n");
+    summary["installed_material"] = installed.string();
+  }
+}
+
 int run_calibration(const Scene& scene, const Json& doc, const Simulation& specimen, Json summary, const fs::path& out,
                     int checkpoint_every, const std::string& scene_dir, const std::vector<CalibrationEvaluation>& known) {
   const auto start = std::chrono::steady_clock::now();
@@ -325,12 +362,7 @@ int run_calibration(const Scene& scene, const Json& doc, const Simulation& speci
       specimen.particles().size());
   const Json material = library_material_json(calibrated, "Flat-joint DEM material calibrated by kerf-dem",
                                               description, "kerf-dem calibrate (see description)");
-  write_file_atomically(out / (scene.calibrated_name + ".json"), material.dump(2) + "\n");
-  if (scene.install_material) {
-    const fs::path installed = kerf::data_directory() / "materials" / (scene.calibrated_name + ".json");
-    write_file_atomically(installed, material.dump(2) + "\n");
-    summary["installed_material"] = installed.string();
-  }
+  write_material_output(scene, material, out, summary);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   summary["results"] = Json{{"converged", r.converged},
                             {"max_error_percent", 100 * r.max_relative_error},
@@ -600,6 +632,99 @@ int run_cut_replicates(const Scene& scene, int replicates, Json summary, const f
   return 0;
 }
 
+/// kind calibrate_cut: fits the bond-strength factor s (kerf/dem/cut_calibration.hpp) so that the mean main
+/// force over `replicates` packings meets the target. Evaluation k runs its replicates in DIR/evaluation_k/
+/// (as --replicates does); rerunning the same command after a kill reuses every finished replicate, and the
+/// factors that follow are the same (each is computed from the forces read back, exact to the bit).
+int run_cut_calibration(const Scene& scene, const fs::path& out) {
+  const auto start = std::chrono::steady_clock::now();
+  const auto& fit = scene.cut_fit;
+  std::vector<CutCalibrationPoint> history;
+  Json evaluations = Json::array();
+  std::string log = csv_line({"evaluation", "strength_factor", "tensile_strength_MPa", "cohesion_MPa", "main_force_N",
+                              "main_force_replicate_std_N", "thrust_force_N", "thrust_force_replicate_std_N",
+                              "relative_error_percent", "wall_time_s"});
+  double s = fit.start_factor;
+  std::size_t best = 0;
+  bool converged = false;
+  for (int k = 1; k <= fit.max_evaluations && !converged; ++k) {
+    if (k > 1) s = next_strength_factor(history, fit.target_main_force_n);
+    Scene e = scene;
+    e.kind = "cut";
+    e.material = scale_bond_strengths(scene.material, s, fmt::format("{}_bond_strength_x{:.6g}", scene.material.name, s));
+    const fs::path dir = out / fmt::format("evaluation_{}", k);
+    fs::create_directories(dir);
+    std::cout << fmt::format("evaluation {}: bond strengths x {:.4g} (sigma_c {:.2f} MPa, c {:.2f} MPa), {} replicates\n", k,
+                             s, units::pa_to_mpa(e.material.joint.tensile_strength_pa),
+                             units::pa_to_mpa(e.material.joint.cohesion_pa), fit.replicates)
+              << std::flush;
+    run_cut_replicates(e, fit.replicates, Json{{"kind", "cut"}, {"material", material_to_json(e.material)},
+                                               {"threads", omp_get_max_threads()}}, dir);
+    const Json done = read_json_file((dir / "summary.json").string());
+    const Json& r = done["results"];
+    const double force = r["main_force_N"].get<double>();
+    const double error = force / fit.target_main_force_n - 1;
+    history.push_back({s, force});
+    if (std::abs(error) < std::abs(history[best].main_force_n / fit.target_main_force_n - 1)) best = history.size() - 1;
+    converged = std::abs(error) <= fit.tolerance;
+    const Json row{{"evaluation", k},
+                   {"strength_factor", s},
+                   {"tensile_strength_MPa", units::pa_to_mpa(e.material.joint.tensile_strength_pa)},
+                   {"cohesion_MPa", units::pa_to_mpa(e.material.joint.cohesion_pa)},
+                   {"main_force_N", force},
+                   {"main_force_replicate_std_N", r["main_force_replicate_std_N"]},
+                   {"thrust_force_N", r["thrust_force_N"]},
+                   {"thrust_force_replicate_std_N", r["thrust_force_replicate_std_N"]},
+                   {"relative_error_percent", 100 * error},
+                   {"directory", dir.filename().string()}};
+    evaluations.push_back(row);
+    log += csv_line({std::to_string(k), csv_number(s), csv_number(row["tensile_strength_MPa"].get<double>()),
+                     csv_number(row["cohesion_MPa"].get<double>()), csv_number(force),
+                     csv_number(r["main_force_replicate_std_N"].get<double>()), csv_number(r["thrust_force_N"].get<double>()),
+                     csv_number(r["thrust_force_replicate_std_N"].get<double>()), csv_number(100 * error),
+                     csv_number(done["wall_time_s"].get<double>())});
+    write_file_atomically(out / "calibration_log.csv", log);
+    std::cout << fmt::format("evaluation {}: main force {:.4g} N against {:.4g} N ({:+.1f} %, tolerance {:.0f} %)\n", k,
+                             force, fit.target_main_force_n, 100 * error, 100 * fit.tolerance)
+              << std::flush;
+  }
+  const CutCalibrationPoint& b = history[best];
+  Material named = scale_bond_strengths(scene.material, b.strength_factor, scene.calibrated_name);
+  named.name = scene.calibrated_name;  // factor 1 keeps the base's name
+  const double sem = evaluations[best]["main_force_replicate_std_N"].get<double>() / std::sqrt(fit.replicates);
+  const std::string description = fmt::format(
+      "{} with both bond strengths (sigma_c, c) x {:.4g}, fitted by kerf-dem calibrate_cut to a mean main force of "
+      "{:.4g} N{} ({} evaluations, {}converged: {:.4g} +- {:.2g} N, mean +- standard error over {} packings) on the "
+      "cut: depth {:g} mm, speed {:g} m/s, travel {:g} mm, rake {:g} deg, grooves {}. The macro strengths scale by the "
+      "same factor (exact trend), E and nu are those of the base material.",
+      scene.material.name, b.strength_factor, fit.target_main_force_n,
+      fit.target_source.empty() ? "" : " (" + fit.target_source + ")", history.size(), converged ? "" : "NOT ",
+      b.main_force_n, sem, fit.replicates, units::m_to_mm(scene.cut.depth_of_cut_m), scene.cut.speed_m_per_s,
+      units::m_to_mm(scene.cut.length_m), scene.cut.rake_deg, scene.cut.groove_shape);
+  const Json material = library_material_json(named, "Flat-joint DEM material fitted to one measured cut by kerf-dem",
+                                              description, "kerf-dem calibrate_cut (see description)");
+  Json summary{{"kind", scene.kind}, {"material", material_to_json(scene.material)}, {"threads", omp_get_max_threads()}};
+  summary["cut"] = cut_params_to_json(scene.cut);
+  write_material_output(scene, material, out, summary);
+  summary["results"] = Json{{"converged", converged},
+                            {"target_main_force_N", fit.target_main_force_n},
+                            {"target_source", fit.target_source},
+                            {"strength_factor", b.strength_factor},
+                            {"main_force_N", b.main_force_n},
+                            {"main_force_standard_error_N", sem},
+                            {"relative_error_percent", 100 * (b.main_force_n / fit.target_main_force_n - 1)},
+                            {"evaluations", evaluations},
+                            {"calibrated_material", material}};
+  summary["wall_time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  write_file_atomically(out / "summary.json", summary.dump(2) + "\n");
+  std::cout << fmt::format("cut calibration {} after {} evaluations: bond strengths x {:.4g}, main force {:.4g} +- {:.2g} N "
+                           "against {:.4g} N -> {}\n",
+                           converged ? "converged" : "did NOT converge", history.size(), b.strength_factor,
+                           b.main_force_n, sem, fit.target_main_force_n,
+                           (out / (scene.calibrated_name + ".json")).string());
+  return converged ? 0 : kExitModelError;
+}
+
 int run_command(const std::string& scene_path, const std::vector<std::string>& sets, const fs::path& out, int threads,
                 int checkpoint_every, int replicates) {
   if (threads > 0) omp_set_num_threads(threads);
@@ -612,11 +737,19 @@ int run_command(const std::string& scene_path, const std::vector<std::string>& s
   if (checkpoint_every > 0 && replicates > 1)
     throw InputError("--checkpoint-every", std::to_string(checkpoint_every), "no checkpoints with --replicates");
   if (replicates > 1 && scene.kind != "cut")
-    throw InputError("--replicates", std::to_string(replicates), "replicates only for cut scenes");
+    throw InputError("--replicates", std::to_string(replicates),
+                     "replicates only for cut scenes (calibrate_cut: calibration.replicates)");
+  if (checkpoint_every > 0 && scene.kind == "calibrate_cut")
+    throw InputError("--checkpoint-every", std::to_string(checkpoint_every),
+                     "no checkpoints for calibrate_cut (rerun the command: finished replicates are reused)");
+  if (scene.kind == "calibrate_cut" && scene.specimen_file)
+    throw InputError("specimen.file", *scene.specimen_file,
+                     "a scene that generates its specimen (calibrate_cut runs replicates on packings specimen.seed + k)");
   if (replicates > 1 && scene.specimen_file)
     throw InputError("--replicates", std::to_string(replicates),
                      "a scene that generates its specimen (replicates differ in specimen.seed), not specimen.file");
   fs::create_directories(out);
+  if (scene.kind == "calibrate_cut") return run_cut_calibration(scene, out);
   if (replicates > 1) {
     const Json summary{{"kind", scene.kind}, {"material", material_to_json(scene.material)},
                        {"threads", omp_get_max_threads()}};
@@ -688,7 +821,7 @@ int main(int argc, char** argv) {
   std::string out_dir = "out";
   int threads = 0, checkpoint_every = 0, replicates = 1;
   std::string resume_dir;
-  auto* run = app.add_subcommand("run", "run a scene (kind: specimen, tension, compression, calibrate, cut)");
+  auto* run = app.add_subcommand("run", "run a scene (kind: specimen, tension, compression, calibrate, cut, calibrate_cut)");
   run->add_option("scene", scene_path, "scene JSON file")->required();
   run->add_option("--set", sets, "override a scene value: key.path=value (repeatable)");
   run->add_option("--out", out_dir, "output directory (default: out)");

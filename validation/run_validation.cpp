@@ -1,5 +1,6 @@
 // Regenerates validation reports end to end: run_validation CASE|all OUT_DIR (all: OUT_DIR/<case>/ each).
-// Cases: k9_trepanning (seconds), soda_lime_cutting (kerf-dem runs: 18 cuts, about an hour on 2 cores).
+// Cases: k9_trepanning (seconds), soda_lime_cutting (kerf-dem runs: 18 cuts, about 35 min on 2 cores),
+// soda_lime_cutting_cut_fitted (the glass fitted to one cut by kerf-dem calibrate_cut: 12 cuts, about 25 min).
 // Exit status 0 when the acceptance bands hold, 1 when they do not, 2 for input errors.
 #include <fmt/format.h>
 
@@ -26,18 +27,18 @@ bool run_k9(const std::filesystem::path& out) {
   return v.passed();
 }
 
-bool run_cutting(const std::filesystem::path& out) {
+bool run_cutting(const std::filesystem::path& out, const std::string& case_name) {
 #ifdef KERF_DEM_PROGRAM
   const char* program = std::getenv("KERF_DEM");  // another kerf-dem build, if set
   const kerf::CuttingValidation v =
-      kerf::run_soda_lime_cutting_validation(out, program && *program ? program : KERF_DEM_PROGRAM);
+      kerf::run_soda_lime_cutting_validation(out, program && *program ? program : KERF_DEM_PROGRAM, case_name);
   for (const auto& file : v.files) fmt::print("wrote {}\n", file.string());
   for (const auto& failure : v.failures) fmt::print(stderr, "FAILED: {}\n", failure);
-  fmt::print("soda_lime_cutting: {}\n", v.passed() ? "PASSED" : "FAILED");
+  fmt::print("{}: {}\n", case_name, v.passed() ? "PASSED" : "FAILED");
   return v.passed();
 #else
   (void)out;
-  throw kerf::InputError("CASE", "soda_lime_cutting", "a build with the DEM (kerf-dem)");
+  throw kerf::InputError("CASE", case_name, "a build with the DEM (kerf-dem)");
 #endif
 }
 
@@ -45,18 +46,21 @@ bool run_cutting(const std::filesystem::path& out) {
 
 int main(int argc, char** argv) {
   const std::string which = argc == 3 ? argv[1] : "";
-  if (which != "k9_trepanning" && which != "soda_lime_cutting" && which != "all") {
-    fmt::print(stderr, "usage: {} k9_trepanning|soda_lime_cutting|all OUT_DIR\n", argc > 0 ? argv[0] : "run_validation");
+  const bool cutting = which == "soda_lime_cutting" || which == "soda_lime_cutting_cut_fitted";
+  if (which != "k9_trepanning" && !cutting && which != "all") {
+    fmt::print(stderr, "usage: {} k9_trepanning|soda_lime_cutting|soda_lime_cutting_cut_fitted|all OUT_DIR\n",
+               argc > 0 ? argv[0] : "run_validation");
     return kerf::kExitInputError;
   }
   try {
     const std::filesystem::path out = argv[2];
     bool passed = true;
     if (which == "k9_trepanning") passed = run_k9(out);
-    if (which == "soda_lime_cutting") passed = run_cutting(out);
+    if (cutting) passed = run_cutting(out, which);
     if (which == "all") {
       passed = run_k9(out / "k9_trepanning");
-      passed = run_cutting(out / "soda_lime_cutting") && passed;
+      for (const std::string name : {"soda_lime_cutting", "soda_lime_cutting_cut_fitted"})
+        passed = run_cutting(out / name, name) && passed;
     }
     fmt::print("{}\n", passed ? "PASSED" : "FAILED");
     return passed ? 0 : 1;

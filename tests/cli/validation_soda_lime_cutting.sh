@@ -52,6 +52,20 @@ cp "$work/out/kerf_dem_replicates.csv" "$work/first.csv"
 "$validate" soda_lime_cutting "$work/out" >"$work/log" 2>&1
 [ "$(grep -c "reusing" "$work/log")" -eq 4 ] || fail "rerun did not reuse the 4 replicates: $(cat "$work/log")"
 cmp -s "$work/first.csv" "$work/out/kerf_dem_replicates.csv" || fail "rerun changed the table"
+# The fitted case: the same runs with a note and the check of the fitted force reported as FITTED, outside the verdict.
+fitted_dir="$work/tree/validation/soda_lime_cutting_cut_fitted"
+cp -r "$case_dir" "$fitted_dir"
+sed -i 's/"acceptance": {/"note": "Material fitted to one cut.", "acceptance": {"fitted": {"depth_of_cut_mm": 0.1, "force": "main"}, /' \
+  "$fitted_dir/validation.json"
+"$validate" soda_lime_cutting_cut_fitted "$work/fitted" >"$work/log" 2>&1
+rc=$?
+[ $rc -eq 0 ] || [ $rc -eq 1 ] || fail "fitted case: exit $rc: $(tail -5 "$work/log")"
+grep -q "^Material fitted to one cut.$" "$work/fitted/report.md" || fail "fitted case: no note in report.md"
+grep -q "^- FITTED \*\*regular 0.1 mm: main force" "$work/fitted/report.md" || fail "fitted case: no FITTED check"
+! grep -q "^- [A-Z]* \*\*regular 0.1 mm: main force.*(band: |error| <= 20 %)$" "$work/fitted/report.md" ||
+  fail "fitted case: the fitted check was also judged"
+grep -q "^- \(PASS\|FAIL\) \*\*regular 0.1 mm: thrust force" "$work/fitted/report.md" || fail "fitted case: thrust not judged"
+grep -q '"fitted": true' "$work/fitted/summary.json" || fail "fitted case: summary.json does not mark the fitted check"
 # Bad input: exit 2 naming the field.
 sed -i 's/"surface": "grooved"/"surface": "polished"/' "$case_dir/validation.json"
 "$validate" soda_lime_cutting "$work/bad" >"$work/log" 2>&1
