@@ -3,9 +3,10 @@
 # acceptance bands: exit status 0 when all hold. Installs and builds first, like the quick start.
 #
 #   bash scripts/validate.sh                      # every case
-#   bash scripts/validate.sh soda_lime_cutting    # one case: k9_trepanning (seconds) or soda_lime_cutting
+#   bash scripts/validate.sh soda_lime_cutting    # one case: k9_trepanning (seconds), soda_lime_cutting
 #                                                 # (18 kerf-dem cuts, about 35 min on 2 cores; rerunning
-#                                                 # reuses the replicates already finished)
+#                                                 # reuses the replicates already finished) or
+#                                                 # soda_lime_cutting_cut_fitted (12 cuts, about 34 min)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 case="${1:-all}"
