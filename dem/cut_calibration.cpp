@@ -1,10 +1,10 @@
 // Calibration to one measured cut: the strength factor and its update (see the header).
 #include "kerf/dem/cut_calibration.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-
-#include <fmt/format.h>
 
 #include "kerf/error.hpp"
 
@@ -31,7 +31,8 @@ double next_strength_factor(const std::vector<CutCalibrationPoint>& history, dou
   double slope = 1;
   for (auto it = history.rbegin() + 1; it != history.rend(); ++it) {
     if (it->strength_factor == last.strength_factor || !(it->main_force_n > 0)) continue;
-    const double p = std::log(last.main_force_n / it->main_force_n) / std::log(last.strength_factor / it->strength_factor);
+    const double p =
+        std::log(last.main_force_n / it->main_force_n) / std::log(last.strength_factor / it->strength_factor);
     if (std::isfinite(p)) slope = std::clamp(p, 0.5, 2.0);
     break;
   }

@@ -4,7 +4,8 @@
 //   kerf-dem resume DIR [--threads N]
 //
 // Scene kinds: "specimen" (genesis, saved for reuse), "tension", "compression" (seed 000 calibration
-// tests), "calibrate", "cut" (orthogonal cutting, seed 000 Section 4). Exit status 2 for bad input (the message names the field, the value and what was expected),
+// tests), "calibrate", "cut" (orthogonal cutting, seed 000 Section 4), "calibrate_cut" (bond strengths fitted to
+// one measured cut). Exit status 2 for bad input (the message names the field, the value and what was expected),
 // 3 when the model fails (e.g. an unstable run).
 #include <omp.h>
 
@@ -307,8 +308,6 @@ struct Checkpoint {
   }
 };
 
-/// Runs (or, with `known` from a checkpoint, continues) a calibration. With checkpoint_every > 0 a checkpoint
-/// is written after every evaluation (an evaluation is the unit of work that cannot be cut short).
 /// Writes the fitted material to DIR/<material_name>.json and, with install_material, to the data directory.
 void write_material_output(const Scene& scene, const Json& material, const fs::path& out, Json& summary) {
   write_file_atomically(out / (scene.calibrated_name + ".json"), material.dump(2) + "\n");
@@ -319,6 +318,8 @@ void write_material_output(const Scene& scene, const Json& material, const fs::p
   }
 }
 
+/// Runs (or, with `known` from a checkpoint, continues) a calibration. With checkpoint_every > 0 a checkpoint
+/// is written after every evaluation (an evaluation is the unit of work that cannot be cut short).
 int run_calibration(const Scene& scene, const Json& doc, const Simulation& specimen, Json summary, const fs::path& out,
                     int checkpoint_every, const std::string& scene_dir, const std::vector<CalibrationEvaluation>& known) {
   const auto start = std::chrono::steady_clock::now();
