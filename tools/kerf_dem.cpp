@@ -642,9 +642,14 @@ int run_cut_calibration(const Scene& scene, const fs::path& out) {
   const auto& fit = scene.cut_fit;
   std::vector<CutCalibrationPoint> history;
   Json evaluations = Json::array();
-  std::string log = csv_line({"evaluation", "strength_factor", "tensile_strength_MPa", "cohesion_MPa", "main_force_N",
-                              "main_force_replicate_std_N", "thrust_force_N", "thrust_force_replicate_std_N",
-                              "relative_error_percent", "wall_time_s"});
+  // calibration_log.csv: the evaluation's number, these fields of its summary row, and its wall time.
+  const std::vector<std::string> logged{"strength_factor",   "tensile_strength_MPa",       "cohesion_MPa",
+                                        "main_force_N",      "main_force_replicate_std_N", "thrust_force_N",
+                                        "thrust_force_replicate_std_N", "relative_error_percent"};
+  std::vector<std::string> header{"evaluation"};
+  header.insert(header.end(), logged.begin(), logged.end());
+  header.push_back("wall_time_s");
+  std::string log = csv_line(header);
   double s = fit.start_factor;
   std::size_t best = 0;
   bool converged = false;
@@ -679,11 +684,10 @@ int run_cut_calibration(const Scene& scene, const fs::path& out) {
                    {"relative_error_percent", 100 * error},
                    {"directory", dir.filename().string()}};
     evaluations.push_back(row);
-    log += csv_line({std::to_string(k), csv_number(s), csv_number(row["tensile_strength_MPa"].get<double>()),
-                     csv_number(row["cohesion_MPa"].get<double>()), csv_number(force),
-                     csv_number(r["main_force_replicate_std_N"].get<double>()), csv_number(r["thrust_force_N"].get<double>()),
-                     csv_number(r["thrust_force_replicate_std_N"].get<double>()), csv_number(100 * error),
-                     csv_number(done["wall_time_s"].get<double>())});
+    std::vector<std::string> cells{std::to_string(k)};
+    for (const auto& key : logged) cells.push_back(csv_number(row[key].get<double>()));
+    cells.push_back(csv_number(done["wall_time_s"].get<double>()));
+    log += csv_line(cells);
     write_file_atomically(out / "calibration_log.csv", log);
     std::cout << fmt::format("evaluation {}: main force {:.4g} N against {:.4g} N ({:+.1f} %, tolerance {:.0f} %)\n", k,
                              force, fit.target_main_force_n, 100 * error, 100 * fit.tolerance)

@@ -4,6 +4,8 @@
 // Exit status 0 when the acceptance bands hold, 1 when they do not, 2 for input errors.
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <array>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -46,7 +48,8 @@ bool run_cutting(const std::filesystem::path& out, const std::string& case_name)
 
 int main(int argc, char** argv) {
   const std::string which = argc == 3 ? argv[1] : "";
-  const bool cutting = which == "soda_lime_cutting" || which == "soda_lime_cutting_cut_fitted";
+  const std::array<std::string, 2> cutting_cases{"soda_lime_cutting", "soda_lime_cutting_cut_fitted"};
+  const bool cutting = std::find(cutting_cases.begin(), cutting_cases.end(), which) != cutting_cases.end();
   if (which != "k9_trepanning" && !cutting && which != "all") {
     fmt::print(stderr, "usage: {} k9_trepanning|soda_lime_cutting|soda_lime_cutting_cut_fitted|all OUT_DIR\n",
                argc > 0 ? argv[0] : "run_validation");
@@ -59,8 +62,7 @@ int main(int argc, char** argv) {
     if (cutting) passed = run_cutting(out, which);
     if (which == "all") {
       passed = run_k9(out / "k9_trepanning");
-      for (const std::string name : {"soda_lime_cutting", "soda_lime_cutting_cut_fitted"})
-        passed = run_cutting(out / name, name) && passed;
+      for (const std::string& name : cutting_cases) passed = run_cutting(out / name, name) && passed;
     }
     fmt::print("{}\n", passed ? "PASSED" : "FAILED");
     return passed ? 0 : 1;
