@@ -1,7 +1,9 @@
-// Regenerates validation reports end to end: run_validation CASE|all OUT_DIR (all: OUT_DIR/<case>/ each).
+// Regenerates validation reports end to end: run_validation CASE|all OUT_DIR [--replicates N] (all: OUT_DIR/<case>/
+// each; --replicates: packings per condition of the cutting cases instead of validation.json's).
 // Cases: k9_trepanning (seconds), soda_lime_cutting (kerf-dem runs: 18 cuts, about 35 min on 2 cores),
 // soda_lime_cutting_cut_fitted (the glass fitted to one cut by kerf-dem calibrate_cut: 12 cuts, about 25 min).
 // Exit status 0 when the acceptance bands hold, 1 when they do not, 2 for input errors.
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -11,6 +13,7 @@
 #include <exception>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "kerf/analytic/trepanning_validation.hpp"
 #include "kerf/error.hpp"
@@ -29,17 +32,17 @@ bool run_k9(const std::filesystem::path& out) {
   return v.passed();
 }
 
-bool run_cutting(const std::filesystem::path& out, const std::string& case_name) {
+bool run_cutting(const std::filesystem::path& out, const std::string& case_name, int replicates) {
 #ifdef KERF_DEM_PROGRAM
   const char* program = std::getenv("KERF_DEM");  // another kerf-dem build, if set
   const kerf::CuttingValidation v =
-      kerf::run_soda_lime_cutting_validation(out, program && *program ? program : KERF_DEM_PROGRAM, case_name);
+      kerf::run_soda_lime_cutting_validation(out, program && *program ? program : KERF_DEM_PROGRAM, case_name, replicates);
   for (const auto& file : v.files) fmt::print("wrote {}\n", file.string());
   for (const auto& failure : v.failures) fmt::print(stderr, "FAILED: {}\n", failure);
   fmt::print("{}: {}\n", case_name, v.passed() ? "PASSED" : "FAILED");
   return v.passed();
 #else
-  (void)out;
+  (void)out, (void)replicates;
   throw kerf::InputError("CASE", case_name, "a build with the DEM (kerf-dem)");
 #endif
 }
@@ -47,22 +50,32 @@ bool run_cutting(const std::filesystem::path& out, const std::string& case_name)
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::string which = argc == 3 ? argv[1] : "";
   const std::array<std::string, 2> cutting_cases{"soda_lime_cutting", "soda_lime_cutting_cut_fitted"};
-  const bool cutting = std::find(cutting_cases.begin(), cutting_cases.end(), which) != cutting_cases.end();
-  if (which != "k9_trepanning" && !cutting && which != "all") {
-    fmt::print(stderr, "usage: {} k9_trepanning|soda_lime_cutting|soda_lime_cutting_cut_fitted|all OUT_DIR\n",
-               argc > 0 ? argv[0] : "run_validation");
-    return kerf::kExitInputError;
-  }
+  CLI::App app{"Regenerates kerf's validation reports end to end (exit 0: bands hold, 1: they do not, 2: input error)"};
+  std::string which;
+  std::filesystem::path out;
+  int replicates = 0;
+  app.add_option("case", which, "the case: k9_trepanning, soda_lime_cutting, soda_lime_cutting_cut_fitted or all")
+      ->required()
+      ->check(CLI::IsMember(std::vector<std::string>{"k9_trepanning", cutting_cases[0], cutting_cases[1], "all"}));
+  app.add_option("out_dir", out, "where the report goes (all: one folder per case)")->required();
+  app.add_option("--replicates", replicates,
+                 "packings per condition of the cutting cases (default: validation.json's); finished ones are reused")
+      ->check(CLI::Range(2, 100));
   try {
-    const std::filesystem::path out = argv[2];
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : kerf::kExitInputError;
+  }
+  const bool cutting = std::find(cutting_cases.begin(), cutting_cases.end(), which) != cutting_cases.end();
+  try {
     bool passed = true;
     if (which == "k9_trepanning") passed = run_k9(out);
-    if (cutting) passed = run_cutting(out, which);
+    if (cutting) passed = run_cutting(out, which, replicates);
     if (which == "all") {
       passed = run_k9(out / "k9_trepanning");
-      for (const std::string& name : cutting_cases) passed = run_cutting(out / name, name) && passed;
+      for (const std::string& name : cutting_cases) passed = run_cutting(out / name, name, replicates) && passed;
     }
     fmt::print("{}\n", passed ? "PASSED" : "FAILED");
     return passed ? 0 : 1;

@@ -18,8 +18,9 @@ struct CuttingValidation {
 /// Runs every condition of validation/<case_name>/validation.json with the kerf-dem program (finished
 /// replicates are reused), then writes the tables, the two comparison reports and report.md/summary.json
 /// into `out_dir`. Cases: soda_lime_cutting (the Table-2-calibrated glass) and soda_lime_cutting_cut_fitted
-/// (the glass whose bond strengths were fitted to one cut by kerf-dem calibrate_cut).
+/// (the glass whose bond strengths were fitted to one cut by kerf-dem calibrate_cut). `replicates` (2-100)
+/// overrides validation.json's packings per condition; 0 keeps it.
 CuttingValidation run_soda_lime_cutting_validation(const std::filesystem::path& out_dir, const std::filesystem::path& kerf_dem,
-                                                   const std::string& case_name = "soda_lime_cutting");
+                                                   const std::string& case_name = "soda_lime_cutting", int replicates = 0);
 
 }  // namespace kerf

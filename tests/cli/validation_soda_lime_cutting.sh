@@ -52,6 +52,32 @@ cp "$work/out/kerf_dem_replicates.csv" "$work/first.csv"
 "$validate" soda_lime_cutting "$work/out" >"$work/log" 2>&1
 [ "$(grep -c "reusing" "$work/log")" -eq 4 ] || fail "rerun did not reuse the 4 replicates: $(cat "$work/log")"
 cmp -s "$work/first.csv" "$work/out/kerf_dem_replicates.csv" || fail "rerun changed the table"
+# Every check carries its standard error: for the groove ratio, ratio x hypot of the two relative standard
+# errors of the mean (sample std / sqrt(n)) of kerf-dem's replicates.
+grep -q "standard error" "$work/out/report.md" || fail "report.md gives no standard errors"
+python3 - "$work/out" <<'PY' || fail "groove-ratio standard error"
+import csv, json, math, statistics, sys
+rows = list(csv.DictReader(open(sys.argv[1] + "/kerf_dem_replicates.csv")))
+def mean_sem(surface):
+    v = [float(r["main_force_N"]) for r in rows if r["surface"] == surface]
+    return statistics.mean(v), statistics.stdev(v) / math.sqrt(len(v))
+(g, sg), (r, sr) = mean_sem("grooved"), mean_sem("regular")
+want = g / r * math.hypot(sg / g, sr / r)
+check = [c for c in json.load(open(sys.argv[1] + "/summary.json"))["checks"] if c["check"].startswith("grooved / regular")][0]
+ok = abs(check["standard_error"] - want) <= 1e-9 * want and check["resolved"] == (abs(check["value"] - 0.3333) >= 2 * want)
+print("standard error", check["standard_error"], "expected", want)
+sys.exit(0 if ok else 1)
+PY
+# --replicates runs more packings and reuses the finished ones; out of range is a usage error (exit 2).
+"$validate" soda_lime_cutting "$work/out" --replicates 3 >"$work/log" 2>&1
+rc=$?
+[ $rc -eq 0 ] || [ $rc -eq 1 ] || fail "--replicates 3: exit $rc: $(tail -5 "$work/log")"
+[ "$(grep -c "reusing" "$work/log")" -eq 4 ] || fail "--replicates 3 did not reuse the 4 finished replicates"
+[ "$(grep -c '^kerf_dem,' "$work/out/kerf_dem_replicates.csv")" -eq 6 ] || fail "expected 6 replicate rows"
+grep -q "3 replicates per condition" "$work/out/report.md" || fail "report.md does not say 3 replicates"
+"$validate" soda_lime_cutting "$work/out" --replicates 1 >"$work/log" 2>&1
+[ $? -eq 2 ] || fail "--replicates 1 did not exit 2"
+grep -q "replicates" "$work/log" || fail "--replicates 1: error does not name the option"
 # The fitted case: the same runs with a note and the check of the fitted force reported as FITTED, outside the verdict.
 fitted_dir="$work/tree/validation/soda_lime_cutting_cut_fitted"
 cp -r "$case_dir" "$fitted_dir"
