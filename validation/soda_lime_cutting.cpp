@@ -349,8 +349,13 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
   md += "\n## Expected physics and beyond the paper (reported, not bands)\n\n";
   Json physics = Json::object();
   if (const auto *a = find("none", 0.1), *b = find("none", 0.2); a && b) {
-    md += fmt::format("- Regular, 0.1 -> 0.2 mm: main force {}, thrust {} (the paper's DEM: {}, {}).\n",
-                      pct(b->main_n / a->main_n - 1), pct(b->thrust_n / a->thrust_n - 1),
+    // Standard errors of the two ratios, propagated to first order from the means' standard errors.
+    const double main_se = b->main_n / a->main_n * std::hypot(a->main_sem_n() / a->main_n, b->main_sem_n() / b->main_n);
+    const double thrust_se =
+        b->thrust_n / a->thrust_n * std::hypot(a->thrust_sem_n() / a->thrust_n, b->thrust_sem_n() / b->thrust_n);
+    md += fmt::format("- Regular, 0.1 -> 0.2 mm: main force {} ± {:.0f} %, thrust {} ± {:.0f} % (standard errors; the "
+                      "paper's DEM: {}, {}).\n",
+                      pct(b->main_n / a->main_n - 1), 100 * main_se, pct(b->thrust_n / a->thrust_n - 1), 100 * thrust_se,
                       pct(paper_dem_mean("main_force", "regular", 0.2) / paper_dem_mean("main_force", "regular", 0.1) - 1),
                       pct(paper_dem_mean("thrust_force", "regular", 0.2) / paper_dem_mean("thrust_force", "regular", 0.1) - 1));
     physics["regular_main_force_change_0.1_to_0.2"] = b->main_n / a->main_n - 1;

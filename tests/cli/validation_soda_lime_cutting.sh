@@ -53,9 +53,10 @@ cp "$work/out/kerf_dem_replicates.csv" "$work/first.csv"
 [ "$(grep -c "reusing" "$work/log")" -eq 4 ] || fail "rerun did not reuse the 4 replicates: $(cat "$work/log")"
 cmp -s "$work/first.csv" "$work/out/kerf_dem_replicates.csv" || fail "rerun changed the table"
 # Every check carries its standard error: for the groove ratio, ratio x hypot of the two relative standard
-# errors of the mean (sample std / sqrt(n)) of kerf-dem's replicates.
+# errors of the mean (sample std / sqrt(n)) of kerf-dem's replicates; against the paper's DEM, kerf's and the
+# paper's replicates alike.
 grep -q "standard error" "$work/out/report.md" || fail "report.md gives no standard errors"
-python3 - "$work/out" <<'PY' || fail "groove-ratio standard error"
+python3 - "$work/out" "$case_dir/soda_lime_orthogonal_cutting.csv" <<'PY' || fail "standard errors of the checks"
 import csv, json, math, statistics, sys
 rows = list(csv.DictReader(open(sys.argv[1] + "/kerf_dem_replicates.csv")))
 def mean_sem(surface):
@@ -65,7 +66,15 @@ def mean_sem(surface):
 want = g / r * math.hypot(sg / g, sr / r)
 check = [c for c in json.load(open(sys.argv[1] + "/summary.json"))["checks"] if c["check"].startswith("grooved / regular")][0]
 ok = abs(check["standard_error"] - want) <= 1e-9 * want and check["resolved"] == (abs(check["value"] - 0.3333) >= 2 * want)
-print("standard error", check["standard_error"], "expected", want)
+print("groove ratio: standard error", check["standard_error"], "expected", want)
+# The regular main force against the paper's DEM: error = kerf / paper - 1, both means with their standard errors.
+paper = [float(r["main_force_N"]) for r in csv.DictReader(l for l in open(sys.argv[2]) if not l.startswith("#"))
+         if r["source"] == "paper_dem" and r["surface"] == "regular" and float(r["depth_of_cut_mm"]) == 0.1]
+p, sp = statistics.mean(paper), statistics.stdev(paper) / math.sqrt(len(paper))
+want = r / p * math.hypot(sr / r, sp / p)
+check = [c for c in json.load(open(sys.argv[1] + "/summary.json"))["checks"] if c["check"].startswith("regular 0.1 mm: main")][0]
+ok = ok and abs(check["standard_error"] - want) <= 1e-9 * want and abs(check["value"] - (r / p - 1)) <= 1e-9
+print("regular main error: standard error", check["standard_error"], "expected", want)
 sys.exit(0 if ok else 1)
 PY
 # --replicates runs more packings and reuses the finished ones; out of range is a usage error (exit 2).
