@@ -23,6 +23,14 @@ void require(bool ok, const std::string& key, double value, const std::string& e
 
 /// Wedge angle between the rake and clearance faces [rad]: 90 deg - rake - clearance.
 double wedge_angle_rad(const CutParams& p) { return units::deg_to_rad(90.0 - p.rake_deg - p.clearance_deg); }
+
+/// Face lengths [m]: the rake face reaches tool.rake_face_height_mm above the tip (default 3 depths of cut,
+/// room for the chip), the clearance face is 2 depths of cut long.
+double rake_face_length_m(const CutParams& p) {
+  const double height = p.rake_face_height_m > 0 ? p.rake_face_height_m : 3 * p.depth_of_cut_m;
+  return height / std::cos(units::deg_to_rad(p.rake_deg));
+}
+double clearance_face_length_m(const CutParams& p) { return 2 * p.depth_of_cut_m; }
 }  // namespace
 
 void validate_cut_params(const CutParams& p) {
@@ -39,10 +47,14 @@ void validate_cut_params(const CutParams& p) {
   require(p.rake_deg + p.clearance_deg < 89, "tool.clearance_deg", p.clearance_deg,
           "rake_deg + clearance_deg below 89 deg (a tool wedge angle of at least 1 deg)");
   require(p.edge_radius_m >= 0, "tool.edge_radius_um", units::m_to_um(p.edge_radius_m), "a value >= 0 um");
-  // The rounded edge must fit on the faces (each face is at least 2 depths of cut long, see tool_outline).
+  // The rake face must rise above the uncut surface, or the chip would meet the tool's back face.
+  require(p.rake_face_height_m == 0 || p.rake_face_height_m > p.depth_of_cut_m, "tool.rake_face_height_mm",
+          units::m_to_mm(p.rake_face_height_m),
+          "a height above the depth of cut (" + format_value(units::m_to_mm(p.depth_of_cut_m)) + " mm), or 0 for 3 depths of cut");
+  // The rounded edge must fit on the faces (see tool_outline).
   const double tangent = p.edge_radius_m / std::tan(0.5 * wedge_angle_rad(p));
-  require(tangent < 2 * p.depth_of_cut_m, "tool.edge_radius_um", units::m_to_um(p.edge_radius_m),
-          "an edge radius whose rounding fits within twice the depth of cut along each face");
+  require(tangent < std::min(rake_face_length_m(p), clearance_face_length_m(p)), "tool.edge_radius_um",
+          units::m_to_um(p.edge_radius_m), "an edge radius whose rounding fits on both tool faces");
   require(p.edge_segments >= 1 && p.edge_segments <= 64, "tool.edge_segments", p.edge_segments, "an integer in [1, 64]");
   if (p.groove_shape == "none") return;
   if (p.groove_shape != "rectangular" && p.groove_shape != "trapezoidal")
@@ -74,6 +86,7 @@ CutParams read_cut_params(ObjectReader& root) {
     p.edge_segments = tool->get_int_or("edge_segments", p.edge_segments, 1, 64);
     if (auto mu = tool->get_optional_number("friction_coefficient", Range::non_negative(), ""))
       p.tool_friction_coefficient = *mu;
+    p.rake_face_height_m = units::mm_to_m(tool->get_number_or("rake_face_height_mm", 0, Range::non_negative(), "mm"));
     tool->finish();
   }
   if (auto grooves = root.find_object("grooves")) {
@@ -99,6 +112,7 @@ Json cut_params_to_json(const CutParams& p) {
          {"grooves", {{"shape", p.groove_shape}}}};
   // Only when given: scenes without it keep their replicate_inputs (and so their reusable replicates).
   if (p.tool_friction_coefficient >= 0) j["tool"]["friction_coefficient"] = p.tool_friction_coefficient;
+  if (p.rake_face_height_m > 0) j["tool"]["rake_face_height_mm"] = units::m_to_mm(p.rake_face_height_m);
   if (p.groove_shape != "none") {
     j["grooves"]["depth_mm"] = units::m_to_mm(p.groove_depth_m);
     j["grooves"]["pitch_mm"] = units::m_to_mm(p.groove_pitch_m);
@@ -143,9 +157,8 @@ std::vector<std::array<double, 2>> tool_outline(const CutParams& p, double x_fro
   // the machined surface by the clearance angle.
   const double g = units::deg_to_rad(p.rake_deg), a = units::deg_to_rad(p.clearance_deg);
   const std::array<double, 2> r{std::sin(g), std::cos(g)}, c{std::cos(a), std::sin(a)};
-  // Face lengths: the rake face reaches 3 depths of cut above the tip (room for the chip), the clearance
-  // face is 2 depths of cut long; a back face closes the outline so that no disk can get inside the tool.
-  const double lr = 3 * p.depth_of_cut_m / std::cos(g), lc = 2 * p.depth_of_cut_m;
+  // A back face closes the outline so that no disk can get inside the tool.
+  const double lr = rake_face_length_m(p), lc = clearance_face_length_m(p);
   std::vector<std::array<double, 2>> v;
   v.push_back({lr * r[0], lr * r[1]});
   if (p.edge_radius_m > 0) {
@@ -363,7 +376,7 @@ void CutRun::finish() {
 }
 
 namespace {
-constexpr std::string_view kCutMagic = "KERFCUT3";  // 3: tool_friction_coefficient
+constexpr std::string_view kCutMagic = "KERFCUT4";  // 3: tool_friction_coefficient, 4: rake_face_height_m
 }  // namespace
 
 template <class Self, class Io>
@@ -372,7 +385,7 @@ void CutRun::state_fields(Self& run, Io& io) {
   auto& r = run.res_;
   io(p.depth_of_cut_m, p.speed_m_per_s, p.length_m, p.rake_deg, p.clearance_deg, p.edge_radius_m, p.groove_depth_m,
      p.groove_pitch_m, p.groove_width_m, p.groove_bottom_width_m, p.entry_fraction, p.window_m,
-     p.tool_friction_coefficient);
+     p.tool_friction_coefficient, p.rake_face_height_m);
   io(p.edge_segments, p.sample_every_steps, p.groove_shape, r.samples);
   io(r.y_top_m, r.y_cut_m, r.width_m, r.time_step_s, r.wall_time_s, run.t0_, r.workpiece_box_m);
   io(r.n_particles, r.n_removed_by_grooves, r.steps, run.first_tool_wall_, run.n_tool_walls_, run.finished_);

@@ -89,6 +89,23 @@ TEST_CASE("cutting: tool faces have the rake and clearance angles, tip at the cu
   CHECK_THAT(leading_x_in_band(w, 0, 0.1e-3), WithinAbs(w[1][0], 1e-12));  // positive rake: the tip leads
 }
 
+TEST_CASE("cutting: the rake face reaches 3 depths of cut above the tip, or tool.rake_face_height_mm", "[cutting]") {
+  CutParams p;
+  p.depth_of_cut_m = 0.1e-3;
+  CHECK_THAT(tool_outline(p, 0, 0)[0][1], WithinAbs(0.3e-3, 1e-15));  // v[0] is the rake face's top
+  p.depth_of_cut_m = 0.2e-3;
+  CHECK_THAT(tool_outline(p, 0, 0)[0][1], WithinAbs(0.6e-3, 1e-15));
+  // One tool for every depth: the same height whatever the depth, the rake angle kept.
+  p.rake_face_height_m = 0.25e-3;
+  validate_cut_params(p);
+  const auto v = tool_outline(p, 0, 0);
+  CHECK_THAT(v[0][1] - v[1][1], WithinAbs(0.25e-3, 1e-15));
+  CHECK_THAT(angle_deg(v[1], v[0]), WithinAbs(105, 1e-9));
+  // Not above the uncut surface: an error naming the key.
+  p.rake_face_height_m = 0.2e-3;
+  CHECK_THROWS_WITH(validate_cut_params(p), Catch::Matchers::Contains("tool.rake_face_height_mm"));
+}
+
 TEST_CASE("cutting: a rounded edge is tangent to both faces and touches the cut line", "[cutting]") {
   CutParams p;
   p.edge_radius_m = 5e-6;

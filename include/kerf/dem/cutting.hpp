@@ -38,6 +38,9 @@ struct CutParams {
   /// Tool-workpiece Coulomb friction on every tool face; negative (the default): the workpiece material's
   /// particle friction mu, as for any disk-wall contact (PFC's default). Not given by seed 000.
   double tool_friction_coefficient = -1;
+  /// Height of the rake face's top above the tool tip; 0 (the default): 3 depths of cut, room for the chip.
+  /// Seed 000 does not give its tool's size: a fixed height is one tool for every depth of cut.
+  double rake_face_height_m = 0;
   std::string groove_shape = "none";  ///< "none", "rectangular", "trapezoidal"
   double groove_depth_m = 0.1e-3, groove_pitch_m = 0.2e-3, groove_width_m = 0.06e-3;
   double groove_bottom_width_m = 0.03e-3;  ///< trapezoidal only: width at the groove bottom
@@ -54,7 +57,7 @@ void validate_cut_params(const CutParams& params);
 
 /// Reads the "cut" object (depth_of_cut_mm, speed_m_per_s, length_mm, entry_fraction,
 /// sample_every_steps, window_mm), the optional "tool" (rake_deg, clearance_deg, edge_radius_um, edge_segments,
-/// friction_coefficient)
+/// friction_coefficient, rake_face_height_mm)
 /// and "grooves" (shape, depth_mm, pitch_mm, width_mm, bottom_width_mm) objects of a scene, then validates.
 CutParams read_cut_params(ObjectReader& root);
 Json cut_params_to_json(const CutParams& params);
