@@ -277,6 +277,11 @@ TEST_CASE("cutting: a small cut regression (forces, cracks, determinism, grooves
   CutRun smooth_restored = CutRun::deserialize(smooth_half.serialize());
   while (smooth_restored.advance()) {}
   CHECK(smooth_restored.params().tool_friction_coefficient == 0.0);
+  // ... and the rake face's height.
+  CutParams short_rake = p;
+  short_rake.rake_face_height_m = 1.5 * p.depth_of_cut_m;
+  CHECK(CutRun::deserialize(CutRun(specimen, short_rake).serialize()).params().rake_face_height_m ==
+        short_rake.rake_face_height_m);
   CHECK(smooth_restored.result().main_force_n == smooth.main_force_n);
   CHECK(smooth_restored.result().thrust_force_n == smooth.thrust_force_n);
   // Grooves: fewer particles.
