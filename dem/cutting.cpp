@@ -30,7 +30,9 @@ double rake_face_length_m(const CutParams& p) {
   const double height = p.rake_face_height_m > 0 ? p.rake_face_height_m : 3 * p.depth_of_cut_m;
   return height / std::cos(units::deg_to_rad(p.rake_deg));
 }
-double clearance_face_length_m(const CutParams& p) { return 2 * p.depth_of_cut_m; }
+double clearance_face_length_m(const CutParams& p) {
+  return 2 * p.depth_of_cut_m;
+}
 }  // namespace
 
 void validate_cut_params(const CutParams& p) {
@@ -50,7 +52,8 @@ void validate_cut_params(const CutParams& p) {
   // The rake face must rise above the uncut surface, or the chip would meet the tool's back face.
   require(p.rake_face_height_m == 0 || p.rake_face_height_m > p.depth_of_cut_m, "tool.rake_face_height_mm",
           units::m_to_mm(p.rake_face_height_m),
-          "a height above the depth of cut (" + format_value(units::m_to_mm(p.depth_of_cut_m)) + " mm), or 0 for 3 depths of cut");
+          "a height above the depth of cut (" + format_value(units::m_to_mm(p.depth_of_cut_m)) +
+              " mm), or 0 for 3 depths of cut");
   // The rounded edge must fit on the faces (see tool_outline).
   const double tangent = p.edge_radius_m / std::tan(0.5 * wedge_angle_rad(p));
   require(tangent < std::min(rake_face_length_m(p), clearance_face_length_m(p)), "tool.edge_radius_um",

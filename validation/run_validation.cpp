@@ -3,9 +3,9 @@
 // Cases: k9_trepanning (seconds), soda_lime_cutting (kerf-dem runs: 18 cuts, about 35 min on 2 cores),
 // soda_lime_cutting_cut_fitted (the glass fitted to one cut by kerf-dem calibrate_cut: 12 cuts, about 25 min).
 // Exit status 0 when the acceptance bands hold, 1 when they do not, 2 for input errors.
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <array>
 #include <cstdio>
@@ -35,8 +35,8 @@ bool run_k9(const std::filesystem::path& out) {
 bool run_cutting(const std::filesystem::path& out, const std::string& case_name, int replicates) {
 #ifdef KERF_DEM_PROGRAM
   const char* program = std::getenv("KERF_DEM");  // another kerf-dem build, if set
-  const kerf::CuttingValidation v =
-      kerf::run_soda_lime_cutting_validation(out, program && *program ? program : KERF_DEM_PROGRAM, case_name, replicates);
+  const kerf::CuttingValidation v = kerf::run_soda_lime_cutting_validation(
+      out, program && *program ? program : KERF_DEM_PROGRAM, case_name, replicates);
   for (const auto& file : v.files) fmt::print("wrote {}\n", file.string());
   for (const auto& failure : v.failures) fmt::print(stderr, "FAILED: {}\n", failure);
   fmt::print("{}: {}\n", case_name, v.passed() ? "PASSED" : "FAILED");

@@ -288,27 +288,30 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
                       r.wall_time_s);
   }
   md += "\n± is the standard deviation over the replicates.\n\n## Acceptance\n\n";
-  md += fmt::format("Each value with its standard error (kerf-dem's over its {} packings and, against the paper's DEM, "
-                    "the paper's over its three); a verdict less than two standard errors from the band's edge is not "
-                    "resolved by these packings (`run_validation CASE OUT --replicates N` runs more).\n\n",
-                    spec.replicates);
+  md += fmt::format(
+      "Each value with its standard error (kerf-dem's over its {} packings and, against the paper's DEM, "
+      "the paper's over its three); a verdict less than two standard errors from the band's edge is not "
+      "resolved by these packings (`run_validation CASE OUT --replicates N` runs more).\n\n",
+      spec.replicates);
   Json checks = Json::array();
   // Each check carries the standard error of its value (from kerf-dem's packings and, against the paper's DEM,
   // from the paper's three), and says whether the verdict is resolved: the value lies two standard errors or
   // more from the band's edge. A verdict that is not resolved could turn with other packings.
-  const auto check = [&](const std::string& what, double value, double standard_error, double distance_to_edge, bool pass,
-                         const std::string& band, bool fitted = false) {
+  const auto check = [&](const std::string& what, double value, double standard_error, double distance_to_edge,
+                         bool pass, const std::string& band, bool fitted = false) {
     const bool resolved = std::abs(distance_to_edge) >= 2 * standard_error;
-    const std::string spread =
-        fmt::format("{:.4g} ± {:.2g} (standard error; {})", value, standard_error,
-                    resolved ? "resolved: 2 or more of them from the band's edge"
-                             : "not resolved: within 2 of them of the band's edge");
-    Json row{{"check", what}, {"value", value}, {"standard_error", standard_error}, {"band", band}, {"resolved", resolved}};
+    const std::string spread = fmt::format("{:.4g} ± {:.2g} (standard error; {})", value, standard_error,
+                                           resolved ? "resolved: 2 or more of them from the band's edge"
+                                                    : "not resolved: within 2 of them of the band's edge");
+    Json row{
+        {"check", what}, {"value", value}, {"standard_error", standard_error}, {"band", band}, {"resolved", resolved}};
     if (fitted) {
       row["fitted"] = true;
       checks.push_back(row);
-      md += fmt::format("- FITTED **{}**: {} (band: {}; the material was fitted to this force: it shows the fit, "
-                        "not the model, and counts neither way)\n", what, spread, band);
+      md += fmt::format(
+          "- FITTED **{}**: {} (band: {}; the material was fitted to this force: it shows the fit, "
+          "not the model, and counts neither way)\n",
+          what, spread, band);
       return;
     }
     row["passed"] = pass;
@@ -330,10 +333,12 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
         const double paper = g.measured_stats.mean, error = g.error_pct / 100, band = spec.regular_max_error_pct / 100;
         const double kerf_mean = label == "main" ? regular->main_n : regular->thrust_n;
         const double kerf_sem = label == "main" ? regular->main_sem_n() : regular->thrust_sem_n();
-        const double paper_sem = g.measured_stats.standard_deviation / std::sqrt(static_cast<double>(g.measured_stats.n));
+        const double paper_sem =
+            g.measured_stats.standard_deviation / std::sqrt(static_cast<double>(g.measured_stats.n));
         // error = kerf / paper - 1: first-order propagation of both standard errors.
         const double error_se = kerf_mean / paper * std::hypot(kerf_sem / kerf_mean, paper_sem / paper);
-        check(fmt::format("regular {} mm: {} force vs the paper's DEM mean ({:.2f} N), relative error", depth, label, paper),
+        check(fmt::format("regular {} mm: {} force vs the paper's DEM mean ({:.2f} N), relative error", depth, label,
+                          paper),
               error, error_se, std::abs(error) - band, std::abs(error) <= band,
               fmt::format("|error| <= {:g} %", spec.regular_max_error_pct),
               label == spec.fitted_force && std::abs(depth - spec.fitted_depth_of_cut_mm) < 1e-9);
@@ -341,9 +346,11 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
     }
     if (regular && grooved) {
       const double ratio = grooved->main_n / regular->main_n;
-      const double ratio_se = ratio * std::hypot(grooved->main_sem_n() / grooved->main_n, regular->main_sem_n() / regular->main_n);
-      check(fmt::format("grooved / regular main force at {} mm", depth), ratio, ratio_se, ratio - spec.grooved_ratio_max,
-            ratio < spec.grooved_ratio_max, fmt::format("< {:.3f}", spec.grooved_ratio_max));
+      const double ratio_se =
+          ratio * std::hypot(grooved->main_sem_n() / grooved->main_n, regular->main_sem_n() / regular->main_n);
+      check(fmt::format("grooved / regular main force at {} mm", depth), ratio, ratio_se,
+            ratio - spec.grooved_ratio_max, ratio < spec.grooved_ratio_max,
+            fmt::format("< {:.3f}", spec.grooved_ratio_max));
     }
   }
   md += "\n## Expected physics and beyond the paper (reported, not bands)\n\n";
@@ -353,11 +360,12 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
     const double main_se = b->main_n / a->main_n * std::hypot(a->main_sem_n() / a->main_n, b->main_sem_n() / b->main_n);
     const double thrust_se =
         b->thrust_n / a->thrust_n * std::hypot(a->thrust_sem_n() / a->thrust_n, b->thrust_sem_n() / b->thrust_n);
-    md += fmt::format("- Regular, 0.1 -> 0.2 mm: main force {} ± {:.0f} %, thrust {} ± {:.0f} % (standard errors; the "
-                      "paper's DEM: {}, {}).\n",
-                      pct(b->main_n / a->main_n - 1), 100 * main_se, pct(b->thrust_n / a->thrust_n - 1), 100 * thrust_se,
-                      pct(paper_dem_mean("main_force", "regular", 0.2) / paper_dem_mean("main_force", "regular", 0.1) - 1),
-                      pct(paper_dem_mean("thrust_force", "regular", 0.2) / paper_dem_mean("thrust_force", "regular", 0.1) - 1));
+    md += fmt::format(
+        "- Regular, 0.1 -> 0.2 mm: main force {} ± {:.0f} %, thrust {} ± {:.0f} % (standard errors; the "
+        "paper's DEM: {}, {}).\n",
+        pct(b->main_n / a->main_n - 1), 100 * main_se, pct(b->thrust_n / a->thrust_n - 1), 100 * thrust_se,
+        pct(paper_dem_mean("main_force", "regular", 0.2) / paper_dem_mean("main_force", "regular", 0.1) - 1),
+        pct(paper_dem_mean("thrust_force", "regular", 0.2) / paper_dem_mean("thrust_force", "regular", 0.1) - 1));
     physics["regular_main_force_change_0.1_to_0.2"] = b->main_n / a->main_n - 1;
   }
   for (double depth : {0.1, 0.2}) {

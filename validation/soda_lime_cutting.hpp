@@ -20,7 +20,9 @@ struct CuttingValidation {
 /// into `out_dir`. Cases: soda_lime_cutting (the Table-2-calibrated glass) and soda_lime_cutting_cut_fitted
 /// (the glass whose bond strengths were fitted to one cut by kerf-dem calibrate_cut). `replicates` (2-100)
 /// overrides validation.json's packings per condition; 0 keeps it.
-CuttingValidation run_soda_lime_cutting_validation(const std::filesystem::path& out_dir, const std::filesystem::path& kerf_dem,
-                                                   const std::string& case_name = "soda_lime_cutting", int replicates = 0);
+CuttingValidation run_soda_lime_cutting_validation(const std::filesystem::path& out_dir,
+                                                   const std::filesystem::path& kerf_dem,
+                                                   const std::string& case_name = "soda_lime_cutting",
+                                                   int replicates = 0);
 
 }  // namespace kerf
