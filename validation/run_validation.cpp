@@ -59,9 +59,10 @@ int main(int argc, char** argv) {
       ->required()
       ->check(CLI::IsMember(std::vector<std::string>{"k9_trepanning", cutting_cases[0], cutting_cases[1], "all"}));
   app.add_option("out_dir", out, "where the report goes (all: one folder per case)")->required();
+  // Its range (2-100) is checked by run_soda_lime_cutting_validation, as validation.json's.
   app.add_option("--replicates", replicates,
-                 "packings per condition of the cutting cases (default: validation.json's); finished ones are reused")
-      ->check(CLI::Range(2, 100));
+                 "packings per condition of the cutting cases, 2-100 (default: validation.json's); finished ones are "
+                 "reused");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

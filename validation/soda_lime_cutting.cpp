@@ -32,6 +32,9 @@ struct Condition {
   double depth_of_cut_mm = 0;
 };
 
+/// Packings per condition, in validation.json or from --replicates: at least two for a sample standard deviation.
+constexpr int kMinReplicates = 2, kMaxReplicates = 100;
+
 struct Spec {
   fs::path scene, experiments;
   std::string note;  ///< printed under the report's title (e.g. what a fitted material was fitted to)
@@ -51,7 +54,7 @@ Spec read_spec(const fs::path& case_dir) {
   s.scene = case_dir / r.get_string("scene");
   s.experiments = case_dir / r.get_string("experiments");
   s.note = r.get_string_or("note", "");
-  s.replicates = r.get_int_or("replicates", 3, 2, 100);
+  s.replicates = r.get_int_or("replicates", 3, kMinReplicates, kMaxReplicates);
   const Json& list = r.get("conditions");
   if (!list.is_array() || list.empty())
     throw InputError("validation.conditions", list.dump(), "a non-empty list of conditions");
@@ -82,15 +85,26 @@ std::string quoted(const fs::path& p) {
   return out + "'";
 }
 
+/// A mean with its standard error.
+struct Estimate {
+  double value = 0, standard_error = 0;
+};
+
+/// The ratio of two independent estimates, its standard error propagated to first order:
+/// se(a / b) = (a / b) hypot(se_a / a, se_b / b).
+Estimate ratio_of(const Estimate& a, const Estimate& b) {
+  const double r = a.value / b.value;
+  return {r, r * std::hypot(a.standard_error / a.value, b.standard_error / b.value)};
+}
+
 /// Replicate results of one condition, read from kerf-dem's summaries.
 struct ConditionResult {
   Condition condition;
   Json replicates;  ///< kerf-dem's per-replicate rows, with chip/subsurface crack counts added
   double main_n = 0, thrust_n = 0, main_std_n = 0, thrust_std_n = 0, width_mm = 1;
-  double n_replicates = 0;
-  /// Standard error of the mean over the replicates (packings are independent samples of one workpiece).
-  double main_sem_n() const { return main_std_n / std::sqrt(n_replicates); }
-  double thrust_sem_n() const { return thrust_std_n / std::sqrt(n_replicates); }
+  /// The mean forces with their standard errors over the replicates (packings are independent samples).
+  Estimate main() const { return {main_n, main_std_n / std::sqrt(static_cast<double>(replicates.size()))}; }
+  Estimate thrust() const { return {thrust_n, thrust_std_n / std::sqrt(static_cast<double>(replicates.size()))}; }
   double cracks_tensile = 0, cracks_shear = 0, cracks_chip = 0, cracks_subsurface = 0, subsurface_depth_um = 0;
   double wall_time_s = 0;
 };
@@ -107,7 +121,6 @@ ConditionResult collect(const Condition& c, const fs::path& run_dir) {
   // The replicates' own cut times: the run's elapsed time would be ~0 when a rerun reuses them all.
   r.wall_time_s = summary.at("wall_time_s_sum_over_replicates");
   const double n = static_cast<double>(r.replicates.size());
-  r.n_replicates = n;
   for (auto& row : r.replicates) {
     const Json one = read_json_file(run_dir / row.at("directory").get<std::string>() / "summary.json").at("results");
     row["cracks_chip"] = one.at("cracks_chip");
@@ -168,8 +181,9 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
   const fs::path case_dir = data_directory().parent_path() / "validation" / case_name;
   Spec spec = read_spec(case_dir);
   if (replicates != 0) {
-    if (replicates < 2 || replicates > 100)
-      throw InputError("--replicates", std::to_string(replicates), "a number of packings from 2 to 100");
+    if (replicates < kMinReplicates || replicates > kMaxReplicates)
+      throw InputError("--replicates", std::to_string(replicates),
+                       fmt::format("a number of packings from {} to {}", kMinReplicates, kMaxReplicates));
     spec.replicates = replicates;
   }
   fs::create_directories(out_dir / "runs");
@@ -331,12 +345,11 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
       for (const std::string label : {"main", "thrust"}) {
         const GroupComparison& g = group_of(vs_dem, label + "_force", "regular", depth);
         const double paper = g.measured_stats.mean, error = g.error_pct / 100, band = spec.regular_max_error_pct / 100;
-        const double kerf_mean = label == "main" ? regular->main_n : regular->thrust_n;
-        const double kerf_sem = label == "main" ? regular->main_sem_n() : regular->thrust_sem_n();
-        const double paper_sem =
-            g.measured_stats.standard_deviation / std::sqrt(static_cast<double>(g.measured_stats.n));
-        // error = kerf / paper - 1: first-order propagation of both standard errors.
-        const double error_se = kerf_mean / paper * std::hypot(kerf_sem / kerf_mean, paper_sem / paper);
+        const Estimate paper_mean{
+            paper, g.measured_stats.standard_deviation / std::sqrt(static_cast<double>(g.measured_stats.n))};
+        // error = kerf / paper - 1: its standard error is the ratio's.
+        const double error_se =
+            ratio_of(label == "main" ? regular->main() : regular->thrust(), paper_mean).standard_error;
         check(fmt::format("regular {} mm: {} force vs the paper's DEM mean ({:.2f} N), relative error", depth, label,
                           paper),
               error, error_se, std::abs(error) - band, std::abs(error) <= band,
@@ -345,25 +358,20 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
       }
     }
     if (regular && grooved) {
-      const double ratio = grooved->main_n / regular->main_n;
-      const double ratio_se =
-          ratio * std::hypot(grooved->main_sem_n() / grooved->main_n, regular->main_sem_n() / regular->main_n);
-      check(fmt::format("grooved / regular main force at {} mm", depth), ratio, ratio_se,
-            ratio - spec.grooved_ratio_max, ratio < spec.grooved_ratio_max,
+      const Estimate ratio = ratio_of(grooved->main(), regular->main());
+      check(fmt::format("grooved / regular main force at {} mm", depth), ratio.value, ratio.standard_error,
+            ratio.value - spec.grooved_ratio_max, ratio.value < spec.grooved_ratio_max,
             fmt::format("< {:.3f}", spec.grooved_ratio_max));
     }
   }
   md += "\n## Expected physics and beyond the paper (reported, not bands)\n\n";
   Json physics = Json::object();
   if (const auto *a = find("none", 0.1), *b = find("none", 0.2); a && b) {
-    // Standard errors of the two ratios, propagated to first order from the means' standard errors.
-    const double main_se = b->main_n / a->main_n * std::hypot(a->main_sem_n() / a->main_n, b->main_sem_n() / b->main_n);
-    const double thrust_se =
-        b->thrust_n / a->thrust_n * std::hypot(a->thrust_sem_n() / a->thrust_n, b->thrust_sem_n() / b->thrust_n);
+    const Estimate main = ratio_of(b->main(), a->main()), thrust = ratio_of(b->thrust(), a->thrust());
     md += fmt::format(
         "- Regular, 0.1 -> 0.2 mm: main force {} ± {:.0f} %, thrust {} ± {:.0f} % (standard errors; the "
         "paper's DEM: {}, {}).\n",
-        pct(b->main_n / a->main_n - 1), 100 * main_se, pct(b->thrust_n / a->thrust_n - 1), 100 * thrust_se,
+        pct(main.value - 1), 100 * main.standard_error, pct(thrust.value - 1), 100 * thrust.standard_error,
         pct(paper_dem_mean("main_force", "regular", 0.2) / paper_dem_mean("main_force", "regular", 0.1) - 1),
         pct(paper_dem_mean("thrust_force", "regular", 0.2) / paper_dem_mean("thrust_force", "regular", 0.1) - 1));
     physics["regular_main_force_change_0.1_to_0.2"] = b->main_n / a->main_n - 1;
