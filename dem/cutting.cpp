@@ -317,10 +317,17 @@ CutRun::CutRun(const Simulation& specimen, const CutParams& params)
     : sim_(specimen.material(), specimen.options()), params_(params) {
   validate_cut_params(params_);
   const Bounds b0 = bounds_of(specimen.particles());
-  if (params_.depth_of_cut_m >= b0.y_max - b0.y_min - 2 * b0.r_max)
-    throw InputError("cut.depth_of_cut_mm", format_value(units::m_to_mm(params_.depth_of_cut_m)),
-                     "a depth of cut above the held bottom row (workpiece height " +
-                         format_value(units::m_to_mm(b0.y_max - b0.y_min)) + " mm)");
+  // Neither the tool nor a groove may reach the held bottom rows: a groove that deep would cut the
+  // workpiece into loose columns and the cut would measure nothing.
+  const double held_top_depth_m = b0.y_max - b0.y_min - 2 * b0.r_max;
+  const auto above_held_rows = [&](const char* key, double depth_m, const char* what) {
+    if (depth_m >= held_top_depth_m)
+      throw InputError(key, format_value(units::m_to_mm(depth_m)),
+                       std::string(what) + " above the held bottom row (workpiece height " +
+                           format_value(units::m_to_mm(b0.y_max - b0.y_min)) + " mm)");
+  };
+  above_held_rows("cut.depth_of_cut_mm", params_.depth_of_cut_m, "a depth of cut");
+  if (params_.groove_shape != "none") above_held_rows("grooves.depth_mm", params_.groove_depth_m, "a groove depth");
   sim_ = make_workpiece(specimen, params_, res_.n_removed_by_grooves);
   res_.y_top_m = b0.y_max;
   res_.workpiece_box_m = {b0.x_min, b0.x_max, b0.y_min, b0.y_max};

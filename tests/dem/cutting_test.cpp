@@ -284,6 +284,15 @@ TEST_CASE("cutting: a small cut regression (forces, cracks, determinism, grooves
         short_rake.rake_face_height_m);
   CHECK(smooth_restored.result().main_force_n == smooth.main_force_n);
   CHECK(smooth_restored.result().thrust_force_n == smooth.thrust_force_n);
+  // Neither the tool nor a groove may reach the held bottom rows (workpiece 0.25 mm tall, held rows 26 um).
+  CutParams too_deep = p;
+  too_deep.depth_of_cut_m = 0.24e-3;
+  CHECK_THROWS_WITH(CutRun(specimen, too_deep), Catch::Contains("cut.depth_of_cut_mm = 0.24"));
+  too_deep = grooved("rectangular");
+  too_deep.groove_depth_m = 0.24e-3;
+  CHECK_THROWS_WITH(CutRun(specimen, too_deep), Catch::Contains("grooves.depth_mm = 0.24"));
+  too_deep.groove_depth_m = 0.2e-3;  // deep, but above the held rows: a valid workpiece
+  CHECK_NOTHROW(CutRun(specimen, too_deep));
   // Grooves: fewer particles.
   CutParams g = p;
   g.groove_shape = "rectangular";
