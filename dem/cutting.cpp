@@ -257,7 +257,7 @@ std::vector<TravelWindow> travel_window_means(const std::vector<CutSample>& samp
 
 namespace {
 struct Bounds {
-  double x_min = 1e300, x_max = -1e300, y_min = 1e300, y_max = -1e300, r_max = 0;
+  double x_min = 1e300, x_max = -1e300, y_min = 1e300, y_max = -1e300, r_min = 1e300, r_max = 0;
 };
 Bounds bounds_of(const Particles& p) {
   Bounds b;
@@ -266,9 +266,70 @@ Bounds bounds_of(const Particles& p) {
     b.x_max = std::max(b.x_max, p.x[i] + p.radius[i]);
     b.y_min = std::min(b.y_min, p.y[i] - p.radius[i]);
     b.y_max = std::max(b.y_max, p.y[i] + p.radius[i]);
+    b.r_min = std::min(b.r_min, p.radius[i]);
     b.r_max = std::max(b.r_max, p.radius[i]);
   }
   return b;
+}
+
+/// The tool may advance at most this fraction of the smallest disk radius per time step: a contact then
+/// builds up over 100 steps or more, and no disk can pass through a tool face between two steps.
+constexpr double kMaxToolAdvancePerRadius = 0.01;
+/// A cut that would take more time steps than this is refused (days of computing on a seed-size
+/// workpiece: 6x the seed's own 4.23 mm/s over its 0.6 mm travel), not run as if it could finish.
+constexpr double kMaxCutSteps = 1e9;
+
+/// The cut must be one the disks resolve and the workpiece holds: deeper than the smallest disk radius
+/// (a shallower tool passes over the disks' tops and measures nothing); neither the tool nor a groove
+/// reaching the held bottom rows (a groove that deep would cut the workpiece into loose columns); and
+/// short enough that the tool's leading edge (it starts half a largest radius right of the workpiece)
+/// stays off the held left disks (centres within 2 largest radii of the left side, as the bottom rows).
+void check_cut_fits_workpiece(const CutParams& p, const Bounds& b) {
+  const double held_top_depth_m = b.y_max - b.y_min - 2 * b.r_max;
+  const auto above_held_rows = [&](const char* key, double depth_m, const char* what) {
+    require(depth_m < held_top_depth_m, key, units::m_to_mm(depth_m),
+            std::string(what) + " above the held bottom row (workpiece height " +
+                format_value(units::m_to_mm(b.y_max - b.y_min)) + " mm)");
+  };
+  above_held_rows("cut.depth_of_cut_mm", p.depth_of_cut_m, "a depth of cut");
+  if (p.groove_shape != "none") above_held_rows("grooves.depth_mm", p.groove_depth_m, "a groove depth");
+  require(p.depth_of_cut_m >= b.r_min, "cut.depth_of_cut_mm", units::m_to_mm(p.depth_of_cut_m),
+          "a depth of cut of at least the smallest disk radius (" + format_value(units::m_to_um(b.r_min)) +
+              " um): a shallower tool passes over the disks' tops; use smaller disks (specimen.radius_min_um, "
+              "specimen.radius_max_um)");
+  const double width = b.x_max - b.x_min, max_travel = width - 2.5 * b.r_max;
+  require(p.length_m <= max_travel, "cut.length_mm", units::m_to_mm(p.length_m),
+          "a travel of at most " + format_value(units::m_to_mm(max_travel)) +
+              " mm: further on, the tool would reach the held left disks of the " +
+              format_value(units::m_to_mm(width)) + " mm long workpiece");
+}
+
+/// A groove pattern that removes no disk is not a grooved workpiece: either no groove lies on the surface
+/// (the pitch) or none is wide enough to hold a disk's centre (the width).
+void check_grooves_remove_disks(const CutParams& p, const Bounds& b, std::size_t n_removed) {
+  if (p.groove_shape == "none" || n_removed > 0) return;
+  require(!groove_centres(p, b.x_min, b.x_max).empty(), "grooves.pitch_mm", units::m_to_mm(p.groove_pitch_m),
+          "a pitch that puts at least one groove on the " + format_value(units::m_to_mm(b.x_max - b.x_min)) +
+              " mm long workpiece");
+  throw InputError("grooves.width_mm", format_value(units::m_to_mm(p.groove_width_m)),
+                   "a groove wide enough to remove disks (no disk centre lies inside any groove; disk radii " +
+                       format_value(units::m_to_um(b.r_min)) + "-" + format_value(units::m_to_um(b.r_max)) + " um)");
+}
+
+/// The tool speed against the time step: fast enough to finish within kMaxCutSteps, slow enough to
+/// advance at most kMaxToolAdvancePerRadius of the smallest radius per step.
+void check_tool_speed(const CutParams& p, double time_step_s, double r_min_m) {
+  const double fastest = kMaxToolAdvancePerRadius * r_min_m / time_step_s;
+  const double slowest = p.length_m / (kMaxCutSteps * time_step_s);
+  const std::string step = format_value(time_step_s * 1e9) + " ns";
+  require(p.speed_m_per_s <= fastest, "cut.speed_m_per_s", p.speed_m_per_s,
+          "a speed of at most " + format_value(fastest) + " m/s: the tool may advance at most " +
+              format_value(100 * kMaxToolAdvancePerRadius) + " % of the smallest disk radius (" +
+              format_value(units::m_to_um(r_min_m)) + " um) per time step (" + step + ")");
+  require(p.speed_m_per_s >= slowest, "cut.speed_m_per_s", p.speed_m_per_s,
+          "a speed of at least " + format_value(slowest) + " m/s: slower, the travel of " +
+              format_value(units::m_to_mm(p.length_m)) + " mm takes more than " + format_value(kMaxCutSteps) + " time steps of " + step +
+              " (the seed's 4.23 mm/s is scaled up in every DEM cut; docs/dem.md)");
 }
 }  // namespace
 
@@ -317,18 +378,9 @@ CutRun::CutRun(const Simulation& specimen, const CutParams& params)
     : sim_(specimen.material(), specimen.options()), params_(params) {
   validate_cut_params(params_);
   const Bounds b0 = bounds_of(specimen.particles());
-  // Neither the tool nor a groove may reach the held bottom rows: a groove that deep would cut the
-  // workpiece into loose columns and the cut would measure nothing.
-  const double held_top_depth_m = b0.y_max - b0.y_min - 2 * b0.r_max;
-  const auto above_held_rows = [&](const char* key, double depth_m, const char* what) {
-    if (depth_m >= held_top_depth_m)
-      throw InputError(key, format_value(units::m_to_mm(depth_m)),
-                       std::string(what) + " above the held bottom row (workpiece height " +
-                           format_value(units::m_to_mm(b0.y_max - b0.y_min)) + " mm)");
-  };
-  above_held_rows("cut.depth_of_cut_mm", params_.depth_of_cut_m, "a depth of cut");
-  if (params_.groove_shape != "none") above_held_rows("grooves.depth_mm", params_.groove_depth_m, "a groove depth");
+  check_cut_fits_workpiece(params_, b0);
   sim_ = make_workpiece(specimen, params_, res_.n_removed_by_grooves);
+  check_grooves_remove_disks(params_, b0, res_.n_removed_by_grooves);
   res_.y_top_m = b0.y_max;
   res_.workpiece_box_m = {b0.x_min, b0.x_max, b0.y_min, b0.y_max};
   res_.y_cut_m = b0.y_max - params_.depth_of_cut_m;
@@ -350,6 +402,7 @@ CutRun::CutRun(const Simulation& specimen, const CutParams& params)
   n_tool_walls_ = static_cast<std::int32_t>(outline.size());
   sim_.invalidate_neighbours();
   sim_.initialise();
+  check_tool_speed(params_, sim_.time_step(), b0.r_min);
   sim_.cracks().clear();  // only the cut's cracks count
   t0_ = sim_.time();
   res_.n_particles = sim_.particles().size();

@@ -18,6 +18,12 @@ expect_input_error "did you mean 'depth_of_cut_mm'" run "$scene" --set cut.depth
 small=(--set specimen.width_mm=0.4 --set specimen.height_mm=0.25 --set specimen.growth_steps=2000
        --set specimen.relax_steps=500 --set cut.depth_of_cut_mm=0.05 --set cut.length_mm=0.08
        --set output.frame_every_samples=500 --set cut.speed_m_per_s=2)
+# Checked once the workpiece and its time step are known (after genesis), still exit 2 and no output.
+expect_input_error "cut.speed_m_per_s = 1e+06: expected a speed of at most" run "$scene" "${small[@]}" \
+    --set cut.speed_m_per_s=1e6 --out "$work/x"
+expect_input_error "cut.length_mm = 1: expected a travel of at most" run "$scene" "${small[@]}" \
+    --set cut.length_mm=1 --out "$work/x"
+[ ! -e "$work/x/summary.json" ] || fail "a rejected cut wrote output"
 "$bin" run "$scene" "${small[@]}" --out "$work/c1" --threads 1 >/dev/null 2>"$work/err" || fail "cut run: $(cat "$work/err")"
 for f in summary.json forces.csv cracks.csv result.pvd frame_0000.vtp cracks_0000.vtp specimen.png forces.png; do
   [ -s "$work/c1/$f" ] || fail "missing $f"

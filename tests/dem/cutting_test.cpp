@@ -289,6 +289,7 @@ TEST_CASE("cutting: a small cut regression (forces, cracks, determinism, grooves
   too_deep.depth_of_cut_m = 0.24e-3;
   CHECK_THROWS_WITH(CutRun(specimen, too_deep), Catch::Contains("cut.depth_of_cut_mm = 0.24"));
   too_deep = grooved("rectangular");
+  too_deep.length_m = p.length_m;
   too_deep.groove_depth_m = 0.24e-3;
   CHECK_THROWS_WITH(CutRun(specimen, too_deep), Catch::Contains("grooves.depth_mm = 0.24"));
   too_deep.groove_depth_m = 0.2e-3;  // deep, but above the held rows: a valid workpiece
@@ -323,4 +324,64 @@ TEST_CASE("cutting: a small cut regression (forces, cracks, determinism, grooves
   }
   CHECK(held > 0);
   CHECK(q.group[top_right] == 0);
+}
+
+TEST_CASE("cutting: a cut the disks cannot resolve or the workpiece cannot hold is an input error", "[cutting]") {
+  // Stable at the extremes: each of these ran before as a silent zero force, a tool jumping through the
+  // workpiece in one step, a run of years, or a tool crushing the held disks.
+  SpecimenSpec spec = kerf::dem::testing::quick_random_spec(0.3e-3, 0.2e-3, 5);
+  spec.radius_min_m = 10e-6;
+  spec.radius_max_m = 13e-6;
+  Material m;
+  SpecimenReport report;
+  const Simulation specimen = make_specimen(m, spec, report);
+  const auto& q = specimen.particles();
+  double r_min = 1, r_max = 0, x_min = 1, x_max = -1;
+  for (std::size_t k = 0; k < q.size(); ++k) {
+    r_min = std::min(r_min, q.radius[k]), r_max = std::max(r_max, q.radius[k]);
+    x_min = std::min(x_min, q.x[k] - q.radius[k]), x_max = std::max(x_max, q.x[k] + q.radius[k]);
+  }
+  CutParams p;
+  p.depth_of_cut_m = 0.05e-3;
+  p.speed_m_per_s = 2;
+  p.length_m = 0.05e-3;
+  const double dt = CutRun(specimen, p).result().time_step_s;
+  const auto throws_on = [&](const CutParams& bad, const std::string& key) {
+    CHECK_THROWS_WITH(CutRun(specimen, bad), Catch::Contains(key + " = "));
+  };
+  // Depth: at least the smallest disk radius.
+  CutParams c = p;
+  c.depth_of_cut_m = 0.99 * r_min;
+  throws_on(c, "cut.depth_of_cut_mm");
+  c.depth_of_cut_m = 1.01 * r_min;
+  CHECK_NOTHROW(CutRun(specimen, c));
+  // Travel: the tool's leading edge, half a largest radius right of the workpiece at the start, stops
+  // before the held left disks (centres within 2 largest radii of the left side, so reaching 3 of them).
+  const double max_travel = (x_max - x_min) - 2.5 * r_max;
+  c = p;
+  c.length_m = 1.001 * max_travel;
+  throws_on(c, "cut.length_mm");
+  c.length_m = 0.999 * max_travel;
+  CHECK_NOTHROW(CutRun(specimen, c));
+  // Speed: at most 1 % of the smallest radius per step; at least fast enough to finish within 1e9 steps.
+  c = p;
+  c.speed_m_per_s = 1.001 * 0.01 * r_min / dt;
+  throws_on(c, "cut.speed_m_per_s");
+  c.speed_m_per_s = 0.999 * 0.01 * r_min / dt;
+  CHECK_NOTHROW(CutRun(specimen, c));
+  c.speed_m_per_s = 0.999 * p.length_m / (1e9 * dt);
+  throws_on(c, "cut.speed_m_per_s");
+  c.speed_m_per_s = 1.001 * p.length_m / (1e9 * dt);
+  CHECK_NOTHROW(CutRun(specimen, c));
+  // Grooves that remove no disk: too narrow to hold a disk's centre, or a pitch with no groove on the
+  // surface. A groove as wide as a disk removes some.
+  c = grooved("rectangular");
+  c.length_m = p.length_m;
+  c.groove_depth_m = p.depth_of_cut_m;
+  c.groove_width_m = 0.01 * r_min;
+  throws_on(c, "grooves.width_mm");
+  c.groove_width_m = 2 * r_max;
+  CHECK_NOTHROW(CutRun(specimen, c));
+  c.groove_pitch_m = 3 * (x_max - x_min);
+  throws_on(c, "grooves.pitch_mm");
 }
