@@ -328,8 +328,8 @@ void check_tool_speed(const CutParams& p, double time_step_s, double r_min_m) {
               format_value(units::m_to_um(r_min_m)) + " um) per time step (" + step + ")");
   require(p.speed_m_per_s >= slowest, "cut.speed_m_per_s", p.speed_m_per_s,
           "a speed of at least " + format_value(slowest) + " m/s: slower, the travel of " +
-              format_value(units::m_to_mm(p.length_m)) + " mm takes more than " + format_value(kMaxCutSteps) + " time steps of " + step +
-              " (the seed's 4.23 mm/s is scaled up in every DEM cut; docs/dem.md)");
+              format_value(units::m_to_mm(p.length_m)) + " mm takes more than " + format_value(kMaxCutSteps) +
+              " time steps of " + step + " (the seed's 4.23 mm/s is scaled up in every DEM cut; docs/dem.md)");
 }
 }  // namespace
 
