@@ -275,9 +275,6 @@ Bounds bounds_of(const Particles& p) {
 /// The tool may advance at most this fraction of the smallest disk radius per time step: a contact then
 /// builds up over 100 steps or more, and no disk can pass through a tool face between two steps.
 constexpr double kMaxToolAdvancePerRadius = 0.01;
-/// A cut that would take more time steps than this is refused (days of computing on a seed-size
-/// workpiece: 6x the seed's own 4.23 mm/s over its 0.6 mm travel), not run as if it could finish.
-constexpr double kMaxCutSteps = 1e9;
 
 /// The cut must be one the disks resolve and the workpiece holds: deeper than the smallest disk radius
 /// (a shallower tool passes over the disks' tops and measures nothing); neither the tool nor a groove
@@ -316,11 +313,11 @@ void check_grooves_remove_disks(const CutParams& p, const Bounds& b, std::size_t
                        format_value(units::m_to_um(b.r_min)) + "-" + format_value(units::m_to_um(b.r_max)) + " um)");
 }
 
-/// The tool speed against the time step: fast enough to finish within kMaxCutSteps, slow enough to
+/// The tool speed against the time step: fast enough to finish within kMaxRunSteps, slow enough to
 /// advance at most kMaxToolAdvancePerRadius of the smallest radius per step.
 void check_tool_speed(const CutParams& p, double time_step_s, double r_min_m) {
   const double fastest = kMaxToolAdvancePerRadius * r_min_m / time_step_s;
-  const double slowest = p.length_m / (kMaxCutSteps * time_step_s);
+  const double slowest = p.length_m / (kMaxRunSteps * time_step_s);
   const std::string step = format_value(time_step_s * 1e9) + " ns";
   require(p.speed_m_per_s <= fastest, "cut.speed_m_per_s", p.speed_m_per_s,
           "a speed of at most " + format_value(fastest) + " m/s: the tool may advance at most " +
@@ -328,7 +325,7 @@ void check_tool_speed(const CutParams& p, double time_step_s, double r_min_m) {
               format_value(units::m_to_um(r_min_m)) + " um) per time step (" + step + ")");
   require(p.speed_m_per_s >= slowest, "cut.speed_m_per_s", p.speed_m_per_s,
           "a speed of at least " + format_value(slowest) + " m/s: slower, the travel of " +
-              format_value(units::m_to_mm(p.length_m)) + " mm takes more than " + format_value(kMaxCutSteps) +
+              format_value(units::m_to_mm(p.length_m)) + " mm takes more than " + format_value(kMaxRunSteps) +
               " time steps of " + step + " (the seed's 4.23 mm/s is scaled up in every DEM cut; docs/dem.md)");
 }
 }  // namespace

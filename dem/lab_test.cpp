@@ -82,6 +82,16 @@ LabTestRun::LabTestRun(const Simulation& specimen, const LoadingSpec& spec) : si
   res_.speed_m_per_s = v;
   res_.n_particles = n;
   res_.time_step_s = sim_.time_step();
+  // Stable at the extremes: the job's slowest run (the quasi-static check reruns at half the speed) must
+  // reach max_strain within kMaxRunSteps (strain = 2 v t / length).
+  const double slowest = spec.quasi_static_check ? 0.5 * v : v;
+  const double min_speed = spec.max_strain * length / (2 * kMaxRunSteps * res_.time_step_s);
+  if (slowest < min_speed)
+    throw InputError("loading.speed_m_per_s", format_value(v),
+                     "a speed of at least " + format_value(spec.quasi_static_check ? 2 * min_speed : min_speed) +
+                         " m/s: slower, loading to max_strain " + format_value(spec.max_strain) + " takes more than " +
+                         format_value(kMaxRunSteps) + " time steps of " + format_value(res_.time_step_s * 1e9) + " ns" +
+                         (spec.quasi_static_check ? " at the quasi-static check's half speed" : ""));
   counted_ = static_cast<std::int64_t>(sim_.cracks().size());
   t0_ = sim_.time();
   res_.curve.push_back({t0_, 0, 0, 0, 0, 0});

@@ -434,6 +434,7 @@ int continue_test(const Scene& scene, const Json& doc, const Simulation& specime
   if (scene.loading.quasi_static_check) {
     LoadingSpec half = scene.loading;
     half.speed_m_per_s *= 0.5;
+    half.quasi_static_check = false;  // this run is the check
     const LabTestResult slow = run_test(specimen, half, scene.kind + " (quasi-static check, half speed)", {});
     results["quasi_static_check"] = Json{
         {"speed_m_per_s", half.speed_m_per_s},

@@ -96,3 +96,28 @@ TEST_CASE("lab test: small random specimen regression", "[lab_test]") {
   CHECK(c.peak_stress_pa > 2 * t.peak_stress_pa);
   CHECK_THAT(t.youngs_modulus_pa, WithinRel(c.youngs_modulus_pa, 0.15));
 }
+
+TEST_CASE("lab test: a loading too slow to reach max_strain within 1e9 steps is an input error", "[lab_test]") {
+  // Stable at the extremes: 1e-12 m/s ran as a hang (years of steps) before.
+  const Simulation sim = [] {
+    Material m;
+    SpecimenReport report;
+    return make_specimen(m, kerf::dem::testing::quick_random_spec(0.2e-3, 0.4e-3, 7), report);
+  }();
+  LoadingSpec load;
+  load.test = "tension";
+  load.quasi_static_check = false;
+  const LabTestRun probe(sim, load);
+  const double dt = probe.result().time_step_s, length = probe.result().height_m;
+  // strain = 2 v t / length: max_strain in exactly kMaxRunSteps steps at this speed.
+  const double min_speed = load.max_strain * length / (2 * kMaxRunSteps * dt);
+  load.speed_m_per_s = 0.999 * min_speed;
+  CHECK_THROWS_WITH(LabTestRun(sim, load), Catch::Contains("loading.speed_m_per_s = "));
+  load.speed_m_per_s = 1.001 * min_speed;
+  CHECK_NOTHROW(LabTestRun(sim, load));
+  // The quasi-static check reruns at half the speed: the job needs twice the speed.
+  load.quasi_static_check = true;
+  CHECK_THROWS_WITH(LabTestRun(sim, load), Catch::Contains("half speed"));
+  load.speed_m_per_s = 2.002 * min_speed;
+  CHECK_NOTHROW(LabTestRun(sim, load));
+}
