@@ -202,15 +202,20 @@ double leading_x_in_band(const std::vector<std::array<double, 2>>& v, double y0,
   return best;
 }
 
-CutCrackCounts count_cut_cracks(const std::vector<CrackEvent>& cracks, double y_cut_m) {
+CutCrackCounts count_cut_cracks(const std::vector<CrackEvent>& cracks, double y_cut_m,
+                                std::array<double, 2> steady_x_m) {
   CutCrackCounts n;
   for (const auto& c : cracks) {
     (c.mode == BreakMode::tension ? n.tensile : n.shear)++;
     if (is_chip_crack(c.y_m, y_cut_m)) {
       ++n.chip;
-    } else {
-      ++n.subsurface;
-      n.subsurface_damage_depth_m = std::max(n.subsurface_damage_depth_m, y_cut_m - c.y_m);
+      continue;
+    }
+    ++n.subsurface;
+    n.subsurface_damage_depth_m = std::max(n.subsurface_damage_depth_m, y_cut_m - c.y_m);
+    if (c.x_m >= steady_x_m[0] && c.x_m <= steady_x_m[1]) {
+      ++n.subsurface_steady;
+      n.subsurface_steady_damage_depth_m = std::max(n.subsurface_steady_damage_depth_m, y_cut_m - c.y_m);
     }
   }
   return n;
@@ -430,9 +435,24 @@ bool CutRun::advance() {
 
 void CutRun::finish() {
   finished_ = true;
-  steady_statistics(res_, params_.entry_fraction * params_.length_m);
+  const double steady_from_m = params_.entry_fraction * params_.length_m;
+  steady_statistics(res_, steady_from_m);
   res_.travel_windows = travel_window_means(res_.samples, params_.length_m, params_.window_m);
-  res_.cracks = count_cut_cracks(sim_.cracks(), res_.y_cut_m);
+  // The cutting edge now: the front-most of the tool's lowest points (a flat clearance face has two).
+  const auto& walls = sim_.walls();
+  double y_low = std::numeric_limits<double>::infinity(), x_edge = y_low;
+  for (std::int32_t w = 0; w < n_tool_walls_; ++w) {
+    const Wall& face = walls[static_cast<std::size_t>(first_tool_wall_ + w)];
+    for (const auto& [x, y] : {std::pair{face.x0, face.y0}, std::pair{face.x1, face.y1}}) {
+      if (y < y_low - 1e-12)
+        y_low = y, x_edge = x;
+      else if (y < y_low + 1e-12)
+        x_edge = std::min(x_edge, x);
+    }
+  }
+  // It was (final travel - steady start) further right when the steady part began.
+  res_.steady_machined_x_m = {x_edge, x_edge + res_.samples.back().travel_m - steady_from_m};
+  res_.cracks = count_cut_cracks(sim_.cracks(), res_.y_cut_m, res_.steady_machined_x_m);
 }
 
 namespace {

@@ -7,19 +7,20 @@
 // tests), "calibrate", "cut" (orthogonal cutting, seed 000 Section 4), "calibrate_cut" (bond strengths fitted to
 // one measured cut). Exit status 2 for bad input (the message names the field, the value and what was expected),
 // 3 when the model fails (e.g. an unstable run).
+#include <fmt/format.h>
 #include <omp.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
-#include <cstring>
-#include <iterator>
-#include <fmt/format.h>
 #include <iostream>
+#include <iterator>
 #include <optional>
+#include <sstream>
 
 #include "kerf/dem/calibration.hpp"
 #include "kerf/dem/cut_calibration.hpp"
@@ -30,10 +31,10 @@
 #include "kerf/dem/png.hpp"
 #include "kerf/dem/specimen.hpp"
 #include "kerf/error.hpp"
-#include "kerf/material.hpp"
-#include "kerf/metrics.hpp"
 #include "kerf/io.hpp"
 #include "kerf/json_reader.hpp"
+#include "kerf/material.hpp"
+#include "kerf/metrics.hpp"
 #include "kerf/units.hpp"
 
 namespace fs = std::filesystem;
@@ -489,21 +490,26 @@ Json continue_cut(const Scene& scene, const Json& doc, Json summary, const fs::p
   const CutResult& res = run.result();
   const auto& frames = tp.frames;
   summary["cut"] = cut_params_to_json(scene.cut);
-  summary["results"] = Json{{"main_force_N", res.main_force_n},
-                            {"thrust_force_N", res.thrust_force_n},
-                            {"main_force_std_N", res.main_force_std_n},
-                            {"thrust_force_std_N", res.thrust_force_std_n},
-                            {"steady_from_travel_mm", units::m_to_mm(scene.cut.entry_fraction * scene.cut.length_m)},
-                            {"steady_samples", res.n_steady_samples},
-                            {"width_mm", units::m_to_mm(res.width_m)},
-                            {"cracks_tensile", res.cracks.tensile},
-                            {"cracks_shear", res.cracks.shear},
-                            {"cracks_chip", res.cracks.chip},
-                            {"cracks_subsurface", res.cracks.subsurface},
-                            {"subsurface_damage_depth_um", units::m_to_um(res.cracks.subsurface_damage_depth_m)},
-                            {"surface_y_mm", units::m_to_mm(res.y_top_m)},
-                            {"cut_line_y_mm", units::m_to_mm(res.y_cut_m)},
-                            {"particles_removed_by_grooves", res.n_removed_by_grooves}};
+  summary["results"] =
+      Json{{"main_force_N", res.main_force_n},
+           {"thrust_force_N", res.thrust_force_n},
+           {"main_force_std_N", res.main_force_std_n},
+           {"thrust_force_std_N", res.thrust_force_std_n},
+           {"steady_from_travel_mm", units::m_to_mm(scene.cut.entry_fraction * scene.cut.length_m)},
+           {"steady_samples", res.n_steady_samples},
+           {"width_mm", units::m_to_mm(res.width_m)},
+           {"cracks_tensile", res.cracks.tensile},
+           {"cracks_shear", res.cracks.shear},
+           {"cracks_chip", res.cracks.chip},
+           {"cracks_subsurface", res.cracks.subsurface},
+           {"subsurface_damage_depth_um", units::m_to_um(res.cracks.subsurface_damage_depth_m)},
+           {"steady_machined_from_x_mm", units::m_to_mm(res.steady_machined_x_m[0])},
+           {"steady_machined_to_x_mm", units::m_to_mm(res.steady_machined_x_m[1])},
+           {"cracks_subsurface_steady", res.cracks.subsurface_steady},
+           {"subsurface_damage_depth_steady_um", units::m_to_um(res.cracks.subsurface_steady_damage_depth_m)},
+           {"surface_y_mm", units::m_to_mm(res.y_top_m)},
+           {"cut_line_y_mm", units::m_to_mm(res.y_cut_m)},
+           {"particles_removed_by_grooves", res.n_removed_by_grooves}};
   Json windows = Json::array();
   for (const auto& w : res.travel_windows)
     // Window ends to 1 pm, so that 3 x 0.1 mm reads 0.3, not 0.30000000000000004.
@@ -552,7 +558,9 @@ int run_cut_replicates(const Scene& scene, int replicates, Json summary, const f
       {"thrust_force_N", "thrust_force_replicate_std_N"},
       {"cracks_tensile", "cracks_tensile_replicate_std"},
       {"cracks_shear", "cracks_shear_replicate_std"},
-      {"subsurface_damage_depth_um", "subsurface_damage_depth_replicate_std_um"}};
+      {"subsurface_damage_depth_um", "subsurface_damage_depth_replicate_std_um"},
+      {"cracks_subsurface_steady", "cracks_subsurface_steady_replicate_std"},
+      {"subsurface_damage_depth_steady_um", "subsurface_damage_depth_steady_replicate_std_um"}};
   const auto start = std::chrono::steady_clock::now();
   const int threads = omp_get_max_threads();
   const int side_by_side = std::min(threads, replicates);
@@ -573,7 +581,12 @@ int run_cut_replicates(const Scene& scene, int replicates, Json summary, const f
                         {"cut", cut_params_to_json(s.cut)}};
       if (fs::exists(dir / "summary.json")) {
         const Json old = read_json_file((dir / "summary.json").string());
-        if (old.value("replicate_inputs", Json()) == inputs && old.contains("results")) {
+        // A run from before a result was added lacks it: run again.
+        const auto has_every_result = [&] {
+          return std::all_of(keys.begin(), keys.end(),
+                             [&](const auto& key) { return old.at("results").contains(key.first); });
+        };
+        if (old.value("replicate_inputs", Json()) == inputs && old.contains("results") && has_every_result()) {
 #pragma omp critical(kerf_dem_stdout)
           std::cout << fmt::format("replicate {}: reusing the finished run in {}\n", k + 1, dir.string());
           done[static_cast<std::size_t>(k)] = old;

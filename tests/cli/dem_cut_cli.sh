@@ -37,7 +37,8 @@ in_range() { awk -v x="$1" -v lo="$2" -v hi="$3" 'BEGIN { exit !(x > lo && x < h
 in_range "$(result "$work/c1" main_force_N)" 0 1e4 || fail "main_force_N = $(result "$work/c1" main_force_N)"
 in_range "$(result "$work/c1" thrust_force_N)" 0 1e4 || fail "thrust_force_N = $(result "$work/c1" thrust_force_N)"
 in_range "$(result "$work/c1" width_mm)" 0.999 1.001 || fail "width_mm"
-for k in main_force_std_N thrust_force_std_N cracks_tensile cracks_shear subsurface_damage_depth_um; do
+for k in main_force_std_N thrust_force_std_N cracks_tensile cracks_shear subsurface_damage_depth_um cracks_subsurface_steady \
+    subsurface_damage_depth_steady_um steady_machined_from_x_mm steady_machined_to_x_mm; do
   in_range "$(result "$work/c1" $k)" -1 1e30 || fail "$k missing"
 done
 for k in n_particles steps wall_time_s particle_steps_per_s; do

@@ -209,16 +209,26 @@ TEST_CASE("cutting: mean forces per travel window", "[cutting]") {
 }
 
 TEST_CASE("cutting: crack places and subsurface damage depth", "[cutting]") {
-  std::vector<CrackEvent> cracks{{0, 0, 1.0e-3, 0, 1e-6, BreakMode::tension, 0, 0},
-                                 {0, 0, 0.85e-3, 0, 1e-6, BreakMode::shear, 1, 0},
-                                 {0, 0, 0.80e-3, 0, 1e-6, BreakMode::tension, 2, 0}};
-  const CutCrackCounts n = count_cut_cracks(cracks, 0.9e-3);
-  CHECK(n.tensile == 2);
+  // Cut line at 0.9 mm; the steady part machined x in [0.2, 0.5] mm. The deepest crack (x 0.7 mm, the
+  // entry's side) is outside the steady span; so is the chip crack, which lies inside it but above the line.
+  std::vector<CrackEvent> cracks{{0, 0.3e-3, 1.0e-3, 0, 1e-6, BreakMode::tension, 0, 0},
+                                 {0, 0.4e-3, 0.85e-3, 0, 1e-6, BreakMode::shear, 1, 0},
+                                 {0, 0.7e-3, 0.80e-3, 0, 1e-6, BreakMode::tension, 2, 0},
+                                 {0, 0.2e-3, 0.88e-3, 0, 1e-6, BreakMode::tension, 3, 0}};
+  const CutCrackCounts n = count_cut_cracks(cracks, 0.9e-3, {0.2e-3, 0.5e-3});
+  CHECK(n.tensile == 3);
   CHECK(n.shear == 1);
   CHECK(n.chip == 1);
-  CHECK(n.subsurface == 2);
+  CHECK(n.subsurface == 3);
   CHECK_THAT(n.subsurface_damage_depth_m, WithinAbs(0.1e-3, 1e-15));
+  CHECK(n.subsurface_steady == 2);  // x 0.4 and 0.2 mm (the span's end included)
+  CHECK_THAT(n.subsurface_steady_damage_depth_m, WithinAbs(0.05e-3, 1e-15));
   CHECK(std::string(crack_place(0.95e-3, 0.9e-3)) == "chip");
+  // No steady span: no steady cracks, the whole-workpiece counts unchanged.
+  const CutCrackCounts none = count_cut_cracks(cracks, 0.9e-3, {1.0, 1.0});
+  CHECK(none.subsurface_steady == 0);
+  CHECK(none.subsurface_steady_damage_depth_m == 0);
+  CHECK(none.subsurface == 3);
 }
 
 TEST_CASE("cutting: a small cut regression (forces, cracks, determinism, grooves)", "[cutting]") {
@@ -250,6 +260,16 @@ TEST_CASE("cutting: a small cut regression (forces, cracks, determinism, grooves
   CHECK(a.cracks.chip > 0);
   CHECK(a.samples.back().travel_m >= p.length_m);
   CHECK(a.n_removed_by_grooves == 0);
+  // The steady part machined the surface from the edge's final x over the travel after the entry; a sharp
+  // edge starts half a largest radius right of the workpiece (box[1]) and the rake face leans forwards over
+  // the depth of cut, so the final edge lies that far right of box[1] - travel.
+  const double edge_start =
+      a.workpiece_box_m[1] + 0.5 * 13e-6 + p.depth_of_cut_m * std::tan(15 * std::numbers::pi / 180);
+  CHECK_THAT(a.steady_machined_x_m[1] - a.steady_machined_x_m[0],
+             WithinRel(a.samples.back().travel_m - p.entry_fraction * p.length_m, 1e-9));
+  CHECK_THAT(a.steady_machined_x_m[0], WithinAbs(edge_start - a.samples.back().travel_m, 1.5e-6));
+  CHECK(a.cracks.subsurface_steady <= a.cracks.subsurface);
+  CHECK(a.cracks.subsurface_steady_damage_depth_m <= a.cracks.subsurface_damage_depth_m);
   // Same specimen and parameters: bit-identical forces.
   const CutResult b = run(p);
   REQUIRE(b.samples.size() == a.samples.size());

@@ -93,12 +93,19 @@ struct CutSample {
 struct CutCrackCounts {
   int tensile = 0, shear = 0, chip = 0, subsurface = 0;
   double subsurface_damage_depth_m = 0;  ///< deepest subsurface crack below the cut line
+  /// Subsurface cracks under the surface machined during the steady part of the cut (CutResult::
+  /// steady_machined_x_m), and the deepest of them: the damage the steady cut leaves in the part. The
+  /// whole workpiece's depth above is often a breakout of its free corner at the entry (docs/dem.md).
+  int subsurface_steady = 0;
+  double subsurface_steady_damage_depth_m = 0;
 };
 
 /// "chip" above the cut line (y > surface - depth of cut), else "subsurface".
 inline bool is_chip_crack(double y_m, double y_cut_m) { return y_m > y_cut_m; }
 inline const char* crack_place(double y_m, double y_cut_m) { return is_chip_crack(y_m, y_cut_m) ? "chip" : "subsurface"; }
-CutCrackCounts count_cut_cracks(const std::vector<CrackEvent>& cracks, double y_cut_m);
+/// Counts by mode and place; `steady_x_m` = {from, to} is the span of x machined during the steady part.
+CutCrackCounts count_cut_cracks(const std::vector<CrackEvent>& cracks, double y_cut_m,
+                                std::array<double, 2> steady_x_m);
 
 /// The mean forces over one stretch of the tool's travel, [from, to).
 struct TravelWindow {
@@ -115,6 +122,9 @@ struct CutResult {
   CutCrackCounts cracks;
   double y_top_m = 0, y_cut_m = 0, width_m = 0;  ///< width = out-of-plane thickness
   std::array<double, 4> workpiece_box_m{};       ///< x_min, x_max, y_min, y_max before the cut
+  /// x span {from, to} of the surface the tool's cutting edge (its front-most lowest point) machined
+  /// during the steady part, from its position at the end of the entry to its final one (once finished).
+  std::array<double, 2> steady_machined_x_m{};
   std::size_t n_particles = 0, n_removed_by_grooves = 0;
   std::int64_t steps = 0;
   double time_step_s = 0, wall_time_s = 0;
