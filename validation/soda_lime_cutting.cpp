@@ -231,10 +231,22 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
 
   // 2. The kerf-dem table: one row per replicate, and the means that the report layer compares. Trapezoidal
   // grooves go beyond the paper (no measured counterpart): their rows carry their own source.
-  std::string rows = csv_line({"source", "surface", "groove_shape", "depth_of_cut_mm", "replicate", "seed", "width_mm",
-                               "main_force_N", "thrust_force_N", "cracks_tensile", "cracks_shear", "cracks_chip",
-                               "cracks_subsurface", "subsurface_damage_depth_um", "cracks_subsurface_steady",
-                               "subsurface_damage_depth_steady_um", "wall_time_s"});
+  // The per-replicate columns after the condition's, each a number of kerf-dem's replicate row: one list gives
+  // the header and the values.
+  const std::vector<std::string> replicate_columns{"width_mm",
+                                                   "main_force_N",
+                                                   "thrust_force_N",
+                                                   "cracks_tensile",
+                                                   "cracks_shear",
+                                                   "cracks_chip",
+                                                   "cracks_subsurface",
+                                                   "subsurface_damage_depth_um",
+                                                   "cracks_subsurface_steady",
+                                                   "subsurface_damage_depth_steady_um",
+                                                   "wall_time_s"};
+  std::vector<std::string> header{"source", "surface", "groove_shape", "depth_of_cut_mm", "replicate", "seed"};
+  header.insert(header.end(), replicate_columns.begin(), replicate_columns.end());
+  std::string rows = csv_line(header);
   std::string means =
       csv_line({"source", "surface", "groove_shape", "depth_of_cut_mm", "width_mm", "main_force_N",
                 "main_force_replicate_std_N", "thrust_force_N", "thrust_force_replicate_std_N", "cracks_tensile",
@@ -243,15 +255,16 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
   for (const auto& c : spec.conditions) {
     const ConditionResult& r = results.at(c.name);
     const std::string source = c.groove_shape == "trapezoidal" ? "kerf_dem_trapezoidal" : "kerf_dem";
-    for (const auto& row : r.replicates)
-      rows += csv_line({source, c.surface, c.groove_shape, csv_number(c.depth_of_cut_mm),
-                        std::to_string(row.at("replicate").get<int>()), std::to_string(row.at("seed").get<long long>()),
-                        csv_number(row.at("width_mm")), csv_number(row.at("main_force_N")),
-                        csv_number(row.at("thrust_force_N")), csv_number(row.at("cracks_tensile")),
-                        csv_number(row.at("cracks_shear")), csv_number(row.at("cracks_chip")),
-                        csv_number(row.at("cracks_subsurface")), csv_number(row.at("subsurface_damage_depth_um")),
-                        csv_number(row.at("cracks_subsurface_steady")),
-                        csv_number(row.at("subsurface_damage_depth_steady_um")), csv_number(row.at("wall_time_s"))});
+    for (const auto& row : r.replicates) {
+      std::vector<std::string> fields{source,
+                                      c.surface,
+                                      c.groove_shape,
+                                      csv_number(c.depth_of_cut_mm),
+                                      std::to_string(row.at("replicate").get<int>()),
+                                      std::to_string(row.at("seed").get<long long>())};
+      for (const auto& column : replicate_columns) fields.push_back(csv_number(row.at(column)));
+      rows += csv_line(fields);
+    }
     means += csv_line({source, c.surface, c.groove_shape, csv_number(c.depth_of_cut_mm), csv_number(r.width_mm),
                        csv_number(r.main_n), csv_number(r.main_std_n), csv_number(r.thrust_n),
                        csv_number(r.thrust_std_n), csv_number(r.cracks_tensile), csv_number(r.cracks_shear),
