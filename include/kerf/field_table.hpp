@@ -1,0 +1,248 @@
+#pragma once
+// One field table per parameter struct: the single description of a struct's parameters as users see them.
+//
+// Each field names its key (with the unit suffix users type: "tensile_strength_MPa"), the unit and its
+// conversion to SI, the valid range (in the key's unit), a one-line description and how to get and set the
+// SI value on the struct. The default of a field is the struct's own member initialiser (`S{}`), written
+// once. Reading, writing (to JSON), validation and the key reference in the docs all come from the table:
+//
+//   struct Tool { double rake_rad = -0.26; int segments = 4; };
+//   const FieldTable<Tool> kToolFields{
+//       number_field("rake_deg", units::kDeg, Range::open(-90.0, 90.0), "rake angle", &Tool::rake_rad),
+//       int_field("edge_segments", 1, 64, "segments of the rounded edge", &Tool::segments)};
+//   Tool tool = read_fields(reader, kToolFields, Tool{});    // unknown keys still need reader.finish()
+//   check_fields(kToolFields, tool);                         // InputError naming the key, not the JSON path
+//   Json j = fields_to_json(kToolFields, tool);              // key -> value in the key's unit
+//   std::string md = fields_markdown(kToolFields);           // | key | unit | range | default | meaning |
+//
+// Physics code validates with check_fields (the key alone names the field); the scene layer, which knows the
+// JSON path, prefixes it (with_path) so the message names "material.tensile_strength_MPa".
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <type_traits>
+#include <functional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include "kerf/error.hpp"
+#include "kerf/json_reader.hpp"
+#include "kerf/units.hpp"
+
+namespace kerf {
+
+/// A unit as users type it, with its conversion to and from SI (functions, not a factor: deg -> rad is
+/// deg * pi / 180, which is not deg * (pi / 180) to the bit).
+struct Unit {
+  std::string_view symbol;  ///< "GPa", "deg", "" (dimensionless or already SI without a suffix)
+  double (*to_si)(double);
+  double (*from_si)(double);
+};
+
+namespace units {
+inline constexpr double identity(double v) { return v; }
+inline constexpr Unit kNone{"", identity, identity};
+inline constexpr Unit kSi(std::string_view symbol) { return {symbol, identity, identity}; }
+inline constexpr Unit kGPa{"GPa", gpa_to_pa, pa_to_gpa};
+inline constexpr Unit kMPa{"MPa", mpa_to_pa, pa_to_mpa};
+inline constexpr Unit kDeg{"deg", deg_to_rad, rad_to_deg};
+inline constexpr Unit kMm{"mm", mm_to_m, m_to_mm};
+inline constexpr Unit kUm{"um", um_to_m, m_to_um};
+}  // namespace units
+
+/// A real parameter, stored in SI on the struct.
+template <class S>
+struct NumberField {
+  std::string_view key;
+  Unit unit;
+  Range range;  ///< in the key's unit
+  std::string_view doc;
+  std::function<double(const S&)> get;  ///< SI
+  std::function<void(S&, double)> set;  ///< SI
+};
+
+/// An integer parameter in [lo, hi].
+template <class S>
+struct IntField {
+  std::string_view key;
+  int lo, hi;
+  std::string_view doc;
+  std::function<int(const S&)> get;
+  std::function<void(S&, int)> set;
+};
+
+/// A yes/no parameter.
+template <class S>
+struct BoolField {
+  std::string_view key;
+  std::string_view doc;
+  std::function<bool(const S&)> get;
+  std::function<void(S&, bool)> set;
+};
+
+/// A choice among named values, parsed once into its enum (the index into `names` is the enum's value).
+template <class S>
+struct ChoiceField {
+  std::string_view key;
+  std::span<const std::string_view> names;
+  std::string_view doc;
+  std::function<int(const S&)> get;
+  std::function<void(S&, int)> set;
+};
+
+template <class S>
+using Field = std::variant<NumberField<S>, IntField<S>, BoolField<S>, ChoiceField<S>>;
+
+template <class S>
+using FieldTable = std::vector<Field<S>>;
+
+/// A number stored in SI in `member`.
+template <class S>
+NumberField<S> number_field(std::string_view key, Unit unit, Range range, std::string_view doc, double S::*member) {
+  return {key, unit, range, doc, [member](const S& s) { return s.*member; }, [member](S& s, double v) { s.*member = v; }};
+}
+template <class S>
+IntField<S> int_field(std::string_view key, int lo, int hi, std::string_view doc, int S::*member) {
+  return {key, lo, hi, doc, [member](const S& s) { return s.*member; }, [member](S& s, int v) { s.*member = v; }};
+}
+template <class S>
+BoolField<S> bool_field(std::string_view key, std::string_view doc, bool S::*member) {
+  return {key, doc, [member](const S& s) { return s.*member; }, [member](S& s, bool v) { s.*member = v; }};
+}
+
+/// The names of an enum's values, in the enum's order (value k is names[k]), and the parse of a name.
+template <class E>
+struct EnumNames {
+  std::span<const std::string_view> names;
+  /// The enum value called `text`; InputError on `path` listing the valid names otherwise.
+  E parse(const std::string& text, const std::string& path) const {
+    for (std::size_t k = 0; k < names.size(); ++k)
+      if (names[k] == text) return static_cast<E>(k);
+    throw InputError(path, text, describe_choices(text, std::vector<std::string>(names.begin(), names.end())));
+  }
+  std::string name(E value) const { return std::string(names[static_cast<std::size_t>(value)]); }
+};
+
+template <class S, class E>
+ChoiceField<S> choice_field(std::string_view key, const EnumNames<E>& names, std::string_view doc, E S::*member) {
+  return {key, names.names, doc, [member](const S& s) { return static_cast<int>(s.*member); },
+          [member](S& s, int v) { s.*member = static_cast<E>(v); }};
+}
+
+/// Reads every field present in the reader's object into a copy of `s` (absent fields keep their value,
+/// the default when `s` is S{}); values are range-checked in the key's unit, errors name the dotted path.
+/// The reader's finish() (unknown keys) is the caller's: a scene object may hold several tables.
+template <class S>
+S read_fields(ObjectReader& reader, const FieldTable<S>& table, S s) {
+  for (const auto& field : table) {
+    std::visit(
+        [&](const auto& f) {
+          using F = std::decay_t<decltype(f)>;
+          const std::string key(f.key);
+          if constexpr (std::is_same_v<F, NumberField<S>>) {
+            if (const auto v = reader.get_optional_number(key, f.range, f.unit.symbol)) f.set(s, f.unit.to_si(*v));
+          } else if constexpr (std::is_same_v<F, IntField<S>>) {
+            f.set(s, reader.get_int_or(key, f.get(s), f.lo, f.hi));
+          } else if constexpr (std::is_same_v<F, BoolField<S>>) {
+            f.set(s, reader.get_bool_or(key, f.get(s)));
+          } else {
+            const std::vector<std::string> names(f.names.begin(), f.names.end());
+            const std::string text = reader.get_choice_or(key, names[static_cast<std::size_t>(f.get(s))], names);
+            f.set(s, static_cast<int>(std::find(names.begin(), names.end(), text) - names.begin()));
+          }
+        },
+        field);
+  }
+  return s;
+}
+
+/// Checks every field of `s` against its range; InputError names the key (no path: see with_path).
+template <class S>
+void check_fields(const FieldTable<S>& table, const S& s) {
+  for (const auto& field : table) {
+    std::visit(
+        [&](const auto& f) {
+          using F = std::decay_t<decltype(f)>;
+          if constexpr (std::is_same_v<F, NumberField<S>>) {
+            const double v = f.unit.from_si(f.get(s));
+            if (!f.range.contains(v)) throw InputError(std::string(f.key), format_value(v), f.range.describe(f.unit.symbol));
+          } else if constexpr (std::is_same_v<F, IntField<S>>) {
+            const int v = f.get(s);
+            if (v < f.lo || v > f.hi)
+              throw InputError(std::string(f.key), std::to_string(v), fmt::format("an integer in [{}, {}]", f.lo, f.hi));
+          } else if constexpr (std::is_same_v<F, ChoiceField<S>>) {
+            const int v = f.get(s);
+            if (v < 0 || static_cast<std::size_t>(v) >= f.names.size())
+              throw InputError(std::string(f.key), std::to_string(v), "a valid choice");
+          }
+        },
+        field);
+  }
+}
+
+/// Every field as key -> value in the key's unit (what read_fields reads back to the same struct).
+template <class S>
+Json fields_to_json(const FieldTable<S>& table, const S& s) {
+  Json j = Json::object();
+  for (const auto& field : table) {
+    std::visit(
+        [&](const auto& f) {
+          using F = std::decay_t<decltype(f)>;
+          const std::string key(f.key);
+          if constexpr (std::is_same_v<F, NumberField<S>>) j[key] = f.unit.from_si(f.get(s));
+          else if constexpr (std::is_same_v<F, ChoiceField<S>>) j[key] = std::string(f.names[static_cast<std::size_t>(f.get(s))]);
+          else j[key] = f.get(s);
+        },
+        field);
+  }
+  return j;
+}
+
+/// The key reference of a table as a Markdown table: key, unit, valid range, default (of `defaults`), meaning.
+template <class S>
+std::string fields_markdown(const FieldTable<S>& table, const S& defaults = S{}) {
+  std::string md = "| key | unit | valid | default | meaning |\n|---|---|---|---|---|\n";
+  for (const auto& field : table) {
+    std::visit(
+        [&](const auto& f) {
+          using F = std::decay_t<decltype(f)>;
+          std::string unit = "-", valid, value;
+          if constexpr (std::is_same_v<F, NumberField<S>>) {
+            if (!f.unit.symbol.empty()) unit = std::string(f.unit.symbol);
+            valid = f.range.describe("");
+            value = format_value(f.unit.from_si(f.get(defaults)));
+          } else if constexpr (std::is_same_v<F, IntField<S>>) {
+            valid = fmt::format("an integer in [{}, {}]", f.lo, f.hi);
+            value = std::to_string(f.get(defaults));
+          } else if constexpr (std::is_same_v<F, BoolField<S>>) {
+            valid = "true or false";
+            value = f.get(defaults) ? "true" : "false";
+          } else {
+            for (std::size_t k = 0; k < f.names.size(); ++k) valid += fmt::format("{}`{}`", k ? ", " : "", f.names[k]);
+            value = fmt::format("`{}`", f.names[static_cast<std::size_t>(f.get(defaults))]);
+          }
+          md += fmt::format("| `{}` | {} | {} | {} | {} |\n", f.key, unit, valid, value, f.doc);
+        },
+        field);
+  }
+  return md;
+}
+
+/// Runs `body`; an InputError it throws is rethrown with `path.` before its field (the scene layer's map
+/// from a physics check to the JSON key).
+template <class Body>
+decltype(auto) with_path(const std::string& path, Body&& body) {
+  try {
+    return std::forward<Body>(body)();
+  } catch (const InputError& e) {
+    if (path.empty()) throw;
+    throw InputError(path + "." + e.field(), e.value(), e.expected());
+  }
+}
+
+}  // namespace kerf

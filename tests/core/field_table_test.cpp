@@ -1,0 +1,107 @@
+// The field tables: reading with defaults and ranges, unknown keys, validation naming the key, the JSON
+// round trip and the Markdown key reference.
+#include "kerf/field_table.hpp"
+
+#include <catch2/catch.hpp>
+#include <numbers>
+
+namespace {
+
+enum class Shape { none, rectangular, trapezoidal };
+constexpr std::string_view kShapeNames[] = {"none", "rectangular", "trapezoidal"};
+constexpr kerf::EnumNames<Shape> kShapes{kShapeNames};
+
+struct Params {
+  double modulus_pa = 70e9;
+  double angle_rad = 0.5;
+  int count = 2;
+  bool check = true;
+  Shape shape = Shape::none;
+};
+
+const kerf::FieldTable<Params>& table() {
+  using namespace kerf;
+  static const FieldTable<Params> t{
+      number_field("modulus_GPa", units::kGPa, Range::positive(), "a modulus", &Params::modulus_pa),
+      number_field("angle_deg", units::kDeg, Range::closed(0.0, 90.0), "an angle", &Params::angle_rad),
+      int_field("count", 1, 16, "a count", &Params::count),
+      bool_field("check", "a flag", &Params::check),
+      choice_field("shape", kShapes, "a shape", &Params::shape)};
+  return t;
+}
+
+Params read(const kerf::Json& j) {
+  kerf::ObjectReader r(j, "section");
+  Params p = kerf::read_fields(r, table(), Params{});
+  r.finish();
+  return p;
+}
+
+}  // namespace
+
+TEST_CASE("field table: absent keys keep the struct's defaults, present ones are converted to SI") {
+  const Params d = read(kerf::Json::object());
+  CHECK(d.modulus_pa == 70e9);
+  CHECK(d.count == 2);
+  CHECK(d.shape == Shape::none);
+  const Params p = read(kerf::Json{{"modulus_GPa", 2.5}, {"angle_deg", 30}, {"count", 5}, {"check", false},
+                                   {"shape", "trapezoidal"}});
+  CHECK(p.modulus_pa == 2.5e9);
+  CHECK(p.angle_rad == 30 * std::numbers::pi / 180);  // the conversion the unit names, to the bit
+  CHECK(p.count == 5);
+  CHECK_FALSE(p.check);
+  CHECK(p.shape == Shape::trapezoidal);
+}
+
+TEST_CASE("field table: unknown keys, ranges and choices are input errors naming the path") {
+  const auto message = [](const kerf::Json& j) {
+    try {
+      read(j);
+    } catch (const kerf::InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  CHECK(message({{"modulus_GP", 1}}).find("section.modulus_GP") != std::string::npos);
+  CHECK(message({{"modulus_GP", 1}}).find("did you mean 'modulus_GPa'") != std::string::npos);
+  CHECK(message({{"modulus_GPa", 0}}).find("section.modulus_GPa = 0: expected a positive value in GPa") == 0);
+  CHECK(message({{"angle_deg", 90.5}}).find("section.angle_deg") == 0);
+  CHECK(message({{"count", 17}}).find("section.count = 17: expected an integer in [1, 16]") == 0);
+  CHECK(message({{"shape", "rectangle"}}).find("did you mean 'rectangular'") != std::string::npos);
+}
+
+TEST_CASE("field table: check_fields names the key; with_path adds the JSON path") {
+  Params p;
+  p.count = 0;
+  CHECK_THROWS_WITH(kerf::check_fields(table(), p), "count = 0: expected an integer in [1, 16]");
+  CHECK_THROWS_WITH(kerf::with_path("material", [&] { kerf::check_fields(table(), p); }),
+                    "material.count = 0: expected an integer in [1, 16]");
+  p = Params{};
+  p.modulus_pa = -1e9;
+  CHECK_THROWS_WITH(kerf::check_fields(table(), p), "modulus_GPa = -1: expected a positive value in GPa");
+  CHECK_NOTHROW(kerf::check_fields(table(), Params{}));
+}
+
+TEST_CASE("field table: to_json reads back to the same struct, every key written") {
+  Params p;
+  p.modulus_pa = 1.234567890123e9;
+  p.angle_rad = 0.123456789;
+  p.count = 7;
+  p.check = false;
+  p.shape = Shape::rectangular;
+  const kerf::Json j = kerf::fields_to_json(table(), p);
+  CHECK(j.size() == table().size());
+  const Params q = read(j);
+  CHECK(q.modulus_pa == p.modulus_pa);
+  CHECK(q.angle_rad == Approx(p.angle_rad).epsilon(1e-15));
+  CHECK(q.count == p.count);
+  CHECK(q.check == p.check);
+  CHECK(q.shape == p.shape);
+}
+
+TEST_CASE("field table: the Markdown reference has a row per key with its unit and default") {
+  const std::string md = kerf::fields_markdown(table());
+  CHECK(md.find("| `modulus_GPa` | GPa | a positive value | 70 | a modulus |") != std::string::npos);
+  CHECK(md.find("| `count` | - | an integer in [1, 16] | 2 | a count |") != std::string::npos);
+  CHECK(md.find("| `shape` | - | `none`, `rectangular`, `trapezoidal` | `none` | a shape |") != std::string::npos);
+}
