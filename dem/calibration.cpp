@@ -88,13 +88,21 @@ MacroProperties evaluate(Context& ctx, const Material& m) {
   const auto& t = ctx.spec->targets;
   if (ctx.spec->free_modulus) {
     const double a = t.youngs_modulus_pa / e.macro.youngs_modulus_pa;
-    ctx.current.contact.effective_modulus_pa = m.contact.effective_modulus_pa * a;
-    ctx.current.joint.effective_modulus_pa = m.joint.effective_modulus_pa * a;
+    std::visit(
+        [&](auto& c, auto& j, const auto& c0, const auto& j0) {
+          c.effective_modulus_pa = c0.effective_modulus_pa * a;
+          j.effective_modulus_pa = j0.effective_modulus_pa * a;
+        },
+        ctx.current.contact, ctx.current.joint, m.contact, m.joint);
   }
   if (ctx.spec->free_tensile_strength) {
     const double b = t.tensile_strength_pa / e.macro.tensile_strength_pa;
-    ctx.current.joint.tensile_strength_pa = m.joint.tensile_strength_pa * b;
-    ctx.current.joint.cohesion_pa = m.joint.cohesion_pa * b;
+    std::visit(
+        [&](auto& j, const auto& j0) {
+          j.tensile_strength_pa = j0.tensile_strength_pa * b;
+          j.cohesion_pa = j0.cohesion_pa * b;
+        },
+        ctx.current.joint, m.joint);
   }
   return e.macro;
 }
@@ -112,11 +120,16 @@ constexpr double kSecantMinStep = 0.02;
 /// ones, clamped to their ranges.
 Material material_at(const Context& ctx, double ln_kappa, double ln_ratio) {
   Material m = ctx.current;
-  if (ctx.spec->free_stiffness_ratio)
-    m.contact.stiffness_ratio = m.joint.stiffness_ratio = std::exp(std::clamp(ln_kappa, std::log(kKappaMin), std::log(kKappaMax)));
-  if (ctx.spec->free_cohesion)
-    m.joint.cohesion_pa = std::exp(std::clamp(ln_ratio, std::log(kRatioMin), std::log(kRatioMax))) * m.joint.tensile_strength_pa;
-  m.joint = FlatJointParams::validated(m.joint, "material");
+  std::visit(
+      [&](auto& contact, auto& joint) {
+        if (ctx.spec->free_stiffness_ratio)
+          contact.stiffness_ratio = joint.stiffness_ratio =
+              std::exp(std::clamp(ln_kappa, std::log(kKappaMin), std::log(kKappaMax)));
+        if (ctx.spec->free_cohesion)
+          joint.cohesion_pa = std::exp(std::clamp(ln_ratio, std::log(kRatioMin), std::log(kRatioMax))) * joint.tensile_strength_pa;
+        joint = with_path("material", [&] { return std::decay_t<decltype(joint)>::validated(joint); });
+      },
+      m.contact, m.joint);
   return m;
 }
 
@@ -125,8 +138,9 @@ double ln_strength_ratio(const MacroProperties& p) { return std::log(p.compressi
 /// The start point in the log variables.
 std::pair<double, double> start_point(const Material& start) {
   // c / sigma_c starts at >= 1.5: for c <~ sigma_c the strength ratio barely responds (see the ranges).
-  return {std::log(std::clamp(start.joint.stiffness_ratio, kKappaMin, kKappaMax)),
-          std::log(std::clamp(start.joint.cohesion_pa / start.joint.tensile_strength_pa, 1.5, kRatioMax))};
+  const CalibratedParams j = calibrated_params(start);
+  return {std::log(std::clamp(j.stiffness_ratio, kKappaMin, kKappaMax)),
+          std::log(std::clamp(j.cohesion_pa / j.tensile_strength_pa, 1.5, kRatioMax))};
 }
 
 /// The secant iteration (CalibrationMethod::secant). Diagonal quasi-Newton in log variables: nu responds to
@@ -198,10 +212,10 @@ struct Reduced {
     bool have_nu = false, have_r = false;
     const auto& log = ctx->result.log;
     for (std::size_t b = log.size(); b-- > 1 && !(have_nu && have_r);) {
-      const auto& mb = log[b].material.joint;
+      const CalibratedParams mb = calibrated_params(log[b].material);
       const auto& pb = log[b].macro;
       for (std::size_t a = b; a-- > 0 && !(have_nu && have_r);) {
-        const auto& ma = log[a].material.joint;
+        const CalibratedParams ma = calibrated_params(log[a].material);
         const auto& pa = log[a].macro;
         const double dk = std::log(mb.stiffness_ratio / ma.stiffness_ratio);
         const double dr = std::log((mb.cohesion_pa / mb.tensile_strength_pa) / (ma.cohesion_pa / ma.tensile_strength_pa));
@@ -256,7 +270,7 @@ void solve_hybrid(Context& ctx) {
     if (status != GSL_SUCCESS) {
       // No progress (GSL_ENOPROG, GSL_ENOPROGJ) or a failed restart: start again from the best point so far
       // (its kappa and c / sigma_c, the current proportional corrections) with a fresh Jacobian.
-      const auto& best = ctx.result.material.joint;
+      const CalibratedParams best = calibrated_params(ctx.result.material);
       status = set_start(std::log(best.stiffness_ratio), std::log(best.cohesion_pa / best.tensile_strength_pa));
       continue;
     }
@@ -268,22 +282,6 @@ void solve_hybrid(Context& ctx) {
 
 }  // namespace
 
-bool same_micro_parameters(const Material& a, const Material& b) {
-  // Every numeric field (a new field must be added here and to serialize_evaluations).
-  static_assert(sizeof(LinearContactParams) == 3 * sizeof(double) && sizeof(FlatJointParams) == 9 * sizeof(double));
-  const auto& ca = a.contact;
-  const auto& cb = b.contact;
-  const auto& ja = a.joint;
-  const auto& jb = b.joint;
-  return a.density_kg_per_m3 == b.density_kg_per_m3 && a.local_damping == b.local_damping &&
-         ca.effective_modulus_pa == cb.effective_modulus_pa && ca.stiffness_ratio == cb.stiffness_ratio &&
-         ca.friction_coefficient == cb.friction_coefficient && ja.effective_modulus_pa == jb.effective_modulus_pa &&
-         ja.stiffness_ratio == jb.stiffness_ratio && ja.tensile_strength_pa == jb.tensile_strength_pa &&
-         ja.cohesion_pa == jb.cohesion_pa && ja.friction_angle_rad == jb.friction_angle_rad &&
-         ja.friction_coefficient == jb.friction_coefficient && ja.n_elements == jb.n_elements &&
-         ja.radius_multiplier == jb.radius_multiplier && ja.tan_friction_angle == jb.tan_friction_angle;
-}
-
 namespace {
 constexpr std::uint64_t kEvaluationsMagic = 0x4b45524643414c31;  // "KERFCAL1"
 
@@ -292,10 +290,7 @@ template <class Self, class Io>
 void evaluation_fields(Self& e, Io& io) {
   auto& m = e.material;
   io(m.name, m.density_kg_per_m3, m.local_damping);
-  io(m.contact.effective_modulus_pa, m.contact.stiffness_ratio, m.contact.friction_coefficient);
-  io(m.joint.effective_modulus_pa, m.joint.stiffness_ratio, m.joint.tensile_strength_pa, m.joint.cohesion_pa);
-  io(m.joint.friction_angle_rad, m.joint.friction_coefficient, m.joint.n_elements, m.joint.radius_multiplier);
-  io(m.joint.tan_friction_angle);
+  io(m.contact, m.joint);  // the laws (variants of trivially copyable parameter structs), every field
   io(e.macro.youngs_modulus_pa, e.macro.poissons_ratio, e.macro.tensile_strength_pa, e.macro.compressive_strength_pa);
   io(e.index, e.max_relative_error, e.wall_time_s);
 }

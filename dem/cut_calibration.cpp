@@ -16,8 +16,12 @@ Material scale_bond_strengths(const Material& m, double factor, const std::strin
   if (factor == 1) return m;
   Material out = m;
   out.name = name;
-  out.joint.tensile_strength_pa *= factor;
-  out.joint.cohesion_pa *= factor;
+  std::visit(
+      [&](auto& j) {
+        j.tensile_strength_pa *= factor;
+        j.cohesion_pa *= factor;
+      },
+      out.joint);
   return out;
 }
 

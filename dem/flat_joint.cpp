@@ -1,53 +1,48 @@
-// The 2D flat-joint contact: physics-dem.md section 1 (Potyondy 2012, 2015).
+// The 2D flat-joint contact: docs/physics-dem.md section 1 (Potyondy 2012, 2015).
 #include "kerf/dem/flat_joint.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "kerf/error.hpp"
-#include "kerf/units.hpp"
 
 namespace kerf::dem {
 
-namespace {
-
-void require(bool ok, const std::string& path, const std::string& key, double value, const std::string& expected) {
-  if (!ok) throw InputError(path.empty() ? key : path + "." + key, format_value(value), expected);
+const FieldTable<FlatJointParams>& FlatJointParams::fields() {
+  using P = FlatJointParams;
+  static const FieldTable<P> table{
+      number_field("bond_effective_modulus_GPa", units::kGPa, Range::positive(),
+                   "bond effective modulus Ebar* (k_n = Ebar* / (R1 + R2))", &P::effective_modulus_pa),
+      number_field("bond_stiffness_ratio", units::kNone, Range::positive(), "bond normal-to-shear stiffness ratio kappabar*",
+                   &P::stiffness_ratio),
+      number_field("tensile_strength_MPa", units::kMPa, Range::non_negative(), "bond tensile strength sigma_c",
+                   &P::tensile_strength_pa),
+      number_field("cohesion_MPa", units::kMPa, Range::non_negative(), "bond cohesion c", &P::cohesion_pa),
+      number_field("friction_angle_deg", units::kDeg, Range{0.0, 90.0, false, true},
+                   "bond friction angle phi (Coulomb envelope of bonded elements)", &P::friction_angle_rad),
+      number_field("friction_coefficient", units::kNone, Range::non_negative(),
+                   "friction of unbonded elements (and of the unbonded contact: one key)", &P::friction_coefficient),
+      int_field("n_elements", 2, 16, "elements per interface N_r (>= 2, else bending never enters the strength test)",
+                &P::n_elements),
+      number_field("radius_multiplier", units::kNone, Range{0.0, 1.0, true, false},
+                   "interface half-length R = lambda min(R1, R2)", &P::radius_multiplier)};
+  return table;
 }
 
-}  // namespace
-
-FlatJointParams FlatJointParams::validated(const FlatJointParams& raw, const std::string& path) {
-  require(std::isfinite(raw.effective_modulus_pa) && raw.effective_modulus_pa > 0, path, "bond_effective_modulus_GPa",
-          units::pa_to_gpa(raw.effective_modulus_pa), "a positive value in GPa");
-  require(std::isfinite(raw.stiffness_ratio) && raw.stiffness_ratio > 0, path, "bond_stiffness_ratio",
-          raw.stiffness_ratio, "a positive value (k_n / k_s)");
-  require(std::isfinite(raw.tensile_strength_pa) && raw.tensile_strength_pa >= 0, path, "tensile_strength_MPa",
-          units::pa_to_mpa(raw.tensile_strength_pa), "a non-negative value in MPa");
-  require(std::isfinite(raw.cohesion_pa) && raw.cohesion_pa >= 0, path, "cohesion_MPa", units::pa_to_mpa(raw.cohesion_pa),
-          "a non-negative value in MPa");
-  require(std::isfinite(raw.friction_angle_rad) && raw.friction_angle_rad >= 0 &&
-              raw.friction_angle_rad < std::numbers::pi / 2,
-          path, "friction_angle_deg", units::rad_to_deg(raw.friction_angle_rad), "a value in [0, 90) deg");
-  require(std::isfinite(raw.friction_coefficient) && raw.friction_coefficient >= 0, path, "friction_coefficient",
-          raw.friction_coefficient, "a non-negative value");
-  require(raw.n_elements >= 2 && raw.n_elements <= 16, path, "n_elements", raw.n_elements,
-          "an integer in [2, 16] (N_r >= 2 in 2D, else bending never enters the strength test)");
-  require(std::isfinite(raw.radius_multiplier) && raw.radius_multiplier > 0 && raw.radius_multiplier <= 1, path,
-          "radius_multiplier", raw.radius_multiplier, "a value in (0, 1]");
+FlatJointParams FlatJointParams::validated(const FlatJointParams& raw) {
+  check_fields(fields(), raw);
   FlatJointParams p = raw;
   p.tan_friction_angle = std::tan(raw.friction_angle_rad);
   return p;
 }
 
-FlatJointGeometry flat_joint_geometry(const FlatJointParams& p, double r1_m, double r2_m, double thickness_m) {
+BondGeometry bond_geometry(const FlatJointParams& p, double r1_m, double r2_m, double thickness_m) {
   const double r_min = r2_m > 0 ? std::min(r1_m, r2_m) : r1_m;
   const double kn = p.effective_modulus_pa / (r1_m + r2_m);  // r2 = 0: disk-wall, L = R1
   return {p.radius_multiplier * r_min, thickness_m, kn, kn / p.stiffness_ratio};
 }
 
-double flat_joint_bonded_energy(const FlatJointParams& p, const FlatJointGeometry& geo, const FlatJointKinematics& kin,
+double flat_joint_bonded_energy(const FlatJointParams& p, const BondGeometry& geo, const BondKinematics& kin,
                                 std::span<const double> shear_force_n, std::span<const std::uint8_t> bonded) {
   const int nr = p.n_elements;
   const double le = 2.0 * geo.half_length_m / nr;

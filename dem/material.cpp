@@ -1,14 +1,19 @@
 // Reading the micro-parameters of a material (units converted here, once).
 #include "kerf/dem/material.hpp"
 
-#include <cstdlib>
-
-#include "kerf/dem/contact_models.hpp"
 #include "kerf/error.hpp"
 #include "kerf/material.hpp"
-#include "kerf/units.hpp"
 
 namespace kerf::dem {
+
+const FieldTable<Material>& Material::fields() {
+  static const FieldTable<Material> table{
+      number_field("density_kg_per_m3", units::kSi("kg/m^3"), Range::positive(), "particle density",
+                   &Material::density_kg_per_m3),
+      number_field("local_damping", units::kNone, Range{0.0, 1.0, false, true},
+                   "Cundall's local damping alpha (docs/physics-dem.md section 1)", &Material::local_damping)};
+  return table;
+}
 
 Material read_material(const Json& object, const std::string& path) {
   if (!object.is_object()) throw InputError(path, json_value_text(object), "an object of material micro-parameters");
@@ -25,32 +30,15 @@ Material read_material(const Json& object, const std::string& path) {
   }
   ObjectReader r(merged, path);
   Material m;
-  using units::gpa_to_pa;
-  using units::mpa_to_pa;
-  m.name = r.get_string_or("name", "custom");
-  m.density_kg_per_m3 = r.get_number_or("density_kg_per_m3", 2400, Range::positive(), "kg/m^3");
-  m.contact.effective_modulus_pa =
-      gpa_to_pa(r.get_number_or("effective_modulus_GPa", 107, Range::positive(), "GPa"));
-  m.contact.stiffness_ratio = r.get_number_or("stiffness_ratio", 3.1, Range::positive(), "");
-  m.joint.effective_modulus_pa =
-      gpa_to_pa(r.get_number_or("bond_effective_modulus_GPa", 107, Range::positive(), "GPa"));
-  m.joint.stiffness_ratio = r.get_number_or("bond_stiffness_ratio", 3.1, Range::positive(), "");
-  m.joint.tensile_strength_pa = mpa_to_pa(r.get_number_or("tensile_strength_MPa", 200, Range::non_negative(), "MPa"));
-  m.joint.cohesion_pa = mpa_to_pa(r.get_number_or("cohesion_MPa", 113, Range::non_negative(), "MPa"));
-  m.joint.friction_angle_rad =
-      units::deg_to_rad(r.get_number_or("friction_angle_deg", 25, Range{0.0, 90.0, false, true}, "deg"));
-  const double mu = r.get_number_or("friction_coefficient", 0.577, Range::non_negative(), "");
-  m.contact.friction_coefficient = mu;
-  m.joint.friction_coefficient = mu;
-  m.joint.n_elements = r.get_int_or("n_elements", 2, 2, 16);
-  m.joint.radius_multiplier = r.get_number_or("radius_multiplier", 1.0, Range{0.0, 1.0, true, false}, "");
-  m.local_damping = r.get_number_or("local_damping", 0.7, Range{0.0, 1.0, false, true}, "");
-  contact_model_by_name(r.get_string_or("contact_model", "linear"), false, r.key_path("contact_model"));
-  contact_model_by_name(r.get_string_or("bond_model", "flat_joint"), true, r.key_path("bond_model"));
+  m.name = r.get_string_or("name", m.name);
+  m = read_fields(r, Material::fields(), m);
+  m.contact = law_by_name<ContactLaw>(r.get_string_or("contact_model", std::string(law_name(m.contact))),
+                                      r.key_path("contact_model"));
+  m.joint = law_by_name<BondLaw>(r.get_string_or("bond_model", std::string(law_name(m.joint))), r.key_path("bond_model"));
+  read_law(r, m.contact);
+  read_law(r, m.joint);
   r.ignore("description");
   r.finish();
-  m.contact = LinearContactParams::validated(m.contact, path);
-  m.joint = FlatJointParams::validated(m.joint, path);
   return m;
 }
 
@@ -72,21 +60,37 @@ Material read_scene_material(ObjectReader& scene) {
 }
 
 Json material_to_json(const Material& m) {
-  return Json{{"name", m.name},
-              {"density_kg_per_m3", m.density_kg_per_m3},
-              {"effective_modulus_GPa", units::pa_to_gpa(m.contact.effective_modulus_pa)},
-              {"stiffness_ratio", m.contact.stiffness_ratio},
-              {"bond_effective_modulus_GPa", units::pa_to_gpa(m.joint.effective_modulus_pa)},
-              {"bond_stiffness_ratio", m.joint.stiffness_ratio},
-              {"tensile_strength_MPa", units::pa_to_mpa(m.joint.tensile_strength_pa)},
-              {"cohesion_MPa", units::pa_to_mpa(m.joint.cohesion_pa)},
-              {"friction_angle_deg", units::rad_to_deg(m.joint.friction_angle_rad)},
-              {"friction_coefficient", m.contact.friction_coefficient},
-              {"n_elements", m.joint.n_elements},
-              {"radius_multiplier", m.joint.radius_multiplier},
-              {"local_damping", m.local_damping},
-              {"contact_model", "linear"},
-              {"bond_model", "flat_joint"}};
+  Json j = fields_to_json(Material::fields(), m);
+  j["name"] = m.name;
+  j.update(law_to_json(m.joint));
+  j.update(law_to_json(m.contact));  // a key both laws have is the contact's (read_material sets both from it)
+  j["contact_model"] = law_name(m.contact);
+  j["bond_model"] = law_name(m.joint);
+  return j;
+}
+
+bool same_micro_parameters(const Material& a, const Material& b) {
+  return a.density_kg_per_m3 == b.density_kg_per_m3 && a.local_damping == b.local_damping && a.contact == b.contact &&
+         a.joint == b.joint;
+}
+
+CalibratedParams calibrated_params(const Material& m) {
+  return std::visit(
+      [](const auto& c, const auto& j) {
+        return CalibratedParams{c.effective_modulus_pa, c.stiffness_ratio,  j.effective_modulus_pa,
+                                j.stiffness_ratio,      j.tensile_strength_pa, j.cohesion_pa};
+      },
+      m.contact, m.joint);
+}
+
+std::string material_keys_markdown() {
+  return fmt::format(
+      "The material's own keys (besides `name`, `description` and `base`, the name of a library material whose "
+      "`dem` group the other keys override):\n\n{}\n`contact_model` (default `{}`) and `bond_model` (default `{}`) "
+      "choose the laws; each law reads its own keys from the same object (a key both laws have sets both):\n\n"
+      "Unbonded contact laws (`contact_model`):\n\n{}Bond laws (`bond_model`):\n\n{}",
+      fields_markdown(Material::fields()), law_name(ContactLaw{}), law_name(BondLaw{}), laws_markdown<ContactLaw>(),
+      laws_markdown<BondLaw>());
 }
 
 }  // namespace kerf::dem

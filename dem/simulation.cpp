@@ -15,12 +15,21 @@
 #include <emmintrin.h>
 #endif
 
+#include "flat_joint_simd.hpp"
 #include "kerf/error.hpp"
 #include "serial.hpp"
 
 namespace kerf::dem {
 
 namespace {
+
+/// A law's update as its loop calls it: the law's own (bond_update), unless the law has a hand-vectorised path
+/// of its own in an internal header (the flat joint's, flat_joint_simd.hpp), which overloads this.
+template <class Law>
+inline BondResult bond_update_fast(const Law& law, const BondGeometry& geo, const BondKinematics& kin, double* shear,
+                                   const std::uint8_t* bonded, BreakMode* breaks) {
+  return bond_update(law, geo, kin, shear, bonded, breaks);
+}
 
 /// Square root of each lane, correctly rounded as std::sqrt (one sqrtpd instead of two sqrtsd on x86-64).
 inline v2d lane_sqrt(v2d v) {
@@ -122,9 +131,10 @@ Simulation::Simulation(const Material& material, const SimulationOptions& option
   if (!(options.thickness_m > 0)) throw InputError("specimen.thickness_mm", format_value(options.thickness_m * 1e3), "a positive value in mm");
   if (!(options.time_step_safety > 0 && options.time_step_safety <= 1))
     throw InputError("engine.time_step_safety", format_value(options.time_step_safety), "a value in (0, 1]");
-  b_.stride = material.joint.n_elements;
+  b_.stride = std::visit([](const auto& law) { return bond_elements(law); }, material.joint);
+  const double contact_modulus_pa = std::visit([](const auto& law) { return law.effective_modulus_pa; }, material.contact);
   speed_limit_ = options.speed_limit_m_per_s > 0 ? options.speed_limit_m_per_s
-                                                 : std::sqrt(material.contact.effective_modulus_pa / material.density_kg_per_m3);
+                                                 : std::sqrt(contact_modulus_pa / material.density_kg_per_m3);
 }
 
 void Simulation::set_time_step_safety(double f) {
@@ -176,7 +186,8 @@ int Simulation::install_bond(int i, int j, double ref_distance_m, double ref_rot
   b_.j.push_back(j);
   b_.ref_distance_m.push_back(ref_distance_m);
   b_.ref_rotation_rad.push_back(ref_rotation_rad);
-  b_.geometry.push_back(flat_joint_geometry(material_.joint, p_.radius[ui], p_.radius[uj], opt_.thickness_m));
+  b_.geometry.push_back(std::visit(
+      [&](const auto& law) { return bond_geometry(law, p_.radius[ui], p_.radius[uj], opt_.thickness_m); }, material_.joint));
   b_.active.push_back(1);
   for (int e = 0; e < b_.stride; ++e) {
     b_.shear_force_n.push_back(0.0);
@@ -208,44 +219,44 @@ double Simulation::stable_time_step() const {
   const std::size_t n = p_.size();
   std::vector<double> kt(n, 0.0), kr(n, 0.0);
   const double t = opt_.thickness_m;
-  for (std::size_t b = 0; b < b_.size(); ++b) {
-    if (!b_.active[b]) continue;
-    const auto& g = b_.geometry[b];
-    const double len = 2 * g.half_length_m;
-    const double kn = g.normal_stiffness * len * t, ks = g.shear_stiffness * len * t;
-    const double kb = g.normal_stiffness * t * len * len * len / 12.0;
-    for (auto k : {b_.i[b], b_.j[b]}) {
-      const auto u = static_cast<std::size_t>(k);
-      kt[u] += std::max(kn, ks);  // the larger eigenvalue of k_n n n + k_s s s
-      kr[u] += kb + ks * p_.radius[u] * p_.radius[u];
-    }
-  }
-  const auto add_linear = [&](std::size_t u, double kn) {
-    const double ks = kn / material_.contact.stiffness_ratio;
-    kt[u] += std::max(kn, ks);
-    kr[u] += ks * p_.radius[u] * p_.radius[u];
+  // A contact's stiffness on disk u: the larger eigenvalue of k_n n n + k_s s s, and the rotational k_b + k_s r^2.
+  const auto add = [&](std::size_t u, const TimeStepStiffness& k) {
+    kt[u] += std::max(k.normal, k.shear);
+    kr[u] += k.bending + k.shear * p_.radius[u] * p_.radius[u];
   };
-  for (const auto& c : pairs_) {
-    const double kn = linear_normal_stiffness(material_.contact, p_.radius[c.i], p_.radius[c.j], t);
-    add_linear(static_cast<std::size_t>(c.i), kn);
-    add_linear(static_cast<std::size_t>(c.j), kn);
-  }
-  for (const auto& wc : wall_contacts_) {
-    const auto u = static_cast<std::size_t>(wc[1]);
-    add_linear(u, linear_normal_stiffness(material_.contact, p_.radius[u], 0.0, t));
-  }
-  double dt = std::numeric_limits<double>::infinity();
-  for (std::size_t u = 0; u < n; ++u) {
-    // Floor: four contacts with an equal disk, so that contacts formed later (fracture, genesis) stay
-    // stable. With f_safety <= 0.8 the step keeps a margin of about sqrt(2) / 0.8 on the Gershgorin bound
-    // of the largest eigenfrequency, sqrt(2 sum k / m).
-    const double k_self = linear_normal_stiffness(material_.contact, p_.radius[u], p_.radius[u], t);
-    const double k_self_s = k_self / material_.contact.stiffness_ratio;
-    const double ktu = std::max(kt[u], 4 * std::max(k_self, k_self_s));
-    const double kru = std::max(kr[u], 4 * k_self_s * p_.radius[u] * p_.radius[u]);
-    dt = std::min({dt, std::sqrt(1.0 / (p_.inv_mass[u] * ktu)), std::sqrt(1.0 / (p_.inv_inertia[u] * kru))});
-  }
-  return opt_.time_step_safety * dt;
+  std::visit(
+      [&](const auto& law) {
+        for (std::size_t b = 0; b < b_.size(); ++b) {
+          if (!b_.active[b]) continue;
+          const TimeStepStiffness k = bond_time_step_stiffness(law, b_.geometry[b]);
+          for (auto u : {b_.i[b], b_.j[b]}) add(static_cast<std::size_t>(u), k);
+        }
+      },
+      material_.joint);
+  return std::visit(
+      [&](const auto& law) {
+        for (const auto& c : pairs_) {
+          const TimeStepStiffness k = contact_time_step_stiffness(law, p_.radius[c.i], p_.radius[c.j], t);
+          add(static_cast<std::size_t>(c.i), k);
+          add(static_cast<std::size_t>(c.j), k);
+        }
+        for (const auto& wc : wall_contacts_) {
+          const auto u = static_cast<std::size_t>(wc[1]);
+          add(u, contact_time_step_stiffness(law, p_.radius[u], 0.0, t));
+        }
+        double dt = std::numeric_limits<double>::infinity();
+        for (std::size_t u = 0; u < n; ++u) {
+          // Floor: four contacts with an equal disk, so that contacts formed later (fracture, genesis) stay
+          // stable. With f_safety <= 0.8 the step keeps a margin of about sqrt(2) / 0.8 on the Gershgorin bound
+          // of the largest eigenfrequency, sqrt(2 sum k / m).
+          const TimeStepStiffness self = contact_time_step_stiffness(law, p_.radius[u], p_.radius[u], t);
+          const double ktu = std::max(kt[u], 4 * std::max(self.normal, self.shear));
+          const double kru = std::max(kr[u], 4 * self.shear * p_.radius[u] * p_.radius[u]);
+          dt = std::min({dt, std::sqrt(1.0 / (p_.inv_mass[u] * ktu)), std::sqrt(1.0 / (p_.inv_inertia[u] * kru))});
+        }
+        return opt_.time_step_safety * dt;
+      },
+      material_.contact);
 }
 
 void Simulation::initialise() {
@@ -277,6 +288,8 @@ void Simulation::rebuild_neighbours() {
   }
   std::vector<CandidatePair> found;
   find_candidate_pairs(p_.x, p_.y, p_.radius, skin_, found);
+  // A bond law that replaces the unbonded contact of its pair keeps bonded pairs out of the contacts.
+  const bool bonded_pairs_touch = std::visit([](const auto& law) { return bond_keeps_contact(law); }, material_.joint);
   // Keep the shear state of the pairs that persist (both lists are sorted by (i, j)).
   std::vector<CandidatePair> pairs;
   std::vector<double> shear;
@@ -286,7 +299,7 @@ void Simulation::rebuild_neighbours() {
   for (const auto& c : found) {
     const auto first = partners.begin() + bstart[static_cast<std::size_t>(c.i)];
     const auto last = partners.begin() + bstart[static_cast<std::size_t>(c.i) + 1];
-    if (std::find(first, last, c.j) != last) continue;
+    if (!bonded_pairs_touch && std::find(first, last, c.j) != last) continue;
     while (old < pairs_.size() && pairs_[old] < c) ++old;
     pairs.push_back(c);
     shear.push_back(old < pairs_.size() && pairs_[old] == c ? pair_shear_[old] : 0.0);
@@ -369,14 +382,9 @@ void Simulation::finish_forces(const ForceCounts& counts) {
   if (counts.n_breaking > 0) need_breaks_ = true;
 }
 
-// Called by every thread of a team (or by one thread outside any): orphaned worksharing loops, each contact
-// writing its own slot, then each particle summing its slots in a fixed order, so results are bit-identical
-// for any number of threads. The counts are complete after the wall loop's barrier; the gather ends without
-// one (the region's end, or the caller's own schedule(static) loop over the particles, follows).
-void Simulation::force_loops(ForceCounts& counts) {
-  const double dt = dt_, t = opt_.thickness_m;
-  const FlatJointParams& fj = material_.joint;
-  const LinearContactParams& lc = material_.contact;
+template <class Law>
+void Simulation::bond_loop(const Law& law, ForceCounts& counts) {
+  const double dt = dt_;
   const int stride = b_.stride;
   const auto nb = static_cast<std::int64_t>(b_.size());
   int n_breaking = 0, n_retired = 0;
@@ -388,7 +396,6 @@ void Simulation::force_loops(ForceCounts& counts) {
   const double* th = p_.theta.data();
   const double* rad = p_.radius.data();
 
-  // The joint, pair and wall loops write disjoint slots: no barrier between them.
   // Joints in blocks, each in two passes: first the kinematics of every joint of the block (independent from
   // joint to joint, so the square roots and divisions of several joints are in flight at once instead of one
   // joint's chain of them at a time), then the flat-joint law and the forces. The same operations on the
@@ -437,27 +444,15 @@ void Simulation::force_loops(ForceCounts& counts) {
       }
       const double nx = block.nx[q], ny = block.ny[q], sx = -ny, sy = nx, a1 = block.a1[q], a2 = block.a2[q];
       const std::size_t e0 = b * static_cast<std::size_t>(stride);
-      const auto us = static_cast<std::size_t>(stride);
-      const FlatJointKinematics kin{block.gap[q], block.rotation[q], block.shear_increment[q]};
-      const bool intact = stride == 2 && b_.bonded[e0] && b_.bonded[e0 + 1];
-      const FlatJointResult r =
-          intact ? flat_joint_update_two_bonded(fj, b_.geometry[b], kin, b_.shear_force_n.data() + e0, b_.pending.data() + e0)
-                 : flat_joint_update(fj, b_.geometry[b], kin, std::span<double>(b_.shear_force_n.data() + e0, us),
-                                     std::span<const std::uint8_t>(b_.bonded.data() + e0, us),
-                                     std::span<BreakMode>(b_.pending.data() + e0, us));
+      const BondKinematics kin{block.gap[q], block.rotation[q], block.shear_increment[q]};
+      const BondResult r = bond_update_fast(law, b_.geometry[b], kin, b_.shear_force_n.data() + e0,
+                                            b_.bonded.data() + e0, b_.pending.data() + e0);
       n_breaking += r.n_breaking;
       // Force on disk 2: -F_n n + F_s s (tension positive pulls disk 2 back towards disk 1).
       out = {-r.normal_force_n * nx + r.shear_force_n * sx, -r.normal_force_n * ny + r.shear_force_n * sy,
              -a1 * r.shear_force_n - r.moment_nm, -a2 * r.shear_force_n + r.moment_nm};
-      // A fully broken joint whose interface is open everywhere (g_s - |theta_b| R > 0) and whose disks no
-      // longer overlap carries no force under either model: hand the pair over to the unjointed contact.
-      // The predictable test first: almost every joint still has a bonded element, while the sign of the
-      // surface gap is a coin toss (a mispredicted branch per joint).
-      bool any_bonded = intact;
-      if (!intact)
-        for (std::size_t e = e0; e < e0 + us; ++e) any_bonded = any_bonded || b_.bonded[e];
-      if (!any_bonded && r.n_breaking == 0 && block.surface_gap[q] > 0 &&
-          kin.gap_m > std::abs(kin.rotation_rad) * b_.geometry[b].half_length_m) {
+      // The law says when a bond carries no force any more and hands its pair over to the unbonded contact.
+      if (bond_retires(law, b_.geometry[b], kin, r, block.surface_gap[q], b_.bonded.data() + e0)) {
         b_.active[b] = 0;
         out = {0, 0, 0, 0};
         ++n_retired;
@@ -471,6 +466,18 @@ void Simulation::force_loops(ForceCounts& counts) {
 #pragma omp atomic
     counts.n_retired += n_retired;
   }
+
+}
+
+template <class Law>
+void Simulation::pair_loop(const Law& law) {
+  const double dt = dt_, t = opt_.thickness_m;
+  const double* x = p_.x.data();
+  const double* y = p_.y.data();
+  const double* vx = p_.vx.data();
+  const double* vy = p_.vy.data();
+  const double* om = p_.omega.data();
+  const double* rad = p_.radius.data();
 
   const auto np = static_cast<std::int64_t>(pairs_.size());
 #pragma omp for schedule(static) nowait
@@ -489,11 +496,23 @@ void Simulation::force_loops(ForceCounts& counts) {
     const double overlap = reach - d;
     const double a1 = rad[i] - 0.5 * overlap, a2 = rad[j] - 0.5 * overlap;
     const double vs = (vx[j] - vx[i]) * sx + (vy[j] - vy[i]) * sy - a2 * om[j] - a1 * om[i];
-    const LinearContactResult r = linear_contact_update(lc, rad[i], rad[j], t, overlap, vs * dt, pair_shear_[k]);
+    const ContactResult r = contact_update(law, rad[i], rad[j], t, overlap, vs * dt, pair_shear_[k]);
     // Force on disk 2: +F_n n (compression pushes it away) + F_s s.
     pair_out_[k] = {r.normal_force_n * nx + r.shear_force_n * sx, r.normal_force_n * ny + r.shear_force_n * sy,
                     -a1 * r.shear_force_n, -a2 * r.shear_force_n};
   }
+
+}
+
+template <class Law>
+void Simulation::wall_loop(const Law& law) {
+  const double dt = dt_, t = opt_.thickness_m;
+  const double* x = p_.x.data();
+  const double* y = p_.y.data();
+  const double* vx = p_.vx.data();
+  const double* vy = p_.vy.data();
+  const double* om = p_.omega.data();
+  const double* rad = p_.radius.data();
 
   const auto nw = static_cast<std::int64_t>(wall_contacts_.size());
 #pragma omp for schedule(static)
@@ -513,12 +532,24 @@ void Simulation::force_loops(ForceCounts& counts) {
     const double nx = dx / d, ny = dy / d, sx = -ny, sy = nx;  // n from the wall to the disk
     const double overlap = rad[u] - d, a = rad[u] - 0.5 * overlap;
     const double vs = (vx[u] - w.vx) * sx + (vy[u] - w.vy) * sy - a * om[u];
-    LinearContactParams wall_lc = lc;
-    if (w.friction_coefficient >= 0) wall_lc.friction_coefficient = w.friction_coefficient;
-    const LinearContactResult r = linear_contact_update(wall_lc, rad[u], 0.0, t, overlap, vs * dt, wall_shear_[k]);
+    const Law wall_law = w.friction_coefficient >= 0 ? with_friction(law, w.friction_coefficient) : law;
+    const ContactResult r = contact_update(wall_law, rad[u], 0.0, t, overlap, vs * dt, wall_shear_[k]);
     wall_out_[k] = {r.normal_force_n * nx + r.shear_force_n * sx, r.normal_force_n * ny + r.shear_force_n * sy,
                     -a * r.shear_force_n};
   }
+}
+
+// Called by every thread of a team (or by one thread outside any): orphaned worksharing loops, each contact
+// writing its own slot, then each particle summing its slots in a fixed order, so results are bit-identical
+// for any number of threads. The counts are complete after the wall loop's barrier; the gather ends without
+// one (the region's end, or the caller's own schedule(static) loop over the particles, follows). Each loop
+// is chosen once per call by the law it runs (std::visit), and the law's update inlines into it.
+void Simulation::force_loops(ForceCounts& counts) {
+  // The joint, pair and wall loops write disjoint slots: no barrier between them.
+  std::visit([&](const auto& law) { bond_loop(law, counts); }, material_.joint);
+  std::visit([&](const auto& law) { pair_loop(law); }, material_.contact);
+  std::visit([&](const auto& law) { wall_loop(law); }, material_.contact);  // ends with a barrier
+
 #pragma omp single nowait
   {
     for (auto& w : walls_) w.fx = w.fy = 0;
@@ -565,6 +596,11 @@ void Simulation::force_loops(ForceCounts& counts) {
 void Simulation::apply_breaks() {
   if (!need_breaks_) return;
   need_breaks_ = false;
+  std::visit([&](const auto& law) { apply_breaks_of(law); }, material_.joint);
+}
+
+template <class Law>
+void Simulation::apply_breaks_of(const Law& law) {
   const auto stride = static_cast<std::size_t>(b_.stride);
   for (std::size_t b = 0; b < b_.size(); ++b) {
     if (!b_.active[b]) continue;
@@ -577,13 +613,18 @@ void Simulation::apply_breaks() {
       const double nx = dx / d, ny = dy / d;
       const double a1 = p_.radius[i] + 0.5 * (d - p_.radius[i] - p_.radius[j]);
       const auto& g = b_.geometry[b];
-      const double xi = flat_joint_element_centroid(g, b_.stride, static_cast<int>(e));
+      const ElementPlace place = bond_element_place(law, g, static_cast<int>(e));
+      const double xi = place.centroid_m;
       cracks_.push_back({time_, p_.x[i] + a1 * nx - xi * ny, p_.y[i] + a1 * ny + xi * nx, std::atan2(nx, -ny),
-                         2 * g.half_length_m / b_.stride, b_.pending[k], static_cast<std::int32_t>(b),
-                         static_cast<std::int32_t>(e)});
+                         place.length_m, b_.pending[k], static_cast<std::int32_t>(b), static_cast<std::int32_t>(e)});
       b_.bonded[k] = 0;
       b_.shear_force_n[k] = 0;  // residual mode: the shear stress of a broken element drops to zero
       b_.pending[k] = BreakMode::none;
+      if (bond_retires_on_break(law)) {  // the whole bond goes with its first break
+        b_.active[b] = 0;
+        need_rebuild_ = true;
+        break;
+      }
     }
   }
 }
@@ -700,7 +741,7 @@ std::size_t Simulation::memory_bytes() const {
 
 namespace {
 
-constexpr std::string_view kStateMagic = "KERFDEM2";  // 2: Wall::friction_coefficient
+constexpr std::string_view kStateMagic = "KERFDEM3";  // 2: Wall::friction_coefficient; 3: the laws as variants
 
 }  // namespace
 
@@ -762,23 +803,27 @@ double Simulation::kinetic_energy() const {
 double Simulation::strain_energy() const {
   double e = 0;
   const auto stride = static_cast<std::size_t>(b_.stride);
-  for (std::size_t b = 0; b < b_.size(); ++b) {
-    if (!b_.active[b]) continue;
-    const auto i = static_cast<std::size_t>(b_.i[b]), j = static_cast<std::size_t>(b_.j[b]);
-    const double d = std::hypot(p_.x[j] - p_.x[i], p_.y[j] - p_.y[i]);
-    const FlatJointKinematics kin{d - b_.ref_distance_m[b], p_.theta[j] - p_.theta[i] - b_.ref_rotation_rad[b], 0};
-    e += flat_joint_bonded_energy(material_.joint, b_.geometry[b], kin,
-                                  std::span<const double>(b_.shear_force_n.data() + b * stride, stride),
-                                  std::span<const std::uint8_t>(b_.bonded.data() + b * stride, stride));
-  }
+  std::visit(
+      [&](const auto& law) {
+        for (std::size_t b = 0; b < b_.size(); ++b) {
+          if (!b_.active[b]) continue;
+          const auto i = static_cast<std::size_t>(b_.i[b]), j = static_cast<std::size_t>(b_.j[b]);
+          const double d = std::hypot(p_.x[j] - p_.x[i], p_.y[j] - p_.y[i]);
+          const BondKinematics kin{d - b_.ref_distance_m[b], p_.theta[j] - p_.theta[i] - b_.ref_rotation_rad[b], 0};
+          e += bond_energy(law, b_.geometry[b], kin, b_.shear_force_n.data() + b * stride, b_.bonded.data() + b * stride);
+        }
+      },
+      material_.joint);
   const double t = opt_.thickness_m;
-  for (std::size_t k = 0; k < pairs_.size(); ++k) {
-    const auto i = static_cast<std::size_t>(pairs_[k].i), j = static_cast<std::size_t>(pairs_[k].j);
-    const double overlap = p_.radius[i] + p_.radius[j] - std::hypot(p_.x[j] - p_.x[i], p_.y[j] - p_.y[i]);
-    if (overlap <= 0) continue;
-    const double kn = linear_normal_stiffness(material_.contact, p_.radius[i], p_.radius[j], t);
-    e += 0.5 * kn * overlap * overlap + 0.5 * pair_shear_[k] * pair_shear_[k] * material_.contact.stiffness_ratio / kn;
-  }
+  std::visit(
+      [&](const auto& law) {
+        for (std::size_t k = 0; k < pairs_.size(); ++k) {
+          const auto i = static_cast<std::size_t>(pairs_[k].i), j = static_cast<std::size_t>(pairs_[k].j);
+          const double overlap = p_.radius[i] + p_.radius[j] - std::hypot(p_.x[j] - p_.x[i], p_.y[j] - p_.y[i]);
+          e += contact_energy(law, p_.radius[i], p_.radius[j], t, overlap, pair_shear_[k]);
+        }
+      },
+      material_.contact);
   return e;
 }
 
@@ -794,9 +839,21 @@ int Simulation::n_touching_pairs() const {
 double Simulation::coordination_number() const {
   std::size_t n_bonds = 0;
   for (auto a : b_.active) n_bonds += a;
-  return p_.size() ? 2.0 * static_cast<double>(n_bonds + static_cast<std::size_t>(n_touching_pairs())) /
-                         static_cast<double>(p_.size())
-                   : 0.0;
+  std::size_t n_touching = static_cast<std::size_t>(n_touching_pairs());
+  if (std::visit([](const auto& law) { return bond_keeps_contact(law); }, material_.joint)) {
+    // A bonded pair that also touches is one contact, not two.
+    std::vector<CandidatePair> bonded;
+    for (std::size_t b = 0; b < b_.size(); ++b)
+      if (b_.active[b]) bonded.push_back({std::min(b_.i[b], b_.j[b]), std::max(b_.i[b], b_.j[b])});
+    std::sort(bonded.begin(), bonded.end());
+    for (const auto& c : pairs_) {
+      const auto i = static_cast<std::size_t>(c.i), j = static_cast<std::size_t>(c.j);
+      if (std::hypot(p_.x[j] - p_.x[i], p_.y[j] - p_.y[i]) < p_.radius[i] + p_.radius[j] &&
+          std::binary_search(bonded.begin(), bonded.end(), c))
+        --n_touching;
+    }
+  }
+  return p_.size() ? 2.0 * static_cast<double>(n_bonds + n_touching) / static_cast<double>(p_.size()) : 0.0;
 }
 
 int Simulation::n_contacts_of(std::size_t u) const {

@@ -150,7 +150,8 @@ Simulation make_random(const Material& material, const SpecimenSpec& spec, Speci
   });
 
   Material frictionless = material;
-  frictionless.contact.friction_coefficient = 0;  // physics-dem.md section 2: frictionless compaction
+  frictionless.contact = std::visit([](const auto& law) { return ContactLaw(with_friction(law, 0.0)); },
+                                    material.contact);  // docs/physics-dem.md section 2: frictionless compaction
   frictionless.local_damping = 0.7;
   Simulation sim(frictionless, {.thickness_m = spec.thickness_m});
   double scale = 0.5;
@@ -181,7 +182,7 @@ Simulation make_random(const Material& material, const SpecimenSpec& spec, Speci
     report_progress();
   }
   // 2. Servo the common radius scale to the compaction pressure (areal strain ~ 2 dscale / scale).
-  const double target = spec.compaction_pressure_pa, modulus = material.contact.effective_modulus_pa;
+  const double target = spec.compaction_pressure_pa, modulus = calibrated_params(material).contact_modulus_pa;
   for (int k = 0; k < servo_max; ++k) {
     sim.run(chunk);
     report_progress();
@@ -215,7 +216,7 @@ Simulation make_random(const Material& material, const SpecimenSpec& spec, Speci
   sim.install_bonds_within_gap(spec.installation_gap_m);
   sim.walls().clear();
   for (std::size_t k = 0; k < n; ++k) sim.particles().vx[k] = sim.particles().vy[k] = sim.particles().omega[k] = 0;
-  sim.set_contact_params(material.contact);
+  sim.set_contact_law(material.contact);
   sim.set_local_damping(material.local_damping);
   sim.invalidate_neighbours();
   sim.refresh_time_step();
@@ -241,8 +242,9 @@ Simulation make_specimen(const Material& material, const SpecimenSpec& spec, Spe
 }
 
 Simulation with_material(const Simulation& specimen, const Material& material) {
-  if (material.joint.n_elements != specimen.bonds().stride)
-    throw InputError("material.n_elements", std::to_string(material.joint.n_elements),
+  const int elements = std::visit([](const auto& law) { return bond_elements(law); }, material.joint);
+  if (elements != specimen.bonds().stride)
+    throw InputError("material.n_elements", std::to_string(elements),
                      "the specimen's element count " + std::to_string(specimen.bonds().stride));
   SimulationOptions options = specimen.options();
   Simulation sim(material, options);
@@ -330,7 +332,7 @@ Simulation load_specimen(const std::string& file_path, const Material& material,
     const auto bonded = b.at("element_bonded").get<std::vector<int>>();
     const auto shear = b.at("element_shear_force_N").get<std::vector<double>>();
     const auto stored = static_cast<std::size_t>(b.at("n_elements").get<int>());
-    const auto stride = static_cast<std::size_t>(material.joint.n_elements);
+    const auto stride = static_cast<std::size_t>(sim.bonds().stride);
     for (std::size_t k = 0; k < bi.size(); ++k) {
       if (bi[k] < 0 || bj[k] < 0 || static_cast<std::size_t>(std::max(bi[k], bj[k])) >= x.size())
         throw InputError(file_path + ": bonds", std::to_string(k), "particle indices within the file");

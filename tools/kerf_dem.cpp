@@ -330,10 +330,10 @@ int run_calibration(const Scene& scene, const Json& doc, const Simulation& speci
                               "cohesion_MPa", "youngs_modulus_GPa", "poissons_ratio", "macro_tensile_strength_MPa",
                               "macro_compressive_strength_MPa", "max_error_percent", "wall_time_s"});
   const CalibrationResult r = calibrate(specimen, scene.material, scene.calibration, [&](const CalibrationEvaluation& e) {
-    const auto& m = e.material;
-    log += csv_line({std::to_string(e.index), csv_number(units::pa_to_gpa(m.contact.effective_modulus_pa)),
-                     csv_number(m.joint.stiffness_ratio), csv_number(units::pa_to_mpa(m.joint.tensile_strength_pa)),
-                     csv_number(units::pa_to_mpa(m.joint.cohesion_pa)), csv_number(units::pa_to_gpa(e.macro.youngs_modulus_pa)),
+    const CalibratedParams m = calibrated_params(e.material);
+    log += csv_line({std::to_string(e.index), csv_number(units::pa_to_gpa(m.contact_modulus_pa)),
+                     csv_number(m.stiffness_ratio), csv_number(units::pa_to_mpa(m.tensile_strength_pa)),
+                     csv_number(units::pa_to_mpa(m.cohesion_pa)), csv_number(units::pa_to_gpa(e.macro.youngs_modulus_pa)),
                      csv_number(e.macro.poissons_ratio), csv_number(units::pa_to_mpa(e.macro.tensile_strength_pa)),
                      csv_number(units::pa_to_mpa(e.macro.compressive_strength_pa)), csv_number(100 * e.max_relative_error),
                      csv_number(e.wall_time_s)});
@@ -346,8 +346,8 @@ int run_calibration(const Scene& scene, const Json& doc, const Simulation& speci
     }
     std::cout << fmt::format("evaluation {}: E* {:.2f} GPa, kappa {:.3f}, sigma_c {:.1f} MPa, c {:.1f} MPa -> E {:.2f} GPa, "
                              "nu {:.3f}, sigma_t {:.1f} MPa, sigma_C {:.1f} MPa (max error {:.1f} %, {:.0f} s{})\n",
-                             e.index, units::pa_to_gpa(m.contact.effective_modulus_pa), m.joint.stiffness_ratio,
-                             units::pa_to_mpa(m.joint.tensile_strength_pa), units::pa_to_mpa(m.joint.cohesion_pa),
+                             e.index, units::pa_to_gpa(m.contact_modulus_pa), m.stiffness_ratio,
+                             units::pa_to_mpa(m.tensile_strength_pa), units::pa_to_mpa(m.cohesion_pa),
                              units::pa_to_gpa(e.macro.youngs_modulus_pa), e.macro.poissons_ratio,
                              units::pa_to_mpa(e.macro.tensile_strength_pa), units::pa_to_mpa(e.macro.compressive_strength_pa),
                              100 * e.max_relative_error, e.wall_time_s, e.from_checkpoint ? ", from the checkpoint" : "")
@@ -675,8 +675,8 @@ int run_cut_calibration(const Scene& scene, const fs::path& out) {
     const fs::path dir = out / fmt::format("evaluation_{}", k);
     fs::create_directories(dir);
     std::cout << fmt::format("evaluation {}: bond strengths x {:.4g} (sigma_c {:.2f} MPa, c {:.2f} MPa), {} replicates\n", k,
-                             s, units::pa_to_mpa(e.material.joint.tensile_strength_pa),
-                             units::pa_to_mpa(e.material.joint.cohesion_pa), fit.replicates)
+                             s, units::pa_to_mpa(calibrated_params(e.material).tensile_strength_pa),
+                             units::pa_to_mpa(calibrated_params(e.material).cohesion_pa), fit.replicates)
               << std::flush;
     run_cut_replicates(e, fit.replicates, Json{{"kind", "cut"}, {"material", material_to_json(e.material)},
                                                {"threads", omp_get_max_threads()}}, dir);
@@ -689,8 +689,8 @@ int run_cut_calibration(const Scene& scene, const fs::path& out) {
     converged = std::abs(error) <= fit.tolerance;
     const Json row{{"evaluation", k},
                    {"strength_factor", s},
-                   {"tensile_strength_MPa", units::pa_to_mpa(e.material.joint.tensile_strength_pa)},
-                   {"cohesion_MPa", units::pa_to_mpa(e.material.joint.cohesion_pa)},
+                   {"tensile_strength_MPa", units::pa_to_mpa(calibrated_params(e.material).tensile_strength_pa)},
+                   {"cohesion_MPa", units::pa_to_mpa(calibrated_params(e.material).cohesion_pa)},
                    {"main_force_N", force},
                    {"main_force_replicate_std_N", r["main_force_replicate_std_N"]},
                    {"thrust_force_N", r["thrust_force_N"]},

@@ -1,6 +1,7 @@
 // The flat-joint law driven through prescribed motions (MercuryDPM style): tension to failure, shear
 // failure on the Coulomb envelope, bending with partial damage, load-unload-reload, closed-form stiffness.
 #include "kerf/dem/flat_joint.hpp"
+#include "../../dem/flat_joint_simd.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -18,19 +19,19 @@ namespace {
 
 struct Joint {
   FlatJointParams p;
-  FlatJointGeometry geo;
+  BondGeometry geo;
   std::vector<double> shear;
   std::vector<std::uint8_t> bonded;
   std::vector<BreakMode> breaks;
 
   explicit Joint(FlatJointParams params, double r1 = 10e-6, double r2 = 10e-6, double t = 1e-3)
-      : p(FlatJointParams::validated(params, "material")),
-        geo(flat_joint_geometry(p, r1, r2, t)),
+      : p(FlatJointParams::validated(params)),
+        geo(bond_geometry(p, r1, r2, t)),
         shear(static_cast<std::size_t>(p.n_elements), 0.0),
         bonded(static_cast<std::size_t>(p.n_elements), 1),
         breaks(static_cast<std::size_t>(p.n_elements), BreakMode::none) {}
 
-  FlatJointResult update(double gap, double rotation, double ds) {
+  BondResult update(double gap, double rotation, double ds) {
     return flat_joint_update(p, geo, {gap, rotation, ds}, shear, bonded, breaks);
   }
   void apply_breaks() {
@@ -47,10 +48,10 @@ bool same_bits(double a, double b) {
 /// Runs the general update on `general` and the intact two-element path on `fast` (the same joint and shear
 /// state) and requires the same resultants, shear forces and break decisions to the bit; returns the general
 /// result.
-FlatJointResult require_fast_path_equal(Joint& general, Joint& fast, const FlatJointKinematics& kin) {
-  const FlatJointResult a =
+BondResult require_fast_path_equal(Joint& general, Joint& fast, const BondKinematics& kin) {
+  const BondResult a =
       flat_joint_update(general.p, general.geo, kin, general.shear, general.bonded, general.breaks);
-  const FlatJointResult b = flat_joint_update_two_bonded(fast.p, fast.geo, kin, fast.shear.data(), fast.breaks.data());
+  const BondResult b = flat_joint_update_two_bonded(fast.p, fast.geo, kin, fast.shear.data(), fast.breaks.data());
   REQUIRE(same_bits(a.normal_force_n, b.normal_force_n));
   REQUIRE(same_bits(a.shear_force_n, b.shear_force_n));
   REQUIRE(same_bits(a.moment_nm, b.moment_nm));
@@ -192,15 +193,17 @@ TEST_CASE("flat joint: parameters are validated when built", "[flat_joint]") {
   FlatJointParams p;
   p.n_elements = 1;
   try {
-    FlatJointParams::validated(p, "material");
+    FlatJointParams::validated(p);
     FAIL("n_elements = 1 accepted");
   } catch (const kerf::InputError& e) {
-    CHECK(e.field() == "material.n_elements");
+    CHECK(e.field() == "n_elements");  // the law's own key; the scene layer adds the JSON path
     CHECK(e.value() == "1");
   }
+  CHECK_THROWS_WITH(kerf::with_path("material", [&] { return FlatJointParams::validated(p); }),
+                    "material.n_elements = 1: expected an integer in [2, 16]");
   p = FlatJointParams{};
   p.tensile_strength_pa = -1e6;
-  CHECK_THROWS_AS(FlatJointParams::validated(p, "material"), kerf::InputError);
+  CHECK_THROWS_AS(FlatJointParams::validated(p), kerf::InputError);
 }
 
 TEST_CASE("flat joint: the two-element intact path equals the general update to the bit", "[flat_joint]") {
@@ -220,7 +223,7 @@ TEST_CASE("flat joint: the two-element intact path equals the general update to 
     Joint fast = general;
     const double R = general.geo.half_length_m;
     const double strain = 6e-3 * unit(rng);  // sigma = Ebar* g_s / (R1 + R2): sigma_c = 200 MPa near +4.3e-3
-    const FlatJointKinematics kin{strain * R, 4e-3 * unit(rng), 2e-3 * R * unit(rng)};
+    const BondKinematics kin{strain * R, 4e-3 * unit(rng), 2e-3 * R * unit(rng)};
     for (auto& s : general.shear) s = 1.5 * unit(rng);  // N; c A_e is about 1 N
     fast.shear = general.shear;
     require_fast_path_equal(general, fast, kin);
@@ -275,7 +278,7 @@ TEST_CASE("flat joint: the intact path decides breaks as the stress test does, u
       const double gap = tension_scan ? step_ulps(gap0, m) : gap0;
       for (auto& s : general.shear) s = tension_scan ? 0.0 : step_ulps(shear0, m);
       fast.shear = general.shear;
-      const FlatJointResult a = require_fast_path_equal(general, fast, {gap, 0.0, 0.0});
+      const BondResult a = require_fast_path_equal(general, fast, {gap, 0.0, 0.0});
       (a.n_breaking > 0 ? seen_break : seen_intact) = true;
     }
     ++n_scans;

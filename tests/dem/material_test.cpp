@@ -5,7 +5,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "kerf/dem/contact_models.hpp"
+#include "kerf/dem/contact_laws.hpp"
 #include "kerf/error.hpp"
 
 using namespace kerf::dem;
@@ -15,14 +15,14 @@ using Catch::Matchers::WithinRel;
 TEST_CASE("material: keys carry units, converted to SI once", "[material]") {
   const Material m = read_material(kerf::Json::parse(R"({"effective_modulus_GPa": 90, "tensile_strength_MPa": 80,
       "cohesion_MPa": 200, "friction_angle_deg": 30, "n_elements": 3, "stiffness_ratio": 2.5})"), "material");
-  CHECK(m.contact.effective_modulus_pa == 90e9);
-  CHECK(m.joint.tensile_strength_pa == 80e6);
-  CHECK(m.joint.cohesion_pa == 200e6);
-  CHECK_THAT(m.joint.friction_angle_rad, WithinRel(M_PI / 6, 1e-15));
-  CHECK_THAT(m.joint.tan_friction_angle, WithinRel(std::tan(M_PI / 6), 1e-15));
-  CHECK(m.joint.n_elements == 3);
-  CHECK(m.contact.stiffness_ratio == 2.5);
-  CHECK(m.joint.stiffness_ratio == 3.1);  // the bond's own ratio is a separate key
+  CHECK(std::get<LinearContactParams>(m.contact).effective_modulus_pa == 90e9);
+  CHECK(std::get<FlatJointParams>(m.joint).tensile_strength_pa == 80e6);
+  CHECK(std::get<FlatJointParams>(m.joint).cohesion_pa == 200e6);
+  CHECK_THAT(std::get<FlatJointParams>(m.joint).friction_angle_rad, WithinRel(M_PI / 6, 1e-15));
+  CHECK_THAT(std::get<FlatJointParams>(m.joint).tan_friction_angle, WithinRel(std::tan(M_PI / 6), 1e-15));
+  CHECK(std::get<FlatJointParams>(m.joint).n_elements == 3);
+  CHECK(std::get<LinearContactParams>(m.contact).stiffness_ratio == 2.5);
+  CHECK(std::get<FlatJointParams>(m.joint).stiffness_ratio == 3.1);  // the bond's own ratio is a separate key
 }
 
 TEST_CASE("material: errors name the field, the value and the expectation", "[material]") {
@@ -34,7 +34,7 @@ TEST_CASE("material: errors name the field, the value and the expectation", "[ma
     CHECK_THAT(std::string(e.what()), Contains("did you mean 'tensile_strength_MPa'"));
   }
   try {
-    read_material(kerf::Json::parse(R"({"bond_model": "parallel_bond"})"), "material");
+    read_material(kerf::Json::parse(R"({"bond_model": "no_such_bond"})"), "material");
     FAIL("unknown bond model accepted");
   } catch (const kerf::InputError& e) {
     CHECK(e.field() == "material.bond_model");
@@ -48,11 +48,45 @@ TEST_CASE("material: a bundled material is the base that other keys override", "
   const Material m = read_material(kerf::Json::parse(R"({"base": "soda_lime_glass_fj", "local_damping": 0.5})"), "material");
   CHECK(m.name == "soda_lime_glass_fj");
   CHECK(m.local_damping == 0.5);
-  CHECK(m.joint.cohesion_pa > m.joint.tensile_strength_pa);  // calibrated: c / sigma_c > 1
+  CHECK(std::get<FlatJointParams>(m.joint).cohesion_pa > std::get<FlatJointParams>(m.joint).tensile_strength_pa);  // calibrated: c / sigma_c > 1
 }
 
-TEST_CASE("contact models: the registry knows linear and flat_joint", "[material]") {
-  CHECK(contact_model_by_name("flat_joint", true, "x").model == ContactModel::flat_joint);
-  CHECK(contact_model_by_name("linear", false, "x").model == ContactModel::linear);
-  CHECK_THROWS_AS(contact_model_by_name("linear", true, "x"), kerf::InputError);  // not a bond model
+TEST_CASE("contact laws: the registry constructs laws by name", "[material]") {
+  CHECK(std::holds_alternative<FlatJointParams>(law_by_name<BondLaw>("flat_joint", "x")));
+  CHECK(std::holds_alternative<LinearContactParams>(law_by_name<ContactLaw>("linear", "x")));
+  CHECK_THROWS_AS(law_by_name<BondLaw>("linear", "x"), kerf::InputError);  // not a bond law
+  try {
+    law_by_name<ContactLaw>("flat_joint", "material.contact_model");
+    FAIL("a bond law accepted as a contact law");
+  } catch (const kerf::InputError& e) {
+    CHECK(e.field() == "material.contact_model");
+    CHECK_THAT(e.expected(), Contains("'linear'"));
+  }
+  // Every registered law reads back its own name, and its defaults pass its own validation.
+  for (const auto& name : law_names<BondLaw>()) {
+    const BondLaw law = law_by_name<BondLaw>(name, "x");
+    CHECK(law_name(law) == name);
+    std::visit([](const auto& p) { CHECK_NOTHROW(std::decay_t<decltype(p)>::validated(p)); }, law);
+  }
+  CHECK(law_names<BondLaw>().front() == "flat_joint");  // the default bond law
+  CHECK(law_names<ContactLaw>().front() == "linear");
+}
+
+TEST_CASE("material: to_json reads back to the same micro-parameters, every key documented", "[material]") {
+  const Material m = read_material(kerf::Json::parse(R"({"base": "soda_lime_glass_fj", "n_elements": 4})"), "material");
+  const kerf::Json j = material_to_json(m);
+  const Material back = read_material(j, "material");
+  // Every value back to within the rounding of the unit conversion (GPa and deg to SI and back).
+  const kerf::Json k = material_to_json(back);
+  CHECK(k.size() == j.size());
+  for (const auto& [key, value] : j.items()) {
+    if (value.is_number())
+      CHECK_THAT(k.at(key).get<double>(), WithinRel(value.get<double>(), 1e-15));
+    else
+      CHECK(k.at(key) == value);
+  }
+  CHECK(std::get<FlatJointParams>(back.joint).n_elements == 4);
+  const std::string md = material_keys_markdown();
+  for (const auto& [key, value] : j.items())
+    if (key != "name") CHECK_THAT(md, Contains("`" + key + "`"));
 }

@@ -268,6 +268,6 @@ TEST_CASE("engine: a wall's own friction coefficient limits the shear of its con
   };
   CHECK(slide(0.0) == 0.0);
   CHECK_THAT(slide(0.2), WithinRel(0.2, 1e-9));
-  CHECK_THAT(slide(-1.0), WithinRel(Material{}.contact.friction_coefficient, 1e-9));
+  CHECK_THAT(slide(-1.0), WithinRel(std::get<LinearContactParams>(Material{}.contact).friction_coefficient, 1e-9));
   CHECK_THAT(slide(1.5), WithinRel(1.5, 1e-9));
 }

@@ -85,7 +85,5 @@ CalibrationResult calibrate(const Simulation& specimen, const Material& start, c
 std::string serialize_evaluations(const std::vector<CalibrationEvaluation>& log);
 std::vector<CalibrationEvaluation> deserialize_evaluations(std::string_view bytes);
 
-/// True when every micro-parameter of a and b is bitwise equal (the name is not compared).
-bool same_micro_parameters(const Material& a, const Material& b);
 
 }  // namespace kerf::dem

@@ -4,15 +4,15 @@
 //   Material m = read_material(json.at("material"), "material");  // unknown keys are rejected
 //   Material s = read_scene_material(scene_reader);  // a scene's "material", or seed 000 Table 1
 //
-// Keys (all optional, defaults are seed 000 Table 1): density_kg_per_m3, effective_modulus_GPa,
-// stiffness_ratio, bond_effective_modulus_GPa, bond_stiffness_ratio, tensile_strength_MPa, cohesion_MPa,
-// friction_angle_deg, friction_coefficient (disk-disk friction and residual friction of unbonded
-// elements), n_elements, radius_multiplier, local_damping, contact_model ("linear"), bond_model
-// ("flat_joint"), base (name of a file data/materials/<base>.json whose values the other keys override).
+// Keys (all optional, defaults are seed 000 Table 1): the material's own (name, density_kg_per_m3,
+// local_damping), contact_model and bond_model (the laws, kerf/dem/contact_laws.hpp; defaults "linear" and
+// "flat_joint"), the keys of the two laws (their field tables; a key both laws have, such as
+// friction_coefficient, sets both), and base (name of a file data/materials/<base>.json whose values the
+// other keys override). material_keys_markdown() is the complete reference (docs/dem.md).
 #include <string>
 
-#include "kerf/dem/flat_joint.hpp"
-#include "kerf/dem/linear_contact.hpp"
+#include "kerf/dem/contact_laws.hpp"
+#include "kerf/field_table.hpp"
 #include "kerf/json_reader.hpp"
 
 namespace kerf::dem {
@@ -20,9 +20,12 @@ namespace kerf::dem {
 struct Material {
   std::string name = "custom";
   double density_kg_per_m3 = 2400;
-  LinearContactParams contact;  ///< unjointed disk-disk and disk-wall contacts
-  FlatJointParams joint;        ///< bonded contacts
-  double local_damping = 0.7;   ///< Cundall's alpha (physics-dem.md section 1)
+  ContactLaw contact;          ///< unjointed disk-disk and disk-wall contacts
+  BondLaw joint;               ///< bonded contacts
+  double local_damping = 0.7;  ///< Cundall's alpha (docs/physics-dem.md section 1)
+
+  /// The material's own keys (density, damping); the laws' keys are in their own tables.
+  static const FieldTable<Material>& fields();
 };
 
 /// Reads and validates a material object. "base" names a library material (kerf::load_material) whose "dem"
@@ -35,6 +38,20 @@ Material read_scene_material(ObjectReader& scene);
 
 /// The JSON form read_material accepts (every key written).
 Json material_to_json(const Material& m);
+
+/// Whether two materials have the same micro-parameters, every number to the bit (the name aside).
+bool same_micro_parameters(const Material& a, const Material& b);
+
+/// The micro-parameters that calibration moves, which every law of the registry has (E* and kappa of both
+/// laws, the bond strengths).
+struct CalibratedParams {
+  double contact_modulus_pa, contact_stiffness_ratio;
+  double bond_modulus_pa, stiffness_ratio, tensile_strength_pa, cohesion_pa;
+};
+CalibratedParams calibrated_params(const Material& m);
+
+/// The key reference of a material object: its own keys, then every law's, as Markdown tables.
+std::string material_keys_markdown();
 
 /// A material file for data/materials/ (the library shared with the analytic models): name, title,
 /// description and a "dem" group whose every number carries `source` as its provenance.

@@ -1,7 +1,9 @@
 #pragma once
-// The 2D bonded-particle DEM engine: disks (structure of arrays), flat-joint bonds (a separate store with
-// element states at a fixed stride), linear unjointed contacts, rigid walls with prescribed motion,
-// velocity-Verlet integration with Cundall local damping, and an O(N) cell-grid neighbour search with a skin.
+// The 2D bonded-particle DEM engine: disks (structure of arrays), bonds (a separate store with element states
+// at the bond law's stride), unbonded contacts, rigid walls with prescribed motion, velocity-Verlet
+// integration with Cundall local damping, and an O(N) cell-grid neighbour search with a skin. The contact
+// laws are the material's (kerf/dem/contact_laws.hpp): each loop is instantiated once per law and chosen once
+// per step, so a law's update inlines into its loop.
 //
 //   Simulation sim(material, {.thickness_m = 1e-3});
 //   int a = sim.add_particle(0, 0, 10e-6), b = sim.add_particle(20e-6, 0, 10e-6);
@@ -18,8 +20,7 @@
 #include <string_view>
 #include <vector>
 
-#include "kerf/dem/flat_joint.hpp"
-#include "kerf/dem/linear_contact.hpp"
+#include "kerf/dem/contact_laws.hpp"
 #include "kerf/dem/material.hpp"
 #include "kerf/dem/neighbor_grid.hpp"
 
@@ -40,14 +41,14 @@ struct Particles {
   std::size_t size() const { return x.size(); }
 };
 
-/// Flat-joint bonds; the element states of bond b are at [b * stride, (b + 1) * stride).
+/// Bonds; the element states of bond b are at [b * stride, (b + 1) * stride).
 struct BondStore {
-  int stride = 2;  ///< N_r
+  int stride = 2;  ///< elements per bond (the bond law's bond_elements: N_r for the flat joint)
   std::vector<std::int32_t> i, j;
   std::vector<double> ref_distance_m;   ///< centre distance at installation (zero gap there)
   std::vector<double> ref_rotation_rad; ///< theta_j - theta_i at installation
-  std::vector<FlatJointGeometry> geometry;
-  std::vector<std::uint8_t> active;     ///< 0 once fully broken and separated (then unjointed contact rules)
+  std::vector<BondGeometry> geometry;
+  std::vector<std::uint8_t> active;     ///< 0 once retired (broken, per the law): the unbonded contact rules
   std::vector<double> shear_force_n;    ///< per element
   std::vector<std::uint8_t> bonded;     ///< per element
   std::vector<BreakMode> pending;       ///< per element, breaks found in this step's force loop
@@ -66,7 +67,7 @@ struct Wall {
   double friction_coefficient = -1;
 };
 
-/// One bond-element break (physics-dem.md section 1: every break is a crack event).
+/// One bond-element break (docs/physics-dem.md section 1: every break is a crack event).
 struct CrackEvent {
   double time_s, x_m, y_m;
   double orientation_rad;  ///< direction of the interface (the crack line), angle of s from the x axis
@@ -100,7 +101,7 @@ class Simulation {
   /// Changes a radius (and mass); used by specimen genesis.
   void set_radius(std::size_t i, double radius_m);
   int add_wall(const Wall& wall);
-  /// Installs a stress-free flat joint between i and j (physics-dem.md section 1: zero gap at installation).
+  /// Installs a stress-free bond between i and j (docs/physics-dem.md section 1: zero gap at installation).
   int install_bond(int i, int j);
   /// Installs a joint whose zero-gap state is at the given centre distance and relative rotation (loading).
   int install_bond(int i, int j, double ref_distance_m, double ref_rotation_rad);
@@ -133,8 +134,8 @@ class Simulation {
   const std::vector<CrackEvent>& cracks() const { return cracks_; }
   std::vector<CrackEvent>& cracks() { return cracks_; }
   const Material& material() const { return material_; }
-  /// Replaces the contact parameters (e.g. frictionless compaction during genesis).
-  void set_contact_params(const LinearContactParams& c) { material_.contact = c; }
+  /// Replaces the unbonded contact law (e.g. frictionless compaction during genesis).
+  void set_contact_law(const ContactLaw& c) { material_.contact = c; }
   void set_local_damping(double alpha) { material_.local_damping = alpha; }
   const SimulationOptions& options() const { return opt_; }
   double time_step() const { return dt_; }
@@ -156,7 +157,7 @@ class Simulation {
   int n_touching_pairs() const;
   /// The complete state (particles, joints, contact lists with their shear springs, neighbour reference
   /// positions, walls, cracks, clock) as bytes: restoring it and running on gives bit-identical results to
-  /// an uninterrupted run. Format: "KERFDEM1", then each field as a length-prefixed raw array (native
+  /// an uninterrupted run. Format: "KERFDEM3", then each field as a length-prefixed raw array (native
   /// endianness, same build).
   std::string serialize() const;
   static Simulation deserialize(std::string_view bytes);
@@ -183,8 +184,17 @@ class Simulation {
   void compute_forces();
   /// The force loops as orphaned worksharing: called by every thread of a team, or by one thread alone.
   void force_loops(ForceCounts& counts);
+  /// The bond, pair and wall loops of force_loops, one instantiation per law.
+  template <class Law>
+  void bond_loop(const Law& law, ForceCounts& counts);
+  template <class Law>
+  void pair_loop(const Law& law);
+  template <class Law>
+  void wall_loop(const Law& law);
   void finish_forces(const ForceCounts& counts);
   void apply_breaks();
+  template <class Law>
+  void apply_breaks_of(const Law& law);
   /// Orphaned worksharing loops over the disks (every thread of the step's team calls them): the first half
   /// kick of the free disks and the drift of all, returning this thread's largest squared move since the
   /// last rebuild; the damped second half kick of the free disks.

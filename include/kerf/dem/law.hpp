@@ -1,0 +1,55 @@
+#pragma once
+// What the DEM's contact laws share: the types a law's functions take and return. A law is a parameter
+// struct (validated once) and pure functions of it, overloaded on that struct; the engine calls them from
+// loops instantiated once per law (kerf/dem/contact_laws.hpp lists the laws and the functions each supplies;
+// docs/dem-contact-laws.md says how to add one).
+#include <cstdint>
+
+namespace kerf::dem {
+
+/// Break mode of a bond element, as recorded in crack events.
+enum class BreakMode : std::uint8_t { none = 0, tension = 1, shear = 2 };
+
+/// Per-bond constants fixed at installation. Every bond law of kerf bonds a 2D interface: a strip of
+/// half-length R across the contact, out-of-plane thickness t, with normal and shear stiffness per area.
+struct BondGeometry {
+  double half_length_m;     ///< R = lambda min(R1, R2)
+  double thickness_m;       ///< out-of-plane thickness t
+  double normal_stiffness;  ///< k_n [Pa/m] (stress per gap length)
+  double shear_stiffness;   ///< k_s [Pa/m]
+};
+
+/// Relative motion of a bonded interface since installation, in the contact frame (n from disk 1 to 2).
+struct BondKinematics {
+  double gap_m;              ///< g_s: normal gap at the interface centre (opening positive), zero when installed
+  double rotation_rad;       ///< theta_b = theta2 - theta1 since installation
+  double shear_increment_m;  ///< d_s: shear displacement increment of this step (surface 2 relative to 1, along s)
+};
+
+/// Resultant of a bond on disk 2 about the interface centre; disk 1 gets the opposite.
+struct BondResult {
+  double normal_force_n = 0;  ///< tension positive: the force on disk 2 is -F_n n + F_s s
+  double shear_force_n = 0;   ///< along s, on disk 2
+  double moment_nm = 0;       ///< on disk 2 about the interface centre
+  int n_breaking = 0;         ///< elements found over strength this step (applied after the force loop)
+};
+
+/// Where element e of a bond lies along the interface (a crack event's place and length).
+struct ElementPlace {
+  double centroid_m;  ///< xi_e along s from the interface centre
+  double length_m;    ///< l_e
+};
+
+/// Stiffnesses a contact adds to each of its two disks for the stable time step: normal and shear
+/// translational [N/m], and the rotational stiffness of the contact itself (bending) [N m/rad].
+struct TimeStepStiffness {
+  double normal, shear, bending;
+};
+
+/// Force of an unbonded contact on disk 2.
+struct ContactResult {
+  double normal_force_n = 0;  ///< compression positive (pushes disk 2 away from disk 1 along n)
+  double shear_force_n = 0;   ///< along s = z x n
+};
+
+}  // namespace kerf::dem
