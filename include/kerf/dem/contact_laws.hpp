@@ -22,6 +22,7 @@
 #include "kerf/dem/flat_joint.hpp"
 #include "kerf/dem/law.hpp"
 #include "kerf/dem/linear_contact.hpp"
+#include "kerf/dem/parallel_bond.hpp"
 #include "kerf/field_table.hpp"
 
 namespace kerf::dem {
@@ -66,7 +67,7 @@ concept ContactLawParams = LawParams<P> && requires(const P& p, double& shear) {
 };
 
 // The laws. The first of each list is the default.
-using BondLaw = std::variant<FlatJointParams>;
+using BondLaw = std::variant<FlatJointParams, ParallelBondParams>;
 using ContactLaw = std::variant<LinearContactParams>;
 
 namespace detail {
