@@ -68,8 +68,13 @@ void print_prediction(const std::string& scene_path, const kerf::AnalyticScene& 
   fmt::print("thrust force      {:.6g} N  ({:.6g} N/mm)\n", p.thrust_force_N, p.thrust_force_N / width_mm);
   fmt::print("shear angle       {:.4g} deg\n", rad_to_deg(p.shear_angle_rad));
   if (p.has_friction) {
+    const bool from_scene = scene.friction_angle_rad && p.force_model != kerf::ForceModel::oxley &&
+                            std::fabs(*scene.friction_angle_rad - p.friction_angle_rad) <= 1e-9;
     fmt::print("friction angle    {:.4g} deg (from {})\n", rad_to_deg(p.friction_angle_rad),
-               scene.friction_origin.empty() ? "the extended-Oxley solution" : scene.friction_origin);
+               p.force_model == kerf::ForceModel::oxley ? "the extended-Oxley solution"
+               : from_scene                              ? scene.friction_origin
+                                                         : fmt::format("the {} friction closure at the nominal rake",
+                                                                       kerf::friction_closure_name(scene.liu_li.closure)));
   }
   fmt::print("chip ratio        {:.4g} (chip thickness {:.6g} um)\n", p.chip_ratio, m_to_um(p.chip_thickness_m));
   fmt::print("flow stress       {:.6g} MPa (JC {:.6g} + Hall-Petch {:.6g} + dislocation {:.6g}); k_s = {:.6g} MPa\n",
@@ -82,7 +87,9 @@ void print_prediction(const std::string& scene_path, const kerf::AnalyticScene& 
                kerf::units::m_to_nm(*scene.critical_depth_m));
   }
   for (const auto& [column, length_m] : p.contact_lengths_m) {
-    fmt::print("{:<17} {:.6g} mm\n", column.substr(0, column.size() - 3), m_to_mm(length_m));
+    const std::string name = column.substr(0, column.size() - 3);
+    if (length_m) fmt::print("{:<17} {:.6g} mm\n", name, m_to_mm(*length_m));
+    if (!length_m) fmt::print("{:<17} not applicable (see the warnings)\n", name);
   }
   if (p.liu_li) {
     const auto& l = *p.liu_li;
