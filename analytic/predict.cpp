@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
+#include <vector>
 
 #include "kerf/analytic/critical_depth.hpp"
 #include "kerf/analytic/merchant.hpp"
@@ -126,6 +128,35 @@ void warn_if_edge_ignored(const AnalyticScene& scene, const char* model_and_reme
       fmt::format("edge radius is {:.0f} % of the uncut chip thickness: {}", 100.0 * ratio, model_and_remedy));
 }
 
+/// Extended Oxley without a physical solution is a model failure (ModelError, exit 3) naming why: the solver's
+/// nearest state (a condition not met, phi or delta on a bound of its range, a zone at the melting temperature)
+/// is not a prediction. solve_oxley itself returns that state with its guards, for studies of the equations.
+void refuse_unphysical_oxley(const OxleyResult& r, const OxleyParams& params, const OxleySolverOptions& options) {
+  std::vector<std::string> why;
+  if (!r.converged) {
+    why.push_back(fmt::format("no exact solution in the search ranges (relative residuals {:.2g} and {:.2g})",
+                              r.residual_shear, r.residual_normal));
+  }
+  if (r.shear_angle_at_bound) {
+    why.push_back(fmt::format("phi at its bound ({:.4g} deg; search range {:.4g}-{:.4g} deg)",
+                              units::rad_to_deg(r.shear_angle_rad), units::rad_to_deg(options.phi_min_rad),
+                              units::rad_to_deg(options.phi_max_rad)));
+  }
+  if (r.delta_at_bound) {
+    why.push_back(fmt::format("delta at its bound ({:.4g}; range {:.4g}-{:.4g}): the minimum of F_c lies outside",
+                              r.delta, options.delta_min, options.delta_max));
+  }
+  const double melt_K = params.johnson_cook.melting_temperature_K;
+  if (r.interface_temperature_K >= melt_K || r.shear_plane_temperature_K >= melt_K) {
+    why.push_back(fmt::format("temperature at melting (interface {:.5g} K, shear zone {:.5g} K, T_melt {:.5g} K)",
+                              r.interface_temperature_K, r.shear_plane_temperature_K, melt_K));
+  }
+  if (why.empty()) return;
+  std::string reason = "no physical solution for this cut: ";
+  for (std::size_t i = 0; i < why.size(); ++i) reason += (i ? "; " : "") + why[i];
+  throw ModelError("oxley", reason);
+}
+
 /// models.force = oxley: forces, shear angle and friction angle are Oxley's own; the flow stress reported is
 /// the Johnson-Cook stress in zone AB.
 Prediction predict_oxley_forces(const AnalyticScene& scene, const OxleyResult& oxley, Prediction p) {
@@ -173,13 +204,15 @@ Prediction predict(const AnalyticScene& scene) {
                        .speed_m_per_s = scene.speed_m_per_s,
                        .workpiece_temperature_K = scene.workpiece_temperature_K};
     oxley = solve_oxley(*scene.oxley, cut, scene.oxley_options);
+    refuse_unphysical_oxley(*oxley, *scene.oxley, scene.oxley_options);
     p.guards.merge(oxley->guards);
     p.oxley = OxleyDetails{oxley->strain_rate_constant_C0, oxley->delta, oxley->interface_temperature_K,
-                           oxley->contact_length_m, std::max(oxley->residual_shear, oxley->residual_normal)};
-    if (!oxley->converged) {
-      p.warnings.push_back(fmt::format("extended Oxley: no exact solution inside the search ranges (relative "
-                                       "residual {:.2g}); the nearest admissible state is reported",
-                                       p.oxley->residual));
+                           oxley->contact_length_m, std::max(oxley->residual_shear, oxley->residual_normal),
+                           oxley->shear_angle_roots};
+    if (oxley->shear_angle_roots > 1) {
+      p.warnings.push_back(fmt::format("extended Oxley: {} solutions in the shear angle; the minimum-force branch "
+                                       "(phi = {:.4g} deg) is reported",
+                                       oxley->shear_angle_roots, units::rad_to_deg(oxley->shear_angle_rad)));
     }
   }
   if (scene.force == ForceModel::oxley) return predict_oxley_forces(scene, *oxley, std::move(p));
@@ -299,6 +332,7 @@ std::vector<std::pair<std::string, std::string>> prediction_columns(const Analyt
     row.emplace_back("interface_temperature_K", optional_number(has, o.interface_temperature_K));
     row.emplace_back("contact_length_oxley_mm", optional_number(has, units::m_to_mm(o.contact_length_m)));
     row.emplace_back("oxley_residual", optional_number(has, o.residual));
+    row.emplace_back("oxley_shear_angle_roots", optional_number(has, o.shear_angle_roots));
   }
   if (scene.turning) {
     add("feed_um_per_rev", units::m_to_um(scene.turning->geometry.feed_m_per_rev));

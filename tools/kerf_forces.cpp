@@ -14,6 +14,7 @@
 #include <omp.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <optional>
@@ -350,6 +351,38 @@ int run_sweep(const std::string& scene_path, const std::vector<std::string>& ove
   kerf::write_file_atomically(csv, text);
   fmt::print(stderr, "kerf-forces: {} points written to {} ({} refused with an error, see the 'error' column)\n",
              n_points, csv, n_failed);
+
+  // A force that falls as the chip thickens is a model that switched branch or left its domain (issue 22): say
+  // so, with the first place it happens, for each force column along a varied uncut chip thickness.
+  for (std::size_t a = 0; a < axes.size(); ++a) {
+    if (axes[a].path != "cut.uncut_chip_thickness_um") continue;
+    std::size_t stride = 1;
+    for (std::size_t b = a + 1; b < axes.size(); ++b) stride *= axes[b].values.size();
+    const std::size_t n_h = axes[a].values.size();
+    for (const char* force : {"cutting_force_N", "thrust_force_N"}) {
+      const auto column = std::find(names.begin(), names.end(), force);
+      if (column == names.end()) continue;
+      const auto c = static_cast<std::size_t>(column - names.begin());
+      std::vector<std::optional<double>> values(n_points);
+      for (std::size_t i = 0; i < n_points; ++i) {
+        if (rows[i].error.empty()) values[i] = std::stod(rows[i].values[c]);
+      }
+      const std::vector<std::size_t> falls = kerf::falling_points(values, stride, n_h);
+      const std::size_t n_falls = falls.size();
+      std::string first;
+      if (!falls.empty()) {
+        const std::size_t i = falls.front(), j = i - stride;
+        first = fmt::format("{:.6g} N at {:.6g} um to {:.6g} N at {:.6g} um", *values[j], coordinates(j)[a], *values[i],
+                            coordinates(i)[a]);
+      }
+      if (n_falls > 0) {
+        fmt::print(stderr,
+                   "kerf-forces: warning: {} falls as cut.uncut_chip_thickness_um grows at {} point(s), first from {}: "
+                   "the model may have changed branch or left its domain there\n",
+                   force, n_falls, first);
+      }
+    }
+  }
   return 0;
 }
 

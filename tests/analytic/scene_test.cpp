@@ -204,16 +204,24 @@ TEST_CASE("Oxley refuses microstructure terms it cannot use", "[scene][oxley]") 
 }
 
 TEST_CASE("Oxley deformation works when the force model's flow stress leaves Johnson-Cook out", "[scene][oxley]") {
-  auto doc = orthogonal_scene();
-  doc["models"]["deformation"] = "oxley";
-  doc["models"]["flow_stress"] = Json::array({"hall_petch"});
+  // AISI 1045 at the reference cut of Pantale et al. (Oxley solves there), with an (illustrative) microstructure
+  // group so that the force model can use the Hall-Petch term alone.
+  Json doc = Json::parse(R"({
+    "tool": {"rake_deg": -7},
+    "cut": {"uncut_chip_thickness_um": 150, "width_mm": 1.6, "speed_m_per_min": 200, "friction_coefficient": 0.3},
+    "models": {"force": "liu_li", "deformation": "oxley", "flow_stress": ["hall_petch"]}
+  })");
+  doc["material"] = kerf::read_json_file(std::string(KERF_SOURCE_DIR) + "/data/materials/aisi_1045.json");
+  doc["material"]["microstructure"] = {{"grain_size_um", 20.0}, {"burgers_vector_nm", 0.248},
+                                       {"misorientation_deg", 2.0}};
   const auto scene = kerf::parse_analytic_scene(doc);
   CHECK_FALSE(scene.flow_stress.johnson_cook.has_value());
   REQUIRE(scene.oxley.has_value());
-  CHECK_THAT(scene.oxley->johnson_cook.A_Pa, WithinRel(8000e6, 1e-12));  // p-SiC's (assumed) Johnson-Cook A
+  CHECK_THAT(scene.oxley->johnson_cook.A_Pa, WithinRel(553.1e6, 1e-12));  // AISI 1045's Johnson-Cook A
   const auto p = kerf::predict(scene);
   CHECK(p.flow.johnson_cook_Pa == 0.0);
   CHECK(p.flow.total_Pa == p.flow.hall_petch_Pa);
+  CHECK(p.state.temperature_K > 298.15);  // zone AB's temperature, which softens the Hall-Petch term
 }
 
 // ---- Issue 22: the analytic models at their edges ---------------------------------------------------------
@@ -401,4 +409,41 @@ TEST_CASE("The force falls continuously to zero at the melting temperature", "[s
   }
   CHECK(force_at(3002.9) < 1e-4 * room);  // continuous with the molten 0 N
   CHECK(force_at(3003.0) == 0.0);
+}
+
+TEST_CASE("Oxley mode reports its own friction angle and the contact lengths from it", "[scene][oxley][issue22]") {
+  Json doc = kerf::read_json_file(std::string(KERF_SOURCE_DIR) + "/data/scenes/aisi1045_oxley.json");
+  doc["cut"]["friction_angle_deg"] = 5.0;  // ignored by Oxley, which predicts lambda
+  const auto p = kerf::predict(kerf::parse_analytic_scene(doc));
+  REQUIRE(p.oxley.has_value());
+  // lambda = theta + a - phi, and F_t / F_c = tan(lambda - a) (Oxley's force circle, O 6).
+  const double a = kerf::units::deg_to_rad(-7.0);
+  CHECK_THAT(p.thrust_force_N / p.cutting_force_N, WithinRel(std::tan(p.friction_angle_rad - a), 1e-9));
+  const double phi_mep = std::numbers::pi / 4.0 - (p.friction_angle_rad - a) / 2.0;  // seed 003 Eq. 4
+  REQUIRE(p.contact_lengths_m.size() == 2);
+  CHECK_THAT(*p.contact_lengths_m[1].second,
+             WithinRel(150e-6 * std::sin(phi_mep + p.friction_angle_rad - a) /
+                           (std::sin(phi_mep) * std::cos(p.friction_angle_rad)),
+                       1e-12));  // altintas_mep, seed 003 Eq. 1
+}
+
+TEST_CASE("Oxley without a physical solution is a model failure naming why", "[scene][oxley][issue22]") {
+  // Issue 22 reproducer 3: AISI 1045 at rake -60 deg (F_t = -0.0035 N, temperature at melting, exit 0).
+  Json steel = kerf::read_json_file(std::string(KERF_SOURCE_DIR) + "/data/scenes/aisi1045_oxley.json");
+  steel["tool"]["rake_deg"] = -60.0;
+  CHECK_THROWS_WITH(kerf::predict(kerf::parse_analytic_scene(steel)), Contains("temperature at melting"));
+  // a2024_planing with Oxley, sharp: delta pinned at 0.2 from 200 um, phi at its 5 deg bound at 190 um.
+  Json doc = kerf::read_json_file(std::string(KERF_SOURCE_DIR) + "/data/scenes/a2024_planing.json");
+  doc["models"]["force"] = "oxley";
+  doc["tool"]["edge_radius_um"] = 0.0;
+  doc["cut"]["uncut_chip_thickness_um"] = 200.0;
+  CHECK_THROWS_AS(kerf::predict(kerf::parse_analytic_scene(doc)), kerf::ModelError);
+  CHECK_THROWS_WITH(kerf::predict(kerf::parse_analytic_scene(doc)), Contains("delta at its bound (0.2"));
+  doc["cut"]["uncut_chip_thickness_um"] = 190.0;
+  CHECK_THROWS_WITH(kerf::predict(kerf::parse_analytic_scene(doc)), Contains("phi at its bound (5 deg"));
+  // The reference cut solves, on one branch.
+  const auto p = kerf::predict(kerf::parse_analytic_scene(
+      kerf::read_json_file(std::string(KERF_SOURCE_DIR) + "/data/scenes/aisi1045_oxley.json")));
+  REQUIRE(p.oxley.has_value());
+  CHECK(p.oxley->shear_angle_roots == 1);
 }

@@ -22,6 +22,7 @@ struct OxleyDetails {
   double interface_temperature_K = 0.0;
   double contact_length_m = 0.0;
   double residual = 0.0;  ///< the larger relative residual of the two Oxley conditions
+  int shear_angle_roots = 0;  ///< branches found; the minimum-force one is reported
 };
 
 struct Prediction {
