@@ -1,5 +1,7 @@
 #include "kerf/analytic/contact_length.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <numbers>
 
@@ -17,27 +19,40 @@ std::string_view contact_length_model_name(ContactLengthModel model) {
   return "";
 }
 
+namespace {
+double length_ratio(ContactLengthModel model, double shear_angle_rad, double friction_angle_rad, double rake_rad) {
+  const double quarter_pi = std::numbers::pi / 4.0;
+  if (model == ContactLengthModel::altintas) {
+    return std::sin(shear_angle_rad + friction_angle_rad - rake_rad) /
+           (std::sin(shear_angle_rad) * std::cos(friction_angle_rad));  // Eq. 1
+  }
+  const double ratio = std::sin(quarter_pi) /
+                       (std::sin(shear_angle_rad) * std::sin(quarter_pi + shear_angle_rad - rake_rad));  // Eq. 2
+  return model == ContactLengthModel::lee_shaffer ? 2.0 * ratio : ratio;                               // Eq. 3
+}
+}  // namespace
+
+std::optional<std::string> contact_length_outside_domain(ContactLengthModel model, double shear_angle_rad,
+                                                         double friction_angle_rad, double rake_rad) {
+  if (!(shear_angle_rad > 0.0 && shear_angle_rad < std::numbers::pi / 2.0)) {
+    return fmt::format("shear angle {:.4g} deg outside (0, 90) deg", units::rad_to_deg(shear_angle_rad));
+  }
+  const double ratio = length_ratio(model, shear_angle_rad, friction_angle_rad, rake_rad);
+  if (!std::isfinite(ratio) || ratio <= 0.0) {
+    return fmt::format("no positive length (L/h = {:.4g}) at shear angle {:.4g} deg, friction angle {:.4g} deg, "
+                       "rake {:.4g} deg",
+                       ratio, units::rad_to_deg(shear_angle_rad), units::rad_to_deg(friction_angle_rad),
+                       units::rad_to_deg(rake_rad));
+  }
+  return std::nullopt;
+}
+
 double contact_length(ContactLengthModel model, double uncut_chip_thickness_m, double shear_angle_rad,
                       double friction_angle_rad, double rake_rad) {
-  const double quarter_pi = std::numbers::pi / 4.0;
-  if (!(shear_angle_rad > 0.0 && shear_angle_rad < 2.0 * quarter_pi)) {
-    throw InputError("shear_angle_deg", format_value(units::rad_to_deg(shear_angle_rad)),
-                     "a shear angle in (0, 90) deg for the contact-length model");
+  if (const auto why = contact_length_outside_domain(model, shear_angle_rad, friction_angle_rad, rake_rad)) {
+    throw InputError("contact_length", std::string(contact_length_model_name(model)), "a model inside its domain: " + *why);
   }
-  double ratio = 0.0;  // L / h
-  if (model == ContactLengthModel::altintas) {
-    ratio = std::sin(shear_angle_rad + friction_angle_rad - rake_rad) /
-            (std::sin(shear_angle_rad) * std::cos(friction_angle_rad));  // Eq. 1
-  } else {
-    const double denominator = std::sin(shear_angle_rad) * std::sin(quarter_pi + shear_angle_rad - rake_rad);
-    ratio = std::sin(quarter_pi) / denominator;  // Eq. 2
-    if (model == ContactLengthModel::lee_shaffer) ratio *= 2.0;  // Eq. 3
-  }
-  if (!std::isfinite(ratio) || ratio <= 0.0) {
-    throw InputError("contact_length", contact_length_model_name(model).data(),
-                     "a positive contact length (shear angle, friction angle and rake give none)");
-  }
-  return ratio * uncut_chip_thickness_m;
+  return length_ratio(model, shear_angle_rad, friction_angle_rad, rake_rad) * uncut_chip_thickness_m;
 }
 
 }  // namespace kerf

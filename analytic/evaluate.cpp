@@ -65,6 +65,19 @@ Columns evaluate_scene_columns(const Json& document, MaterialCache* cache) {
   return prediction_columns(scene, predict(scene));
 }
 
+std::vector<std::size_t> falling_points(const std::vector<std::optional<double>>& force, std::size_t stride,
+                                        std::size_t n_along) {
+  std::vector<std::size_t> out;
+  if (stride == 0 || n_along == 0) return out;
+  for (std::size_t i = stride; i < force.size(); ++i) {
+    if ((i / stride) % n_along == 0) continue;  // the first thickness of its line
+    const auto& now = force[i];
+    const auto& before = force[i - stride];
+    if (now && before && *now < *before * (1.0 - 1e-9)) out.push_back(i);
+  }
+  return out;
+}
+
 std::vector<std::string> scene_column_names(const Json& document, MaterialCache* cache) {
   const Columns columns = is_trepanning_scene(document)
                               ? trepanning_columns(parse_trepanning_scene(document), TrepanningForces{})

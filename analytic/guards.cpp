@@ -32,6 +32,12 @@ constexpr GuardInfo kGuards[kGuardCount] = {
      "Oxley: the solution lies on a bound of the search range (phi, C0 or delta)"},
     {Guard::turning_depth_below_feed, "turning_depth_below_feed",
      "turning: the chip is thinner along the edge than the feed suggests (depth of cut small against feed)"},
+    {Guard::no_chip_on_rake_face, "no_chip_on_rake_face",
+     "the nominal rake lies below the lower limit (stagnation point or pole): the rake face forms no chip either; "
+     "the whole cut is ploughed, its chip force is zero"},
+    {Guard::contact_length_not_applicable, "contact_length_not_applicable",
+     "a contact-length model is outside its domain here (its shear angle or length is not positive): its column "
+     "is empty, the warning names the reason, the rest of the prediction stands"},
 };
 }  // namespace
 

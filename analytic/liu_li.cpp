@@ -16,14 +16,21 @@ constexpr double kHalfPi = std::numbers::pi / 2.0;
 constexpr double kQuarterPi = std::numbers::pi / 4.0;
 }  // namespace
 
-const std::vector<std::string>& friction_closure_names() {
-  static const std::vector<std::string> names = {"constant", "merchant", "lee_shaffer"};
-  return names;
+std::string_view friction_closure_name(FrictionClosure closure) {
+  switch (closure) {
+    case FrictionClosure::constant: return "constant";
+    case FrictionClosure::merchant: return "merchant";
+    case FrictionClosure::lee_shaffer: return "lee_shaffer";
+  }
+  return "";
 }
 
-const std::vector<std::string>& lower_limit_rule_names() {
-  static const std::vector<std::string> names = {"stagnation", "pole"};
-  return names;
+std::string_view lower_limit_rule_name(LowerLimitRule rule) {
+  switch (rule) {
+    case LowerLimitRule::stagnation: return "stagnation";
+    case LowerLimitRule::pole: return "pole";
+  }
+  return "";
 }
 
 void LiuLiParams::validate(const std::string& path) const {
@@ -113,31 +120,38 @@ LiuLiResult liu_li_force_per_width(const LiuLiParams& p, double shear_flow_stres
   out.upper_limit_rad =
       out.chip_on_edge_only ? std::asin(std::clamp(uncut_chip_thickness_m / r - 1.0, -1.0, 1.0)) : p.rake_rad;
 
+  // The lower limit g_L: no chip forms where the local rake lies below it, on the arc or on the straight rake
+  // face (the tool is one surface: a rake face below the stagnation point ploughs like the edge below it).
+  out.pole_rad = constant_closure_pole(p, p.rake_rad);
+  double lower = -kHalfPi;
+  if (out.pole_rad) {
+    lower = *out.pole_rad + p.lower_limit_margin_rad;
+    if (r > 0.0 || lower >= p.rake_rad) raise(guards, Guard::lower_limit_above_pole);
+  } else if (p.closure == FrictionClosure::merchant) {
+    lower += p.lower_limit_margin_rad;  // the Merchant-closure thrust diverges logarithmically at -pi/2
+  }
+  if (p.lower_limit == LowerLimitRule::stagnation) lower = std::max(lower, out.stagnation_angle_rad);
+  out.cut_off_rad = lower;
+  out.lower_limit_rad = std::min(lower, out.upper_limit_rad);
+  out.rake_face_ploughs = p.rake_rad <= lower;
+  if (out.rake_face_ploughs) raise(guards, Guard::no_chip_on_rake_face);
+
   // Straight rake face above the arc: the sharp-tool force at the nominal rake (the r -> 0 limit).
   const double rake_face_thickness = uncut_chip_thickness_m - (out.chip_on_edge_only ? uncut_chip_thickness_m : arc_height);
-  const double phi_nominal = local_shear_angle(p.chip_ratio, p.rake_rad);
-  if (rake_face_thickness > 0.0) {
+  if (rake_face_thickness > 0.0 && !out.rake_face_ploughs) {
+    const double phi_nominal = local_shear_angle(p.chip_ratio, p.rake_rad);
     const double beta_nominal = local_friction_angle(p.closure, p.friction_angle_rad, p.rake_rad, phi_nominal);
     out.rake_face = sharp_tool_force_per_width(k_s, rake_face_thickness, phi_nominal, beta_nominal, p.rake_rad);
   }
 
+  const bool no_chip_on_edge = lower >= out.upper_limit_rad;
+  if (r > 0.0 && no_chip_on_edge) raise(guards, Guard::no_chip_on_edge);
+  if (out.rake_face_ploughs || (no_chip_on_edge && out.chip_on_edge_only)) {
+    out.ploughed_thickness_m = uncut_chip_thickness_m;  // no chip at all: the whole cut passes under the tool
+  } else if (r > 0.0) {
+    out.ploughed_thickness_m = std::min(uncut_chip_thickness_m, r * (1.0 + std::sin(out.lower_limit_rad)));
+  }
   if (r > 0.0) {
-    out.pole_rad = constant_closure_pole(p, p.rake_rad);
-    double lower = -kHalfPi;
-    if (out.pole_rad) {
-      lower = *out.pole_rad + p.lower_limit_margin_rad;
-      raise(guards, Guard::lower_limit_above_pole);
-    } else if (p.closure == FrictionClosure::merchant) {
-      lower += p.lower_limit_margin_rad;  // the Merchant-closure thrust diverges logarithmically at -pi/2
-    }
-    if (p.lower_limit == LowerLimitRule::stagnation) lower = std::max(lower, out.stagnation_angle_rad);
-    out.lower_limit_rad = std::min(lower, out.upper_limit_rad);
-    const bool no_chip_on_edge = lower >= out.upper_limit_rad;
-    if (no_chip_on_edge) raise(guards, Guard::no_chip_on_edge);
-    out.ploughed_thickness_m = no_chip_on_edge && out.chip_on_edge_only
-                                   ? uncut_chip_thickness_m
-                                   : std::min(uncut_chip_thickness_m, r * (1.0 + std::sin(out.lower_limit_rad)));
-
     const auto edge = integrate_pair(EdgeIntegrand{p}, out.lower_limit_rad, out.upper_limit_rad, p.quadrature);
     out.edge = {k_s * edge.value.first, k_s * edge.value.second};
     out.quadrature_error_estimate = k_s * edge.error_estimate;

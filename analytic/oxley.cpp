@@ -437,6 +437,8 @@ class Solver {
   }
 
   const Solution& state(std::size_t index) const { return states_[index]; }
+  /// Full solutions (phi and C0 bracketed) the cold bracket search found at the first delta: the branches.
+  int full_roots() const { return full_roots_; }
 
   // The state at phi (memoised): C0 from sigma_N = sigma_N' by a bracketed root on the admissible part of
   // [c0_min, c0_max] (without a sign change: the end of smaller residual, c0_bracketed = false), then T_AB and
@@ -529,6 +531,7 @@ class Solver {
         const std::size_t at = at_phi(bracketed_root(g, a, b, g_scan[i], g_scan[i + 1], c_.rel_tol, c_.max_iterations));
         const Solution& sol = state(at);
         const double score = (sol.admissible && sol.c0_bracketed ? 0.0 : 1e300) + sol.primary.F_c;
+        if (sol.admissible && sol.c0_bracketed) ++full_roots_;
         if (score < best_score) {
           best_score = score;
           root = {at, true};
@@ -606,6 +609,7 @@ class Solver {
   std::vector<std::pair<double, Root>> roots_;
   std::optional<std::size_t> previous_;
   double phi_slope_ = std::numeric_limits<double>::quiet_NaN();
+  int full_roots_ = 0;
   std::vector<std::size_t> scan_index_;  // the cold bracket search
   std::vector<double> scan_g_;
 };
@@ -743,6 +747,10 @@ OxleyResult solve_oxley(const OxleyParams& params, const OxleyCut& cut, const Ox
   if (!sol.c0_bracketed || !root.bracketed) guards.raise(Guard::solver_at_bound);
   OxleyResult r = make_result(c, sol.plane, sol.primary, delta, guards);
   r.converged = sol.c0_bracketed && root.bracketed;
+  r.shear_angle_roots = solver.full_roots();
+  r.delta_at_bound = delta == options.delta_min || delta == options.delta_max;
+  r.shear_angle_at_bound = std::fabs(r.shear_angle_rad - options.phi_min_rad) <= 1e-9 ||
+                           std::fabs(r.shear_angle_rad - std::min(options.phi_max_rad, cut.rake_rad + kPi / 2.0)) <= 1e-6;
   return r;
 }
 

@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
+#include <vector>
 
 #include "kerf/analytic/critical_depth.hpp"
 #include "kerf/analytic/merchant.hpp"
@@ -18,8 +20,12 @@ namespace {
 // Oxley's strain-rate constant C0 lies in 2-10 (Oxley 1989); its middle is used to estimate the primary-zone
 // strain rate when the scene neither gives one nor asks for an Oxley solve.
 constexpr double kTypicalStrainRateConstant = 5.0;
-// Seed 003 validated the contact-length models for A2024-T351 up to h = 0.1 mm (chip segmentation above).
+// Seed 003 validated the contact-length models for A2024-T351 up to h = 0.1 mm (chip segmentation above); the
+// limit is that material's, so the warning is too.
 constexpr double kContactLengthValidatedThickness_m = 0.1e-3;
+constexpr const char* kContactLengthValidatedMaterial = "a2024_t351";
+// Two friction angles closer than this are the same (rounding of the closures' identities).
+constexpr double kSameAngle_rad = 1e-9;
 
 /// Shear-plane strain and Oxley's strain-rate estimate for a sharp tool (physics-analytic.md §3).
 DeformationState shear_plane_state(const AnalyticScene& scene, double shear_angle_rad) {
@@ -69,16 +75,49 @@ DeformationState shear_plane_state_of(const OxleyResult& oxley) {
   return {oxley.shear_plane_strain, oxley.shear_plane_strain_rate_per_s, oxley.shear_plane_temperature_K};
 }
 
+/// Contact lengths (seed 003 Eqs. 1-4) with the prediction's own friction angle. A variant outside its domain
+/// (no positive shear angle or length) is not applicable: its cell stays empty, the guard and a warning say why,
+/// and the rest of the prediction stands.
 void add_contact_lengths(const AnalyticScene& scene, double friction_angle_rad, Prediction& p) {
   const double t0 = scene.uncut_chip_thickness_m;
   for (const auto& request : scene.contact_lengths) {
     const double phi = shear_angle(request.shear_angle, scene.rake_rad, friction_angle_rad);
+    if (const auto why = contact_length_outside_domain(request.model, phi, friction_angle_rad, scene.rake_rad)) {
+      p.guards.raise(Guard::contact_length_not_applicable);
+      p.warnings.push_back(fmt::format("{}: not applicable ({} shear angle): {}", request.column,
+                                       request.shear_angle == ShearAngleModel::merchant ? "MEP" : "MSSP", *why));
+      p.contact_lengths_m.emplace_back(request.column, std::nullopt);
+      continue;
+    }
     p.contact_lengths_m.emplace_back(request.column,
                                      contact_length(request.model, t0, phi, friction_angle_rad, scene.rake_rad));
   }
-  if (!scene.contact_lengths.empty() && t0 > kContactLengthValidatedThickness_m) {
+  if (!scene.contact_lengths.empty() && t0 > kContactLengthValidatedThickness_m &&
+      scene.material.name == kContactLengthValidatedMaterial) {
     p.warnings.push_back("contact-length models were validated up to h = 0.1 mm (seed 003: chip segmentation above)");
   }
+}
+
+/// The friction angle of a Merchant or Liu-Li prediction: the friction closure's beta at the nominal rake and
+/// shear angle (the scene's beta for the constant closure; with the matching shear-angle rule the closures give
+/// it back). A closure that implies beta < 0 (friction pulling the chip down the rake face: a chip ratio or
+/// shear-angle rule the closure cannot match) is refused, naming what set the shear angle.
+double prediction_friction_angle(const AnalyticScene& scene, double shear_angle_rad) {
+  const double given = scene.friction_angle_rad.value_or(0.0);
+  const double beta = local_friction_angle(scene.liu_li.closure, given, scene.rake_rad, shear_angle_rad);
+  if (scene.liu_li.closure == FrictionClosure::constant) return beta;
+  const std::string closure(friction_closure_name(scene.liu_li.closure));
+  if (beta < 0.0) {
+    const bool measured = scene.shear_angle == ShearAngleSource::chip_ratio;
+    throw InputError(measured ? "cut.chip_ratio" : "models.friction_closure",
+                     measured ? format_value(*scene.chip_ratio) : closure,
+                     fmt::format("a shear angle and friction closure giving a friction angle >= 0: shear angle {:.4g} "
+                                 "deg with the {} closure at rake {:.4g} deg gives beta = {:.4g} deg (the friction "
+                                 "would pull the chip down the rake face)",
+                                 units::rad_to_deg(shear_angle_rad), closure, units::rad_to_deg(scene.rake_rad),
+                                 units::rad_to_deg(beta)));
+  }
+  return beta;
 }
 
 /// The sharp-tool models (Merchant, Oxley) ignore the edge: say so when it is not small against t0.
@@ -89,13 +128,42 @@ void warn_if_edge_ignored(const AnalyticScene& scene, const char* model_and_reme
       fmt::format("edge radius is {:.0f} % of the uncut chip thickness: {}", 100.0 * ratio, model_and_remedy));
 }
 
+/// Extended Oxley without a physical solution is a model failure (ModelError, exit 3) naming why: the solver's
+/// nearest state (a condition not met, phi or delta on a bound of its range, a zone at the melting temperature)
+/// is not a prediction. solve_oxley itself returns that state with its guards, for studies of the equations.
+void refuse_unphysical_oxley(const OxleyResult& r, const OxleyParams& params, const OxleySolverOptions& options) {
+  std::vector<std::string> why;
+  if (!r.converged) {
+    why.push_back(fmt::format("no exact solution in the search ranges (relative residuals {:.2g} and {:.2g})",
+                              r.residual_shear, r.residual_normal));
+  }
+  if (r.shear_angle_at_bound) {
+    why.push_back(fmt::format("phi at its bound ({:.4g} deg; search range {:.4g}-{:.4g} deg)",
+                              units::rad_to_deg(r.shear_angle_rad), units::rad_to_deg(options.phi_min_rad),
+                              units::rad_to_deg(options.phi_max_rad)));
+  }
+  if (r.delta_at_bound) {
+    why.push_back(fmt::format("delta at its bound ({:.4g}; range {:.4g}-{:.4g}): the minimum of F_c lies outside",
+                              r.delta, options.delta_min, options.delta_max));
+  }
+  const double melt_K = params.johnson_cook.melting_temperature_K;
+  if (r.interface_temperature_K >= melt_K || r.shear_plane_temperature_K >= melt_K) {
+    why.push_back(fmt::format("temperature at melting (interface {:.5g} K, shear zone {:.5g} K, T_melt {:.5g} K)",
+                              r.interface_temperature_K, r.shear_plane_temperature_K, melt_K));
+  }
+  if (why.empty()) return;
+  std::string reason = "no physical solution for this cut: ";
+  for (std::size_t i = 0; i < why.size(); ++i) reason += (i ? "; " : "") + why[i];
+  throw ModelError("oxley", reason);
+}
+
 /// models.force = oxley: forces, shear angle and friction angle are Oxley's own; the flow stress reported is
 /// the Johnson-Cook stress in zone AB.
 Prediction predict_oxley_forces(const AnalyticScene& scene, const OxleyResult& oxley, Prediction p) {
   p.cutting_force_N = oxley.cutting_force_N;
   p.thrust_force_N = oxley.thrust_force_N;
   p.shear_angle_rad = oxley.shear_angle_rad;
-  p.friction_angle_rad = scene.friction_angle_rad.value_or(oxley.friction_angle_rad);
+  p.friction_angle_rad = oxley.friction_angle_rad;  // Oxley's own lambda, whatever the scene gave
   p.has_friction = true;
   p.chip_thickness_m = oxley.chip_thickness_m;
   p.chip_ratio = scene.uncut_chip_thickness_m / oxley.chip_thickness_m;
@@ -104,7 +172,12 @@ Prediction predict_oxley_forces(const AnalyticScene& scene, const OxleyResult& o
   p.flow.shear_Pa = oxley.shear_plane_shear_stress_Pa;
   warn_if_edge_ignored(scene, "extended Oxley assumes a sharp tool (use models.force = liu_li with deformation = oxley)",
                        p);
-  // Contact lengths use the scene's friction if given, else Oxley's friction angle lambda.
+  if (scene.friction_angle_rad && std::fabs(*scene.friction_angle_rad - oxley.friction_angle_rad) > kSameAngle_rad) {
+    p.warnings.push_back(fmt::format("extended Oxley predicts its own friction angle {:.4g} deg; the scene's {:.4g} deg "
+                                     "({}) is not used",
+                                     units::rad_to_deg(oxley.friction_angle_rad),
+                                     units::rad_to_deg(*scene.friction_angle_rad), scene.friction_origin));
+  }
   add_contact_lengths(scene, p.friction_angle_rad, p);
   return p;
 }
@@ -131,30 +204,39 @@ Prediction predict(const AnalyticScene& scene) {
                        .speed_m_per_s = scene.speed_m_per_s,
                        .workpiece_temperature_K = scene.workpiece_temperature_K};
     oxley = solve_oxley(*scene.oxley, cut, scene.oxley_options);
+    refuse_unphysical_oxley(*oxley, *scene.oxley, scene.oxley_options);
     p.guards.merge(oxley->guards);
     p.oxley = OxleyDetails{oxley->strain_rate_constant_C0, oxley->delta, oxley->interface_temperature_K,
-                           oxley->contact_length_m, std::max(oxley->residual_shear, oxley->residual_normal)};
-    if (!oxley->converged) {
-      p.warnings.push_back(fmt::format("extended Oxley: no exact solution inside the search ranges (relative "
-                                       "residual {:.2g}); the nearest admissible state is reported",
-                                       p.oxley->residual));
+                           oxley->contact_length_m, std::max(oxley->residual_shear, oxley->residual_normal),
+                           oxley->shear_angle_roots};
+    if (oxley->shear_angle_roots > 1) {
+      p.warnings.push_back(fmt::format("extended Oxley: {} solutions in the shear angle; the minimum-force branch "
+                                       "(phi = {:.4g} deg) is reported",
+                                       oxley->shear_angle_roots, units::rad_to_deg(oxley->shear_angle_rad)));
     }
   }
   if (scene.force == ForceModel::oxley) return predict_oxley_forces(scene, *oxley, std::move(p));
 
   // Nominal shear angle and chip ratio.
-  const double beta = p.friction_angle_rad;
+  const double scene_beta = scene.friction_angle_rad.value_or(0.0);
   if (scene.shear_angle == ShearAngleSource::chip_ratio) {
     p.chip_ratio = *scene.chip_ratio;
     p.shear_angle_rad = shear_angle_from_chip_ratio(p.chip_ratio, scene.rake_rad);
   } else {
     const auto model =
         scene.shear_angle == ShearAngleSource::merchant ? ShearAngleModel::merchant : ShearAngleModel::lee_shaffer;
-    p.shear_angle_rad = shear_angle(model, scene.rake_rad, beta);
+    p.shear_angle_rad = shear_angle(model, scene.rake_rad, scene_beta);
     p.chip_ratio = chip_ratio_from_shear_angle(p.shear_angle_rad, scene.rake_rad);
   }
   check_shear_angle(p.shear_angle_rad, scene);
   p.chip_thickness_m = t0 / p.chip_ratio;
+
+  // One friction angle for the whole prediction: the closure's value at the nominal rake (the scene's beta for
+  // the constant closure). It sets the rake-face force, the stagnation angle, the contact lengths and the
+  // printed value, for Merchant and Liu-Li alike, so that Liu-Li's r -> 0 limit is Merchant on the same scene.
+  const double beta = prediction_friction_angle(scene, p.shear_angle_rad);
+  p.friction_angle_rad = beta;
+  p.has_friction = true;
 
   switch (scene.deformation) {
     case DeformationModel::given: p.state = *scene.given_state; break;
@@ -164,21 +246,35 @@ Prediction predict(const AnalyticScene& scene) {
   p.flow = flow_stress(scene.flow_stress, p.state, &p.guards);
   const double k_s = p.flow.shear_Pa;
 
-  ForcePerWidth per_width;
+  LiuLiParams params = scene.liu_li;
+  params.rake_rad = scene.rake_rad;
+  params.edge_radius_m = scene.force == ForceModel::merchant ? 0.0 : scene.edge_radius_m;  // Merchant: r = 0
+  params.chip_ratio = p.chip_ratio;
+  params.friction_angle_rad = beta;
+  const LiuLiResult liu_li = liu_li_force_per_width(params, k_s, t0, &p.guards);
   if (scene.force == ForceModel::merchant) {
-    per_width = sharp_tool_force_per_width(k_s, t0, p.shear_angle_rad, beta, scene.rake_rad);
     warn_if_edge_ignored(scene, "the sharp-tool model ignores it (use models.force = liu_li)", p);
   } else {
-    LiuLiParams params = scene.liu_li;
-    params.rake_rad = scene.rake_rad;
-    params.edge_radius_m = scene.edge_radius_m;
-    params.chip_ratio = p.chip_ratio;
-    p.liu_li = liu_li_force_per_width(params, k_s, t0, &p.guards);
-    per_width = p.liu_li->total;
+    p.liu_li = liu_li;
   }
-  p.cutting_force_N = per_width.cutting_N_per_m * scene.width_m;
-  p.thrust_force_N = per_width.thrust_N_per_m * scene.width_m;
+  if (liu_li.rake_face_ploughs) {
+    p.warnings.push_back(fmt::format("rake {:.4g} deg lies below the {} cut-off {:.4g} deg: no chip forms, the whole "
+                                     "cut is ploughed (chip force zero)",
+                                     units::rad_to_deg(scene.rake_rad),
+                                     lower_limit_rule_name(scene.liu_li.lower_limit),
+                                     units::rad_to_deg(liu_li.cut_off_rad)));
+  }
+  p.cutting_force_N = liu_li.total.cutting_N_per_m * scene.width_m;
+  p.thrust_force_N = liu_li.total.thrust_N_per_m * scene.width_m;
 
+  if (scene.friction_angle_rad && std::fabs(beta - *scene.friction_angle_rad) > kSameAngle_rad) {
+    p.warnings.push_back(fmt::format(
+        "the {} friction closure at the nominal rake gives beta = {:.4g} deg with this shear angle ({}); it is used "
+        "for the forces, the stagnation angle and the contact lengths, not the scene's {:.4g} deg ({})",
+        friction_closure_name(scene.liu_li.closure), units::rad_to_deg(beta),
+        scene.shear_angle == ShearAngleSource::chip_ratio ? "from cut.chip_ratio" : "from models.shear_angle",
+        units::rad_to_deg(*scene.friction_angle_rad), scene.friction_origin));
+  }
   add_contact_lengths(scene, beta, p);
   return p;
 }
@@ -209,16 +305,17 @@ std::vector<std::pair<std::string, std::string>> prediction_columns(const Analyt
   add("strain_rate_per_s", p.state.strain_rate_per_s);
   add("temperature_K", p.state.temperature_K);
   for (std::size_t i = 0; i < scene.contact_lengths.size(); ++i) {
+    const bool has = i < p.contact_lengths_m.size() && p.contact_lengths_m[i].second.has_value();
     row.emplace_back(scene.contact_lengths[i].column,
-                     i < p.contact_lengths_m.size() ? csv_number(units::m_to_mm(p.contact_lengths_m[i].second)) : "");
+                     has ? csv_number(units::m_to_mm(*p.contact_lengths_m[i].second)) : "");
   }
   // The columns follow the models the scene asked for ('auto' may choose differently point by point).
   const auto optional_number = [](bool present, double value) { return present ? csv_number(value) : std::string(); };
   if (scene.force == ForceModel::liu_li || scene.force_auto) {
     const bool has = p.liu_li.has_value();
     const LiuLiResult l = p.liu_li.value_or(LiuLiResult{});
-    add_text("friction_closure", friction_closure_names()[static_cast<int>(scene.liu_li.closure)]);
-    add_text("lower_limit_rule", lower_limit_rule_names()[static_cast<int>(scene.liu_li.lower_limit)]);
+    add_text("friction_closure", std::string(friction_closure_name(scene.liu_li.closure)));
+    add_text("lower_limit_rule", std::string(lower_limit_rule_name(scene.liu_li.lower_limit)));
     row.emplace_back("lower_limit_deg", optional_number(has, units::rad_to_deg(l.lower_limit_rad)));
     row.emplace_back("upper_limit_deg", optional_number(has, units::rad_to_deg(l.upper_limit_rad)));
     row.emplace_back("stagnation_angle_deg", optional_number(has, units::rad_to_deg(l.stagnation_angle_rad)));
@@ -235,6 +332,7 @@ std::vector<std::pair<std::string, std::string>> prediction_columns(const Analyt
     row.emplace_back("interface_temperature_K", optional_number(has, o.interface_temperature_K));
     row.emplace_back("contact_length_oxley_mm", optional_number(has, units::m_to_mm(o.contact_length_m)));
     row.emplace_back("oxley_residual", optional_number(has, o.residual));
+    row.emplace_back("oxley_shear_angle_roots", optional_number(has, o.shear_angle_roots));
   }
   if (scene.turning) {
     add("feed_um_per_rev", units::m_to_um(scene.turning->geometry.feed_m_per_rev));

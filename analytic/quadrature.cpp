@@ -1,5 +1,6 @@
 #include "kerf/analytic/quadrature.hpp"
 
+#include <fmt/format.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_integration.h>
 
@@ -9,13 +10,42 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <optional>
+
+#include "kerf/error.hpp"
 
 namespace kerf {
 
-std::string_view quadrature_rule_name(QuadratureRule rule) { return quadrature_rule_names()[static_cast<int>(rule)]; }
+namespace {
+// Each scene name with the rule it constructs: the order of the lines changes nothing.
+struct RuleName {
+  std::string_view name;
+  QuadratureRule rule;
+};
+constexpr RuleName kRuleNames[] = {{"gauss_kronrod", QuadratureRule::gauss_kronrod},
+                                   {"tanh_sinh", QuadratureRule::tanh_sinh},
+                                   {"gsl_qag", QuadratureRule::gsl_qag},
+                                   {"gauss_legendre", QuadratureRule::gauss_legendre}};
+}  // namespace
+
+std::string_view quadrature_rule_name(QuadratureRule rule) {
+  for (const auto& entry : kRuleNames)
+    if (entry.rule == rule) return entry.name;
+  return "";
+}
+
+std::optional<QuadratureRule> quadrature_rule_from_name(std::string_view name) {
+  for (const auto& entry : kRuleNames)
+    if (entry.name == name) return entry.rule;
+  return std::nullopt;
+}
 
 const std::vector<std::string>& quadrature_rule_names() {
-  static const std::vector<std::string> names = {"gauss_kronrod", "tanh_sinh", "gsl_qag", "gauss_legendre"};
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> out;
+    for (const auto& entry : kRuleNames) out.emplace_back(entry.name);
+    return out;
+  }();
   return names;
 }
 
@@ -40,8 +70,15 @@ QuadratureResult integrate_gsl(const Integrand& f, double a, double b, const Qua
   function.function = [](double x, void* params) { return (*static_cast<const Integrand*>(params))(x); };
   function.params = const_cast<Integrand*>(&f);
   QuadratureResult out;
-  gsl_integration_qag(&function, a, b, 0.0, settings.relative_tolerance, limit, GSL_INTEG_GAUSS21,
-                      workspace.ptr.get(), &out.value, &out.error_estimate);
+  const int status = gsl_integration_qag(&function, a, b, 0.0, settings.relative_tolerance, limit, GSL_INTEG_GAUSS21,
+                                         workspace.ptr.get(), &out.value, &out.error_estimate);
+  if (status != GSL_SUCCESS) {
+    // The tolerance was not reached (subdivision limit, roundoff, a bad integrand): the value is not trusted.
+    throw ModelError("quadrature", fmt::format("GSL QAG on [{:.6g}, {:.6g}] failed: {} (status {}, value {:.6g}, error "
+                                               "estimate {:.3g}); loosen models.quadrature.tolerance or use another "
+                                               "rule",
+                                               a, b, gsl_strerror(status), status, out.value, out.error_estimate));
+  }
   return out;
 }
 

@@ -2,17 +2,27 @@
 
 #include <map>
 
+#include "kerf/analytic/scene.hpp"
+
 namespace kerf {
+
+namespace {
+template <class Enum>
+constexpr int id(Enum value) {
+  return static_cast<int>(value);
+}
+}  // namespace
 
 const std::vector<AnalyticModelInfo>& analytic_models() {
   static const std::vector<AnalyticModelInfo> models = {
-      // kind, name, summary, needs
+      // kind, name, summary, needs, the enum value the name constructs (none: handled by name)
       {"force", "auto", "the cheapest valid force model: oxley without friction data, merchant for a sharp edge "
                         "(r < 5 % of t0), else liu_li", "as the chosen model"},
-      {"force", "merchant", "sharp-tool Merchant force circle", "flow stress, friction, shear angle"},
-      {"force", "liu_li", "Liu-Li edge-radius model, seed 001 Eqs. 1-3", "flow stress, friction, shear angle or chip ratio"},
+      {"force", "merchant", "sharp-tool Merchant force circle", "flow stress, friction, shear angle", id(ForceModel::merchant)},
+      {"force", "liu_li", "Liu-Li edge-radius model, seed 001 Eqs. 1-3", "flow stress, friction, shear angle or chip ratio",
+       id(ForceModel::liu_li)},
       {"force", "oxley", "extended Oxley theory with Johnson-Cook (Lalwani et al. 2009), sharp tool",
-       "material johnson_cook, thermal and oxley groups"},
+       "material johnson_cook, thermal and oxley groups", id(ForceModel::oxley)},
       {"force", "trepanning", "fixed-abrasive trepanning drill, axial force and torque (seed 002 Eqs. 21-22; brittle "
                               "regime)", "tool outer/inner diameter, cut feed rate and spindle speed, the two lumped "
                               "groups or hardness, half angle and friction"},
@@ -20,21 +30,33 @@ const std::vector<AnalyticModelInfo>& analytic_models() {
       {"flow_stress", "hall_petch", "Hall-Petch with K_HP from seed 001 Eqs. 10-11", "material microstructure and elastic groups"},
       {"flow_stress", "dislocation", "incidental-boundary strengthening, seed 001 Eqs. 4-6", "material microstructure and elastic groups"},
       {"deformation", "room_temperature", "T = workpiece temperature, shear-plane strain of the shear angle, "
-                                          "Oxley's strain-rate estimate with C0 = 5 unless cut.strain_rate_per_s is given", ""},
-      {"deformation", "given", "cut.strain, cut.strain_rate_per_s and cut.temperature_K as given", "those keys"},
+                                          "Oxley's strain-rate estimate with C0 = 5 unless cut.strain_rate_per_s is given", "",
+       id(DeformationModel::room_temperature)},
+      {"deformation", "given", "cut.strain, cut.strain_rate_per_s and cut.temperature_K as given", "those keys",
+       id(DeformationModel::given)},
       {"deformation", "oxley", "zone AB strain, strain rate and temperature of an extended Oxley solve",
-       "material johnson_cook, thermal and oxley groups"},
-      {"shear_angle", "merchant", "minimum energy (MEP), seed 003 Eq. 4", "friction"},
-      {"shear_angle", "lee_shaffer", "maximum shear stress (MSSP), seed 003 Eq. 4", "friction"},
-      {"shear_angle", "chip_ratio", "from a measured chip ratio, seed 001 Eq. 3", "cut.chip_ratio"},
-      {"friction_closure", "constant", "beta_k = beta along the edge (has a pole: ploughing below it)", "friction"},
-      {"friction_closure", "merchant", "2 phi_k + beta_k - gamma_k = pi/2 along the edge", ""},
-      {"friction_closure", "lee_shaffer", "phi_k + beta_k - gamma_k = pi/4 along the edge", ""},
-      {"lower_limit", "stagnation", "integrate from the stagnation point -(pi/4 + beta/2) (Son, Lim & Ahn 2005)", "friction"},
-      {"lower_limit", "pole", "integrate from just above the pole (or -pi/2)", "models.lower_limit_margin_deg"},
-      {"contact_length", "altintas", "Altintas, seed 003 Eq. 1 (suffix _mep or _mssp picks the shear angle)", "friction"},
-      {"contact_length", "vinogradov", "Vinogradov, seed 003 Eq. 2 (suffix _mep or _mssp)", "friction"},
-      {"contact_length", "lee_shaffer", "Lee and Shaffer, seed 003 Eq. 3 (suffix _mep or _mssp)", "friction"},
+       "material johnson_cook, thermal and oxley groups", id(DeformationModel::oxley)},
+      {"shear_angle", "merchant", "minimum energy (MEP), seed 003 Eq. 4", "friction", id(ShearAngleSource::merchant)},
+      {"shear_angle", "lee_shaffer", "maximum shear stress (MSSP), seed 003 Eq. 4", "friction",
+       id(ShearAngleSource::lee_shaffer)},
+      {"shear_angle", "chip_ratio", "from a measured chip ratio, seed 001 Eq. 3", "cut.chip_ratio",
+       id(ShearAngleSource::chip_ratio)},
+      {"friction_closure", "constant", "beta_k = beta along the edge (has a pole: ploughing below it)", "friction",
+       id(FrictionClosure::constant)},
+      {"friction_closure", "merchant", "2 phi_k + beta_k - gamma_k = pi/2 along the edge", "",
+       id(FrictionClosure::merchant)},
+      {"friction_closure", "lee_shaffer", "phi_k + beta_k - gamma_k = pi/4 along the edge", "",
+       id(FrictionClosure::lee_shaffer)},
+      {"lower_limit", "stagnation", "integrate from the stagnation point -(pi/4 + beta/2) (Son, Lim & Ahn 2005)", "friction",
+       id(LowerLimitRule::stagnation)},
+      {"lower_limit", "pole", "integrate from just above the pole (or -pi/2)", "models.lower_limit_margin_deg",
+       id(LowerLimitRule::pole)},
+      {"contact_length", "altintas", "Altintas, seed 003 Eq. 1 (suffix _mep or _mssp picks the shear angle)", "friction",
+       id(ContactLengthModel::altintas)},
+      {"contact_length", "vinogradov", "Vinogradov, seed 003 Eq. 2 (suffix _mep or _mssp)", "friction",
+       id(ContactLengthModel::vinogradov)},
+      {"contact_length", "lee_shaffer", "Lee and Shaffer, seed 003 Eq. 3 (suffix _mep or _mssp)", "friction",
+       id(ContactLengthModel::lee_shaffer)},
   };
   return models;
 }
@@ -48,6 +70,14 @@ const std::vector<std::string>& analytic_model_names(std::string_view kind) {
   static const std::vector<std::string> none;
   const auto it = by_kind.find(kind);
   return it == by_kind.end() ? none : it->second;
+}
+
+std::optional<int> registered_id(const std::vector<AnalyticModelInfo>& registry, std::string_view kind,
+                                 std::string_view name) {
+  for (const auto& m : registry) {
+    if (m.kind == kind && m.name == name) return m.id >= 0 ? std::optional<int>(m.id) : std::nullopt;
+  }
+  return std::nullopt;
 }
 
 }  // namespace kerf

@@ -33,14 +33,6 @@ const MaterialRecord& MaterialCache::get(const Json& spec, const std::string& pa
 
 namespace {
 
-
-template <typename Enum>
-Enum choice_index(const std::string& name, const std::vector<std::string>& names) {
-  for (std::size_t i = 0; i < names.size(); ++i)
-    if (names[i] == name) return static_cast<Enum>(i);
-  return static_cast<Enum>(0);
-}
-
 std::vector<std::string> read_name_list(ObjectReader& reader, const std::string& key,
                                         const std::vector<std::string>& valid, std::vector<std::string> fallback) {
   const Json* value = reader.find(key);
@@ -80,7 +72,7 @@ std::vector<ContactLengthRequest> parse_contact_lengths(ObjectReader& models) {
         angle = s.substr(1);
       }
     }
-    request.model = choice_index<ContactLengthModel>(model_name, base);
+    request.model = registered_model<ContactLengthModel>("contact_length", model_name);
     request.shear_angle = angle == "mep" ? ShearAngleModel::merchant : ShearAngleModel::lee_shaffer;
     request.column = fmt::format("contact_length_{}_mm", name);
     for (const auto& existing : out) {
@@ -188,13 +180,13 @@ AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
       models.get_choice_or("deformation", "room_temperature", analytic_model_names("deformation"));
   const std::string shear_name = models.get_choice_or(
       "shear_angle", scene.chip_ratio ? "chip_ratio" : "merchant", analytic_model_names("shear_angle"));
-  const std::string closure_name = models.get_choice_or("friction_closure", "merchant", friction_closure_names());
-  const std::string lower_name = models.get_choice_or("lower_limit", "stagnation", lower_limit_rule_names());
+  const std::string closure_name = models.get_choice_or("friction_closure", "merchant", analytic_model_names("friction_closure"));
+  const std::string lower_name = models.get_choice_or("lower_limit", "stagnation", analytic_model_names("lower_limit"));
   scene.liu_li.lower_limit_margin_rad =
       units::deg_to_rad(models.get_number_or("lower_limit_margin_deg", 1.0, Range::open(0.0, 45.0), "deg"));
   if (auto quadrature = models.find_object("quadrature")) {
-    scene.liu_li.quadrature.rule = choice_index<QuadratureRule>(
-        quadrature->get_choice_or("rule", "gauss_kronrod", quadrature_rule_names()), quadrature_rule_names());
+    scene.liu_li.quadrature.rule =
+        *quadrature_rule_from_name(quadrature->get_choice_or("rule", "gauss_kronrod", quadrature_rule_names()));
     scene.liu_li.quadrature.relative_tolerance =
         quadrature->get_number_or("tolerance", 1e-8, Range::open(0.0, 1.0), "(relative)");
     scene.liu_li.quadrature.max_depth = quadrature->get_int_or("max_depth", 15, 1, 20);
@@ -213,10 +205,10 @@ AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
   }
   models.finish();
 
-  scene.shear_angle = choice_index<ShearAngleSource>(shear_name, analytic_model_names("shear_angle"));
-  scene.liu_li.closure = choice_index<FrictionClosure>(closure_name, friction_closure_names());
-  scene.liu_li.lower_limit = choice_index<LowerLimitRule>(lower_name, lower_limit_rule_names());
-  scene.deformation = choice_index<DeformationModel>(deformation_name, analytic_model_names("deformation"));
+  scene.shear_angle = registered_model<ShearAngleSource>("shear_angle", shear_name);
+  scene.liu_li.closure = registered_model<FrictionClosure>("friction_closure", closure_name);
+  scene.liu_li.lower_limit = registered_model<LowerLimitRule>("lower_limit", lower_name);
+  scene.deformation = registered_model<DeformationModel>("deformation", deformation_name);
 
   // The round-nose chip gives thickness and width (width = chip area / thickness).
   if (scene.turning) {
@@ -241,18 +233,15 @@ AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
       scene.force_choice_reason = "edge radius at least 5 % of the uncut chip thickness: edge-radius model";
     }
   } else {
-    scene.force = force_name == "merchant" ? ForceModel::merchant
-                  : force_name == "oxley"  ? ForceModel::oxley
-                                           : ForceModel::liu_li;
+    scene.force = registered_model<ForceModel>("force", force_name);
   }
 
-  // Friction is needed by every model except oxley (unless the chip ratio and a closure without beta suffice).
+  // Friction is needed by every model except oxley, unless the chip ratio gives the shear angle and a closure
+  // other than the constant one gives beta (which then also sets the stagnation angle and contact lengths).
   const bool needs_friction =
       scene.force != ForceModel::oxley &&
-      (scene.shear_angle != ShearAngleSource::chip_ratio || scene.liu_li.closure == FrictionClosure::constant ||
-       scene.liu_li.lower_limit == LowerLimitRule::stagnation || scene.force == ForceModel::merchant);
-  const bool contact_needs_friction = !scene.contact_lengths.empty() && scene.force != ForceModel::oxley;
-  if ((needs_friction || contact_needs_friction) && !scene.friction_angle_rad) {
+      (scene.shear_angle != ShearAngleSource::chip_ratio || scene.liu_li.closure == FrictionClosure::constant);
+  if (needs_friction && !scene.friction_angle_rad) {
     throw InputError("cut.friction_angle_deg", "(missing)",
                      "a friction angle (or cut.friction_coefficient, or measured.cutting_force_N and "
                      "thrust_force_N) for this choice of models");
@@ -286,6 +275,10 @@ AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
   scene.workpiece_temperature_K = workpiece_temperature.value_or(room_K);
   if (const Json* jc_group = scene.material.group("johnson_cook"); jc_group && jc_group->contains("melting_temperature_K")) {
     scene.flow_stress.melting_temperature_K = jc_group->at("melting_temperature_K").get<double>();
+    // The microstructural terms soften with the material's Johnson-Cook thermal factor (flow_stress.hpp).
+    if (!scene.flow_stress.johnson_cook && (has_term("hall_petch") || has_term("dislocation")) && jc_group->contains("m")) {
+      scene.flow_stress.thermal_softening = johnson_cook ? *johnson_cook : johnson_cook_from_material(scene.material, "material");
+    }
   }
   scene.flow_stress.validate("models.flow_stress");
 

@@ -73,6 +73,19 @@ ImpliedTrepanningMaterial implied_trepanning_material(const TrepanningGroups& gr
   return m;
 }
 
+void check_feed_plausible(const TrepanningTool& tool, const TrepanningCut& cut) {
+  // Plausibility: the abrasive face cannot advance by more than its own wall width (D - d) / 2 per turn; the
+  // model's grits would then cut far deeper than any grit protrudes (docs/models.md, plausibility guards).
+  const double wall_m = 0.5 * (tool.outer_diameter_m - tool.inner_diameter_m);
+  if (cut.feed_per_rev_m() > wall_m) {
+    throw InputError("cut.feed_rate_um_per_s", format_value(units::m_to_um(cut.feed_rate_m_per_s)),
+                     fmt::format("a feed per revolution below the cutter's wall width (D - d)/2 = {:.6g} um; it gives "
+                                 "{:.6g} um/rev at {:.6g} rpm",
+                                 units::m_to_um(wall_m), units::m_to_um(cut.feed_per_rev_m()),
+                                 cut.spindle_speed_rev_per_s * 60.0));
+  }
+}
+
 TrepanningForces trepanning_forces(const TrepanningTool& tool, const TrepanningCut& cut, const TrepanningGroups& groups) {
   tool.validate("tool");
   cut.validate("cut");

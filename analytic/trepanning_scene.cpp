@@ -22,6 +22,7 @@ TrepanningScene parse_trepanning_scene(const Json& document) {
                                              cut.get_number("spindle_speed_rpm", Range::positive(), "rev/min"));
   cut.finish();
   scene.cut.validate("cut");
+  check_feed_plausible(scene.tool, scene.cut);
 
   ObjectReader models = root.get_object("models");
   models.get_choice("force", {"trepanning"});

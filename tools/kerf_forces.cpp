@@ -14,6 +14,7 @@
 #include <omp.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <optional>
@@ -68,8 +69,13 @@ void print_prediction(const std::string& scene_path, const kerf::AnalyticScene& 
   fmt::print("thrust force      {:.6g} N  ({:.6g} N/mm)\n", p.thrust_force_N, p.thrust_force_N / width_mm);
   fmt::print("shear angle       {:.4g} deg\n", rad_to_deg(p.shear_angle_rad));
   if (p.has_friction) {
+    const bool from_scene = scene.friction_angle_rad && p.force_model != kerf::ForceModel::oxley &&
+                            std::fabs(*scene.friction_angle_rad - p.friction_angle_rad) <= 1e-9;
     fmt::print("friction angle    {:.4g} deg (from {})\n", rad_to_deg(p.friction_angle_rad),
-               scene.friction_origin.empty() ? "the extended-Oxley solution" : scene.friction_origin);
+               p.force_model == kerf::ForceModel::oxley ? "the extended-Oxley solution"
+               : from_scene                              ? scene.friction_origin
+                                                         : fmt::format("the {} friction closure at the nominal rake",
+                                                                       kerf::friction_closure_name(scene.liu_li.closure)));
   }
   fmt::print("chip ratio        {:.4g} (chip thickness {:.6g} um)\n", p.chip_ratio, m_to_um(p.chip_thickness_m));
   fmt::print("flow stress       {:.6g} MPa (JC {:.6g} + Hall-Petch {:.6g} + dislocation {:.6g}); k_s = {:.6g} MPa\n",
@@ -82,7 +88,9 @@ void print_prediction(const std::string& scene_path, const kerf::AnalyticScene& 
                kerf::units::m_to_nm(*scene.critical_depth_m));
   }
   for (const auto& [column, length_m] : p.contact_lengths_m) {
-    fmt::print("{:<17} {:.6g} mm\n", column.substr(0, column.size() - 3), m_to_mm(length_m));
+    const std::string name = column.substr(0, column.size() - 3);
+    if (length_m) fmt::print("{:<17} {:.6g} mm\n", name, m_to_mm(*length_m));
+    if (!length_m) fmt::print("{:<17} not applicable (see the warnings)\n", name);
   }
   if (p.liu_li) {
     const auto& l = *p.liu_li;
@@ -343,6 +351,38 @@ int run_sweep(const std::string& scene_path, const std::vector<std::string>& ove
   kerf::write_file_atomically(csv, text);
   fmt::print(stderr, "kerf-forces: {} points written to {} ({} refused with an error, see the 'error' column)\n",
              n_points, csv, n_failed);
+
+  // A force that falls as the chip thickens is a model that switched branch or left its domain (issue 22): say
+  // so, with the first place it happens, for each force column along a varied uncut chip thickness.
+  for (std::size_t a = 0; a < axes.size(); ++a) {
+    if (axes[a].path != "cut.uncut_chip_thickness_um") continue;
+    std::size_t stride = 1;
+    for (std::size_t b = a + 1; b < axes.size(); ++b) stride *= axes[b].values.size();
+    const std::size_t n_h = axes[a].values.size();
+    for (const char* force : {"cutting_force_N", "thrust_force_N"}) {
+      const auto column = std::find(names.begin(), names.end(), force);
+      if (column == names.end()) continue;
+      const auto c = static_cast<std::size_t>(column - names.begin());
+      std::vector<std::optional<double>> values(n_points);
+      for (std::size_t i = 0; i < n_points; ++i) {
+        if (rows[i].error.empty()) values[i] = std::stod(rows[i].values[c]);
+      }
+      const std::vector<std::size_t> falls = kerf::falling_points(values, stride, n_h);
+      const std::size_t n_falls = falls.size();
+      std::string first;
+      if (!falls.empty()) {
+        const std::size_t i = falls.front(), j = i - stride;
+        first = fmt::format("{:.6g} N at {:.6g} um to {:.6g} N at {:.6g} um", *values[j], coordinates(j)[a], *values[i],
+                            coordinates(i)[a]);
+      }
+      if (n_falls > 0) {
+        fmt::print(stderr,
+                   "kerf-forces: warning: {} falls as cut.uncut_chip_thickness_um grows at {} point(s), first from {}: "
+                   "the model may have changed branch or left its domain there\n",
+                   force, n_falls, first);
+      }
+    }
+  }
   return 0;
 }
 

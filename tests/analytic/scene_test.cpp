@@ -2,12 +2,18 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <limits>
+#include <map>
+#include <numbers>
 
 #include "kerf/analytic/predict.hpp"
 #include "kerf/error.hpp"
+#include "kerf/io.hpp"
+#include "kerf/json_reader.hpp"
 #include "kerf/units.hpp"
 
 using Catch::Matchers::Contains;
+using Catch::Matchers::WithinAbs;
 using Catch::Matchers::WithinRel;
 using kerf::Json;
 
@@ -198,14 +204,246 @@ TEST_CASE("Oxley refuses microstructure terms it cannot use", "[scene][oxley]") 
 }
 
 TEST_CASE("Oxley deformation works when the force model's flow stress leaves Johnson-Cook out", "[scene][oxley]") {
-  auto doc = orthogonal_scene();
-  doc["models"]["deformation"] = "oxley";
-  doc["models"]["flow_stress"] = Json::array({"hall_petch"});
+  // AISI 1045 at the reference cut of Pantale et al. (Oxley solves there), with an (illustrative) microstructure
+  // group so that the force model can use the Hall-Petch term alone.
+  Json doc = Json::parse(R"({
+    "tool": {"rake_deg": -7},
+    "cut": {"uncut_chip_thickness_um": 150, "width_mm": 1.6, "speed_m_per_min": 200, "friction_coefficient": 0.3},
+    "models": {"force": "liu_li", "deformation": "oxley", "flow_stress": ["hall_petch"]}
+  })");
+  doc["material"] = kerf::read_json_file(std::string(KERF_SOURCE_DIR) + "/data/materials/aisi_1045.json");
+  doc["material"]["microstructure"] = {{"grain_size_um", 20.0}, {"burgers_vector_nm", 0.248},
+                                       {"misorientation_deg", 2.0}};
   const auto scene = kerf::parse_analytic_scene(doc);
   CHECK_FALSE(scene.flow_stress.johnson_cook.has_value());
   REQUIRE(scene.oxley.has_value());
-  CHECK_THAT(scene.oxley->johnson_cook.A_Pa, WithinRel(8000e6, 1e-12));  // p-SiC's (assumed) Johnson-Cook A
+  CHECK_THAT(scene.oxley->johnson_cook.A_Pa, WithinRel(553.1e6, 1e-12));  // AISI 1045's Johnson-Cook A
   const auto p = kerf::predict(scene);
   CHECK(p.flow.johnson_cook_Pa == 0.0);
   CHECK(p.flow.total_Pa == p.flow.hall_petch_Pa);
+  CHECK(p.state.temperature_K > 298.15);  // zone AB's temperature, which softens the Hall-Petch term
+}
+
+// ---- Issue 22: the analytic models at their edges ---------------------------------------------------------
+
+namespace {
+Json a2024_scene() {
+  return Json::parse(R"({
+    "material": "a2024_t351",
+    "tool": {"rake_deg": 15, "edge_radius_um": 0},
+    "cut": {"uncut_chip_thickness_um": 3, "width_mm": 2, "speed_m_per_min": 10, "friction_angle_deg": 20,
+            "chip_ratio": 0.5},
+    "models": {"force": "liu_li", "flow_stress": ["johnson_cook"]}
+  })");
+}
+// Merchant's force circle (seed 003; physics-analytic.md section 2) at the prediction's own phi and beta.
+double merchant_cutting_force(const kerf::Prediction& p, double rake_rad) {
+  const double phi = p.shear_angle_rad, beta = p.friction_angle_rad;
+  return p.flow.shear_Pa * p.uncut_chip_thickness_m * p.width_m * std::cos(beta - rake_rad) /
+         (std::sin(phi) * std::cos(phi + beta - rake_rad));
+}
+}  // namespace
+
+TEST_CASE("One friction angle: Liu-Li's r -> 0 limit is Merchant on the same scene for every closure and rule",
+          "[scene][liu_li][issue22]") {
+  const double rake = kerf::units::deg_to_rad(15.0);
+  for (const char* closure : {"constant", "merchant", "lee_shaffer"}) {
+    for (const char* rule : {"merchant", "lee_shaffer", "chip_ratio"}) {
+      for (const char* lower : {"stagnation", "pole"}) {
+        CAPTURE(closure, rule, lower);
+        Json doc = a2024_scene();
+        doc["models"]["friction_closure"] = closure;
+        doc["models"]["shear_angle"] = rule;
+        doc["models"]["lower_limit"] = lower;
+        doc["tool"]["edge_radius_um"] = 1e-8;  // 0.01 pm: the edge part is O(r / t0)
+        const auto liu_li = kerf::predict(kerf::parse_analytic_scene(doc));
+        doc["models"]["force"] = "merchant";
+        doc["tool"]["edge_radius_um"] = 0.0;
+        const auto merchant = kerf::predict(kerf::parse_analytic_scene(doc));
+        CHECK_THAT(liu_li.friction_angle_rad, WithinRel(merchant.friction_angle_rad, 1e-14));
+        CHECK_THAT(liu_li.cutting_force_N, WithinRel(merchant.cutting_force_N, 1e-5));
+        CHECK_THAT(liu_li.thrust_force_N, WithinRel(merchant.thrust_force_N, 1e-5));
+        CHECK_THAT(merchant.cutting_force_N, WithinRel(merchant_cutting_force(merchant, rake), 1e-12));
+        // The thrust/cutting ratio is tan(beta - a) with the printed beta: the forces and the printed value agree.
+        CHECK_THAT(merchant.thrust_force_N / merchant.cutting_force_N,
+                   WithinRel(std::tan(merchant.friction_angle_rad - rake), 1e-12));
+        // The stagnation angle uses the same beta.
+        REQUIRE(liu_li.liu_li.has_value());
+        CHECK_THAT(liu_li.liu_li->stagnation_angle_rad,
+                   WithinRel(-(std::numbers::pi / 4.0 + liu_li.friction_angle_rad / 2.0), 1e-14));
+      }
+    }
+  }
+}
+
+TEST_CASE("Issue 22 reproducer 1: a measured chip ratio with the Merchant closure sets beta everywhere",
+          "[scene][issue22]") {
+  // r = 0, rake 15 deg, t0 = 3 um, r_c = 0.5, scene beta 20 deg: the closure gives beta = 90 + a - 2 phi.
+  Json doc = a2024_scene();
+  doc["models"]["shear_angle"] = "chip_ratio";
+  doc["models"]["contact_length"] = Json::array({"altintas_mep"});
+  const auto p = kerf::predict(kerf::parse_analytic_scene(doc));
+  const double phi = std::atan2(0.5 * std::cos(kerf::units::deg_to_rad(15.0)),
+                                1.0 - 0.5 * std::sin(kerf::units::deg_to_rad(15.0)));  // seed 001 Eq. 3
+  const double beta = std::numbers::pi / 2.0 + kerf::units::deg_to_rad(15.0) - 2.0 * phi;
+  CHECK_THAT(kerf::units::rad_to_deg(p.friction_angle_rad), WithinAbs(46.96, 0.01));  // the issue's 46.96 deg
+  CHECK_THAT(p.friction_angle_rad, WithinRel(beta, 1e-12));
+  CHECK_THAT(p.thrust_force_N / p.cutting_force_N, WithinRel(std::tan(beta - kerf::units::deg_to_rad(15.0)), 1e-12));
+  // The contact length uses it too: Altintas (seed 003 Eq. 1) with the MEP shear angle of beta.
+  const double a = kerf::units::deg_to_rad(15.0), phi_mep = std::numbers::pi / 4.0 - (beta - a) / 2.0;
+  REQUIRE(p.contact_lengths_m.size() == 1);
+  CHECK_THAT(*p.contact_lengths_m[0].second,
+             WithinRel(3e-6 * std::sin(phi_mep + beta - a) / (std::sin(phi_mep) * std::cos(beta)), 1e-12));
+  bool warned = false;
+  for (const auto& w : p.warnings) warned = warned || w.find("not the scene's 20 deg") != std::string::npos;
+  CHECK(warned);
+}
+
+TEST_CASE("The stagnation cut-off holds for the whole tool: a rake face below it ploughs", "[scene][liu_li][issue22]") {
+  // Issue 22 reproducer 2: rake -60 deg, below the -55 deg stagnation angle of beta = 20 deg.
+  Json doc = a2024_scene();
+  doc["cut"].erase("chip_ratio");
+  doc["models"]["shear_angle"] = "merchant";
+  doc["models"]["friction_closure"] = "constant";
+  doc["tool"]["rake_deg"] = -60.0;
+  for (double radius_um : {0.0, 35.0}) {
+    for (const char* force : {"liu_li", "merchant"}) {
+      CAPTURE(radius_um, force);
+      doc["tool"]["edge_radius_um"] = radius_um;
+      doc["models"]["force"] = force;
+      const auto p = kerf::predict(kerf::parse_analytic_scene(doc));
+      CHECK(p.cutting_force_N == 0.0);
+      CHECK(p.thrust_force_N == 0.0);
+      CHECK(p.guards.has(kerf::Guard::no_chip_on_rake_face));
+      if (p.liu_li) CHECK(p.liu_li->ploughed_thickness_m == 3e-6);
+    }
+  }
+  // Across the stagnation angle (-55 deg): the edge part closes continuously (its range [g_s, a] shrinks to
+  // nothing); the straight rake face switches off at once, the model's criterion being a switch (docs/models.md).
+  doc["models"]["force"] = "liu_li";
+  doc["tool"]["edge_radius_um"] = 10.0;
+  doc["cut"]["uncut_chip_thickness_um"] = 5.0;
+  double previous_edge = -1.0;
+  for (double rake_deg = -54.0; rake_deg >= -56.0; rake_deg -= 0.05) {
+    CAPTURE(rake_deg);
+    doc["tool"]["rake_deg"] = rake_deg;
+    const auto p = kerf::predict(kerf::parse_analytic_scene(doc));
+    REQUIRE(p.liu_li.has_value());
+    const double edge = p.liu_li->edge.cutting_N_per_m * p.width_m;
+    if (previous_edge >= 0.0) CHECK(std::fabs(edge - previous_edge) < 0.01 * p.liu_li->rake_face.cutting_N_per_m * 2e-3 + 1e-3);
+    previous_edge = edge;
+    CHECK((p.liu_li->rake_face.cutting_N_per_m > 0.0) == (rake_deg > -55.0));
+  }
+  CHECK(previous_edge == 0.0);
+}
+
+TEST_CASE("A contact-length variant outside its domain is not applicable; the rest goes on", "[scene][issue22]") {
+  // Issue 22 reproducer 4: a2024_planing at rake -60 deg: the MSSP shear angle is -26.3 deg.
+  Json doc = kerf::read_json_file(std::string(KERF_SOURCE_DIR) + "/data/scenes/a2024_planing.json");
+  doc["tool"]["rake_deg"] = -60.0;
+  const auto scene = kerf::parse_analytic_scene(doc);
+  const auto p = kerf::predict(scene);
+  CHECK(p.guards.has(kerf::Guard::contact_length_not_applicable));
+  std::map<std::string, std::string> row;
+  for (const auto& [name, value] : kerf::prediction_columns(scene, p)) row[name] = value;
+  CHECK(row["contact_length_altintas_mssp_mm"].empty());
+  CHECK(row["contact_length_lee_shaffer_mssp_mm"].empty());
+  CHECK_FALSE(row["contact_length_altintas_mep_mm"].empty());
+  CHECK_THAT(row["guards"], Contains("contact_length_not_applicable"));
+  CHECK_THAT(row["warnings"], Contains("shear angle -26.31 deg outside (0, 90) deg"));
+}
+
+TEST_CASE("Plausibility: a closure implying a negative friction angle is refused", "[scene][issue22]") {
+  // Issue 22: chip ratio 3 at rake <= 0 gave a negative thrust (beta = 90 + a - 2 phi < 0).
+  Json doc = a2024_scene();
+  doc["cut"]["chip_ratio"] = 3.0;
+  doc["tool"]["rake_deg"] = 0.0;
+  doc["models"]["shear_angle"] = "chip_ratio";
+  const auto scene = kerf::parse_analytic_scene(doc);
+  CHECK_THROWS_WITH(kerf::predict(scene),
+                    Contains("cut.chip_ratio = 3: expected a shear angle and friction closure giving a friction angle >= 0"));
+}
+
+TEST_CASE("Plausibility: rake -89.9 deg cuts no chip instead of a 1000-fold thrust", "[scene][issue22]") {
+  Json doc = a2024_scene();  // chip ratio 0.5 with the Merchant closure: beta = 0.03 deg at this rake
+  doc["models"]["shear_angle"] = "chip_ratio";
+  doc["tool"]["rake_deg"] = -89.9;
+  for (const char* lower : {"stagnation", "pole"}) {
+    doc["models"]["lower_limit"] = lower;
+    const auto p = kerf::predict(kerf::parse_analytic_scene(doc));
+    CHECK(p.thrust_force_N == 0.0);
+    CHECK(p.guards.has(kerf::Guard::no_chip_on_rake_face));
+  }
+}
+
+TEST_CASE("The A2024 contact-length validity warning fires only for A2024", "[scene][issue22]") {
+  Json doc = a2024_scene();
+  doc["cut"]["uncut_chip_thickness_um"] = 150.0;
+  doc["models"]["contact_length"] = Json::array({"altintas_mep"});
+  const auto has_warning = [](const kerf::Prediction& p) {
+    for (const auto& w : p.warnings)
+      if (w.find("validated up to h = 0.1 mm") != std::string::npos) return true;
+    return false;
+  };
+  CHECK(has_warning(kerf::predict(kerf::parse_analytic_scene(doc))));
+  doc["material"] = "aisi_1045";
+  CHECK_FALSE(has_warning(kerf::predict(kerf::parse_analytic_scene(doc))));
+}
+
+TEST_CASE("The force falls continuously to zero at the melting temperature", "[scene][flow_stress][issue22]") {
+  // Issue 22: p-SiC's force jumped from 0.432 N at 3002.9 K to 0 N at 3003 K (microstructural terms unsoftened).
+  Json doc = orthogonal_scene();
+  doc["models"]["deformation"] = "given";
+  doc["cut"]["strain"] = 1.0;
+  doc["cut"]["strain_rate_per_s"] = 1e6;
+  double previous = std::numeric_limits<double>::infinity();
+  const auto force_at = [&](double temperature_K) {
+    doc["cut"]["temperature_K"] = temperature_K;
+    return kerf::predict(kerf::parse_analytic_scene(doc)).cutting_force_N;
+  };
+  const double room = force_at(293.15);
+  for (double temperature_K : {293.15, 1000.0, 2000.0, 2900.0, 3000.0, 3002.9, 3002.999}) {
+    const double f = force_at(temperature_K);
+    CHECK(f <= previous);
+    previous = f;
+  }
+  CHECK(force_at(3002.9) < 1e-4 * room);  // continuous with the molten 0 N
+  CHECK(force_at(3003.0) == 0.0);
+}
+
+TEST_CASE("Oxley mode reports its own friction angle and the contact lengths from it", "[scene][oxley][issue22]") {
+  Json doc = kerf::read_json_file(std::string(KERF_SOURCE_DIR) + "/data/scenes/aisi1045_oxley.json");
+  doc["cut"]["friction_angle_deg"] = 5.0;  // ignored by Oxley, which predicts lambda
+  const auto p = kerf::predict(kerf::parse_analytic_scene(doc));
+  REQUIRE(p.oxley.has_value());
+  // lambda = theta + a - phi, and F_t / F_c = tan(lambda - a) (Oxley's force circle, O 6).
+  const double a = kerf::units::deg_to_rad(-7.0);
+  CHECK_THAT(p.thrust_force_N / p.cutting_force_N, WithinRel(std::tan(p.friction_angle_rad - a), 1e-9));
+  const double phi_mep = std::numbers::pi / 4.0 - (p.friction_angle_rad - a) / 2.0;  // seed 003 Eq. 4
+  REQUIRE(p.contact_lengths_m.size() == 2);
+  CHECK_THAT(*p.contact_lengths_m[1].second,
+             WithinRel(150e-6 * std::sin(phi_mep + p.friction_angle_rad - a) /
+                           (std::sin(phi_mep) * std::cos(p.friction_angle_rad)),
+                       1e-12));  // altintas_mep, seed 003 Eq. 1
+}
+
+TEST_CASE("Oxley without a physical solution is a model failure naming why", "[scene][oxley][issue22]") {
+  // Issue 22 reproducer 3: AISI 1045 at rake -60 deg (F_t = -0.0035 N, temperature at melting, exit 0).
+  Json steel = kerf::read_json_file(std::string(KERF_SOURCE_DIR) + "/data/scenes/aisi1045_oxley.json");
+  steel["tool"]["rake_deg"] = -60.0;
+  CHECK_THROWS_WITH(kerf::predict(kerf::parse_analytic_scene(steel)), Contains("temperature at melting"));
+  // a2024_planing with Oxley, sharp: delta pinned at 0.2 from 200 um, phi at its 5 deg bound at 190 um.
+  Json doc = kerf::read_json_file(std::string(KERF_SOURCE_DIR) + "/data/scenes/a2024_planing.json");
+  doc["models"]["force"] = "oxley";
+  doc["tool"]["edge_radius_um"] = 0.0;
+  doc["cut"]["uncut_chip_thickness_um"] = 200.0;
+  CHECK_THROWS_AS(kerf::predict(kerf::parse_analytic_scene(doc)), kerf::ModelError);
+  CHECK_THROWS_WITH(kerf::predict(kerf::parse_analytic_scene(doc)), Contains("delta at its bound (0.2"));
+  doc["cut"]["uncut_chip_thickness_um"] = 190.0;
+  CHECK_THROWS_WITH(kerf::predict(kerf::parse_analytic_scene(doc)), Contains("phi at its bound (5 deg"));
+  // The reference cut solves, on one branch.
+  const auto p = kerf::predict(kerf::parse_analytic_scene(
+      kerf::read_json_file(std::string(KERF_SOURCE_DIR) + "/data/scenes/aisi1045_oxley.json")));
+  REQUIRE(p.oxley.has_value());
+  CHECK(p.oxley->shear_angle_roots == 1);
 }

@@ -241,3 +241,11 @@ TEST_CASE("Invalid trepanning input names the field", "[trepanning][errors]") {
   CHECK_THROWS_WITH(kerf::trepanning_forces({0.124, 0.132}, cut, k),
                     "tool.inner_diameter_mm = 132: expected a value in [0, 124) mm (at least 0 and below the outer diameter)");
 }
+
+TEST_CASE("Plausibility: a feed per revolution beyond the cutter's wall is refused", "[trepanning][issue22]") {
+  // Issue 22: a feed of 1e9 um/s gave 2.2e10 N.
+  CHECK_THROWS_WITH(kerf::check_feed_plausible(kPaperTool, kerf::TrepanningCut::from_user_units(1e9, 90.5)),
+                    Catch::Matchers::Contains("cut.feed_rate_um_per_s = 1e+09: expected a feed per revolution below "
+                                              "the cutter's wall width (D - d)/2 = 4000 um"));
+  CHECK_NOTHROW(kerf::check_feed_plausible(kPaperTool, kerf::TrepanningCut::from_user_units(20.0, 90.5)));
+}

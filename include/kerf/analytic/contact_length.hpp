@@ -11,6 +11,8 @@
 // above that breaks them.
 //
 //   double L_m = kerf::contact_length(kerf::ContactLengthModel::lee_shaffer, h_m, phi, beta, rake);
+#include <optional>
+#include <string>
 #include <string_view>
 
 namespace kerf {
@@ -19,7 +21,12 @@ enum class ContactLengthModel { altintas, vinogradov, lee_shaffer };
 
 std::string_view contact_length_model_name(ContactLengthModel model);
 
-/// Contact length in m; throws kerf::InputError when phi is outside (0, pi/2) or the denominator vanishes.
+/// Why a model is outside its domain at (phi, beta, a): phi outside (0, pi/2) or no finite positive length;
+/// nullopt inside it.
+std::optional<std::string> contact_length_outside_domain(ContactLengthModel model, double shear_angle_rad,
+                                                         double friction_angle_rad, double rake_rad);
+
+/// Contact length in m; throws kerf::InputError outside the domain (contact_length_outside_domain says why).
 double contact_length(ContactLengthModel model, double uncut_chip_thickness_m, double shear_angle_rad,
                       double friction_angle_rad, double rake_rad);
 

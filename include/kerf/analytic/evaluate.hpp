@@ -5,6 +5,7 @@
 //
 //   kerf::MaterialCache cache;
 //   kerf::Columns row = kerf::evaluate_scene_columns(document, &cache);   // [("axial_force_N", "440.1"), ...]
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -26,6 +27,14 @@ Columns trepanning_columns(const TrepanningScene& scene, const TrepanningForces&
 
 /// Parses, predicts and formats one scene of either kind. Throws InputError / ModelError like the models.
 Columns evaluate_scene_columns(const Json& document, MaterialCache* cache);
+
+/// The points of a sweep grid (row-major, `stride` between neighbours along the uncut chip thickness axis of
+/// `n_along` values) where a force is below its value at the previous thickness (relative margin 1e-9): a model
+/// that changed branch or left its domain. Points without a value (refused) are skipped.
+///
+///   auto falls = kerf::falling_points({1.0, 2.0, 1.5}, 1, 3);   // {2}
+std::vector<std::size_t> falling_points(const std::vector<std::optional<double>>& force, std::size_t stride,
+                                        std::size_t n_along);
 
 /// The column names a scene's rows will have (its models fix them), without predicting.
 std::vector<std::string> scene_column_names(const Json& document, MaterialCache* cache);

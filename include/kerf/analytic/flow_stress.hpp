@@ -4,9 +4,10 @@
 //   sigma = sigma_JC(eps, epsdot, T) + K_HP / sqrt(D) + M alpha G b sqrt(k theta_av / (D_avg b))
 //   k_s   = sigma / sqrt(3)
 //
-// Each term is optional: a scene names the terms it wants. Policy at T >= T_melt: the material is molten and
-// every term is zero (the microstructural terms of Eq. 8 carry no temperature dependence of their own, but
-// a melt has no grains); Guard::temperature_at_or_above_melt is raised.
+// Each term is optional: a scene names the terms it wants. Eq. 8 writes K_HP(eps, epsdot, T) but Eqs. 10-11
+// define no dependence; kerf's choice: the microstructural terms soften with the material's Johnson-Cook
+// thermal factor (1 - T*^m) above room temperature, so the flow stress falls continuously to zero at T_melt.
+// At T >= T_melt every term is zero (a melt has no grains) and Guard::temperature_at_or_above_melt is raised.
 //
 //   kerf::FlowStressModel model;
 //   model.johnson_cook = jc;  model.hall_petch = hp;         // dislocation term left out
@@ -34,7 +35,10 @@ struct FlowStressModel {
   JohnsonCookPolicy policy;
   std::optional<HallPetchParams> hall_petch;
   std::optional<DislocationParams> dislocation;
-  /// Needed to apply the melt policy to the microstructural terms when Johnson-Cook is not used.
+  /// The material's Johnson-Cook law when the Johnson-Cook term is not used: its thermal factor softens the
+  /// microstructural terms (when the term is used, its own law does).
+  std::optional<JohnsonCookParams> thermal_softening;
+  /// The melt policy for the microstructural terms when neither law is known (0: none).
   double melting_temperature_K = 0.0;
 
   /// At least one term; each term validated under `path`.

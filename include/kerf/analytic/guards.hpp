@@ -25,9 +25,11 @@ enum class Guard : std::uint32_t {
   lower_limit_above_pole = 1u << 8,
   solver_at_bound = 1u << 9,
   turning_depth_below_feed = 1u << 10,
+  no_chip_on_rake_face = 1u << 11,
+  contact_length_not_applicable = 1u << 12,
 };
 
-inline constexpr int kGuardCount = 11;
+inline constexpr int kGuardCount = 13;
 
 /// Name (snake_case, for CSV and JSON) of a guard.
 std::string_view guard_name(Guard guard);

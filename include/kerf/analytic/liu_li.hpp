@@ -20,6 +20,9 @@
 //   of a constant closure (pole + margin), whichever the scene asks for; the stagnation rule also stays a
 //   margin above a pole. The layer below g_L, r (1 + sin g_L) thick, is ploughed, not cut, and its force is
 //   not part of the model. The thrust force depends strongly on this choice.
+// - the cut-off holds for the whole tool: a straight rake face whose nominal rake lies at or below g_L cuts no
+//   chip either (Guard::no_chip_on_rake_face); the whole uncut chip is then ploughed. With r = 0 this is the
+//   sharp tool, so Merchant's force (models.force = merchant) obeys the same cut-off.
 // - r cos(g) / sin(phi_k) is evaluated as r sqrt(1 - 2 r_c sin g + r_c^2) / r_c, free of the 0/0 at g = -pi/2.
 //
 //   kerf::LiuLiParams p{.rake_rad = 0.0, .edge_radius_m = 1e-6, .chip_ratio = 0.5,
@@ -39,8 +42,9 @@ namespace kerf {
 enum class FrictionClosure { constant, merchant, lee_shaffer };
 enum class LowerLimitRule { stagnation, pole };
 
-const std::vector<std::string>& friction_closure_names();
-const std::vector<std::string>& lower_limit_rule_names();
+/// The scene names of the closures and lower-limit rules (analytic/registry.cpp lists them).
+std::string_view friction_closure_name(FrictionClosure closure);
+std::string_view lower_limit_rule_name(LowerLimitRule rule);
 
 struct LiuLiParams {
   double rake_rad = 0.0;            ///< nominal rake a, in (-pi/2, pi/2)
@@ -61,15 +65,17 @@ struct LiuLiResult {
   ForcePerWidth rake_face;    ///< the straight rake face above the arc
   double upper_limit_rad = 0.0;
   double lower_limit_rad = 0.0;        ///< where the integral starts (clipped to the upper limit)
+  double cut_off_rad = 0.0;            ///< the lower limit before clipping: no chip forms at a local rake below it
   double stagnation_angle_rad = 0.0;   ///< -(pi/4 + beta/2)
   std::optional<double> pole_rad;      ///< the pole of the constant closure, if on the edge
   double ploughed_thickness_m = 0.0;   ///< min(t0, r (1 + sin g_L)): below the lower limit
   bool chip_on_edge_only = false;      ///< t0 <= r (1 + sin a)
+  bool rake_face_ploughs = false;      ///< the nominal rake lies at or below the lower limit: no chip at all
   double quadrature_error_estimate = 0.0;
 };
 
 /// Forces per unit width for shear flow stress k_s and uncut chip thickness t0 > 0 (both SI).
-/// Throws kerf::InputError where no chip can form on the rake face (phi + beta - a >= pi/2).
+/// Throws kerf::InputError where a closure's nominal beta leaves no chip above the cut-off (phi + beta - a >= pi/2).
 LiuLiResult liu_li_force_per_width(const LiuLiParams& params, double shear_flow_stress_Pa,
                                    double uncut_chip_thickness_m, Guards* guards);
 

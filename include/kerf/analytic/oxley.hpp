@@ -129,6 +129,11 @@ struct OxleyResult {
   double residual_normal = 0.0;  ///< |sigma_N - sigma_N'| / max(|sigma_N|, |sigma_N'|)
   bool converged = false;        ///< both conditions solved by a bracketed root (never true for evaluate_oxley)
   int n_function_evaluations = 0;  ///< evaluations of the shear-zone state (each solves its own T_AB)
+  /// Branches: full solutions (both conditions bracketed) the cold phi search found at the first delta; the
+  /// minimum-force one is followed. 0 when none was found there.
+  int shear_angle_roots = 0;
+  bool delta_at_bound = false;        ///< delta on an end of [delta_min, delta_max]: F_c's minimum lies outside
+  bool shear_angle_at_bound = false;  ///< phi on an end of its search range
   Guards guards;
 };
 

@@ -22,6 +22,7 @@ struct OxleyDetails {
   double interface_temperature_K = 0.0;
   double contact_length_m = 0.0;
   double residual = 0.0;  ///< the larger relative residual of the two Oxley conditions
+  int shear_angle_roots = 0;  ///< branches found; the minimum-force one is reported
 };
 
 struct Prediction {
@@ -31,13 +32,16 @@ struct Prediction {
   double width_m = 0.0;
   double uncut_chip_thickness_m = 0.0;
   double shear_angle_rad = 0.0;
-  double friction_angle_rad = 0.0;  ///< NaN-free: 0 with has_friction false when the scene gave none
+  /// The one friction angle of the prediction: Oxley's lambda, or the friction closure's beta at the nominal rake
+  /// (the scene's for the constant closure); it sets the forces, stagnation angle and contact lengths.
+  double friction_angle_rad = 0.0;
   bool has_friction = false;
   double chip_ratio = 0.0;
   double chip_thickness_m = 0.0;
   DeformationState state;
   FlowStress flow;
-  std::vector<std::pair<std::string, double>> contact_lengths_m;  ///< (column, value)
+  /// (column, value); no value where the model is not applicable (Guard::contact_length_not_applicable)
+  std::vector<std::pair<std::string, std::optional<double>>> contact_lengths_m;
   std::optional<LiuLiResult> liu_li;
   std::optional<OxleyDetails> oxley;
   std::string regime;  ///< "ductile", "transition" or "brittle" against the critical depth; empty without one

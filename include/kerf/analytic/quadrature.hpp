@@ -5,6 +5,7 @@
 //   kerf::QuadratureSettings q{.rule = kerf::QuadratureRule::gauss_kronrod, .relative_tolerance = 1e-8};
 //   auto r = kerf::integrate([](double x) { return x * x; }, 0.0, 1.0, q);   // r.value = 1/3
 #include <functional>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -18,7 +19,9 @@ enum class QuadratureRule {
 };
 
 std::string_view quadrature_rule_name(QuadratureRule rule);
-/// Scene names of the rules, in the order of the enum.
+/// The rule a scene name constructs; nullopt for an unknown name.
+std::optional<QuadratureRule> quadrature_rule_from_name(std::string_view name);
+/// Scene names of the rules.
 const std::vector<std::string>& quadrature_rule_names();
 
 struct QuadratureSettings {
@@ -34,8 +37,8 @@ struct QuadratureResult {
 
 using Integrand = std::function<double(double)>;
 
-/// Integral of f over [a, b] (a <= b). Never throws for finite integrands; a poorly converged result
-/// carries a large error_estimate.
+/// Integral of f over [a, b] (a <= b). Boost's rules never throw for finite integrands (a poorly converged
+/// result carries a large error_estimate); GSL QAG reports its status, and a failure throws kerf::ModelError.
 QuadratureResult integrate(const Integrand& f, double a, double b, const QuadratureSettings& settings);
 
 /// Two integrands that share their expensive parts (the Liu-Li cutting and thrust integrands share the local

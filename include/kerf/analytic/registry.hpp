@@ -1,9 +1,14 @@
 #pragma once
 // The registry of analytic models: one line per model, in analytic/registry.cpp. A scene names the models it
 // needs by these names; only those are built and run; an unknown name is an error listing the valid ones.
+// Each line carries the enum value its name constructs, so a scene maps a name to its model by the name and
+// the order of the lines changes nothing.
 //
 //   for (const auto& m : kerf::analytic_models()) fmt::print("{}.{}: {}\n", m.kind, m.name, m.summary);
 //   auto names = kerf::analytic_model_names("force");   // {"auto", "merchant", "liu_li", "oxley"}
+//   auto rule = kerf::registered_model<kerf::ShearAngleSource>("shear_angle", "lee_shaffer");
+#include <optional>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -15,10 +20,26 @@ struct AnalyticModelInfo {
   std::string_view name;     ///< the value a scene uses
   std::string_view summary;  ///< what it is, with its source
   std::string_view needs;    ///< what the scene and material must provide
+  int id = -1;               ///< the value of the kind's enum this name constructs; -1: none (handled by name)
 };
 
 const std::vector<AnalyticModelInfo>& analytic_models();
 /// The names registered under one kind, in registry order (built once).
 const std::vector<std::string>& analytic_model_names(std::string_view kind);
+
+/// The enum value registered for `kind` and `name` in `registry` (a line's own id, never its position);
+/// nullopt when no line has that kind and name, or the line has no enum value.
+std::optional<int> registered_id(const std::vector<AnalyticModelInfo>& registry, std::string_view kind,
+                                 std::string_view name);
+
+/// The model of `kind` that `name` constructs. Names are checked against the registry when a scene is read, so
+/// an unregistered name here is a programming error (std::logic_error).
+template <class Enum>
+Enum registered_model(std::string_view kind, std::string_view name,
+                      const std::vector<AnalyticModelInfo>& registry = analytic_models()) {
+  const std::optional<int> id = registered_id(registry, kind, name);
+  if (!id) throw std::logic_error("analytic registry: no model '" + std::string(name) + "' of kind " + std::string(kind));
+  return static_cast<Enum>(*id);
+}
 
 }  // namespace kerf

@@ -92,6 +92,10 @@ struct TrepanningForces {
   double feed_per_rev_m = 0.0; ///< f, Eq. 7
 };
 
+/// Plausibility guard: throws InputError (cut.feed_rate_um_per_s) when the feed per revolution exceeds the cutter's
+/// wall width (D - d) / 2. A trepanning scene applies it when read.
+void check_feed_plausible(const TrepanningTool& tool, const TrepanningCut& cut);
+
 /// Eqs. 21-22 from the lumped groups. Inputs are validated (InputError names tool.*, cut.*, groups.*).
 TrepanningForces trepanning_forces(const TrepanningTool& tool, const TrepanningCut& cut, const TrepanningGroups& groups);
 /// Eqs. 21-22 from H, phi and mu.
