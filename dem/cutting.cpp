@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <type_traits>
 
 #include "kerf/error.hpp"
 #include "kerf/io.hpp"
@@ -35,20 +36,68 @@ double clearance_face_length_m(const CutParams& p) {
 }
 }  // namespace
 
-void validate_cut_params(const CutParams& p) {
-  require(p.depth_of_cut_m > 0, "cut.depth_of_cut_mm", units::m_to_mm(p.depth_of_cut_m), "a positive value in mm");
-  require(p.speed_m_per_s > 0, "cut.speed_m_per_s", p.speed_m_per_s, "a positive value in m/s");
-  require(p.length_m > 0, "cut.length_mm", units::m_to_mm(p.length_m), "a positive value in mm");
-  require(p.entry_fraction >= 0 && p.entry_fraction < 1, "cut.entry_fraction", p.entry_fraction, "a value in [0, 1)");
-  require(p.sample_every_steps >= 1, "cut.sample_every_steps", p.sample_every_steps, "an integer >= 1");
-  require(p.window_m > 0 && p.window_m >= 1e-3 * p.length_m, "cut.window_mm", units::m_to_mm(p.window_m),
+const EnumNames<GrooveShape>& groove_shape_names() {
+  static constexpr std::string_view names[] = {"none", "rectangular", "trapezoidal"};
+  static const EnumNames<GrooveShape> table{names};
+  return table;
+}
+
+const FieldTable<CutParams>& cut_fields() {
+  using namespace units;
+  using P = CutParams;
+  static const FieldTable<CutParams> table{
+      required_number_field("depth_of_cut_mm", kMm, Range::positive(), "depth of cut below the top surface",
+                            &P::depth_of_cut_m),
+      number_field("speed_m_per_s", kSi("m/s"), Range::positive(), "cutting speed (scaled up from the seed's)",
+                   &P::speed_m_per_s),
+      required_number_field("length_mm", kMm, Range::positive(), "tool travel", &P::length_m),
+      number_field("entry_fraction", kNone, Range{0.0, 1.0, false, true},
+                   "part of the travel left out of the mean forces (the entry)", &P::entry_fraction),
+      int_field("sample_every_steps", 1, 1000000, "steps per force sample", &P::sample_every_steps),
+      number_field("window_mm", kMm, Range::positive(),
+                   "travel per window of results.travel_windows (at least 1/1000 of length_mm)", &P::window_m)};
+  return table;
+}
+
+const FieldTable<CutParams>& tool_fields() {
+  using namespace units;
+  using P = CutParams;
+  static const FieldTable<CutParams> table{
+      number_field("rake_deg", kSi("deg"), Range::open(-90.0, 90.0), "rake angle", &P::rake_deg),
+      number_field("clearance_deg", kSi("deg"), Range{0.0, 90.0, false, true},
+                   "clearance angle (rake + clearance below 89 deg)", &P::clearance_deg),
+      number_field("edge_radius_um", kUm, Range::non_negative(), "cutting-edge radius; 0: sharp", &P::edge_radius_m),
+      int_field("edge_segments", 1, 64, "wall segments of a rounded edge", &P::edge_segments),
+      number_field("friction_coefficient", kNone, Range::non_negative(),
+                   "tool-workpiece Coulomb friction; absent (-1): the material's particle friction",
+                   &P::tool_friction_coefficient),
+      number_field("rake_face_height_mm", kMm, Range::non_negative(),
+                   "rake-face top above the tip; 0: 3 depths of cut", &P::rake_face_height_m)};
+  return table;
+}
+
+const FieldTable<CutParams>& groove_fields() {
+  using namespace units;
+  using P = CutParams;
+  static const FieldTable<CutParams> table{
+      choice_field("shape", groove_shape_names(), "micro-grooves across the cut path", &P::groove_shape),
+      number_field("depth_mm", kMm, Range::positive(), "groove depth (default: the depth of cut)", &P::groove_depth_m),
+      number_field("pitch_mm", kMm, Range::positive(), "distance between groove centres", &P::groove_pitch_m),
+      number_field("width_mm", kMm, Range::positive(), "groove width at the surface (below the pitch)",
+                   &P::groove_width_m),
+      number_field("bottom_width_mm", kMm, Range::non_negative(),
+                   "trapezoidal: width at the groove bottom (default: half the width)", &P::groove_bottom_width_m)};
+  return table;
+}
+
+namespace {
+/// The relations between fields (each field's own range is its table's); errors name section.key.
+void check_cut_relations(const CutParams& p) {
+  require(p.window_m >= 1e-3 * p.length_m, "cut.window_mm", units::m_to_mm(p.window_m),
           "a positive window of at least 1/1000 of cut.length_mm");
-  require(p.rake_deg > -90 && p.rake_deg < 90, "tool.rake_deg", p.rake_deg, "a value in (-90, 90) deg");
-  require(p.clearance_deg >= 0 && p.clearance_deg < 90, "tool.clearance_deg", p.clearance_deg, "a value in [0, 90) deg");
   // The wedge between the two faces must be a real wedge: rake + clearance < 90 deg.
   require(p.rake_deg + p.clearance_deg < 89, "tool.clearance_deg", p.clearance_deg,
           "rake_deg + clearance_deg below 89 deg (a tool wedge angle of at least 1 deg)");
-  require(p.edge_radius_m >= 0, "tool.edge_radius_um", units::m_to_um(p.edge_radius_m), "a value >= 0 um");
   // The rake face must rise above the uncut surface, or the chip would meet the tool's back face.
   require(p.rake_face_height_m == 0 || p.rake_face_height_m > p.depth_of_cut_m, "tool.rake_face_height_mm",
           units::m_to_mm(p.rake_face_height_m),
@@ -58,86 +107,71 @@ void validate_cut_params(const CutParams& p) {
   const double tangent = p.edge_radius_m / std::tan(0.5 * wedge_angle_rad(p));
   require(tangent < std::min(rake_face_length_m(p), clearance_face_length_m(p)), "tool.edge_radius_um",
           units::m_to_um(p.edge_radius_m), "an edge radius whose rounding fits on both tool faces");
-  require(p.edge_segments >= 1 && p.edge_segments <= 64, "tool.edge_segments", p.edge_segments, "an integer in [1, 64]");
-  if (p.groove_shape == "none") return;
-  if (p.groove_shape != "rectangular" && p.groove_shape != "trapezoidal")
-    throw InputError("grooves.shape", p.groove_shape, "one of 'none', 'rectangular', 'trapezoidal'");
-  require(p.groove_depth_m > 0, "grooves.depth_mm", units::m_to_mm(p.groove_depth_m), "a positive value in mm");
-  require(p.groove_pitch_m > 0, "grooves.pitch_mm", units::m_to_mm(p.groove_pitch_m), "a positive value in mm");
-  require(p.groove_width_m > 0 && p.groove_width_m < p.groove_pitch_m, "grooves.width_mm", units::m_to_mm(p.groove_width_m),
+  if (p.groove_shape == GrooveShape::none) return;
+  require(p.groove_width_m < p.groove_pitch_m, "grooves.width_mm", units::m_to_mm(p.groove_width_m),
           "a positive width below grooves.pitch_mm (" + format_value(units::m_to_mm(p.groove_pitch_m)) + " mm)");
-  if (p.groove_shape == "trapezoidal")
-    require(p.groove_bottom_width_m >= 0 && p.groove_bottom_width_m < p.groove_width_m, "grooves.bottom_width_mm",
+  if (p.groove_shape == GrooveShape::trapezoidal)
+    require(p.groove_bottom_width_m < p.groove_width_m, "grooves.bottom_width_mm",
             units::m_to_mm(p.groove_bottom_width_m),
             "a value in [0, grooves.width_mm) (an inverted trapezoid is narrower at the bottom)");
+}
+}  // namespace
+
+void validate_cut_params(const CutParams& p) {
+  with_path("cut", [&] { check_fields(cut_fields(), p); });
+  CutParams tool = p;
+  if (tool.tool_friction_coefficient < 0) tool.tool_friction_coefficient = 0;  // negative: the material's
+  with_path("tool", [&] { check_fields(tool_fields(), tool); });
+  if (p.groove_shape != GrooveShape::none) with_path("grooves", [&] { check_fields(groove_fields(), p); });
+  check_cut_relations(p);
 }
 
 CutParams read_cut_params(ObjectReader& root) {
   CutParams p;
   ObjectReader cut = root.get_object("cut");
-  p.depth_of_cut_m = units::mm_to_m(cut.get_number("depth_of_cut_mm", Range::positive(), "mm"));
-  p.speed_m_per_s = cut.get_number_or("speed_m_per_s", p.speed_m_per_s, Range::positive(), "m/s");
-  p.length_m = units::mm_to_m(cut.get_number("length_mm", Range::positive(), "mm"));
-  p.entry_fraction = cut.get_number_or("entry_fraction", p.entry_fraction, Range{0.0, 1.0, false, true}, "");
-  p.sample_every_steps = cut.get_int_or("sample_every_steps", p.sample_every_steps, 1, 1000000);
-  p.window_m = units::mm_to_m(cut.get_number_or("window_mm", units::m_to_mm(p.window_m), Range::positive(), "mm"));
+  p = read_fields(cut, cut_fields(), p);
   cut.finish();
   if (auto tool = root.find_object("tool")) {
-    p.rake_deg = tool->get_number_or("rake_deg", p.rake_deg, Range::open(-90.0, 90.0), "deg");
-    p.clearance_deg = tool->get_number_or("clearance_deg", p.clearance_deg, Range{0.0, 90.0, false, true}, "deg");
-    p.edge_radius_m = units::um_to_m(tool->get_number_or("edge_radius_um", 0, Range::non_negative(), "um"));
-    p.edge_segments = tool->get_int_or("edge_segments", p.edge_segments, 1, 64);
-    if (auto mu = tool->get_optional_number("friction_coefficient", Range::non_negative(), ""))
-      p.tool_friction_coefficient = *mu;
-    p.rake_face_height_m = units::mm_to_m(tool->get_number_or("rake_face_height_mm", 0, Range::non_negative(), "mm"));
+    p = read_fields(*tool, tool_fields(), p);
     tool->finish();
   }
   if (auto grooves = root.find_object("grooves")) {
-    p.groove_shape = grooves->get_choice_or("shape", "none", {"none", "rectangular", "trapezoidal"});
-    // Seed 000 Section 4: groove depth = depth of cut, pitch 0.2 mm, width 0.06 mm.
-    p.groove_depth_m = units::mm_to_m(grooves->get_number_or("depth_mm", units::m_to_mm(p.depth_of_cut_m), Range::positive(), "mm"));
-    p.groove_pitch_m = units::mm_to_m(grooves->get_number_or("pitch_mm", 0.2, Range::positive(), "mm"));
-    p.groove_width_m = units::mm_to_m(grooves->get_number_or("width_mm", 0.06, Range::positive(), "mm"));
-    p.groove_bottom_width_m = units::mm_to_m(grooves->get_number_or(
-        "bottom_width_mm", units::m_to_mm(0.5 * p.groove_width_m), Range::non_negative(), "mm"));
+    // Seed 000 Section 4: groove depth = depth of cut (as the depth in mm read back), pitch 0.2 mm, width 0.06 mm.
+    p.groove_depth_m = units::mm_to_m(units::m_to_mm(p.depth_of_cut_m));
+    p = read_fields(*grooves, groove_fields(), p);
+    if (!grooves->has("bottom_width_mm"))
+      p.groove_bottom_width_m = units::mm_to_m(units::m_to_mm(0.5 * p.groove_width_m));
     grooves->finish();
   }
-  validate_cut_params(p);
+  check_cut_relations(p);
   return p;
 }
 
 Json cut_params_to_json(const CutParams& p) {
-  Json j{{"cut", {{"depth_of_cut_mm", units::m_to_mm(p.depth_of_cut_m)}, {"speed_m_per_s", p.speed_m_per_s},
-                  {"length_mm", units::m_to_mm(p.length_m)}, {"entry_fraction", p.entry_fraction},
-                  {"sample_every_steps", p.sample_every_steps}, {"window_mm", units::m_to_mm(p.window_m)}}},
-         {"tool", {{"rake_deg", p.rake_deg}, {"clearance_deg", p.clearance_deg},
-                   {"edge_radius_um", units::m_to_um(p.edge_radius_m)}, {"edge_segments", p.edge_segments}}},
-         {"grooves", {{"shape", p.groove_shape}}}};
-  // Only when given: scenes without it keep their replicate_inputs (and so their reusable replicates).
-  if (p.tool_friction_coefficient >= 0) j["tool"]["friction_coefficient"] = p.tool_friction_coefficient;
-  if (p.rake_face_height_m > 0) j["tool"]["rake_face_height_mm"] = units::m_to_mm(p.rake_face_height_m);
-  if (p.groove_shape != "none") {
-    j["grooves"]["depth_mm"] = units::m_to_mm(p.groove_depth_m);
-    j["grooves"]["pitch_mm"] = units::m_to_mm(p.groove_pitch_m);
-    j["grooves"]["width_mm"] = units::m_to_mm(p.groove_width_m);
-    if (p.groove_shape == "trapezoidal") j["grooves"]["bottom_width_mm"] = units::m_to_mm(p.groove_bottom_width_m);
-  }
+  Json j{{"cut", fields_to_json(cut_fields(), p)},
+         {"tool", fields_to_json(tool_fields(), p)},
+         {"grooves", fields_to_json(groove_fields(), p)}};
+  // Only when given: scenes without them keep their replicate_inputs (and so their reusable replicates).
+  if (p.tool_friction_coefficient < 0) j["tool"].erase("friction_coefficient");
+  if (p.rake_face_height_m <= 0) j["tool"].erase("rake_face_height_mm");
+  if (p.groove_shape == GrooveShape::none) j["grooves"] = Json{{"shape", "none"}};
+  if (p.groove_shape != GrooveShape::trapezoidal) j["grooves"].erase("bottom_width_mm");
   return j;
 }
 
 bool inside_groove_outline(const CutParams& p, double dx_m, double depth_m) {
-  if (p.groove_shape == "none" || depth_m < 0 || depth_m > p.groove_depth_m) return false;
+  if (p.groove_shape == GrooveShape::none || depth_m < 0 || depth_m > p.groove_depth_m) return false;
   double width = p.groove_width_m;
   // The laser grooves are inverted trapezoids (seed 000 Section 4, discussion of Figure 18): the width
   // falls linearly from the top width at the surface to the bottom width at the groove depth.
-  if (p.groove_shape == "trapezoidal")
+  if (p.groove_shape == GrooveShape::trapezoidal)
     width += (p.groove_bottom_width_m - p.groove_width_m) * depth_m / p.groove_depth_m;
   return std::abs(dx_m) <= 0.5 * width;
 }
 
 std::vector<double> groove_centres(const CutParams& p, double x_left_m, double x_right_m) {
   std::vector<double> out;
-  if (p.groove_shape == "none") return out;
+  if (p.groove_shape == GrooveShape::none) return out;
   const double half = 0.5 * p.groove_width_m;
   // The laser treats the whole top surface, not only the tool's path: a groove ahead of the tool's end
   // still stops a crack, and the workpiece does not change with the travel (seed 000 Section 4: grooves on
@@ -294,7 +328,7 @@ void check_cut_fits_workpiece(const CutParams& p, const Bounds& b) {
                 format_value(units::m_to_mm(b.y_max - b.y_min)) + " mm)");
   };
   above_held_rows("cut.depth_of_cut_mm", p.depth_of_cut_m, "a depth of cut");
-  if (p.groove_shape != "none") above_held_rows("grooves.depth_mm", p.groove_depth_m, "a groove depth");
+  if (p.groove_shape != GrooveShape::none) above_held_rows("grooves.depth_mm", p.groove_depth_m, "a groove depth");
   require(p.depth_of_cut_m >= b.r_min, "cut.depth_of_cut_mm", units::m_to_mm(p.depth_of_cut_m),
           "a depth of cut of at least the smallest disk radius (" + format_value(units::m_to_um(b.r_min)) +
               " um): a shallower tool passes over the disks' tops; use smaller disks (specimen.radius_min_um, "
@@ -309,7 +343,7 @@ void check_cut_fits_workpiece(const CutParams& p, const Bounds& b) {
 /// A groove pattern that removes no disk is not a grooved workpiece: either no groove lies on the surface
 /// (the pitch) or none is wide enough to hold a disk's centre (the width).
 void check_grooves_remove_disks(const CutParams& p, const Bounds& b, std::size_t n_removed) {
-  if (p.groove_shape == "none" || n_removed > 0) return;
+  if (p.groove_shape == GrooveShape::none || n_removed > 0) return;
   require(!groove_centres(p, b.x_min, b.x_max).empty(), "grooves.pitch_mm", units::m_to_mm(p.groove_pitch_m),
           "a pitch that puts at least one groove on the " + format_value(units::m_to_mm(b.x_max - b.x_min)) +
               " mm long workpiece");
@@ -466,7 +500,9 @@ void CutRun::state_fields(Self& run, Io& io) {
   io(p.depth_of_cut_m, p.speed_m_per_s, p.length_m, p.rake_deg, p.clearance_deg, p.edge_radius_m, p.groove_depth_m,
      p.groove_pitch_m, p.groove_width_m, p.groove_bottom_width_m, p.entry_fraction, p.window_m,
      p.tool_friction_coefficient, p.rake_face_height_m);
-  io(p.edge_segments, p.sample_every_steps, p.groove_shape, r.samples);
+  std::string groove_shape = groove_shape_names().name(p.groove_shape);  // by name, as before the enum
+  io(p.edge_segments, p.sample_every_steps, groove_shape, r.samples);
+  if constexpr (!std::is_const_v<Self>) p.groove_shape = groove_shape_names().parse(groove_shape, "cut checkpoint");
   io(r.y_top_m, r.y_cut_m, r.width_m, r.time_step_s, r.wall_time_s, run.t0_, r.workpiece_box_m);
   io(r.n_particles, r.n_removed_by_grooves, r.steps, run.first_tool_wall_, run.n_tool_walls_, run.finished_);
 }

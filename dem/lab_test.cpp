@@ -5,21 +5,40 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <type_traits>
 
 #include "kerf/error.hpp"
+#include "kerf/units.hpp"
 #include "serial.hpp"
 
 namespace kerf::dem {
 
-LoadingSpec read_loading_spec(ObjectReader& r, const std::string& test) {
+const EnumNames<LabTest>& lab_test_names() {
+  static constexpr std::string_view names[] = {"tension", "compression"};
+  static const EnumNames<LabTest> table{names};
+  return table;
+}
+
+const FieldTable<LoadingSpec>& loading_fields() {
+  using L = LoadingSpec;
+  static const FieldTable<LoadingSpec> table{
+      number_field("speed_m_per_s", units::kSi("m/s"), Range{0.0, 10.0, true, false}, "speed of each platen (grip)",
+                   &L::speed_m_per_s),
+      number_field("stop_fraction_of_peak", units::kNone, Range::open(0.0, 1.0),
+                   "stop once the stress has fallen below this fraction of the peak", &L::stop_fraction),
+      number_field("max_strain", units::kNone, Range{0.0, 0.5, true, false},
+                   "stop anyway at this axial strain (default: 0.005 in tension)", &L::max_strain),
+      int_field("sample_every_steps", 1, 1000000, "steps per curve sample", &L::sample_every_steps),
+      bool_field("quasi_static_check", "rerun at half the speed and report the change of the peak",
+                 &L::quasi_static_check)};
+  return table;
+}
+
+LoadingSpec read_loading_spec(ObjectReader& r, LabTest test) {
   LoadingSpec s;
   s.test = test;
-  s.speed_m_per_s = r.get_number_or("speed_m_per_s", 0.05, Range{0.0, 10.0, true, false}, "m/s");
-  s.stop_fraction = r.get_number_or("stop_fraction_of_peak", 0.7, Range::open(0.0, 1.0), "");
-  s.max_strain = r.get_number_or("max_strain", test == "tension" ? 0.005 : 0.02, Range{0.0, 0.5, true, false}, "");
-  s.sample_every_steps = r.get_int_or("sample_every_steps", 50, 1, 1000000);
-  s.quasi_static_check = r.get_bool_or("quasi_static_check", true);
-  return s;
+  if (test == LabTest::tension) s.max_strain = 0.005;
+  return read_fields(r, loading_fields(), s);
 }
 
 void secant_properties(LabTestResult& res, double fraction) {
@@ -33,7 +52,7 @@ void secant_properties(LabTestResult& res, double fraction) {
     const double lateral = a.lateral_strain + w * (b.lateral_strain - a.lateral_strain);
     res.youngs_modulus_pa = strain > 0 ? target / strain : 0;
     // Axial strain is positive in the loading sense: true axial strain is -strain in compression.
-    const double true_axial = res.test == "compression" ? -strain : strain;
+    const double true_axial = res.test == LabTest::compression ? -strain : strain;
     res.poissons_ratio = strain > 0 ? -lateral / true_axial : 0;
     return;
   }
@@ -52,7 +71,7 @@ LabTestRun::LabTestRun(const Simulation& specimen, const LoadingSpec& spec) : si
   }
   const double width = x_max - x_min, v = spec.speed_m_per_s;
   double length = y_max - y_min;
-  if (spec.test == "tension") {
+  if (spec.test == LabTest::tension) {
     // Grips: the row of disks whose centres lie within 2 R_max of the top or the bottom.
     double y_top = 0, y_bottom = 0;
     int n_top = 0, n_bottom = 0;
@@ -114,7 +133,7 @@ bool LabTestRun::advance() {
   for (; counted_ < static_cast<std::int64_t>(cracks.size()); ++counted_)
     (cracks[static_cast<std::size_t>(counted_)].mode == BreakMode::tension ? n_tension_ : n_shear_)++;
   const double elapsed = sim_.time() - t0_, t = sim_.options().thickness_m;
-  const double stress = spec_.test == "tension"
+  const double stress = spec_.test == LabTest::tension
                             ? 0.5 * (sim_.group_force(1)[1] - sim_.group_force(2)[1]) / (res_.width_m * t)
                             : 0.5 * (sim_.walls()[1].fy - sim_.walls()[0].fy) / (res_.width_m * t);
   const double strain = 2 * spec_.speed_m_per_s * elapsed / res_.height_m;
@@ -141,12 +160,14 @@ template <class Self, class Io>
 void LabTestRun::state_fields(Self& run, Io& io) {
   auto& spec = run.spec_;
   auto& r = run.res_;
-  io(spec.test, spec.speed_m_per_s, spec.stop_fraction, spec.max_strain, spec.sample_every_steps,
+  std::string test = lab_test_names().name(spec.test);  // by name, as before the enum
+  io(test, spec.speed_m_per_s, spec.stop_fraction, spec.max_strain, spec.sample_every_steps,
      spec.quasi_static_check, r.curve);
   io(r.peak_stress_pa, r.strain_at_peak, r.width_m, r.height_m, r.speed_m_per_s, r.time_step_s, r.wall_time_s,
      run.side0_, run.t0_);
   io(r.steps, r.n_particles, r.stop_reason, run.left_, run.right_, run.counted_, run.n_tension_, run.n_shear_,
      run.finished_);
+  if constexpr (!std::is_const_v<Self>) spec.test = lab_test_names().parse(test, "test checkpoint");
 }
 
 std::string LabTestRun::serialize() const {

@@ -13,32 +13,66 @@
 
 namespace kerf::dem {
 
-SpecimenSpec read_specimen_spec(ObjectReader& r) {
+const EnumNames<Packing>& packing_names() {
+  static constexpr std::string_view names[] = {"random", "hexagonal"};
+  static const EnumNames<Packing> table{names};
+  return table;
+}
+
+const FieldTable<SpecimenSpec>& specimen_fields() {
   using namespace units;
-  SpecimenSpec s;
-  s.width_m = mm_to_m(r.get_number_or("width_mm", 1.0, Range::positive(), "mm"));
-  s.height_m = mm_to_m(r.get_number_or("height_mm", 2.0, Range::positive(), "mm"));
-  s.thickness_m = mm_to_m(r.get_number_or("thickness_mm", 1.0, Range::positive(), "mm"));
-  s.radius_min_m = um_to_m(r.get_number_or("radius_min_um", 7.5, Range::positive(), "um"));
-  s.radius_max_m = um_to_m(r.get_number_or("radius_max_um", 10.0, Range::positive(), "um"));
+  using S = SpecimenSpec;
+  static const FieldTable<SpecimenSpec> table{
+      number_field("width_mm", kMm, Range::positive(), "specimen width (x)", &S::width_m),
+      number_field("height_mm", kMm, Range::positive(), "specimen height (y)", &S::height_m),
+      number_field("thickness_mm", kMm, Range::positive(), "out-of-plane thickness: forces and stresses are per it",
+                   &S::thickness_m),
+      number_field("radius_min_um", kUm, Range::positive(), "smallest disk radius", &S::radius_min_m),
+      number_field("radius_max_um", kUm, Range::positive(), "largest disk radius (at most 1/8 of the smaller side)",
+                   &S::radius_max_m),
+      choice_field("packing", packing_names(), "random packing, or equal disks on a triangular lattice (verification)",
+                   &S::packing),
+      IntField<S>{"seed", 0, 2147483647, "random packing seed (replicate k uses seed + k)",
+                  [](const S& s) { return static_cast<int>(s.seed); },
+                  [](S& s, int v) { s.seed = static_cast<std::uint64_t>(v); }},
+      number_field("packing_fraction", kNone, Range::closed(0.5, 0.9),
+                   "disk area fraction that sets the number of disks (random)", &S::packing_fraction),
+      number_field("compaction_pressure_MPa", kMPa, Range::positive(), "isotropic pressure of the frictionless compaction",
+                   &S::compaction_pressure_pa),
+      number_field("installation_gap_um", kUm, Range::non_negative(), "joints at pairs whose surface gap is below this",
+                   &S::installation_gap_m),
+      int_field("growth_steps", 100, 10000000, "steps of the radius growth and compaction", &S::growth_steps),
+      int_field("relax_steps", 0, 10000000, "steps of the relaxation after the walls are removed", &S::relax_steps)};
+  return table;
+}
+
+namespace {
+/// The relations between the fields (each field's own range is the table's).
+void check_specimen_relations(const SpecimenSpec& s) {
+  using namespace units;
   if (s.radius_max_m < s.radius_min_m)
-    throw InputError(r.key_path("radius_max_um"), format_value(m_to_um(s.radius_max_m)),
+    throw InputError("radius_max_um", format_value(m_to_um(s.radius_max_m)),
                      "a value >= radius_min_um = " + format_value(m_to_um(s.radius_min_m)) + " um");
   if (2 * s.radius_max_m * 4 > std::min(s.width_m, s.height_m))
-    throw InputError(r.key_path("radius_max_um"), format_value(m_to_um(s.radius_max_m)),
+    throw InputError("radius_max_um", format_value(m_to_um(s.radius_max_m)),
                      "at most 1/8 of the specimen's smaller side in um");
-  s.packing = r.get_choice_or("packing", "random", {"random", "hexagonal"});
-  s.seed = static_cast<std::uint64_t>(r.get_int_or("seed", 1, 0, 2147483647));
-  s.packing_fraction = r.get_number_or("packing_fraction", 0.85, Range::closed(0.5, 0.9), "");
-  s.compaction_pressure_pa = mpa_to_pa(r.get_number_or("compaction_pressure_MPa", 3.0, Range::positive(), "MPa"));
-  s.installation_gap_m = um_to_m(r.get_number_or("installation_gap_um", 0.5, Range::non_negative(), "um"));
-  s.growth_steps = r.get_int_or("growth_steps", 6000, 100, 10000000);
-  s.relax_steps = r.get_int_or("relax_steps", 2000, 0, 10000000);
   const double area = s.width_m * s.height_m;
   const double mean_r2 = (s.radius_min_m * s.radius_min_m + s.radius_min_m * s.radius_max_m + s.radius_max_m * s.radius_max_m) / 3;
   if (area * s.packing_fraction / (std::numbers::pi * mean_r2) > 5e6)
-    throw InputError(r.key_path("radius_min_um"), format_value(m_to_um(s.radius_min_m)),
+    throw InputError("radius_min_um", format_value(m_to_um(s.radius_min_m)),
                      "radii large enough for at most 5 million disks in the specimen, in um");
+}
+}  // namespace
+
+void check_specimen_spec(const SpecimenSpec& s) {
+  check_fields(specimen_fields(), s);
+  check_specimen_relations(s);
+}
+
+SpecimenSpec read_specimen_spec(ObjectReader& r) {
+  const SpecimenSpec s = read_fields(r, specimen_fields(), SpecimenSpec{});
+  // The ranges are the reader's; the relations between fields are checked here, once.
+  with_path(r.path(), [&] { check_specimen_relations(s); });
   return s;
 }
 
@@ -47,32 +81,27 @@ void EngineSettings::apply_to(Simulation& sim) const {
   sim.set_min_parallel_items(min_parallel_items);
 }
 
+const FieldTable<EngineSettings>& engine_fields() {
+  using E = EngineSettings;
+  static const FieldTable<EngineSettings> table{
+      number_field("time_step_safety", units::kNone, Range{0.0, 1.0, true, false},
+                   "fraction of the critical time step used", &E::time_step_safety),
+      IntField<E>{"min_parallel_items", 0, 1 << 30, "loops shorter than this run on one thread",
+                  [](const E& e) { return static_cast<int>(e.min_parallel_items); },
+                  [](E& e, int v) { e.min_parallel_items = v; }}};
+  return table;
+}
+
 EngineSettings read_engine_settings(ObjectReader& scene_root) {
   EngineSettings e;
   if (auto engine = scene_root.find_object("engine")) {
-    e.time_step_safety = engine->get_number_or("time_step_safety", e.time_step_safety, Range{0.0, 1.0, true, false}, "");
-    e.min_parallel_items =
-        engine->get_int_or("min_parallel_items", static_cast<int>(e.min_parallel_items), 0, 1 << 30);
+    e = read_fields(*engine, engine_fields(), e);
     engine->finish();
   }
   return e;
 }
 
-Json specimen_spec_to_json(const SpecimenSpec& s) {
-  using namespace units;
-  return Json{{"width_mm", m_to_mm(s.width_m)},
-              {"height_mm", m_to_mm(s.height_m)},
-              {"thickness_mm", m_to_mm(s.thickness_m)},
-              {"radius_min_um", m_to_um(s.radius_min_m)},
-              {"radius_max_um", m_to_um(s.radius_max_m)},
-              {"packing", s.packing},
-              {"seed", s.seed},
-              {"packing_fraction", s.packing_fraction},
-              {"compaction_pressure_MPa", pa_to_mpa(s.compaction_pressure_pa)},
-              {"installation_gap_um", m_to_um(s.installation_gap_m)},
-              {"growth_steps", s.growth_steps},
-              {"relax_steps", s.relax_steps}};
-}
+Json specimen_spec_to_json(const SpecimenSpec& s) { return fields_to_json(specimen_fields(), s); }
 
 Json specimen_report_to_json(const SpecimenReport& r) {
   return Json{{"n_particles", r.n_particles},
@@ -233,7 +262,7 @@ Simulation make_random(const Material& material, const SpecimenSpec& spec, Speci
 Simulation make_specimen(const Material& material, const SpecimenSpec& spec, SpecimenReport& report,
                          const std::function<void(std::int64_t, std::int64_t)>& progress) {
   report = {};
-  Simulation sim = spec.packing == "hexagonal" ? make_hexagonal(material, spec, report)
+  Simulation sim = spec.packing == Packing::hexagonal ? make_hexagonal(material, spec, report)
                                                : make_random(material, spec, report, progress);
   // The specimen starts a test at rest, at time zero, with no crack history.
   sim.set_clock(0, 0);

@@ -458,8 +458,9 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? 0 : kerf::kExitInputError;
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help
+    fmt::print(stderr, "kerf-forces: error: {}\n", e.what());
+    return kerf::kExitInputError;
   }
   try {
     if (threads > 0) omp_set_num_threads(threads);

@@ -17,7 +17,9 @@
 
 #include "kerf/analytic/trepanning_validation.hpp"
 #include "kerf/error.hpp"
+#ifdef KERF_WITH_DEM
 #include "soda_lime_cutting.hpp"
+#endif
 
 namespace {
 
@@ -33,10 +35,8 @@ bool run_k9(const std::filesystem::path& out) {
 }
 
 bool run_cutting(const std::filesystem::path& out, const std::string& case_name, int replicates) {
-#ifdef KERF_DEM_PROGRAM
-  const char* program = std::getenv("KERF_DEM");  // another kerf-dem build, if set
-  const kerf::CuttingValidation v = kerf::run_soda_lime_cutting_validation(
-      out, program && *program ? program : KERF_DEM_PROGRAM, case_name, replicates);
+#ifdef KERF_WITH_DEM
+  const kerf::CuttingValidation v = kerf::run_soda_lime_cutting_validation(out, case_name, replicates);
   for (const auto& file : v.files) fmt::print("wrote {}\n", file.string());
   for (const auto& failure : v.failures) fmt::print(stderr, "FAILED: {}\n", failure);
   fmt::print("{}: {}\n", case_name, v.passed() ? "PASSED" : "FAILED");
@@ -81,10 +81,10 @@ int main(int argc, char** argv) {
     fmt::print("{}\n", passed ? "PASSED" : "FAILED");
     return passed ? 0 : 1;
   } catch (const kerf::InputError& e) {
-    fmt::print(stderr, "error: {}\n", e.what());
+    fmt::print(stderr, "run_validation: error: {}\n", e.what());
     return kerf::kExitInputError;
   } catch (const std::exception& e) {
-    fmt::print(stderr, "error: {}\n", e.what());
+    fmt::print(stderr, "run_validation: error: {}\n", e.what());
     return kerf::kExitModelError;
   }
 }

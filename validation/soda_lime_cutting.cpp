@@ -9,12 +9,15 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <cstdlib>
+#include <exception>
 #include <map>
 #include <mutex>
 #include <thread>
 
+#include <omp.h>
+
 #include "kerf/comparison_config.hpp"
+#include "kerf/dem/scene.hpp"
 #include "kerf/error.hpp"
 #include "kerf/io.hpp"
 #include "kerf/json_reader.hpp"
@@ -97,7 +100,7 @@ Estimate ratio_of(const Estimate& a, const Estimate& b) {
   return {r, r * std::hypot(a.standard_error / a.value, b.standard_error / b.value)};
 }
 
-/// Replicate results of one condition, read from kerf-dem's summaries.
+/// Replicate results of one condition, from the run's summaries.
 struct ConditionResult {
   Condition condition;
   Json replicates;  ///< kerf-dem's per-replicate rows, with chip/subsurface crack counts added
@@ -111,8 +114,8 @@ struct ConditionResult {
   double wall_time_s = 0;
 };
 
-ConditionResult collect(const Condition& c, const fs::path& run_dir) {
-  const Json summary = read_json_file(run_dir / "summary.json");
+ConditionResult collect(const Condition& c, const dem::SceneOutcome& run) {
+  const Json& summary = run.summary;
   ConditionResult r;
   r.condition = c;
   r.replicates = summary.at("replicates");
@@ -123,8 +126,9 @@ ConditionResult collect(const Condition& c, const fs::path& run_dir) {
   // The replicates' own cut times: the run's elapsed time would be ~0 when a rerun reuses them all.
   r.wall_time_s = summary.at("wall_time_s_sum_over_replicates");
   const double n = static_cast<double>(r.replicates.size());
-  for (auto& row : r.replicates) {
-    const Json one = read_json_file(run_dir / row.at("directory").get<std::string>() / "summary.json").at("results");
+  for (std::size_t k = 0; k < r.replicates.size(); ++k) {
+    Json& row = r.replicates[k];
+    const Json& one = run.replicate_summaries.at(k).at("results");
     row["cracks_chip"] = one.at("cracks_chip");
     row["cracks_subsurface"] = one.at("cracks_subsurface");
     r.cracks_tensile += row.at("cracks_tensile").get<double>() / n;
@@ -180,8 +184,8 @@ std::string pct(double x) { return fmt::format("{:+.1f} %", 100 * x); }
 
 }  // namespace
 
-CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, const fs::path& kerf_dem,
-                                                   const std::string& case_name, int replicates) {
+CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, const std::string& case_name,
+                                                   int replicates) {
   const fs::path case_dir = data_directory().parent_path() / "validation" / case_name;
   Spec spec = read_spec(case_dir);
   if (replicates != 0) {
@@ -200,34 +204,43 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
   // instead of 9).
   const std::size_t n_conditions = spec.conditions.size();
   const std::size_t streams = std::min<std::size_t>(std::max(1u, std::thread::hardware_concurrency()), n_conditions);
-  std::vector<int> status(n_conditions, 0);
+  const Json scene = read_json_file(spec.scene);
+  std::vector<dem::SceneOutcome> outcomes(n_conditions);
+  std::vector<std::exception_ptr> failed(n_conditions);
   std::atomic<std::size_t> next{0};
   std::mutex print_lock;
   const auto run_conditions = [&] {
+    if (streams > 1) omp_set_num_threads(1);  // this thread's runs: one thread each
     for (std::size_t k = next++; k < n_conditions; k = next++) {
       const auto& c = spec.conditions[k];
-      const std::string command = fmt::format(
-          "{} run {} --set cut.depth_of_cut_mm={} --set grooves.shape={} --replicates {}{} --out {}", quoted(kerf_dem),
-          quoted(spec.scene), c.depth_of_cut_mm, c.groove_shape, spec.replicates, streams > 1 ? " --threads 1" : "",
-          quoted(out_dir / "runs" / c.name));
+      const std::vector<std::string> sets{fmt::format("cut.depth_of_cut_mm={}", c.depth_of_cut_mm),
+                                          fmt::format("grooves.shape={}", c.groove_shape)};
+      dem::RunOptions options;
+      options.out = out_dir / "runs" / c.name;
+      options.replicates = spec.replicates;
       {
+        // The same run from the command line.
         const std::lock_guard<std::mutex> lock(print_lock);
-        fmt::print("{}: {}\n", c.name, command);
+        fmt::print("{}: kerf-dem run {} --set {} --set {} --replicates {}{} --out {}\n", c.name, quoted(spec.scene),
+                   sets[0], sets[1], spec.replicates, streams > 1 ? " --threads 1" : "", quoted(options.out));
         std::fflush(stdout);
       }
-      status[k] = std::system(command.c_str());
+      try {
+        Json doc = scene;
+        for (const auto& set : sets) apply_override(doc, set);
+        outcomes[k] = dem::run_scene(doc, spec.scene, options);
+      } catch (...) {
+        failed[k] = std::current_exception();
+      }
     }
   };
   std::vector<std::thread> pool;
   for (std::size_t t = 0; t < streams; ++t) pool.emplace_back(run_conditions);
   for (auto& t : pool) t.join();
+  for (const auto& e : failed)
+    if (e) std::rethrow_exception(e);
   std::map<std::string, ConditionResult> results;
-  for (std::size_t k = 0; k < n_conditions; ++k) {
-    const auto& c = spec.conditions[k];
-    if (status[k] != 0)
-      throw ModelError("validation", fmt::format("kerf-dem failed for condition {} (status {})", c.name, status[k]));
-    results[c.name] = collect(c, out_dir / "runs" / c.name);
-  }
+  for (std::size_t k = 0; k < n_conditions; ++k) results[spec.conditions[k].name] = collect(spec.conditions[k], outcomes[k]);
 
   // 2. The kerf-dem table: one row per replicate, and the means that the report layer compares. Trapezoidal
   // grooves go beyond the paper (no measured counterpart): their rows carry their own source.

@@ -2,7 +2,7 @@
 // The seed-000 cutting validation (validation/soda_lime_cutting/): kerf-dem against the paper's DEM and
 // experiments, through the report layer, with the acceptance bands of validation.json.
 //
-//   kerf::CuttingValidation v = kerf::run_soda_lime_cutting_validation("out/validation/soda_lime_cutting", "build/tools/kerf-dem");
+//   kerf::CuttingValidation v = kerf::run_soda_lime_cutting_validation("out/validation/soda_lime_cutting");
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -15,13 +15,12 @@ struct CuttingValidation {
   bool passed() const { return failures.empty(); }
 };
 
-/// Runs every condition of validation/<case_name>/validation.json with the kerf-dem program (finished
-/// replicates are reused), then writes the tables, the two comparison reports and report.md/summary.json
+/// Runs every condition of validation/<case_name>/validation.json with the DEM library (kerf/dem/scene.hpp,
+/// as kerf-dem run --replicates does; finished replicates are reused), then writes the tables, the two comparison reports and report.md/summary.json
 /// into `out_dir`. Cases: soda_lime_cutting (the Table-2-calibrated glass) and soda_lime_cutting_cut_fitted
 /// (the glass whose bond strengths were fitted to one cut by kerf-dem calibrate_cut). `replicates` (2-100)
 /// overrides validation.json's packings per condition; 0 keeps it.
 CuttingValidation run_soda_lime_cutting_validation(const std::filesystem::path& out_dir,
-                                                   const std::filesystem::path& kerf_dem,
                                                    const std::string& case_name = "soda_lime_cutting",
                                                    int replicates = 0);
 

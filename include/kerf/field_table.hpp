@@ -38,7 +38,7 @@ namespace kerf {
 
 /// A unit as users type it, with its conversion to and from SI (functions, not a factor: deg -> rad is
 /// deg * pi / 180, which is not deg * (pi / 180) to the bit).
-struct Unit {
+struct FieldUnit {
   std::string_view symbol;  ///< "GPa", "deg", "" (dimensionless or already SI without a suffix)
   double (*to_si)(double);
   double (*from_si)(double);
@@ -46,24 +46,26 @@ struct Unit {
 
 namespace units {
 inline constexpr double identity(double v) { return v; }
-inline constexpr Unit kNone{"", identity, identity};
-inline constexpr Unit kSi(std::string_view symbol) { return {symbol, identity, identity}; }
-inline constexpr Unit kGPa{"GPa", gpa_to_pa, pa_to_gpa};
-inline constexpr Unit kMPa{"MPa", mpa_to_pa, pa_to_mpa};
-inline constexpr Unit kDeg{"deg", deg_to_rad, rad_to_deg};
-inline constexpr Unit kMm{"mm", mm_to_m, m_to_mm};
-inline constexpr Unit kUm{"um", um_to_m, m_to_um};
+inline constexpr FieldUnit kNone{"", identity, identity};
+inline constexpr FieldUnit kSi(std::string_view symbol) { return {symbol, identity, identity}; }
+inline constexpr FieldUnit kGPa{"GPa", gpa_to_pa, pa_to_gpa};
+inline constexpr FieldUnit kMPa{"MPa", mpa_to_pa, pa_to_mpa};
+inline constexpr FieldUnit kDeg{"deg", deg_to_rad, rad_to_deg};
+inline constexpr FieldUnit kMm{"mm", mm_to_m, m_to_mm};
+inline constexpr FieldUnit kUm{"um", um_to_m, m_to_um};
+inline constexpr FieldUnit kPercent{"%", percent_to_fraction, fraction_to_percent};
 }  // namespace units
 
 /// A real parameter, stored in SI on the struct.
 template <class S>
 struct NumberField {
   std::string_view key;
-  Unit unit;
+  FieldUnit unit;
   Range range;  ///< in the key's unit
   std::string_view doc;
   std::function<double(const S&)> get;  ///< SI
   std::function<void(S&, double)> set;  ///< SI
+  bool required = false;                ///< a key without a default: read_fields throws when it is absent
 };
 
 /// An integer parameter in [lo, hi].
@@ -103,8 +105,15 @@ using FieldTable = std::vector<Field<S>>;
 
 /// A number stored in SI in `member`.
 template <class S>
-NumberField<S> number_field(std::string_view key, Unit unit, Range range, std::string_view doc, double S::*member) {
-  return {key, unit, range, doc, [member](const S& s) { return s.*member; }, [member](S& s, double v) { s.*member = v; }};
+NumberField<S> number_field(std::string_view key, FieldUnit unit, Range range, std::string_view doc, double S::*member) {
+  return {key, unit, range, doc, [member](const S& s) { return s.*member; }, [member](S& s, double v) { s.*member = v; }, false};
+}
+/// A number the user must give (no default).
+template <class S>
+NumberField<S> required_number_field(std::string_view key, FieldUnit unit, Range range, std::string_view doc, double S::*member) {
+  NumberField<S> f = number_field(key, unit, range, doc, member);
+  f.required = true;
+  return f;
 }
 template <class S>
 IntField<S> int_field(std::string_view key, int lo, int hi, std::string_view doc, int S::*member) {
@@ -145,7 +154,8 @@ S read_fields(ObjectReader& reader, const FieldTable<S>& table, S s) {
           using F = std::decay_t<decltype(f)>;
           const std::string key(f.key);
           if constexpr (std::is_same_v<F, NumberField<S>>) {
-            if (const auto v = reader.get_optional_number(key, f.range, f.unit.symbol)) f.set(s, f.unit.to_si(*v));
+            if (f.required) f.set(s, f.unit.to_si(reader.get_number(key, f.range, f.unit.symbol)));
+            else if (const auto v = reader.get_optional_number(key, f.range, f.unit.symbol)) f.set(s, f.unit.to_si(*v));
           } else if constexpr (std::is_same_v<F, IntField<S>>) {
             f.set(s, reader.get_int_or(key, f.get(s), f.lo, f.hi));
           } else if constexpr (std::is_same_v<F, BoolField<S>>) {
@@ -215,7 +225,7 @@ std::string fields_markdown(const FieldTable<S>& table, const S& defaults = S{})
           if constexpr (std::is_same_v<F, NumberField<S>>) {
             if (!f.unit.symbol.empty()) unit = std::string(f.unit.symbol);
             valid = f.range.describe("");
-            value = format_value(f.unit.from_si(f.get(defaults)));
+            value = f.required ? "required" : format_value(f.unit.from_si(f.get(defaults)));
           } else if constexpr (std::is_same_v<F, IntField<S>>) {
             valid = fmt::format("an integer in [{}, {}]", f.lo, f.hi);
             value = std::to_string(f.get(defaults));

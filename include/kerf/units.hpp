@@ -25,6 +25,9 @@ constexpr double pa_to_gpa(double pa) { return pa * 1e-9; }
 constexpr double m_per_min_to_m_per_s(double v) { return v / 60.0; }
 constexpr double m_per_s_to_m_per_min(double v) { return v * 60.0; }
 
+constexpr double percent_to_fraction(double percent) { return percent / 100; }
+constexpr double fraction_to_percent(double fraction) { return 100 * fraction; }
+
 constexpr double celsius_to_kelvin(double c) { return c + 273.15; }
 
 }  // namespace kerf::units

@@ -24,11 +24,11 @@ Simulation tiny_specimen() {
   return make_specimen(Material{}, spec, report);
 }
 
-LoadingSpec loading(const char* test) {
+LoadingSpec loading(LabTest test) {
   LoadingSpec l;
   l.test = test;
   l.speed_m_per_s = 0.2;  // fast: the test is self-consistent, not quasi-static
-  l.max_strain = test[0] == 't' ? 0.005 : 0.02;
+  l.max_strain = test == LabTest::tension ? 0.005 : 0.02;
   l.quasi_static_check = false;
   return l;
 }
@@ -38,13 +38,13 @@ LoadingSpec loading(const char* test) {
 TEST_CASE("calibration: E follows E*, strengths follow (sigma_c, c)", "[calibration]") {
   const Simulation specimen = tiny_specimen();
   const Material base;
-  const MacroProperties a = measure_macro_properties(specimen, base, loading("tension"), loading("compression"));
+  const MacroProperties a = measure_macro_properties(specimen, base, loading(LabTest::tension), loading(LabTest::compression));
   Material stiffer = base;
   std::get<LinearContactParams>(stiffer.contact).effective_modulus_pa *= 1.5;
   std::get<FlatJointParams>(stiffer.joint).effective_modulus_pa *= 1.5;
   std::get<FlatJointParams>(stiffer.joint).tensile_strength_pa *= 1.5;  // same strain to failure: the time scale stays the same
   std::get<FlatJointParams>(stiffer.joint).cohesion_pa *= 1.5;
-  const MacroProperties b = measure_macro_properties(specimen, stiffer, loading("tension"), loading("compression"));
+  const MacroProperties b = measure_macro_properties(specimen, stiffer, loading(LabTest::tension), loading(LabTest::compression));
   CHECK_THAT(b.youngs_modulus_pa, WithinRel(1.5 * a.youngs_modulus_pa, 0.01));
   CHECK_THAT(b.poissons_ratio, WithinRel(a.poissons_ratio, 0.02));
   CHECK_THAT(b.tensile_strength_pa, WithinRel(1.5 * a.tensile_strength_pa, 0.03));
@@ -61,8 +61,8 @@ TEST_CASE("calibration: the macro-properties converge with the time step", "[cal
   fine.set_time_step_safety(0.5 * SimulationOptions{}.time_step_safety);
   REQUIRE_THAT(fine.time_step(), WithinRel(0.5 * coarse.time_step(), 1e-12));
   const Material m;
-  const MacroProperties a = measure_macro_properties(coarse, m, loading("tension"), loading("compression"));
-  const MacroProperties b = measure_macro_properties(fine, m, loading("tension"), loading("compression"));
+  const MacroProperties a = measure_macro_properties(coarse, m, loading(LabTest::tension), loading(LabTest::compression));
+  const MacroProperties b = measure_macro_properties(fine, m, loading(LabTest::tension), loading(LabTest::compression));
   CHECK_THAT(b.youngs_modulus_pa, WithinRel(a.youngs_modulus_pa, 0.001));
   CHECK_THAT(b.poissons_ratio, WithinRel(a.poissons_ratio, 0.002));
   CHECK_THAT(b.tensile_strength_pa, WithinRel(a.tensile_strength_pa, 0.01));
@@ -78,8 +78,8 @@ CalibrationSpec reachable_spec(const Simulation& specimen) {
   std::get<FlatJointParams>(hidden.joint).tensile_strength_pa = 150e6;
   std::get<FlatJointParams>(hidden.joint).cohesion_pa = 180e6;
   CalibrationSpec spec;
-  spec.tension = loading("tension");
-  spec.compression = loading("compression");
+  spec.tension = loading(LabTest::tension);
+  spec.compression = loading(LabTest::compression);
   spec.targets = measure_macro_properties(specimen, hidden, spec.tension, spec.compression);
   spec.max_evaluations = 16;
   return spec;

@@ -18,7 +18,7 @@ using Catch::Matchers::WithinRel;
 
 namespace {
 
-CutParams grooved(const std::string& shape) {
+CutParams grooved(GrooveShape shape) {
   CutParams p;
   p.groove_shape = shape;
   p.groove_depth_m = 0.1e-3;
@@ -45,13 +45,13 @@ double angle_deg(const std::array<double, 2>& a, const std::array<double, 2>& b)
 }  // namespace
 
 TEST_CASE("cutting: groove outline membership", "[cutting]") {
-  const CutParams rect = grooved("rectangular");
+  const CutParams rect = grooved(GrooveShape::rectangular);
   CHECK(inside_groove_outline(rect, 0, 0.05e-3));
   CHECK(inside_groove_outline(rect, 0.029e-3, 0.099e-3));
   CHECK_FALSE(inside_groove_outline(rect, 0.031e-3, 0.05e-3));  // beyond the half-width
   CHECK_FALSE(inside_groove_outline(rect, 0, 0.101e-3));        // below the groove bottom
   CHECK_FALSE(inside_groove_outline(rect, 0, -1e-6));           // above the surface
-  const CutParams trap = grooved("trapezoidal");
+  const CutParams trap = grooved(GrooveShape::trapezoidal);
   // Top as wide as the rectangle, bottom 0.02 mm: at mid-depth the half-width is 0.02 mm.
   CHECK(inside_groove_outline(trap, 0.029e-3, 0.001e-3));
   CHECK(inside_groove_outline(trap, 0.019e-3, 0.05e-3));
@@ -62,7 +62,7 @@ TEST_CASE("cutting: groove outline membership", "[cutting]") {
 }
 
 TEST_CASE("cutting: grooves every pitch across the cut path", "[cutting]") {
-  CutParams p = grooved("rectangular");
+  CutParams p = grooved(GrooveShape::rectangular);
   auto c = groove_centres(p, 0, 1e-3);
   REQUIRE(c.size() == 5);  // 0.9, 0.7, 0.5, 0.3, 0.1 mm: the last still right of the left edge
   for (std::size_t k = 0; k < c.size(); ++k) CHECK_THAT(c[k], WithinAbs(0.9e-3 - 0.2e-3 * static_cast<double>(k), 1e-12));
@@ -163,10 +163,10 @@ TEST_CASE("cutting: force signs (material resisting the tool gives positive main
 }
 
 TEST_CASE("cutting: parameters are validated with the dotted key", "[cutting]") {
-  CutParams p = grooved("trapezoidal");
+  CutParams p = grooved(GrooveShape::trapezoidal);
   p.groove_bottom_width_m = 0.07e-3;
   CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains("grooves.bottom_width_mm = 0.07"));
-  p = grooved("rectangular");
+  p = grooved(GrooveShape::rectangular);
   p.groove_width_m = 0.3e-3;
   CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains("grooves.width_mm = 0.3"));
   p = CutParams{};
@@ -312,7 +312,7 @@ TEST_CASE("cutting: a small cut regression (forces, cracks, determinism, grooves
   CutParams too_deep = p;
   too_deep.depth_of_cut_m = 0.24e-3;
   CHECK_THROWS_WITH(CutRun(specimen, too_deep), Catch::Contains("cut.depth_of_cut_mm = 0.24"));
-  too_deep = grooved("rectangular");
+  too_deep = grooved(GrooveShape::rectangular);
   too_deep.length_m = p.length_m;
   too_deep.groove_depth_m = 0.24e-3;
   CHECK_THROWS_WITH(CutRun(specimen, too_deep), Catch::Contains("grooves.depth_mm = 0.24"));
@@ -320,7 +320,7 @@ TEST_CASE("cutting: a small cut regression (forces, cracks, determinism, grooves
   CHECK_NOTHROW(CutRun(specimen, too_deep));
   // Grooves: fewer particles.
   CutParams g = p;
-  g.groove_shape = "rectangular";
+  g.groove_shape = GrooveShape::rectangular;
   g.groove_depth_m = p.depth_of_cut_m;
   g.groove_pitch_m = 0.1e-3;
   g.groove_width_m = 0.04e-3;
@@ -333,7 +333,7 @@ TEST_CASE("cutting: a small cut regression (forces, cracks, determinism, grooves
   g.groove_width_m = 0.08e-3;
   std::size_t removed_rectangle = 0, removed_trapezoid = 0;
   make_workpiece(specimen, g, removed_rectangle);
-  g.groove_shape = "trapezoidal";
+  g.groove_shape = GrooveShape::trapezoidal;
   g.groove_bottom_width_m = 0.01e-3;
   make_workpiece(specimen, g, removed_trapezoid);
   CHECK(removed_trapezoid > 0);
@@ -394,7 +394,7 @@ TEST_CASE("cutting: a cut the disks cannot resolve or the workpiece cannot hold 
   CHECK_NOTHROW(CutRun(specimen, c));
   // Grooves that remove no disk: too narrow to hold a disk's centre, or a pitch with no groove on the
   // surface. A groove as wide as a disk removes some.
-  c = grooved("rectangular");
+  c = grooved(GrooveShape::rectangular);
   c.length_m = p.length_m;
   c.groove_depth_m = p.depth_of_cut_m;
   c.groove_width_m = 0.01 * r_min;

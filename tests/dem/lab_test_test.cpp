@@ -18,7 +18,7 @@ using Catch::Matchers::WithinRel;
 
 TEST_CASE("lab test: hexagonal specimen's E and nu match the lattice closed form", "[lab_test]") {
   SpecimenSpec spec;
-  spec.packing = "hexagonal";
+  spec.packing = Packing::hexagonal;
   spec.width_m = 0.3e-3;
   spec.height_m = 0.6e-3;
   spec.radius_min_m = spec.radius_max_m = 10e-6;
@@ -35,19 +35,19 @@ TEST_CASE("lab test: hexagonal specimen's E and nu match the lattice closed form
   const double rows = std::round((spec.height_m - 2 * 10e-6) / (std::sqrt(3.0) * 10e-6)) + 1;
   const double lattice_width = static_cast<double>(sim.particles().size()) / rows * 20e-6;
   double e_compression = 0;
-  for (const char* test : {"compression", "tension"}) {
+  for (const LabTest test : {LabTest::compression, LabTest::tension}) {
     LoadingSpec load;
     load.test = test;
     load.max_strain = 4e-4;  // elastic range: stop on strain
     load.sample_every_steps = 20;
     const LabTestResult res = run_lab_test(sim, load);
-    INFO(test);
+    INFO(lab_test_names().name(test));
     CHECK(res.stop_reason.find("maximum strain") != std::string::npos);
     CHECK(res.curve.back().n_tension_cracks + res.curve.back().n_shear_cracks == 0);
     // Platen contacts (compression) and grip rows (tension) perturb the ends: a few per cent.
     const double e = res.youngs_modulus_pa * res.width_m / lattice_width;
     CHECK_THAT(e, WithinRel(e_closed, 0.05));
-    if (std::string(test) == "compression") {
+    if (test == LabTest::compression) {
       CHECK_THAT(res.poissons_ratio, WithinRel(nu_closed, 0.15));
       e_compression = e;
     } else {
@@ -65,9 +65,9 @@ TEST_CASE("lab test: small random specimen regression", "[lab_test]") {
   const Simulation sim = make_specimen(m, spec, report);
   LoadingSpec load;
   load.speed_m_per_s = 0.1;
-  load.test = "tension";
+  load.test = LabTest::tension;
   const LabTestResult t = run_lab_test(sim, load);
-  load.test = "compression";
+  load.test = LabTest::compression;
   const LabTestResult c = run_lab_test(sim, load);
   const kerf::Json now{{"n_particles", report.n_particles},
                        {"n_bonds", report.n_bonds},
@@ -105,7 +105,7 @@ TEST_CASE("lab test: a loading too slow to reach max_strain within 1e9 steps is 
     return make_specimen(m, kerf::dem::testing::quick_random_spec(0.2e-3, 0.4e-3, 7), report);
   }();
   LoadingSpec load;
-  load.test = "tension";
+  load.test = LabTest::tension;
   load.quasi_static_check = false;
   const LabTestRun probe(sim, load);
   const double dt = probe.result().time_step_s, length = probe.result().height_m;

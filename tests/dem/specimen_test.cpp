@@ -29,7 +29,7 @@ TEST_CASE("specimen: hexagonal lattice stress under affine strain matches the cl
   // Triangular lattice of disks (spacing d = 2R) with bond stiffnesses K_n, K_s: lambda = sqrt(3)/4 (K_n - K_s),
   // mu = sqrt(3)/4 (K_n + K_s) per thickness (sum over the 3 bond directions of the cell, area 2 sqrt(3) R^2).
   SpecimenSpec spec;
-  spec.packing = "hexagonal";
+  spec.packing = Packing::hexagonal;
   spec.width_m = spec.height_m = 0.3e-3;
   spec.radius_min_m = spec.radius_max_m = 10e-6;
   Material m;
@@ -121,7 +121,7 @@ TEST_CASE("specimen: save and load round trip", "[specimen]") {
   Material m;
   SpecimenReport report;
   SpecimenSpec spec = small_random();
-  spec.packing = "hexagonal";
+  spec.packing = Packing::hexagonal;
   Simulation sim = make_specimen(m, spec, report);
   sim.bonds().bonded[3] = 0;  // a damaged element must survive the round trip
   const auto file = std::filesystem::path(KERF_BINARY_DIR) / "specimen_roundtrip.json";
@@ -134,6 +134,6 @@ TEST_CASE("specimen: save and load round trip", "[specimen]") {
   CHECK(loaded.bonds().bonded == sim.bonds().bonded);
   CHECK(loaded.bonds().ref_distance_m == sim.bonds().ref_distance_m);
   CHECK(report2.n_bonds == report.n_bonds);
-  CHECK(spec2.packing == "hexagonal");
+  CHECK(spec2.packing == Packing::hexagonal);
   std::filesystem::remove(file);
 }

@@ -1,6 +1,6 @@
 #pragma once
 // Which regime a cut is in: the ductile-to-brittle critical depth of Bifano, Dow & Scattergood (1991),
-// ../shared/docs/physics-analytic.md §6:
+// docs/physics-analytic.md §6:
 //
 //   d_c = 0.15 (E / H) (K_c / H)^2
 //

@@ -12,7 +12,7 @@
 // g_top = a (nominal rake) when t0 > r (1 + sin a), with the straight rake face cutting
 // t_rake = t0 - r (1 + sin a); else g_top = asin(t0 / r - 1) and t_rake = 0.
 //
-// Where the seed is silent (see ../shared/docs/physics-analytic.md §2), kerf makes these explicit choices,
+// Where the seed is silent (see docs/physics-analytic.md §2), kerf makes these explicit choices,
 // reported with every prediction:
 // - the friction closure beta_k: constant (beta), Merchant (2 phi_k + beta_k - g = pi/2) or Lee-Shaffer
 //   (phi_k + beta_k - g = pi/4);

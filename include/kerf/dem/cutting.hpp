@@ -24,9 +24,14 @@
 #include <vector>
 
 #include "kerf/dem/simulation.hpp"
+#include "kerf/field_table.hpp"
 #include "kerf/json_reader.hpp"
 
 namespace kerf::dem {
+
+enum class GrooveShape { none, rectangular, trapezoidal };
+/// "none", "rectangular", "trapezoidal" (the inverted trapezoid of the real laser grooves).
+const EnumNames<GrooveShape>& groove_shape_names();
 
 struct CutParams {
   double depth_of_cut_m = 0.1e-3;
@@ -41,7 +46,7 @@ struct CutParams {
   /// Height of the rake face's top above the tool tip; 0 (the default): 3 depths of cut, room for the chip.
   /// Seed 000 does not give its tool's size: a fixed height is one tool for every depth of cut.
   double rake_face_height_m = 0;
-  std::string groove_shape = "none";  ///< "none", "rectangular", "trapezoidal"
+  GrooveShape groove_shape = GrooveShape::none;
   double groove_depth_m = 0.1e-3, groove_pitch_m = 0.2e-3, groove_width_m = 0.06e-3;
   double groove_bottom_width_m = 0.03e-3;  ///< trapezoidal only: width at the groove bottom
   /// Part of the travel excluded from the mean forces (the entry), as a fraction of the travel.
@@ -51,7 +56,12 @@ struct CutParams {
   double window_m = 0.1e-3;
 };
 
-/// Checks cross-field constraints (groove narrower than its pitch, trapezoid bottom narrower than its
+/// The keys of the scene's "cut", "tool" and "grooves" sections (kerf/field_table.hpp).
+const FieldTable<CutParams>& cut_fields();
+const FieldTable<CutParams>& tool_fields();
+const FieldTable<CutParams>& groove_fields();
+
+/// Checks every field's range and the cross-field constraints (groove narrower than its pitch, trapezoid bottom narrower than its
 /// top, the tool's wedge angle positive ...); InputError names the dotted key, value and expectation.
 void validate_cut_params(const CutParams& params);
 

@@ -6,7 +6,7 @@
 // lateral strain from the particles on the two sides (middle half of the height). E and nu are secant
 // values at 50 % of the peak.
 //
-//   LoadingSpec load = read_loading_spec(reader, "compression");
+//   LoadingSpec load = read_loading_spec(reader, LabTest::compression);
 //   LabTestResult res = run_lab_test(specimen_sim, load);
 #include <cstdint>
 #include <functional>
@@ -15,12 +15,17 @@
 #include <vector>
 
 #include "kerf/dem/simulation.hpp"
+#include "kerf/field_table.hpp"
 #include "kerf/json_reader.hpp"
 
 namespace kerf::dem {
 
+enum class LabTest { tension, compression };
+/// "tension", "compression".
+const EnumNames<LabTest>& lab_test_names();
+
 struct LoadingSpec {
-  std::string test = "compression";  ///< "tension" or "compression"
+  LabTest test = LabTest::compression;
   double speed_m_per_s = 0.05;       ///< of each platen (grip)
   double stop_fraction = 0.7;        ///< stop when the stress falls below this fraction of the peak
   double max_strain = 0.02;          ///< stop anyway at this axial strain
@@ -28,9 +33,11 @@ struct LoadingSpec {
   bool quasi_static_check = true;    ///< rerun at half the speed and report the change of the peak
 };
 
-/// Reads the "loading" object: speed_m_per_s, stop_fraction_of_peak, max_strain, sample_every_steps,
+/// The "loading" section's keys: speed_m_per_s, stop_fraction_of_peak, max_strain, sample_every_steps,
 /// quasi_static_check.
-LoadingSpec read_loading_spec(ObjectReader& reader, const std::string& test);
+const FieldTable<LoadingSpec>& loading_fields();
+/// Reads the "loading" object (max_strain defaults to 0.005 in tension).
+LoadingSpec read_loading_spec(ObjectReader& reader, LabTest test);
 
 struct CurveSample {
   double time_s, axial_strain, lateral_strain, stress_pa;  ///< strain and stress positive in the loading sense
@@ -38,7 +45,7 @@ struct CurveSample {
 };
 
 struct LabTestResult {
-  std::string test;
+  LabTest test = LabTest::compression;
   std::vector<CurveSample> curve;
   double peak_stress_pa = 0, strain_at_peak = 0;
   double youngs_modulus_pa = 0, poissons_ratio = 0;  ///< secant at 50 % of the peak

@@ -8,7 +8,7 @@
 // Hexagonal packing: equal disks of radius (R_min + R_max) / 2 on a triangular lattice, every touching
 // pair jointed (closed-form elastic constants, for verification).
 //
-//   SpecimenSpec spec = read_specimen_spec(scene.at("specimen"), "specimen");
+//   SpecimenSpec spec = read_specimen_spec(specimen_reader);  // the scene's "specimen" object
 //   SpecimenReport report;
 //   Simulation sim = make_specimen(material, spec, report);
 //   save_specimen("out/specimen.json", sim, spec, report);
@@ -17,14 +17,19 @@
 #include <string>
 
 #include "kerf/dem/simulation.hpp"
+#include "kerf/field_table.hpp"
 #include "kerf/json_reader.hpp"
 
 namespace kerf::dem {
 
+enum class Packing { random, hexagonal };
+/// "random", "hexagonal".
+const EnumNames<Packing>& packing_names();
+
 struct SpecimenSpec {
   double width_m = 1e-3, height_m = 2e-3, thickness_m = 1e-3;
   double radius_min_m = 7.5e-6, radius_max_m = 10e-6;
-  std::string packing = "random";           ///< "random" or "hexagonal"
+  Packing packing = Packing::random;
   std::uint64_t seed = 1;
   double packing_fraction = 0.85;           ///< area fraction used to choose the number of disks (random)
   double compaction_pressure_pa = 3e6;      ///< isotropic pressure of the frictionless compaction
@@ -32,8 +37,14 @@ struct SpecimenSpec {
   int growth_steps = 6000, relax_steps = 2000;
 };
 
-/// Reads the "specimen" object: width_mm, height_mm, thickness_mm, radius_min_um, radius_max_um, packing,
-/// seed, packing_fraction, compaction_pressure_MPa, installation_gap_um, growth_steps, relax_steps.
+/// The "specimen" section's keys (kerf/field_table.hpp): width_mm, height_mm, thickness_mm, radius_min_um,
+/// radius_max_um, packing, seed, packing_fraction, compaction_pressure_MPa, installation_gap_um, growth_steps,
+/// relax_steps.
+const FieldTable<SpecimenSpec>& specimen_fields();
+/// Every field's range and the relations between them (radius_max >= radius_min, at most 1/8 of the smaller
+/// side, at most 5 million disks); InputError names the key ("radius_max_um").
+void check_specimen_spec(const SpecimenSpec& spec);
+/// Reads the "specimen" object (the table's ranges, then the relations; errors name the dotted path).
 SpecimenSpec read_specimen_spec(ObjectReader& reader);
 Json specimen_spec_to_json(const SpecimenSpec& spec);
 
@@ -46,7 +57,9 @@ struct EngineSettings {
   void apply_to(Simulation& sim) const;
 };
 
-/// Reads the optional "engine" object of a scene (time_step_safety, min_parallel_items) and rejects other keys.
+/// The "engine" section's keys: time_step_safety, min_parallel_items.
+const FieldTable<EngineSettings>& engine_fields();
+/// Reads the optional "engine" object of a scene and rejects other keys.
 EngineSettings read_engine_settings(ObjectReader& scene_root);
 
 struct SpecimenReport {

@@ -1,0 +1,218 @@
+// Scene kind "calibrate": the micro-parameters fitted to macro-properties by tension and compression tests
+// (kerf/dem/calibration.hpp), with a checkpoint after every evaluation.
+#include <fmt/format.h>
+
+#include <chrono>
+#include <iostream>
+
+#include "common.hpp"
+#include "kerf/csv_table.hpp"
+#include "kerf/dem/calibration.hpp"
+#include "kerf/error.hpp"
+#include "kerf/io.hpp"
+#include "kerf/material.hpp"
+#include "kerf/units.hpp"
+
+namespace kerf::dem::kinds {
+
+namespace {
+
+const EnumNames<CalibrationMethod>& method_names() {
+  static constexpr std::string_view names[] = {"hybrid", "secant"};
+  static const EnumNames<CalibrationMethod> table{names};
+  return table;
+}
+
+/// The "calibration" section's own numbers.
+const FieldTable<CalibrationSpec>& calibration_fields() {
+  static const FieldTable<CalibrationSpec> table{
+      number_field("tolerance_percent", units::kPercent, Range::open(0.0, 100.0),
+                   "largest relative error of each of E, nu, sigma_t, sigma_c for convergence", &CalibrationSpec::tolerance),
+      int_field("max_evaluations", 1, 1000, "DEM evaluations (one tension and one compression test each)",
+                &CalibrationSpec::max_evaluations),
+      choice_field("method", method_names(), "root finder (kerf/dem/calibration.hpp)", &CalibrationSpec::method)};
+  return table;
+}
+
+/// "calibration.targets": the macro-properties to meet (after those of a "file" row, if given).
+const FieldTable<MacroProperties>& target_fields() {
+  static const FieldTable<MacroProperties> table{
+      number_field("youngs_modulus_GPa", units::kGPa, Range::positive(), "Young's modulus E",
+                   &MacroProperties::youngs_modulus_pa),
+      number_field("poissons_ratio", units::kNone, Range::open(0.0, 0.5), "Poisson's ratio nu",
+                   &MacroProperties::poissons_ratio),
+      number_field("tensile_strength_MPa", units::kMPa, Range::positive(), "tensile strength sigma_t",
+                   &MacroProperties::tensile_strength_pa),
+      number_field("compressive_strength_MPa", units::kMPa, Range::positive(), "unconfined compressive strength sigma_c",
+                   &MacroProperties::compressive_strength_pa)};
+  return table;
+}
+
+/// One row (first column = `row`) of a macro-property table (data/experiments/*.csv).
+MacroProperties read_targets_csv(const fs::path& path, const std::string& row, const std::string& field) {
+  if (!fs::exists(path)) throw InputError(field + ".file", path.string(), "a readable CSV file");
+  const CsvTable t = read_csv_file(path);
+  for (std::size_t k = 0; k < t.rows.size(); ++k) {
+    if (t.rows[k].empty() || t.rows[k][0] != row) continue;
+    const auto value = [&](const char* name) { return t.number(k, t.column_index(name)); };
+    return {units::gpa_to_pa(value("youngs_modulus_GPa")), value("poissons_ratio"),
+            units::mpa_to_pa(value("tensile_strength_MPa")), units::mpa_to_pa(value("compressive_strength_MPa"))};
+  }
+  throw InputError(field + ".row", row, "a row of " + path.string());
+}
+
+Json macro_json(const MacroProperties& m) { return fields_to_json(target_fields(), m); }
+
+class CalibrateKind final : public SceneKind {
+ public:
+  void read(ObjectReader& root, const SceneCommon&) override {
+    auto& c = spec_;
+    ObjectReader cal = root.get_object("calibration");
+    if (auto targets = cal.find_object("targets")) {
+      if (targets->has("file")) {
+        fs::path file = targets->get_string("file");
+        if (file.is_relative()) file = kerf::data_directory() / file;
+        c.targets = read_targets_csv(file, targets->get_string_or("row", "soda_lime_glass"), targets->path());
+      }
+      c.targets = read_fields(*targets, target_fields(), c.targets);
+      targets->finish();
+    }
+    if (const Json* free = cal.find("free")) {
+      const std::vector<std::string> valid{"effective_modulus_GPa", "stiffness_ratio", "tensile_strength_MPa", "cohesion_MPa"};
+      if (!free->is_array()) throw InputError(cal.key_path("free"), json_value_text(*free), "a list of parameter names");
+      c.free_modulus = c.free_stiffness_ratio = c.free_tensile_strength = c.free_cohesion = false;
+      for (const auto& item : *free) {
+        const std::string name = item.is_string() ? item.get<std::string>() : json_value_text(item);
+        if (std::find(valid.begin(), valid.end(), name) == valid.end())
+          throw InputError(cal.key_path("free"), name, describe_choices(name, valid));
+        c.free_modulus |= name == valid[0];
+        c.free_stiffness_ratio |= name == valid[1];
+        c.free_tensile_strength |= name == valid[2];
+        c.free_cohesion |= name == valid[3];
+      }
+    }
+    c = read_fields(cal, calibration_fields(), c);
+    output_ = read_material_output(cal, "calibrated");
+    cal.finish();
+    LoadingSpec load;
+    if (auto loading = root.find_object("loading")) {
+      load = read_loading_spec(*loading, LabTest::compression);
+      loading->finish();
+    }
+    load.quasi_static_check = false;
+    c.compression = load;
+    c.compression.test = LabTest::compression;
+    c.tension = load;
+    c.tension.test = LabTest::tension;
+    c.tension.max_strain = std::min(load.max_strain, 0.005);
+  }
+
+  SceneOutcome run(const SceneCommon& common, const SceneRun& run) override {
+    SpecimenSpec spec;
+    SpecimenReport report;
+    double genesis_s = 0;
+    const Simulation specimen = obtain_specimen(common, spec, report, genesis_s, run.options.show_progress);
+    Json summary = summary_head("calibrate", common.material);
+    summary["specimen"] = specimen_json(spec, report, genesis_s);
+    summary["time_step_s"] = specimen.time_step();
+    return calibrate_from(common, run, specimen, std::move(summary), {});
+  }
+
+  SceneOutcome resume(const SceneCommon& common, const SceneRun& run, const Checkpoint& c) override {
+    return calibrate_from(common, run, Simulation::deserialize(c.specimen), c.summary, deserialize_evaluations(c.run));
+  }
+
+ private:
+  CalibrationSpec spec_;
+  MaterialOutput output_;
+
+  /// Runs (or, with `known` from a checkpoint, continues) the calibration. With checkpoints a checkpoint is
+  /// written after every evaluation (an evaluation is the unit of work that cannot be cut short).
+  SceneOutcome calibrate_from(const SceneCommon& common, const SceneRun& run, const Simulation& specimen, Json summary,
+                              const std::vector<CalibrationEvaluation>& known) const {
+    const fs::path& out = run.options.out;
+    const int checkpoint_every = run.options.checkpoint_every;
+    const auto start = std::chrono::steady_clock::now();
+    const std::string specimen_bytes = checkpoint_every > 0 ? specimen.serialize() : std::string();
+    std::vector<CalibrationEvaluation> done;
+    std::string log = csv_line({"evaluation", "effective_modulus_GPa", "stiffness_ratio", "tensile_strength_MPa",
+                                "cohesion_MPa", "youngs_modulus_GPa", "poissons_ratio", "macro_tensile_strength_MPa",
+                                "macro_compressive_strength_MPa", "max_error_percent", "wall_time_s"});
+    const CalibrationResult r = calibrate(specimen, common.material, spec_, [&](const CalibrationEvaluation& e) {
+      const CalibratedParams m = calibrated_params(e.material);
+      log += csv_line({std::to_string(e.index), csv_number(units::pa_to_gpa(m.contact_modulus_pa)),
+                       csv_number(m.stiffness_ratio), csv_number(units::pa_to_mpa(m.tensile_strength_pa)),
+                       csv_number(units::pa_to_mpa(m.cohesion_pa)), csv_number(units::pa_to_gpa(e.macro.youngs_modulus_pa)),
+                       csv_number(e.macro.poissons_ratio), csv_number(units::pa_to_mpa(e.macro.tensile_strength_pa)),
+                       csv_number(units::pa_to_mpa(e.macro.compressive_strength_pa)), csv_number(100 * e.max_relative_error),
+                       csv_number(e.wall_time_s)});
+      write_file_atomically(out / "calibration_log.csv", log);
+      done.push_back(e);
+      if (checkpoint_every > 0)
+        write_checkpoint(out, {run.doc, summary, {}, static_cast<int>(done.size()), checkpoint_every, run.scene_dir,
+                               specimen_bytes, serialize_evaluations(done)});
+      std::cout << fmt::format("evaluation {}: E* {:.2f} GPa, kappa {:.3f}, sigma_c {:.1f} MPa, c {:.1f} MPa -> E {:.2f} GPa, "
+                               "nu {:.3f}, sigma_t {:.1f} MPa, sigma_C {:.1f} MPa (max error {:.1f} %, {:.0f} s{})\n",
+                               e.index, units::pa_to_gpa(m.contact_modulus_pa), m.stiffness_ratio,
+                               units::pa_to_mpa(m.tensile_strength_pa), units::pa_to_mpa(m.cohesion_pa),
+                               units::pa_to_gpa(e.macro.youngs_modulus_pa), e.macro.poissons_ratio,
+                               units::pa_to_mpa(e.macro.tensile_strength_pa), units::pa_to_mpa(e.macro.compressive_strength_pa),
+                               100 * e.max_relative_error, e.wall_time_s, e.from_checkpoint ? ", from the checkpoint" : "")
+                << std::flush;
+    }, known);
+    Material calibrated = r.material;
+    calibrated.name = output_.name;
+    const auto& t = spec_.targets;
+    const std::string description = fmt::format(
+        "Calibrated by kerf-dem calibrate ({} evaluations, {}converged: max error {:.2f} % against targets E {:.1f} GPa, "
+        "nu {:.3f}, sigma_t {:.1f} MPa, sigma_c {:.1f} MPa) on a {} specimen of {} disks.",
+        r.log.size(), r.converged ? "" : "NOT ", 100 * r.max_relative_error, units::pa_to_gpa(t.youngs_modulus_pa),
+        t.poissons_ratio, units::pa_to_mpa(t.tensile_strength_pa), units::pa_to_mpa(t.compressive_strength_pa),
+        summary["specimen"]["packing"].get<std::string>(), specimen.particles().size());
+    const Json material = library_material_json(calibrated, "Flat-joint DEM material calibrated by kerf-dem",
+                                                description, "kerf-dem calibrate (see description)");
+    write_material_output(output_, material, out, summary);
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    summary["results"] = Json{{"converged", r.converged},
+                              {"max_error_percent", 100 * r.max_relative_error},
+                              {"evaluations", r.log.size()},
+                              {"targets", macro_json(t)},
+                              {"achieved", macro_json(r.macro)},
+                              {"calibrated_material", material}};
+    summary["n_particles"] = specimen.particles().size();
+    summary["wall_time_s"] = wall;
+    write_summary(out, summary);
+    remove_checkpoint(out);  // finished: nothing to resume
+    std::cout << fmt::format("calibration {} after {} evaluations (max error {:.2f} %), {:.0f} s -> {}\n",
+                             r.converged ? "converged" : "did NOT converge", r.log.size(), 100 * r.max_relative_error,
+                             wall, (out / (output_.name + ".json")).string());
+    return {r.converged ? 0 : kExitModelError, summary, {}};
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<SceneKind> make_calibrate_kind() { return std::make_unique<CalibrateKind>(); }
+
+}  // namespace kerf::dem::kinds
+
+namespace kerf::dem::kinds {
+
+std::string calibrate_keys_markdown() {
+  return fields_markdown(calibration_fields()) +
+         "| `free` | - | a list of `effective_modulus_GPa`, `stiffness_ratio`, `tensile_strength_MPa`, `cohesion_MPa` | "
+         "all four | the micro-parameters the calibration may change |\n"
+         "| `material_name` | - | a file name without '/', '.', spaces | `calibrated` | the fitted material: "
+         "OUT/<name>.json |\n"
+         "| `install_material` | - | true or false | false | also write data/materials/<name>.json |\n"
+         "| `targets` | - | an object | seed 000 Table 2 | the macro-properties to meet (`calibration.targets`) |\n";
+}
+
+std::string calibrate_targets_keys_markdown() {
+  return fields_markdown(target_fields(), CalibrationSpec{}.targets) +
+         "| `file` | - | a CSV file (relative: to the data directory) | - | a table of macro-properties "
+         "(data/experiments/*.csv); the keys above override its row |\n"
+         "| `row` | - | the first cell of a row of `file` | `soda_lime_glass` | the row to use |\n";
+}
+
+}  // namespace kerf::dem::kinds

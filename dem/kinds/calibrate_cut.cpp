@@ -1,0 +1,179 @@
+// Scene kind "calibrate_cut": the bond-strength factor s (kerf/dem/cut_calibration.hpp) fitted so that the
+// mean main force over `replicates` packings meets a measured one. Evaluation k runs its replicates in
+// OUT/evaluation_k/ (as --replicates does); rerunning the same command after a kill reuses every finished
+// replicate, and the factors that follow are the same (each is computed from the same forces, to the bit).
+#include <fmt/format.h>
+#include <omp.h>
+
+#include <chrono>
+#include <cmath>
+#include <iostream>
+
+#include "common.hpp"
+#include "kerf/dem/cut_calibration.hpp"
+#include "kerf/error.hpp"
+#include "kerf/io.hpp"
+#include "kerf/units.hpp"
+
+namespace kerf::dem::kinds {
+
+namespace {
+
+/// The "calibration" section of a calibrate_cut scene (besides material_name and install_material).
+struct CutFit {
+  double target_main_force_n = 0;
+  std::string target_source;
+  int replicates = 3;
+  double tolerance = 0.10;
+  int max_evaluations = 4;
+  double start_factor = 1;
+};
+
+const FieldTable<CutFit>& cut_fit_fields() {
+  static const FieldTable<CutFit> table{
+      required_number_field("target_main_force_N", units::kSi("N"), Range::positive(),
+                            "the measured mean main force to meet", &CutFit::target_main_force_n),
+      int_field("replicates", 2, 64, "packings per evaluation (seeds specimen.seed + 0, 1, ...)", &CutFit::replicates),
+      number_field("tolerance_percent", units::kPercent, Range::open(0.0, 100.0),
+                   "relative error of the mean main force for convergence", &CutFit::tolerance),
+      int_field("max_evaluations", 1, 50, "evaluations (each `replicates` cuts)", &CutFit::max_evaluations),
+      number_field("start_strength_factor", units::kNone, Range::positive(), "the first evaluation's factor s",
+                   &CutFit::start_factor)};
+  return table;
+}
+
+class CalibrateCutKind final : public SceneKind {
+ public:
+  void read(ObjectReader& root, const SceneCommon&) override {
+    cut_ = read_cut_params(root);
+    ObjectReader cal = root.get_object("calibration");
+    fit_ = read_fields(cal, cut_fit_fields(), fit_);
+    fit_.target_source = cal.get_string_or("target_source", "");
+    output_ = read_material_output(cal, "cut_calibrated");
+    cal.finish();
+  }
+
+  void check_options(const RunOptions& options, const SceneCommon& common) const override {
+    if (options.checkpoint_every > 0)
+      throw InputError("--checkpoint-every", std::to_string(options.checkpoint_every),
+                       "no checkpoints for calibrate_cut (rerun the command: finished replicates are reused)");
+    if (common.specimen_file)
+      throw InputError("specimen.file", *common.specimen_file,
+                       "a scene that generates its specimen (calibrate_cut runs replicates on packings specimen.seed + k)");
+    SceneKind::check_options(options, common);
+  }
+
+  SceneOutcome run(const SceneCommon& common, const SceneRun& run) override {
+    const fs::path& out = run.options.out;
+    const auto start = std::chrono::steady_clock::now();
+    const auto& fit = fit_;
+    std::vector<CutCalibrationPoint> history;
+    Json evaluations = Json::array();
+    // calibration_log.csv: the evaluation's number, these fields of its summary row, and its wall time.
+    const std::vector<std::string> logged{"strength_factor",   "tensile_strength_MPa",       "cohesion_MPa",
+                                          "main_force_N",      "main_force_replicate_std_N", "thrust_force_N",
+                                          "thrust_force_replicate_std_N", "relative_error_percent"};
+    std::vector<std::string> header{"evaluation"};
+    header.insert(header.end(), logged.begin(), logged.end());
+    header.push_back("wall_time_s");
+    std::string log = csv_line(header);
+    double s = fit.start_factor;
+    std::size_t best = 0;
+    bool converged = false;
+    for (int k = 1; k <= fit.max_evaluations && !converged; ++k) {
+      if (k > 1) s = next_strength_factor(history, fit.target_main_force_n);
+      SceneCommon e = common;
+      e.material = scale_bond_strengths(common.material, s, fmt::format("{}_bond_strength_x{:.6g}", common.material.name, s));
+      const fs::path dir = out / fmt::format("evaluation_{}", k);
+      fs::create_directories(dir);
+      std::cout << fmt::format("evaluation {}: bond strengths x {:.4g} (sigma_c {:.2f} MPa, c {:.2f} MPa), {} replicates\n",
+                               k, s, units::pa_to_mpa(calibrated_params(e.material).tensile_strength_pa),
+                               units::pa_to_mpa(calibrated_params(e.material).cohesion_pa), fit.replicates)
+                << std::flush;
+      const Json done =
+          run_cut_replicates(e, cut_, fit.replicates, summary_head("cut", e.material), dir).summary;
+      const Json& r = done["results"];
+      const double force = r["main_force_N"].get<double>();
+      const double error = force / fit.target_main_force_n - 1;
+      history.push_back({s, force});
+      if (std::abs(error) < std::abs(history[best].main_force_n / fit.target_main_force_n - 1)) best = history.size() - 1;
+      converged = std::abs(error) <= fit.tolerance;
+      const Json row{{"evaluation", k},
+                     {"strength_factor", s},
+                     {"tensile_strength_MPa", units::pa_to_mpa(calibrated_params(e.material).tensile_strength_pa)},
+                     {"cohesion_MPa", units::pa_to_mpa(calibrated_params(e.material).cohesion_pa)},
+                     {"main_force_N", force},
+                     {"main_force_replicate_std_N", r["main_force_replicate_std_N"]},
+                     {"thrust_force_N", r["thrust_force_N"]},
+                     {"thrust_force_replicate_std_N", r["thrust_force_replicate_std_N"]},
+                     {"relative_error_percent", 100 * error},
+                     {"directory", dir.filename().string()}};
+      evaluations.push_back(row);
+      std::vector<std::string> cells{std::to_string(k)};
+      for (const auto& key : logged) cells.push_back(csv_number(row[key].get<double>()));
+      cells.push_back(csv_number(done["wall_time_s"].get<double>()));
+      log += csv_line(cells);
+      write_file_atomically(out / "calibration_log.csv", log);
+      std::cout << fmt::format("evaluation {}: main force {:.4g} N against {:.4g} N ({:+.1f} %, tolerance {:.0f} %)\n", k,
+                               force, fit.target_main_force_n, 100 * error, 100 * fit.tolerance)
+                << std::flush;
+    }
+    const CutCalibrationPoint& b = history[best];
+    Material named = scale_bond_strengths(common.material, b.strength_factor, output_.name);
+    named.name = output_.name;  // factor 1 keeps the base's name
+    const double sem = evaluations[best]["main_force_replicate_std_N"].get<double>() / std::sqrt(fit.replicates);
+    const std::string description = fmt::format(
+        "{} with both bond strengths (sigma_c, c) x {:.4g}, fitted by kerf-dem calibrate_cut to a mean main force of "
+        "{:.4g} N{} ({} evaluations, {}converged: {:.4g} +- {:.2g} N, mean +- standard error over {} packings) on the "
+        "cut: depth {:g} mm, speed {:g} m/s, travel {:g} mm, rake {:g} deg, grooves {}. The macro strengths scale by the "
+        "same factor (exact trend), E and nu are those of the base material.",
+        common.material.name, b.strength_factor, fit.target_main_force_n,
+        fit.target_source.empty() ? "" : " (" + fit.target_source + ")", history.size(), converged ? "" : "NOT ",
+        b.main_force_n, sem, fit.replicates, units::m_to_mm(cut_.depth_of_cut_m), cut_.speed_m_per_s,
+        units::m_to_mm(cut_.length_m), cut_.rake_deg, groove_shape_names().name(cut_.groove_shape));
+    const Json material = library_material_json(named, "Flat-joint DEM material fitted to one measured cut by kerf-dem",
+                                                description, "kerf-dem calibrate_cut (see description)");
+    Json summary = summary_head("calibrate_cut", common.material);
+    summary["cut"] = cut_params_to_json(cut_);
+    write_material_output(output_, material, out, summary);
+    summary["results"] = Json{{"converged", converged},
+                              {"target_main_force_N", fit.target_main_force_n},
+                              {"target_source", fit.target_source},
+                              {"strength_factor", b.strength_factor},
+                              {"main_force_N", b.main_force_n},
+                              {"main_force_standard_error_N", sem},
+                              {"relative_error_percent", 100 * (b.main_force_n / fit.target_main_force_n - 1)},
+                              {"evaluations", evaluations},
+                              {"calibrated_material", material}};
+    summary["wall_time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    write_summary(out, summary);
+    std::cout << fmt::format("cut calibration {} after {} evaluations: bond strengths x {:.4g}, main force {:.4g} +- {:.2g} N "
+                             "against {:.4g} N -> {}\n",
+                             converged ? "converged" : "did NOT converge", history.size(), b.strength_factor,
+                             b.main_force_n, sem, fit.target_main_force_n, (out / (output_.name + ".json")).string());
+    return {converged ? 0 : kExitModelError, summary, {}};
+  }
+
+ private:
+  CutParams cut_;
+  CutFit fit_;
+  MaterialOutput output_;
+};
+
+}  // namespace
+
+std::unique_ptr<SceneKind> make_calibrate_cut_kind() { return std::make_unique<CalibrateCutKind>(); }
+
+}  // namespace kerf::dem::kinds
+
+namespace kerf::dem::kinds {
+
+std::string calibrate_cut_keys_markdown() {
+  return fields_markdown(cut_fit_fields()) +
+         "| `target_source` | - | text | empty | where the target comes from (in the fitted material's description) |\n"
+         "| `material_name` | - | a file name without '/', '.', spaces | `cut_calibrated` | the fitted material: "
+         "OUT/<name>.json |\n"
+         "| `install_material` | - | true or false | false | also write data/materials/<name>.json |\n";
+}
+
+}  // namespace kerf::dem::kinds

@@ -1,0 +1,81 @@
+// What the scene kinds share (dem/kinds/common.hpp).
+#include "common.hpp"
+
+#include <fmt/format.h>
+#include <omp.h>
+
+#include <chrono>
+#include <optional>
+
+#include "kerf/dem/output.hpp"
+#include "kerf/error.hpp"
+#include "kerf/io.hpp"
+#include "kerf/material.hpp"
+
+namespace kerf::dem::kinds {
+
+Simulation obtain_specimen(const SceneCommon& scene, SpecimenSpec& spec, SpecimenReport& report, double& wall_s,
+                           bool show_progress) {
+  const auto start = std::chrono::steady_clock::now();
+  std::optional<Simulation> sim;
+  if (scene.specimen_file) {
+    sim.emplace(load_specimen(*scene.specimen_file, scene.material, spec, report));
+  } else {
+    spec = scene.specimen;
+    std::optional<Progress> progress;
+    std::int64_t shown = 0;
+    sim.emplace(make_specimen(scene.material, spec, report, [&](std::int64_t done, std::int64_t total) {
+      if (!show_progress) return;
+      if (!progress) progress.emplace("specimen genesis", static_cast<std::size_t>(total), "steps");
+      progress->advance(static_cast<std::size_t>(done - shown));
+      shown = done;
+    }));
+    if (progress) progress->finish();
+  }
+  scene.engine.apply_to(*sim);
+  wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return std::move(*sim);
+}
+
+Json specimen_json(const SpecimenSpec& spec, const SpecimenReport& report, double wall_s) {
+  Json j = specimen_spec_to_json(spec);
+  j.update(specimen_report_to_json(report));
+  j["genesis_wall_time_s"] = wall_s;
+  return j;
+}
+
+Json summary_head(const std::string& kind, const Material& material) {
+  return Json{{"kind", kind}, {"material", material_to_json(material)}, {"threads", omp_get_max_threads()}};
+}
+
+void write_summary(const fs::path& out, const Json& summary) {
+  write_file_atomically(out / "summary.json", summary.dump(2) + "\n");
+}
+
+void write_frame_files(const fs::path& out, const Simulation& sim, RunProgress& progress) {
+  const std::string name = fmt::format("frame_{:04d}.vtp", progress.frames.size());
+  const std::string cracks = fmt::format("cracks_{:04d}.vtp", progress.frames.size());
+  write_vtp_frame(out / name, sim);
+  write_cracks_vtp(out / cracks, sim.cracks());
+  progress.frames.push_back({sim.time(), {name, cracks}});
+}
+
+MaterialOutput read_material_output(ObjectReader& cal, const std::string& fallback) {
+  MaterialOutput o;
+  o.name = cal.get_string_or("material_name", fallback);
+  if (o.name.empty() || o.name.find_first_of("/\\. ") != std::string::npos)
+    throw InputError(cal.key_path("material_name"), o.name, "a file name without '/', '.', spaces");
+  o.install = cal.get_bool_or("install_material", false);
+  return o;
+}
+
+void write_material_output(const MaterialOutput& output, const Json& material, const fs::path& out, Json& summary) {
+  write_file_atomically(out / (output.name + ".json"), material.dump(2) + "\n");
+  if (output.install) {
+    const fs::path installed = kerf::data_directory() / "materials" / (output.name + ".json");
+    write_file_atomically(installed, material.dump(2) + "\n");
+    summary["installed_material"] = installed.string();
+  }
+}
+
+}  // namespace kerf::dem::kinds

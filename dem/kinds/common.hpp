@@ -1,0 +1,72 @@
+#pragma once
+// What the scene kinds share (internal to dem/kinds/): the specimen (genesis or file), the summary's head,
+// VTK frames, the material a calibration writes, and the factories the kind registry calls.
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "kerf/dem/cutting.hpp"
+#include "kerf/dem/scene.hpp"
+#include "kerf/dem/simulation.hpp"
+
+namespace kerf::dem::kinds {
+
+namespace fs = std::filesystem;
+
+/// The specimen of a scene: loaded from specimen.file or made by genesis (with a progress bar when
+/// `show_progress`), the engine settings applied; `spec`, `report` and the wall time are filled in.
+Simulation obtain_specimen(const SceneCommon& scene, SpecimenSpec& spec, SpecimenReport& report, double& wall_s,
+                           bool show_progress = true);
+
+/// The summary's "specimen" object: the spec, the report and the genesis wall time.
+Json specimen_json(const SpecimenSpec& spec, const SpecimenReport& report, double wall_s);
+
+/// {"kind", "material", "threads"}: how every summary begins.
+Json summary_head(const std::string& kind, const Material& material);
+
+/// Writes OUT/summary.json.
+void write_summary(const fs::path& out, const Json& summary);
+
+/// Where a run stands between checkpoints: frames written, samples done.
+struct RunProgress {
+  FrameList frames;
+  int sample_index = 0;
+  std::string scene_dir;
+  bool show_progress = true;  ///< false for replicates run side by side (one bar each would garble the terminal)
+};
+
+/// Writes the next VTK frame (particles and bonds, cracks) and records it for the .pvd series.
+void write_frame_files(const fs::path& out, const Simulation& sim, RunProgress& progress);
+
+/// calibration.material_name (a file name) and calibration.install_material of calibrate and calibrate_cut.
+struct MaterialOutput {
+  std::string name;
+  bool install = false;  ///< also write data/materials/<name>.json (the data directory in use)
+};
+MaterialOutput read_material_output(ObjectReader& calibration, const std::string& fallback);
+/// Writes the fitted material to OUT/<name>.json and, with install, to the data directory (summary notes it).
+void write_material_output(const MaterialOutput& output, const Json& material, const fs::path& out, Json& summary);
+
+/// Seed 000 Section 4 repeats each cut on `replicates` packings: replicate k uses packing seed specimen.seed +
+/// k and writes OUT/replicate_k; OUT/summary.json has the per-replicate results and their mean and (sample)
+/// standard deviation. A replicate whose summary.json holds the same material, specimen and cut is reused.
+/// `summary` is the head every summary starts with (kind, material, threads).
+SceneOutcome run_cut_replicates(const SceneCommon& common, const CutParams& cut, int replicates, Json summary,
+                                const fs::path& out);
+
+// The kinds (one file each under dem/kinds/), constructed by the registry.
+std::unique_ptr<SceneKind> make_specimen_kind();
+std::unique_ptr<SceneKind> make_tension_kind();
+std::unique_ptr<SceneKind> make_compression_kind();
+std::unique_ptr<SceneKind> make_calibrate_kind();
+std::unique_ptr<SceneKind> make_cut_kind();
+std::unique_ptr<SceneKind> make_calibrate_cut_kind();
+
+}  // namespace kerf::dem::kinds
+
+namespace kerf::dem::kinds {
+/// The key tables of the kinds' own "calibration" sections (Markdown, for kerf-dem keys).
+std::string calibrate_keys_markdown();
+std::string calibrate_targets_keys_markdown();
+std::string calibrate_cut_keys_markdown();
+}  // namespace kerf::dem::kinds

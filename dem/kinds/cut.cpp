@@ -1,0 +1,255 @@
+// Scene kind "cut": orthogonal cutting (seed 000 Section 4; kerf/dem/cutting.hpp), forces against tool travel
+// and cracks by mode and place; one run with checkpoints, or replicates on several packings side by side.
+#include <fmt/format.h>
+#include <omp.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <iostream>
+#include <optional>
+
+#include "common.hpp"
+#include "kerf/dem/output.hpp"
+#include "kerf/dem/png.hpp"
+#include "kerf/error.hpp"
+#include "kerf/io.hpp"
+#include "kerf/metrics.hpp"
+#include "kerf/units.hpp"
+
+namespace kerf::dem::kinds {
+
+namespace {
+
+/// Runs (or continues, from a checkpoint) a cut to the end of its travel and writes the outputs; returns the
+/// summary. `doc` and `checkpoint_every` are for the checkpoints (none: 0).
+Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& doc, Json summary, const fs::path& out,
+                  int checkpoint_every, CutRun run, RunProgress tp) {
+  const int frame_every = common.output.frame_every_samples;
+  const auto write_frame = [&](const Simulation& sim) { write_frame_files(out, sim, tp); };
+  if (frame_every > 0 && tp.sample_index == 0) write_frame(run.simulation());
+  const double n = static_cast<double>(run.result().n_particles);
+  const double steps = cut.length_m / (cut.speed_m_per_s * run.result().time_step_s);
+  std::optional<Progress> progress;
+  if (tp.show_progress) {
+    progress.emplace("cut", static_cast<std::size_t>(n * steps), "particle-steps");
+    progress->advance(static_cast<std::size_t>(n * cut.sample_every_steps * tp.sample_index));
+  }
+  while (run.advance()) {
+    ++tp.sample_index;
+    if (progress) progress->advance(static_cast<std::size_t>(n * cut.sample_every_steps));
+    if (frame_every > 0 && tp.sample_index % frame_every == 0) write_frame(run.simulation());
+    if (checkpoint_every > 0 && tp.sample_index % checkpoint_every == 0)
+      // The cut holds its own workpiece: the checkpoint's specimen part stays empty.
+      write_checkpoint(out, {doc, summary, tp.frames, tp.sample_index, checkpoint_every, tp.scene_dir, std::string(),
+                             run.serialize()});
+  }
+  if (progress) progress->finish();
+  if (frame_every > 0) write_frame(run.simulation());
+  const CutResult& res = run.result();
+  summary["cut"] = cut_params_to_json(cut);
+  summary["results"] =
+      Json{{"main_force_N", res.main_force_n},
+           {"thrust_force_N", res.thrust_force_n},
+           {"main_force_std_N", res.main_force_std_n},
+           {"thrust_force_std_N", res.thrust_force_std_n},
+           {"steady_from_travel_mm", units::m_to_mm(cut.entry_fraction * cut.length_m)},
+           {"steady_samples", res.n_steady_samples},
+           {"width_mm", units::m_to_mm(res.width_m)},
+           {"cracks_tensile", res.cracks.tensile},
+           {"cracks_shear", res.cracks.shear},
+           {"cracks_chip", res.cracks.chip},
+           {"cracks_subsurface", res.cracks.subsurface},
+           {"subsurface_damage_depth_um", units::m_to_um(res.cracks.subsurface_damage_depth_m)},
+           {"steady_machined_from_x_mm", units::m_to_mm(res.steady_machined_x_m[0])},
+           {"steady_machined_to_x_mm", units::m_to_mm(res.steady_machined_x_m[1])},
+           {"cracks_subsurface_steady", res.cracks.subsurface_steady},
+           {"subsurface_damage_depth_steady_um", units::m_to_um(res.cracks.subsurface_steady_damage_depth_m)},
+           {"surface_y_mm", units::m_to_mm(res.y_top_m)},
+           {"cut_line_y_mm", units::m_to_mm(res.y_cut_m)},
+           {"particles_removed_by_grooves", res.n_removed_by_grooves}};
+  Json windows = Json::array();
+  for (const auto& w : res.travel_windows)
+    // Window ends to 1 pm, so that 3 x 0.1 mm reads 0.3, not 0.30000000000000004.
+    windows.push_back({{"from_travel_mm", std::round(units::m_to_mm(w.from_m) * 1e9) / 1e9},
+                       {"to_travel_mm", std::round(units::m_to_mm(w.to_m) * 1e9) / 1e9},
+                       {"main_force_N", w.main_force_n}, {"thrust_force_N", w.thrust_force_n}, {"samples", w.n_samples}});
+  summary["results"]["travel_windows"] = windows;
+  summary["n_particles"] = res.n_particles;
+  summary["steps"] = res.steps;
+  summary["wall_time_s"] = res.wall_time_s;
+  summary["particle_steps_per_s"] = static_cast<double>(res.n_particles) * static_cast<double>(res.steps) / res.wall_time_s;
+  write_file_atomically(out / "forces.csv", cut_forces_csv(res));
+  write_file_atomically(out / "cracks.csv", cracks_csv(run.simulation().cracks(), res.y_cut_m));
+  if (frame_every > 0) write_pvd(out / "result.pvd", tp.frames);
+  // The workpiece with room for the tool on the right and the chip above.
+  const auto& box = res.workpiece_box_m;
+  const double margin = 2 * cut.depth_of_cut_m;
+  write_specimen_png(out / "specimen.png", run.simulation(), "cut, final state",
+                     std::array<double, 4>{box[0], box[1] + margin, box[2], box[3] + margin});
+  write_cut_forces_png(out / "forces.png", res, cut.entry_fraction * cut.length_m);
+  write_summary(out, summary);
+  remove_checkpoint(out);  // finished: nothing to resume
+#pragma omp critical(kerf_dem_stdout)
+  std::cout << fmt::format("cut: main force {:.3g} N (std {:.2g}), thrust force {:.3g} N (std {:.2g}) per {:g} mm width; "
+                           "{} tensile + {} shear cracks ({} chip, {} subsurface, damage depth {:.1f} um); {} steps, {:.1f} s -> {}\n",
+                           res.main_force_n, res.main_force_std_n, res.thrust_force_n, res.thrust_force_std_n,
+                           units::m_to_mm(res.width_m), res.cracks.tensile, res.cracks.shear, res.cracks.chip,
+                           res.cracks.subsurface, units::m_to_um(res.cracks.subsurface_damage_depth_m), res.steps,
+                           res.wall_time_s, out.string());
+  return summary;
+}
+
+class CutKind final : public SceneKind {
+ public:
+  void read(ObjectReader& root, const SceneCommon&) override { cut_ = read_cut_params(root); }
+
+  void check_options(const RunOptions& options, const SceneCommon& common) const override {
+    if (options.replicates > 1 && common.specimen_file)
+      throw InputError("--replicates", std::to_string(options.replicates),
+                       "a scene that generates its specimen (replicates differ in specimen.seed), not specimen.file");
+  }
+
+  SceneOutcome run(const SceneCommon& common, const SceneRun& run) override {
+    const RunOptions& o = run.options;
+    if (o.replicates > 1) return run_cut_replicates(common, cut_, o.replicates, summary_head("cut", common.material), o.out);
+    SpecimenSpec spec;
+    SpecimenReport report;
+    double genesis_s = 0;
+    const Simulation specimen = obtain_specimen(common, spec, report, genesis_s, o.show_progress);
+    Json summary = summary_head("cut", common.material);
+    summary["specimen"] = specimen_json(spec, report, genesis_s);
+    summary["time_step_s"] = specimen.time_step();
+    // CutRun checks the cut against the workpiece and the time step before the first step.
+    return {0,
+            continue_cut(common, cut_, run.doc, std::move(summary), o.out, o.checkpoint_every, CutRun(specimen, cut_),
+                         {{}, 0, run.scene_dir, o.show_progress}),
+            {}};
+  }
+
+  SceneOutcome resume(const SceneCommon& common, const SceneRun& run, const Checkpoint& c) override {
+    return {0,
+            continue_cut(common, cut_, c.scene, c.summary, run.options.out, c.checkpoint_every,
+                         CutRun::deserialize(c.run), {c.frames, c.sample_index, c.scene_dir, run.options.show_progress}),
+            {}};
+  }
+
+ private:
+  CutParams cut_;
+};
+
+}  // namespace
+
+/// Replicates run side by side, one thread each, as long as there are threads to spare (a cut of a few
+/// thousand disks scales better over replicates than over threads: no barrier per step); leftover threads
+/// go to each replicate's force loops. A replicate whose OUT/replicate_k/summary.json already holds the same
+/// material, specimen and cut is reused, so an interrupted study loses only the replicates in flight. Once a
+/// replicate finds the input bad (the cut against its workpiece or time step), no other one starts.
+SceneOutcome run_cut_replicates(const SceneCommon& common, const CutParams& cut, int replicates, Json summary,
+                                const fs::path& out) {
+  // Each result with the name of its spread over the replicates.
+  const std::vector<std::pair<std::string, std::string>> keys{
+      {"main_force_N", "main_force_replicate_std_N"},
+      {"thrust_force_N", "thrust_force_replicate_std_N"},
+      {"cracks_tensile", "cracks_tensile_replicate_std"},
+      {"cracks_shear", "cracks_shear_replicate_std"},
+      {"subsurface_damage_depth_um", "subsurface_damage_depth_replicate_std_um"},
+      {"cracks_subsurface_steady", "cracks_subsurface_steady_replicate_std"},
+      {"subsurface_damage_depth_steady_um", "subsurface_damage_depth_steady_replicate_std_um"}};
+  const auto start = std::chrono::steady_clock::now();
+  const int threads = omp_get_max_threads();
+  const int side_by_side = std::min(threads, replicates);
+  const int inner_threads = std::max(1, threads / side_by_side);
+  std::vector<Json> done(static_cast<std::size_t>(replicates));
+  std::vector<std::exception_ptr> failed(static_cast<std::size_t>(replicates));
+  std::atomic<bool> bad_input{false};
+  const int max_levels = omp_get_max_active_levels();
+  omp_set_max_active_levels(2);
+#pragma omp parallel for schedule(dynamic, 1) num_threads(side_by_side)
+  for (int k = 0; k < replicates; ++k) {
+    try {
+      omp_set_num_threads(inner_threads);
+      SceneCommon s = common;
+      s.specimen.seed = common.specimen.seed + static_cast<std::uint64_t>(k);
+      const fs::path dir = out / fmt::format("replicate_{}", k + 1);
+      // What makes a replicate: reused only when all of it is unchanged.
+      const Json inputs{{"material", material_to_json(s.material)}, {"specimen", specimen_spec_to_json(s.specimen)},
+                        {"cut", cut_params_to_json(cut)}};
+      if (fs::exists(dir / "summary.json")) {
+        const Json old = read_json_file((dir / "summary.json").string());
+        // A run from before a result was added lacks it: run again.
+        const auto has_every_result = [&] {
+          return std::all_of(keys.begin(), keys.end(),
+                             [&](const auto& key) { return old.at("results").contains(key.first); });
+        };
+        if (old.value("replicate_inputs", Json()) == inputs && old.contains("results") && has_every_result()) {
+#pragma omp critical(kerf_dem_stdout)
+          std::cout << fmt::format("replicate {}: reusing the finished run in {}\n", k + 1, dir.string());
+          done[static_cast<std::size_t>(k)] = old;
+          continue;
+        }
+      }
+      if (bad_input) continue;
+      SpecimenSpec spec;
+      SpecimenReport report;
+      double genesis_s = 0;
+      const bool show_progress = side_by_side == 1;
+      const Simulation specimen = obtain_specimen(s, spec, report, genesis_s, show_progress);
+      CutRun run(specimen, cut);  // checks the cut against this workpiece before the first step
+      fs::create_directories(dir);
+      Json one = summary;
+      one["threads"] = inner_threads;
+      one["replicate_inputs"] = inputs;
+      one["specimen"] = specimen_json(spec, report, genesis_s);
+      done[static_cast<std::size_t>(k)] =
+          continue_cut(s, cut, Json(), one, dir, 0, std::move(run), {{}, 0, std::string(), show_progress});
+    } catch (const InputError&) {
+      bad_input = true;
+      failed[static_cast<std::size_t>(k)] = std::current_exception();
+    } catch (...) {
+      failed[static_cast<std::size_t>(k)] = std::current_exception();
+    }
+  }
+  omp_set_max_active_levels(max_levels);
+  for (const auto& e : failed)
+    if (e) std::rethrow_exception(e);
+  Json list = Json::array();
+  double wall = 0;
+  for (int k = 0; k < replicates; ++k) {
+    const Json& one = done[static_cast<std::size_t>(k)];
+    Json row{{"replicate", k + 1}, {"seed", one["specimen"]["seed"]}, {"directory", fmt::format("replicate_{}", k + 1)}};
+    for (const auto& key : keys) row[key.first] = one["results"][key.first];
+    for (const char* key : {"main_force_std_N", "thrust_force_std_N", "width_mm"}) row[key] = one["results"][key];
+    row["wall_time_s"] = one["wall_time_s"];
+    wall += one["wall_time_s"].get<double>();
+    list.push_back(row);
+  }
+  Json stats;
+  for (const auto& [key, spread] : keys) {
+    std::vector<double> values;
+    for (const auto& row : list) values.push_back(row[key].get<double>());
+    const SampleStatistics st = sample_statistics(values);  // replicates >= 2: a finite sample std
+    stats[key] = st.mean;
+    stats[spread] = st.standard_deviation;
+  }
+  stats["width_mm"] = list[0]["width_mm"];
+  summary["cut"] = cut_params_to_json(cut);
+  summary["replicates"] = list;
+  summary["results"] = stats;
+  summary["replicates_side_by_side"] = side_by_side;
+  summary["wall_time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  summary["wall_time_s_sum_over_replicates"] = wall;
+  write_summary(out, summary);
+  std::cout << fmt::format("cut, {} replicates: main force {:.3g} N (replicate std {:.2g}), thrust force {:.3g} N "
+                           "(replicate std {:.2g}) per {:g} mm width -> {}\n",
+                           replicates, stats["main_force_N"].get<double>(), stats["main_force_replicate_std_N"].get<double>(),
+                           stats["thrust_force_N"].get<double>(), stats["thrust_force_replicate_std_N"].get<double>(),
+                           stats["width_mm"].get<double>(), out.string());
+  return {0, summary, std::move(done)};
+}
+
+std::unique_ptr<SceneKind> make_cut_kind() { return std::make_unique<CutKind>(); }
+
+}  // namespace kerf::dem::kinds

@@ -1,0 +1,54 @@
+// The key reference of the scene sections (kerf-dem keys; docs/dem.md's key tables are its output).
+#include <fmt/format.h>
+
+#include <functional>
+#include <utility>
+
+#include "common.hpp"
+#include "kerf/dem/lab_test.hpp"
+#include "kerf/error.hpp"
+
+namespace kerf::dem {
+
+namespace {
+
+struct SectionKeys {
+  std::string_view name, about;
+  std::function<std::string()> markdown;
+};
+
+const std::vector<SectionKeys>& sections() {
+  static const std::vector<SectionKeys> list{
+      {"specimen", "every kind; or `{\"file\": \"specimen.json\"}`, a specimen saved by kind `specimen`",
+       [] { return fields_markdown(specimen_fields()); }},
+      {"engine", "every kind: settings applied to the specimen once built", [] { return fields_markdown(engine_fields()); }},
+      {"loading", "tension, compression, calibrate", [] { return fields_markdown(loading_fields()); }},
+      {"cut", "cut, calibrate_cut", [] { return fields_markdown(cut_fields()); }},
+      {"tool", "cut, calibrate_cut", [] { return fields_markdown(tool_fields()); }},
+      {"grooves", "cut, calibrate_cut", [] { return fields_markdown(groove_fields()); }},
+      {"calibration", "calibrate", kinds::calibrate_keys_markdown},
+      {"calibration.targets", "calibrate", kinds::calibrate_targets_keys_markdown},
+      {"calibration", "calibrate_cut", kinds::calibrate_cut_keys_markdown},
+      {"output", "every kind", [] { return fields_markdown(output_fields()); }}};
+  return list;
+}
+
+}  // namespace
+
+std::vector<std::string> scene_sections() {
+  std::vector<std::string> names;
+  for (const auto& s : sections())
+    if (names.empty() || names.back() != s.name) names.emplace_back(s.name);
+  return names;
+}
+
+std::string scene_keys_markdown(const std::string& section) {
+  std::string md;
+  for (const auto& s : sections())
+    if (section.empty() || s.name == section)
+      md += fmt::format("{}#### `{}` ({})\n\n{}", md.empty() ? "" : "\n", s.name, s.about, s.markdown());
+  if (md.empty()) throw InputError("SECTION", section, describe_choices(section, scene_sections()));
+  return md;
+}
+
+}  // namespace kerf::dem

@@ -1,0 +1,148 @@
+// Scene kinds "tension" and "compression": the calibration tests of seed 000 Section 3 on a specimen, with
+// the quasi-static check (the same test at half the speed), checkpoints and VTK frames.
+#include <fmt/format.h>
+
+#include <iostream>
+
+#include "common.hpp"
+#include "kerf/dem/lab_test.hpp"
+#include "kerf/dem/output.hpp"
+#include "kerf/dem/png.hpp"
+#include "kerf/io.hpp"
+#include "kerf/units.hpp"
+
+namespace kerf::dem::kinds {
+
+namespace {
+
+/// Runs one test on a copy of the specimen with a progress bar (the quasi-static check).
+LabTestResult run_test(const Simulation& specimen, const LoadingSpec& loading, const std::string& label) {
+  // Progress against the step count that reaches max_strain (an upper bound: most runs stop earlier).
+  const double height = [&] {
+    double lo = 1e300, hi = -1e300;
+    const auto& p = specimen.particles();
+    for (std::size_t i = 0; i < p.size(); ++i) lo = std::min(lo, p.y[i] - p.radius[i]), hi = std::max(hi, p.y[i] + p.radius[i]);
+    return hi - lo;
+  }();
+  const double n = static_cast<double>(specimen.particles().size());
+  const double steps = loading.max_strain * height / (2 * loading.speed_m_per_s * specimen.time_step());
+  Progress progress(label, static_cast<std::size_t>(n * steps), "particle-steps");
+  auto result = run_lab_test(specimen, loading, [&](const Simulation&, const CurveSample&) {
+    progress.advance(static_cast<std::size_t>(n * loading.sample_every_steps));
+  });
+  progress.finish();
+  return result;
+}
+
+class LabTestKind final : public SceneKind {
+ public:
+  explicit LabTestKind(LabTest test) : test_(test) {}
+
+  void read(ObjectReader& root, const SceneCommon&) override {
+    if (auto loading = root.find_object("loading")) {
+      loading_ = read_loading_spec(*loading, test_);
+      loading->finish();
+    } else {
+      static const Json empty = Json::object();
+      ObjectReader none(empty, "loading");
+      loading_ = read_loading_spec(none, test_);
+    }
+  }
+
+  SceneOutcome run(const SceneCommon& common, const SceneRun& run) override {
+    SpecimenSpec spec;
+    SpecimenReport report;
+    double genesis_s = 0;
+    const Simulation specimen = obtain_specimen(common, spec, report, genesis_s, run.options.show_progress);
+    Json summary = summary_head(name(), common.material);
+    summary["specimen"] = specimen_json(spec, report, genesis_s);
+    summary["time_step_s"] = specimen.time_step();
+    return continue_test(common, run, specimen, std::move(summary), LabTestRun(specimen, loading_),
+                         {{}, 0, run.scene_dir, run.options.show_progress});
+  }
+
+  SceneOutcome resume(const SceneCommon& common, const SceneRun& run, const Checkpoint& c) override {
+    const Simulation specimen = Simulation::deserialize(c.specimen);
+    return continue_test(common, run, specimen, c.summary, LabTestRun::deserialize(c.run),
+                         {c.frames, c.sample_index, c.scene_dir, run.options.show_progress});
+  }
+
+ private:
+  LabTest test_;
+  LoadingSpec loading_;
+
+  std::string name() const { return lab_test_names().name(test_); }
+
+  /// Runs (or continues) the test to its end, then the quasi-static check and the outputs.
+  SceneOutcome continue_test(const SceneCommon& common, const SceneRun& scene_run, const Simulation& specimen,
+                             Json summary, LabTestRun run, RunProgress tp) const {
+    const fs::path& out = scene_run.options.out;
+    const int checkpoint_every = scene_run.options.checkpoint_every;
+    const int frame_every = common.output.frame_every_samples;
+    // Frames: every frame_every_samples samples, plus the final state.
+    const auto write_frame = [&](const Simulation& sim) { write_frame_files(out, sim, tp); };
+    if (frame_every > 0 && tp.sample_index == 0) write_frame(specimen);
+    const double n = static_cast<double>(specimen.particles().size());
+    const double steps =
+        loading_.max_strain * run.result().height_m / (2 * loading_.speed_m_per_s * run.simulation().time_step());
+    Progress progress(name(), static_cast<std::size_t>(n * steps), "particle-steps");
+    progress.advance(static_cast<std::size_t>(n * loading_.sample_every_steps * tp.sample_index));
+    while (run.advance()) {
+      ++tp.sample_index;
+      progress.advance(static_cast<std::size_t>(n * loading_.sample_every_steps));
+      if (frame_every > 0 && tp.sample_index % frame_every == 0) write_frame(run.simulation());
+      if (checkpoint_every > 0 && tp.sample_index % checkpoint_every == 0)
+        write_checkpoint(out, {scene_run.doc, summary, tp.frames, tp.sample_index, checkpoint_every, tp.scene_dir,
+                               specimen.serialize(), run.serialize()});
+    }
+    progress.finish();
+    const LabTestResult& res = run.result();
+    if (frame_every > 0) write_frame(run.simulation());
+    const bool tension = test_ == LabTest::tension;
+    Json results{{"youngs_modulus_GPa", units::pa_to_gpa(res.youngs_modulus_pa)},
+                 {"poissons_ratio", res.poissons_ratio},
+                 {tension ? "tensile_strength_MPa" : "compressive_strength_MPa", units::pa_to_mpa(res.peak_stress_pa)},
+                 {"strain_at_peak", res.strain_at_peak},
+                 {"n_tension_cracks", res.curve.back().n_tension_cracks},
+                 {"n_shear_cracks", res.curve.back().n_shear_cracks},
+                 {"stop_reason", res.stop_reason},
+                 {"speed_m_per_s", res.speed_m_per_s},
+                 {"specimen_width_mm", units::m_to_mm(res.width_m)},
+                 {"gauge_length_mm", units::m_to_mm(res.height_m)}};
+    if (loading_.quasi_static_check) {
+      LoadingSpec half = loading_;
+      half.speed_m_per_s *= 0.5;
+      half.quasi_static_check = false;  // this run is the check
+      const LabTestResult slow = run_test(specimen, half, name() + " (quasi-static check, half speed)");
+      results["quasi_static_check"] = Json{
+          {"speed_m_per_s", half.speed_m_per_s},
+          {"peak_stress_MPa", units::pa_to_mpa(slow.peak_stress_pa)},
+          {"peak_change_percent", 100 * (slow.peak_stress_pa - res.peak_stress_pa) / res.peak_stress_pa},
+          {"youngs_modulus_change_percent", 100 * (slow.youngs_modulus_pa - res.youngs_modulus_pa) / res.youngs_modulus_pa},
+          {"wall_time_s", slow.wall_time_s}};
+    }
+    summary["results"] = results;
+    summary["n_particles"] = res.n_particles;
+    summary["steps"] = res.steps;
+    summary["wall_time_s"] = res.wall_time_s;
+    summary["particle_steps_per_s"] = static_cast<double>(res.n_particles) * static_cast<double>(res.steps) / res.wall_time_s;
+    write_file_atomically(out / "curve.csv", curve_csv(res));
+    write_file_atomically(out / "cracks.csv", cracks_csv(run.simulation().cracks()));
+    if (frame_every > 0) write_pvd(out / "result.pvd", tp.frames);
+    write_specimen_png(out / "specimen.png", run.simulation(), name() + ", final state");
+    write_summary(out, summary);
+    remove_checkpoint(out);  // finished: nothing to resume
+    std::cout << fmt::format("{}: E = {:.2f} GPa, nu = {:.3f}, {} strength = {:.1f} MPa, {} steps, {:.1f} s -> {}\n",
+                             name(), units::pa_to_gpa(res.youngs_modulus_pa), res.poissons_ratio,
+                             tension ? "tensile" : "compressive", units::pa_to_mpa(res.peak_stress_pa), res.steps,
+                             res.wall_time_s, out.string());
+    return {0, summary, {}};
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<SceneKind> make_tension_kind() { return std::make_unique<LabTestKind>(LabTest::tension); }
+std::unique_ptr<SceneKind> make_compression_kind() { return std::make_unique<LabTestKind>(LabTest::compression); }
+
+}  // namespace kerf::dem::kinds

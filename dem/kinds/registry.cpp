@@ -1,0 +1,34 @@
+// The scene-kind registry: one line per kind; a scene names its kind and only that one is constructed.
+#include <array>
+#include <utility>
+
+#include "common.hpp"
+#include "kerf/error.hpp"
+
+namespace kerf::dem {
+
+namespace {
+using Factory = std::unique_ptr<SceneKind> (*)();
+constexpr std::array<std::pair<std::string_view, Factory>, 6> kKinds{{
+    {"specimen", kinds::make_specimen_kind},
+    {"tension", kinds::make_tension_kind},
+    {"compression", kinds::make_compression_kind},
+    {"calibrate", kinds::make_calibrate_kind},
+    {"cut", kinds::make_cut_kind},
+    {"calibrate_cut", kinds::make_calibrate_cut_kind},
+}};
+}  // namespace
+
+std::vector<std::string> scene_kind_names() {
+  std::vector<std::string> names;
+  for (const auto& [name, factory] : kKinds) names.emplace_back(name);
+  return names;
+}
+
+std::unique_ptr<SceneKind> make_scene_kind(const std::string& name, const std::string& path) {
+  for (const auto& [known, factory] : kKinds)
+    if (known == name) return factory();
+  throw InputError(path, name, describe_choices(name, scene_kind_names()));
+}
+
+}  // namespace kerf::dem

@@ -1,0 +1,57 @@
+// Scene kind "specimen": a genesis (or a loaded specimen), saved for reuse with a VTK frame and a picture.
+#include <fmt/format.h>
+
+#include <iostream>
+
+#include "common.hpp"
+#include "kerf/dem/output.hpp"
+#include "kerf/dem/png.hpp"
+#include "kerf/error.hpp"
+#include "kerf/units.hpp"
+
+namespace kerf::dem::kinds {
+
+namespace {
+
+class SpecimenKind final : public SceneKind {
+ public:
+  void read(ObjectReader&, const SceneCommon&) override {}
+
+  void check_options(const RunOptions& options, const SceneCommon& common) const override {
+    if (options.checkpoint_every > 0)
+      throw InputError("--checkpoint-every", std::to_string(options.checkpoint_every),
+                       "checkpoints only for tension, compression, calibrate and cut scenes");
+    SceneKind::check_options(options, common);
+  }
+
+  SceneOutcome run(const SceneCommon& common, const SceneRun& run) override {
+    const fs::path& out = run.options.out;
+    SpecimenSpec spec;
+    SpecimenReport report;
+    double genesis_s = 0;
+    const Simulation specimen = obtain_specimen(common, spec, report, genesis_s, run.options.show_progress);
+    Json summary = summary_head("specimen", common.material);
+    summary["specimen"] = specimen_json(spec, report, genesis_s);
+    summary["time_step_s"] = specimen.time_step();
+    save_specimen((out / "specimen.json").string(), specimen, spec, report);
+    write_vtp_frame(out / "specimen.vtp", specimen);
+    write_specimen_png(out / "specimen.png", specimen, "specimen");
+    summary["n_particles"] = report.n_particles;
+    summary["steps"] = report.genesis_steps;
+    summary["wall_time_s"] = genesis_s;
+    summary["particle_steps_per_s"] = report.n_particles * static_cast<double>(report.genesis_steps) / genesis_s;
+    write_summary(out, summary);
+    std::cout << fmt::format("specimen: {} disks, {} joints, packing fraction {:.4f}, coordination {:.3f}, residual "
+                             "stress ({:.3g}, {:.3g}) MPa -> {}\n",
+                             report.n_particles, report.n_bonds, report.packing_fraction, report.coordination_number,
+                             units::pa_to_mpa(report.residual_stress_xx_pa), units::pa_to_mpa(report.residual_stress_yy_pa),
+                             (out / "specimen.json").string());
+    return {0, summary, {}};
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<SceneKind> make_specimen_kind() { return std::make_unique<SpecimenKind>(); }
+
+}  // namespace kerf::dem::kinds

@@ -1,0 +1,76 @@
+// A kerf-dem scene: the shared sections, the run options, running and resuming (kerf/dem/scene.hpp).
+#include "kerf/dem/scene.hpp"
+
+#include "kerf/error.hpp"
+
+namespace kerf::dem {
+
+namespace fs = std::filesystem;
+
+const FieldTable<OutputSpec>& output_fields() {
+  static const FieldTable<OutputSpec> table{
+      int_field("frame_every_samples", 0, 100000000,
+                "VTK frames (particles, joints, cracks) every N samples and of the final state; 0: none",
+                &OutputSpec::frame_every_samples)};
+  return table;
+}
+
+void SceneKind::check_options(const RunOptions& options, const SceneCommon&) const {
+  if (options.replicates > 1)
+    throw InputError("--replicates", std::to_string(options.replicates),
+                     "replicates only for cut scenes (calibrate_cut: calibration.replicates)");
+}
+
+SceneOutcome SceneKind::resume(const SceneCommon&, const SceneRun&, const Checkpoint&) {
+  throw ModelError("kerf-dem", "a checkpoint of a scene kind that writes none");
+}
+
+Scene read_scene(const Json& doc, const fs::path& scene_dir) {
+  ObjectReader root(doc, "");
+  Scene s;
+  s.kind_name = root.get_string("kind");
+  s.kind = make_scene_kind(s.kind_name, root.key_path("kind"));
+  root.ignore("description");
+  s.common.material = read_scene_material(root);
+  if (auto spec = root.find_object("specimen")) {
+    if (spec->has("file")) {
+      fs::path file = spec->get_string("file");
+      if (file.is_relative()) file = scene_dir / file;
+      if (!fs::exists(file)) throw InputError("specimen.file", file.string(), "an existing specimen file");
+      s.common.specimen_file = file.string();
+    } else {
+      s.common.specimen = read_specimen_spec(*spec);
+    }
+    spec->finish();
+  }
+  s.common.engine = read_engine_settings(root);
+  s.kind->read(root, s.common);
+  if (auto output = root.find_object("output")) {
+    s.common.output = read_fields(*output, output_fields(), OutputSpec{});
+    output->finish();
+  }
+  root.finish();
+  return s;
+}
+
+SceneOutcome run_scene(const Json& doc, const fs::path& scene_file, const RunOptions& options) {
+  const Scene scene = read_scene(doc, scene_file.parent_path());
+  scene.kind->check_options(options, scene.common);
+  if (options.checkpoint_every > 0 && options.replicates > 1)
+    throw InputError("--checkpoint-every", std::to_string(options.checkpoint_every), "no checkpoints with --replicates");
+  fs::create_directories(options.out);
+  const SceneRun run{doc, fs::absolute(scene_file).parent_path().string(), options};
+  return scene.kind->run(scene.common, run);
+}
+
+SceneOutcome resume_scene(const fs::path& dir, bool show_progress) {
+  const Checkpoint c = read_checkpoint(dir);
+  const Scene scene = read_scene(c.scene, c.scene_dir);
+  RunOptions options;
+  options.out = dir;
+  options.checkpoint_every = c.checkpoint_every;
+  options.show_progress = show_progress;
+  return scene.kind->resume(scene.common, SceneRun{c.scene, c.scene_dir, options}, c);
+}
+
+}  // namespace kerf::dem

@@ -1,0 +1,42 @@
+#pragma once
+// What a killed kerf-dem run needs to continue: the scene as run, the summary so far, the frames written,
+// the sample reached, the specimen and the run's own state (written atomically to OUT/checkpoint.bin every
+// --checkpoint-every samples; a calibration writes one after every evaluation).
+//
+//   Checkpoint c{doc, summary, frames, sample_index, every, scene_dir, specimen.serialize(), run.serialize()};
+//   write_checkpoint(out, c);
+//   Checkpoint again = read_checkpoint(out);   // InputError when OUT holds none
+//
+// Format "KERFCKP1": the magic, then three parts, each a native 64-bit length and its bytes: the JSON head
+// (scene, summary, frames, sample_index, checkpoint_every, scene_dir), the specimen, the run.
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "kerf/json_reader.hpp"
+
+namespace kerf::dem {
+
+/// The VTK frames written so far: per frame its time and its files (for the .pvd collection).
+using FrameList = std::vector<std::pair<double, std::vector<std::string>>>;
+
+struct Checkpoint {
+  Json scene, summary;
+  FrameList frames;
+  int sample_index = 0, checkpoint_every = 0;
+  std::string scene_dir, specimen, run;
+
+  std::string bytes() const;
+  /// ModelError when the bytes are not a checkpoint or are cut short.
+  static Checkpoint parse(const std::string& bytes);
+};
+
+/// Writes DIR/checkpoint.bin atomically.
+void write_checkpoint(const std::filesystem::path& dir, const Checkpoint& c);
+/// Reads DIR/checkpoint.bin; InputError naming DIR when there is none.
+Checkpoint read_checkpoint(const std::filesystem::path& dir);
+/// Removes DIR/checkpoint.bin (a finished run has nothing to resume).
+void remove_checkpoint(const std::filesystem::path& dir);
+
+}  // namespace kerf::dem

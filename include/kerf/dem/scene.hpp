@@ -1,0 +1,111 @@
+#pragma once
+// A kerf-dem scene and its kinds, as a library: what the kerf-dem program runs and what other programs (the
+// seed-000 validation) call directly.
+//
+// A scene is a JSON document: "kind" names a scene kind; the sections every kind shares (material,
+// specimen, engine, output) are read here; the kind reads its own (loading, cut/tool/grooves, calibration).
+// A kind is a module with read (its sections, and every check that needs no simulation), check_options
+// (the run options it supports), run and resume (from a checkpoint). The kind registry
+// (dem/kinds/registry.cpp, one line per kind) constructs a kind by name; an unknown name lists the valid ones.
+//
+//   const Json doc = read_json_file("scene.json");
+//   RunOptions options;
+//   options.out = "out";
+//   SceneOutcome done = run_scene(doc, "scene.json", options);  // writes out/summary.json and the rest
+//   SceneOutcome again = resume_scene("out", {});                // a run killed after a checkpoint
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "kerf/dem/checkpoint.hpp"
+#include "kerf/dem/material.hpp"
+#include "kerf/dem/specimen.hpp"
+#include "kerf/field_table.hpp"
+#include "kerf/json_reader.hpp"
+
+namespace kerf::dem {
+
+/// The scene's "output" section.
+struct OutputSpec {
+  int frame_every_samples = 100;  ///< VTK frames every N samples (and the final state); 0: none
+};
+const FieldTable<OutputSpec>& output_fields();
+
+/// The sections every scene shares.
+struct SceneCommon {
+  Material material;
+  std::optional<std::string> specimen_file;  ///< specimen.file: a saved specimen instead of a genesis
+  SpecimenSpec specimen;
+  EngineSettings engine;
+  OutputSpec output;
+};
+
+/// How to run a scene (the kerf-dem command line's options).
+struct RunOptions {
+  std::filesystem::path out = "out";
+  int checkpoint_every = 0;  ///< samples between checkpoints (a calibration: one per evaluation); 0: none
+  int replicates = 1;        ///< cut scenes: packings specimen.seed + 0 .. replicates - 1
+  bool show_progress = true; ///< progress bars on stderr (drawn only when it is a terminal)
+};
+
+/// What a run produced: its exit status (0; kExitModelError for a calibration that did not converge), the
+/// summary written to OUT/summary.json, and for replicated cuts each replicate's own summary.
+struct SceneOutcome {
+  int exit_status = 0;
+  Json summary;
+  std::vector<Json> replicate_summaries;
+};
+
+/// The context of one run: the scene as run (what a checkpoint stores), its directory, the options.
+struct SceneRun {
+  Json doc;
+  std::string scene_dir;  ///< absolute: specimen.file is found relative to it on resume
+  RunOptions options;
+};
+
+/// One scene kind (see the top of this header).
+class SceneKind {
+ public:
+  virtual ~SceneKind() = default;
+  /// Reads and validates the kind's own sections of the scene root; the shared ones are already in `common`.
+  virtual void read(ObjectReader& root, const SceneCommon& common) = 0;
+  /// Rejects options the kind does not support (InputError naming the option). The default allows
+  /// checkpoints and rejects replicates.
+  virtual void check_options(const RunOptions& options, const SceneCommon& common) const;
+  virtual SceneOutcome run(const SceneCommon& common, const SceneRun& run) = 0;
+  /// Continues a run from its checkpoint (only kinds that write checkpoints get one).
+  virtual SceneOutcome resume(const SceneCommon& common, const SceneRun& run, const Checkpoint& checkpoint);
+};
+
+/// The registered kinds' names, in the registry's order.
+std::vector<std::string> scene_kind_names();
+/// A new kind object for `name`; InputError on `path` listing the valid names otherwise.
+std::unique_ptr<SceneKind> make_scene_kind(const std::string& name, const std::string& path = "kind");
+
+/// The scene sections with a key table: specimen, engine, loading, cut, tool, grooves, calibration,
+/// calibration.targets, output ("material" is kerf/dem/material.hpp's).
+std::vector<std::string> scene_sections();
+/// The Markdown key table of one section (all of them when `section` is empty), as docs/dem.md holds them;
+/// InputError listing the sections for an unknown one.
+std::string scene_keys_markdown(const std::string& section = "");
+
+struct Scene {
+  std::string kind_name;
+  SceneCommon common;
+  std::unique_ptr<SceneKind> kind;
+};
+
+/// Reads and validates a scene (unknown keys are rejected); `scene_dir` resolves a relative specimen.file.
+Scene read_scene(const Json& doc, const std::filesystem::path& scene_dir);
+
+/// Reads the scene, checks the options, creates options.out and runs it. `scene_file` is where the scene
+/// came from (specimen.file is relative to its directory).
+SceneOutcome run_scene(const Json& doc, const std::filesystem::path& scene_file, const RunOptions& options);
+
+/// Continues the run killed in `dir` from dir/checkpoint.bin (options.out is `dir`).
+SceneOutcome resume_scene(const std::filesystem::path& dir, bool show_progress = true);
+
+}  // namespace kerf::dem

@@ -1,0 +1,176 @@
+// The scene layer (dem/scene.cpp, dem/kinds/): the kind registry, the field tables of the scene sections and
+// a small cut run end to end through run_scene against stored forces and crack counts.
+#include "kerf/dem/scene.hpp"
+
+#include <catch2/catch.hpp>
+#include <cstdlib>
+#include <filesystem>
+
+#include "kerf/dem/cutting.hpp"
+#include "kerf/dem/lab_test.hpp"
+#include "kerf/error.hpp"
+#include "kerf/io.hpp"
+
+using namespace kerf::dem;
+using Catch::Matchers::WithinAbs;
+using Catch::Matchers::WithinRel;
+using kerf::Json;
+
+namespace {
+/// The same keys and texts, numbers equal to within an ulp or two: a unit conversion and its inverse
+/// (mm -> m -> mm) are not exact inverses in floating point.
+void check_same_json(const Json& a, const Json& b) {
+  REQUIRE(a.type() == b.type());
+  if (a.is_object()) {
+    REQUIRE(a.size() == b.size());
+    for (const auto& [key, value] : a.items()) {
+      INFO(key);
+      REQUIRE(b.contains(key));
+      check_same_json(value, b.at(key));
+    }
+  } else if (a.is_number_float()) {
+    CHECK_THAT(a.get<double>(), WithinRel(b.get<double>(), 1e-15));
+  } else {
+    CHECK(a == b);
+  }
+}
+}  // namespace
+
+TEST_CASE("scene: the registry constructs every registered kind; an unknown kind lists the valid ones", "[scene]") {
+  const std::vector<std::string> names = scene_kind_names();
+  CHECK(names == std::vector<std::string>{"specimen", "tension", "compression", "calibrate", "cut", "calibrate_cut"});
+  for (const auto& name : names) CHECK(make_scene_kind(name) != nullptr);
+  CHECK_THROWS_WITH(make_scene_kind("cutt"),
+                    "kind = cutt: expected one of 'specimen', 'tension', 'compression', 'calibrate', 'cut', "
+                    "'calibrate_cut' (did you mean 'cut'?)");
+  CHECK_THROWS_WITH(read_scene(Json{{"kind", "tensoin"}}, "."), Catch::Contains("kind = tensoin") &&
+                                                                   Catch::Contains("did you mean 'tension'?"));
+}
+
+TEST_CASE("scene: a scene is read and checked before any genesis", "[scene]") {
+  const Json cut{{"kind", "cut"}, {"cut", {{"depth_of_cut_mm", 0.1}, {"length_mm", 0.3}}}};
+  const Scene scene = read_scene(cut, ".");
+  CHECK(scene.kind_name == "cut");
+  CHECK(scene.common.output.frame_every_samples == 100);
+  // Unknown keys, ranges and missing required keys name the JSON path.
+  Json bad = cut;
+  bad["cut"]["depth_of_cut_mn"] = 0.1;
+  CHECK_THROWS_WITH(read_scene(bad, "."), Catch::Contains("cut.depth_of_cut_mn") && Catch::Contains("depth_of_cut_mm"));
+  bad = cut;
+  bad["cut"].erase("length_mm");
+  CHECK_THROWS_WITH(read_scene(bad, "."), Catch::Contains("cut.length_mm"));
+  bad = cut;
+  bad["specimen"] = Json{{"radius_min_um", 10}, {"radius_max_um", 8}};
+  CHECK_THROWS_WITH(read_scene(bad, "."), Catch::StartsWith("specimen.radius_max_um = 8: expected a value >= radius_min_um"));
+  bad = cut;
+  bad["grooves"] = Json{{"shape", "trapezoid"}};
+  CHECK_THROWS_WITH(read_scene(bad, "."), Catch::Contains("grooves.shape = trapezoid") &&
+                                              Catch::Contains("did you mean 'trapezoidal'?"));
+  bad = cut;
+  bad["output"] = Json{{"frame_every_samples", -1}};
+  CHECK_THROWS_AS(read_scene(bad, "."), kerf::InputError);
+  // Options a kind does not support.
+  RunOptions options;
+  options.replicates = 3;
+  CHECK_THROWS_WITH(read_scene(Json{{"kind", "tension"}}, ".").kind->check_options(options, {}),
+                    Catch::Contains("--replicates = 3"));
+  options.replicates = 1;
+  options.checkpoint_every = 5;
+  CHECK_THROWS_WITH(read_scene(Json{{"kind", "specimen"}}, ".").kind->check_options(options, {}),
+                    Catch::Contains("--checkpoint-every = 5"));
+}
+
+TEST_CASE("scene: field tables read the struct's defaults, check ranges and round-trip through to_json", "[scene]") {
+  // Defaults: an empty section gives the struct's initialisers.
+  const Json empty = Json::object();
+  kerf::ObjectReader none(empty, "specimen");
+  const SpecimenSpec spec = read_specimen_spec(none);
+  CHECK(kerf::fields_to_json(specimen_fields(), spec) == kerf::fields_to_json(specimen_fields(), SpecimenSpec{}));
+  CHECK(spec.packing == Packing::random);
+  // Round trip: to_json, then read, gives the same struct (to within an ulp: unit conversions round).
+  SpecimenSpec s;
+  s.packing = Packing::hexagonal;
+  s.seed = 42;
+  s.width_m = 0.4e-3;
+  const Json j = specimen_spec_to_json(s);
+  kerf::ObjectReader back(j, "specimen");
+  check_same_json(specimen_spec_to_json(read_specimen_spec(back)), j);
+  CHECK(j.at("packing") == "hexagonal");
+  CutParams p;
+  p.depth_of_cut_m = 0.05e-3;
+  p.groove_shape = GrooveShape::trapezoidal;
+  p.tool_friction_coefficient = 0.1;
+  const Json cj = cut_params_to_json(p);
+  kerf::ObjectReader root(cj, "");
+  check_same_json(cut_params_to_json(read_cut_params(root)), cj);
+  LoadingSpec l;
+  l.quasi_static_check = false;
+  const Json lj = kerf::fields_to_json(loading_fields(), l);
+  kerf::ObjectReader lr(lj, "loading");
+  check_same_json(kerf::fields_to_json(loading_fields(), read_loading_spec(lr, LabTest::compression)), lj);
+  // Tension's own default of max_strain.
+  kerf::ObjectReader t(empty, "loading");
+  CHECK(read_loading_spec(t, LabTest::tension).max_strain == 0.005);
+  // Ranges: a physics check names the key; the scene layer adds the path.
+  s = SpecimenSpec{};
+  s.packing_fraction = 0.95;
+  CHECK_THROWS_WITH(check_specimen_spec(s), Catch::StartsWith("packing_fraction = 0.95: expected"));
+  CHECK_THROWS_WITH(kerf::with_path("specimen", [&] { check_specimen_spec(s); }),
+                    Catch::StartsWith("specimen.packing_fraction = 0.95"));
+  p = CutParams{};
+  p.edge_segments = 0;
+  CHECK_THROWS_WITH(validate_cut_params(p), Catch::StartsWith("tool.edge_segments = 0"));
+  // Unknown key (the reader's finish) with a suggestion.
+  const Json typo{{"seeed", 3}};
+  kerf::ObjectReader r(typo, "specimen");
+  read_specimen_spec(r);
+  CHECK_THROWS_WITH(r.finish(), Catch::Contains("specimen.seeed") && Catch::Contains("did you mean 'seed'?"));
+  // Every section has a key table; an unknown one lists them.
+  for (const auto& section : scene_sections()) CHECK(scene_keys_markdown(section).find("| key | unit |") != std::string::npos);
+  CHECK_THROWS_WITH(scene_keys_markdown("tol"), Catch::Contains("SECTION = tol") && Catch::Contains("'tool'"));
+}
+
+TEST_CASE("scene: small cut regression through run_scene", "[scene][regression]") {
+  // A miniature of the seed-000 validation cut (2 s on one thread). Reference forces and crack counts with
+  // their tolerance; regenerate with KERF_REGENERATE_REFERENCE=1 build/tests/kerf_dem_tests '[regression]'.
+  const std::string file = std::string(KERF_SOURCE_DIR) + "/tests/dem/reference/cut_small.json";
+  const Json scene = Json::parse(R"({"kind": "cut", "material": {"base": "soda_lime_glass_fj"},
+    "specimen": {"width_mm": 0.4, "height_mm": 0.25, "radius_min_um": 10, "radius_max_um": 13, "seed": 1,
+                 "growth_steps": 2000, "relax_steps": 500},
+    "cut": {"depth_of_cut_mm": 0.05, "speed_m_per_s": 2, "length_mm": 0.1},
+    "grooves": {"shape": "rectangular", "pitch_mm": 0.08, "width_mm": 0.03},
+    "output": {"frame_every_samples": 0}})");
+  RunOptions options;
+  options.out = std::filesystem::temp_directory_path() / "kerf_scene_test_cut_small";
+  options.show_progress = false;
+  std::filesystem::remove_all(options.out);
+  const SceneOutcome done = run_scene(scene, std::string(KERF_SOURCE_DIR) + "/data/scenes/scene.json", options);
+  CHECK(done.exit_status == 0);
+  CHECK(std::filesystem::exists(options.out / "forces.csv"));
+  const Json& r = done.summary.at("results");
+  Json now;
+  for (const char* key : {"main_force_N", "thrust_force_N", "main_force_std_N", "thrust_force_std_N", "cracks_tensile",
+                          "cracks_shear", "cracks_chip", "cracks_subsurface", "particles_removed_by_grooves"})
+    now[key] = r.at(key);
+  now["n_particles"] = done.summary.at("n_particles");
+  std::filesystem::remove_all(options.out);
+  if (const char* env = std::getenv("KERF_REGENERATE_REFERENCE"); env && std::string(env) == "1") {
+    const Json out{{"description", "tests/dem/scene_test.cpp 'small cut regression through run_scene'; regenerate with "
+                                   "KERF_REGENERATE_REFERENCE=1 build/tests/kerf_dem_tests '[regression]'"},
+                   {"relative_tolerance", 0.02},
+                   {"crack_count_tolerance", 3},
+                   {"values", now}};
+    kerf::write_file_atomically(file, out.dump(2) + "\n");
+    WARN("reference regenerated: " << file);
+    return;
+  }
+  const Json ref = kerf::read_json_file(file);
+  const double tol = ref.at("relative_tolerance"), cracks = ref.at("crack_count_tolerance");
+  CHECK(now.at("n_particles") == ref.at("values").at("n_particles"));
+  CHECK(now.at("particles_removed_by_grooves") == ref.at("values").at("particles_removed_by_grooves"));
+  for (const auto& [key, value] : ref.at("values").items()) {
+    INFO(key);
+    if (key.rfind("cracks_", 0) == 0) CHECK_THAT(now.at(key).get<double>(), WithinAbs(value.get<double>(), cracks));
+    else CHECK_THAT(now.at(key).get<double>(), WithinRel(value.get<double>(), tol));
+  }
+}
