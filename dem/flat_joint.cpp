@@ -37,9 +37,7 @@ FlatJointParams FlatJointParams::validated(const FlatJointParams& raw) {
 }
 
 BondGeometry bond_geometry(const FlatJointParams& p, double r1_m, double r2_m, double thickness_m) {
-  const double r_min = r2_m > 0 ? std::min(r1_m, r2_m) : r1_m;
-  const double kn = p.effective_modulus_pa / (r1_m + r2_m);  // r2 = 0: disk-wall, L = R1
-  return {p.radius_multiplier * r_min, thickness_m, kn, kn / p.stiffness_ratio};
+  return interface_geometry(p.effective_modulus_pa, p.stiffness_ratio, p.radius_multiplier, r1_m, r2_m, thickness_m);
 }
 
 double flat_joint_bonded_energy(const FlatJointParams& p, const BondGeometry& geo, const BondKinematics& kin,

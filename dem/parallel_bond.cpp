@@ -31,9 +31,7 @@ ParallelBondParams ParallelBondParams::validated(const ParallelBondParams& raw) 
 }
 
 BondGeometry bond_geometry(const ParallelBondParams& p, double r1_m, double r2_m, double thickness_m) {
-  const double r_min = r2_m > 0 ? std::min(r1_m, r2_m) : r1_m;
-  const double kn = p.effective_modulus_pa / (r1_m + r2_m);
-  return {p.radius_multiplier * r_min, thickness_m, kn, kn / p.stiffness_ratio};
+  return interface_geometry(p.effective_modulus_pa, p.stiffness_ratio, p.radius_multiplier, r1_m, r2_m, thickness_m);
 }
 
 double bond_energy(const ParallelBondParams&, const BondGeometry& geo, const BondKinematics& kin,

@@ -110,6 +110,14 @@ void damped_kick_disks(std::int64_t n, double dt, double alpha, const std::uint8
   }
 }
 
+/// The disk arrays the contact loops read (positions, velocities, spins, rotations, radii).
+struct DiskArrays {
+  const double *x, *y, *vx, *vy, *om, *th, *rad;
+};
+inline DiskArrays disk_arrays(const Particles& p) {
+  return {p.x.data(), p.y.data(), p.vx.data(), p.vy.data(), p.omega.data(), p.theta.data(), p.radius.data()};
+}
+
 /// Closest point of segment (x0, y0)-(x1, y1) to (px, py).
 inline std::array<double, 2> closest_on_segment(const Wall& w, double px, double py) {
   const double ex = w.x1 - w.x0, ey = w.y1 - w.y0;
@@ -388,13 +396,7 @@ void Simulation::bond_loop(const Law& law, ForceCounts& counts) {
   const int stride = b_.stride;
   const auto nb = static_cast<std::int64_t>(b_.size());
   int n_breaking = 0, n_retired = 0;
-  const double* x = p_.x.data();
-  const double* y = p_.y.data();
-  const double* vx = p_.vx.data();
-  const double* vy = p_.vy.data();
-  const double* om = p_.omega.data();
-  const double* th = p_.theta.data();
-  const double* rad = p_.radius.data();
+  const auto [x, y, vx, vy, om, th, rad] = disk_arrays(p_);
 
   // Joints in blocks, each in two passes: first the kinematics of every joint of the block (independent from
   // joint to joint, so the square roots and divisions of several joints are in flight at once instead of one
@@ -466,18 +468,12 @@ void Simulation::bond_loop(const Law& law, ForceCounts& counts) {
 #pragma omp atomic
     counts.n_retired += n_retired;
   }
-
 }
 
 template <class Law>
 void Simulation::pair_loop(const Law& law) {
   const double dt = dt_, t = opt_.thickness_m;
-  const double* x = p_.x.data();
-  const double* y = p_.y.data();
-  const double* vx = p_.vx.data();
-  const double* vy = p_.vy.data();
-  const double* om = p_.omega.data();
-  const double* rad = p_.radius.data();
+  const auto [x, y, vx, vy, om, th, rad] = disk_arrays(p_);
 
   const auto np = static_cast<std::int64_t>(pairs_.size());
 #pragma omp for schedule(static) nowait
@@ -501,18 +497,12 @@ void Simulation::pair_loop(const Law& law) {
     pair_out_[k] = {r.normal_force_n * nx + r.shear_force_n * sx, r.normal_force_n * ny + r.shear_force_n * sy,
                     -a1 * r.shear_force_n, -a2 * r.shear_force_n};
   }
-
 }
 
 template <class Law>
 void Simulation::wall_loop(const Law& law) {
   const double dt = dt_, t = opt_.thickness_m;
-  const double* x = p_.x.data();
-  const double* y = p_.y.data();
-  const double* vx = p_.vx.data();
-  const double* vy = p_.vy.data();
-  const double* om = p_.omega.data();
-  const double* rad = p_.radius.data();
+  const auto [x, y, vx, vy, om, th, rad] = disk_arrays(p_);
 
   const auto nw = static_cast<std::int64_t>(wall_contacts_.size());
 #pragma omp for schedule(static)

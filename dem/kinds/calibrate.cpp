@@ -108,13 +108,9 @@ class CalibrateKind final : public SceneKind {
   }
 
   SceneOutcome run(const SceneCommon& common, const SceneRun& run) override {
-    SpecimenSpec spec;
-    SpecimenReport report;
-    double genesis_s = 0;
-    const Simulation specimen = obtain_specimen(common, spec, report, genesis_s, run.options.show_progress);
-    Json summary = summary_head("calibrate", common.material);
-    summary["specimen"] = specimen_json(spec, report, genesis_s);
-    summary["time_step_s"] = specimen.time_step();
+    StartedRun started = start_from_specimen(common, "calibrate", run.options.show_progress);
+    const Simulation& specimen = started.specimen;
+    Json& summary = started.summary;
     return calibrate_from(common, run, specimen, std::move(summary), {});
   }
 

@@ -48,6 +48,17 @@ Json summary_head(const std::string& kind, const Material& material) {
   return Json{{"kind", kind}, {"material", material_to_json(material)}, {"threads", omp_get_max_threads()}};
 }
 
+StartedRun start_from_specimen(const SceneCommon& scene, const std::string& kind, bool show_progress) {
+  SpecimenSpec spec;
+  SpecimenReport report;
+  double genesis_s = 0;
+  Simulation specimen = obtain_specimen(scene, spec, report, genesis_s, show_progress);
+  Json summary = summary_head(kind, scene.material);
+  summary["specimen"] = specimen_json(spec, report, genesis_s);
+  summary["time_step_s"] = specimen.time_step();
+  return {std::move(specimen), spec, report, std::move(summary)};
+}
+
 void write_summary(const fs::path& out, const Json& summary) {
   write_file_atomically(out / "summary.json", summary.dump(2) + "\n");
 }

@@ -24,6 +24,15 @@ Json specimen_json(const SpecimenSpec& spec, const SpecimenReport& report, doubl
 /// {"kind", "material", "threads"}: how every summary begins.
 Json summary_head(const std::string& kind, const Material& material);
 
+/// A scene's specimen with the head of its summary: what every kind that starts from one specimen does first.
+struct StartedRun {
+  Simulation specimen;
+  SpecimenSpec spec;
+  SpecimenReport report;
+  Json summary;  ///< summary_head, "specimen" (specimen_json) and "time_step_s"
+};
+StartedRun start_from_specimen(const SceneCommon& scene, const std::string& kind, bool show_progress);
+
 /// Writes OUT/summary.json.
 void write_summary(const fs::path& out, const Json& summary);
 

@@ -115,13 +115,9 @@ class CutKind final : public SceneKind {
   SceneOutcome run(const SceneCommon& common, const SceneRun& run) override {
     const RunOptions& o = run.options;
     if (o.replicates > 1) return run_cut_replicates(common, cut_, o.replicates, summary_head("cut", common.material), o.out);
-    SpecimenSpec spec;
-    SpecimenReport report;
-    double genesis_s = 0;
-    const Simulation specimen = obtain_specimen(common, spec, report, genesis_s, o.show_progress);
-    Json summary = summary_head("cut", common.material);
-    summary["specimen"] = specimen_json(spec, report, genesis_s);
-    summary["time_step_s"] = specimen.time_step();
+    StartedRun started = start_from_specimen(common, "cut", o.show_progress);
+    const Simulation& specimen = started.specimen;
+    Json& summary = started.summary;
     // CutRun checks the cut against the workpiece and the time step before the first step.
     return {0,
             continue_cut(common, cut_, run.doc, std::move(summary), o.out, o.checkpoint_every, CutRun(specimen, cut_),

@@ -6,6 +6,7 @@
 
 #include "common.hpp"
 #include "kerf/dem/lab_test.hpp"
+#include "kerf/dem/material.hpp"
 #include "kerf/error.hpp"
 
 namespace kerf::dem {
@@ -19,6 +20,8 @@ struct SectionKeys {
 
 const std::vector<SectionKeys>& sections() {
   static const std::vector<SectionKeys> list{
+      {"material", "every kind; or `{\"base\": \"NAME\"}` and overrides: a library material of data/materials/",
+       material_keys_markdown},
       {"specimen", "every kind; or `{\"file\": \"specimen.json\"}`, a specimen saved by kind `specimen`",
        [] { return fields_markdown(specimen_fields()); }},
       {"engine", "every kind: settings applied to the specimen once built", [] { return fields_markdown(engine_fields()); }},

@@ -50,13 +50,9 @@ class LabTestKind final : public SceneKind {
   }
 
   SceneOutcome run(const SceneCommon& common, const SceneRun& run) override {
-    SpecimenSpec spec;
-    SpecimenReport report;
-    double genesis_s = 0;
-    const Simulation specimen = obtain_specimen(common, spec, report, genesis_s, run.options.show_progress);
-    Json summary = summary_head(name(), common.material);
-    summary["specimen"] = specimen_json(spec, report, genesis_s);
-    summary["time_step_s"] = specimen.time_step();
+    StartedRun started = start_from_specimen(common, name(), run.options.show_progress);
+    const Simulation& specimen = started.specimen;
+    Json& summary = started.summary;
     return continue_test(common, run, specimen, std::move(summary), LabTestRun(specimen, loading_),
                          {{}, 0, run.scene_dir, run.options.show_progress});
   }

@@ -26,14 +26,12 @@ class SpecimenKind final : public SceneKind {
 
   SceneOutcome run(const SceneCommon& common, const SceneRun& run) override {
     const fs::path& out = run.options.out;
-    SpecimenSpec spec;
-    SpecimenReport report;
-    double genesis_s = 0;
-    const Simulation specimen = obtain_specimen(common, spec, report, genesis_s, run.options.show_progress);
-    Json summary = summary_head("specimen", common.material);
-    summary["specimen"] = specimen_json(spec, report, genesis_s);
-    summary["time_step_s"] = specimen.time_step();
-    save_specimen((out / "specimen.json").string(), specimen, spec, report);
+    StartedRun started = start_from_specimen(common, "specimen", run.options.show_progress);
+    const Simulation& specimen = started.specimen;
+    Json& summary = started.summary;
+    const SpecimenReport& report = started.report;
+    const double genesis_s = summary["specimen"]["genesis_wall_time_s"].get<double>();
+    save_specimen((out / "specimen.json").string(), specimen, started.spec, report);
     write_vtp_frame(out / "specimen.vtp", specimen);
     write_specimen_png(out / "specimen.png", specimen, "specimen");
     summary["n_particles"] = report.n_particles;

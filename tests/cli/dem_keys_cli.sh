@@ -10,10 +10,15 @@ forces="$1/kerf-forces"
 "$bin" keys >"$work/keys.md" || fail "kerf-dem keys failed"
 sed -n '/<!-- kerf-dem keys: begin -->/,/<!-- kerf-dem keys: end -->/p' "$src/docs/dem.md" | sed '1d;$d' >"$work/doc.md"
 diff -u "$work/doc.md" "$work/keys.md" >"$work/diff" || fail "docs/dem.md's key tables differ from kerf-dem keys: $(head -20 "$work/diff")"
-for section in specimen engine loading cut tool grooves calibration calibration.targets output; do
+for section in material specimen engine loading cut tool grooves calibration calibration.targets output; do
   grep -q "^#### \`$section\`" "$work/keys.md" || fail "no key table for $section"
 done
 "$bin" keys cut | grep -q '`depth_of_cut_mm` | mm |' || fail "keys cut: no depth_of_cut_mm row"
+# Every registered law's keys are in the material's reference.
+"$bin" keys material | grep -q '`tensile_strength_MPa` | MPa |' || fail "keys material: no tensile_strength_MPa row"
+for law in linear flat_joint parallel_bond; do
+  "$bin" keys material | grep -q "^\`$law\`: " || fail "keys material: no table for the law $law"
+done
 
 "$bin" keys specimn >/dev/null 2>"$work/err"
 [ $? -eq 2 ] || fail "unknown section: expected exit 2"

@@ -152,16 +152,14 @@ inline BondResult bond_update(const FlatJointParams& p, const BondGeometry& geo,
 /// gap is a coin toss (a mispredicted branch per joint).
 inline bool bond_retires(const FlatJointParams& p, const BondGeometry& geo, const BondKinematics& kin,
                          const BondResult& r, double surface_gap_m, const std::uint8_t* bonded) {
-  bool any_bonded = false;
-  for (int e = 0; e < p.n_elements; ++e) any_bonded = any_bonded || bonded[e];
-  return !any_bonded && r.n_breaking == 0 && surface_gap_m > 0 &&
-         kin.gap_m > std::abs(kin.rotation_rad) * geo.half_length_m;
+  for (int e = 0; e < p.n_elements; ++e)
+    if (bonded[e]) return false;  // nearly every joint: at e = 0
+  return r.n_breaking == 0 && surface_gap_m > 0 && kin.gap_m > std::abs(kin.rotation_rad) * geo.half_length_m;
 }
 
-/// The interface as one strip 2R x t: k_n 2R t, k_s 2R t and the bending stiffness k_n t (2R)^3 / 12.
+/// The interface as one strip (interface_time_step_stiffness).
 inline TimeStepStiffness bond_time_step_stiffness(const FlatJointParams&, const BondGeometry& g) {
-  const double len = 2 * g.half_length_m, t = g.thickness_m;
-  return {g.normal_stiffness * len * t, g.shear_stiffness * len * t, g.normal_stiffness * t * len * len * len / 12.0};
+  return interface_time_step_stiffness(g);
 }
 
 inline double bond_energy(const FlatJointParams& p, const BondGeometry& geo, const BondKinematics& kin,

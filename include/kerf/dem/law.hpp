@@ -3,6 +3,7 @@
 // struct (validated once) and pure functions of it, overloaded on that struct; the engine calls them from
 // loops instantiated once per law (kerf/dem/contact_laws.hpp lists the laws and the functions each supplies;
 // docs/dem-contact-laws.md says how to add one).
+#include <algorithm>
 #include <cstdint>
 
 namespace kerf::dem {
@@ -18,6 +19,15 @@ struct BondGeometry {
   double normal_stiffness;  ///< k_n [Pa/m] (stress per gap length)
   double shear_stiffness;   ///< k_s [Pa/m]
 };
+
+/// The bonded interface of both registered bond laws: k_n = Ebar* / (R1 + R2) (r2 = 0: a disk-wall bond,
+/// L = R1), k_s = k_n / kappabar*, half-length R = lambda min(R1, R2).
+inline BondGeometry interface_geometry(double effective_modulus_pa, double stiffness_ratio, double radius_multiplier,
+                                       double r1_m, double r2_m, double thickness_m) {
+  const double r_min = r2_m > 0 ? std::min(r1_m, r2_m) : r1_m;
+  const double kn = effective_modulus_pa / (r1_m + r2_m);
+  return {radius_multiplier * r_min, thickness_m, kn, kn / stiffness_ratio};
+}
 
 /// Relative motion of a bonded interface since installation, in the contact frame (n from disk 1 to 2).
 struct BondKinematics {
@@ -45,6 +55,12 @@ struct ElementPlace {
 struct TimeStepStiffness {
   double normal, shear, bending;
 };
+
+/// The interface as one strip 2R x t: k_n 2R t, k_s 2R t and the bending stiffness k_n t (2R)^3 / 12.
+inline TimeStepStiffness interface_time_step_stiffness(const BondGeometry& g) {
+  const double len = 2 * g.half_length_m, t = g.thickness_m;
+  return {g.normal_stiffness * len * t, g.shear_stiffness * len * t, g.normal_stiffness * t * len * len * len / 12.0};
+}
 
 /// Force of an unbonded contact on disk 2.
 struct ContactResult {

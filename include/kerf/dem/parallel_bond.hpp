@@ -81,10 +81,9 @@ inline bool bond_retires(const ParallelBondParams&, const BondGeometry&, const B
                          double, const std::uint8_t* bonded) {
   return !bonded[0];
 }
-/// k_n A, k_s A and the bending stiffness k_n I.
+/// k_n A, k_s A and the bending stiffness k_n I (interface_time_step_stiffness).
 inline TimeStepStiffness bond_time_step_stiffness(const ParallelBondParams&, const BondGeometry& g) {
-  const double len = 2 * g.half_length_m, t = g.thickness_m;
-  return {g.normal_stiffness * len * t, g.shear_stiffness * len * t, g.normal_stiffness * t * len * len * len / 12.0};
+  return interface_time_step_stiffness(g);
 }
 /// 1/2 k_n A g^2 + 1/2 k_n I theta^2 + 1/2 F_s^2 / (k_s A) while bonded.
 double bond_energy(const ParallelBondParams& p, const BondGeometry& geo, const BondKinematics& kin,
