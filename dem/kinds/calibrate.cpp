@@ -108,7 +108,7 @@ class CalibrateKind final : public SceneKind {
   }
 
   SceneOutcome run(const SceneCommon& common, const SceneRun& run) override {
-    StartedRun started = start_from_specimen(common, "calibrate", run.options.show_progress);
+    StartedRun started = start_from_specimen(common, "calibrate", progress_target(run.options));
     const Simulation& specimen = started.specimen;
     Json& summary = started.summary;
     return calibrate_from(common, run, specimen, std::move(summary), {});

@@ -91,7 +91,8 @@ class CalibrateCutKind final : public SceneKind {
                                units::pa_to_mpa(calibrated_params(e.material).cohesion_pa), fit.replicates)
                 << std::flush;
       const Json done =
-          run_cut_replicates(e, cut_, fit.replicates, summary_head("cut", e.material), dir).summary;
+          run_cut_replicates(e, cut_, fit.replicates, summary_head("cut", e.material), dir, progress_target(run.options))
+              .summary;
       const Json& r = done["results"];
       const double force = r["main_force_N"].get<double>();
       const double error = force / fit.target_main_force_n - 1;

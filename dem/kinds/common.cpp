@@ -14,20 +14,44 @@
 
 namespace kerf::dem::kinds {
 
+ProgressTarget progress_target(const RunOptions& options) { return {options.show_progress, options.on_progress, ""}; }
+
+StageProgress::StageProgress(const ProgressTarget& target, const std::string& stage, double total, const std::string& unit)
+    : callback_(target.callback), update_{target.prefix + stage, 0, total, unit} {
+  if (target.bar) bar_.emplace(update_.stage, static_cast<std::size_t>(total), unit);
+}
+
+void StageProgress::advance(double count) {
+  update_.done += count;
+  if (bar_) bar_->advance(static_cast<std::size_t>(count));
+  if (callback_) {
+#pragma omp critical(kerf_dem_progress_callback)
+    callback_(update_);
+  }
+}
+
+void StageProgress::finish() {
+  if (bar_) bar_->finish();
+  if (callback_ && update_.done != update_.total) {
+    update_.done = update_.total;
+#pragma omp critical(kerf_dem_progress_callback)
+    callback_(update_);
+  }
+}
+
 Simulation obtain_specimen(const SceneCommon& scene, SpecimenSpec& spec, SpecimenReport& report, double& wall_s,
-                           bool show_progress) {
+                           const ProgressTarget& target) {
   const auto start = std::chrono::steady_clock::now();
   std::optional<Simulation> sim;
   if (scene.specimen_file) {
     sim.emplace(load_specimen(*scene.specimen_file, scene.material, spec, report));
   } else {
     spec = scene.specimen;
-    std::optional<Progress> progress;
+    std::optional<StageProgress> progress;
     std::int64_t shown = 0;
     sim.emplace(make_specimen(scene.material, spec, report, [&](std::int64_t done, std::int64_t total) {
-      if (!show_progress) return;
-      if (!progress) progress.emplace("specimen genesis", static_cast<std::size_t>(total), "steps");
-      progress->advance(static_cast<std::size_t>(done - shown));
+      if (!progress) progress.emplace(target, "specimen genesis", static_cast<double>(total), "steps");
+      progress->advance(static_cast<double>(done - shown));
       shown = done;
     }));
     if (progress) progress->finish();
@@ -48,11 +72,11 @@ Json summary_head(const std::string& kind, const Material& material) {
   return Json{{"kind", kind}, {"material", material_to_json(material)}, {"threads", omp_get_max_threads()}};
 }
 
-StartedRun start_from_specimen(const SceneCommon& scene, const std::string& kind, bool show_progress) {
+StartedRun start_from_specimen(const SceneCommon& scene, const std::string& kind, const ProgressTarget& progress) {
   SpecimenSpec spec;
   SpecimenReport report;
   double genesis_s = 0;
-  Simulation specimen = obtain_specimen(scene, spec, report, genesis_s, show_progress);
+  Simulation specimen = obtain_specimen(scene, spec, report, genesis_s, progress);
   Json summary = summary_head(kind, scene.material);
   summary["specimen"] = specimen_json(spec, report, genesis_s);
   summary["time_step_s"] = specimen.time_step();

@@ -2,12 +2,14 @@
 // What the scene kinds share (internal to dem/kinds/): the specimen (genesis or file), the summary's head,
 // VTK frames, the material a calibration writes, and the factories the kind registry calls.
 #include <filesystem>
+#include <optional>
 #include <memory>
 #include <string>
 
 #include "kerf/dem/cutting.hpp"
 #include "kerf/dem/scene.hpp"
 #include "kerf/dem/simulation.hpp"
+#include "kerf/io.hpp"
 
 namespace kerf::dem::kinds {
 
@@ -15,8 +17,29 @@ namespace fs = std::filesystem;
 
 /// The specimen of a scene: loaded from specimen.file or made by genesis (with a progress bar when
 /// `show_progress`), the engine settings applied; `spec`, `report` and the wall time are filled in.
+/// Where a run's progress goes: the terminal bar and the caller's callback (RunOptions).
+struct ProgressTarget {
+  bool bar = true;            ///< false for replicates run side by side (one bar each would garble the terminal)
+  ProgressCallback callback;  ///< empty: none
+  std::string prefix;         ///< before the stage's name ("replicate 2: ")
+};
+ProgressTarget progress_target(const RunOptions& options);
+
+/// One stage's progress: advances its bar and reports to the callback (serialised across threads).
+class StageProgress {
+ public:
+  StageProgress(const ProgressTarget& target, const std::string& stage, double total, const std::string& unit);
+  void advance(double count);
+  void finish();
+
+ private:
+  std::optional<Progress> bar_;
+  ProgressCallback callback_;
+  ProgressUpdate update_;
+};
+
 Simulation obtain_specimen(const SceneCommon& scene, SpecimenSpec& spec, SpecimenReport& report, double& wall_s,
-                           bool show_progress = true);
+                           const ProgressTarget& progress);
 
 /// The summary's "specimen" object: the spec, the report and the genesis wall time.
 Json specimen_json(const SpecimenSpec& spec, const SpecimenReport& report, double wall_s);
@@ -31,7 +54,7 @@ struct StartedRun {
   SpecimenReport report;
   Json summary;  ///< summary_head, "specimen" (specimen_json) and "time_step_s"
 };
-StartedRun start_from_specimen(const SceneCommon& scene, const std::string& kind, bool show_progress);
+StartedRun start_from_specimen(const SceneCommon& scene, const std::string& kind, const ProgressTarget& progress);
 
 /// Writes OUT/summary.json.
 void write_summary(const fs::path& out, const Json& summary);
@@ -41,7 +64,7 @@ struct RunProgress {
   FrameList frames;
   int sample_index = 0;
   std::string scene_dir;
-  bool show_progress = true;  ///< false for replicates run side by side (one bar each would garble the terminal)
+  ProgressTarget progress;
 };
 
 /// Writes the next VTK frame (particles and bonds, cracks) and records it for the .pvd series.
@@ -61,7 +84,7 @@ void write_material_output(const MaterialOutput& output, const Json& material, c
 /// standard deviation. A replicate whose summary.json holds the same material, specimen and cut is reused.
 /// `summary` is the head every summary starts with (kind, material, threads).
 SceneOutcome run_cut_replicates(const SceneCommon& common, const CutParams& cut, int replicates, Json summary,
-                                const fs::path& out);
+                                const fs::path& out, const ProgressTarget& progress);
 
 // The kinds (one file each under dem/kinds/), constructed by the registry.
 std::unique_ptr<SceneKind> make_specimen_kind();

@@ -4,7 +4,6 @@
 #include <omp.h>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <exception>
@@ -32,21 +31,18 @@ Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& d
   if (frame_every > 0 && tp.sample_index == 0) write_frame(run.simulation());
   const double n = static_cast<double>(run.result().n_particles);
   const double steps = cut.length_m / (cut.speed_m_per_s * run.result().time_step_s);
-  std::optional<Progress> progress;
-  if (tp.show_progress) {
-    progress.emplace("cut", static_cast<std::size_t>(n * steps), "particle-steps");
-    progress->advance(static_cast<std::size_t>(n * cut.sample_every_steps * tp.sample_index));
-  }
+  StageProgress progress(tp.progress, "cut", n * steps, "particle-steps");
+  if (tp.sample_index > 0) progress.advance(n * cut.sample_every_steps * tp.sample_index);
   while (run.advance()) {
     ++tp.sample_index;
-    if (progress) progress->advance(static_cast<std::size_t>(n * cut.sample_every_steps));
+    progress.advance(n * cut.sample_every_steps);
     if (frame_every > 0 && tp.sample_index % frame_every == 0) write_frame(run.simulation());
     if (checkpoint_every > 0 && tp.sample_index % checkpoint_every == 0)
       // The cut holds its own workpiece: the checkpoint's specimen part stays empty.
       write_checkpoint(out, {doc, summary, tp.frames, tp.sample_index, checkpoint_every, tp.scene_dir, std::string(),
                              run.serialize()});
   }
-  if (progress) progress->finish();
+  progress.finish();
   if (frame_every > 0) write_frame(run.simulation());
   const CutResult& res = run.result();
   summary["cut"] = cut_params_to_json(cut);
@@ -114,21 +110,23 @@ class CutKind final : public SceneKind {
 
   SceneOutcome run(const SceneCommon& common, const SceneRun& run) override {
     const RunOptions& o = run.options;
-    if (o.replicates > 1) return run_cut_replicates(common, cut_, o.replicates, summary_head("cut", common.material), o.out);
-    StartedRun started = start_from_specimen(common, "cut", o.show_progress);
+    if (o.replicates > 1)
+      return run_cut_replicates(common, cut_, o.replicates, summary_head("cut", common.material), o.out,
+                                progress_target(o));
+    StartedRun started = start_from_specimen(common, "cut", progress_target(o));
     const Simulation& specimen = started.specimen;
     Json& summary = started.summary;
     // CutRun checks the cut against the workpiece and the time step before the first step.
     return {0,
             continue_cut(common, cut_, run.doc, std::move(summary), o.out, o.checkpoint_every, CutRun(specimen, cut_),
-                         {{}, 0, run.scene_dir, o.show_progress}),
+                         {{}, 0, run.scene_dir, progress_target(o)}),
             {}};
   }
 
   SceneOutcome resume(const SceneCommon& common, const SceneRun& run, const Checkpoint& c) override {
     return {0,
             continue_cut(common, cut_, c.scene, c.summary, run.options.out, c.checkpoint_every,
-                         CutRun::deserialize(c.run), {c.frames, c.sample_index, c.scene_dir, run.options.show_progress}),
+                         CutRun::deserialize(c.run), {c.frames, c.sample_index, c.scene_dir, progress_target(run.options)}),
             {}};
   }
 
@@ -141,10 +139,11 @@ class CutKind final : public SceneKind {
 /// Replicates run side by side, one thread each, as long as there are threads to spare (a cut of a few
 /// thousand disks scales better over replicates than over threads: no barrier per step); leftover threads
 /// go to each replicate's force loops. A replicate whose OUT/replicate_k/summary.json already holds the same
-/// material, specimen and cut is reused, so an interrupted study loses only the replicates in flight. Once a
-/// replicate finds the input bad (the cut against its workpiece or time step), no other one starts.
+/// material, specimen and cut is reused, so an interrupted study loses only the replicates in flight. The
+/// checks that need a workpiece and its time step (CutRun's) run once, on the first replicate to be run, before
+/// any other genesis starts: a bad cut is reported after one genesis, not after one per replicate.
 SceneOutcome run_cut_replicates(const SceneCommon& common, const CutParams& cut, int replicates, Json summary,
-                                const fs::path& out) {
+                                const fs::path& out, const ProgressTarget& progress) {
   // Each result with the name of its spread over the replicates.
   const std::vector<std::pair<std::string, std::string>> keys{
       {"main_force_N", "main_force_replicate_std_N"},
@@ -155,55 +154,73 @@ SceneOutcome run_cut_replicates(const SceneCommon& common, const CutParams& cut,
       {"cracks_subsurface_steady", "cracks_subsurface_steady_replicate_std"},
       {"subsurface_damage_depth_steady_um", "subsurface_damage_depth_steady_replicate_std_um"}};
   const auto start = std::chrono::steady_clock::now();
-  const int threads = omp_get_max_threads();
-  const int side_by_side = std::min(threads, replicates);
-  const int inner_threads = std::max(1, threads / side_by_side);
   std::vector<Json> done(static_cast<std::size_t>(replicates));
   std::vector<std::exception_ptr> failed(static_cast<std::size_t>(replicates));
-  std::atomic<bool> bad_input{false};
+  // Replicate k: its scene (packing seed + k), directory and inputs (reused only when all of them are unchanged).
+  const auto scene_of = [&](int k) {
+    SceneCommon s = common;
+    s.specimen.seed = common.specimen.seed + static_cast<std::uint64_t>(k);
+    return s;
+  };
+  const auto dir_of = [&](int k) { return out / fmt::format("replicate_{}", k + 1); };
+  const auto inputs_of = [&](const SceneCommon& s) {
+    return Json{{"material", material_to_json(s.material)}, {"specimen", specimen_spec_to_json(s.specimen)},
+                {"cut", cut_params_to_json(cut)}};
+  };
+  std::vector<int> pending;
+  for (int k = 0; k < replicates; ++k) {
+    const fs::path summary_file = dir_of(k) / "summary.json";
+    if (fs::exists(summary_file)) {
+      const Json old = read_json_file(summary_file.string());
+      // A run from before a result was added lacks it: run again.
+      const bool has_every_result = old.contains("results") && std::all_of(keys.begin(), keys.end(), [&](const auto& key) {
+        return old.at("results").contains(key.first);
+      });
+      if (old.value("replicate_inputs", Json()) == inputs_of(scene_of(k)) && has_every_result) {
+        std::cout << fmt::format("replicate {}: reusing the finished run in {}\n", k + 1, dir_of(k).string());
+        done[static_cast<std::size_t>(k)] = old;
+        continue;
+      }
+    }
+    pending.push_back(k);
+  }
+  // A replicate to run: its workpiece (genesis), the cut checked against it, then the cut.
+  struct Prepared {
+    StartedRun started;
+    CutRun run;
+  };
+  const auto prepare = [&](int k, const ProgressTarget& target) {
+    StartedRun started = start_from_specimen(scene_of(k), "cut", target);
+    CutRun run(started.specimen, cut);  // checks the cut against this workpiece and time step
+    return Prepared{std::move(started), std::move(run)};
+  };
+  const auto finish = [&](int k, Prepared prepared, int threads_each, const ProgressTarget& target) {
+    fs::create_directories(dir_of(k));
+    Json one = summary;
+    one["threads"] = threads_each;
+    one["replicate_inputs"] = inputs_of(scene_of(k));
+    one["specimen"] = prepared.started.summary["specimen"];
+    done[static_cast<std::size_t>(k)] = continue_cut(scene_of(k), cut, Json(), one, dir_of(k), 0,
+                                                     std::move(prepared.run), {{}, 0, std::string(), target});
+  };
+  const int threads = omp_get_max_threads();
+  const int side_by_side = std::max(1, std::min(threads, static_cast<int>(pending.size())));
+  const int inner_threads = std::max(1, threads / side_by_side);
+  const auto target_of = [&](int k) {
+    return ProgressTarget{progress.bar && side_by_side == 1, progress.callback, fmt::format("replicate {}: ", k + 1)};
+  };
+  // The first pending replicate's workpiece is built alone (all threads), so that a cut it cannot hold is an
+  // input error before any other genesis; it then runs beside the others.
+  std::optional<Prepared> first;
+  if (!pending.empty()) first.emplace(prepare(pending.front(), target_of(pending.front())));
   const int max_levels = omp_get_max_active_levels();
   omp_set_max_active_levels(2);
 #pragma omp parallel for schedule(dynamic, 1) num_threads(side_by_side)
-  for (int k = 0; k < replicates; ++k) {
+  for (std::size_t q = 0; q < pending.size(); ++q) {
+    const int k = pending[q];
     try {
       omp_set_num_threads(inner_threads);
-      SceneCommon s = common;
-      s.specimen.seed = common.specimen.seed + static_cast<std::uint64_t>(k);
-      const fs::path dir = out / fmt::format("replicate_{}", k + 1);
-      // What makes a replicate: reused only when all of it is unchanged.
-      const Json inputs{{"material", material_to_json(s.material)}, {"specimen", specimen_spec_to_json(s.specimen)},
-                        {"cut", cut_params_to_json(cut)}};
-      if (fs::exists(dir / "summary.json")) {
-        const Json old = read_json_file((dir / "summary.json").string());
-        // A run from before a result was added lacks it: run again.
-        const auto has_every_result = [&] {
-          return std::all_of(keys.begin(), keys.end(),
-                             [&](const auto& key) { return old.at("results").contains(key.first); });
-        };
-        if (old.value("replicate_inputs", Json()) == inputs && old.contains("results") && has_every_result()) {
-#pragma omp critical(kerf_dem_stdout)
-          std::cout << fmt::format("replicate {}: reusing the finished run in {}\n", k + 1, dir.string());
-          done[static_cast<std::size_t>(k)] = old;
-          continue;
-        }
-      }
-      if (bad_input) continue;
-      SpecimenSpec spec;
-      SpecimenReport report;
-      double genesis_s = 0;
-      const bool show_progress = side_by_side == 1;
-      const Simulation specimen = obtain_specimen(s, spec, report, genesis_s, show_progress);
-      CutRun run(specimen, cut);  // checks the cut against this workpiece before the first step
-      fs::create_directories(dir);
-      Json one = summary;
-      one["threads"] = inner_threads;
-      one["replicate_inputs"] = inputs;
-      one["specimen"] = specimen_json(spec, report, genesis_s);
-      done[static_cast<std::size_t>(k)] =
-          continue_cut(s, cut, Json(), one, dir, 0, std::move(run), {{}, 0, std::string(), show_progress});
-    } catch (const InputError&) {
-      bad_input = true;
-      failed[static_cast<std::size_t>(k)] = std::current_exception();
+      finish(k, q == 0 ? std::move(*first) : prepare(k, target_of(k)), inner_threads, target_of(k));
     } catch (...) {
       failed[static_cast<std::size_t>(k)] = std::current_exception();
     }

@@ -16,7 +16,8 @@ namespace kerf::dem::kinds {
 namespace {
 
 /// Runs one test on a copy of the specimen with a progress bar (the quasi-static check).
-LabTestResult run_test(const Simulation& specimen, const LoadingSpec& loading, const std::string& label) {
+LabTestResult run_test(const Simulation& specimen, const LoadingSpec& loading, const std::string& label,
+                       const ProgressTarget& target) {
   // Progress against the step count that reaches max_strain (an upper bound: most runs stop earlier).
   const double height = [&] {
     double lo = 1e300, hi = -1e300;
@@ -26,9 +27,9 @@ LabTestResult run_test(const Simulation& specimen, const LoadingSpec& loading, c
   }();
   const double n = static_cast<double>(specimen.particles().size());
   const double steps = loading.max_strain * height / (2 * loading.speed_m_per_s * specimen.time_step());
-  Progress progress(label, static_cast<std::size_t>(n * steps), "particle-steps");
+  StageProgress progress(target, label, n * steps, "particle-steps");
   auto result = run_lab_test(specimen, loading, [&](const Simulation&, const CurveSample&) {
-    progress.advance(static_cast<std::size_t>(n * loading.sample_every_steps));
+    progress.advance(n * loading.sample_every_steps);
   });
   progress.finish();
   return result;
@@ -50,17 +51,17 @@ class LabTestKind final : public SceneKind {
   }
 
   SceneOutcome run(const SceneCommon& common, const SceneRun& run) override {
-    StartedRun started = start_from_specimen(common, name(), run.options.show_progress);
+    StartedRun started = start_from_specimen(common, name(), progress_target(run.options));
     const Simulation& specimen = started.specimen;
     Json& summary = started.summary;
     return continue_test(common, run, specimen, std::move(summary), LabTestRun(specimen, loading_),
-                         {{}, 0, run.scene_dir, run.options.show_progress});
+                         {{}, 0, run.scene_dir, progress_target(run.options)});
   }
 
   SceneOutcome resume(const SceneCommon& common, const SceneRun& run, const Checkpoint& c) override {
     const Simulation specimen = Simulation::deserialize(c.specimen);
     return continue_test(common, run, specimen, c.summary, LabTestRun::deserialize(c.run),
-                         {c.frames, c.sample_index, c.scene_dir, run.options.show_progress});
+                         {c.frames, c.sample_index, c.scene_dir, progress_target(run.options)});
   }
 
  private:
@@ -81,11 +82,11 @@ class LabTestKind final : public SceneKind {
     const double n = static_cast<double>(specimen.particles().size());
     const double steps =
         loading_.max_strain * run.result().height_m / (2 * loading_.speed_m_per_s * run.simulation().time_step());
-    Progress progress(name(), static_cast<std::size_t>(n * steps), "particle-steps");
-    progress.advance(static_cast<std::size_t>(n * loading_.sample_every_steps * tp.sample_index));
+    StageProgress progress(tp.progress, name(), n * steps, "particle-steps");
+    if (tp.sample_index > 0) progress.advance(n * loading_.sample_every_steps * tp.sample_index);
     while (run.advance()) {
       ++tp.sample_index;
-      progress.advance(static_cast<std::size_t>(n * loading_.sample_every_steps));
+      progress.advance(n * loading_.sample_every_steps);
       if (frame_every > 0 && tp.sample_index % frame_every == 0) write_frame(run.simulation());
       if (checkpoint_every > 0 && tp.sample_index % checkpoint_every == 0)
         write_checkpoint(out, {scene_run.doc, summary, tp.frames, tp.sample_index, checkpoint_every, tp.scene_dir,
@@ -109,7 +110,7 @@ class LabTestKind final : public SceneKind {
       LoadingSpec half = loading_;
       half.speed_m_per_s *= 0.5;
       half.quasi_static_check = false;  // this run is the check
-      const LabTestResult slow = run_test(specimen, half, name() + " (quasi-static check, half speed)");
+      const LabTestResult slow = run_test(specimen, half, name() + " (quasi-static check, half speed)", tp.progress);
       results["quasi_static_check"] = Json{
           {"speed_m_per_s", half.speed_m_per_s},
           {"peak_stress_MPa", units::pa_to_mpa(slow.peak_stress_pa)},

@@ -26,7 +26,7 @@ class SpecimenKind final : public SceneKind {
 
   SceneOutcome run(const SceneCommon& common, const SceneRun& run) override {
     const fs::path& out = run.options.out;
-    StartedRun started = start_from_specimen(common, "specimen", run.options.show_progress);
+    StartedRun started = start_from_specimen(common, "specimen", progress_target(run.options));
     const Simulation& specimen = started.specimen;
     Json& summary = started.summary;
     const SpecimenReport& report = started.report;

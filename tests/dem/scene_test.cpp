@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 #include <cstdlib>
 #include <filesystem>
+#include <set>
 
 #include "kerf/dem/cutting.hpp"
 #include "kerf/dem/lab_test.hpp"
@@ -173,4 +174,60 @@ TEST_CASE("scene: small cut regression through run_scene", "[scene][regression]"
     if (key.rfind("cracks_", 0) == 0) CHECK_THAT(now.at(key).get<double>(), WithinAbs(value.get<double>(), cracks));
     else CHECK_THAT(now.at(key).get<double>(), WithinRel(value.get<double>(), tol));
   }
+}
+
+namespace {
+/// The small cut of the regression above, as a replicated scene the tests below vary.
+Json small_cut_scene() {
+  return Json::parse(R"({"kind": "cut", "material": {"base": "soda_lime_glass_fj"},
+    "specimen": {"width_mm": 0.4, "height_mm": 0.25, "radius_min_um": 10, "radius_max_um": 13, "seed": 1,
+                 "growth_steps": 2000, "relax_steps": 500},
+    "cut": {"depth_of_cut_mm": 0.05, "speed_m_per_s": 2, "length_mm": 0.02},
+    "output": {"frame_every_samples": 0}})");
+}
+}  // namespace
+
+TEST_CASE("scene: progress reaches the caller's callback, every stage to its end", "[scene]") {
+  RunOptions options;
+  options.out = std::filesystem::temp_directory_path() / "kerf_scene_test_progress";
+  options.show_progress = false;
+  std::vector<ProgressUpdate> seen;
+  options.on_progress = [&](const ProgressUpdate& u) { seen.push_back(u); };
+  std::filesystem::remove_all(options.out);
+  run_scene(small_cut_scene(), std::string(KERF_SOURCE_DIR) + "/data/scenes/scene.json", options);
+  std::filesystem::remove_all(options.out);
+  std::vector<std::string> stages;
+  for (std::size_t k = 0; k < seen.size(); ++k) {
+    if (stages.empty() || stages.back() != seen[k].stage) stages.push_back(seen[k].stage);
+    if (k > 0 && seen[k].stage == seen[k - 1].stage) CHECK(seen[k].done >= seen[k - 1].done);  // never backwards
+    CHECK(seen[k].done <= seen[k].total * (1 + 1e-12));
+  }
+  REQUIRE(stages == std::vector<std::string>{"specimen genesis", "cut"});
+  CHECK(seen.back().done == seen.back().total);  // the cut's stage ends at 100 %
+  CHECK(seen.back().unit == "particle-steps");
+}
+
+TEST_CASE("scene: a cut the workpiece cannot hold is refused after one genesis, not one per replicate", "[scene]") {
+  // The tool speed bound needs the workpiece's time step: it is checked on the first replicate's workpiece
+  // before any other genesis starts.
+  Json scene = small_cut_scene();
+  scene["cut"]["speed_m_per_s"] = 1e6;
+  RunOptions options;
+  options.out = std::filesystem::temp_directory_path() / "kerf_scene_test_replicates_refused";
+  options.show_progress = false;
+  options.replicates = 3;
+  std::set<std::string> genesis_stages;
+  options.on_progress = [&](const ProgressUpdate& u) {
+    if (u.stage.find("specimen genesis") != std::string::npos) genesis_stages.insert(u.stage);
+  };
+  std::filesystem::remove_all(options.out);
+  try {
+    run_scene(scene, std::string(KERF_SOURCE_DIR) + "/data/scenes/scene.json", options);
+    FAIL("a tool speed of 1e6 m/s accepted");
+  } catch (const kerf::InputError& e) {
+    CHECK(e.field() == "cut.speed_m_per_s");
+  }
+  CHECK(genesis_stages == std::set<std::string>{"replicate 1: specimen genesis"});
+  CHECK_FALSE(std::filesystem::exists(options.out / "replicate_2"));
+  std::filesystem::remove_all(options.out);
 }

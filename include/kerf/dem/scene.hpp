@@ -14,6 +14,7 @@
 //   SceneOutcome done = run_scene(doc, "scene.json", options);  // writes out/summary.json and the rest
 //   SceneOutcome again = resume_scene("out", {});                // a run killed after a checkpoint
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -43,12 +44,23 @@ struct SceneCommon {
   OutputSpec output;
 };
 
+/// One report of a running stage: "specimen genesis", "cut", "tension", "cut replicate 2", ...
+struct ProgressUpdate {
+  std::string stage;
+  double done = 0, total = 0;  ///< in `unit`; done reaches total when the stage finishes
+  std::string unit;            ///< "steps", "particle-steps"
+};
+/// Called as a run advances (every sample; a genesis as it reports). Replicates run side by side report from
+/// several threads, never two calls at once.
+using ProgressCallback = std::function<void(const ProgressUpdate&)>;
+
 /// How to run a scene (the kerf-dem command line's options).
 struct RunOptions {
   std::filesystem::path out = "out";
   int checkpoint_every = 0;  ///< samples between checkpoints (a calibration: one per evaluation); 0: none
   int replicates = 1;        ///< cut scenes: packings specimen.seed + 0 .. replicates - 1
   bool show_progress = true; ///< progress bars on stderr (drawn only when it is a terminal)
+  ProgressCallback on_progress;  ///< besides the bars (a notebook, a log); empty: none
 };
 
 /// What a run produced: its exit status (0; kExitModelError for a calibration that did not converge), the
