@@ -23,14 +23,39 @@ const EnumNames<CalibrationMethod>& method_names() {
   return table;
 }
 
-/// The "calibration" section's own numbers.
+constexpr std::string_view free_names[] = {"effective_modulus_GPa", "stiffness_ratio", "tensile_strength_MPa",
+                                           "cohesion_MPa"};
+
+/// "calibration.targets": a row of a table of macro-properties, which the section's own keys override.
+struct TargetsFile {
+  std::string file;  ///< relative: to the data directory; empty: none
+  std::string row = "soda_lime_glass";
+};
+const FieldTable<TargetsFile>& targets_file_fields() {
+  static const FieldTable<TargetsFile> table{
+      text_field("file", "a table of macro-properties (data/experiments/*.csv, relative to the data directory)",
+                 &TargetsFile::file),
+      text_field("row", "the row of `file` (its first cell)", &TargetsFile::row)};
+  return table;
+}
+
+/// The "calibration" section's own keys.
 const FieldTable<CalibrationSpec>& calibration_fields() {
   static const FieldTable<CalibrationSpec> table{
       number_field("tolerance_percent", units::kPercent, Range::open(0.0, 100.0),
                    "largest relative error of each of E, nu, sigma_t, sigma_c for convergence", &CalibrationSpec::tolerance),
       int_field("max_evaluations", 1, 1000, "DEM evaluations (one tension and one compression test each)",
                 &CalibrationSpec::max_evaluations),
-      choice_field("method", method_names(), "root finder (kerf/dem/calibration.hpp)", &CalibrationSpec::method)};
+      choice_field("method", method_names(), "root finder (kerf/dem/calibration.hpp)", &CalibrationSpec::method),
+      FlagsField<CalibrationSpec>{"free", free_names, "the micro-parameters the calibration may change",
+                                  [](const CalibrationSpec& c) {
+                                    return unsigned{c.free_modulus} | unsigned{c.free_stiffness_ratio} << 1 |
+                                           unsigned{c.free_tensile_strength} << 2 | unsigned{c.free_cohesion} << 3;
+                                  },
+                                  [](CalibrationSpec& c, unsigned flags) {
+                                    c.free_modulus = flags & 1u, c.free_stiffness_ratio = flags & 2u;
+                                    c.free_tensile_strength = flags & 4u, c.free_cohesion = flags & 8u;
+                                  }}};
   return table;
 }
 
@@ -69,27 +94,14 @@ class CalibrateKind final : public SceneKind {
     auto& c = spec_;
     ObjectReader cal = root.get_object("calibration");
     if (auto targets = cal.find_object("targets")) {
-      if (targets->has("file")) {
-        fs::path file = targets->get_string("file");
+      const TargetsFile source = read_fields(*targets, targets_file_fields(), TargetsFile{});
+      if (!source.file.empty()) {
+        fs::path file = source.file;
         if (file.is_relative()) file = kerf::data_directory() / file;
-        c.targets = read_targets_csv(file, targets->get_string_or("row", "soda_lime_glass"), targets->path());
+        c.targets = read_targets_csv(file, source.row, targets->path());
       }
       c.targets = read_fields(*targets, target_fields(), c.targets);
       targets->finish();
-    }
-    if (const Json* free = cal.find("free")) {
-      const std::vector<std::string> valid{"effective_modulus_GPa", "stiffness_ratio", "tensile_strength_MPa", "cohesion_MPa"};
-      if (!free->is_array()) throw InputError(cal.key_path("free"), json_value_text(*free), "a list of parameter names");
-      c.free_modulus = c.free_stiffness_ratio = c.free_tensile_strength = c.free_cohesion = false;
-      for (const auto& item : *free) {
-        const std::string name = item.is_string() ? item.get<std::string>() : json_value_text(item);
-        if (std::find(valid.begin(), valid.end(), name) == valid.end())
-          throw InputError(cal.key_path("free"), name, describe_choices(name, valid));
-        c.free_modulus |= name == valid[0];
-        c.free_stiffness_ratio |= name == valid[1];
-        c.free_tensile_strength |= name == valid[2];
-        c.free_cohesion |= name == valid[3];
-      }
     }
     c = read_fields(cal, calibration_fields(), c);
     output_ = read_material_output(cal, "calibrated");
@@ -195,20 +207,13 @@ std::unique_ptr<SceneKind> make_calibrate_kind() { return std::make_unique<Calib
 namespace kerf::dem::kinds {
 
 std::string calibrate_keys_markdown() {
-  return fields_markdown(calibration_fields()) +
-         "| `free` | - | a list of `effective_modulus_GPa`, `stiffness_ratio`, `tensile_strength_MPa`, `cohesion_MPa` | "
-         "all four | the micro-parameters the calibration may change |\n"
-         "| `material_name` | - | a file name without '/', '.', spaces | `calibrated` | the fitted material: "
-         "OUT/<name>.json |\n"
-         "| `install_material` | - | true or false | false | also write data/materials/<name>.json |\n"
+  return fields_markdown(calibration_fields()) + fields_markdown(material_output_fields(), {"calibrated", false}, false) +
          "| `targets` | - | an object | seed 000 Table 2 | the macro-properties to meet (`calibration.targets`) |\n";
 }
 
 std::string calibrate_targets_keys_markdown() {
   return fields_markdown(target_fields(), CalibrationSpec{}.targets) +
-         "| `file` | - | a CSV file (relative: to the data directory) | - | a table of macro-properties "
-         "(data/experiments/*.csv); the keys above override its row |\n"
-         "| `row` | - | the first cell of a row of `file` | `soda_lime_glass` | the row to use |\n";
+         fields_markdown(targets_file_fields(), {}, false);
 }
 
 }  // namespace kerf::dem::kinds

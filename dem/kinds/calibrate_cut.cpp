@@ -38,7 +38,9 @@ const FieldTable<CutFit>& cut_fit_fields() {
                    "relative error of the mean main force for convergence", &CutFit::tolerance),
       int_field("max_evaluations", 1, 50, "evaluations (each `replicates` cuts)", &CutFit::max_evaluations),
       number_field("start_strength_factor", units::kNone, Range::positive(), "the first evaluation's factor s",
-                   &CutFit::start_factor)};
+                   &CutFit::start_factor),
+      text_field("target_source", "where the target comes from (in the fitted material's description)",
+                 &CutFit::target_source)};
   return table;
 }
 
@@ -48,7 +50,6 @@ class CalibrateCutKind final : public SceneKind {
     cut_ = read_cut_params(root);
     ObjectReader cal = root.get_object("calibration");
     fit_ = read_fields(cal, cut_fit_fields(), fit_);
-    fit_.target_source = cal.get_string_or("target_source", "");
     output_ = read_material_output(cal, "cut_calibrated");
     cal.finish();
   }
@@ -171,10 +172,7 @@ namespace kerf::dem::kinds {
 
 std::string calibrate_cut_keys_markdown() {
   return fields_markdown(cut_fit_fields()) +
-         "| `target_source` | - | text | empty | where the target comes from (in the fitted material's description) |\n"
-         "| `material_name` | - | a file name without '/', '.', spaces | `cut_calibrated` | the fitted material: "
-         "OUT/<name>.json |\n"
-         "| `install_material` | - | true or false | false | also write data/materials/<name>.json |\n";
+         fields_markdown(material_output_fields(), {"cut_calibrated", false}, false);
 }
 
 }  // namespace kerf::dem::kinds

@@ -95,13 +95,20 @@ void write_frame_files(const fs::path& out, const Simulation& sim, RunProgress& 
   progress.frames.push_back({sim.time(), {name, cracks}});
 }
 
+const FieldTable<MaterialOutput>& material_output_fields() {
+  static const FieldTable<MaterialOutput> table{
+      text_field("material_name", "the fitted material: OUT/<name>.json", &MaterialOutput::name,
+                 [](const std::string& name) {
+                   return name.empty() || name.find_first_of("/\\. ") != std::string::npos
+                              ? std::string("a file name without '/', '.', spaces")
+                              : std::string();
+                 }),
+      bool_field("install_material", "also write data/materials/<name>.json", &MaterialOutput::install)};
+  return table;
+}
+
 MaterialOutput read_material_output(ObjectReader& cal, const std::string& fallback) {
-  MaterialOutput o;
-  o.name = cal.get_string_or("material_name", fallback);
-  if (o.name.empty() || o.name.find_first_of("/\\. ") != std::string::npos)
-    throw InputError(cal.key_path("material_name"), o.name, "a file name without '/', '.', spaces");
-  o.install = cal.get_bool_or("install_material", false);
-  return o;
+  return read_fields(cal, material_output_fields(), MaterialOutput{fallback, false});
 }
 
 void write_material_output(const MaterialOutput& output, const Json& material, const fs::path& out, Json& summary) {

@@ -75,6 +75,8 @@ struct MaterialOutput {
   std::string name;
   bool install = false;  ///< also write data/materials/<name>.json (the data directory in use)
 };
+const FieldTable<MaterialOutput>& material_output_fields();
+/// Reads material_name (default `fallback`) and install_material.
 MaterialOutput read_material_output(ObjectReader& calibration, const std::string& fallback);
 /// Writes the fitted material to OUT/<name>.json and, with install, to the data directory (summary notes it).
 void write_material_output(const MaterialOutput& output, const Json& material, const fs::path& out, Json& summary);

@@ -97,8 +97,29 @@ struct ChoiceField {
   std::function<void(S&, int)> set;
 };
 
+/// A text (a name, a file, a source). `check` returns the expectation when the text is not acceptable, else
+/// an empty string (no check when empty).
 template <class S>
-using Field = std::variant<NumberField<S>, IntField<S>, BoolField<S>, ChoiceField<S>>;
+struct TextField {
+  std::string_view key;
+  std::string_view doc;
+  std::function<std::string(const S&)> get;
+  std::function<void(S&, const std::string&)> set;
+  std::function<std::string(const std::string&)> check;
+};
+
+/// A set of names out of a list (JSON: an array of names), stored as flags (bit k: names[k] chosen).
+template <class S>
+struct FlagsField {
+  std::string_view key;
+  std::span<const std::string_view> names;
+  std::string_view doc;
+  std::function<unsigned(const S&)> get;
+  std::function<void(S&, unsigned)> set;
+};
+
+template <class S>
+using Field = std::variant<NumberField<S>, IntField<S>, BoolField<S>, ChoiceField<S>, TextField<S>, FlagsField<S>>;
 
 template <class S>
 using FieldTable = std::vector<Field<S>>;
@@ -122,6 +143,13 @@ IntField<S> int_field(std::string_view key, int lo, int hi, std::string_view doc
 template <class S>
 BoolField<S> bool_field(std::string_view key, std::string_view doc, bool S::*member) {
   return {key, doc, [member](const S& s) { return s.*member; }, [member](S& s, bool v) { s.*member = v; }};
+}
+
+template <class S>
+TextField<S> text_field(std::string_view key, std::string_view doc, std::string S::*member,
+                        std::function<std::string(const std::string&)> check = {}) {
+  return {key, doc, [member](const S& s) { return s.*member; }, [member](S& s, const std::string& v) { s.*member = v; },
+          std::move(check)};
 }
 
 /// The names of an enum's values, in the enum's order (value k is names[k]), and the parse of a name.
@@ -160,10 +188,29 @@ S read_fields(ObjectReader& reader, const FieldTable<S>& table, S s) {
             f.set(s, reader.get_int_or(key, f.get(s), f.lo, f.hi));
           } else if constexpr (std::is_same_v<F, BoolField<S>>) {
             f.set(s, reader.get_bool_or(key, f.get(s)));
-          } else {
+          } else if constexpr (std::is_same_v<F, ChoiceField<S>>) {
             const std::vector<std::string> names(f.names.begin(), f.names.end());
             const std::string text = reader.get_choice_or(key, names[static_cast<std::size_t>(f.get(s))], names);
             f.set(s, static_cast<int>(std::find(names.begin(), names.end(), text) - names.begin()));
+          } else if constexpr (std::is_same_v<F, TextField<S>>) {
+            const std::string text = reader.get_string_or(key, f.get(s));
+            if (f.check)
+              if (const std::string expected = f.check(text); !expected.empty())
+                throw InputError(reader.key_path(key), text, expected);
+            f.set(s, text);
+          } else {
+            const Json* list = reader.find(key);
+            if (!list) return;
+            const std::vector<std::string> names(f.names.begin(), f.names.end());
+            if (!list->is_array()) throw InputError(reader.key_path(key), json_value_text(*list), "a list of names");
+            unsigned flags = 0;
+            for (const auto& item : *list) {
+              const std::string name = item.is_string() ? item.get<std::string>() : json_value_text(item);
+              const auto it = std::find(names.begin(), names.end(), name);
+              if (it == names.end()) throw InputError(reader.key_path(key), name, describe_choices(name, names));
+              flags |= 1u << (it - names.begin());
+            }
+            f.set(s, flags);
           }
         },
         field);
@@ -189,6 +236,10 @@ void check_fields(const FieldTable<S>& table, const S& s) {
             const int v = f.get(s);
             if (v < 0 || static_cast<std::size_t>(v) >= f.names.size())
               throw InputError(std::string(f.key), std::to_string(v), "a valid choice");
+          } else if constexpr (std::is_same_v<F, TextField<S>>) {
+            if (f.check)
+              if (const std::string expected = f.check(f.get(s)); !expected.empty())
+                throw InputError(std::string(f.key), f.get(s), expected);
           }
         },
         field);
@@ -204,19 +255,29 @@ Json fields_to_json(const FieldTable<S>& table, const S& s) {
         [&](const auto& f) {
           using F = std::decay_t<decltype(f)>;
           const std::string key(f.key);
-          if constexpr (std::is_same_v<F, NumberField<S>>) j[key] = f.unit.from_si(f.get(s));
-          else if constexpr (std::is_same_v<F, ChoiceField<S>>) j[key] = std::string(f.names[static_cast<std::size_t>(f.get(s))]);
-          else j[key] = f.get(s);
+          if constexpr (std::is_same_v<F, NumberField<S>>) {
+            j[key] = f.unit.from_si(f.get(s));
+          } else if constexpr (std::is_same_v<F, ChoiceField<S>>) {
+            j[key] = std::string(f.names[static_cast<std::size_t>(f.get(s))]);
+          } else if constexpr (std::is_same_v<F, FlagsField<S>>) {
+            Json list = Json::array();
+            for (std::size_t k = 0; k < f.names.size(); ++k)
+              if (f.get(s) >> k & 1u) list.push_back(std::string(f.names[k]));
+            j[key] = list;
+          } else {
+            j[key] = f.get(s);
+          }
         },
         field);
   }
   return j;
 }
 
-/// The key reference of a table as a Markdown table: key, unit, valid range, default (of `defaults`), meaning.
+/// The key reference of a table as a Markdown table: key, unit, valid range, default (of `defaults`), meaning;
+/// without the header, rows to append to another table.
 template <class S>
-std::string fields_markdown(const FieldTable<S>& table, const S& defaults = S{}) {
-  std::string md = "| key | unit | valid | default | meaning |\n|---|---|---|---|---|\n";
+std::string fields_markdown(const FieldTable<S>& table, const S& defaults = S{}, bool with_header = true) {
+  std::string md = with_header ? "| key | unit | valid | default | meaning |\n|---|---|---|---|---|\n" : "";
   for (const auto& field : table) {
     std::visit(
         [&](const auto& f) {
@@ -232,9 +293,20 @@ std::string fields_markdown(const FieldTable<S>& table, const S& defaults = S{})
           } else if constexpr (std::is_same_v<F, BoolField<S>>) {
             valid = "true or false";
             value = f.get(defaults) ? "true" : "false";
-          } else {
+          } else if constexpr (std::is_same_v<F, ChoiceField<S>>) {
             for (std::size_t k = 0; k < f.names.size(); ++k) valid += fmt::format("{}`{}`", k ? ", " : "", f.names[k]);
             value = fmt::format("`{}`", f.names[static_cast<std::size_t>(f.get(defaults))]);
+          } else if constexpr (std::is_same_v<F, TextField<S>>) {
+            valid = f.check ? std::string(f.check("")) : "text";
+            if (valid.empty()) valid = "text";
+            value = f.get(defaults).empty() ? "empty" : fmt::format("`{}`", f.get(defaults));
+          } else {
+            valid = "a list of ";
+            for (std::size_t k = 0; k < f.names.size(); ++k) {
+              valid += fmt::format("{}`{}`", k ? ", " : "", f.names[k]);
+              if (f.get(defaults) >> k & 1u) value += fmt::format("{}`{}`", value.empty() ? "" : ", ", f.names[k]);
+            }
+            if (value.empty()) value = "none";
           }
           md += fmt::format("| `{}` | {} | {} | {} | {} |\n", f.key, unit, valid, value, f.doc);
         },

@@ -105,3 +105,48 @@ TEST_CASE("field table: the Markdown reference has a row per key with its unit a
   CHECK(md.find("| `count` | - | an integer in [1, 16] | 2 | a count |") != std::string::npos);
   CHECK(md.find("| `shape` | - | `none`, `rectangular`, `trapezoidal` | `none` | a shape |") != std::string::npos);
 }
+
+namespace {
+struct Output {
+  std::string name = "calibrated";
+  unsigned free = 0b101;
+};
+constexpr std::string_view kFreeNames[] = {"modulus", "ratio", "strength"};
+const kerf::FieldTable<Output>& output_table() {
+  using namespace kerf;
+  static const FieldTable<Output> t{
+      text_field("name", "a file name", &Output::name,
+                 [](const std::string& n) { return n.empty() || n.find('/') != std::string::npos ? std::string("a file name") : std::string(); }),
+      FlagsField<Output>{"free", kFreeNames, "what may change", [](const Output& o) { return o.free; },
+                         [](Output& o, unsigned f) { o.free = f; }}};
+  return t;
+}
+Output read_output(const kerf::Json& j) {
+  kerf::ObjectReader r(j, "calibration");
+  Output o = kerf::read_fields(r, output_table(), Output{});
+  r.finish();
+  return o;
+}
+}  // namespace
+
+TEST_CASE("field table: texts with their check, and sets of names as flags") {
+  CHECK(read_output(kerf::Json::object()).name == "calibrated");
+  CHECK(read_output({{"name", "glass"}}).name == "glass");
+  CHECK_THROWS_WITH(read_output({{"name", "a/b"}}), "calibration.name = a/b: expected a file name");
+  CHECK(read_output({{"free", {"ratio", "strength"}}}).free == 0b110u);
+  CHECK(read_output({{"free", kerf::Json::array()}}).free == 0u);
+  CHECK_THROWS_WITH(read_output({{"free", {"ration"}}}),
+                    Catch::Matchers::Contains("calibration.free = ration: expected one of") &&
+                        Catch::Matchers::Contains("did you mean 'ratio'"));
+  CHECK_THROWS_WITH(read_output({{"free", "ratio"}}), "calibration.free = ratio: expected a list of names");
+  const Output o{"x", 0b011};
+  const kerf::Json j = kerf::fields_to_json(output_table(), o);
+  CHECK(j.at("free") == kerf::Json{"modulus", "ratio"});
+  const Output back = read_output(j);
+  CHECK(back.name == "x");
+  CHECK(back.free == o.free);
+  const std::string md = kerf::fields_markdown(output_table());
+  CHECK_THAT(md, Catch::Matchers::Contains("| `name` | - | a file name | `calibrated` | a file name |"));
+  CHECK_THAT(md, Catch::Matchers::Contains("| `free` | - | a list of `modulus`, `ratio`, `strength` | `modulus`, `strength` |"));
+  CHECK(kerf::fields_markdown(output_table(), Output{}, false).rfind("| `name`", 0) == 0);  // rows only
+}
