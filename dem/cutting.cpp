@@ -9,6 +9,7 @@
 #include <type_traits>
 
 #include "kerf/error.hpp"
+#include "kerf/time_series.hpp"
 #include "kerf/io.hpp"
 #include "kerf/units.hpp"
 #include "serial.hpp"
@@ -273,6 +274,14 @@ void steady_statistics(CutResult& res, double from_travel_m) {
   res.thrust_force_n = st / n;
   res.main_force_std_n = std::sqrt(std::max(0.0, sm2 / n - res.main_force_n * res.main_force_n));
   res.thrust_force_std_n = std::sqrt(std::max(0.0, st2 / n - res.thrust_force_n * res.thrust_force_n));
+  std::vector<double> main, thrust;
+  for (const auto& s : res.samples)
+    if (s.travel_m >= from_travel_m) main.push_back(s.main_force_n), thrust.push_back(s.thrust_force_n);
+  const BatchMeans bm = batch_means(main), bt = batch_means(thrust);
+  res.main_force_sem_n = bm.best_standard_error(&res.main_force_sem_method);
+  res.thrust_force_sem_n = bt.best_standard_error(&res.thrust_force_sem_method);
+  res.main_force_inefficiency = bm.statistical_inefficiency, res.thrust_force_inefficiency = bt.statistical_inefficiency;
+  res.main_force_batch_samples = bm.batch_length, res.thrust_force_batch_samples = bt.batch_length;
 }
 
 std::vector<TravelWindow> travel_window_means(const std::vector<CutSample>& samples, double length_m, double window_m) {

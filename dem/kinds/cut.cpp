@@ -22,6 +22,9 @@ namespace kerf::dem::kinds {
 
 namespace {
 
+/// A number, or JSON null when it is not finite (a standard error the signal is too short for).
+Json finite_or_null(double v) { return std::isfinite(v) ? Json(v) : Json(); }
+
 /// Runs (or continues, from a checkpoint) a cut to the end of its travel and writes the outputs; returns the
 /// summary. `doc` and `checkpoint_every` are for the checkpoints (none: 0).
 Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& doc, Json summary, const fs::path& out,
@@ -51,6 +54,15 @@ Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& d
            {"thrust_force_N", res.thrust_force_n},
            {"main_force_std_N", res.main_force_std_n},
            {"thrust_force_std_N", res.thrust_force_std_n},
+           // Standard errors of the two means from the force signal itself (null: the signal is too short).
+           {"main_force_sem_N", finite_or_null(res.main_force_sem_n)},
+           {"thrust_force_sem_N", finite_or_null(res.thrust_force_sem_n)},
+           {"main_force_sem_method", res.main_force_sem_method},
+           {"thrust_force_sem_method", res.thrust_force_sem_method},
+           {"main_force_inefficiency_samples", res.main_force_inefficiency},
+           {"thrust_force_inefficiency_samples", res.thrust_force_inefficiency},
+           {"main_force_batch_samples", res.main_force_batch_samples},
+           {"thrust_force_batch_samples", res.thrust_force_batch_samples},
            {"steady_from_travel_mm", units::m_to_mm(cut.entry_fraction * cut.length_m)},
            {"steady_samples", res.n_steady_samples},
            {"width_mm", units::m_to_mm(res.width_m)},
@@ -234,7 +246,8 @@ SceneOutcome run_cut_replicates(const SceneCommon& common, const CutParams& cut,
     const Json& one = done[static_cast<std::size_t>(k)];
     Json row{{"replicate", k + 1}, {"seed", one["specimen"]["seed"]}, {"directory", fmt::format("replicate_{}", k + 1)}};
     for (const auto& key : keys) row[key.first] = one["results"][key.first];
-    for (const char* key : {"main_force_std_N", "thrust_force_std_N", "width_mm"}) row[key] = one["results"][key];
+    for (const char* key : {"main_force_std_N", "thrust_force_std_N", "main_force_sem_N", "thrust_force_sem_N", "width_mm"})
+      row[key] = one["results"].value(key, Json());  // a replicate from before the standard errors has none
     row["wall_time_s"] = one["wall_time_s"];
     wall += one["wall_time_s"].get<double>();
     list.push_back(row);
@@ -247,6 +260,11 @@ SceneOutcome run_cut_replicates(const SceneCommon& common, const CutParams& cut,
     stats[key] = st.mean;
     stats[spread] = st.standard_deviation;
   }
+  // The standard errors of the replicate means (replicate std / sqrt(n)), beside each replicate's own
+  // within-cut standard errors (replicates[k].main_force_sem_N, from its force signal).
+  const double root_n = std::sqrt(static_cast<double>(replicates));
+  stats["main_force_sem_N"] = stats["main_force_replicate_std_N"].get<double>() / root_n;
+  stats["thrust_force_sem_N"] = stats["thrust_force_replicate_std_N"].get<double>() / root_n;
   stats["width_mm"] = list[0]["width_mm"];
   summary["cut"] = cut_params_to_json(cut);
   summary["replicates"] = list;

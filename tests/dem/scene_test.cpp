@@ -194,8 +194,16 @@ TEST_CASE("scene: progress reaches the caller's callback, every stage to its end
   std::vector<ProgressUpdate> seen;
   options.on_progress = [&](const ProgressUpdate& u) { seen.push_back(u); };
   std::filesystem::remove_all(options.out);
-  run_scene(small_cut_scene(), std::string(KERF_SOURCE_DIR) + "/data/scenes/scene.json", options);
+  const SceneOutcome done = run_scene(small_cut_scene(), std::string(KERF_SOURCE_DIR) + "/data/scenes/scene.json", options);
   std::filesystem::remove_all(options.out);
+  // Every cut's summary carries the standard errors of its mean forces and how they were found.
+  const Json& r = done.summary.at("results");
+  for (const char* force : {"main_force", "thrust_force"}) {
+    const std::string method = r.at(std::string(force) + "_sem_method");
+    CHECK((method == "batch_means" || method == "autocorrelation" || method == "none"));
+    CHECK((method == "none") == r.at(std::string(force) + "_sem_N").is_null());
+    CHECK(r.at(std::string(force) + "_inefficiency_samples").get<double>() >= 1);
+  }
   std::vector<std::string> stages;
   for (std::size_t k = 0; k < seen.size(); ++k) {
     if (stages.empty() || stages.back() != seen[k].stage) stages.push_back(seen[k].stage);

@@ -127,6 +127,13 @@ struct TravelWindow {
 struct CutResult {
   std::vector<CutSample> samples;
   double main_force_n = 0, thrust_force_n = 0, main_force_std_n = 0, thrust_force_std_n = 0;  ///< steady part
+  /// Standard errors of the steady means (kerf/time_series.hpp): batch means when the steady part holds
+  /// kMinBatches batches of 5 g samples, else from the autocorrelation (methods named); the statistical
+  /// inefficiency g (samples) and the batch length of each.
+  double main_force_sem_n = 0, thrust_force_sem_n = 0;
+  const char *main_force_sem_method = "none", *thrust_force_sem_method = "none";
+  double main_force_inefficiency = 1, thrust_force_inefficiency = 1;
+  std::size_t main_force_batch_samples = 1, thrust_force_batch_samples = 1;
   int n_steady_samples = 0;
   std::vector<TravelWindow> travel_windows;  ///< mean forces per params.window_m of travel (once finished)
   CutCrackCounts cracks;
@@ -145,7 +152,8 @@ inline std::array<double, 2> tool_force_components(double fx_on_tool_n, double f
   return {fx_on_tool_n, fy_on_tool_n};
 }
 
-/// Mean and (population) standard deviation of main and thrust forces over samples with travel >= from.
+/// Mean and (population) standard deviation of main and thrust forces over samples with travel >= from, and
+/// the standard errors of the means by batch means.
 void steady_statistics(CutResult& result, double from_travel_m);
 
 
