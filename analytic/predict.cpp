@@ -285,9 +285,22 @@ std::vector<std::pair<std::string, std::string>> prediction_columns(const Analyt
   const auto add_text = [&](std::string name, std::string text) { row.emplace_back(std::move(name), csv_escape(text)); };
   const double width_mm = units::m_to_mm(p.width_m);
 
+  // The inputs, converted back from SI: rounded to 15 significant digits so that the scene's 0.05 um reads 0.05,
+  // not the 0.049999999999999996 of the round trip through metres.
+  const auto add_input = [&](std::string name, double value) {
+    row.emplace_back(std::move(name), csv_number(std::stod(fmt::format("{:.15g}", value))));
+  };
   add_text("force_model", std::string(force_model_name(p.force_model)));
-  add("uncut_chip_thickness_um", units::m_to_um(p.uncut_chip_thickness_m));
-  add("width_mm", width_mm);
+  add_text("material", scene.material.name);
+  add_input("rake_deg", units::rad_to_deg(scene.rake_rad));
+  add_input("edge_radius_um", units::m_to_um(scene.edge_radius_m));
+  add_input("clearance_deg", units::rad_to_deg(scene.clearance_rad));
+  add_input("speed_m_per_min", units::m_per_s_to_m_per_min(scene.speed_m_per_s));
+  add_input("workpiece_temperature_K", scene.workpiece_temperature_K);
+  row.emplace_back("scene_friction_angle_deg",
+                   scene.friction_angle_rad ? csv_number(units::rad_to_deg(*scene.friction_angle_rad)) : "");
+  add_input("uncut_chip_thickness_um", units::m_to_um(p.uncut_chip_thickness_m));
+  add_input("width_mm", width_mm);
   add("cutting_force_N", p.cutting_force_N);
   add("thrust_force_N", p.thrust_force_N);
   add("cutting_force_N_per_mm", p.cutting_force_N / width_mm);

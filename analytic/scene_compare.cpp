@@ -25,28 +25,72 @@ const std::map<std::string, std::string>& comparable_quantities() {
   return quantities;
 }
 
+/// A unit a key or column name ends with, and what it measures ("_um" is a length in um).
+struct UnitSuffix {
+  std::string suffix, unit, dimension;
+};
+const std::vector<UnitSuffix>& unit_suffixes() {
+  // Longer suffixes first: "_um_per_s" before "_um", "_N_m" before "_N".
+  static const std::vector<UnitSuffix> suffixes = {
+      {"_um_per_s", "um/s", "speed"}, {"_mm_per_s", "mm/s", "speed"}, {"_m_per_s", "m/s", "speed"},
+      {"_um_s", "um/s", "speed"},     {"_mm_s", "mm/s", "speed"},     {"_m_per_min", "m/min", "speed"},
+      {"_rpm", "rpm", "rotation speed"}, {"_deg", "deg", "angle"},    {"_nm", "nm", "length"},
+      {"_um", "um", "length"},        {"_mm", "mm", "length"},        {"_N_m", "N m", "torque"},
+      {"_Nm", "N m", "torque"},       {"_kN", "kN", "force"},         {"_mN", "mN", "force"},
+      {"_N", "N", "force"}};
+  return suffixes;
+}
+
+/// The unit suffix a key or column name ends with; nullptr when none is known.
+const UnitSuffix* find_unit_suffix(const std::string& key) {
+  for (const auto& u : unit_suffixes()) {
+    if (key.size() > u.suffix.size() && key.ends_with(u.suffix)) return &u;
+  }
+  return nullptr;
+}
+
 /// The unit a key's suffix names ("feed_rate_um_per_s" -> um/s) and the key without it.
 std::pair<std::string, Unit> split_unit(const std::string& key, const std::string& path) {
-  static const std::vector<std::pair<std::string, std::string>> suffixes = {
-      {"_um_per_s", "um/s"}, {"_mm_per_s", "mm/s"}, {"_m_per_min", "m/min"}, {"_rpm", "rpm"}, {"_deg", "deg"},
-      {"_um", "um"},         {"_mm", "mm"},         {"_N_m", "N m"},         {"_N", "N"}};
-  for (const auto& [suffix, unit] : suffixes) {
-    if (key.size() > suffix.size() && key.ends_with(suffix)) {
-      return {key.substr(0, key.size() - suffix.size()), unit_named(unit, path)};
-    }
+  if (const UnitSuffix* u = find_unit_suffix(key)) {
+    return {key.substr(0, key.size() - u->suffix.size()), unit_named(u->unit, path)};
   }
   return {key, unit_named("", path)};
+}
+
+/// The unit of a CSV column bound to a scene key or prediction column `key`: the column's own suffix when it
+/// names a unit of the same kind (the values are converted), the key's when the column names none. A column
+/// whose suffix names another kind of unit is refused.
+Unit column_unit(const std::string& key, const std::string& column, const std::string& mapping,
+                 std::vector<std::string>& notes) {
+  const UnitSuffix* key_unit = find_unit_suffix(key);
+  const UnitSuffix* column_suffix = find_unit_suffix(column);
+  if (!column_suffix || !key_unit) {
+    if (key_unit && column != key) {
+      notes.push_back(fmt::format("CSV column {} names no unit: taken in {}, the unit of {}", column, key_unit->unit, key));
+    }
+    return split_unit(key, "--map").second;
+  }
+  if (column_suffix->dimension != key_unit->dimension) {
+    throw InputError("--map", mapping,
+                     fmt::format("a CSV column in a unit of {} like {}'s {} (the column's name says {}, a unit of {})",
+                                 key_unit->dimension, key, key_unit->unit, column_suffix->unit, column_suffix->dimension));
+  }
+  if (column_suffix->unit != key_unit->unit) {
+    notes.push_back(fmt::format("CSV column {} converted from {} to {}, the unit of {}", column, column_suffix->unit,
+                                key_unit->unit, key));
+  }
+  return unit_named(column_suffix->unit, "--map");
 }
 
 struct ConditionBinding {
   std::string scene_path;  ///< "cut.feed_rate_um_per_s"
   std::string column;      ///< CSV column
-  Unit unit;
+  Unit unit;               ///< the column's
 };
 struct QuantityBinding {
   std::string prediction_column;  ///< "axial_force_N"
   std::string column;             ///< CSV column
-  Unit unit;
+  Unit unit;                      ///< the column's
 };
 
 /// Leaves of the scene's tool and cut objects (and cut.turning), by name.
@@ -116,7 +160,7 @@ SceneComparison compare_scene(const Json& scene_document, const std::filesystem:
     table.column_index(column);  // InputError listing the columns when absent
     if (left.find('.') != std::string::npos) {
       const std::string leaf = left.substr(left.rfind('.') + 1);
-      conditions.push_back({left, column, split_unit(leaf, "--map").second});
+      conditions.push_back({left, column, column_unit(leaf, column, mapping, out.notes)});
     } else {
       if (!comparable_quantities().contains(left) || !has_prediction(left)) {
         std::vector<std::string> valid;
@@ -124,7 +168,7 @@ SceneComparison compare_scene(const Json& scene_document, const std::filesystem:
           if (has_prediction(name)) valid.push_back(name);
         throw InputError("--map", left, "a prediction column of this scene: " + describe_choices(left, valid));
       }
-      quantities.push_back({left, column, unit_named(comparable_quantities().at(left), "--map")});
+      quantities.push_back({left, column, column_unit(left, column, mapping, out.notes)});
     }
     bound_columns.push_back(column);
   }
@@ -137,6 +181,18 @@ SceneComparison compare_scene(const Json& scene_document, const std::filesystem:
       conditions.push_back({it->second, column, split_unit(column, "--experiments").second});
     }
   }
+  for (const auto& q : quantities) bound_columns.push_back(q.column);
+  for (const auto& c : conditions) bound_columns.push_back(c.column);
+  for (const auto& column : table.header) {
+    if (column == "width_mm" || std::find(bound_columns.begin(), bound_columns.end(), column) != bound_columns.end()) {
+      continue;
+    }
+    out.unused_columns.push_back(column);
+  }
+  if (!out.unused_columns.empty()) {
+    out.notes.push_back(fmt::format("CSV columns not used (neither a condition nor a quantity; --map binds them): {}",
+                                    fmt::join(out.unused_columns, ", ")));
+  }
   if (quantities.empty()) {
     throw InputError("--experiments", experiments_csv.string(),
                      "a column named like a prediction (cutting_force_N, thrust_force_N, axial_force_N, torque_N_m) "
@@ -148,12 +204,12 @@ SceneComparison compare_scene(const Json& scene_document, const std::filesystem:
   spec.title = fmt::format("{} against {}", trepanning ? "Trepanning model" : "Analytic force model",
                            experiments_csv.filename().string());
   CsvBinding measured_binding;
-  measured_binding.name = "measured";
+  measured_binding.name = experiments_csv.filename().string();
   for (const auto& c : conditions) {
     const auto [key, unit] = split_unit(c.scene_path.substr(c.scene_path.rfind('.') + 1), "--map");
     spec.conditions.push_back({key, label_of(key), unit, true});
     measured_binding.condition_columns.push_back(c.column);
-    measured_binding.condition_si.push_back(unit.si);
+    measured_binding.condition_si.push_back(c.unit.si);
     out.notes.push_back(fmt::format("condition {} <- CSV column {}", c.scene_path, c.column));
   }
   const double scene_width_m = [&] {
@@ -176,7 +232,7 @@ SceneComparison compare_scene(const Json& scene_document, const std::filesystem:
     const auto [key, unit] = split_unit(q.prediction_column, "--map");
     spec.quantities.push_back({key, label_of(key), unit});
     measured_binding.quantity_columns.push_back(q.column);
-    measured_binding.quantity_si.push_back(unit.si);
+    measured_binding.quantity_si.push_back(q.unit.si);
     const bool force = unit.suffix == "N" && !trepanning;
     measured_binding.bases.push_back(force ? measured_basis : WidthBasis::none());
     out.notes.push_back(fmt::format("quantity {} <- CSV column {}", q.prediction_column, q.column));
@@ -202,12 +258,16 @@ SceneComparison compare_scene(const Json& scene_document, const std::filesystem:
     if (axial == quantities.end() || torque == quantities.end()) {
       throw InputError("--fit", experiments_csv.string(), "measured axial_force_N and torque_N_m columns to fit");
     }
-    for (std::size_t r = 0; r < table.rows.size(); ++r) {
+    // The measured rows hold SI values (each column converted from its unit): back to the scene keys' units.
+    const auto axial_index = static_cast<std::size_t>(axial - quantities.begin());
+    const auto torque_index = static_cast<std::size_t>(torque - quantities.begin());
+    for (const auto& row : measured.rows) {
       Json row_document = document;
-      for (const auto& c : conditions) set_path(row_document, c.scene_path, table.number(r, table.column_index(c.column)));
+      for (std::size_t i = 0; i < conditions.size(); ++i) {
+        set_path(row_document, conditions[i].scene_path, row.conditions[i].si.value_or(0.0) / spec.conditions[i].unit.si);
+      }
       const TrepanningScene row_scene = parse_trepanning_scene(row_document);
-      observations.push_back({row_scene.cut, table.number(r, table.column_index(axial->column)),
-                              table.number(r, table.column_index(torque->column))});
+      observations.push_back({row_scene.cut, row.values[axial_index], row.values[torque_index]});
     }
     out.calibration = calibrate_trepanning(scene.tool, observations);
     const auto& fit = *out.calibration;
@@ -239,12 +299,15 @@ SceneComparison compare_scene(const Json& scene_document, const std::filesystem:
   // Predictions at each measured row's conditions, and a model curve for the plots.
   // The curve is evaluated at many points for the plots: one material cache serves them all.
   auto cache = std::make_shared<MaterialCache>();
-  const auto predict_at = [document, conditions, quantities, spec, cache](const std::vector<ConditionValue>& at) {
+  const auto columns_at = [document, conditions, spec, cache](const std::vector<ConditionValue>& at) {
     Json d = document;
     for (std::size_t i = 0; i < conditions.size(); ++i) {
       set_path(d, conditions[i].scene_path, at[i].si.value_or(0.0) / spec.conditions[i].unit.si);
     }
-    const Columns columns = evaluate_scene_columns(d, cache.get());
+    return evaluate_scene_columns(d, cache.get());
+  };
+  const auto predict_at = [columns_at, quantities, spec](const std::vector<ConditionValue>& at) {
+    const Columns columns = columns_at(at);
     std::vector<double> values;
     for (std::size_t q = 0; q < quantities.size(); ++q) {
       values.push_back(column_value(columns, quantities[q].prediction_column) * spec.quantities[q].unit.si);
@@ -262,10 +325,26 @@ SceneComparison compare_scene(const Json& scene_document, const std::filesystem:
     p.conditions = row.conditions;
     p.values = predict_at(row.conditions);
     predicted.rows.push_back(std::move(p));
+    // What predict prints beside the forces: the regime against the critical depth and the guards that fired.
+    RowDiagnostics diagnostics{row.line, "", "", ""};
+    for (const auto& [name, value] : columns_at(row.conditions)) {
+      const std::string text = value.size() >= 2 && value.front() == '"' ? value.substr(1, value.size() - 2) : value;
+      if (name == "regime" || name == "grit_regime") diagnostics.regime = text;
+      if (name == "guards") diagnostics.guards = text;
+      if (name == "warnings") diagnostics.warnings = text;
+    }
+    out.rows.push_back(std::move(diagnostics));
   }
   out.comparison = compare(spec, measured, {PredictedSet{predicted, predict_at}});
   std::string notes = "\n## How the columns were matched\n\n";
   for (const auto& n : out.notes) notes += "- " + n + "\n";
+  notes += "\n## Regime and guards per row\n\nThe regime of each row's prediction against the ductile-brittle critical "
+           "depth (empty when the material has none) and the guards that fired (a force set by a guard's policy is "
+           "not the model's own).\n\n| CSV line | regime | guards | warnings |\n|---|---|---|---|\n";
+  for (const auto& r : out.rows) {
+    notes += fmt::format("| {} | {} | {} | {} |\n", r.line, r.regime.empty() ? "-" : r.regime,
+                         r.guards.empty() ? "none" : r.guards, r.warnings.empty() ? "-" : r.warnings);
+  }
   out.report.extra_markdown += notes;
   return out;
 }

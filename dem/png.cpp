@@ -58,9 +58,9 @@ void write_specimen_png(const std::filesystem::path& path, const Simulation& sim
 
 void write_cut_forces_png(const std::filesystem::path& path, const CutResult& result, double steady_from_m) {
   FigureSpec fig;
-  fig.title = fmt::format("cut: force on the tool per {:g} mm width", units::m_to_mm(result.width_m));
+  fig.title = "cut: force on the tool";
   fig.x_label = "tool travel (mm)";
-  fig.y_label = "force (N)";
+  fig.y_label = fmt::format("force per {:g} mm width (N)", units::m_to_mm(result.width_m));
   PlotSeries main{"main force", {}, {}, {}, {}, SeriesStyle::line, 0, 0};
   PlotSeries thrust{"thrust force", {}, {}, {}, {}, SeriesStyle::line, 1, 0};
   for (const auto& s : result.samples) {

@@ -2,6 +2,8 @@
 #include "kerf/dem/scene.hpp"
 
 #include "kerf/error.hpp"
+#include "kerf/io.hpp"
+#include "kerf/version.hpp"
 
 namespace kerf::dem {
 
@@ -53,6 +55,22 @@ Scene read_scene(const Json& doc, const fs::path& scene_dir) {
   return s;
 }
 
+namespace {
+
+/// Adds the provenance block to the outcome's summary and to OUT/summary.json.
+SceneOutcome with_provenance(SceneOutcome outcome, const fs::path& out, Json provenance) {
+  outcome.summary["provenance"] = provenance;
+  const fs::path file = out / "summary.json";
+  if (fs::exists(file)) {
+    Json written = read_json_file(file.string());
+    written["provenance"] = std::move(provenance);
+    write_file_atomically(file, written.dump(2) + "\n");
+  }
+  return outcome;
+}
+
+}  // namespace
+
 SceneOutcome run_scene(const Json& doc, const fs::path& scene_file, const RunOptions& options) {
   const Scene scene = read_scene(doc, scene_file.parent_path());
   scene.kind->check_options(options, scene.common);
@@ -60,7 +78,9 @@ SceneOutcome run_scene(const Json& doc, const fs::path& scene_file, const RunOpt
     throw InputError("--checkpoint-every", std::to_string(options.checkpoint_every), "no checkpoints with --replicates");
   fs::create_directories(options.out);
   const SceneRun run{doc, fs::absolute(scene_file).parent_path().string(), options};
-  return scene.kind->run(scene.common, run);
+  Json provenance = run_provenance(options.command_line, scene_file.string(), options.overrides);
+  provenance["scene_as_run"] = doc;
+  return with_provenance(scene.kind->run(scene.common, run), options.out, std::move(provenance));
 }
 
 SceneOutcome resume_scene(const fs::path& dir, bool show_progress) {
@@ -70,7 +90,10 @@ SceneOutcome resume_scene(const fs::path& dir, bool show_progress) {
   options.out = dir;
   options.checkpoint_every = c.checkpoint_every;
   options.show_progress = show_progress;
-  return scene.kind->resume(scene.common, SceneRun{c.scene, c.scene_dir, options}, c);
+  Json provenance = run_provenance("(resumed from " + (dir / "checkpoint.bin").string() + ")", "", {});
+  provenance["scene_as_run"] = c.scene;
+  return with_provenance(scene.kind->resume(scene.common, SceneRun{c.scene, c.scene_dir, options}, c), dir,
+                         std::move(provenance));
 }
 
 }  // namespace kerf::dem

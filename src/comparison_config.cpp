@@ -13,14 +13,18 @@ namespace {
 const std::map<std::string, Unit>& unit_table() {
   static const std::map<std::string, Unit> table = {
       {"", {"", "", 1.0}},
+      {"nm", {"nm", "nm", 1e-9}},
       {"mm", {"mm", "mm", 1e-3}},
       {"um", {"µm", "um", 1e-6}},
       {"um/s", {"µm/s", "um_per_s", 1e-6}},
       {"mm/s", {"mm/s", "mm_per_s", 1e-3}},
+      {"m/s", {"m/s", "m_per_s", 1.0}},
       {"m/min", {"m/min", "m_per_min", 1.0 / 60.0}},
       {"rpm", {"rev/min", "rpm", 1.0 / 60.0}},
       {"deg", {"°", "deg", 0.017453292519943295}},
       {"N", {"N", "N", 1.0}},
+      {"mN", {"mN", "mN", 1e-3}},
+      {"kN", {"kN", "kN", 1e3}},
       {"N m", {"N·m", "N_m", 1.0}},
       {"N/mm", {"N/mm", "N_per_mm", 1e3}},
   };

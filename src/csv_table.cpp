@@ -106,6 +106,8 @@ CsvTable parse_csv(std::string_view text, const std::string& source) {
   table.source = source;
   std::size_t line_number = 0, position = 0;
   bool have_header = false;
+  // A spreadsheet's "CSV UTF-8" starts with a byte-order mark: not part of the first column's name.
+  if (text.starts_with("\xEF\xBB\xBF")) position = 3;
   while (position < text.size()) {
     std::size_t end = text.find('\n', position);
     if (end == std::string_view::npos) end = text.size();

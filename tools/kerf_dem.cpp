@@ -17,6 +17,7 @@
 #include "kerf/dem/scene.hpp"
 #include "kerf/error.hpp"
 #include "kerf/json_reader.hpp"
+#include "kerf/version.hpp"
 
 namespace {
 
@@ -25,6 +26,7 @@ constexpr const char* kProgram = "kerf-dem";
 int run_command(const std::string& scene_path, const std::vector<std::string>& sets, kerf::dem::RunOptions options) {
   kerf::Json doc = kerf::read_json_file(scene_path);
   for (const auto& s : sets) kerf::apply_override(doc, s);
+  options.overrides = sets;
   return kerf::dem::run_scene(doc, scene_path, options).exit_status;
 }
 
@@ -38,6 +40,7 @@ int keys_command(const std::string& section) {
 int main(int argc, char** argv) {
   CLI::App app{"kerf-dem: 2D bonded-particle DEM with Potyondy's flat joint"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", kerf::version_line(kProgram));
   std::string scene_path, resume_dir, section;
   std::vector<std::string> sets;
   std::string out_dir = "out";
@@ -72,6 +75,7 @@ int main(int argc, char** argv) {
     if (keys->parsed()) return keys_command(section);
     if (resume->parsed()) return kerf::dem::resume_scene(resume_dir).exit_status;
     options.out = out_dir;
+    options.command_line = kerf::command_line(argc, argv);
     return run_command(scene_path, sets, options);
   } catch (const kerf::InputError& e) {
     std::cerr << kProgram << ": error: " << e.what() << "\n";

@@ -28,12 +28,14 @@
 #include "kerf/analytic/registry.hpp"
 #include "kerf/analytic/scene.hpp"
 #include "kerf/comparison_config.hpp"
+#include "kerf/csv_table.hpp"
 #include "kerf/error.hpp"
 #include "kerf/io.hpp"
 #include "kerf/json_reader.hpp"
 #include "kerf/material.hpp"
 #include "kerf/report.hpp"
 #include "kerf/units.hpp"
+#include "kerf/version.hpp"
 
 namespace {
 
@@ -218,6 +220,15 @@ int run_compare(const std::string& scene_path, const std::vector<std::string>& o
                kerf::units::pa_to_mpa(c.axial.value_Pa), c.axial.loo.mean_abs_error_pct,
                kerf::units::pa_to_mpa(c.torque.value_Pa), c.torque.loo.mean_abs_error_pct);
   }
+  if (!result.unused_columns.empty()) {
+    fmt::print("unused columns    {} (neither a condition nor a quantity; --map binds them)\n",
+               fmt::join(result.unused_columns, ", "));
+  }
+  for (const auto& row : result.rows) {
+    if (row.guards.empty() && (row.regime.empty() || row.regime == "ductile")) continue;
+    fmt::print("line {:<12} regime {}, guards {}\n", row.line, row.regime.empty() ? "-" : row.regime,
+               row.guards.empty() ? "none" : row.guards);
+  }
   fmt::print("report            {} ({} files)\n", out_dir, files.size());
   return 0;
 }
@@ -241,10 +252,22 @@ struct Axis {
 Axis parse_axis(const std::string& spec) {
   const auto fail = [&](const std::string& why) { throw kerf::InputError("--vary", spec, why); };
   const auto eq = spec.find('=');
-  if (eq == std::string::npos || eq == 0) fail("key.path=START:STOP:COUNT[:log]");
+  if (eq == std::string::npos || eq == 0) fail("key.path=START:STOP:COUNT[:log] or key.path=A,B,C");
   Axis axis{spec.substr(0, eq), {}};
   std::vector<std::string> parts;
   std::string rest = spec.substr(eq + 1);
+  if (rest.find(':') == std::string::npos) {  // a list of values: A,B,C
+    for (std::size_t start = 0; start <= rest.size();) {
+      const std::size_t comma = std::min(rest.find(',', start), rest.size());
+      double value = 0.0;
+      if (!kerf::parse_number(std::string_view(rest).substr(start, comma - start), value)) {
+        fail("a list of numbers A,B,C (or START:STOP:COUNT[:log])");
+      }
+      axis.values.push_back(value);
+      start = comma + 1;
+    }
+    return axis;
+  }
   for (std::size_t start = 0;;) {
     const auto colon = rest.find(':', start);
     parts.push_back(rest.substr(start, colon == std::string::npos ? std::string::npos : colon - start));
@@ -272,7 +295,9 @@ Axis parse_axis(const std::string& spec) {
   if (log_spacing && !(start > 0 && stop > 0)) fail("positive START and STOP for :log spacing");
   for (long i = 0; i < count; ++i) {
     const double f = count == 1 ? 0.0 : static_cast<double>(i) / static_cast<double>(count - 1);
-    axis.values.push_back(log_spacing ? start * std::pow(stop / start, f) : start + (stop - start) * f);
+    // Rounded to 15 significant digits: 0.05, not 0.049999999999999996, for a grid from 0.01 in steps of 0.01.
+    const double value = log_spacing ? start * std::pow(stop / start, f) : start + (stop - start) * f;
+    axis.values.push_back(std::stod(fmt::format("{:.15g}", value)));
   }
   return axis;
 }
@@ -412,6 +437,7 @@ int list_materials() {
 int main(int argc, char** argv) {
   CLI::App app{"kerf-forces: analytic cutting-force predictions (ductile regime) and sweeps"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", kerf::version_line("kerf-forces"));
   std::string scene_path, csv;
   std::vector<std::string> overrides, vary;
   int threads = 0;
@@ -424,7 +450,7 @@ int main(int argc, char** argv) {
   auto* sweep = app.add_subcommand("sweep", "evaluate a grid of scenes (cartesian product of --vary axes)");
   sweep->add_option("scene", scene_path, "scene file (JSON)")->required();
   sweep->add_option("--set", overrides, "override a scene value: key.path=value (repeatable)");
-  sweep->add_option("--vary", vary, "an axis: key.path=START:STOP:COUNT[:log] (repeatable)")->required();
+  sweep->add_option("--vary", vary, "an axis: key.path=START:STOP:COUNT[:log] or key.path=A,B,C (repeatable)")->required();
   sweep->add_option("--csv", csv, "CSV file to write")->required();
   sweep->add_option("--threads", threads, "threads (default: all cores)")->check(CLI::Range(1, 1024));
 

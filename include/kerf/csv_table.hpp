@@ -32,7 +32,7 @@ struct CsvTable {
   std::string cell_location(std::size_t row, std::size_t column) const;
 };
 
-/// Parses CSV text. Blank lines are skipped; lines starting with '#' are comments; the first other line is
+/// Parses CSV text (a leading UTF-8 byte-order mark and CRLF line ends are accepted). Blank lines are skipped; lines starting with '#' are comments; the first other line is
 /// the header. InputError (field "source:line" or "source:line:char") for an unterminated quote, text after
 /// a closing quote, a row with a different number of fields than the header, an empty or duplicate column name,
 /// or no header.

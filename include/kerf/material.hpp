@@ -46,7 +46,8 @@ std::vector<std::string> library_material_names();
 /// Parses a material object. With `require_provenance`, every number must carry "source" or "assumed".
 MaterialRecord material_from_json(const Json& object, const std::string& path, bool require_provenance);
 
-/// A scene's `material`: a library name (string) or an inline object. Unknown names list the library.
+/// A scene's `material`: a library name, a file (a string with '/' or ending in .json: "/path/glass.json",
+/// provenance optional), or an inline object. Unknown names list the library.
 MaterialRecord load_material(const Json& spec, const std::string& path);
 
 }  // namespace kerf

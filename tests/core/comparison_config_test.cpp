@@ -42,7 +42,7 @@ TEST_CASE("The bundled seed-000 comparison reads and compares in both width view
 TEST_CASE("Comparison files name the bad field", "[comparison_config][errors]") {
   const kerf::Json good = kerf::read_json_file(kFile.string());
   kerf::Json bad = good;
-  bad["quantities"][0]["unit"] = "kN";
+  bad["quantities"][0]["unit"] = "kgf";
   CHECK(field_of(bad) == "quantities[0].unit");
   bad = good;
   bad["views"] = {"per_width"};

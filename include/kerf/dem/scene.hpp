@@ -61,6 +61,8 @@ struct RunOptions {
   int replicates = 1;        ///< cut scenes: packings specimen.seed + 0 .. replicates - 1
   bool show_progress = true; ///< progress bars on stderr (drawn only when it is a terminal)
   ProgressCallback on_progress;  ///< besides the bars (a notebook, a log); empty: none
+  std::string command_line;            ///< what started the run, for summary.json's provenance
+  std::vector<std::string> overrides;  ///< the --set assignments already applied to the scene, for the same
 };
 
 /// What a run produced: its exit status (0; kExitModelError for a calibration that did not converge), the
@@ -114,7 +116,9 @@ struct Scene {
 Scene read_scene(const Json& doc, const std::filesystem::path& scene_dir);
 
 /// Reads the scene, checks the options, creates options.out and runs it. `scene_file` is where the scene
-/// came from (specimen.file is relative to its directory).
+/// came from (specimen.file is relative to its directory). OUT/summary.json (and the outcome's summary) get a
+/// "provenance" block: version, git commit, command line, scene path and hash, overrides, the scene as run, date,
+/// host, threads (kerf/version.hpp).
 SceneOutcome run_scene(const Json& doc, const std::filesystem::path& scene_file, const RunOptions& options);
 
 /// Continues the run killed in `dir` from dir/checkpoint.bin (options.out is `dir`).

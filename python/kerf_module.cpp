@@ -1,0 +1,383 @@
+// The Python module `kerf`: the analytic models and the DEM through the same library calls as kerf-forces and
+// kerf-dem, with Python values in and out (docs/python.md).
+//
+//   import kerf
+//   kerf.predict("data/scenes/psic_liu_li.json", **{"tool.edge_radius_um": 0.2})["cutting_force_N"]
+//   kerf.sweep("data/scenes/psic_liu_li.json", vary={"cut.uncut_chip_thickness_um": [0.05, 0.1, 0.2]})
+//   kerf.dem.run("data/scenes/dem_cut.json", out="out/cut", threads=2, cut__length_mm=0.2)["summary"]
+//
+// A scene is a path (str or os.PathLike) or a dict holding the scene itself. Overrides are keyword arguments:
+// a dotted key (passed as **{"tool.rake_deg": 5}) or the same with "__" for each dot (tool__rake_deg=5); the
+// value is any JSON-able Python value. kerf.InputError (a ValueError with .field, .value, .expected) and
+// kerf.ModelError (a RuntimeError) carry the library's errors.
+#include <omp.h>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "kerf/analytic/evaluate.hpp"
+#include "kerf/analytic/registry.hpp"
+#include "kerf/analytic/scene_compare.hpp"
+#include "kerf/csv_table.hpp"
+#include "kerf/dem/scene.hpp"
+#include "kerf/error.hpp"
+#include "kerf/json_reader.hpp"
+#include "kerf/material.hpp"
+#include "kerf/report.hpp"
+#include "kerf/version.hpp"
+
+namespace py = pybind11;
+
+namespace {
+
+using kerf::Json;
+
+/// JSON text of a Python value through Python's json module (dicts, lists, numbers, strings, bools, None).
+std::string json_dumps(const py::handle& value) {
+  return py::module_::import("json").attr("dumps")(value).cast<std::string>();
+}
+
+py::object json_to_python(const Json& value) { return py::module_::import("json").attr("loads")(value.dump()); }
+
+/// A scene given as a path or as a dict, with the keyword overrides applied; `file` is where it came from
+/// ("<dict>" inside the current directory for a dict).
+struct SceneInput {
+  Json document;
+  std::string file;
+};
+
+SceneInput scene_input(const py::object& scene, const py::kwargs& overrides) {
+  SceneInput input;
+  if (py::isinstance<py::dict>(scene)) {
+    input.document = Json::parse(json_dumps(scene));
+    input.file = (std::filesystem::current_path() / "scene.json").string();
+  } else {
+    input.file = py::str(py::module_::import("os").attr("fspath")(scene)).cast<std::string>();
+    input.document = kerf::read_json_file(input.file);
+  }
+  for (const auto& [key, value] : overrides) {
+    std::string path = py::str(key).cast<std::string>();
+    for (std::size_t at = path.find("__"); at != std::string::npos; at = path.find("__", at + 1)) {
+      path.replace(at, 2, ".");
+    }
+    kerf::apply_override(input.document, path + "=" + json_dumps(value));
+  }
+  return input;
+}
+
+/// A CSV cell as Python: a float when it is a number, None when empty, the text otherwise.
+py::object cell_value(const std::string& text) {
+  if (text.empty()) return py::none();
+  double number = 0.0;
+  if (kerf::parse_number(text, number)) return py::float_(number);
+  return py::str(text);
+}
+
+py::dict columns_dict(const kerf::Columns& columns) {
+  py::dict row;
+  for (const auto& [name, text] : columns) {
+    // Text columns are CSV-escaped by the library; unquote them.
+    std::string plain = text;
+    if (plain.size() >= 2 && plain.front() == '"' && plain.back() == '"') {
+      plain = kerf::parse_csv("x\n" + plain + "\n", name).rows.at(0).at(0);
+    }
+    row[py::str(name)] = cell_value(plain);
+  }
+  return row;
+}
+
+/// Columns as numpy arrays: float64 where every cell is a number or empty (NaN), an object array otherwise.
+py::dict column_arrays(const std::vector<std::string>& names, const std::vector<std::vector<py::object>>& columns) {
+  py::module_ numpy = py::module_::import("numpy");
+  py::dict out;
+  for (std::size_t c = 0; c < names.size(); ++c) {
+    bool numeric = true;
+    for (const auto& cell : columns[c]) numeric = numeric && (cell.is_none() || py::isinstance<py::float_>(cell));
+    if (numeric) {
+      py::array_t<double> array(static_cast<py::ssize_t>(columns[c].size()));
+      auto view = array.mutable_unchecked<1>();
+      for (std::size_t i = 0; i < columns[c].size(); ++i) {
+        view(static_cast<py::ssize_t>(i)) =
+            columns[c][i].is_none() ? std::numeric_limits<double>::quiet_NaN() : columns[c][i].cast<double>();
+      }
+      out[py::str(names[c])] = array;
+    } else {
+      py::list cells;
+      for (const auto& cell : columns[c]) cells.append(cell.is_none() ? py::object(py::str("")) : cell);
+      out[py::str(names[c])] = numpy.attr("array")(cells, py::arg("dtype") = "object");
+    }
+  }
+  return out;
+}
+
+py::dict table_arrays(const kerf::CsvTable& table) {
+  std::vector<std::vector<py::object>> columns(table.header.size());
+  for (const auto& row : table.rows) {
+    for (std::size_t c = 0; c < row.size(); ++c) columns[c].push_back(cell_value(row[c]));
+  }
+  return column_arrays(table.header, columns);
+}
+
+/// A pandas DataFrame of the columns when pandas is installed, else the dict of arrays.
+py::object frame_or_dict(const py::dict& columns) {
+  try {
+    return py::module_::import("pandas").attr("DataFrame")(columns);
+  } catch (const py::error_already_set& e) {
+    if (!e.matches(PyExc_ImportError)) throw;
+    return columns;
+  }
+}
+
+py::dict predict(const py::object& scene, const py::kwargs& overrides) {
+  const SceneInput input = scene_input(scene, overrides);
+  kerf::MaterialCache cache;
+  return columns_dict(kerf::evaluate_scene_columns(input.document, &cache));
+}
+
+/// The values of one axis: a sequence of numbers (or of any JSON values).
+std::vector<py::object> axis_values(const std::string& key, const py::handle& values) {
+  if (py::isinstance<py::str>(values) || !py::isinstance<py::iterable>(values)) {
+    throw kerf::InputError("vary." + key, py::str(values).cast<std::string>(), "a sequence of values");
+  }
+  std::vector<py::object> out;
+  for (const auto& value : values) out.push_back(py::reinterpret_borrow<py::object>(value));
+  if (out.empty()) throw kerf::InputError("vary." + key, "[]", "at least one value");
+  return out;
+}
+
+py::object sweep(const py::object& scene, const py::dict& vary, bool as_frame, const py::kwargs& overrides) {
+  const SceneInput input = scene_input(scene, overrides);
+  std::vector<std::string> keys;
+  std::vector<std::vector<py::object>> axes;
+  std::size_t n_points = 1;
+  for (const auto& [key, values] : vary) {
+    keys.push_back(py::str(key).cast<std::string>());
+    axes.push_back(axis_values(keys.back(), values));
+    n_points *= axes.back().size();
+  }
+  if (keys.empty()) throw kerf::InputError("vary", "{}", "at least one key with its values");
+  kerf::MaterialCache cache;
+  const std::vector<std::string> names = kerf::scene_column_names(input.document, &cache);
+  std::vector<std::string> header = keys;
+  header.insert(header.end(), names.begin(), names.end());
+  header.push_back("error");
+  std::vector<std::vector<py::object>> columns(header.size());
+  for (std::size_t i = 0; i < n_points; ++i) {
+    Json document = input.document;
+    std::size_t index = i;
+    std::vector<py::object> x(axes.size());
+    for (std::size_t a = axes.size(); a-- > 0;) {
+      x[a] = axes[a][index % axes[a].size()];
+      index /= axes[a].size();
+    }
+    py::dict row;
+    std::string error;
+    try {
+      for (std::size_t a = 0; a < axes.size(); ++a) {
+        kerf::apply_override(document, keys[a] + "=" + json_dumps(x[a]), "vary");
+      }
+      row = columns_dict(kerf::evaluate_scene_columns(document, &cache));
+    } catch (const kerf::InputError& e) {
+      error = e.what();
+    } catch (const kerf::ModelError& e) {
+      error = e.what();
+    }
+    for (std::size_t a = 0; a < axes.size(); ++a) {
+      columns[a].push_back(py::isinstance<py::int_>(x[a]) ? py::float_(x[a].cast<double>()) : x[a]);
+    }
+    for (std::size_t c = 0; c < names.size(); ++c) {
+      columns[keys.size() + c].push_back(row.contains(names[c]) ? py::reinterpret_borrow<py::object>(row[py::str(names[c])])
+                                                                 : py::object(py::none()));
+    }
+    columns.back().push_back(py::str(error));  // text, "" where the point was predicted
+  }
+  const py::dict arrays = column_arrays(header, columns);
+  return as_frame ? frame_or_dict(arrays) : py::object(arrays);
+}
+
+py::list materials() {
+  py::list out;
+  for (const auto& name : kerf::library_material_names()) {
+    py::dict entry;
+    entry["name"] = name;
+    try {
+      const auto record = kerf::load_material(Json(name), "material");
+      entry["title"] = record.title;
+      entry["groups"] = json_to_python(record.groups);
+      entry["file"] = record.origin;
+    } catch (const kerf::InputError& e) {
+      entry["error"] = std::string(e.what());
+    }
+    out.append(entry);
+  }
+  return out;
+}
+
+py::list models() {
+  py::list out;
+  for (const auto& m : kerf::analytic_models()) {
+    py::dict entry;
+    entry["kind"] = std::string(m.kind);
+    entry["name"] = std::string(m.name);
+    entry["summary"] = std::string(m.summary);
+    entry["needs"] = std::string(m.needs);
+    out.append(entry);
+  }
+  return out;
+}
+
+py::dict metrics_dict(const kerf::ErrorMetrics& m) {
+  py::dict out;
+  out["n"] = m.n;
+  out["mean_abs_error_pct"] = m.mean_abs_error_pct;
+  out["max_abs_error_pct"] = m.max_abs_error_pct;
+  out["bias_pct"] = m.bias_pct;
+  out["rms_error_pct"] = m.rms_error_pct;
+  return out;
+}
+
+py::dict compare(const py::object& scene, const py::object& experiments, const py::dict& map, bool fit,
+                 const py::object& measured_width_mm, const py::object& out, const py::kwargs& overrides) {
+  const SceneInput input = scene_input(scene, overrides);
+  kerf::SceneComparisonOptions options;
+  for (const auto& [key, column] : map) {
+    options.mappings.push_back(py::str(key).cast<std::string>() + "=" + py::str(column).cast<std::string>());
+  }
+  options.fit = fit;
+  if (!measured_width_mm.is_none()) options.measured_width_mm = measured_width_mm.cast<double>();
+  const std::string csv = py::str(py::module_::import("os").attr("fspath")(experiments)).cast<std::string>();
+  kerf::SceneComparison result = kerf::compare_scene(input.document, csv, options);
+  py::dict answer;
+  py::dict quantities;
+  for (const auto& r : result.comparison.results) {
+    py::dict q = metrics_dict(r.metrics);
+    q["unit"] = r.unit.suffix;
+    std::vector<double> measured, predicted;
+    for (const auto& g : r.groups) {
+      measured.push_back(g.measured_stats.mean / r.unit.si);
+      predicted.push_back(g.predicted_stats.mean / r.unit.si);
+    }
+    q["measured"] = py::array_t<double>(static_cast<py::ssize_t>(measured.size()), measured.data());
+    q["predicted"] = py::array_t<double>(static_cast<py::ssize_t>(predicted.size()), predicted.data());
+    if (!r.note.empty()) q["note"] = r.note;
+    quantities[py::str(r.key)] = q;
+  }
+  answer["quantities"] = quantities;
+  answer["notes"] = result.notes;
+  answer["unused_columns"] = result.unused_columns;
+  py::list rows;
+  for (const auto& r : result.rows) {
+    py::dict row;
+    row["line"] = r.line;
+    row["regime"] = r.regime;
+    row["guards"] = r.guards;
+    row["warnings"] = r.warnings;
+    rows.append(row);
+  }
+  answer["rows"] = rows;
+  if (!out.is_none()) {
+    result.comparison.spec.description = fmt::format("Scene {} against {}.", input.file, csv);
+    std::vector<std::string> files;
+    for (const auto& f : kerf::write_report(result.comparison, py::str(py::module_::import("os").attr("fspath")(out))
+                                                                  .cast<std::string>(),
+                                            result.report)) {
+      files.push_back(f.string());
+    }
+    answer["files"] = files;
+  }
+  return answer;
+}
+
+py::dict dem_run(const py::object& scene, const py::object& out, const py::object& threads, int replicates,
+                 int checkpoint_every, const py::kwargs& overrides) {
+  const SceneInput input = scene_input(scene, overrides);
+  kerf::dem::RunOptions options;
+  options.out = py::str(py::module_::import("os").attr("fspath")(out)).cast<std::string>();
+  options.replicates = replicates;
+  options.checkpoint_every = checkpoint_every;
+  options.show_progress = false;
+  options.command_line = "kerf.dem.run (Python)";
+  for (const auto& [key, value] : overrides) {
+    options.overrides.push_back(py::str(key).cast<std::string>() + "=" + json_dumps(value));
+  }
+  kerf::dem::SceneOutcome outcome;
+  {
+    const int previous_threads = omp_get_max_threads();
+    if (!threads.is_none()) {
+      const int n = threads.cast<int>();
+      if (n < 1) throw kerf::InputError("threads", std::to_string(n), "a positive number of threads");
+      omp_set_num_threads(n);
+    }
+    try {
+      py::gil_scoped_release release;
+      outcome = kerf::dem::run_scene(input.document, input.file, options);
+    } catch (...) {
+      omp_set_num_threads(previous_threads);
+      throw;
+    }
+    omp_set_num_threads(previous_threads);
+  }
+  py::dict answer;
+  answer["exit_status"] = outcome.exit_status;
+  answer["summary"] = json_to_python(outcome.summary);
+  answer["out"] = options.out.string();
+  for (const char* table : {"forces", "cracks", "curve"}) {
+    const auto file = options.out / (std::string(table) + ".csv");
+    if (std::filesystem::exists(file)) answer[table] = table_arrays(kerf::read_csv_file(file));
+  }
+  return answer;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(kerf, m) {
+  m.doc() = "kerf: cutting forces for hard, brittle materials (analytic models and the 2D bonded-particle DEM)";
+  m.attr("__version__") = std::string(kerf::version());
+  m.attr("__git_commit__") = std::string(kerf::git_commit());
+
+  static py::exception<kerf::InputError> input_error(m, "InputError", PyExc_ValueError);
+  static py::exception<kerf::ModelError> model_error(m, "ModelError", PyExc_RuntimeError);
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const kerf::InputError& e) {
+      py::object error = py::reinterpret_borrow<py::object>(input_error.ptr())(py::str(e.what()));
+      error.attr("field") = e.field();
+      error.attr("value") = e.value();
+      error.attr("expected") = e.expected();
+      PyErr_SetObject(input_error.ptr(), error.ptr());
+    } catch (const kerf::ModelError& e) {
+      model_error(e.what());
+    } catch (const Json::exception& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    }
+  });
+
+  m.def("predict", &predict, py::arg("scene"),
+        "predict(scene, **overrides) -> dict: one prediction (the columns of kerf-forces predict --csv), e.g.\n"
+        "kerf.predict('data/scenes/psic_liu_li.json', **{'tool.edge_radius_um': 0.2})['cutting_force_N']");
+  m.def("sweep", &sweep, py::arg("scene"), py::kw_only(), py::arg("vary"), py::arg("frame") = true,
+        "sweep(scene, vary={key: values, ...}, frame=True, **overrides): the cartesian product of the varied keys;\n"
+        "columns as numpy arrays (a pandas DataFrame when pandas is installed and frame is true); refused points\n"
+        "have NaN values and their message in the 'error' column");
+  m.def("materials", &materials, "materials() -> list of dict: the bundled material library (name, title, groups)");
+  m.def("models", &models, "models() -> list of dict: every registered analytic model (kind, name, summary, needs)");
+  m.def("compare", &compare, py::arg("scene"), py::arg("experiments"), py::kw_only(), py::arg("map") = py::dict(),
+        py::arg("fit") = false, py::arg("measured_width_mm") = py::none(), py::arg("out") = py::none(),
+        "compare(scene, experiments_csv, map={scene_key_or_prediction_column: csv_column}, fit=False,\n"
+        "measured_width_mm=None, out=None, **overrides) -> dict: per quantity the metrics and the measured and\n"
+        "predicted means (arrays); with out, the report (report.md, CSV, JSON, plots) is written there too");
+
+  py::module_ dem = m.def_submodule("dem", "the 2D bonded-particle DEM (kerf-dem)");
+  dem.def("run", &dem_run, py::arg("scene"), py::kw_only(), py::arg("out"), py::arg("threads") = py::none(),
+          py::arg("replicates") = 1, py::arg("checkpoint_every") = 0,
+          "run(scene, out=DIR, threads=None, replicates=1, checkpoint_every=0, **overrides) -> dict: runs a\n"
+          "kerf-dem scene into DIR; 'summary' (summary.json as a dict), and 'forces', 'cracks', 'curve' (the CSV\n"
+          "files the kind wrote, columns as numpy arrays)");
+  dem.def("kinds", &kerf::dem::scene_kind_names, "kinds() -> list of str: the scene kinds");
+}

@@ -1,0 +1,171 @@
+"""The Python module kerf (python/kerf_module.cpp) against the command-line programs and the stored references.
+
+Run by ctest ("python: pytest") with PYTHONPATH at build/python and KERF_TOOLS at the built programs.
+"""
+import csv
+import json
+import math
+import os
+import pathlib
+import subprocess
+
+import numpy as np
+import pytest
+
+import kerf
+
+SOURCE = pathlib.Path(__file__).resolve().parents[2]
+TOOLS = pathlib.Path(os.environ.get("KERF_TOOLS", SOURCE / "build" / "tools"))
+PSIC = SOURCE / "data" / "scenes" / "psic_liu_li.json"
+ORTHOGONAL = SOURCE / "data" / "scenes" / "psic_orthogonal.json"
+K9 = SOURCE / "validation" / "k9_trepanning" / "scene.json"
+K9_CSV = SOURCE / "data" / "experiments" / "k9_trepanning.csv"
+K9_MAP = {"cut.feed_rate_um_per_s": "feed_rate_um_s", "axial_force_N": "axial_force_test_N",
+          "torque_N_m": "torque_test_Nm"}
+
+
+def cli_predict_row(tmp_path, scene, *sets):
+    out = tmp_path / "row.csv"
+    args = [str(TOOLS / "kerf-forces"), "predict", str(scene), "--csv", str(out)]
+    for s in sets:
+        args += ["--set", s]
+    subprocess.run(args, check=True, capture_output=True)
+    with open(out, newline="") as f:
+        return next(csv.DictReader(f))
+
+
+def test_version():
+    assert kerf.__version__.count(".") == 2
+
+
+def test_predict_equals_the_cli(tmp_path):
+    row = kerf.predict(PSIC)
+    cli = cli_predict_row(tmp_path, PSIC)
+    assert set(row) == set(cli)
+    for key, text in cli.items():
+        if text == "":
+            assert row[key] is None, key
+        elif isinstance(row[key], float):
+            assert row[key] == float(text), key
+        else:
+            assert row[key] == text, key
+    assert row["cutting_force_N"] > 0
+
+
+def test_predict_overrides_dotted_and_double_underscore(tmp_path):
+    dotted = kerf.predict(str(PSIC), **{"tool.edge_radius_um": 0.2})
+    underscored = kerf.predict(PSIC, tool__edge_radius_um=0.2)
+    cli = cli_predict_row(tmp_path, PSIC, "tool.edge_radius_um=0.2")
+    assert dotted["cutting_force_N"] == underscored["cutting_force_N"] == float(cli["cutting_force_N"])
+    assert dotted["cutting_force_N"] != kerf.predict(PSIC)["cutting_force_N"]
+
+
+def test_predict_from_a_dict():
+    scene = json.loads(PSIC.read_text())
+    assert kerf.predict(scene)["cutting_force_N"] == kerf.predict(PSIC)["cutting_force_N"]
+
+
+def test_input_error_carries_field_value_expected():
+    with pytest.raises(kerf.InputError) as caught:
+        kerf.predict(PSIC, tool__rake_deg=95)
+    e = caught.value
+    assert isinstance(e, ValueError)
+    assert (e.field, e.value, e.expected) == ("tool.rake_deg", "95", "a value in (-90, 90) deg")
+    assert str(e) == "tool.rake_deg = 95: expected a value in (-90, 90) deg"
+    with pytest.raises(kerf.InputError) as caught:
+        kerf.predict(SOURCE / "data" / "scenes" / "no_such_scene.json")
+    assert "no_such_scene.json" in str(caught.value)
+
+
+def test_model_error_is_a_python_exception():
+    assert issubclass(kerf.ModelError, RuntimeError)
+    assert not issubclass(kerf.ModelError, ValueError)
+
+
+def test_sweep_columns_are_arrays():
+    thickness = [0.05, 0.1, 0.2]
+    table = kerf.sweep(ORTHOGONAL, vary={"cut.uncut_chip_thickness_um": thickness}, frame=False)
+    assert isinstance(table, dict)
+    assert table["cut.uncut_chip_thickness_um"].dtype == np.float64
+    assert list(table["cut.uncut_chip_thickness_um"]) == thickness
+    force = table["cutting_force_N"]
+    assert force.dtype == np.float64 and len(force) == 3
+    assert all(np.diff(force) > 0)
+    for i, t in enumerate(thickness):
+        assert force[i] == kerf.predict(ORTHOGONAL, **{"cut.uncut_chip_thickness_um": t})["cutting_force_N"]
+    assert all(e == "" for e in table["error"])
+
+
+def test_sweep_grid_and_refused_points():
+    table = kerf.sweep(ORTHOGONAL, vary={"tool.rake_deg": [0, 95], "tool.edge_radius_um": [0.1, 0.2, 0.3]}, frame=False)
+    assert len(table["cutting_force_N"]) == 6
+    assert list(table["tool.rake_deg"]) == [0, 0, 0, 95, 95, 95]
+    assert not any(math.isnan(f) for f in table["cutting_force_N"][:3])
+    assert all(math.isnan(f) for f in table["cutting_force_N"][3:])
+    assert all("tool.rake_deg = 95" in e for e in table["error"][3:])
+
+
+def test_sweep_is_a_dataframe_with_pandas():
+    pandas = pytest.importorskip("pandas")
+    frame = kerf.sweep(ORTHOGONAL, vary={"cut.uncut_chip_thickness_um": [0.1, 0.2]})
+    assert isinstance(frame, pandas.DataFrame) and len(frame) == 2
+
+
+def test_sweep_refuses_a_bad_axis():
+    with pytest.raises(kerf.InputError) as caught:
+        kerf.sweep(ORTHOGONAL, vary={"cut.uncut_chip_thickness_um": "0.1"})
+    assert caught.value.field == "vary.cut.uncut_chip_thickness_um"
+
+
+def test_materials_and_models():
+    names = [m["name"] for m in kerf.materials()]
+    assert "soda_lime_glass_fj" in names and names == sorted(names)
+    glass = next(m for m in kerf.materials() if m["name"] == "soda_lime_glass_fj")
+    assert "dem" in glass["groups"]
+    models = kerf.models()
+    assert {"kind": "force", "name": "liu_li"}.items() <= next(
+        m for m in models if m["kind"] == "force" and m["name"] == "liu_li").items()
+
+
+def test_compare_like_the_cli(tmp_path):
+    result = kerf.compare(K9, K9_CSV, map=K9_MAP, fit=True, out=tmp_path / "k9")
+    axial = result["quantities"]["axial_force"]
+    assert axial["n"] == 8 and axial["mean_abs_error_pct"] <= 5.0
+    assert len(axial["measured"]) == len(axial["predicted"]) == 8
+    summary = json.loads((tmp_path / "k9" / "summary.json").read_text())
+    assert summary["quantities"]["axial_force"]["mean_abs_error_pct"] == axial["mean_abs_error_pct"]
+
+
+SMALL_CUT = {  # tests/dem/scene_test.cpp 'small cut regression through run_scene'
+    "kind": "cut", "material": {"base": "soda_lime_glass_fj"},
+    "specimen": {"width_mm": 0.4, "height_mm": 0.25, "radius_min_um": 10, "radius_max_um": 13, "seed": 1,
+                 "growth_steps": 2000, "relax_steps": 500},
+    "cut": {"depth_of_cut_mm": 0.05, "speed_m_per_s": 2, "length_mm": 0.1},
+    "grooves": {"shape": "rectangular", "pitch_mm": 0.08, "width_mm": 0.03},
+    "output": {"frame_every_samples": 0}}
+
+
+def test_dem_run_small_cut(tmp_path):
+    done = kerf.dem.run(SMALL_CUT, out=tmp_path / "cut", threads=1)
+    assert done["exit_status"] == 0
+    reference = json.loads((SOURCE / "tests" / "dem" / "reference" / "cut_small.json").read_text())
+    summary = done["summary"]
+    assert summary["n_particles"] == reference["values"]["n_particles"]
+    assert summary == json.loads((tmp_path / "cut" / "summary.json").read_text())
+    main = summary["results"]["main_force_N"]
+    assert main == pytest.approx(reference["values"]["main_force_N"], rel=reference["relative_tolerance"])
+    forces, cracks = done["forces"], done["cracks"]
+    with open(tmp_path / "cut" / "forces.csv", newline="") as f:
+        rows = list(csv.reader(line for line in f if not line.startswith("#")))
+    assert list(forces) == rows[0]
+    assert len(rows) - 1 == len(next(iter(forces.values())))
+    assert all(v.dtype == np.float64 for v in forces.values())
+    assert len(next(iter(cracks.values()))) > 0
+
+
+def test_dem_input_error_names_the_key(tmp_path):
+    with pytest.raises(kerf.InputError) as caught:
+        kerf.dem.run(SMALL_CUT, out=tmp_path / "x", cut__depth_of_cut_mn=0.1)
+    assert caught.value.field == "cut.depth_of_cut_mn"
+    assert "depth_of_cut_mm" in caught.value.expected
+    assert "cut" in kerf.dem.kinds()
