@@ -390,7 +390,14 @@ void Simulation::finish_forces(const ForceCounts& counts) {
   if (counts.n_breaking > 0) need_breaks_ = true;
 }
 
-template <class Law>
+double Simulation::dashpot_coefficient(std::size_t i, std::int64_t j, double stiffness) const {
+  const double inv_i = p_.group[i] ? 0.0 : p_.inv_mass[i];
+  const double inv_j = j < 0 || p_.group[static_cast<std::size_t>(j)] ? 0.0 : p_.inv_mass[static_cast<std::size_t>(j)];
+  const double inv = inv_i + inv_j;
+  return inv > 0 ? 2 * material_.viscous_damping_ratio * std::sqrt(stiffness / inv) : 0.0;
+}
+
+template <class Law, bool kViscous>
 void Simulation::bond_loop(const Law& law, ForceCounts& counts) {
   const double dt = dt_;
   const int stride = b_.stride;
@@ -447,9 +454,18 @@ void Simulation::bond_loop(const Law& law, ForceCounts& counts) {
       const double nx = block.nx[q], ny = block.ny[q], sx = -ny, sy = nx, a1 = block.a1[q], a2 = block.a2[q];
       const std::size_t e0 = b * static_cast<std::size_t>(stride);
       const BondKinematics kin{block.gap[q], block.rotation[q], block.shear_increment[q]};
-      const BondResult r = bond_update_fast(law, b_.geometry[b], kin, b_.shear_force_n.data() + e0,
-                                            b_.bonded.data() + e0, b_.pending.data() + e0);
+      BondResult r = bond_update_fast(law, b_.geometry[b], kin, b_.shear_force_n.data() + e0, b_.bonded.data() + e0,
+                                      b_.pending.data() + e0);
       n_breaking += r.n_breaking;
+      if constexpr (kViscous) {
+        // Dashpots beside the bond's springs (not part of its strength test): on disk 2, -c_n v_n n - c_s v_s s.
+        const auto i = static_cast<std::size_t>(b_.i[b]), j = static_cast<std::size_t>(b_.j[b]);
+        const double dvx = vx[j] - vx[i], dvy = vy[j] - vy[i];
+        const double vn = dvx * nx + dvy * ny, vs = dvx * sx + dvy * sy - a2 * om[j] - a1 * om[i];
+        const TimeStepStiffness k = bond_time_step_stiffness(law, b_.geometry[b]);
+        r.normal_force_n += dashpot_coefficient(i, static_cast<std::int64_t>(j), k.normal) * vn;  // tension positive
+        r.shear_force_n -= dashpot_coefficient(i, static_cast<std::int64_t>(j), k.shear) * vs;
+      }
       // Force on disk 2: -F_n n + F_s s (tension positive pulls disk 2 back towards disk 1).
       out = {-r.normal_force_n * nx + r.shear_force_n * sx, -r.normal_force_n * ny + r.shear_force_n * sy,
              -a1 * r.shear_force_n - r.moment_nm, -a2 * r.shear_force_n + r.moment_nm};
@@ -470,7 +486,7 @@ void Simulation::bond_loop(const Law& law, ForceCounts& counts) {
   }
 }
 
-template <class Law>
+template <class Law, bool kViscous>
 void Simulation::pair_loop(const Law& law) {
   const double dt = dt_, t = opt_.thickness_m;
   const auto [x, y, vx, vy, om, th, rad] = disk_arrays(p_);
@@ -492,14 +508,20 @@ void Simulation::pair_loop(const Law& law) {
     const double overlap = reach - d;
     const double a1 = rad[i] - 0.5 * overlap, a2 = rad[j] - 0.5 * overlap;
     const double vs = (vx[j] - vx[i]) * sx + (vy[j] - vy[i]) * sy - a2 * om[j] - a1 * om[i];
-    const ContactResult r = contact_update(law, rad[i], rad[j], t, overlap, vs * dt, pair_shear_[k]);
+    ContactResult r = contact_update(law, rad[i], rad[j], t, overlap, vs * dt, pair_shear_[k]);
+    if constexpr (kViscous) {  // dashpots: on disk 2, -c_n v_n n - c_s v_s s (compression positive)
+      const TimeStepStiffness ks = contact_time_step_stiffness(law, rad[i], rad[j], t);
+      const double vn = (vx[j] - vx[i]) * nx + (vy[j] - vy[i]) * ny;
+      r.normal_force_n -= dashpot_coefficient(i, static_cast<std::int64_t>(j), ks.normal) * vn;
+      r.shear_force_n -= dashpot_coefficient(i, static_cast<std::int64_t>(j), ks.shear) * vs;
+    }
     // Force on disk 2: +F_n n (compression pushes it away) + F_s s.
     pair_out_[k] = {r.normal_force_n * nx + r.shear_force_n * sx, r.normal_force_n * ny + r.shear_force_n * sy,
                     -a1 * r.shear_force_n, -a2 * r.shear_force_n};
   }
 }
 
-template <class Law>
+template <class Law, bool kViscous>
 void Simulation::wall_loop(const Law& law) {
   const double dt = dt_, t = opt_.thickness_m;
   const auto [x, y, vx, vy, om, th, rad] = disk_arrays(p_);
@@ -523,7 +545,13 @@ void Simulation::wall_loop(const Law& law) {
     const double overlap = rad[u] - d, a = rad[u] - 0.5 * overlap;
     const double vs = (vx[u] - w.vx) * sx + (vy[u] - w.vy) * sy - a * om[u];
     const Law wall_law = w.friction_coefficient >= 0 ? with_friction(law, w.friction_coefficient) : law;
-    const ContactResult r = contact_update(wall_law, rad[u], 0.0, t, overlap, vs * dt, wall_shear_[k]);
+    ContactResult r = contact_update(wall_law, rad[u], 0.0, t, overlap, vs * dt, wall_shear_[k]);
+    if constexpr (kViscous) {  // dashpots against the (infinitely heavy) wall
+      const TimeStepStiffness ks = contact_time_step_stiffness(wall_law, rad[u], 0.0, t);
+      const double vn = (vx[u] - w.vx) * nx + (vy[u] - w.vy) * ny;
+      r.normal_force_n -= dashpot_coefficient(u, -1, ks.normal) * vn;
+      r.shear_force_n -= dashpot_coefficient(u, -1, ks.shear) * vs;
+    }
     wall_out_[k] = {r.normal_force_n * nx + r.shear_force_n * sx, r.normal_force_n * ny + r.shear_force_n * sy,
                     -a * r.shear_force_n};
   }
@@ -536,9 +564,15 @@ void Simulation::wall_loop(const Law& law) {
 // is chosen once per call by the law it runs (std::visit), and the law's update inlines into it.
 void Simulation::force_loops(ForceCounts& counts) {
   // The joint, pair and wall loops write disjoint slots: no barrier between them.
-  std::visit([&](const auto& law) { bond_loop(law, counts); }, material_.joint);
-  std::visit([&](const auto& law) { pair_loop(law); }, material_.contact);
-  std::visit([&](const auto& law) { wall_loop(law); }, material_.contact);  // ends with a barrier
+  if (material_.viscous_damping_ratio > 0) {
+    std::visit([&](const auto& law) { bond_loop<std::decay_t<decltype(law)>, true>(law, counts); }, material_.joint);
+    std::visit([&](const auto& law) { pair_loop<std::decay_t<decltype(law)>, true>(law); }, material_.contact);
+    std::visit([&](const auto& law) { wall_loop<std::decay_t<decltype(law)>, true>(law); }, material_.contact);
+  } else {
+    std::visit([&](const auto& law) { bond_loop<std::decay_t<decltype(law)>, false>(law, counts); }, material_.joint);
+    std::visit([&](const auto& law) { pair_loop<std::decay_t<decltype(law)>, false>(law); }, material_.contact);
+    std::visit([&](const auto& law) { wall_loop<std::decay_t<decltype(law)>, false>(law); }, material_.contact);
+  }  // the wall loop ends with a barrier
 
 #pragma omp single nowait
   {
@@ -731,7 +765,8 @@ std::size_t Simulation::memory_bytes() const {
 
 namespace {
 
-constexpr std::string_view kStateMagic = "KERFDEM3";  // 2: Wall::friction_coefficient; 3: the laws as variants
+constexpr std::string_view kStateMagic = "KERFDEM4";  // 2: Wall::friction_coefficient; 3: the laws as variants;
+                                                      // 4: the viscous damping ratio
 
 }  // namespace
 
@@ -756,7 +791,8 @@ void Simulation::state_fields(Self& sim, Io& io) {
 std::string Simulation::serialize() const {
   std::string out(kStateMagic);
   serial::Out io{out};
-  io(material_.density_kg_per_m3, material_.contact, material_.joint, material_.local_damping, material_.name, opt_);
+  io(material_.density_kg_per_m3, material_.contact, material_.joint, material_.local_damping,
+     material_.viscous_damping_ratio, material_.name, opt_);
   state_fields(*this, io);
   return out;
 }
@@ -765,7 +801,7 @@ Simulation Simulation::deserialize(std::string_view bytes) {
   serial::In io = serial::open_tagged(bytes, kStateMagic, "engine state");
   Material m;
   SimulationOptions opt;
-  io(m.density_kg_per_m3, m.contact, m.joint, m.local_damping, m.name, opt);
+  io(m.density_kg_per_m3, m.contact, m.joint, m.local_damping, m.viscous_damping_ratio, m.name, opt);
   Simulation sim(m, opt);
   state_fields(sim, io);
   io.expect_end("engine state");
