@@ -280,20 +280,20 @@ SceneComparison compare_scene(const Json& scene_document, const std::filesystem:
         "| K_F = H tan(phi) | {:.1f} | {:.1f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} |\n"
         "| K_M = H (1 + pi tan(phi) mu / 2) | {:.1f} | {:.1f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} |\n",
         observations.size(), units::pa_to_mpa(fit.axial.value_Pa), units::pa_to_mpa(fit.axial.standard_error_Pa),
-        fit.axial.fit.mean_abs_error_pct, fit.axial.fit.max_abs_error_pct, fit.axial.fit.bias_pct,
-        fit.axial.loo.mean_abs_error_pct, fit.axial.loo.max_abs_error_pct, units::pa_to_mpa(fit.torque.value_Pa),
-        units::pa_to_mpa(fit.torque.standard_error_Pa), fit.torque.fit.mean_abs_error_pct,
-        fit.torque.fit.max_abs_error_pct, fit.torque.fit.bias_pct, fit.torque.loo.mean_abs_error_pct,
-        fit.torque.loo.max_abs_error_pct);
+        fit.axial.fit.mean_abs_error_percent, fit.axial.fit.max_abs_error_percent, fit.axial.fit.bias_percent,
+        fit.axial.loo.mean_abs_error_percent, fit.axial.loo.max_abs_error_percent, units::pa_to_mpa(fit.torque.value_Pa),
+        units::pa_to_mpa(fit.torque.standard_error_Pa), fit.torque.fit.mean_abs_error_percent,
+        fit.torque.fit.max_abs_error_percent, fit.torque.fit.bias_percent, fit.torque.loo.mean_abs_error_percent,
+        fit.torque.loo.max_abs_error_percent);
     out.report.extra_summary["fit"] = {
         {"axial_group_MPa", units::pa_to_mpa(fit.axial.value_Pa)},
         {"torque_group_MPa", units::pa_to_mpa(fit.torque.value_Pa)},
-        {"axial_force", {{"mean_abs_error_pct", fit.axial.fit.mean_abs_error_pct},
-                         {"loo_mean_abs_error_pct", fit.axial.loo.mean_abs_error_pct},
-                         {"loo_max_abs_error_pct", fit.axial.loo.max_abs_error_pct}}},
-        {"torque", {{"mean_abs_error_pct", fit.torque.fit.mean_abs_error_pct},
-                    {"loo_mean_abs_error_pct", fit.torque.loo.mean_abs_error_pct},
-                    {"loo_max_abs_error_pct", fit.torque.loo.max_abs_error_pct}}}};
+        {"axial_force", {{"mean_abs_error_percent", fit.axial.fit.mean_abs_error_percent},
+                         {"loo_mean_abs_error_percent", fit.axial.loo.mean_abs_error_percent},
+                         {"loo_max_abs_error_percent", fit.axial.loo.max_abs_error_percent}}},
+        {"torque", {{"mean_abs_error_percent", fit.torque.fit.mean_abs_error_percent},
+                    {"loo_mean_abs_error_percent", fit.torque.loo.mean_abs_error_percent},
+                    {"loo_max_abs_error_percent", fit.torque.loo.max_abs_error_percent}}}};
   }
 
   // Predictions at each measured row's conditions, and a model curve for the plots.

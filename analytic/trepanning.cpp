@@ -191,9 +191,9 @@ GroupFit fit_group(const std::vector<double>& x, const std::vector<double>& y, R
   const std::size_t n = x.size();
   for (std::size_t i = 0; i < n; ++i) {
     out.predicted.push_back(all.slope * x[i]);
-    out.error_pct.push_back(relative_error_pct(out.predicted.back(), y[i]));
+    out.error_percent.push_back(relative_error_percent(out.predicted.back(), y[i]));
   }
-  out.fit = metrics_of_errors(out.error_pct);
+  out.fit = metrics_of_errors(out.error_percent);
   for (std::size_t i = 0; i < n; ++i) {
     std::vector<double> xs, ys;
     for (std::size_t j = 0; j < n; ++j) {
@@ -204,9 +204,9 @@ GroupFit fit_group(const std::vector<double>& x, const std::vector<double>& y, R
     const double k = fit_through_origin(xs, ys, weighting).slope;
     out.loo_value_Pa.push_back(k);
     out.loo_predicted.push_back(k * x[i]);
-    out.loo_error_pct.push_back(relative_error_pct(out.loo_predicted.back(), y[i]));
+    out.loo_error_percent.push_back(relative_error_percent(out.loo_predicted.back(), y[i]));
   }
-  out.loo = metrics_of_errors(out.loo_error_pct);
+  out.loo = metrics_of_errors(out.loo_error_percent);
   return out;
 }
 

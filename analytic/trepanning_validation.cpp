@@ -70,11 +70,11 @@ TrepanningValidation run_trepanning_validation(const std::filesystem::path& case
   const ResidualWeighting weighting =
       weighting_name == "relative" ? ResidualWeighting::relative : ResidualWeighting::absolute;
   ObjectReader acceptance = reader.get_object("acceptance");
-  v.acceptance.theory_column_max_abs_error_pct =
-      acceptance.get_number("theory_column_max_abs_error_pct", Range::positive(), "%");
-  ObjectReader fitted = acceptance.get_object("fitted_mean_abs_error_pct");
-  v.acceptance.axial_mean_abs_error_pct = fitted.get_number("axial_force", Range::positive(), "%");
-  v.acceptance.torque_mean_abs_error_pct = fitted.get_number("torque", Range::positive(), "%");
+  v.acceptance.theory_column_max_abs_error_percent =
+      acceptance.get_number("theory_column_max_abs_error_percent", Range::positive(), "%");
+  ObjectReader fitted = acceptance.get_object("fitted_mean_abs_error_percent");
+  v.acceptance.axial_mean_abs_error_percent = fitted.get_number("axial_force", Range::positive(), "%");
+  v.acceptance.torque_mean_abs_error_percent = fitted.get_number("torque", Range::positive(), "%");
   fitted.finish();
   acceptance.finish();
   reader.finish();
@@ -113,18 +113,18 @@ TrepanningValidation run_trepanning_validation(const std::filesystem::path& case
   struct Band {
     const char* what;
     const char* metric;
-    double value_pct, limit_pct;
+    double value_percent, limit_percent;
   };
   const Band bands[] = {
-      {"theory column, axial force", "max", v.theory_fit.axial.fit.max_abs_error_pct, acc.theory_column_max_abs_error_pct},
-      {"theory column, torque", "max", v.theory_fit.torque.fit.max_abs_error_pct, acc.theory_column_max_abs_error_pct},
-      {"fitted axial force", "mean", v.measured_fit.axial.fit.mean_abs_error_pct, acc.axial_mean_abs_error_pct},
-      {"fitted torque", "mean", v.measured_fit.torque.fit.mean_abs_error_pct, acc.torque_mean_abs_error_pct},
+      {"theory column, axial force", "max", v.theory_fit.axial.fit.max_abs_error_percent, acc.theory_column_max_abs_error_percent},
+      {"theory column, torque", "max", v.theory_fit.torque.fit.max_abs_error_percent, acc.theory_column_max_abs_error_percent},
+      {"fitted axial force", "mean", v.measured_fit.axial.fit.mean_abs_error_percent, acc.axial_mean_abs_error_percent},
+      {"fitted torque", "mean", v.measured_fit.torque.fit.mean_abs_error_percent, acc.torque_mean_abs_error_percent},
   };
   for (const auto& band : bands) {
-    if (band.value_pct > band.limit_pct) {
-      v.failures.push_back(fmt::format("{}: {} |error| {:.2f} % > {:.2f} %", band.what, band.metric, band.value_pct,
-                                       band.limit_pct));
+    if (band.value_percent > band.limit_percent) {
+      v.failures.push_back(fmt::format("{}: {} |error| {:.2f} % > {:.2f} %", band.what, band.metric, band.value_percent,
+                                       band.limit_percent));
     }
   }
   if (out_dir.empty()) return v;
@@ -177,14 +177,14 @@ TrepanningValidation run_trepanning_validation(const std::filesystem::path& case
       "K_F = {:.4f} GPa and K_M = {:.4f} GPa, with mean |error| {} % (axial) and {} % (torque).\n\n",
       weighting_name, *min_axial, *max_axial, residual_weighting_name(other),
       units::pa_to_gpa(alternative.groups.axial_group_Pa), units::pa_to_gpa(alternative.groups.torque_group_Pa),
-      pct(alternative.axial.fit.mean_abs_error_pct), pct(alternative.torque.fit.mean_abs_error_pct));
+      pct(alternative.axial.fit.mean_abs_error_percent), pct(alternative.torque.fit.mean_abs_error_percent));
   md += "| group | fitted to | value (GPa) | standard error (GPa) | mean abs error (%) | max abs error (%) | bias (%) | "
         "LOO mean abs error (%) | LOO max abs error (%) | LOO bias (%) |\n|---|---|---|---|---|---|---|---|---|---|\n";
   const auto row = [&](const char* name, const char* to, const GroupFit& g) {
     md += fmt::format("| {} | {} | {:.4f} | {:.4f} | {} | {} | {:+.2f} | {} | {} | {:+.2f} |\n", name, to,
-                      units::pa_to_gpa(g.value_Pa), units::pa_to_gpa(g.standard_error_Pa), pct(g.fit.mean_abs_error_pct),
-                      pct(g.fit.max_abs_error_pct), g.fit.bias_pct, pct(g.loo.mean_abs_error_pct),
-                      pct(g.loo.max_abs_error_pct), g.loo.bias_pct);
+                      units::pa_to_gpa(g.value_Pa), units::pa_to_gpa(g.standard_error_Pa), pct(g.fit.mean_abs_error_percent),
+                      pct(g.fit.max_abs_error_percent), g.fit.bias_percent, pct(g.loo.mean_abs_error_percent),
+                      pct(g.loo.max_abs_error_percent), g.loo.bias_percent);
   };
   row("K_F = H tan φ", "measured axial force", mf.axial);
   row("K_M = H (1 + π tan φ μ / 2)", "measured torque", mf.torque);
@@ -193,8 +193,8 @@ TrepanningValidation run_trepanning_validation(const std::filesystem::path& case
   md += fmt::format(
       "\nThe paper's theory column against the measured rows: axial mean |error| {} % (max {} %), torque {} % "
       "(max {} %) — the paper quotes 5.0 % and 6.7 %.\n\n",
-      pct(v.paper_axial.mean_abs_error_pct), pct(v.paper_axial.max_abs_error_pct), pct(v.paper_torque.mean_abs_error_pct),
-      pct(v.paper_torque.max_abs_error_pct));
+      pct(v.paper_axial.mean_abs_error_percent), pct(v.paper_axial.max_abs_error_percent), pct(v.paper_torque.mean_abs_error_percent),
+      pct(v.paper_torque.max_abs_error_percent));
   const auto implied = [&](const char* which, const ImpliedTrepanningMaterial& m, const TrepanningGroups& g) {
     md += fmt::format(
         "- {}: with H = {:.2f} GPa (material `{}`, brittle.hardness_GPa) the groups imply φ = {:.1f}° and μ = {:.3f}{}. "
@@ -214,15 +214,15 @@ TrepanningValidation run_trepanning_validation(const std::filesystem::path& case
     md += fmt::format("| {:.4g} | {:.4g} | {:.4f} | {:+.2f} | {:.4f} | {:+.2f} |\n",
                       measured_rows[i].cut.spindle_speed_rev_per_s * 60.0,
                       units::m_to_um(measured_rows[i].cut.feed_rate_m_per_s), units::pa_to_gpa(mf.axial.loo_value_Pa[i]),
-                      mf.axial.loo_error_pct[i], units::pa_to_gpa(mf.torque.loo_value_Pa[i]), mf.torque.loo_error_pct[i]);
+                      mf.axial.loo_error_percent[i], units::pa_to_gpa(mf.torque.loo_value_Pa[i]), mf.torque.loo_error_percent[i]);
   }
   md += fmt::format(
       "\n## Acceptance\n\n- theory column reproduced by one value of each group within {:.1f} %: axial max {} %, "
       "torque max {} %\n- fitted to the measured rows, mean |error| at most {:.1f} % (axial) and {:.1f} % (torque): "
       "{} % and {} %\n\n**{}**{}\n",
-      acc.theory_column_max_abs_error_pct, pct(tf.axial.fit.max_abs_error_pct), pct(tf.torque.fit.max_abs_error_pct),
-      acc.axial_mean_abs_error_pct, acc.torque_mean_abs_error_pct, pct(mf.axial.fit.mean_abs_error_pct),
-      pct(mf.torque.fit.mean_abs_error_pct), v.passed() ? "PASSED" : "FAILED",
+      acc.theory_column_max_abs_error_percent, pct(tf.axial.fit.max_abs_error_percent), pct(tf.torque.fit.max_abs_error_percent),
+      acc.axial_mean_abs_error_percent, acc.torque_mean_abs_error_percent, pct(mf.axial.fit.mean_abs_error_percent),
+      pct(mf.torque.fit.mean_abs_error_percent), v.passed() ? "PASSED" : "FAILED",
       v.passed() ? "" : ": " + [&] {
         std::string s;
         for (const auto& f : v.failures) s += (s.empty() ? "" : "; ") + f;
@@ -236,11 +236,11 @@ TrepanningValidation run_trepanning_validation(const std::filesystem::path& case
   const auto fit_json = [](const GroupFit& g) {
     return Json{{"value_MPa", units::pa_to_mpa(g.value_Pa)},
                 {"standard_error_MPa", units::pa_to_mpa(g.standard_error_Pa)},
-                {"fit", {{"n", g.fit.n}, {"mean_abs_error_pct", g.fit.mean_abs_error_pct},
-                         {"max_abs_error_pct", g.fit.max_abs_error_pct}, {"bias_pct", g.fit.bias_pct}}},
-                {"leave_one_out", {{"n", g.loo.n}, {"mean_abs_error_pct", g.loo.mean_abs_error_pct},
-                                   {"max_abs_error_pct", g.loo.max_abs_error_pct}, {"bias_pct", g.loo.bias_pct},
-                                   {"error_pct", g.loo_error_pct}}}};
+                {"fit", {{"n", g.fit.n}, {"mean_abs_error_percent", g.fit.mean_abs_error_percent},
+                         {"max_abs_error_percent", g.fit.max_abs_error_percent}, {"bias_percent", g.fit.bias_percent}}},
+                {"leave_one_out", {{"n", g.loo.n}, {"mean_abs_error_percent", g.loo.mean_abs_error_percent},
+                                   {"max_abs_error_percent", g.loo.max_abs_error_percent}, {"bias_percent", g.loo.bias_percent},
+                                   {"error_percent", g.loo_error_percent}}}};
   };
   const auto implied_json = [](const ImpliedTrepanningMaterial& m) {
     return Json{{"hardness_GPa", units::pa_to_gpa(m.hardness_Pa)},
@@ -259,8 +259,8 @@ TrepanningValidation run_trepanning_validation(const std::filesystem::path& case
         {"theory_column", {{"axial_group", fit_json(tf.axial)}, {"torque_group", fit_json(tf.torque)},
                            {"implied", implied_json(v.implied_theory)}}}}},
       {"acceptance",
-       {{"theory_column_max_abs_error_pct", acc.theory_column_max_abs_error_pct},
-        {"fitted_mean_abs_error_pct", {{"axial_force", acc.axial_mean_abs_error_pct}, {"torque", acc.torque_mean_abs_error_pct}}},
+       {{"theory_column_max_abs_error_percent", acc.theory_column_max_abs_error_percent},
+        {"fitted_mean_abs_error_percent", {{"axial_force", acc.axial_mean_abs_error_percent}, {"torque", acc.torque_mean_abs_error_percent}}},
         {"passed", v.passed()},
         {"failures", v.failures}}}};
   v.files = write_report(comparison, out_dir, options);

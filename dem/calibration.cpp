@@ -283,13 +283,13 @@ void solve_hybrid(Context& ctx) {
 }  // namespace
 
 namespace {
-constexpr std::uint64_t kEvaluationsMagic = 0x4b45524643414c31;  // "KERFCAL1"
+constexpr std::uint64_t kEvaluationsMagic = 0x4b45524643414c32;  // "KERFCAL2" (2: the viscous damping ratio)
 
 /// One evaluation's fields in checkpoint order: io(field...) writes (serial::Out) or reads (serial::In) them.
 template <class Self, class Io>
 void evaluation_fields(Self& e, Io& io) {
   auto& m = e.material;
-  io(m.name, m.density_kg_per_m3, m.local_damping);
+  io(m.name, m.density_kg_per_m3, m.local_damping, m.viscous_damping_ratio);
   io(m.contact, m.joint);  // the laws (variants of trivially copyable parameter structs), every field
   io(e.macro.youngs_modulus_pa, e.macro.poissons_ratio, e.macro.tensile_strength_pa, e.macro.compressive_strength_pa);
   io(e.index, e.max_relative_error, e.wall_time_s);

@@ -11,7 +11,10 @@ const FieldTable<Material>& Material::fields() {
       number_field("density_kg_per_m3", units::kSi("kg/m^3"), Range::positive(), "particle density",
                    &Material::density_kg_per_m3),
       number_field("local_damping", units::kNone, Range{0.0, 1.0, false, true},
-                   "Cundall's local damping alpha (docs/physics-dem.md section 1)", &Material::local_damping)};
+                   "Cundall's local damping alpha (docs/physics-dem.md section 1)", &Material::local_damping),
+      number_field("viscous_damping_ratio", units::kNone, Range::closed(0.0, 1.0),
+                   "critical damping ratio of the dashpots beside every contact and bond (normal and shear; 0: none)",
+                   &Material::viscous_damping_ratio)};
   return table;
 }
 
@@ -70,8 +73,8 @@ Json material_to_json(const Material& m) {
 }
 
 bool same_micro_parameters(const Material& a, const Material& b) {
-  return a.density_kg_per_m3 == b.density_kg_per_m3 && a.local_damping == b.local_damping && a.contact == b.contact &&
-         a.joint == b.joint;
+  return a.density_kg_per_m3 == b.density_kg_per_m3 && a.local_damping == b.local_damping &&
+         a.viscous_damping_ratio == b.viscous_damping_ratio && a.contact == b.contact && a.joint == b.joint;
 }
 
 CalibratedParams calibrated_params(const Material& m) {

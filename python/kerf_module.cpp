@@ -234,10 +234,10 @@ py::list models() {
 py::dict metrics_dict(const kerf::ErrorMetrics& m) {
   py::dict out;
   out["n"] = m.n;
-  out["mean_abs_error_pct"] = m.mean_abs_error_pct;
-  out["max_abs_error_pct"] = m.max_abs_error_pct;
-  out["bias_pct"] = m.bias_pct;
-  out["rms_error_pct"] = m.rms_error_pct;
+  out["mean_abs_error_percent"] = m.mean_abs_error_percent;
+  out["max_abs_error_percent"] = m.max_abs_error_percent;
+  out["bias_percent"] = m.bias_percent;
+  out["rms_error_percent"] = m.rms_error_percent;
   return out;
 }
 

@@ -10,7 +10,7 @@
 
 namespace kerf {
 
-double relative_error_pct(double predicted, double measured, const std::string& field) {
+double relative_error_percent(double predicted, double measured, const std::string& field) {
   if (!std::isfinite(measured) || measured == 0.0) {
     throw InputError(field, format_value(measured), "a finite, non-zero measurement (errors are relative to it)");
   }
@@ -18,21 +18,21 @@ double relative_error_pct(double predicted, double measured, const std::string& 
   return 100.0 * (predicted - measured) / measured;
 }
 
-ErrorMetrics metrics_of_errors(std::span<const double> errors_pct) {
-  if (errors_pct.empty()) throw InputError("errors", "(none)", "at least one compared row");
+ErrorMetrics metrics_of_errors(std::span<const double> errors_percent) {
+  if (errors_percent.empty()) throw InputError("errors", "(none)", "at least one compared row");
   ErrorMetrics m;
-  m.n = errors_pct.size();
+  m.n = errors_percent.size();
   double sum_abs = 0.0, sum = 0.0, sum_sq = 0.0;
-  for (double e : errors_pct) {
+  for (double e : errors_percent) {
     sum_abs += std::abs(e);
     sum += e;
     sum_sq += e * e;
-    m.max_abs_error_pct = std::max(m.max_abs_error_pct, std::abs(e));
+    m.max_abs_error_percent = std::max(m.max_abs_error_percent, std::abs(e));
   }
   const double n = static_cast<double>(m.n);
-  m.mean_abs_error_pct = sum_abs / n;
-  m.bias_pct = sum / n;
-  m.rms_error_pct = std::sqrt(sum_sq / n);
+  m.mean_abs_error_percent = sum_abs / n;
+  m.bias_percent = sum / n;
+  m.rms_error_percent = std::sqrt(sum_sq / n);
   return m;
 }
 
@@ -42,7 +42,7 @@ ErrorMetrics error_metrics(std::span<const double> predicted, std::span<const do
                      std::to_string(measured.size()) + " values, one per measurement");
   }
   std::vector<double> errors(predicted.size());
-  for (std::size_t i = 0; i < predicted.size(); ++i) errors[i] = relative_error_pct(predicted[i], measured[i]);
+  for (std::size_t i = 0; i < predicted.size(); ++i) errors[i] = relative_error_percent(predicted[i], measured[i]);
   return metrics_of_errors(errors);
 }
 

@@ -65,10 +65,10 @@ Json basis_json(const WidthBasis& b) {
 
 Json metrics_json(const ErrorMetrics& m) {
   return {{"n", m.n},
-          {"mean_abs_error_pct", m.mean_abs_error_pct},
-          {"max_abs_error_pct", m.max_abs_error_pct},
-          {"bias_pct", m.bias_pct},
-          {"rms_error_pct", m.rms_error_pct}};
+          {"mean_abs_error_percent", m.mean_abs_error_percent},
+          {"max_abs_error_percent", m.max_abs_error_percent},
+          {"bias_percent", m.bias_percent},
+          {"rms_error_percent", m.rms_error_percent}};
 }
 
 bool same_basis(const WidthBasis& a, const WidthBasis& b) {
@@ -360,8 +360,8 @@ Comparison compare(const ComparisonSpec& spec, const DataSet& measured, const st
           gc.measured_stats = sample_statistics(gc.measured);
           gc.predicted_stats = sample_statistics(gc.predicted);
           const std::string field = fmt::format("{} at {}", r.key, conditions_text(spec, gc.conditions));
-          gc.error_pct = relative_error_pct(gc.predicted_stats.mean, gc.measured_stats.mean, field);
-          for (double m : gc.measured) gc.row_error_pct.push_back(relative_error_pct(gc.predicted_stats.mean, m, field));
+          gc.error_percent = relative_error_percent(gc.predicted_stats.mean, gc.measured_stats.mean, field);
+          for (double m : gc.measured) gc.row_error_percent.push_back(relative_error_percent(gc.predicted_stats.mean, m, field));
           gc.has_scatter = gc.measured.size() >= 2;
           if (gc.has_scatter) {
             const double distance = std::abs(gc.predicted_stats.mean - gc.measured_stats.mean);
@@ -371,8 +371,8 @@ Comparison compare(const ComparisonSpec& spec, const DataSet& measured, const st
             r.n_within_1sd += gc.within_1sd ? 1 : 0;
             r.n_within_2sd += gc.within_2sd ? 1 : 0;
           }
-          group_errors.push_back(gc.error_pct);
-          row_errors.insert(row_errors.end(), gc.row_error_pct.begin(), gc.row_error_pct.end());
+          group_errors.push_back(gc.error_percent);
+          row_errors.insert(row_errors.end(), gc.row_error_percent.begin(), gc.row_error_percent.end());
           r.groups.push_back(std::move(gc));
         }
         if (r.groups.empty()) {
@@ -649,8 +649,8 @@ std::string report_markdown(const Comparison& c, const ReportOptions& options,
   for (const auto& r : c.results) {
     md += fmt::format("| {} ({}) | {} | {} | {} | {:.2f} | {:.2f} | {:+.2f} | {} | {} |\n",
                       plain(spec.quantities[r.quantity].label), r.unit.label, width_view_name(r.view),
-                      c.predictions[r.prediction].data.name, r.metrics.n, r.metrics.mean_abs_error_pct,
-                      r.metrics.max_abs_error_pct, r.metrics.bias_pct,
+                      c.predictions[r.prediction].data.name, r.metrics.n, r.metrics.mean_abs_error_percent,
+                      r.metrics.max_abs_error_percent, r.metrics.bias_percent,
                       r.n_with_scatter ? fmt::format("{}/{}", r.n_within_1sd, r.n_with_scatter) : "–",
                       r.n_with_scatter ? fmt::format("{}/{}", r.n_within_2sd, r.n_with_scatter) : "–");
   }
@@ -675,14 +675,14 @@ std::string report_markdown(const Comparison& c, const ReportOptions& options,
       md += fmt::format("{} | {} | {} | {} | {:+.2f} | {} |\n", number_text(g.measured_stats.mean / r.unit.si),
                         g.measured.size(),
                         g.has_scatter ? number_text(g.measured_stats.standard_deviation / r.unit.si) : "–",
-                        number_text(g.predicted_stats.mean / r.unit.si), g.error_pct,
+                        number_text(g.predicted_stats.mean / r.unit.si), g.error_percent,
                         g.has_scatter ? (g.within_1sd ? "yes" : "no") : "–");
     }
     md += fmt::format("\nn = {}, mean |error| = {:.2f} %, max |error| = {:.2f} %, bias = {:+.2f} %", r.metrics.n,
-                      r.metrics.mean_abs_error_pct, r.metrics.max_abs_error_pct, r.metrics.bias_pct);
+                      r.metrics.mean_abs_error_percent, r.metrics.max_abs_error_percent, r.metrics.bias_percent);
     if (r.metrics.n != r.row_metrics.n) {
       md += fmt::format(" (against each of the {} measured rows: mean |error| = {:.2f} %)", r.row_metrics.n,
-                        r.row_metrics.mean_abs_error_pct);
+                        r.row_metrics.mean_abs_error_percent);
     }
     md += ".\n\n";
     if (!r.unmatched.empty()) {
@@ -719,8 +719,8 @@ std::string comparison_csv(const Comparison& c) {
     const std::string& u = r->unit.suffix;
     for (const std::string& col : {fmt::format("{}_measured_{}", r->key, u), fmt::format("{}_measured_mean_{}", r->key, u),
                                    fmt::format("{}_measured_sd_{}", r->key, u), fmt::format("{}_n_replicates", r->key),
-                                   fmt::format("{}_predicted_{}", r->key, u), fmt::format("{}_error_pct", r->key),
-                                   fmt::format("{}_mean_error_pct", r->key)}) {
+                                   fmt::format("{}_predicted_{}", r->key, u), fmt::format("{}_error_percent", r->key),
+                                   fmt::format("{}_mean_error_percent", r->key)}) {
       header.push_back(col);
     }
   }
@@ -768,8 +768,8 @@ std::string comparison_csv(const Comparison& c) {
         fields.push_back(group->has_scatter ? csv_number(group->measured_stats.standard_deviation / s) : "");
         fields.push_back(std::to_string(group->measured.size()));
         fields.push_back(csv_number(group->predicted_stats.mean / s));
-        fields.push_back(csv_number(group->row_error_pct[replicate]));
-        fields.push_back(csv_number(group->error_pct));
+        fields.push_back(csv_number(group->row_error_percent[replicate]));
+        fields.push_back(csv_number(group->error_percent));
       }
       text += csv_line(fields);
     }

@@ -211,14 +211,14 @@ int run_compare(const std::string& scene_path, const std::vector<std::string>& o
   const auto files = kerf::write_report(result.comparison, out_dir, result.report);
   for (const auto& r : result.comparison.results) {
     fmt::print("{:<28} n = {:<3} mean |error| {:6.2f} %   max |error| {:6.2f} %   bias {:+6.2f} %\n", r.key,
-               r.metrics.n, r.metrics.mean_abs_error_pct, r.metrics.max_abs_error_pct, r.metrics.bias_pct);
+               r.metrics.n, r.metrics.mean_abs_error_percent, r.metrics.max_abs_error_percent, r.metrics.bias_percent);
   }
   if (result.calibration) {
     const auto& c = *result.calibration;
     fmt::print("fitted            K_F = {:.6g} MPa (leave-one-out mean |error| {:.2f} %), K_M = {:.6g} MPa "
                "(leave-one-out {:.2f} %)\n",
-               kerf::units::pa_to_mpa(c.axial.value_Pa), c.axial.loo.mean_abs_error_pct,
-               kerf::units::pa_to_mpa(c.torque.value_Pa), c.torque.loo.mean_abs_error_pct);
+               kerf::units::pa_to_mpa(c.axial.value_Pa), c.axial.loo.mean_abs_error_percent,
+               kerf::units::pa_to_mpa(c.torque.value_Pa), c.torque.loo.mean_abs_error_percent);
   }
   if (!result.unused_columns.empty()) {
     fmt::print("unused columns    {} (neither a condition nor a quantity; --map binds them)\n",
@@ -238,7 +238,7 @@ int run_report(const std::string& config_path, const std::string& out_dir) {
   const auto files = kerf::write_report(comparison, out_dir);
   for (const auto& r : comparison.results) {
     fmt::print("{:<28} n = {:<3} mean |error| {:7.2f} %   max |error| {:7.2f} %   bias {:+7.2f} %\n", r.key,
-               r.metrics.n, r.metrics.mean_abs_error_pct, r.metrics.max_abs_error_pct, r.metrics.bias_pct);
+               r.metrics.n, r.metrics.mean_abs_error_percent, r.metrics.max_abs_error_percent, r.metrics.bias_percent);
   }
   fmt::print("report            {} ({} files)\n", out_dir, files.size());
   return 0;

@@ -27,8 +27,8 @@ bool run_k9(const std::filesystem::path& out) {
   const kerf::TrepanningValidation v = kerf::run_k9_trepanning_validation(out);
   for (const auto& file : v.files) fmt::print("wrote {}\n", file.string());
   fmt::print("fitted: axial mean |error| {:.2f} %, torque {:.2f} %; leave-one-out: {:.2f} %, {:.2f} %\n",
-             v.measured_fit.axial.fit.mean_abs_error_pct, v.measured_fit.torque.fit.mean_abs_error_pct,
-             v.measured_fit.axial.loo.mean_abs_error_pct, v.measured_fit.torque.loo.mean_abs_error_pct);
+             v.measured_fit.axial.fit.mean_abs_error_percent, v.measured_fit.torque.fit.mean_abs_error_percent,
+             v.measured_fit.axial.loo.mean_abs_error_percent, v.measured_fit.torque.loo.mean_abs_error_percent);
   for (const auto& failure : v.failures) fmt::print(stderr, "FAILED: {}\n", failure);
   fmt::print("k9_trepanning: {}\n", v.passed() ? "PASSED" : "FAILED");
   return v.passed();

@@ -43,7 +43,7 @@ struct Spec {
   std::string note;  ///< printed under the report's title (e.g. what a fitted material was fitted to)
   int replicates = 3;
   std::vector<Condition> conditions;
-  double regular_max_error_pct = 20, grooved_ratio_max = 1.0 / 3;
+  double regular_max_error_percent = 20, grooved_ratio_max = 1.0 / 3;
   /// The regular-workpiece force the material was fitted to (depth 0: none): its check is reported as
   /// FITTED, neither passed nor failed, since meeting it shows the fit, not the model.
   double fitted_depth_of_cut_mm = 0;
@@ -70,7 +70,7 @@ Spec read_spec(const fs::path& case_dir) {
     s.conditions.push_back(cond);
   }
   ObjectReader a = r.get_object("acceptance");
-  s.regular_max_error_pct = a.get_number("regular_force_max_abs_error_vs_paper_dem_pct", Range::positive(), "%");
+  s.regular_max_error_percent = a.get_number("regular_force_max_abs_error_vs_paper_dem_percent", Range::positive(), "%");
   s.grooved_ratio_max = a.get_number("grooved_to_regular_main_force_ratio_max", Range::positive(), "");
   if (auto fitted = a.find_object("fitted")) {
     s.fitted_depth_of_cut_mm = fitted->get_number("depth_of_cut_mm", Range::positive(), "mm");
@@ -390,7 +390,7 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
     if (regular) {
       for (const std::string label : {"main", "thrust"}) {
         const GroupComparison& g = group_of(vs_dem, label + "_force", "regular", depth);
-        const double paper = g.measured_stats.mean, error = g.error_pct / 100, band = spec.regular_max_error_pct / 100;
+        const double paper = g.measured_stats.mean, error = g.error_percent / 100, band = spec.regular_max_error_percent / 100;
         const Estimate paper_mean{
             paper, g.measured_stats.standard_deviation / std::sqrt(static_cast<double>(g.measured_stats.n))};
         // error = kerf / paper - 1: its standard error is the ratio's.
@@ -399,7 +399,7 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
         check(fmt::format("regular {} mm: {} force vs the paper's DEM mean ({:.2f} N), relative error", depth, label,
                           paper),
               error, error_se, std::abs(error) - band, std::abs(error) <= band,
-              fmt::format("|error| <= {:g} %", spec.regular_max_error_pct),
+              fmt::format("|error| <= {:g} %", spec.regular_max_error_percent),
               label == spec.fitted_force && std::abs(depth - spec.fitted_depth_of_cut_mm) < 1e-9);
       }
     }

@@ -16,21 +16,21 @@ namespace kerf {
 
 struct ErrorMetrics {
   std::size_t n = 0;
-  double mean_abs_error_pct = 0.0;
-  double max_abs_error_pct = 0.0;
-  double bias_pct = 0.0;  ///< mean signed error: > 0 when the model over-predicts on average
-  double rms_error_pct = 0.0;
+  double mean_abs_error_percent = 0.0;
+  double max_abs_error_percent = 0.0;
+  double bias_percent = 0.0;  ///< mean signed error: > 0 when the model over-predicts on average
+  double rms_error_percent = 0.0;
 };
 
 /// (predicted - measured) / measured in percent. Throws InputError when `measured` is zero or either is not
 /// finite (`field` names what is compared).
-double relative_error_pct(double predicted, double measured, const std::string& field = "measured");
+double relative_error_percent(double predicted, double measured, const std::string& field = "measured");
 
 /// Metrics over paired values. Throws InputError when the sizes differ or the input is empty.
 ErrorMetrics error_metrics(std::span<const double> predicted, std::span<const double> measured);
 
 /// Metrics of per-row errors already in percent.
-ErrorMetrics metrics_of_errors(std::span<const double> errors_pct);
+ErrorMetrics metrics_of_errors(std::span<const double> errors_percent);
 
 /// Sample mean and standard deviation (n - 1 in the denominator; NaN standard deviation for n < 2).
 struct SampleStatistics {

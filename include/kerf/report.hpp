@@ -149,8 +149,8 @@ struct GroupComparison {
   SampleStatistics measured_stats;
   std::vector<double> predicted;           ///< predicted rows with these conditions (replicate runs)
   SampleStatistics predicted_stats;
-  double error_pct = 0.0;                  ///< (predicted mean - measured mean) / measured mean
-  std::vector<double> row_error_pct;       ///< (predicted mean - replicate) / replicate, per measured row
+  double error_percent = 0.0;                  ///< (predicted mean - measured mean) / measured mean
+  std::vector<double> row_error_percent;       ///< (predicted mean - replicate) / replicate, per measured row
   bool has_scatter = false;                ///< two or more replicates
   bool within_1sd = false, within_2sd = false;  ///< predicted mean inside mean +- 1 (2) SD; only with scatter
 };

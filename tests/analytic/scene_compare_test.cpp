@@ -44,8 +44,8 @@ TEST_CASE("Compare matches columns by name and measures the error of each row", 
   const auto result = kerf::compare_scene(planing_scene(), csv, {});
   const auto& r = result.comparison.result("cutting_force");
   CHECK(r.metrics.n == 3);
-  CHECK_THAT(r.metrics.mean_abs_error_pct, WithinRel(100.0 / 0.9 - 100.0, 1e-9));
-  CHECK_THAT(r.metrics.bias_pct, WithinRel(100.0 / 0.9 - 100.0, 1e-9));
+  CHECK_THAT(r.metrics.mean_abs_error_percent, WithinRel(100.0 / 0.9 - 100.0, 1e-9));
+  CHECK_THAT(r.metrics.bias_percent, WithinRel(100.0 / 0.9 - 100.0, 1e-9));
   std::filesystem::remove(csv);
 }
 
@@ -55,8 +55,8 @@ TEST_CASE("Compare shows both width views when the measured width differs", "[co
   for (double t0 : {50.0, 100.0}) text += fmt::format("{},4,{}\n", t0, 2.0 * predicted_cutting_force(t0));
   const auto csv = write_csv("kerf_compare_width.csv", text);
   const auto result = kerf::compare_scene(planing_scene(), csv, {});
-  CHECK_THAT(result.comparison.result("cutting_force").metrics.bias_pct, WithinAbs(-50.0, 1e-9));
-  CHECK_THAT(result.comparison.result("cutting_force_per_width").metrics.max_abs_error_pct, WithinAbs(0.0, 1e-9));
+  CHECK_THAT(result.comparison.result("cutting_force").metrics.bias_percent, WithinAbs(-50.0, 1e-9));
+  CHECK_THAT(result.comparison.result("cutting_force_per_width").metrics.max_abs_error_percent, WithinAbs(0.0, 1e-9));
   std::filesystem::remove(csv);
 }
 

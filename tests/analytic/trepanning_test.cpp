@@ -63,8 +63,8 @@ TEST_CASE("The paper's theory column is one value of each lumped group", "[trepa
     CHECK_THAT(cal.axial.predicted[i], WithinRel(kTable4[i].axial_theory_N, 0.02));
     CHECK_THAT(cal.torque.predicted[i], WithinRel(kTable4[i].torque_theory_Nm, 0.02));
   }
-  CHECK(cal.axial.fit.max_abs_error_pct < 2.0);
-  CHECK(cal.torque.fit.max_abs_error_pct < 2.0);
+  CHECK(cal.axial.fit.max_abs_error_percent < 2.0);
+  CHECK(cal.torque.fit.max_abs_error_percent < 2.0);
 
   const auto k9 = kerf::implied_trepanning_material(cal.groups, 7.2e9);
   CHECK_THAT(kerf::units::rad_to_deg(k9.half_angle_rad), WithinAbs(55.7, 0.1));
@@ -87,19 +87,19 @@ TEST_CASE("Fitted to the measured rows the model meets the paper's accuracy", "[
   const auto cal = kerf::calibrate_trepanning(kPaperTool, observations(/*theory=*/false));
   CHECK(cal.weighting == kerf::ResidualWeighting::relative);
   CHECK(cal.axial.fit.n == 8);
-  CHECK(cal.axial.fit.mean_abs_error_pct <= 5.0);
-  CHECK(cal.torque.fit.mean_abs_error_pct <= 6.7);
+  CHECK(cal.axial.fit.mean_abs_error_percent <= 5.0);
+  CHECK(cal.torque.fit.mean_abs_error_percent <= 6.7);
   CHECK_THAT(cal.groups.axial_group_Pa, WithinRel(10.74e9, 2e-3));
   CHECK_THAT(cal.groups.torque_group_Pa, WithinRel(6.03e9, 2e-3));
   // Relative weighting minimises sum e_i^2 through the origin: the bias is small but not zero.
-  CHECK(std::abs(cal.axial.fit.bias_pct) < 1.0);
-  CHECK(std::abs(cal.torque.fit.bias_pct) < 1.0);
+  CHECK(std::abs(cal.axial.fit.bias_percent) < 1.0);
+  CHECK(std::abs(cal.torque.fit.bias_percent) < 1.0);
   // Leave-one-out: every row predicted from the other seven. Out-of-sample errors exceed in-sample ones.
-  REQUIRE(cal.axial.loo_error_pct.size() == 8);
-  CHECK(cal.axial.loo.mean_abs_error_pct > cal.axial.fit.mean_abs_error_pct);
-  CHECK(cal.torque.loo.mean_abs_error_pct > cal.torque.fit.mean_abs_error_pct);
-  CHECK_THAT(cal.axial.loo.mean_abs_error_pct, WithinAbs(5.04, 0.01));
-  CHECK_THAT(cal.torque.loo.mean_abs_error_pct, WithinAbs(7.44, 0.01));
+  REQUIRE(cal.axial.loo_error_percent.size() == 8);
+  CHECK(cal.axial.loo.mean_abs_error_percent > cal.axial.fit.mean_abs_error_percent);
+  CHECK(cal.torque.loo.mean_abs_error_percent > cal.torque.fit.mean_abs_error_percent);
+  CHECK_THAT(cal.axial.loo.mean_abs_error_percent, WithinAbs(5.04, 0.01));
+  CHECK_THAT(cal.torque.loo.mean_abs_error_percent, WithinAbs(7.44, 0.01));
   CHECK(cal.axial.standard_error_Pa > 0.0);
   CHECK(cal.axial.standard_error_Pa < 0.05 * cal.axial.value_Pa);
 }
@@ -136,8 +136,8 @@ TEST_CASE("Exact data is recovered exactly, and leave-one-out errors vanish", "[
   const auto cal = kerf::calibrate_trepanning(kPaperTool, rows, kerf::ResidualWeighting::absolute);
   CHECK_THAT(cal.groups.axial_group_Pa, WithinRel(9e9, 1e-12));
   CHECK_THAT(cal.groups.torque_group_Pa, WithinRel(7e9, 1e-12));
-  CHECK(cal.axial.loo.max_abs_error_pct < 1e-9);
-  CHECK(cal.torque.loo.max_abs_error_pct < 1e-9);
+  CHECK(cal.axial.loo.max_abs_error_percent < 1e-9);
+  CHECK(cal.torque.loo.max_abs_error_percent < 1e-9);
 }
 
 TEST_CASE("Force is linear in v_f / n_0 and torque scales with D^2 - d^2", "[trepanning][physics]") {

@@ -16,11 +16,11 @@ import json, sys
 s = json.load(open(sys.argv[1]))
 q = s["quantities"]
 for key, band in (("axial_force", 5.0), ("torque", 6.7)):
-    for field in ("n", "mean_abs_error_pct", "max_abs_error_pct", "bias_pct"):
+    for field in ("n", "mean_abs_error_percent", "max_abs_error_percent", "bias_percent"):
         assert field in q[key], (key, field)
     assert q[key]["n"] == 8
-    assert q[key]["mean_abs_error_pct"] <= band, (key, q[key]["mean_abs_error_pct"])  # seed 002's own figures
-assert s["extra"]["fit"]["axial_force"]["loo_mean_abs_error_pct"] > q["axial_force"]["mean_abs_error_pct"]
+    assert q[key]["mean_abs_error_percent"] <= band, (key, q[key]["mean_abs_error_percent"])  # seed 002's own figures
+assert s["extra"]["fit"]["axial_force"]["loo_mean_abs_error_percent"] > q["axial_force"]["mean_abs_error_percent"]
 print("compare checks passed")
 PY
 "$bin" compare "$k9" --experiments "$csv" --fit --out "$tmp/x" 2>"$tmp/err"; [ $? -eq 2 ] || fail "compare without matching columns must exit 2"

@@ -26,7 +26,7 @@ cat >"$case_dir/validation.json" <<'JSON'
  "conditions": [
    {"name": "regular_0.1", "surface": "regular", "depth_of_cut_mm": 0.1, "groove_shape": "none"},
    {"name": "grooved_0.1", "surface": "grooved", "depth_of_cut_mm": 0.1, "groove_shape": "rectangular"}],
- "acceptance": {"regular_force_max_abs_error_vs_paper_dem_pct": 20, "grooved_to_regular_main_force_ratio_max": 0.3333}}
+ "acceptance": {"regular_force_max_abs_error_vs_paper_dem_percent": 20, "grooved_to_regular_main_force_ratio_max": 0.3333}}
 JSON
 export KERF_DATA_DIR="$work/tree/data"
 "$validate" soda_lime_cutting "$work/out" >"$work/log" 2>&1

@@ -78,18 +78,18 @@ TEST_CASE("Replicates: group mean and SD, and whether the prediction lies in the
   CHECK(a.has_scatter);
   CHECK(a.within_1sd);  // |13 - 12| <= 2
   CHECK(a.within_2sd);
-  CHECK_THAT(a.error_pct, WithinRel(100.0 / 12.0, 1e-14));
-  REQUIRE(a.row_error_pct.size() == 3);
-  CHECK_THAT(a.row_error_pct[0], WithinRel(30.0, 1e-14));
-  CHECK_THAT(a.row_error_pct[2], WithinRel(-100.0 / 14.0, 1e-14));
+  CHECK_THAT(a.error_percent, WithinRel(100.0 / 12.0, 1e-14));
+  REQUIRE(a.row_error_percent.size() == 3);
+  CHECK_THAT(a.row_error_percent[0], WithinRel(30.0, 1e-14));
+  CHECK_THAT(a.row_error_percent[2], WithinRel(-100.0 / 14.0, 1e-14));
   CHECK(a.measured_lines == std::vector<std::size_t>{2, 3, 4});
   CHECK_FALSE(r.groups[1].has_scatter);
-  CHECK_THAT(r.groups[1].error_pct, WithinRel(10.0, 1e-14));
+  CHECK_THAT(r.groups[1].error_percent, WithinRel(10.0, 1e-14));
   // Metrics over the two groups: errors 8.333 % and 10 %.
   CHECK(r.metrics.n == 2);
-  CHECK_THAT(r.metrics.mean_abs_error_pct, WithinRel((100.0 / 12.0 + 10.0) / 2.0, 1e-14));
-  CHECK_THAT(r.metrics.max_abs_error_pct, WithinRel(10.0, 1e-14));
-  CHECK_THAT(r.metrics.bias_pct, WithinRel((100.0 / 12.0 + 10.0) / 2.0, 1e-14));
+  CHECK_THAT(r.metrics.mean_abs_error_percent, WithinRel((100.0 / 12.0 + 10.0) / 2.0, 1e-14));
+  CHECK_THAT(r.metrics.max_abs_error_percent, WithinRel(10.0, 1e-14));
+  CHECK_THAT(r.metrics.bias_percent, WithinRel((100.0 / 12.0 + 10.0) / 2.0, 1e-14));
   CHECK(r.row_metrics.n == 4);
   CHECK(r.n_with_scatter == 1);
   CHECK(r.n_within_1sd == 1);
@@ -145,12 +145,12 @@ TEST_CASE("Seed 000: experiment (25.4 mm) against the paper's DEM (1 mm) needs a
   // regular, 0.1 mm: experiment 17.8, 15.0, 16.7 N (mean 16.5); DEM 14.15, 15.40, 15.38 N (mean 14.977).
   const double exp_mean = (17.8 + 15.0 + 16.7) / 3.0, dem_mean = (14.15 + 15.40 + 15.38) / 3.0;
   CHECK_THAT(direct.groups[0].measured_stats.mean, WithinRel(exp_mean, 1e-12));
-  CHECK_THAT(direct.groups[0].error_pct, WithinRel(100.0 * (dem_mean - exp_mean) / exp_mean, 1e-12));
+  CHECK_THAT(direct.groups[0].error_percent, WithinRel(100.0 * (dem_mean - exp_mean) / exp_mean, 1e-12));
   CHECK(direct.groups[0].predicted.size() == 3);
   CHECK_FALSE(direct.note.empty());
   // Per unit width: 16.5 N / 25.4 mm against 14.977 N / 1 mm: the DEM is 23 times the experiment.
   CHECK_THAT(per_width.groups[0].measured_stats.mean, WithinRel(exp_mean / 25.4e-3, 1e-12));
-  CHECK_THAT(per_width.groups[0].error_pct, WithinRel(100.0 * (dem_mean / 1.0 - exp_mean / 25.4) / (exp_mean / 25.4), 1e-12));
+  CHECK_THAT(per_width.groups[0].error_percent, WithinRel(100.0 * (dem_mean / 1.0 - exp_mean / 25.4) / (exp_mean / 25.4), 1e-12));
   CHECK(per_width.unit.label == "N/mm");
   const auto csv = kerf::comparison_csv(c);
   CHECK(csv.find("main_force_per_width_measured_N_per_mm") != std::string::npos);
@@ -188,16 +188,16 @@ TEST_CASE("The report directory: summary, CSV and plots, written whole", "[repor
   const auto summary = kerf::Json::parse(read(dir / "summary.json"));
   const auto& q = summary["quantities"]["main_force"];
   CHECK(q["n"] == 3);
-  CHECK_THAT(q["mean_abs_error_pct"].get<double>(), WithinRel((0.0 + 5.0 + 100.0 * 2.0 / 28.0) / 3.0, 1e-12));
-  CHECK_THAT(q["max_abs_error_pct"].get<double>(), WithinRel(100.0 * 2.0 / 28.0, 1e-12));
-  CHECK_THAT(q["bias_pct"].get<double>(), WithinRel((0.0 - 5.0 + 100.0 * 2.0 / 28.0) / 3.0, 1e-12));
+  CHECK_THAT(q["mean_abs_error_percent"].get<double>(), WithinRel((0.0 + 5.0 + 100.0 * 2.0 / 28.0) / 3.0, 1e-12));
+  CHECK_THAT(q["max_abs_error_percent"].get<double>(), WithinRel(100.0 * 2.0 / 28.0, 1e-12));
+  CHECK_THAT(q["bias_percent"].get<double>(), WithinRel((0.0 - 5.0 + 100.0 * 2.0 / 28.0) / 3.0, 1e-12));
   const auto table = kerf::parse_csv(read(dir / "comparison.csv"), "comparison.csv");
   CHECK(table.header.at(2) == "surface");
   CHECK(table.header.at(3) == "depth_of_cut_mm");
   CHECK(table.has_column("main_force_measured_N"));
-  CHECK(table.has_column("main_force_error_pct"));
+  CHECK(table.has_column("main_force_error_percent"));
   CHECK(table.rows.size() == 4);
-  CHECK_THAT(table.number(0, table.column_index("main_force_error_pct")), WithinRel(10.0, 1e-12));
+  CHECK_THAT(table.number(0, table.column_index("main_force_error_percent")), WithinRel(10.0, 1e-12));
   const std::string md = read(dir / "report.md");
   CHECK(md.find("> Source: hand-made") != std::string::npos);
   CHECK(md.find("![") != std::string::npos);

@@ -130,10 +130,10 @@ def test_materials_and_models():
 def test_compare_like_the_cli(tmp_path):
     result = kerf.compare(K9, K9_CSV, map=K9_MAP, fit=True, out=tmp_path / "k9")
     axial = result["quantities"]["axial_force"]
-    assert axial["n"] == 8 and axial["mean_abs_error_pct"] <= 5.0
+    assert axial["n"] == 8 and axial["mean_abs_error_percent"] <= 5.0
     assert len(axial["measured"]) == len(axial["predicted"]) == 8
     summary = json.loads((tmp_path / "k9" / "summary.json").read_text())
-    assert summary["quantities"]["axial_force"]["mean_abs_error_pct"] == axial["mean_abs_error_pct"]
+    assert summary["quantities"]["axial_force"]["mean_abs_error_percent"] == axial["mean_abs_error_percent"]
 
 
 SMALL_CUT = {  # tests/dem/scene_test.cpp 'small cut regression through run_scene'

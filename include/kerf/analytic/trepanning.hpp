@@ -152,12 +152,12 @@ struct GroupFit {
   double value_Pa = 0.0;           ///< the fitted group
   double standard_error_Pa = 0.0;  ///< from the weighted residuals (GSL covariance scaled by chi^2 / (n - 1))
   std::vector<double> predicted;   ///< model at each row with the fitted group (N or N m)
-  std::vector<double> error_pct;   ///< (predicted - measured) / measured
-  ErrorMetrics fit;                ///< metrics of error_pct
+  std::vector<double> error_percent;   ///< (predicted - measured) / measured
+  ErrorMetrics fit;                ///< metrics of error_percent
   // Leave-one-out cross-validation: each row predicted by the group fitted to the other n - 1 rows.
   std::vector<double> loo_value_Pa;
   std::vector<double> loo_predicted;
-  std::vector<double> loo_error_pct;
+  std::vector<double> loo_error_percent;
   ErrorMetrics loo;
 };
 

@@ -23,6 +23,9 @@ struct Material {
   ContactLaw contact;          ///< unjointed disk-disk and disk-wall contacts
   BondLaw joint;               ///< bonded contacts
   double local_damping = 0.7;  ///< Cundall's alpha (docs/physics-dem.md section 1)
+  /// Critical damping ratio beta of a dashpot beside each contact's and bond's normal and shear springs,
+  /// c = 2 beta sqrt(m_eff k) (PFC's dashpots; LAMMPS BPM's damping). 0: none.
+  double viscous_damping_ratio = 0;
 
   /// The material's own keys (density, damping); the laws' keys are in their own tables.
   static const FieldTable<Material>& fields();

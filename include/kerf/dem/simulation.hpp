@@ -185,12 +185,17 @@ class Simulation {
   /// The force loops as orphaned worksharing: called by every thread of a team, or by one thread alone.
   void force_loops(ForceCounts& counts);
   /// The bond, pair and wall loops of force_loops, one instantiation per law.
-  template <class Law>
+  /// kViscous: with the contact dashpots of Material::viscous_damping_ratio (an instantiation without them
+  /// runs when the ratio is 0, so undamped runs are the same to the bit).
+  template <class Law, bool kViscous>
   void bond_loop(const Law& law, ForceCounts& counts);
-  template <class Law>
+  template <class Law, bool kViscous>
   void pair_loop(const Law& law);
-  template <class Law>
+  template <class Law, bool kViscous>
   void wall_loop(const Law& law);
+  /// 2 beta sqrt(m_eff k) for the pair (i, j): m_eff = 1 / (1/m_i + 1/m_j), a prescribed disk counting as
+  /// infinitely heavy (j = -1: a wall); 0 when both are prescribed.
+  double dashpot_coefficient(std::size_t i, std::int64_t j, double stiffness) const;
   void finish_forces(const ForceCounts& counts);
   void apply_breaks();
   template <class Law>
