@@ -294,7 +294,7 @@ py::dict compare(const py::object& scene, const py::object& experiments, const p
 }
 
 py::dict dem_run(const py::object& scene, const py::object& out, const py::object& threads, int replicates,
-                 int checkpoint_every, const py::kwargs& overrides) {
+                 int checkpoint_every, const py::object& progress, const py::kwargs& overrides) {
   const SceneInput input = scene_input(scene, overrides);
   kerf::dem::RunOptions options;
   options.out = py::str(py::module_::import("os").attr("fspath")(out)).cast<std::string>();
@@ -302,6 +302,14 @@ py::dict dem_run(const py::object& scene, const py::object& out, const py::objec
   options.checkpoint_every = checkpoint_every;
   options.show_progress = false;
   options.command_line = "kerf.dem.run (Python)";
+  // A Python callable gets each progress report as (stage, done, total, unit), with the GIL held; an
+  // exception it raises stops the run and reaches the caller.
+  if (!progress.is_none()) {
+    options.on_progress = [progress](const kerf::dem::ProgressUpdate& u) {
+      py::gil_scoped_acquire acquire;
+      progress(u.stage, u.done, u.total, u.unit);
+    };
+  }
   for (const auto& [key, value] : overrides) {
     options.overrides.push_back(py::str(key).cast<std::string>() + "=" + json_dumps(value));
   }
@@ -375,9 +383,10 @@ PYBIND11_MODULE(kerf, m) {
 
   py::module_ dem = m.def_submodule("dem", "the 2D bonded-particle DEM (kerf-dem)");
   dem.def("run", &dem_run, py::arg("scene"), py::kw_only(), py::arg("out"), py::arg("threads") = py::none(),
-          py::arg("replicates") = 1, py::arg("checkpoint_every") = 0,
-          "run(scene, out=DIR, threads=None, replicates=1, checkpoint_every=0, **overrides) -> dict: runs a\n"
-          "kerf-dem scene into DIR; 'summary' (summary.json as a dict), and 'forces', 'cracks', 'curve' (the CSV\n"
-          "files the kind wrote, columns as numpy arrays)");
+          py::arg("replicates") = 1, py::arg("checkpoint_every") = 0, py::arg("progress") = py::none(),
+          "run(scene, out=DIR, threads=None, replicates=1, checkpoint_every=0, progress=None, **overrides) -> dict:\n"
+          "runs a kerf-dem scene into DIR; 'summary' (summary.json as a dict), and 'forces', 'cracks', 'curve' (the\n"
+          "CSV files the kind wrote, columns as numpy arrays). progress(stage, done, total, unit) is called as the\n"
+          "run advances (a notebook's progress bar).");
   dem.def("kinds", &kerf::dem::scene_kind_names, "kinds() -> list of str: the scene kinds");
 }

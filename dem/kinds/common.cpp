@@ -5,6 +5,7 @@
 #include <omp.h>
 
 #include <chrono>
+#include <mutex>
 #include <optional>
 
 #include "kerf/dem/output.hpp"
@@ -21,11 +22,17 @@ StageProgress::StageProgress(const ProgressTarget& target, const std::string& st
   if (target.bar) bar_.emplace(update_.stage, static_cast<std::size_t>(total), unit);
 }
 
+namespace {
+/// One callback at a time across threads (replicates side by side); a mutex, not an OpenMP critical section,
+/// so that an exception the callback throws (a Python KeyboardInterrupt) leaves it unlocked.
+std::mutex progress_callback_mutex;
+}  // namespace
+
 void StageProgress::advance(double count) {
   update_.done += count;
   if (bar_) bar_->advance(static_cast<std::size_t>(count));
   if (callback_) {
-#pragma omp critical(kerf_dem_progress_callback)
+    const std::lock_guard<std::mutex> lock(progress_callback_mutex);
     callback_(update_);
   }
 }
@@ -34,7 +41,7 @@ void StageProgress::finish() {
   if (bar_) bar_->finish();
   if (callback_ && update_.done != update_.total) {
     update_.done = update_.total;
-#pragma omp critical(kerf_dem_progress_callback)
+    const std::lock_guard<std::mutex> lock(progress_callback_mutex);
     callback_(update_);
   }
 }

@@ -163,6 +163,23 @@ def test_dem_run_small_cut(tmp_path):
     assert len(next(iter(cracks.values()))) > 0
 
 
+def test_dem_run_reports_progress_to_a_callable(tmp_path):
+    seen = []
+    scene = dict(SMALL_CUT, cut=dict(SMALL_CUT["cut"], length_mm=0.02))
+    kerf.dem.run(scene, out=tmp_path / "cut", threads=1, progress=lambda *update: seen.append(update))
+    stages = [s for k, (s, *_rest) in enumerate(seen) if k == 0 or seen[k - 1][0] != s]
+    assert stages == ["specimen genesis", "cut"]
+    stage, done, total, unit = seen[-1]
+    assert (stage, unit) == ("cut", "particle-steps") and done == total > 0
+
+
+def test_dem_run_stops_when_the_progress_callable_raises(tmp_path):
+    def stop(*update):
+        raise KeyboardInterrupt
+    with pytest.raises(KeyboardInterrupt):
+        kerf.dem.run(SMALL_CUT, out=tmp_path / "cut", threads=1, progress=stop)
+
+
 def test_dem_input_error_names_the_key(tmp_path):
     with pytest.raises(kerf.InputError) as caught:
         kerf.dem.run(SMALL_CUT, out=tmp_path / "x", cut__depth_of_cut_mn=0.1)
