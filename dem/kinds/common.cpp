@@ -17,12 +17,17 @@ namespace kerf::dem::kinds {
 ProgressTarget progress_target(const RunOptions& options) { return {options.show_progress, options.on_progress, ""}; }
 
 StageProgress::StageProgress(const ProgressTarget& target, const std::string& stage, double total, const std::string& unit)
-    : callback_(target.callback), update_{target.prefix + stage, 0, total, unit} {
+    : callback_(target.callback), update_{target.prefix + stage, 0, total, unit, std::nullopt} {
   if (target.bar) bar_.emplace(update_.stage, static_cast<std::size_t>(total), unit);
+  if (callback_) {
+#pragma omp critical(kerf_dem_progress_callback)
+    callback_(update_);
+  }
 }
 
-void StageProgress::advance(double count) {
+void StageProgress::advance(double count, std::optional<SampleState> sample) {
   update_.done += count;
+  if (sample) update_.sample = std::move(sample);
   if (bar_) bar_->advance(static_cast<std::size_t>(count));
   if (callback_) {
 #pragma omp critical(kerf_dem_progress_callback)
@@ -30,10 +35,11 @@ void StageProgress::advance(double count) {
   }
 }
 
-void StageProgress::finish() {
+void StageProgress::finish(std::optional<SampleState> sample) {
   if (bar_) bar_->finish();
-  if (callback_ && update_.done != update_.total) {
+  if (callback_ && (update_.done != update_.total || sample)) {
     update_.done = update_.total;
+    if (sample) update_.sample = std::move(sample);
 #pragma omp critical(kerf_dem_progress_callback)
     callback_(update_);
   }
@@ -54,7 +60,10 @@ Simulation obtain_specimen(const SceneCommon& scene, SpecimenSpec& spec, Specime
       progress->advance(static_cast<double>(done - shown));
       shown = done;
     }));
-    if (progress) progress->finish();
+    if (progress) {
+      // The genesis's own steps, for the log's performance lines (its total is an upper bound).
+      progress->finish(SampleState{shown, 0, sim->particles().size(), 0, {}, {}, {}, {}, {}});
+    }
   }
   scene.engine.apply_to(*sim);
   wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
