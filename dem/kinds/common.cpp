@@ -98,10 +98,12 @@ void write_summary(const fs::path& out, const Json& summary) {
 
 void write_frame_files(const fs::path& out, const Simulation& sim, RunProgress& progress) {
   const std::string name = fmt::format("frame_{:04d}.vtp", progress.frames.size());
+  const std::string walls = fmt::format("walls_{:04d}.vtp", progress.frames.size());
   const std::string cracks = fmt::format("cracks_{:04d}.vtp", progress.frames.size());
   write_vtp_frame(out / name, sim);
+  write_walls_vtp(out / walls, sim.walls());
   write_cracks_vtp(out / cracks, sim.cracks());
-  progress.frames.push_back({sim.time(), {name, cracks}});
+  progress.frames.push_back({sim.time(), {name, walls, cracks}});
 }
 
 const FieldTable<MaterialOutput>& material_output_fields() {

@@ -70,7 +70,8 @@ struct RunProgress {
   ProgressTarget progress;
 };
 
-/// Writes the next VTK frame (particles and bonds, cracks) and records it for the .pvd series.
+/// Writes the next VTK frame (particles and joints, walls, cracks: parts 0, 1, 2) and records it for the .pvd
+/// series.
 void write_frame_files(const fs::path& out, const Simulation& sim, RunProgress& progress);
 
 /// calibration.material_name (a file name) and calibration.install_material of calibrate and calibrate_cut.
