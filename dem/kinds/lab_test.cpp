@@ -152,6 +152,7 @@ class LabTestKind final : public SceneKind {
     write_file_atomically(out / "cracks.csv", cracks_csv(run.simulation().cracks()));
     if (frame_every > 0) write_pvd(out / "result.pvd", tp.frames);
     write_specimen_png(out / "specimen.png", run.simulation(), name() + ", final state");
+    write_stress_strain_png(out / "curve.png", res, name() + ": stress-strain curve");
     write_summary(out, summary);
     remove_checkpoint(out);  // finished: nothing to resume
     std::cout << fmt::format("{}: E = {:.2f} GPa, nu = {:.3f}, {} strength = {:.1f} MPa, {} steps, {:.1f} s -> {}\n",
