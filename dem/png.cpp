@@ -35,11 +35,24 @@ void write_specimen_png(const std::filesystem::path& path, const Simulation& sim
     plscol0(2, 170, 170, 170);  // disks
     plscol0(3, 220, 30, 30);    // tension cracks
     plscol0(4, 30, 70, 220);    // shear cracks
+    plscol0(5, 200, 200, 200);  // held disks (filled)
+    plscol0(6, 0, 130, 60);     // walls: the tool, platens
   }, [&] {
     plcol0(1);
     plschr(0, 0.75);
     plenv(x0 * mx, x1 * mx, y0 * mx, y1 * mx, 1, 0);
-    pllab("x (mm)", "y (mm)", (title + "; cracks: red tension, blue shear").c_str());
+    pllab("x (mm)", "y (mm)", "");
+    // The title and, under it, the key in two lines above the frame: nothing of the specimen is covered.
+    plmtex("t", 4.0, 0.5, 0.5, title.c_str());
+    const bool any_held = std::any_of(p.group.begin(), p.group.end(), [](auto g) { return g > 0; });
+    const bool any_wall = std::any_of(sim.walls().begin(), sim.walls().end(), [](const Wall& w) { return w.enabled; });
+    const std::string key = std::string(any_held ? "grey fill = held disks" : "") + (any_held && any_wall ? "; " : "") +
+                            (any_wall ? "green = walls (tool, platens)" : "");
+    plmtex("t", 2.6, 0.5, 0.5, "cracks: red = tension, blue = shear");
+    if (!key.empty()) plmtex("t", 1.2, 0.5, 0.5, key.c_str());
+    plcol0(5);
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (p.group[i] > 0) plarc(p.x[i] * mx, p.y[i] * mx, p.radius[i] * mx, p.radius[i] * mx, 0, 360, 0, 1);
     plcol0(2);
     plwidth(0.5);
     for (std::size_t i = 0; i < p.size(); ++i) plarc(p.x[i] * mx, p.y[i] * mx, p.radius[i] * mx, p.radius[i] * mx, 0, 360, 0, 0);
@@ -49,8 +62,9 @@ void write_specimen_png(const std::filesystem::path& path, const Simulation& sim
       const double dx = 0.5 * c.length_m * std::cos(c.orientation_rad), dy = 0.5 * c.length_m * std::sin(c.orientation_rad);
       pljoin((c.x_m - dx) * mx, (c.y_m - dy) * mx, (c.x_m + dx) * mx, (c.y_m + dy) * mx);
     }
-    // Walls (platens, the cutting tool) in black, clipped to the picture.
-    plcol0(1);
+    // Walls (platens, the cutting tool) in thick green, clipped to the picture.
+    plcol0(6);
+    plwidth(4.0);
     for (const auto& w : sim.walls())
       if (w.enabled) pljoin(w.x0 * mx, w.y0 * mx, w.x1 * mx, w.y1 * mx);
   });
@@ -73,6 +87,35 @@ void write_cut_forces_png(const std::filesystem::path& path, const CutResult& re
   PlotSeries thrust_mean{fmt::format("mean {:.3g} N (steady part)", result.thrust_force_n), {x0, x1},
                          {result.thrust_force_n, result.thrust_force_n}, {}, {}, SeriesStyle::dashed_line, 1, 0};
   fig.series = {main, thrust, main_mean, thrust_mean};
+  fig.legend_position = "top_left";
+  render_png(fig, path);
+}
+
+void write_stress_strain_png(const std::filesystem::path& path, const LabTestResult& result, const std::string& title) {
+  const double strain_scale = 100;  // axial strain in %
+  FigureSpec fig;
+  fig.title = title;
+  fig.x_label = "axial strain (%)";
+  fig.y_label = "axial stress (MPa)";
+  PlotSeries curve{"stress-strain curve", {}, {}, {}, {}, SeriesStyle::line, 0, 0};
+  for (const auto& c : result.curve)
+    curve.x.push_back(strain_scale * c.axial_strain), curve.y.push_back(units::pa_to_mpa(c.stress_pa));
+  fig.series.push_back(curve);
+  const double peak = units::pa_to_mpa(result.peak_stress_pa);
+  if (result.youngs_modulus_pa > 0) {
+    // The secant E (lab_test.hpp: from the origin to 50 % of the peak), drawn over its fit range and on to
+    // the peak's stress as a thinner guide.
+    const double half_strain = 0.5 * result.peak_stress_pa / result.youngs_modulus_pa;
+    fig.series.push_back({fmt::format("secant E = {:.3g} GPa (fit: 0-50 % of the peak)", units::pa_to_gpa(result.youngs_modulus_pa)),
+                          {0, strain_scale * half_strain}, {0, 0.5 * peak}, {}, {}, SeriesStyle::line, 3, 0});
+    fig.series.push_back({"", {strain_scale * half_strain, strain_scale * 2 * half_strain}, {0.5 * peak, peak}, {}, {},
+                          SeriesStyle::dashed_line, 3, 0});
+  }
+  fig.series.push_back({fmt::format("peak {:.3g} MPa at {:.3g} %", peak, strain_scale * result.strain_at_peak),
+                        {strain_scale * result.strain_at_peak}, {peak}, {}, {}, SeriesStyle::points, 1, 3});
+  fig.x_min = 0;
+  fig.y_min = 0;
+  fig.y_max = 1.4 * peak;  // room for the legend above the curve
   fig.legend_position = "top_left";
   render_png(fig, path);
 }

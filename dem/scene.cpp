@@ -12,7 +12,7 @@ namespace fs = std::filesystem;
 const FieldTable<OutputSpec>& output_fields() {
   static const FieldTable<OutputSpec> table{
       int_field("frame_every_samples", 0, 100000000,
-                "VTK frames (particles, joints, cracks) every N samples and of the final state; 0: none",
+                "VTK frames (particles, joints, walls, cracks) every N samples and of the final state; 0: none",
                 &OutputSpec::frame_every_samples)};
   return table;
 }

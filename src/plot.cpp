@@ -11,6 +11,7 @@
 #include <limits>
 #include <mutex>
 #include <random>
+#include <utility>
 #include <stdexcept>
 #include <system_error>
 
@@ -299,30 +300,36 @@ void draw_png_with_plplot(const std::filesystem::path& path, int width_px, int h
   namespace fs = std::filesystem;
   if (path.has_parent_path()) fs::create_directories(path.parent_path());
   std::random_device entropy;
-  const fs::path temporary = path.string() + fmt::format(".tmp-{:08x}.png", entropy());
-  {
-    // PLplot keeps library-wide state: one drawing at a time, on a stream of its own, closed with plend1()
-    // (plend() would end every stream).
-    static std::mutex plplot_state;  // guards a library resource, not model state
-    const std::lock_guard<std::mutex> lock(plplot_state);
-    PLINT previous_stream = 0, stream = 0;
-    plgstrm(&previous_stream);
-    plmkstrm(&stream);
-    plsdev("pngcairo");
-    plsfnam(temporary.c_str());
-    plspage(0.0, 0.0, width_px, height_px, 0, 0);
-    if (before_init) before_init();
-    plinit();
-    draw();
-    plend1();
-    plsstrm(previous_stream);
+  // The PNG, then the same drawing as a PDF beside it (vector, for papers): cairo's page is the PNG's size
+  // in points, so both look alike.
+  fs::path pdf = path;
+  pdf.replace_extension(".pdf");
+  for (const auto& [device, file] : {std::pair<const char*, fs::path>{"pngcairo", path}, {"pdfcairo", pdf}}) {
+    const fs::path temporary = file.string() + fmt::format(".tmp-{:08x}{}", entropy(), file.extension().string());
+    {
+      // PLplot keeps library-wide state: one drawing at a time, on a stream of its own, closed with plend1()
+      // (plend() would end every stream).
+      static std::mutex plplot_state;  // guards a library resource, not model state
+      const std::lock_guard<std::mutex> lock(plplot_state);
+      PLINT previous_stream = 0, stream = 0;
+      plgstrm(&previous_stream);
+      plmkstrm(&stream);
+      plsdev(device);
+      plsfnam(temporary.c_str());
+      plspage(0.0, 0.0, width_px, height_px, 0, 0);
+      if (before_init) before_init();
+      plinit();
+      draw();
+      plend1();
+      plsstrm(previous_stream);
+    }
+    std::error_code error;
+    if (!fs::exists(temporary, error) || fs::file_size(temporary, error) == 0) {
+      fs::remove(temporary, error);
+      throw std::runtime_error(fmt::format("PLplot ({}) did not write '{}'", device, file.string()));
+    }
+    move_into_place(temporary, file);
   }
-  std::error_code error;
-  if (!fs::exists(temporary, error) || fs::file_size(temporary, error) == 0) {
-    fs::remove(temporary, error);
-    throw std::runtime_error(fmt::format("PLplot (pngcairo) did not write '{}'", path.string()));
-  }
-  move_into_place(temporary, path);
 }
 
 void render_png(const FigureSpec& fig, const std::filesystem::path& path) {

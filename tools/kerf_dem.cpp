@@ -2,6 +2,7 @@
 // (kerf/dem/scene.hpp: the scene kinds, replicates, checkpoints).
 //
 //   kerf-dem run SCENE.json [--set key.path=value]... [--out DIR] [--threads N] [--checkpoint-every N] [--replicates N]
+//                [--log-every N]   (log lines on stdout when it is not a terminal)
 //   kerf-dem resume DIR [--threads N]
 //   kerf-dem keys [SECTION]      the Markdown key table of every scene section (docs/dem.md), or of one
 //
@@ -11,9 +12,13 @@
 #include <omp.h>
 
 #include <CLI/CLI.hpp>
+#include <unistd.h>
+
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
+#include "kerf/dem/run_log.hpp"
 #include "kerf/dem/scene.hpp"
 #include "kerf/error.hpp"
 #include "kerf/json_reader.hpp"
@@ -23,11 +28,21 @@ namespace {
 
 constexpr const char* kProgram = "kerf-dem";
 
-int run_command(const std::string& scene_path, const std::vector<std::string>& sets, kerf::dem::RunOptions options) {
+/// Runs a scene; when standard output is not a terminal (a log file, a batch job) and `log_every` > 0, with
+/// a log line every `log_every` samples of each stage and the performance lines (kerf/dem/run_log.hpp).
+int run_command(const std::string& scene_path, const std::vector<std::string>& sets, kerf::dem::RunOptions options,
+                int log_every) {
   kerf::Json doc = kerf::read_json_file(scene_path);
   for (const auto& s : sets) kerf::apply_override(doc, s);
   options.overrides = sets;
-  return kerf::dem::run_scene(doc, scene_path, options).exit_status;
+  std::optional<kerf::dem::RunLog> log;
+  if (log_every > 0 && !isatty(STDOUT_FILENO)) {
+    log.emplace(std::cout, log_every);
+    options.on_progress = [&log](const kerf::dem::ProgressUpdate& u) { log->report(u); };
+  }
+  const int status = kerf::dem::run_scene(doc, scene_path, options).exit_status;
+  if (log) log->finish(omp_get_max_threads());
+  return status;
 }
 
 int keys_command(const std::string& section) {
@@ -45,7 +60,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> sets;
   std::string out_dir = "out";
   kerf::dem::RunOptions options;
-  int threads = 0;
+  int threads = 0, log_every = 100;
   const std::string kinds = fmt::format("{}", fmt::join(kerf::dem::scene_kind_names(), ", "));
   auto* run = app.add_subcommand("run", "run a scene (kind: " + kinds + ")");
   run->add_option("scene", scene_path, "scene JSON file")->required();
@@ -55,6 +70,10 @@ int main(int argc, char** argv) {
   run->add_option("--checkpoint-every", options.checkpoint_every,
                   "write DIR/checkpoint.bin every N samples (tension, compression, cut; calibrate: after every evaluation)")
       ->check(CLI::Range(1, 100000000));
+  run->add_option("--log-every", log_every,
+                  "when standard output is not a terminal: a log line every N samples of each stage (0: none; "
+                  "default: 100)")
+      ->check(CLI::Range(0, 100000000));
   run->add_option("--replicates", options.replicates, "cut scenes: repeat on N packings (seeds specimen.seed + 0..N-1)")
       ->check(CLI::Range(1, 1000));
   auto* resume = app.add_subcommand("resume", "continue a killed test, cut or calibration from DIR/checkpoint.bin");
@@ -76,7 +95,7 @@ int main(int argc, char** argv) {
     if (resume->parsed()) return kerf::dem::resume_scene(resume_dir).exit_status;
     options.out = out_dir;
     options.command_line = kerf::command_line(argc, argv);
-    return run_command(scene_path, sets, options);
+    return run_command(scene_path, sets, options, log_every);
   } catch (const kerf::InputError& e) {
     std::cerr << kProgram << ": error: " << e.what() << "\n";
     return kerf::kExitInputError;

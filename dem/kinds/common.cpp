@@ -17,19 +17,24 @@ namespace kerf::dem::kinds {
 
 ProgressTarget progress_target(const RunOptions& options) { return {options.show_progress, options.on_progress, ""}; }
 
-StageProgress::StageProgress(const ProgressTarget& target, const std::string& stage, double total, const std::string& unit)
-    : callback_(target.callback), update_{target.prefix + stage, 0, total, unit} {
-  if (target.bar) bar_.emplace(update_.stage, static_cast<std::size_t>(total), unit);
-}
-
 namespace {
 /// One callback at a time across threads (replicates side by side); a mutex, not an OpenMP critical section,
 /// so that an exception the callback throws (a Python KeyboardInterrupt) leaves it unlocked.
 std::mutex progress_callback_mutex;
 }  // namespace
 
-void StageProgress::advance(double count) {
+StageProgress::StageProgress(const ProgressTarget& target, const std::string& stage, double total, const std::string& unit)
+    : callback_(target.callback), update_{target.prefix + stage, 0, total, unit, std::nullopt} {
+  if (target.bar) bar_.emplace(update_.stage, static_cast<std::size_t>(total), unit);
+  if (callback_) {
+    const std::lock_guard<std::mutex> lock(progress_callback_mutex);
+    callback_(update_);
+  }
+}
+
+void StageProgress::advance(double count, std::optional<SampleState> sample) {
   update_.done += count;
+  if (sample) update_.sample = std::move(sample);
   if (bar_) bar_->advance(static_cast<std::size_t>(count));
   if (callback_) {
     const std::lock_guard<std::mutex> lock(progress_callback_mutex);
@@ -37,10 +42,11 @@ void StageProgress::advance(double count) {
   }
 }
 
-void StageProgress::finish() {
+void StageProgress::finish(std::optional<SampleState> sample) {
   if (bar_) bar_->finish();
-  if (callback_ && update_.done != update_.total) {
+  if (callback_ && (update_.done != update_.total || sample)) {
     update_.done = update_.total;
+    if (sample) update_.sample = std::move(sample);
     const std::lock_guard<std::mutex> lock(progress_callback_mutex);
     callback_(update_);
   }
@@ -61,7 +67,10 @@ Simulation obtain_specimen(const SceneCommon& scene, SpecimenSpec& spec, Specime
       progress->advance(static_cast<double>(done - shown));
       shown = done;
     }));
-    if (progress) progress->finish();
+    if (progress) {
+      // The genesis's own steps, for the log's performance lines (its total is an upper bound).
+      progress->finish(SampleState{shown, 0, sim->particles().size(), 0, {}, {}, {}, {}, {}});
+    }
   }
   scene.engine.apply_to(*sim);
   wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -96,10 +105,12 @@ void write_summary(const fs::path& out, const Json& summary) {
 
 void write_frame_files(const fs::path& out, const Simulation& sim, RunProgress& progress) {
   const std::string name = fmt::format("frame_{:04d}.vtp", progress.frames.size());
+  const std::string walls = fmt::format("walls_{:04d}.vtp", progress.frames.size());
   const std::string cracks = fmt::format("cracks_{:04d}.vtp", progress.frames.size());
   write_vtp_frame(out / name, sim);
+  write_walls_vtp(out / walls, sim.walls());
   write_cracks_vtp(out / cracks, sim.cracks());
-  progress.frames.push_back({sim.time(), {name, cracks}});
+  progress.frames.push_back({sim.time(), {name, walls, cracks}});
 }
 
 const FieldTable<MaterialOutput>& material_output_fields() {

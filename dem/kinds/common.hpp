@@ -28,9 +28,12 @@ ProgressTarget progress_target(const RunOptions& options);
 /// One stage's progress: advances its bar and reports to the callback (serialised across threads).
 class StageProgress {
  public:
+  /// Reports the start (done = 0) to the callback.
   StageProgress(const ProgressTarget& target, const std::string& stage, double total, const std::string& unit);
-  void advance(double count);
-  void finish();
+  /// Adds `count` units done; `sample` is what the stage measured last (kept for later reports).
+  void advance(double count, std::optional<SampleState> sample = std::nullopt);
+  /// Ends the stage at 100 %; `sample`: its last one, when advance has not reported it.
+  void finish(std::optional<SampleState> sample = std::nullopt);
 
  private:
   std::optional<Progress> bar_;
@@ -67,7 +70,8 @@ struct RunProgress {
   ProgressTarget progress;
 };
 
-/// Writes the next VTK frame (particles and bonds, cracks) and records it for the .pvd series.
+/// Writes the next VTK frame (particles and joints, walls, cracks: parts 0, 1, 2) and records it for the .pvd
+/// series.
 void write_frame_files(const fs::path& out, const Simulation& sim, RunProgress& progress);
 
 /// calibration.material_name (a file name) and calibration.install_material of calibrate and calibrate_cut.

@@ -25,6 +25,21 @@ namespace {
 /// A number, or JSON null when it is not finite (a standard error the signal is too short for).
 Json finite_or_null(double v) { return std::isfinite(v) ? Json(v) : Json(); }
 
+/// The cut's latest sample, for log lines.
+SampleState cut_sample(const CutRun& run) {
+  const CutResult& res = run.result();
+  SampleState s{0, 0, res.n_particles, static_cast<int>(run.simulation().cracks().size()), {}, {}, {}, {}, {}};
+  if (!res.samples.empty()) {
+    const CutSample& last = res.samples.back();
+    s.step = std::llround(last.time_s / res.time_step_s);  // the cut's own steps (the workpiece's count from genesis)
+    s.time_s = last.time_s;
+    s.travel_mm = units::m_to_mm(last.travel_m);
+    s.main_force_N = last.main_force_n;
+    s.thrust_force_N = last.thrust_force_n;
+  }
+  return s;
+}
+
 /// Runs (or continues, from a checkpoint) a cut to the end of its travel and writes the outputs; returns the
 /// summary. `doc` and `checkpoint_every` are for the checkpoints (none: 0).
 Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& doc, Json summary, const fs::path& out,
@@ -38,14 +53,14 @@ Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& d
   if (tp.sample_index > 0) progress.advance(n * cut.sample_every_steps * tp.sample_index);
   while (run.advance()) {
     ++tp.sample_index;
-    progress.advance(n * cut.sample_every_steps);
+    progress.advance(n * cut.sample_every_steps, cut_sample(run));
     if (frame_every > 0 && tp.sample_index % frame_every == 0) write_frame(run.simulation());
     if (checkpoint_every > 0 && tp.sample_index % checkpoint_every == 0)
       // The cut holds its own workpiece: the checkpoint's specimen part stays empty.
       write_checkpoint(out, {doc, summary, tp.frames, tp.sample_index, checkpoint_every, tp.scene_dir, std::string(),
                              run.serialize()});
   }
-  progress.finish();
+  progress.finish(cut_sample(run));  // the last sample (advance returned false)
   if (frame_every > 0) write_frame(run.simulation());
   const CutResult& res = run.result();
   summary["cut"] = cut_params_to_json(cut);

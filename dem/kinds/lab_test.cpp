@@ -20,6 +20,13 @@ namespace {
 /// in compression at 0.1 m/s was judged not quasi-static enough).
 constexpr double kQuasiStaticTolerancePercent = 2.0;
 
+/// A test's sample, for log lines (steps counted from the test's start, not the specimen's genesis).
+SampleState test_sample(const CurveSample& sample, double time_step_s, std::size_t n_particles) {
+  return {std::llround(sample.time_s / time_step_s), sample.time_s, n_particles,
+          sample.n_tension_cracks + sample.n_shear_cracks, {}, {}, {}, sample.axial_strain,
+          units::pa_to_mpa(sample.stress_pa)};
+}
+
 /// Runs one test on a copy of the specimen with a progress bar (the quasi-static check).
 LabTestResult run_test(const Simulation& specimen, const LoadingSpec& loading, const std::string& label,
                        const ProgressTarget& target) {
@@ -33,8 +40,8 @@ LabTestResult run_test(const Simulation& specimen, const LoadingSpec& loading, c
   const double n = static_cast<double>(specimen.particles().size());
   const double steps = loading.max_strain * height / (2 * loading.speed_m_per_s * specimen.time_step());
   StageProgress progress(target, label, n * steps, "particle-steps");
-  auto result = run_lab_test(specimen, loading, [&](const Simulation&, const CurveSample&) {
-    progress.advance(n * loading.sample_every_steps);
+  auto result = run_lab_test(specimen, loading, [&](const Simulation& sim, const CurveSample& sample) {
+    progress.advance(n * loading.sample_every_steps, test_sample(sample, sim.time_step(), sim.particles().size()));
   });
   progress.finish();
   return result;
@@ -89,15 +96,19 @@ class LabTestKind final : public SceneKind {
         loading_.max_strain * run.result().height_m / (2 * loading_.speed_m_per_s * run.simulation().time_step());
     StageProgress progress(tp.progress, name(), n * steps, "particle-steps");
     if (tp.sample_index > 0) progress.advance(n * loading_.sample_every_steps * tp.sample_index);
+    const auto last_sample = [&] {
+      return test_sample(run.result().curve.back(), run.simulation().time_step(), specimen.particles().size());
+    };
     while (run.advance()) {
       ++tp.sample_index;
-      progress.advance(n * loading_.sample_every_steps);
+      progress.advance(n * loading_.sample_every_steps, last_sample());
       if (frame_every > 0 && tp.sample_index % frame_every == 0) write_frame(run.simulation());
       if (checkpoint_every > 0 && tp.sample_index % checkpoint_every == 0)
         write_checkpoint(out, {scene_run.doc, summary, tp.frames, tp.sample_index, checkpoint_every, tp.scene_dir,
                                specimen.serialize(), run.serialize()});
     }
-    progress.finish();
+    // The last sample (advance returned false).
+    progress.finish(last_sample());
     const LabTestResult& res = run.result();
     if (frame_every > 0) write_frame(run.simulation());
     const bool tension = test_ == LabTest::tension;
@@ -141,6 +152,7 @@ class LabTestKind final : public SceneKind {
     write_file_atomically(out / "cracks.csv", cracks_csv(run.simulation().cracks()));
     if (frame_every > 0) write_pvd(out / "result.pvd", tp.frames);
     write_specimen_png(out / "specimen.png", run.simulation(), name() + ", final state");
+    write_stress_strain_png(out / "curve.png", res, name() + ": stress-strain curve");
     write_summary(out, summary);
     remove_checkpoint(out);  // finished: nothing to resume
     std::cout << fmt::format("{}: E = {:.2f} GPa, nu = {:.3f}, {} strength = {:.1f} MPa, {} steps, {:.1f} s -> {}\n",

@@ -1,5 +1,5 @@
 #pragma once
-// PNG figures for the force reports, drawn with PLplot's pngcairo device: points with error bars, lines,
+// PNG figures (each with a PDF beside it) for the force reports, drawn with PLplot's cairo devices: points with error bars, lines,
 // shaded bands, a legend, axis labels with units. A figure is described by a FigureSpec and rendered in one
 // call; the file is written atomically (a temporary file beside it, then a rename).
 //
@@ -52,14 +52,15 @@ struct FigureSpec {
   int width_px = 1200, height_px = 900;
 };
 
-/// Draws one PNG with PLplot's pngcairo device: a stream of its own, `before_init` (colour maps, background)
-/// before plinit, then `draw`; under one lock around PLplot's library-wide state, so callers on several
-/// threads are serialised. Written to a temporary file beside `path`, then moved into place (whole or not
-/// at all); std::runtime_error when PLplot wrote nothing. render_png and the DEM pictures use it.
+/// Draws one PNG with PLplot's pngcairo device and the same drawing as a PDF beside it (pdfcairo; `path` with
+/// the extension .pdf, for papers): a stream of its own, `before_init` (colour maps, background) before
+/// plinit, then `draw`; under one lock around PLplot's library-wide state, so callers on several threads are
+/// serialised. Each file is written to a temporary file beside it, then moved into place (whole or not at
+/// all); std::runtime_error when PLplot wrote nothing. render_png and the DEM pictures use it.
 void draw_png_with_plplot(const std::filesystem::path& path, int width_px, int height_px,
                           const std::function<void()>& before_init, const std::function<void()>& draw);
 
-/// Renders the figure to a PNG. Throws InputError for a figure that cannot be drawn (no finite points,
+/// Renders the figure to a PNG (and the PDF beside it). Throws InputError for a figure that cannot be drawn (no finite points,
 /// mismatched sizes) and std::runtime_error when the file cannot be written.
 void render_png(const FigureSpec& figure, const std::filesystem::path& path);
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <set>
 
 #include "kerf/error.hpp"
 
@@ -24,9 +25,14 @@ TEST_CASE("A figure renders to a PNG atomically", "[plot]") {
   char signature[8] = {};
   in.read(signature, 8);
   CHECK(std::string(signature + 1, 3) == "PNG");
-  std::size_t n_files = 0;
-  for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir)) ++n_files;
-  CHECK(n_files == 1);  // no temporary file left
+  // The same drawing as a PDF beside it (for papers).
+  std::ifstream pdf(dir / "figure.pdf", std::ios::binary);
+  char head[5] = {};
+  pdf.read(head, 5);
+  CHECK(std::string(head, 5) == "%PDF-");
+  std::set<std::string> files;
+  for (const auto& entry : fs::directory_iterator(dir)) files.insert(entry.path().filename().string());
+  CHECK(files == std::set<std::string>{"figure.pdf", "figure.png"});  // no temporary file left
 }
 
 TEST_CASE("Figures PLplot cannot draw are refused before PLplot sees them", "[plot][errors]") {

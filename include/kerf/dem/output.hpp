@@ -1,10 +1,14 @@
 #pragma once
-// Result files of the DEM: VTK PolyData frames (disks as vertices, joints as lines, cracks as points),
-// the ParaView collection (.pvd), and the CSV tables of a test. Everything is written atomically.
+// Result files of the DEM: VTK PolyData frames (disks as vertices, joints as lines, walls as lines, cracks as
+// points), the ParaView collection (.pvd), and the CSV tables of a test. Everything is written atomically.
+// The .vtp files are VTK XML 1.0 with every array in one appended raw block (a UInt64 byte count before each
+// array's values, byte order in the header), read by ParaView, OVITO and VTK; positions and lengths in mm (the
+// CSVs' unit), the rest in the unit its name ends in (docs/dem.md, "ParaView").
 //
 //   write_vtp_frame(dir / "frame_0003.vtp", sim);
+//   write_walls_vtp(dir / "walls_0003.vtp", sim.walls());
 //   write_cracks_vtp(dir / "cracks_0003.vtp", sim.cracks());
-//   write_pvd(dir / "result.pvd", {{time_s, {"frame_0003.vtp", "cracks_0003.vtp"}}});
+//   write_pvd(dir / "result.pvd", {{time_s, {"frame_0003.vtp", "walls_0003.vtp", "cracks_0003.vtp"}}});
 #include <filesystem>
 #include <string>
 #include <utility>
@@ -15,12 +19,18 @@
 
 namespace kerf::dem {
 
-/// Disks (point data: radius_m, velocity_m_per_s, spin_rad_per_s, group) and active joints (cell data:
-/// intact_elements, -1 for the disks' vertex cells).
+/// Disks (point data: id, the disk's index, the same in every frame of a run; radius_mm, velocity_m_per_s,
+/// spin_rad_per_s, group: 0 free, 1 and 2 velocity prescribed; held: 1 when group > 0) and active joints
+/// (cell data: intact_elements, bond; -1 for the disks' vertex cells).
 void write_vtp_frame(const std::filesystem::path& path, const Simulation& sim);
-/// Crack events as points (point data: time_s, mode 1 = tension 2 = shear, orientation_deg, length_m).
+/// The enabled walls (platens, the tool's faces) as lines (cell data: wall, the index; force_N, the force of
+/// the disks on it; velocity_m_per_s).
+void write_walls_vtp(const std::filesystem::path& path, const std::vector<Wall>& walls);
+/// Crack events as points (point data: mode 1 = tension 2 = shear, time_s, orientation_deg, length_um, bond,
+/// element).
 void write_cracks_vtp(const std::filesystem::path& path, const std::vector<CrackEvent>& cracks);
-/// A collection listing, per time, the files of that frame (as parts).
+/// A collection listing, per time, the files of that frame as parts 0, 1, ... each named by its file's
+/// prefix (frame_: "particles", walls_, cracks_).
 void write_pvd(const std::filesystem::path& path, const std::vector<std::pair<double, std::vector<std::string>>>& frames);
 
 /// "time_s,axial_strain,lateral_strain,stress_MPa,tension_cracks,shear_cracks".

@@ -5,12 +5,14 @@
 //
 //   write_specimen_png("out/specimen.png", sim, "compression, final state");
 //   write_cut_forces_png("out/forces.png", cut_result, steady_from_m);   // force against tool travel
+//   write_stress_strain_png("out/curve.png", test_result, "compression");
 #include <array>
 #include <filesystem>
 #include <optional>
 #include <string>
 
 #include "kerf/dem/cutting.hpp"
+#include "kerf/dem/lab_test.hpp"
 #include "kerf/dem/simulation.hpp"
 
 namespace kerf::dem {
@@ -23,5 +25,9 @@ void write_specimen_png(const std::filesystem::path& path, const Simulation& sim
 /// Main and thrust force against tool travel (the samples of forces.csv), with the steady-part means drawn
 /// from `steady_from_m` on as dashed lines.
 void write_cut_forces_png(const std::filesystem::path& path, const CutResult& result, double steady_from_m);
+
+/// A tension or compression test's stress against axial strain (curve.csv), with the secant E over its fit
+/// range (0 to 50 % of the peak) and the peak marked.
+void write_stress_strain_png(const std::filesystem::path& path, const LabTestResult& result, const std::string& title);
 
 }  // namespace kerf::dem

@@ -14,6 +14,7 @@
 //   SceneOutcome done = run_scene(doc, "scene.json", options);  // writes out/summary.json and the rest
 //   SceneOutcome again = resume_scene("out", {});                // a run killed after a checkpoint
 #include <filesystem>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -44,11 +45,24 @@ struct SceneCommon {
   OutputSpec output;
 };
 
-/// One report of a running stage: "specimen genesis", "cut", "tension", "cut replicate 2", ...
+/// What the latest sample of a stage measured (for log lines). Only the fields of the stage's kind are set:
+/// a cut has travel and forces, a tension or compression test strain and stress.
+struct SampleState {
+  std::int64_t step = 0;     ///< time steps done in the stage
+  double time_s = 0;         ///< simulated time since the stage began; 0: not measured (a genesis)
+  std::size_t n_particles = 0;
+  int cracks = 0;            ///< broken flat-joint elements so far (tension + shear)
+  std::optional<double> travel_mm, main_force_N, thrust_force_N;  ///< cut: forces averaged over this sample
+  std::optional<double> strain, stress_MPa;                       ///< tension, compression: axial
+};
+
+/// One report of a running stage: "specimen genesis", "cut", "tension", "replicate 2: cut", ... The first
+/// report of a stage has done = 0 (its start), the last done = total.
 struct ProgressUpdate {
   std::string stage;
   double done = 0, total = 0;  ///< in `unit`; done reaches total when the stage finishes
   std::string unit;            ///< "steps", "particle-steps"
+  std::optional<SampleState> sample;  ///< the latest sample (none before the first, nor in a genesis)
 };
 /// Called as a run advances (every sample; a genesis as it reports). Replicates run side by side report from
 /// several threads, never two calls at once.

@@ -1,0 +1,84 @@
+#!/usr/bin/env bash
+# kerf-dem's VTK frames (issue 23 item 5) read back with the VTK library (python3-vtk9): binary (appended
+# raw) PolyData; the disks with id, radius_mm, group and held; the joints as lines; the tool's faces as their
+# own part (walls_NNNN.vtp); the crack events as points equal to cracks.csv; result.pvd listing the three
+# parts of every frame by name; positions in mm like the CSVs.
+# Usage: dem_vtk_cli.sh <dir of built programs> <source dir>
+source "$(dirname "$0")/lib/dem_common.sh" "$@"
+
+python=""
+for candidate in python3 /usr/bin/python3; do
+  if command -v "$candidate" >/dev/null && "$candidate" -c "import vtk" 2>/dev/null; then python="$candidate"; break; fi
+done
+[ -n "$python" ] || fail "no Python 3 with the vtk module (Debian: python3-vtk9, scripts/install-deps.sh)"
+
+scene="$src/data/scenes/dem_cut.json"
+small=(--set specimen.width_mm=0.4 --set specimen.height_mm=0.25 --set specimen.growth_steps=2000
+       --set specimen.relax_steps=500 --set cut.depth_of_cut_mm=0.05 --set cut.length_mm=0.08
+       --set output.frame_every_samples=40 --set cut.speed_m_per_s=2)
+"$bin" run "$scene" "${small[@]}" --threads 1 --out "$work/c" >/dev/null 2>"$work/err" || fail "cut run: $(cat "$work/err")"
+! grep -q 'format="ascii"' "$work/c"/*.vtp || fail "an ASCII array in a frame"
+"$python" - "$work/c" <<'PY' || fail "the frames read back with VTK differ from the run"
+import csv, json, sys, xml.etree.ElementTree as ET
+import vtk
+from vtk.util.numpy_support import vtk_to_numpy as np_of
+
+out = sys.argv[1]
+summary = json.load(open(f"{out}/summary.json"))
+n = summary["n_particles"]
+sets = ET.parse(f"{out}/result.pvd").getroot().findall("./Collection/DataSet")
+frames = sorted({d.get("timestep") for d in sets}, key=float)
+assert len(frames) >= 2, frames
+for d in sets:  # every frame: part 0 the disks, 1 the walls, 2 the cracks
+    part, name, file = int(d.get("part")), d.get("name"), d.get("file")
+    assert (part, name) in {(0, "particles"), (1, "walls"), (2, "cracks")}, (part, name)
+    assert file.startswith({0: "frame_", 1: "walls_", 2: "cracks_"}[part]), file
+last = {int(d.get("part")): d.get("file") for d in sets if d.get("timestep") == frames[-1]}
+
+def read(name):
+    r = vtk.vtkXMLPolyDataReader()
+    r.SetFileName(f"{out}/{name}")
+    r.Update()
+    assert r.GetErrorCode() == 0, name
+    return r.GetOutput()
+
+disks = read(last[0])
+assert disks.GetNumberOfPoints() == n, (disks.GetNumberOfPoints(), n)
+pd = disks.GetPointData()
+ids = np_of(pd.GetArray("id"))
+assert (ids == range(n)).all()
+radius = np_of(pd.GetArray("radius_mm"))
+spec = summary["specimen"]
+# Radii in mm (the specimen's radius range is in um; genesis scales it a little).
+r_lo, r_hi = (spec[k] / 1000 for k in ("radius_min_um", "radius_max_um"))
+assert 0.8 * r_lo <= radius.min() and radius.max() <= 1.25 * r_hi, (radius.min(), radius.max(), r_lo, r_hi)
+held = np_of(pd.GetArray("held"))
+group = np_of(pd.GetArray("group"))
+assert held.sum() > 0 and ((group > 0) == (held == 1)).all()
+xy = np_of(disks.GetPoints().GetData())
+# Positions in mm: the workpiece spans about specimen.width_mm.
+assert 0.5 * spec["width_mm"] < xy[:, 0].max() - xy[:, 0].min() < 2 * spec["width_mm"] + 1, xy[:, 0].ptp()
+assert disks.GetNumberOfVerts() == n and disks.GetNumberOfLines() > 0
+intact = np_of(disks.GetCellData().GetArray("intact_elements"))
+assert (intact[:n] == -1).all() and (intact[n:] >= 0).all() and intact[n:].max() >= 1
+
+walls = read(last[1])
+assert walls.GetNumberOfLines() >= 2 and walls.GetNumberOfPoints() == 2 * walls.GetNumberOfLines()
+assert walls.GetCellData().GetArray("force_N").GetNumberOfComponents() == 3
+wxy = np_of(walls.GetPoints().GetData())
+assert abs(wxy[:, 1].max() - xy[:, 1].max()) < 1, "the tool is not near the workpiece (mm)"
+
+cracks = read(last[2])
+rows = list(csv.DictReader(open(f"{out}/cracks.csv")))
+assert cracks.GetNumberOfPoints() == len(rows) > 0, (cracks.GetNumberOfPoints(), len(rows))
+cxy = np_of(cracks.GetPoints().GetData())
+mode = np_of(cracks.GetPointData().GetArray("mode"))
+length = np_of(cracks.GetPointData().GetArray("length_um"))
+for k, row in enumerate(rows):
+    assert abs(cxy[k, 0] - float(row["x_mm"])) <= 1e-12 * max(1, abs(cxy[k, 0])), (k, cxy[k], row)
+    assert abs(cxy[k, 1] - float(row["y_mm"])) <= 1e-12 * max(1, abs(cxy[k, 1])), (k, cxy[k], row)
+    assert mode[k] == {"tension": 1, "shear": 2}[row["mode"]], (k, mode[k], row["mode"])
+    assert abs(length[k] - float(row["length_um"])) <= 1e-9 * length[k], (k, length[k], row)
+print("vtk frames: ok")
+PY
+echo "dem vtk: ok"
