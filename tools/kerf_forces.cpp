@@ -16,6 +16,7 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <iostream>
 #include <optional>
 #include <string>
@@ -32,6 +33,7 @@
 #include "kerf/error.hpp"
 #include "kerf/io.hpp"
 #include "kerf/json_reader.hpp"
+#include "kerf/plot.hpp"
 #include "kerf/material.hpp"
 #include "kerf/report.hpp"
 #include "kerf/units.hpp"
@@ -302,8 +304,58 @@ Axis parse_axis(const std::string& spec) {
   return axis;
 }
 
+/// The sweep's figure: cutting and thrust force against the first varied key, one line per value of the
+/// second (the first 6 of them), refused points left out. PNG with a PDF beside it.
+void plot_sweep(const std::string& path, const std::vector<std::string>& axis_paths,
+                const std::vector<std::vector<double>>& axis_values, const std::vector<std::string>& names,
+                const std::function<std::vector<double>(std::size_t)>& coordinates,
+                const std::function<const std::vector<std::string>*(std::size_t)>& row_values, std::size_t n_points) {
+  kerf::FigureSpec fig;
+  fig.x_label = axis_paths[0];
+  fig.y_label = "force for the scene's width (N)";
+  fig.title = "kerf-forces sweep";
+  const auto column = [&](const std::string& name) {
+    return static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
+  };
+  const std::size_t n_second = axis_values.size() > 1 ? std::min<std::size_t>(6, axis_values[1].size()) : 1;
+  int color = 0;
+  for (std::size_t k = 0; k < n_second; ++k) {
+    for (const auto& [name, dashed] : {std::pair{std::string("cutting_force_N"), false}, std::pair{std::string("thrust_force_N"), true}}) {
+      const std::size_t c = column(name);
+      if (c == names.size()) continue;
+      kerf::PlotSeries series;
+      series.label = std::string(dashed ? "thrust" : "cutting") +
+                     (axis_values.size() > 1 ? fmt::format(", {} = {:g}", axis_paths[1].substr(axis_paths[1].rfind('.') + 1),
+                                                           axis_values[1][k])
+                                             : "");
+      series.style = dashed ? kerf::SeriesStyle::dashed_line : kerf::SeriesStyle::points_and_line;
+      series.color = color;
+      for (std::size_t i = 0; i < n_points; ++i) {
+        const auto x = coordinates(i);
+        if (axis_values.size() > 1 && x[1] != axis_values[1][k]) continue;
+        if (axis_values.size() > 2 && x[2] != axis_values[2][0]) continue;  // further axes: their first value
+        const auto* values = row_values(i);
+        if (!values || values->at(c).empty()) continue;  // refused
+        series.x.push_back(x[0]);
+        series.y.push_back(std::stod(values->at(c)));
+      }
+      if (!series.x.empty()) fig.series.push_back(std::move(series));
+    }
+    ++color;
+  }
+  if (fig.series.empty()) throw kerf::InputError("--plot", path, "a sweep with cutting_force_N or thrust_force_N values");
+  // Room above the data for the legend (one row per series), so that it covers none of it.
+  double y_low = 0, y_high = 0;
+  for (const auto& series : fig.series)
+    for (double y : series.y) y_low = std::min(y_low, y), y_high = std::max(y_high, y);
+  fig.y_min = y_low - 0.03 * (y_high - y_low);  // points at zero drawn whole
+  fig.y_max = y_high + (y_high - y_low) * (0.1 + 0.09 * static_cast<double>(fig.series.size()));
+  fig.legend_position = "top_left";
+  kerf::render_png(fig, path);
+}
+
 int run_sweep(const std::string& scene_path, const std::vector<std::string>& overrides,
-              const std::vector<std::string>& vary_specs, const std::string& csv) {
+              const std::vector<std::string>& vary_specs, const std::string& csv, const std::string& plot) {
   const Json base = load_scene_document(scene_path, overrides);
   std::vector<Axis> axes;
   std::size_t n_points = 1;
@@ -374,6 +426,13 @@ int run_sweep(const std::string& scene_path, const std::vector<std::string>& ove
     text += kerf::csv_line(fields);
   }
   kerf::write_file_atomically(csv, text);
+  if (!plot.empty()) {
+    std::vector<std::string> paths;
+    std::vector<std::vector<double>> values;
+    for (const auto& axis : axes) paths.push_back(axis.path), values.push_back(axis.values);
+    plot_sweep(plot, paths, values, names, coordinates,
+               [&](std::size_t i) { return rows[i].error.empty() ? &rows[i].values : nullptr; }, n_points);
+  }
   fmt::print(stderr, "kerf-forces: {} points written to {} ({} refused with an error, see the 'error' column)\n",
              n_points, csv, n_failed);
 
@@ -438,7 +497,7 @@ int main(int argc, char** argv) {
   CLI::App app{"kerf-forces: analytic cutting-force predictions (ductile regime) and sweeps"};
   app.require_subcommand(1);
   app.set_version_flag("--version", kerf::version_line("kerf-forces"));
-  std::string scene_path, csv;
+  std::string scene_path, csv, plot;
   std::vector<std::string> overrides, vary;
   int threads = 0;
 
@@ -452,6 +511,8 @@ int main(int argc, char** argv) {
   sweep->add_option("--set", overrides, "override a scene value: key.path=value (repeatable)");
   sweep->add_option("--vary", vary, "an axis: key.path=START:STOP:COUNT[:log] or key.path=A,B,C (repeatable)")->required();
   sweep->add_option("--csv", csv, "CSV file to write")->required();
+  sweep->add_option("--plot", plot, "also a figure (PNG, with a PDF beside it): cutting and thrust force against the "
+                                    "first varied key, a line per value of the second");
   sweep->add_option("--threads", threads, "threads (default: all cores)")->check(CLI::Range(1, 1024));
 
   std::string experiments, out_dir;
@@ -491,7 +552,7 @@ int main(int argc, char** argv) {
   try {
     if (threads > 0) omp_set_num_threads(threads);
     if (*predict) return run_predict(scene_path, overrides, csv);
-    if (*sweep) return run_sweep(scene_path, overrides, vary, csv);
+    if (*sweep) return run_sweep(scene_path, overrides, vary, csv, plot);
     if (*compare) return run_compare(scene_path, overrides, experiments, mappings, fit, measured_width_mm, out_dir);
     if (*regime) return run_regime(scene_path, overrides);
     if (*report) return run_report(config_path, out_dir);

@@ -34,3 +34,12 @@ for radius, points in by_radius.items():
         assert f2 >= f1, f"force falls with thickness at r={radius}: {t1}->{t2}: {f1}->{f2}"
 print("sweep checks passed")
 PY
+
+# --plot: the sweep's figure, a PNG with a PDF beside it, written whole; a sweep with nothing to plot is an
+# input error naming --plot.
+"$bin" sweep "$src/data/scenes/psic_orthogonal.json" --vary cut.uncut_chip_thickness_um=0.05:1.5:6 \
+  --vary tool.edge_radius_um=0,1 --csv "$tmp/p.csv" --plot "$tmp/p.png" 2>/dev/null || fail "sweep --plot failed"
+[ "$(head -c 8 "$tmp/p.png" | od -An -tx1 | tr -d ' \n')" = "89504e470d0a1a0a" ] || fail "--plot wrote no PNG"
+[ "$(head -c 5 "$tmp/p.pdf")" = "%PDF-" ] || fail "--plot wrote no PDF beside the PNG"
+ls "$tmp" | grep -q "tmp" && fail "a temporary file was left: $(ls "$tmp")"
+echo "sweep plot checks passed"
