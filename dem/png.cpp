@@ -87,7 +87,7 @@ void write_cut_forces_png(const std::filesystem::path& path, const CutResult& re
   PlotSeries thrust_mean{fmt::format("mean {:.3g} N (steady part)", result.thrust_force_n), {x0, x1},
                          {result.thrust_force_n, result.thrust_force_n}, {}, {}, SeriesStyle::dashed_line, 1, 0};
   fig.series = {main, thrust, main_mean, thrust_mean};
-  fig.legend_position = "top_left";
+  leave_room_for_legend(fig);
   render_png(fig, path);
 }
 

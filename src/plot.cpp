@@ -332,6 +332,20 @@ void draw_png_with_plplot(const std::filesystem::path& path, int width_px, int h
   }
 }
 
+void leave_room_for_legend(FigureSpec& figure) {
+  double y_low = 0, y_high = 0;
+  int rows = 0;
+  for (const auto& series : figure.series) {
+    rows += series.label.empty() ? 0 : 1;
+    for (double y : series.y)
+      if (std::isfinite(y)) y_low = std::min(y_low, y), y_high = std::max(y_high, y);
+  }
+  const double range = y_high > y_low ? y_high - y_low : 1.0;
+  figure.y_min = y_low - 0.03 * range;  // points at the extremes drawn whole
+  figure.y_max = y_high + range * (0.1 + 0.09 * rows);
+  figure.legend_position = "top_left";
+}
+
 void render_png(const FigureSpec& fig, const std::filesystem::path& path) {
   // Validate everything PLplot would otherwise exit() on.
   Extent xe, ye;

@@ -344,13 +344,7 @@ void plot_sweep(const std::string& path, const std::vector<std::string>& axis_pa
     ++color;
   }
   if (fig.series.empty()) throw kerf::InputError("--plot", path, "a sweep with cutting_force_N or thrust_force_N values");
-  // Room above the data for the legend (one row per series), so that it covers none of it.
-  double y_low = 0, y_high = 0;
-  for (const auto& series : fig.series)
-    for (double y : series.y) y_low = std::min(y_low, y), y_high = std::max(y_high, y);
-  fig.y_min = y_low - 0.03 * (y_high - y_low);  // points at zero drawn whole
-  fig.y_max = y_high + (y_high - y_low) * (0.1 + 0.09 * static_cast<double>(fig.series.size()));
-  fig.legend_position = "top_left";
+  kerf::leave_room_for_legend(fig);
   kerf::render_png(fig, path);
 }
 

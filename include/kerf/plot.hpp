@@ -60,6 +60,10 @@ struct FigureSpec {
 void draw_png_with_plplot(const std::filesystem::path& path, int width_px, int height_px,
                           const std::function<void()>& before_init, const std::function<void()>& draw);
 
+/// Sets the y range to the data's with room above it for a top-left legend (a row per labelled series), so
+/// that the legend covers none of the data; call once the series are in.
+void leave_room_for_legend(FigureSpec& figure);
+
 /// Renders the figure to a PNG (and the PDF beside it). Throws InputError for a figure that cannot be drawn (no finite points,
 /// mismatched sizes) and std::runtime_error when the file cannot be written.
 void render_png(const FigureSpec& figure, const std::filesystem::path& path);
