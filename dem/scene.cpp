@@ -83,13 +83,14 @@ SceneOutcome run_scene(const Json& doc, const fs::path& scene_file, const RunOpt
   return with_provenance(scene.kind->run(scene.common, run), options.out, std::move(provenance));
 }
 
-SceneOutcome resume_scene(const fs::path& dir, bool show_progress) {
+SceneOutcome resume_scene(const fs::path& dir, bool show_progress, const ProgressCallback& on_progress) {
   const Checkpoint c = read_checkpoint(dir);
   const Scene scene = read_scene(c.scene, c.scene_dir);
   RunOptions options;
   options.out = dir;
   options.checkpoint_every = c.checkpoint_every;
   options.show_progress = show_progress;
+  options.on_progress = on_progress;
   Json provenance = run_provenance("(resumed from " + (dir / "checkpoint.bin").string() + ")", "", {});
   provenance["scene_as_run"] = c.scene;
   return with_provenance(scene.kind->resume(scene.common, SceneRun{c.scene, c.scene_dir, options}, c), dir,

@@ -15,6 +15,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <optional>
 
@@ -28,21 +29,30 @@ namespace {
 
 constexpr const char* kProgram = "kerf-dem";
 
-/// Runs a scene; when standard output is not a terminal (a log file, a batch job) and `log_every` > 0, with
-/// a log line every `log_every` samples of each stage and the performance lines (kerf/dem/run_log.hpp).
+/// Runs `body(on_progress)`; when standard output is not a terminal (a log file, a batch job) and `log_every`
+/// > 0, with a log line every `log_every` samples of each stage and the performance lines
+/// (kerf/dem/run_log.hpp), which on_progress feeds.
+int with_log(int log_every, const std::function<int(const kerf::dem::ProgressCallback&)>& body) {
+  std::optional<kerf::dem::RunLog> log;
+  kerf::dem::ProgressCallback on_progress;
+  if (log_every > 0 && !isatty(STDOUT_FILENO)) {
+    log.emplace(std::cout, log_every);
+    on_progress = [&log](const kerf::dem::ProgressUpdate& u) { log->report(u); };
+  }
+  const int status = body(on_progress);
+  if (log) log->finish(omp_get_max_threads());
+  return status;
+}
+
 int run_command(const std::string& scene_path, const std::vector<std::string>& sets, kerf::dem::RunOptions options,
                 int log_every) {
   kerf::Json doc = kerf::read_json_file(scene_path);
   for (const auto& s : sets) kerf::apply_override(doc, s);
   options.overrides = sets;
-  std::optional<kerf::dem::RunLog> log;
-  if (log_every > 0 && !isatty(STDOUT_FILENO)) {
-    log.emplace(std::cout, log_every);
-    options.on_progress = [&log](const kerf::dem::ProgressUpdate& u) { log->report(u); };
-  }
-  const int status = kerf::dem::run_scene(doc, scene_path, options).exit_status;
-  if (log) log->finish(omp_get_max_threads());
-  return status;
+  return with_log(log_every, [&](const kerf::dem::ProgressCallback& on_progress) {
+    options.on_progress = on_progress;
+    return kerf::dem::run_scene(doc, scene_path, options).exit_status;
+  });
 }
 
 int keys_command(const std::string& section) {
@@ -79,6 +89,8 @@ int main(int argc, char** argv) {
   auto* resume = app.add_subcommand("resume", "continue a killed test, cut or calibration from DIR/checkpoint.bin");
   resume->add_option("dir", resume_dir, "output directory of the killed run")->required();
   resume->add_option("--threads", threads, "OpenMP threads (default: all)")->check(CLI::Range(1, 1024));
+  resume->add_option("--log-every", log_every, "as for run: a log line every N samples when stdout is not a terminal")
+      ->check(CLI::Range(0, 100000000));
   auto* keys = app.add_subcommand("keys", "print the Markdown key table of the scene sections (docs/dem.md)");
   keys->add_option("section", section, "one section (" + fmt::format("{}", fmt::join(kerf::dem::scene_sections(), ", ")) +
                                             "; default: all)");
@@ -92,7 +104,10 @@ int main(int argc, char** argv) {
   try {
     if (threads > 0) omp_set_num_threads(threads);
     if (keys->parsed()) return keys_command(section);
-    if (resume->parsed()) return kerf::dem::resume_scene(resume_dir).exit_status;
+    if (resume->parsed())
+      return with_log(log_every, [&](const kerf::dem::ProgressCallback& on_progress) {
+        return kerf::dem::resume_scene(resume_dir, true, on_progress).exit_status;
+      });
     options.out = out_dir;
     options.command_line = kerf::command_line(argc, argv);
     return run_command(scene_path, sets, options, log_every);

@@ -136,6 +136,7 @@ Scene read_scene(const Json& doc, const std::filesystem::path& scene_dir);
 SceneOutcome run_scene(const Json& doc, const std::filesystem::path& scene_file, const RunOptions& options);
 
 /// Continues the run killed in `dir` from dir/checkpoint.bin (options.out is `dir`).
-SceneOutcome resume_scene(const std::filesystem::path& dir, bool show_progress = true);
+SceneOutcome resume_scene(const std::filesystem::path& dir, bool show_progress = true,
+                          const ProgressCallback& on_progress = {});
 
 }  // namespace kerf::dem
