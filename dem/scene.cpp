@@ -2,6 +2,7 @@
 #include "kerf/dem/scene.hpp"
 
 #include "kerf/error.hpp"
+#include "kerf/io.hpp"
 
 namespace kerf::dem {
 
@@ -58,7 +59,7 @@ SceneOutcome run_scene(const Json& doc, const fs::path& scene_file, const RunOpt
   scene.kind->check_options(options, scene.common);
   if (options.checkpoint_every > 0 && options.replicates > 1)
     throw InputError("--checkpoint-every", std::to_string(options.checkpoint_every), "no checkpoints with --replicates");
-  fs::create_directories(options.out);
+  const OutputManifest hold(options.out, /*fresh=*/true);  // writable? then the old outputs go, before any work
   const SceneRun run{doc, fs::absolute(scene_file).parent_path().string(), options};
   return scene.kind->run(scene.common, run);
 }
@@ -70,6 +71,7 @@ SceneOutcome resume_scene(const fs::path& dir, bool show_progress) {
   options.out = dir;
   options.checkpoint_every = c.checkpoint_every;
   options.show_progress = show_progress;
+  const OutputManifest hold(dir, /*fresh=*/false);
   return scene.kind->resume(scene.common, SceneRun{c.scene, c.scene_dir, options}, c);
 }
 

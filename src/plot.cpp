@@ -298,8 +298,7 @@ void draw_png_with_plplot(const std::filesystem::path& path, int width_px, int h
                           const std::function<void()>& before_init, const std::function<void()>& draw) {
   namespace fs = std::filesystem;
   if (path.has_parent_path()) fs::create_directories(path.parent_path());
-  std::random_device entropy;
-  const fs::path temporary = path.string() + fmt::format(".tmp-{:08x}.png", entropy());
+  const fs::path temporary = TemporaryFile::reserve(path, ".png");
   {
     // PLplot keeps library-wide state: one drawing at a time, on a stream of its own, closed with plend1()
     // (plend() would end every stream).
@@ -320,7 +319,8 @@ void draw_png_with_plplot(const std::filesystem::path& path, int width_px, int h
   std::error_code error;
   if (!fs::exists(temporary, error) || fs::file_size(temporary, error) == 0) {
     fs::remove(temporary, error);
-    throw std::runtime_error(fmt::format("PLplot (pngcairo) did not write '{}'", path.string()));
+    TemporaryFile::release(temporary);
+    throw OutputError(path.string(), "PLplot (pngcairo) did not write it");
   }
   move_into_place(temporary, path);
 }

@@ -26,7 +26,7 @@ expect 2 "no-such-file.json" -- predict "$src/no-such-file.json"
 expect 2 "--vary" -- sweep "$scene" --vary cut.width_mm=1:2 --csv "$tmp/x.csv"
 expect 2 "" -- predict
 expect 2 "" -- frobnicate
-# An unwritable CSV path is not an input error of the scene: status 1, and no partial file.
-expect 1 "cannot" -- predict "$scene" --csv /proc/kerf-cannot-write/x.csv
+# An unwritable CSV path is not an input error of the scene: status 4 (found before any work), no partial file.
+expect 4 "cannot" -- predict "$scene" --csv /proc/kerf-cannot-write/x.csv
 [ "$failures" -eq 0 ] && echo "all input-error checks passed"
 exit "$failures"
