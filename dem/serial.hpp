@@ -61,7 +61,7 @@ struct In {
   std::string_view b;
   std::size_t at = 0;
   void take(void* d, std::size_t n) {
-    if (at + n > b.size()) throw ModelError("dem", "truncated checkpoint");
+    if (at > b.size() || n > b.size() - at) throw ModelError("dem", "truncated checkpoint");  // cannot wrap
     std::memcpy(d, b.data() + at, n);
     at += n;
   }
@@ -74,7 +74,8 @@ struct In {
   void vec(std::vector<T>& v) {
     std::uint64_t n = 0;
     raw(n);
-    if (n > b.size()) throw ModelError("dem", "corrupt checkpoint");
+    if (at > b.size() || n > (b.size() - at) / (sizeof(T) > 0 ? sizeof(T) : 1))
+      throw ModelError("dem", "corrupt checkpoint (a length beyond its end)");
     v.resize(static_cast<std::size_t>(n));
     take(v.data(), v.size() * sizeof(T));
   }

@@ -8,6 +8,7 @@
 #include <bit>
 #include <cmath>
 #include <cstring>
+#include <exception>
 #include <limits>
 #include <numbers>
 #include <type_traits>
@@ -671,6 +672,7 @@ void Simulation::step() {
   double max_move2 = 0, wall_move = 0;
   bool must_rebuild = false;
   ForceCounts counts;
+  std::exception_ptr failure;
   // One team for the whole step (not one per loop): the serial pieces run in `single` blocks and the
   // threads meet at barriers only where a loop reads what another thread wrote: after the drift, (when the
   // neighbour lists are rebuilt), after the contact loops, and at the end.
@@ -694,16 +696,33 @@ void Simulation::step() {
     // Every thread takes the same decision from the same shared values (none changes before the single).
     const double max_move = std::sqrt(max_move2);
     if (must_rebuild || 2 * max_move > skin_ || max_move + wall_move > skin_) {
+      // No exception may leave a parallel region (std::terminate): the rebuild's (a non-finite position) is
+      // kept, every thread sees it after the single's barrier and skips the rest, and it is thrown below.
 #pragma omp single
-      rebuild_neighbours();
+      try {
+        rebuild_neighbours();
+      } catch (...) {
+        failure = std::current_exception();
+      }
     }
-    force_loops(counts);
+    if (!failure) {
+      force_loops(counts);
 #pragma omp single nowait
-    {
-      finish_forces(counts);
-      apply_breaks();  // joints only: the kick below does not read them
+      {
+        finish_forces(counts);
+        apply_breaks();  // joints only: the kick below does not read them
+      }
+      damped_half_kick(dt);  // no barrier after it: the region's end is one
     }
-    damped_half_kick(dt);  // no barrier after it: the region's end is one
+  }
+  if (failure) {
+    try {
+      std::rethrow_exception(failure);
+    } catch (const ModelError& e) {  // with the inputs that led there
+      throw ModelError("dem", fmt::format("{} (step {}, dt = {:.4g} s, material.density_kg_per_m3 = {:.6g}, "
+                                          "specimen.thickness_mm = {:.6g})",
+                                          e.what(), steps_, dt_, material_.density_kg_per_m3, 1e3 * opt_.thickness_m));
+    }
   }
   ++steps_;
   if (opt_.check_every > 0 && steps_ % opt_.check_every == 0) check_stability();
