@@ -719,9 +719,11 @@ void Simulation::step() {
     try {
       std::rethrow_exception(failure);
     } catch (const ModelError& e) {  // with the inputs that led there
+      std::string reason = e.what();
+      if (reason.rfind("model 'dem': ", 0) == 0) reason.erase(0, std::string_view("model 'dem': ").size());
       throw ModelError("dem", fmt::format("{} (step {}, dt = {:.4g} s, material.density_kg_per_m3 = {:.6g}, "
                                           "specimen.thickness_mm = {:.6g})",
-                                          e.what(), steps_, dt_, material_.density_kg_per_m3, 1e3 * opt_.thickness_m));
+                                          reason, steps_, dt_, material_.density_kg_per_m3, 1e3 * opt_.thickness_m));
     }
   }
   ++steps_;

@@ -226,10 +226,8 @@ void check_writable_file(const fs::path& requested) {
   if (is_special(path)) return;
   std::error_code error;
   if (fs::is_directory(path, error)) throw OutputError(path.string(), "it is a directory");
+  // The file is replaced by a rename: its directory is what must be writable.
   check_writable_directory(path.has_parent_path() ? path.parent_path() : fs::path("."));
-  if (fs::exists(path, error) && ::access(path.c_str(), W_OK) != 0 &&
-      ::access((path.has_parent_path() ? path.parent_path() : fs::path(".")).c_str(), W_OK) != 0)
-    throw OutputError(path.string(), std::strerror(errno));
 }
 
 std::size_t remove_stale_temporaries(const fs::path& dir) {

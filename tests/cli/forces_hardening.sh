@@ -1,22 +1,8 @@
 #!/usr/bin/env bash
 # Issue 24, kerf-forces: each hostile input of the issue gives its exit status (2 input, 3 model or non-finite
 # result, 4 output), one line on stderr with the program's prefix naming the key, and no file left behind.
-set -u
-bin="$1/kerf-forces"; src="$2"
+source "$(dirname "$0")/lib/forces_common.sh" "$@"
 scenes="$src/data/scenes"; trep="$src/validation/k9_trepanning/scene.json"
-tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
-failures=0
-expect() {  # expect STATUS PATTERN -- ARGS...
-  local status=$1 pattern=$2; shift 3
-  "$bin" "$@" >"$tmp/out" 2>"$tmp/err"; local got=$?
-  if [ "$got" -ne "$status" ] || ! grep -qF -- "$pattern" "$tmp/err"; then
-    echo "FAIL: kerf-forces $* -> status $got (want $status), stderr: $(head -c 400 "$tmp/err")"; failures=$((failures + 1))
-  fi
-  if [ "$(wc -l <"$tmp/err")" -ne 1 ] || ! grep -q "^kerf-forces: error: " "$tmp/err"; then
-    echo "FAIL: kerf-forces $*: not one 'kerf-forces: error:' line: $(head -c 400 "$tmp/err")"; failures=$((failures + 1))
-  fi
-  if grep -qiE "nan|inf( |$)" "$tmp/out"; then echo "FAIL: a non-finite number in the output of $*"; failures=$((failures + 1)); fi
-}
 python3 -c "print('['*100000+']'*100000)" >"$tmp/deep.json"
 expect 2 "nested deeper than 64" -- predict "$tmp/deep.json"
 sed 's/"rake_deg": *[-0-9.]*/"rake_deg": 1e999/' "$scenes/psic_orthogonal.json" >"$tmp/overflow.json"

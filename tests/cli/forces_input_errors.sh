@@ -1,17 +1,7 @@
 #!/usr/bin/env bash
 # kerf-forces: every kind of bad input gives exit status 2 and one line naming the field, value and expectation.
-set -u
-bin="$1/kerf-forces"; src="$2"; scene="$src/data/scenes/psic_orthogonal.json"
-tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
-failures=0
-expect() {  # expect STATUS PATTERN -- ARGS...
-  local status=$1 pattern=$2; shift 3
-  "$bin" "$@" >"$tmp/out" 2>"$tmp/err"; local got=$?
-  if [ "$got" -ne "$status" ] || ! grep -q -- "$pattern" "$tmp/err"; then
-    echo "FAIL: kerf-forces $* -> status $got (want $status), stderr: $(cat "$tmp/err")"; failures=$((failures + 1))
-  fi
-  if grep -qi nan "$tmp/out"; then echo "FAIL: NaN in output of $*"; failures=$((failures + 1)); fi
-}
+source "$(dirname "$0")/lib/forces_common.sh" "$@"
+scene="$src/data/scenes/psic_orthogonal.json"
 printf '{"material": "psic", "tool": {' >"$tmp/malformed.json"
 expect 2 "malformed JSON" -- predict "$tmp/malformed.json"
 expect 2 "tool.rake_dg = 5: expected a known key (did you mean 'rake_deg'?)" -- predict "$scene" --set tool.rake_dg=5
