@@ -62,6 +62,7 @@ struct In {
   std::size_t at = 0;
   void take(void* d, std::size_t n) {
     if (at > b.size() || n > b.size() - at) throw ModelError("dem", "truncated checkpoint");  // cannot wrap
+    if (n == 0) return;  // an empty vector's data() may be null, and memcpy's pointers must not be (found by fuzzing)
     std::memcpy(d, b.data() + at, n);
     at += n;
   }
