@@ -7,6 +7,7 @@
 #include <string>
 #include <string_view>
 #include <type_traits>
+#include <variant>
 #include <vector>
 
 #include "kerf/error.hpp"
@@ -29,6 +30,11 @@ void put_vec(std::string& out, const std::vector<T>& v) {
   out.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
 }
 inline void put_str(std::string& out, const std::string& s) { put_vec(out, std::vector<char>(s.begin(), s.end())); }
+
+template <class T>
+struct is_variant : std::false_type {};
+template <class... T>
+struct is_variant<std::variant<T...>> : std::true_type {};
 
 template <class T>
 struct is_vector : std::false_type {};
@@ -98,12 +104,18 @@ struct In {
  private:
   template <class T>
   void one(T& v) {
-    if constexpr (std::is_same_v<T, std::string>)
+    if constexpr (std::is_same_v<T, std::string>) {
       str(v);
-    else if constexpr (is_vector<T>::value)
+    } else if constexpr (is_vector<T>::value) {
       vec(v);
-    else
+    } else {
       raw(v);
+      // A variant (a contact law) is stored whole, its index with it: an index beyond its alternatives would
+      // make every visit undefined (found by fuzz_checkpoint behind a valid checksum).
+      if constexpr (is_variant<T>::value) {
+        if (v.index() >= std::variant_size_v<T>) throw ModelError("dem", "corrupt checkpoint (an unknown law)");
+      }
+    }
   }
 };
 
