@@ -13,8 +13,9 @@ CC=clang CXX=clang++ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Re
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DKERF_SANITIZE=ON -DKERF_FUZZ=ON -DKERF_BUILD_BENCH=OFF \
   -DKERF_WERROR="${KERF_WERROR:-OFF}" >/dev/null
 cmake --build "$build" --parallel "$(nproc)"
-# LeakSanitizer stays on; a report of any sanitizer ends the process with an error.
-export ASAN_OPTIONS="abort_on_error=0:halt_on_error=1:detect_stack_use_after_return=0"
+# LeakSanitizer stays on (but for the font libraries' process-long caches); any report fails the process.
+export ASAN_OPTIONS="halt_on_error=1:detect_stack_use_after_return=0"
+export LSAN_OPTIONS="suppressions=$root/scripts/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 ctest --test-dir "$build" --output-on-failure --parallel "$(nproc)"
 corpus="$build/fuzz-corpus"
