@@ -112,6 +112,8 @@ void damped_kick_disks(std::int64_t n, double dt, double alpha, const std::uint8
 }
 
 /// The disk arrays the contact loops read (positions, velocities, spins, rotations, radii).
+// The loops name the pointers one by one, not with a structured binding: clang 14 cannot use a structured
+// binding inside an OpenMP region (a C++20 capture it lacks), and the sanitizer and fuzzing builds are clang's.
 struct DiskArrays {
   const double *x, *y, *vx, *vy, *om, *th, *rad;
 };
@@ -397,7 +399,9 @@ void Simulation::bond_loop(const Law& law, ForceCounts& counts) {
   const int stride = b_.stride;
   const auto nb = static_cast<std::int64_t>(b_.size());
   int n_breaking = 0, n_retired = 0;
-  const auto [x, y, vx, vy, om, th, rad] = disk_arrays(p_);
+  const DiskArrays disks = disk_arrays(p_);
+  [[maybe_unused]] const double *x = disks.x, *y = disks.y, *vx = disks.vx, *vy = disks.vy, *om = disks.om,
+                                *th = disks.th, *rad = disks.rad;
 
   // Joints in blocks, each in two passes: first the kinematics of every joint of the block (independent from
   // joint to joint, so the square roots and divisions of several joints are in flight at once instead of one
@@ -474,7 +478,9 @@ void Simulation::bond_loop(const Law& law, ForceCounts& counts) {
 template <class Law>
 void Simulation::pair_loop(const Law& law) {
   const double dt = dt_, t = opt_.thickness_m;
-  const auto [x, y, vx, vy, om, th, rad] = disk_arrays(p_);
+  const DiskArrays disks = disk_arrays(p_);
+  [[maybe_unused]] const double *x = disks.x, *y = disks.y, *vx = disks.vx, *vy = disks.vy, *om = disks.om,
+                                *th = disks.th, *rad = disks.rad;
 
   const auto np = static_cast<std::int64_t>(pairs_.size());
 #pragma omp for schedule(static) nowait
@@ -503,7 +509,9 @@ void Simulation::pair_loop(const Law& law) {
 template <class Law>
 void Simulation::wall_loop(const Law& law) {
   const double dt = dt_, t = opt_.thickness_m;
-  const auto [x, y, vx, vy, om, th, rad] = disk_arrays(p_);
+  const DiskArrays disks = disk_arrays(p_);
+  [[maybe_unused]] const double *x = disks.x, *y = disks.y, *vx = disks.vx, *vy = disks.vy, *om = disks.om,
+                                *th = disks.th, *rad = disks.rad;
 
   const auto nw = static_cast<std::int64_t>(wall_contacts_.size());
 #pragma omp for schedule(static)
