@@ -184,7 +184,8 @@ Prediction predict_oxley_forces(const AnalyticScene& scene, const OxleyResult& o
 
 }  // namespace
 
-Prediction predict(const AnalyticScene& scene) {
+namespace {
+Prediction predict_forces(const AnalyticScene& scene) {
   Prediction p;
   p.force_model = scene.force;
   p.width_m = scene.width_m;
@@ -276,6 +277,36 @@ Prediction predict(const AnalyticScene& scene) {
         units::rad_to_deg(*scene.friction_angle_rad), scene.friction_origin));
   }
   add_contact_lengths(scene, beta, p);
+  return p;
+}
+
+/// A force or state that overflowed (a width of 1e308 mm, a chip of 1e308 um) is refused by name, with the
+/// inputs it came from, instead of being written as inf or nan.
+void require_finite(const AnalyticScene& scene, const Prediction& p) {
+  const std::pair<const char*, double> results[] = {{"cutting_force_N", p.cutting_force_N},
+                                                    {"thrust_force_N", p.thrust_force_N},
+                                                    {"shear_angle_deg", p.shear_angle_rad},
+                                                    {"chip_thickness_um", p.chip_thickness_m},
+                                                    {"flow_stress_MPa", p.flow.total_Pa},
+                                                    {"strain_rate_per_s", p.state.strain_rate_per_s},
+                                                    {"temperature_K", p.state.temperature_K}};
+  for (const auto& [name, value] : results) {
+    if (std::isfinite(value)) continue;
+    throw ModelError("predict", fmt::format("{} is {} for cut.uncut_chip_thickness_um = {}, cut.width_mm = {}, "
+                                            "cut.speed_m_per_min = {}: the inputs lie beyond what a double holds",
+                                            name, value, format_value(units::m_to_um(scene.uncut_chip_thickness_m)),
+                                            format_value(units::m_to_mm(scene.width_m)),
+                                            format_value(units::m_per_s_to_m_per_min(scene.speed_m_per_s))));
+  }
+  if (!std::isfinite(p.cutting_force_N / units::m_to_mm(p.width_m)))
+    throw ModelError("predict", fmt::format("cutting_force_N_per_mm is not finite for cut.width_mm = {}",
+                                            format_value(units::m_to_mm(scene.width_m))));
+}
+}  // namespace
+
+Prediction predict(const AnalyticScene& scene) {
+  Prediction p = predict_forces(scene);
+  require_finite(scene, p);
   return p;
 }
 

@@ -129,7 +129,7 @@ AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
   {
     auto tool = root.get_object("tool");
     scene.rake_rad = units::deg_to_rad(tool.get_number("rake_deg", Range::open(-90.0, 90.0), "deg"));
-    scene.edge_radius_m = units::um_to_m(tool.get_number_or("edge_radius_um", 0.0, Range::non_negative(), "um"));
+    scene.edge_radius_m = tool.get_si_or("edge_radius_um", 0.0, Range::non_negative(), "um", units::um_to_m);
     scene.clearance_rad = units::deg_to_rad(tool.get_number_or("clearance_deg", 7.0, Range::open(0.0, 90.0), "deg"));
     tool.finish();
   }
@@ -138,9 +138,9 @@ AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
   auto cut = root.get_object("cut");
   if (auto turning = cut.find_object("turning")) {
     TurningScene t;
-    t.geometry.feed_m_per_rev = units::um_to_m(turning->get_number("feed_um_per_rev", Range::positive(), "um/rev"));
-    t.geometry.nose_radius_m = units::mm_to_m(turning->get_number("nose_radius_mm", Range::positive(), "mm"));
-    t.geometry.depth_of_cut_m = units::um_to_m(turning->get_number("depth_of_cut_um", Range::positive(), "um"));
+    t.geometry.feed_m_per_rev = turning->get_si("feed_um_per_rev", Range::positive(), "um/rev", units::um_to_m);
+    t.geometry.nose_radius_m = turning->get_si("nose_radius_mm", Range::positive(), "mm", units::mm_to_m);
+    t.geometry.depth_of_cut_m = turning->get_si("depth_of_cut_um", Range::positive(), "um", units::um_to_m);
     t.thickness = turning->get_choice_or("chip_thickness", "equivalent", {"equivalent", "maximum"}) == "maximum"
                       ? TurningThickness::maximum
                       : TurningThickness::equivalent;
@@ -156,11 +156,11 @@ AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
     scene.turning = t;
   } else {
     scene.uncut_chip_thickness_m =
-        units::um_to_m(cut.get_number("uncut_chip_thickness_um", Range::positive(), "um"));
-    scene.width_m = units::mm_to_m(cut.get_number("width_mm", Range::positive(), "mm"));
+        cut.get_si("uncut_chip_thickness_um", Range::positive(), "um", units::um_to_m);
+    scene.width_m = cut.get_si("width_mm", Range::positive(), "mm", units::mm_to_m);
   }
   scene.speed_m_per_s =
-      units::m_per_min_to_m_per_s(cut.get_number("speed_m_per_min", Range::positive(), "m/min"));
+      cut.get_si("speed_m_per_min", Range::positive(), "m/min", units::m_per_min_to_m_per_s);
   scene.chip_ratio = cut.get_optional_number("chip_ratio", Range::positive(), "");
   parse_friction(cut, root, scene);
   const auto strain = cut.get_optional_number("strain", Range::non_negative(), "");

@@ -90,8 +90,19 @@ TrepanningForces trepanning_forces(const TrepanningTool& tool, const TrepanningC
   tool.validate("tool");
   cut.validate("cut");
   groups.validate("groups");
-  return {axial_regressor(tool, cut) * groups.axial_group_Pa, torque_regressor(tool, cut) * groups.torque_group_Pa,
-          cut.feed_per_rev_m()};
+  const TrepanningForces forces{axial_regressor(tool, cut) * groups.axial_group_Pa,
+                                 torque_regressor(tool, cut) * groups.torque_group_Pa, cut.feed_per_rev_m()};
+  // A product beyond a double (a feed of 1e308 um/s, a speed of 1e-320 rpm) is refused, not written as inf.
+  for (const auto& [name, value] : {std::pair<const char*, double>{"axial_force_N", forces.axial_force_N},
+                                    {"torque_N_m", forces.torque_N_m}, {"feed_per_rev_um", forces.feed_per_rev_m}}) {
+    if (!std::isfinite(value) || (value == 0.0 && cut.feed_rate_m_per_s > 0.0)) {
+      throw ModelError("trepanning", fmt::format("{} is {} for cut.feed_rate_um_per_s = {}, cut.spindle_speed_rpm = {}: "
+                                                 "the inputs lie beyond what a double holds",
+                                                 name, value, format_value(units::m_to_um(cut.feed_rate_m_per_s)),
+                                                 format_value(cut.spindle_speed_rev_per_s * 60.0)));
+    }
+  }
+  return forces;
 }
 
 TrepanningForces trepanning_forces(const TrepanningTool& tool, const TrepanningCut& cut,

@@ -12,8 +12,8 @@ TrepanningScene parse_trepanning_scene(const Json& document) {
   scene.material = load_material(root.get("material"), "material");
 
   ObjectReader tool = root.get_object("tool");
-  scene.tool.outer_diameter_m = units::mm_to_m(tool.get_number("outer_diameter_mm", Range::positive(), "mm"));
-  scene.tool.inner_diameter_m = units::mm_to_m(tool.get_number("inner_diameter_mm", Range::non_negative(), "mm"));
+  scene.tool.outer_diameter_m = tool.get_si("outer_diameter_mm", Range::positive(), "mm", units::mm_to_m);
+  scene.tool.inner_diameter_m = tool.get_si("inner_diameter_mm", Range::non_negative(), "mm", units::mm_to_m);
   tool.finish();
   scene.tool.validate("tool");
 
@@ -31,15 +31,15 @@ TrepanningScene parse_trepanning_scene(const Json& document) {
     TrepanningGritParams g;
     g.grit_density_per_m2 = 1e6 * grits->get_number("grit_density_per_mm2", Range::positive(), "1/mm^2");
     g.shape_coefficient = grits->get_number_or("shape_coefficient", 1.0, Range{0.0, 1.0, true, false}, "");
-    g.grit_width_m = units::um_to_m(grits->get_number("grit_width_um", Range::positive(), "um"));
+    g.grit_width_m = grits->get_si("grit_width_um", Range::positive(), "um", units::um_to_m);
     grits->finish();
     g.validate("models.trepanning.grits");
     scene.grits = g;
   }
   const bool has_groups = params.has("axial_group_MPa") || params.has("torque_group_MPa");
   if (has_groups) {
-    scene.groups.axial_group_Pa = units::mpa_to_pa(params.get_number("axial_group_MPa", Range::positive(), "MPa"));
-    scene.groups.torque_group_Pa = units::mpa_to_pa(params.get_number("torque_group_MPa", Range::positive(), "MPa"));
+    scene.groups.axial_group_Pa = params.get_si("axial_group_MPa", Range::positive(), "MPa", units::mpa_to_pa);
+    scene.groups.torque_group_Pa = params.get_si("torque_group_MPa", Range::positive(), "MPa", units::mpa_to_pa);
     scene.groups_origin = "models.trepanning.axial_group_MPa and torque_group_MPa";
     params.ignore("origin");
     params.finish();

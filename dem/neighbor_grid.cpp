@@ -16,14 +16,16 @@ void find_candidate_pairs(std::span<const double> x, std::span<const double> y, 
   const std::size_t n = x.size();
   if (n < 2) return;
   double x_min = x[0], x_max = x[0], y_min = y[0], y_max = y[0], r_max = 0;
+  bool finite = true;  // each one: min and max pass over a NaN, which the cell index would then cast (UBSan)
   for (std::size_t i = 0; i < n; ++i) {
+    finite = finite && std::isfinite(x[i]) && std::isfinite(y[i]) && std::isfinite(r[i]);
     x_min = std::min(x_min, x[i]);
     x_max = std::max(x_max, x[i]);
     y_min = std::min(y_min, y[i]);
     y_max = std::max(y_max, y[i]);
     r_max = std::max(r_max, r[i]);
   }
-  if (!std::isfinite(x_max - x_min) || !std::isfinite(y_max - y_min) || !std::isfinite(r_max))
+  if (!finite || !std::isfinite(x_max - x_min) || !std::isfinite(y_max - y_min) || !std::isfinite(r_max))
     throw ModelError("dem", "non-finite particle position or radius in the neighbour search: the run is unstable");
   // Cells of at least 2 R_max + skin, over the particles' box. When fragments fly far from the assembly that box
   // would need huge cells (many particles in each, a search of O(N^2)): the grid then covers the bulk only, the

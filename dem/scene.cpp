@@ -76,7 +76,7 @@ SceneOutcome run_scene(const Json& doc, const fs::path& scene_file, const RunOpt
   scene.kind->check_options(options, scene.common);
   if (options.checkpoint_every > 0 && options.replicates > 1)
     throw InputError("--checkpoint-every", std::to_string(options.checkpoint_every), "no checkpoints with --replicates");
-  fs::create_directories(options.out);
+  const OutputManifest hold(options.out, /*fresh=*/true);  // writable? then the old outputs go, before any work
   const SceneRun run{doc, fs::absolute(scene_file).parent_path().string(), options};
   Json provenance = run_provenance(options.command_line, scene_file.string(), options.overrides);
   provenance["scene_as_run"] = doc;
@@ -91,6 +91,7 @@ SceneOutcome resume_scene(const fs::path& dir, bool show_progress, const Progres
   options.checkpoint_every = c.checkpoint_every;
   options.show_progress = show_progress;
   options.on_progress = on_progress;
+  const OutputManifest hold(dir, /*fresh=*/false);
   Json provenance = run_provenance("(resumed from " + (dir / "checkpoint.bin").string() + ")", "", {});
   provenance["scene_as_run"] = c.scene;
   return with_provenance(scene.kind->resume(scene.common, SceneRun{c.scene, c.scene_dir, options}, c), dir,

@@ -7,6 +7,7 @@
 #include <string>
 #include <string_view>
 #include <type_traits>
+#include <variant>
 #include <vector>
 
 #include "kerf/error.hpp"
@@ -29,6 +30,11 @@ void put_vec(std::string& out, const std::vector<T>& v) {
   out.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
 }
 inline void put_str(std::string& out, const std::string& s) { put_vec(out, std::vector<char>(s.begin(), s.end())); }
+
+template <class T>
+struct is_variant : std::false_type {};
+template <class... T>
+struct is_variant<std::variant<T...>> : std::true_type {};
 
 template <class T>
 struct is_vector : std::false_type {};
@@ -61,7 +67,8 @@ struct In {
   std::string_view b;
   std::size_t at = 0;
   void take(void* d, std::size_t n) {
-    if (at + n > b.size()) throw ModelError("dem", "truncated checkpoint");
+    if (at > b.size() || n > b.size() - at) throw ModelError("dem", "truncated checkpoint");  // cannot wrap
+    if (n == 0) return;  // an empty vector's data() may be null, and memcpy's pointers must not be (found by fuzzing)
     std::memcpy(d, b.data() + at, n);
     at += n;
   }
@@ -74,7 +81,8 @@ struct In {
   void vec(std::vector<T>& v) {
     std::uint64_t n = 0;
     raw(n);
-    if (n > b.size()) throw ModelError("dem", "corrupt checkpoint");
+    if (at > b.size() || n > (b.size() - at) / (sizeof(T) > 0 ? sizeof(T) : 1))
+      throw ModelError("dem", "corrupt checkpoint (a length beyond its end)");
     v.resize(static_cast<std::size_t>(n));
     take(v.data(), v.size() * sizeof(T));
   }
@@ -96,12 +104,18 @@ struct In {
  private:
   template <class T>
   void one(T& v) {
-    if constexpr (std::is_same_v<T, std::string>)
+    if constexpr (std::is_same_v<T, std::string>) {
       str(v);
-    else if constexpr (is_vector<T>::value)
+    } else if constexpr (is_vector<T>::value) {
       vec(v);
-    else
+    } else {
       raw(v);
+      // A variant (a contact law) is stored whole, its index with it: an index beyond its alternatives would
+      // make every visit undefined (found by fuzz_checkpoint behind a valid checksum).
+      if constexpr (is_variant<T>::value) {
+        if (v.index() >= std::variant_size_v<T>) throw ModelError("dem", "corrupt checkpoint (an unknown law)");
+      }
+    }
   }
 };
 

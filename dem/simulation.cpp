@@ -8,6 +8,7 @@
 #include <bit>
 #include <cmath>
 #include <cstring>
+#include <exception>
 #include <limits>
 #include <numbers>
 #include <type_traits>
@@ -111,6 +112,8 @@ void damped_kick_disks(std::int64_t n, double dt, double alpha, const std::uint8
 }
 
 /// The disk arrays the contact loops read (positions, velocities, spins, rotations, radii).
+// The loops name the pointers one by one, not with a structured binding: clang 14 cannot use a structured
+// binding inside an OpenMP region (a C++20 capture it lacks), and the sanitizer and fuzzing builds are clang's.
 struct DiskArrays {
   const double *x, *y, *vx, *vy, *om, *th, *rad;
 };
@@ -403,7 +406,9 @@ void Simulation::bond_loop(const Law& law, ForceCounts& counts) {
   const int stride = b_.stride;
   const auto nb = static_cast<std::int64_t>(b_.size());
   int n_breaking = 0, n_retired = 0;
-  const auto [x, y, vx, vy, om, th, rad] = disk_arrays(p_);
+  const DiskArrays disks = disk_arrays(p_);
+  [[maybe_unused]] const double *x = disks.x, *y = disks.y, *vx = disks.vx, *vy = disks.vy, *om = disks.om,
+                                *th = disks.th, *rad = disks.rad;
 
   // Joints in blocks, each in two passes: first the kinematics of every joint of the block (independent from
   // joint to joint, so the square roots and divisions of several joints are in flight at once instead of one
@@ -489,7 +494,9 @@ void Simulation::bond_loop(const Law& law, ForceCounts& counts) {
 template <class Law, bool kViscous>
 void Simulation::pair_loop(const Law& law) {
   const double dt = dt_, t = opt_.thickness_m;
-  const auto [x, y, vx, vy, om, th, rad] = disk_arrays(p_);
+  const DiskArrays disks = disk_arrays(p_);
+  [[maybe_unused]] const double *x = disks.x, *y = disks.y, *vx = disks.vx, *vy = disks.vy, *om = disks.om,
+                                *th = disks.th, *rad = disks.rad;
 
   const auto np = static_cast<std::int64_t>(pairs_.size());
 #pragma omp for schedule(static) nowait
@@ -524,7 +531,9 @@ void Simulation::pair_loop(const Law& law) {
 template <class Law, bool kViscous>
 void Simulation::wall_loop(const Law& law) {
   const double dt = dt_, t = opt_.thickness_m;
-  const auto [x, y, vx, vy, om, th, rad] = disk_arrays(p_);
+  const DiskArrays disks = disk_arrays(p_);
+  [[maybe_unused]] const double *x = disks.x, *y = disks.y, *vx = disks.vx, *vy = disks.vy, *om = disks.om,
+                                *th = disks.th, *rad = disks.rad;
 
   const auto nw = static_cast<std::int64_t>(wall_contacts_.size());
 #pragma omp for schedule(static)
@@ -705,6 +714,7 @@ void Simulation::step() {
   double max_move2 = 0, wall_move = 0;
   bool must_rebuild = false;
   ForceCounts counts;
+  std::exception_ptr failure;
   // One team for the whole step (not one per loop): the serial pieces run in `single` blocks and the
   // threads meet at barriers only where a loop reads what another thread wrote: after the drift, (when the
   // neighbour lists are rebuilt), after the contact loops, and at the end.
@@ -728,16 +738,35 @@ void Simulation::step() {
     // Every thread takes the same decision from the same shared values (none changes before the single).
     const double max_move = std::sqrt(max_move2);
     if (must_rebuild || 2 * max_move > skin_ || max_move + wall_move > skin_) {
+      // No exception may leave a parallel region (std::terminate): the rebuild's (a non-finite position) is
+      // kept, every thread sees it after the single's barrier and skips the rest, and it is thrown below.
 #pragma omp single
-      rebuild_neighbours();
+      try {
+        rebuild_neighbours();
+      } catch (...) {
+        failure = std::current_exception();
+      }
     }
-    force_loops(counts);
+    if (!failure) {
+      force_loops(counts);
 #pragma omp single nowait
-    {
-      finish_forces(counts);
-      apply_breaks();  // joints only: the kick below does not read them
+      {
+        finish_forces(counts);
+        apply_breaks();  // joints only: the kick below does not read them
+      }
+      damped_half_kick(dt);  // no barrier after it: the region's end is one
     }
-    damped_half_kick(dt);  // no barrier after it: the region's end is one
+  }
+  if (failure) {
+    try {
+      std::rethrow_exception(failure);
+    } catch (const ModelError& e) {  // with the inputs that led there
+      std::string reason = e.what();
+      if (reason.rfind("model 'dem': ", 0) == 0) reason.erase(0, std::string_view("model 'dem': ").size());
+      throw ModelError("dem", fmt::format("{} (step {}, dt = {:.4g} s, material.density_kg_per_m3 = {:.6g}, "
+                                          "specimen.thickness_mm = {:.6g})",
+                                          reason, steps_, dt_, material_.density_kg_per_m3, 1e3 * opt_.thickness_m));
+    }
   }
   ++steps_;
   if (opt_.check_every > 0 && steps_ % opt_.check_every == 0) check_stability();

@@ -4,14 +4,40 @@
 
 namespace kerf {
 
+std::string printable(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (c == '\n') {
+      out += "\\n";
+    } else if (c == '\t') {
+      out += "\\t";
+    } else if (c == '\r') {
+      out += "\\r";
+    } else if (c < 0x20 || c == 0x7f) {
+      out += fmt::format("\\x{:02x}", c);
+    } else if (c == 0xc2 && i + 1 < text.size() && static_cast<unsigned char>(text[i + 1]) >= 0x80 &&
+               static_cast<unsigned char>(text[i + 1]) <= 0x9f) {
+      out += fmt::format("\\u{:04x}", static_cast<unsigned char>(text[++i]));  // a C1 control in UTF-8
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  return out;
+}
+
 InputError::InputError(std::string field, std::string value, std::string expected)
-    : std::runtime_error(fmt::format("{} = {}: expected {}", field, value, expected)),
+    : std::runtime_error(printable(fmt::format("{} = {}: expected {}", field, value, expected))),
       field_(std::move(field)),
       value_(std::move(value)),
       expected_(std::move(expected)) {}
 
 ModelError::ModelError(const std::string& model, const std::string& reason)
-    : std::runtime_error(fmt::format("model '{}': {}", model, reason)) {}
+    : std::runtime_error(printable(fmt::format("model '{}': {}", model, reason))) {}
+
+OutputError::OutputError(const std::string& path, const std::string& reason)
+    : std::runtime_error(printable(fmt::format("cannot write '{}': {}", path, reason))) {}
 
 std::string format_value(double value) { return fmt::format("{:.6g}", value); }
 

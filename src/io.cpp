@@ -1,44 +1,246 @@
 #include "kerf/io.hpp"
 
 #include <fmt/format.h>
+#include <signal.h>
 #include <unistd.h>
 
+#include <atomic>
+#include <cerrno>
 #include <cmath>
+#include <csignal>
+#include <cstring>
 #include <fstream>
+#include <mutex>
 #include <random>
 #include <stdexcept>
 #include <system_error>
 
+#include "kerf/error.hpp"
+
 namespace kerf {
 
-void write_file_atomically(const std::filesystem::path& path, std::string_view contents) {
-  namespace fs = std::filesystem;
-  if (path.has_parent_path()) fs::create_directories(path.parent_path());
+namespace {
+
+namespace fs = std::filesystem;
+
+// The temporary files in flight, for the SIGINT/SIGTERM handler: fixed slots that the handler reads
+// without allocating or locking (unlink is async-signal-safe).
+constexpr std::size_t kTemporarySlots = 64;
+constexpr std::size_t kPathBytes = 4096;
+struct TemporarySlot {
+  std::atomic<bool> used{false};
+  char path[kPathBytes];
+};
+TemporarySlot temporary_slots[kTemporarySlots];
+std::mutex temporary_slots_mutex;
+
+extern "C" void remove_temporaries_and_die(int signal_number) {
+  for (auto& slot : temporary_slots) {
+    if (slot.used.load()) ::unlink(slot.path);
+  }
+  std::signal(signal_number, SIG_DFL);
+  std::raise(signal_number);
+}
+
+void install_signal_cleanup() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    for (int signal_number : {SIGINT, SIGTERM, SIGHUP}) {
+      struct sigaction previous {};
+      ::sigaction(signal_number, nullptr, &previous);
+      if (previous.sa_handler == SIG_IGN) continue;  // nohup: stay ignored
+      std::signal(signal_number, remove_temporaries_and_die);
+    }
+  });
+}
+
+bool is_temporary_name(const std::string& name) {
+  const auto at = name.rfind(".tmp-");
+  if (at == std::string::npos || at == 0) return false;
+  const std::string tail = name.substr(at + 5);
+  const std::string hex = tail.substr(0, 8);
+  if (hex.size() != 8 || hex.find_first_not_of("0123456789abcdef") != std::string::npos) return false;
+  return tail.size() == 8 || tail.substr(8) == ".png";
+}
+
+/// Writes through an existing file that is not a regular file (a device, a FIFO, "-" for stdout): there is
+/// nothing to replace atomically, and replacing it would destroy it.
+void write_through(const fs::path& path, std::string_view contents) {
+  if (path == "-") {
+    std::fwrite(contents.data(), 1, contents.size(), stdout);
+    if (std::fflush(stdout) != 0) throw OutputError("-", std::strerror(errno));
+    return;
+  }
+  std::ofstream out(path, std::ios::binary);
+  if (!out) throw OutputError(path.string(), std::strerror(errno));
+  out.write(contents.data(), static_cast<std::streamsize>(contents.size()));
+  out.flush();
+  if (!out) throw OutputError(path.string(), "the write failed");
+}
+
+/// The file a write goes to: a symbolic link's target (the link stays), else the path itself.
+fs::path write_target(const fs::path& path) {
+  fs::path target = path;
+  std::error_code error;
+  for (int hop = 0; fs::is_symlink(target, error); ++hop) {  // a dangling link too: its file is created
+    const fs::path next = fs::read_symlink(target, error);
+    if (error || hop == 40) throw OutputError(path.string(), error ? error.message() : "too many levels of links");
+    target = next.is_absolute() ? next : target.parent_path() / next;
+  }
+  return target;
+}
+
+bool is_special(const fs::path& path) {
+  if (path == "-") return true;
+  std::error_code error;
+  const auto status = fs::status(path, error);
+  return fs::exists(status) && !fs::is_regular_file(status) && !fs::is_directory(status);
+}
+
+// The run directory whose outputs are listed in its manifest (OutputManifest), if any.
+std::mutex manifest_mutex;
+fs::path manifest_dir;
+
+void record_output(const fs::path& path) {
+  const std::lock_guard<std::mutex> lock(manifest_mutex);
+  if (manifest_dir.empty()) return;
+  std::error_code error;
+  const fs::path relative = fs::relative(fs::absolute(path, error), manifest_dir, error);
+  if (error || relative.empty() || *relative.begin() == "..") return;
+  std::ofstream(manifest_dir / OutputManifest::kFileName, std::ios::app) << relative.string() << '\n';
+}
+
+}  // namespace
+
+OutputManifest::OutputManifest(const fs::path& dir, bool fresh) {
+  check_writable_directory(dir);
+  remove_stale_temporaries(dir);
+  const fs::path absolute = fs::absolute(dir);
+  // The files the previous run into this directory wrote (finished or killed): gone before this one writes.
+  std::ifstream previous;
+  if (fresh) previous.open(absolute / kFileName);
+  for (std::string line; std::getline(previous, line);) {
+    const fs::path relative(line);
+    if (line.empty() || relative.is_absolute() || line.find("..") != std::string::npos) continue;
+    if (line.find("replicate_") != std::string::npos) continue;  // finished replicates are reused by their inputs
+    std::error_code ignored;
+    if (fs::is_regular_file(absolute / relative, ignored)) fs::remove(absolute / relative, ignored);
+  }
+  previous.close();
+  std::ofstream(absolute / kFileName, fresh ? std::ios::trunc : std::ios::app).flush();
+  write_file_atomically(absolute / kRunningName, "a run writes into this directory (or was killed)\n");
+  const std::lock_guard<std::mutex> lock(manifest_mutex);
+  manifest_dir = absolute;
+  dir_ = absolute;
+}
+
+OutputManifest::~OutputManifest() {
+  {
+    const std::lock_guard<std::mutex> lock(manifest_mutex);
+    manifest_dir.clear();
+  }
+  std::error_code ignored;
+  fs::remove(dir_ / kRunningName, ignored);
+}
+
+fs::path TemporaryFile::reserve(const fs::path& path, std::string_view suffix) {
+  install_signal_cleanup();
   std::random_device entropy;
-  const fs::path temporary = path.string() + fmt::format(".tmp-{:08x}", entropy());
+  fs::path temporary = path.string() + fmt::format(".tmp-{:08x}{}", entropy(), suffix);
+  const std::string text = temporary.string();
+  const std::lock_guard<std::mutex> lock(temporary_slots_mutex);
+  for (auto& slot : temporary_slots) {
+    if (slot.used.load() || text.size() >= kPathBytes) continue;
+    std::memcpy(slot.path, text.c_str(), text.size() + 1);
+    slot.used.store(true);
+    break;
+  }
+  return temporary;
+}
+
+void TemporaryFile::release(const fs::path& temporary) {
+  const std::string text = temporary.string();
+  const std::lock_guard<std::mutex> lock(temporary_slots_mutex);
+  for (auto& slot : temporary_slots) {
+    if (slot.used.load() && text == slot.path) slot.used.store(false);
+  }
+}
+
+void write_file_atomically(const fs::path& requested, std::string_view contents) {
+  if (is_special(requested)) return write_through(requested, contents);
+  const fs::path path = write_target(requested);
+  if (is_special(path)) return write_through(path, contents);
+  std::error_code error;
+  if (path.has_parent_path()) fs::create_directories(path.parent_path(), error);
+  if (error) throw OutputError(path.parent_path().string(), error.message());
+  const fs::path temporary = TemporaryFile::reserve(path);
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out) throw std::runtime_error(fmt::format("cannot write '{}'", temporary.string()));
+    if (!out) {
+      TemporaryFile::release(temporary);
+      throw OutputError(temporary.string(), std::strerror(errno));
+    }
     out.write(contents.data(), static_cast<std::streamsize>(contents.size()));
     out.flush();
     if (!out) {
       std::error_code ignored;
       fs::remove(temporary, ignored);
-      throw std::runtime_error(fmt::format("failed while writing '{}'", temporary.string()));
+      TemporaryFile::release(temporary);
+      throw OutputError(temporary.string(), "the write failed (is the disk full?)");
     }
   }
   move_into_place(temporary, path);
 }
 
-void move_into_place(const std::filesystem::path& temporary, const std::filesystem::path& path) {
+void move_into_place(const fs::path& temporary, const fs::path& path) {
   std::error_code error;
-  std::filesystem::rename(temporary, path, error);
+  fs::rename(temporary, path, error);
   if (error) {
     std::error_code ignored;
-    std::filesystem::remove(temporary, ignored);
-    throw std::runtime_error(fmt::format("cannot rename '{}' to '{}': {}", temporary.string(), path.string(),
-                                         error.message()));
+    fs::remove(temporary, ignored);
   }
+  TemporaryFile::release(temporary);
+  if (error) throw OutputError(path.string(), fmt::format("cannot rename '{}' onto it: {}", temporary.string(), error.message()));
+  record_output(path);
+}
+
+void check_writable_directory(const fs::path& dir) {
+  std::error_code error;
+  fs::create_directories(dir, error);
+  if (error) throw OutputError(dir.string(), error.message());
+  if (!fs::is_directory(dir, error)) throw OutputError(dir.string(), "it is not a directory");
+  const fs::path probe = TemporaryFile::reserve(dir / ".kerf-probe");
+  std::ofstream out(probe, std::ios::binary);
+  const bool ok = static_cast<bool>(out << 'k' << std::flush);
+  const int probe_errno = errno;
+  out.close();
+  fs::remove(probe, error);
+  TemporaryFile::release(probe);
+  if (!ok) throw OutputError(dir.string(), fmt::format("the directory is not writable ({})", std::strerror(probe_errno)));
+}
+
+void check_writable_file(const fs::path& requested) {
+  if (requested.empty()) throw InputError("output file", "\"\"", "a file name");
+  if (is_special(requested)) return;
+  const fs::path path = write_target(requested);
+  if (is_special(path)) return;
+  std::error_code error;
+  if (fs::is_directory(path, error)) throw OutputError(path.string(), "it is a directory");
+  // The file is replaced by a rename: its directory is what must be writable.
+  check_writable_directory(path.has_parent_path() ? path.parent_path() : fs::path("."));
+}
+
+std::size_t remove_stale_temporaries(const fs::path& dir) {
+  std::size_t n_removed = 0;
+  std::error_code error;
+  for (fs::recursive_directory_iterator it(dir, error), end; !error && it != end; it.increment(error)) {
+    if (it.depth() > 2) it.disable_recursion_pending();
+    if (it->is_regular_file(error) && is_temporary_name(it->path().filename().string())) {
+      std::error_code ignored;
+      if (fs::remove(it->path(), ignored)) ++n_removed;
+    }
+  }
+  return n_removed;
 }
 
 std::string csv_escape(std::string_view field) {

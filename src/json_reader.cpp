@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -75,7 +76,9 @@ std::string describe_choices(std::string_view word, const std::vector<std::strin
 }
 
 std::string json_value_text(const Json& value) {
-  std::string text = value.is_string() ? value.get<std::string>() : value.dump();
+  // The parser keeps documents shallow (kMaxJsonDepth) and strings are printed, never executed: invalid UTF-8
+  // from a --set value is replaced rather than thrown over.
+  std::string text = value.is_string() ? value.get<std::string>() : value.dump(-1, ' ', false, Json::error_handler_t::replace);
   if (text.size() > 60) text = text.substr(0, 57) + "...";
   return text;
 }
@@ -125,6 +128,26 @@ std::optional<double> ObjectReader::get_optional_number(std::string_view key, co
 double ObjectReader::get_number_or(std::string_view key, double fallback, const Range& range,
                                    std::string_view unit) {
   return get_optional_number(key, range, unit).value_or(fallback);
+}
+
+namespace {
+double checked_si(double given, double (*to_si)(double), const std::string& path, std::string_view unit) {
+  const double si = to_si(given);
+  if (std::isfinite(si) && (given == 0.0 || std::isnormal(si))) return si;
+  throw InputError(path, format_value(given),
+                   fmt::format("a value in {} that stays a finite, non-zero number in SI units (it becomes {})", unit,
+                               format_value(si)));
+}
+}  // namespace
+
+double ObjectReader::get_si(std::string_view key, const Range& range, std::string_view unit, double (*to_si)(double)) {
+  return checked_si(get_number(key, range, unit), to_si, key_path(key), unit);
+}
+
+double ObjectReader::get_si_or(std::string_view key, double fallback, const Range& range, std::string_view unit,
+                               double (*to_si)(double)) {
+  const auto value = get_optional_number(key, range, unit);
+  return value ? checked_si(*value, to_si, key_path(key), unit) : to_si(fallback);
 }
 
 int ObjectReader::get_int_or(std::string_view key, int fallback, int lo, int hi) {
@@ -189,9 +212,102 @@ void ObjectReader::finish(const std::vector<std::string>& also_valid) const {
   }
 }
 
+namespace {
+
+/// Builds a document as nlohmann's own parser does, with two checks it lacks: nesting deeper than
+/// kMaxJsonDepth is refused before it is built (a deep value would overflow the stack of every recursive
+/// function that later walks it, the printer first), and a number too large for a double names its key.
+class CheckedSax : public nlohmann::detail::json_sax_dom_parser<Json> {
+  using Base = nlohmann::detail::json_sax_dom_parser<Json>;
+  struct Level {
+    bool object;
+    std::string key;
+    std::size_t index;
+  };
+
+ public:
+  CheckedSax(Json& document, std::string source, bool name_overflow)
+      : Base(document, true), source_(std::move(source)), name_overflow_(name_overflow) {}
+
+  bool null() { return value(Base::null()); }
+  bool boolean(bool v) { return value(Base::boolean(v)); }
+  bool number_integer(number_integer_t v) { return value(Base::number_integer(v)); }
+  bool number_unsigned(number_unsigned_t v) { return value(Base::number_unsigned(v)); }
+  bool number_float(number_float_t v, const string_t& s) { return value(Base::number_float(v, s)); }
+  bool string(string_t& v) { return value(Base::string(v)); }
+  bool binary(binary_t& v) { return value(Base::binary(v)); }
+  bool start_object(std::size_t n) { return enter(true) && Base::start_object(n); }
+  bool key(string_t& k) {
+    levels_.back().key = k;
+    return Base::key(k);
+  }
+  bool end_object() { return leave(Base::end_object()); }
+  bool start_array(std::size_t n) { return enter(false) && Base::start_array(n); }
+  bool end_array() { return leave(Base::end_array()); }
+
+  template <class Exception>
+  bool parse_error(std::size_t position, const std::string& last_token, const Exception& ex) {
+    if constexpr (std::is_same_v<Exception, nlohmann::detail::out_of_range>) {
+      if (name_overflow_ && ex.id == 406) {
+        throw InputError(where(), last_token, fmt::format("a finite number (it overflows a double; in {})", source_));
+      }
+    }
+    return Base::parse_error(position, last_token, ex);
+  }
+
+ private:
+  bool value(bool ok) {
+    if (!levels_.empty() && !levels_.back().object) ++levels_.back().index;
+    return ok;
+  }
+  bool enter(bool object) {
+    if (levels_.size() >= kMaxJsonDepth) {
+      throw InputError(source_, fmt::format("(arrays and objects nested deeper than {} at {})", kMaxJsonDepth, where()),
+                       fmt::format("JSON nested at most {} levels deep", kMaxJsonDepth));
+    }
+    levels_.push_back({object, "", 0});
+    return true;
+  }
+  bool leave(bool ok) {
+    levels_.pop_back();
+    return value(ok);
+  }
+  /// The dotted path of the value being read: "tool.rake_deg", "conditions[2].feed".
+  std::string where() const {
+    std::string path;
+    for (const auto& level : levels_) {
+      if (level.object) path += (path.empty() ? "" : ".") + level.key;
+      if (!level.object) path += fmt::format("[{}]", level.index);
+    }
+    return path.empty() ? "(document)" : path;
+  }
+
+  std::string source_;
+  bool name_overflow_;
+  std::vector<Level> levels_;
+};
+
+}  // namespace
+
+Json parse_json_text(std::string_view text, const std::string& source) {
+  Json document;
+  CheckedSax sax(document, source, /*name_overflow=*/true);
+  try {
+    Json::sax_parse(text, &sax, nlohmann::detail::input_format_t::json, /*strict=*/true, /*ignore_comments=*/true);
+  } catch (const Json::parse_error& e) {
+    throw InputError(source, "(malformed JSON)", fmt::format("valid JSON ({})", e.what()));
+  }
+  return document;
+}
+
 Json parse_override_value(const std::string& text) {
-  Json value = Json::parse(text, nullptr, /*allow_exceptions=*/false);
-  if (value.is_discarded()) return Json(text);
+  Json value;
+  CheckedSax sax(value, "--set", /*name_overflow=*/false);
+  try {
+    Json::sax_parse(text, &sax, nlohmann::detail::input_format_t::json, /*strict=*/true);
+  } catch (const Json::exception&) {
+    return Json(text);  // not JSON (or a number beyond a double): the text itself, checked by its reader
+  }
   return value;
 }
 
@@ -220,15 +336,14 @@ void apply_override(Json& document, const std::string& assignment, const std::st
 }
 
 Json read_json_file(const std::string& file_path) {
+  std::error_code ignored;
+  if (std::filesystem::is_directory(file_path, ignored)) throw InputError("file", file_path, "a JSON file, not a directory");
   std::ifstream in(file_path);
   if (!in) throw InputError("file", file_path, "a readable JSON file");
   std::stringstream buffer;
   buffer << in.rdbuf();
-  try {
-    return Json::parse(buffer.str(), nullptr, true, /*ignore_comments=*/true);
-  } catch (const Json::parse_error& e) {
-    throw InputError(file_path, "(malformed JSON)", fmt::format("valid JSON ({})", e.what()));
-  }
+  if (in.bad()) throw InputError("file", file_path, "a readable JSON file");
+  return parse_json_text(buffer.str(), file_path);
 }
 
 }  // namespace kerf

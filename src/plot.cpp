@@ -299,13 +299,12 @@ void draw_png_with_plplot(const std::filesystem::path& path, int width_px, int h
                           const std::function<void()>& before_init, const std::function<void()>& draw) {
   namespace fs = std::filesystem;
   if (path.has_parent_path()) fs::create_directories(path.parent_path());
-  std::random_device entropy;
   // The PNG, then the same drawing as a PDF beside it (vector, for papers): cairo's page is the PNG's size
   // in points, so both look alike.
   fs::path pdf = path;
   pdf.replace_extension(".pdf");
   for (const auto& [device, file] : {std::pair<const char*, fs::path>{"pngcairo", path}, {"pdfcairo", pdf}}) {
-    const fs::path temporary = file.string() + fmt::format(".tmp-{:08x}{}", entropy(), file.extension().string());
+    const fs::path temporary = TemporaryFile::reserve(file, file.extension().string());
     {
       // PLplot keeps library-wide state: one drawing at a time, on a stream of its own, closed with plend1()
       // (plend() would end every stream).
@@ -326,7 +325,8 @@ void draw_png_with_plplot(const std::filesystem::path& path, int width_px, int h
     std::error_code error;
     if (!fs::exists(temporary, error) || fs::file_size(temporary, error) == 0) {
       fs::remove(temporary, error);
-      throw std::runtime_error(fmt::format("PLplot ({}) did not write '{}'", device, file.string()));
+      TemporaryFile::release(temporary);
+      throw OutputError(file.string(), fmt::format("PLplot ({}) did not write it", device));
     }
     move_into_place(temporary, file);
   }

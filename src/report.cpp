@@ -862,7 +862,7 @@ std::vector<std::filesystem::path> write_report(const Comparison& c, const std::
     if (error) {
       std::error_code ignored;
       fs::remove_all(staging, ignored);
-      throw std::runtime_error(fmt::format("cannot move '{}' into place: {}", (out_dir / name).string(), error.message()));
+      throw OutputError((out_dir / name).string(), fmt::format("cannot move it into place: {}", error.message()));
     }
     written.push_back(out_dir / name);
   }

@@ -7,7 +7,8 @@
 //   kerf-dem keys [SECTION]      the Markdown key table of every scene section (docs/dem.md), or of one
 //
 // Exit status 2 for bad input (the message names the field, the value and what was expected), 3 when the
-// model fails (e.g. an unstable run, a calibration that does not converge).
+// model fails (e.g. an unstable run, a calibration that does not converge, a damaged checkpoint), 4 when an
+// output cannot be written (the directory is checked before any work).
 #include <fmt/format.h>
 #include <omp.h>
 
@@ -94,12 +95,15 @@ int main(int argc, char** argv) {
   auto* keys = app.add_subcommand("keys", "print the Markdown key table of the scene sections (docs/dem.md)");
   keys->add_option("section", section, "one section (" + fmt::format("{}", fmt::join(kerf::dem::scene_sections(), ", ")) +
                                             "; default: all)");
+  const auto error = [](const std::string& what, int status) {
+    std::cerr << kProgram << ": error: " << kerf::printable(what) << "\n";
+    return status;
+  };
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);
-    std::cerr << kProgram << ": error: " << e.what() << "\n";
-    return kerf::kExitInputError;
+    return error(e.what(), kerf::kExitInputError);
   }
   try {
     if (threads > 0) omp_set_num_threads(threads);
@@ -108,17 +112,17 @@ int main(int argc, char** argv) {
       return with_log(log_every, [&](const kerf::dem::ProgressCallback& on_progress) {
         return kerf::dem::resume_scene(resume_dir, true, on_progress).exit_status;
       });
+    if (out_dir.empty()) throw kerf::InputError("--out", "\"\"", "a directory name");
     options.out = out_dir;
     options.command_line = kerf::command_line(argc, argv);
     return run_command(scene_path, sets, options, log_every);
   } catch (const kerf::InputError& e) {
-    std::cerr << kProgram << ": error: " << e.what() << "\n";
-    return kerf::kExitInputError;
+    return error(e.what(), kerf::kExitInputError);
   } catch (const kerf::ModelError& e) {
-    std::cerr << kProgram << ": error: " << e.what() << "\n";
-    return kerf::kExitModelError;
+    return error(e.what(), kerf::kExitModelError);
+  } catch (const kerf::OutputError& e) {
+    return error(e.what(), kerf::kExitOutputError);
   } catch (const std::exception& e) {
-    std::cerr << kProgram << ": error: " << e.what() << "\n";
-    return 1;
+    return error(e.what(), 1);
   }
 }

@@ -9,7 +9,8 @@
 //   kerf-forces materials         (the bundled material library)
 //
 // Exit status: 0 success, 2 usage or input error (the message names the field, value and what was
-// expected), 3 a model failed on valid input, 1 anything else (e.g. an output file cannot be written).
+// expected), 3 a model failed on valid input or a result would not be finite, 4 an output cannot be written
+// (checked before any work), 1 anything else.
 #include <fmt/format.h>
 #include <omp.h>
 
@@ -292,6 +293,7 @@ Axis parse_axis(const std::string& spec) {
   } catch (const std::logic_error&) {
     fail("numbers in START:STOP:COUNT");
   }
+  if (!std::isfinite(start) || !std::isfinite(stop)) fail("finite START and STOP");
   if (count < 1 || count > 10'000'000) fail("COUNT in [1, 10000000]");
   const bool log_spacing = parts.size() == 4 && parts[3] == "log";
   if (log_spacing && !(start > 0 && stop > 0)) fail("positive START and STOP for :log spacing");
@@ -299,6 +301,7 @@ Axis parse_axis(const std::string& spec) {
     const double f = count == 1 ? 0.0 : static_cast<double>(i) / static_cast<double>(count - 1);
     // Rounded to 15 significant digits: 0.05, not 0.049999999999999996, for a grid from 0.01 in steps of 0.01.
     const double value = log_spacing ? start * std::pow(stop / start, f) : start + (stop - start) * f;
+    if (!std::isfinite(value)) fail("START and STOP whose difference is finite");
     axis.values.push_back(std::stod(fmt::format("{:.15g}", value)));
   }
   return axis;
@@ -395,6 +398,8 @@ int run_sweep(const std::string& scene_path, const std::vector<std::string>& ove
         if (rows[i].values.size() != names.size()) rows[i] = {{}, "internal: the column set changed"};
       } catch (const std::exception& e) {
         rows[i].error = e.what();
+      } catch (...) {  // nothing may leave the parallel region
+        rows[i].error = "internal: an unknown exception";
       }
     }
     progress.advance(end - begin);
@@ -536,15 +541,27 @@ int main(int argc, char** argv) {
   auto* models = app.add_subcommand("models", "list the registered models");
   auto* materials = app.add_subcommand("materials", "list the bundled material library");
 
+  const auto error = [](const std::string& what, int status) {
+    fmt::print(stderr, "kerf-forces: error: {}\n", kerf::printable(what));
+    return status;
+  };
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help
-    fmt::print(stderr, "kerf-forces: error: {}\n", e.what());
-    return kerf::kExitInputError;
+    return error(e.what(), kerf::kExitInputError);
   }
   try {
     if (threads > 0) omp_set_num_threads(threads);
+    // The outputs are checked before any work: an unwritable place fails now, not after the sweep.
+    for (const auto* command : {predict, sweep}) {
+      if (*command && command->count("--csv") > 0) {
+        if (csv.empty()) throw kerf::InputError("--csv", "\"\"", "a file name (leave --csv out for no CSV)");
+        kerf::check_writable_file(csv);
+      }
+    }
+    if ((*compare || *report) && out_dir.empty()) throw kerf::InputError("--out", "\"\"", "a directory name");
+    if (*compare || *report) kerf::check_writable_directory(out_dir);
     if (*predict) return run_predict(scene_path, overrides, csv);
     if (*sweep) return run_sweep(scene_path, overrides, vary, csv, plot);
     if (*compare) return run_compare(scene_path, overrides, experiments, mappings, fit, measured_width_mm, out_dir);
@@ -553,14 +570,13 @@ int main(int argc, char** argv) {
     if (*models) return list_models();
     if (*materials) return list_materials();
   } catch (const kerf::InputError& e) {
-    fmt::print(stderr, "kerf-forces: error: {}\n", e.what());
-    return kerf::kExitInputError;
+    return error(e.what(), kerf::kExitInputError);
   } catch (const kerf::ModelError& e) {
-    fmt::print(stderr, "kerf-forces: error: {}\n", e.what());
-    return kerf::kExitModelError;
+    return error(e.what(), kerf::kExitModelError);
+  } catch (const kerf::OutputError& e) {
+    return error(e.what(), kerf::kExitOutputError);
   } catch (const std::exception& e) {
-    fmt::print(stderr, "kerf-forces: error: {}\n", e.what());
-    return 1;
+    return error(e.what(), 1);
   }
   return 0;
 }

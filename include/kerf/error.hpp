@@ -8,13 +8,17 @@
 //   // what(): "tool.rake_deg = 95: expected a value in (-90, 90) deg"
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace kerf {
 
 /// Exit status of the command-line programs for usage and input errors.
 inline constexpr int kExitInputError = 2;
-/// Exit status when a model cannot produce an answer for valid input (e.g. a solver fails).
+/// Exit status when a model cannot produce an answer for valid input (e.g. a solver fails), when a result
+/// would not be finite, or when a checkpoint is damaged.
 inline constexpr int kExitModelError = 3;
+/// Exit status when an output cannot be written (a directory that is not writable, a full disk).
+inline constexpr int kExitOutputError = 4;
 
 /// Bad input: names the field, the value and what was expected. The CLIs exit with status 2.
 class InputError : public std::runtime_error {
@@ -34,6 +38,17 @@ class ModelError : public std::runtime_error {
  public:
   ModelError(const std::string& model, const std::string& reason);
 };
+
+/// An output that cannot be written: names the path and why. The CLIs exit with status 4.
+class OutputError : public std::runtime_error {
+ public:
+  OutputError(const std::string& path, const std::string& reason);
+};
+
+/// The text on one line with its control characters escaped (a newline as \n, ESC as \x1b, a C1 control as
+/// \u0085...), so that no message splits, stops short at a NUL or reaches the terminal as an escape sequence.
+/// Every error's what() is printable already.
+std::string printable(std::string_view text);
 
 /// Formats a number for an error message with enough digits to be recognised ("0.1", "1e-09").
 std::string format_value(double value);

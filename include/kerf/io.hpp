@@ -15,12 +15,50 @@
 namespace kerf {
 
 /// Writes `contents` to a temporary file beside `path`, flushes it, then renames it over `path`, so
-/// readers see the old file or the whole new one, never a partial one. Throws std::runtime_error.
+/// readers see the old file or the whole new one, never a partial one. A symbolic link is followed (the
+/// link stays, its target is replaced); a device, a FIFO or "-" (stdout) is written through, never
+/// replaced. Throws OutputError (the CLIs exit 4).
 void write_file_atomically(const std::filesystem::path& path, std::string_view contents);
 
 /// Renames a finished temporary file over `path` (atomic on one file system); on failure removes the
-/// temporary and throws std::runtime_error. The last step of every all-or-nothing write.
+/// temporary and throws OutputError. The last step of every all-or-nothing write.
 void move_into_place(const std::filesystem::path& temporary, const std::filesystem::path& path);
+
+/// The name of a temporary file beside `path` ("PATH.tmp-1a2b3c4d" + suffix), removed by the process's
+/// SIGINT/SIGTERM/SIGHUP handler (installed on first use) until move_into_place() or release() lets it go.
+struct TemporaryFile {
+  static std::filesystem::path reserve(const std::filesystem::path& path, std::string_view suffix = "");
+  static void release(const std::filesystem::path& temporary);
+};
+
+/// Creates `dir` if needed and writes and removes a probe file in it: throws OutputError before any work
+/// when the output could not be written at the end.
+void check_writable_directory(const std::filesystem::path& dir);
+/// The same for one output file (its directory; a device, FIFO or "-" passes). An empty name is an
+/// InputError.
+void check_writable_file(const std::filesystem::path& path);
+/// Removes the temporary files ("*.tmp-XXXXXXXX") a killed run left in `dir` and two levels below; returns
+/// how many.
+std::size_t remove_stale_temporaries(const std::filesystem::path& dir);
+
+/// A run's hold on its output directory, from its start to its end. On construction: the directory is
+/// checked writable, the temporary files of a killed run are removed, and so are the files the previous run
+/// into it listed in its manifest (DIR/.kerf-outputs; a cut's replicate_N/ directories excepted: they are
+/// reused by their inputs, under any replicate_N/; `fresh` false, for a resumed run, keeps them); DIR/kerf.running marks the run in
+/// progress. Every file written into DIR while
+/// it lives is listed in the manifest. The destructor removes the marker (a killed run leaves it).
+class OutputManifest {
+ public:
+  static constexpr const char* kFileName = ".kerf-outputs";
+  static constexpr const char* kRunningName = "kerf.running";
+  OutputManifest(const std::filesystem::path& dir, bool fresh);
+  ~OutputManifest();
+  OutputManifest(const OutputManifest&) = delete;
+  OutputManifest& operator=(const OutputManifest&) = delete;
+
+ private:
+  std::filesystem::path dir_;
+};
 
 /// Quotes a CSV field when it holds a comma, quote or newline (RFC 4180).
 std::string csv_escape(std::string_view field);

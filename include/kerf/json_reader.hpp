@@ -63,6 +63,11 @@ class ObjectReader {
   double get_number(std::string_view key, const Range& range, std::string_view unit);
   std::optional<double> get_optional_number(std::string_view key, const Range& range, std::string_view unit);
   double get_number_or(std::string_view key, double fallback, const Range& range, std::string_view unit);
+  /// A number in the user's unit converted to SI with `to_si` (units::mm_to_m...): a non-zero value that the
+  /// conversion takes to 0, a subnormal or infinity (1e-322 mm, 1e308 MPa) is an InputError naming the key.
+  double get_si(std::string_view key, const Range& range, std::string_view unit, double (*to_si)(double));
+  double get_si_or(std::string_view key, double fallback, const Range& range, std::string_view unit,
+                   double (*to_si)(double));
   int get_int_or(std::string_view key, int fallback, int lo, int hi);
   bool get_bool_or(std::string_view key, bool fallback);
   std::string get_string(std::string_view key);
@@ -92,7 +97,14 @@ Json parse_override_value(const std::string& text);
 /// InputError when the text has no '=' or the path crosses a non-object value.
 void apply_override(Json& document, const std::string& assignment, const std::string& option_name = "--set");
 
-/// Reads a JSON file; malformed JSON is an InputError naming the file, line and column.
+/// The deepest nesting of arrays and objects a document may have (the bundled scenes use 4).
+inline constexpr std::size_t kMaxJsonDepth = 64;
+
+/// Parses JSON text (comments allowed). Malformed JSON is an InputError naming `source`, line and column;
+/// so is nesting deeper than kMaxJsonDepth; a number beyond a double is an InputError naming its key.
+Json parse_json_text(std::string_view text, const std::string& source);
+
+/// Reads a JSON file through parse_json_text; a missing file or a directory is an InputError.
 Json read_json_file(const std::string& file_path);
 
 /// A short text of a JSON value for error messages (strings unquoted, long values elided).

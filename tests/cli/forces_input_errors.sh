@@ -1,17 +1,7 @@
 #!/usr/bin/env bash
 # kerf-forces: every kind of bad input gives exit status 2 and one line naming the field, value and expectation.
-set -u
-bin="$1/kerf-forces"; src="$2"; scene="$src/data/scenes/psic_orthogonal.json"
-tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
-failures=0
-expect() {  # expect STATUS PATTERN -- ARGS...
-  local status=$1 pattern=$2; shift 3
-  "$bin" "$@" >"$tmp/out" 2>"$tmp/err"; local got=$?
-  if [ "$got" -ne "$status" ] || ! grep -q -- "$pattern" "$tmp/err"; then
-    echo "FAIL: kerf-forces $* -> status $got (want $status), stderr: $(cat "$tmp/err")"; failures=$((failures + 1))
-  fi
-  if grep -qi nan "$tmp/out"; then echo "FAIL: NaN in output of $*"; failures=$((failures + 1)); fi
-}
+source "$(dirname "$0")/lib/forces_common.sh" "$@"
+scene="$src/data/scenes/psic_orthogonal.json"
 printf '{"material": "psic", "tool": {' >"$tmp/malformed.json"
 expect 2 "malformed JSON" -- predict "$tmp/malformed.json"
 expect 2 "tool.rake_dg = 5: expected a known key (did you mean 'rake_deg'?)" -- predict "$scene" --set tool.rake_dg=5
@@ -26,7 +16,7 @@ expect 2 "no-such-file.json" -- predict "$src/no-such-file.json"
 expect 2 "--vary" -- sweep "$scene" --vary cut.width_mm=1:2 --csv "$tmp/x.csv"
 expect 2 "" -- predict
 expect 2 "" -- frobnicate
-# An unwritable CSV path is not an input error of the scene: status 1, and no partial file.
-expect 1 "cannot" -- predict "$scene" --csv /proc/kerf-cannot-write/x.csv
+# An unwritable CSV path is not an input error of the scene: status 4 (found before any work), no partial file.
+expect 4 "cannot" -- predict "$scene" --csv /proc/kerf-cannot-write/x.csv
 [ "$failures" -eq 0 ] && echo "all input-error checks passed"
 exit "$failures"

@@ -7,10 +7,15 @@
 //   write_checkpoint(out, c);
 //   Checkpoint again = read_checkpoint(out);   // InputError when OUT holds none
 //
-// Format "KERFCKP1": the magic, then three parts, each a native 64-bit length and its bytes: the JSON head
-// (scene, summary, frames, sample_index, checkpoint_every, scene_dir), the specimen, the run.
+// Format "KERFCKP2": the magic (a name and a version digit), the file's length (native 64 bits), three parts,
+// each a native 64-bit length and its bytes: the JSON head (scene, summary, frames, sample_index,
+// checkpoint_every, scene_dir), the specimen, the run; last the CRC-32 (IEEE 802.3, boost::crc_32_type) of
+// every byte before it. A file that is damaged (a flipped bit, cut short, a byte too many) or of another
+// version is a ModelError (exit 3), read before anything in it is used.
+#include <cstdint>
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -28,9 +33,12 @@ struct Checkpoint {
   std::string scene_dir, specimen, run;
 
   std::string bytes() const;
-  /// ModelError when the bytes are not a checkpoint or are cut short.
+  /// ModelError when the bytes are not a checkpoint, of another version, or damaged in any way.
   static Checkpoint parse(const std::string& bytes);
 };
+
+/// The CRC-32 of the checkpoints (IEEE 802.3: crc32("123456789") = 0xCBF43926).
+std::uint32_t crc32(std::string_view bytes);
 
 /// Writes DIR/checkpoint.bin atomically.
 void write_checkpoint(const std::filesystem::path& dir, const Checkpoint& c);

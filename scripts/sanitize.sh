@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# CI's second step (docs/hardening.md): a clang build with AddressSanitizer + UndefinedBehaviorSanitizer and
+# the libFuzzer targets in a build directory of its own; the whole test suite once under the sanitizers, then
+# each fuzzer for a bounded time (KERF_FUZZ_SECONDS, default 60) from the seed corpus (the bundled scenes; for
+# the checkpoint loader, the state tags). Any sanitizer report, crash or failed test fails the step.
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${KERF_SANITIZE_BUILD_DIR:-$root/build-san}"
+seconds="${KERF_FUZZ_SECONDS:-60}"
+bash "$root/scripts/install-deps.sh" --sanitize
+# -O1 with little debug info: a sanitized build of everything in about the time of the normal one.
+CC=clang CXX=clang++ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DKERF_SANITIZE=ON -DKERF_FUZZ=ON -DKERF_BUILD_BENCH=OFF \
+  -DKERF_BUILD_PYTHON=OFF \
+  -DKERF_WERROR="${KERF_WERROR:-OFF}" >/dev/null
+cmake --build "$build" --parallel "$(nproc)"
+# LeakSanitizer stays on (but for the font libraries' process-long caches); any report fails the process.
+export ASAN_OPTIONS="halt_on_error=1:detect_stack_use_after_return=0"
+export LSAN_OPTIONS="suppressions=$root/scripts/lsan.supp:print_suppressions=0"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+ctest --test-dir "$build" --output-on-failure --parallel "$(nproc)"
+corpus="$build/fuzz-corpus"
+rm -rf "$corpus" && mkdir -p "$corpus/scene" "$corpus/checkpoint"
+cp "$root"/data/scenes/*.json "$root"/validation/*/scene.json "$corpus/scene/" 2>/dev/null || true
+for tag in KERFCKP2 KERFDEM4 KERFLAB1 KERFCUT4 KERFCAL2; do
+  printf '\001%s' "$tag" >"$corpus/checkpoint/odd-$tag"
+  printf '\000%s' "$tag" >"$corpus/checkpoint/even-$tag"
+done
+for target in scene checkpoint; do
+  echo "fuzz_$target: $seconds s" >&2
+  (cd "$build" && "$build/fuzz/fuzz_$target" -max_total_time="$seconds" -max_len=65536 -rss_limit_mb=2048 \
+    -print_final_stats=1 "$corpus/$target" 2>&1 | tail -n 12)
+done
