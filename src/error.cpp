@@ -41,4 +41,23 @@ OutputError::OutputError(const std::string& path, const std::string& reason)
 
 std::string format_value(double value) { return fmt::format("{:.6g}", value); }
 
+int report_error(std::string_view program) {
+  const auto line = [&](const char* what) { fmt::print(stderr, "{}: error: {}\n", program, printable(what)); };
+  try {
+    throw;
+  } catch (const InputError& e) {
+    line(e.what());
+    return kExitInputError;
+  } catch (const ModelError& e) {
+    line(e.what());
+    return kExitModelError;
+  } catch (const OutputError& e) {
+    line(e.what());
+    return kExitOutputError;
+  } catch (const std::exception& e) {
+    line(e.what());
+    return 1;
+  }
+}
+
 }  // namespace kerf

@@ -116,13 +116,7 @@ int main(int argc, char** argv) {
     options.out = out_dir;
     options.command_line = kerf::command_line(argc, argv);
     return run_command(scene_path, sets, options, log_every);
-  } catch (const kerf::InputError& e) {
-    return error(e.what(), kerf::kExitInputError);
-  } catch (const kerf::ModelError& e) {
-    return error(e.what(), kerf::kExitModelError);
-  } catch (const kerf::OutputError& e) {
-    return error(e.what(), kerf::kExitOutputError);
-  } catch (const std::exception& e) {
-    return error(e.what(), 1);
+  } catch (const std::exception&) {
+    return kerf::report_error(kProgram);
   }
 }

@@ -569,14 +569,8 @@ int main(int argc, char** argv) {
     if (*report) return run_report(config_path, out_dir);
     if (*models) return list_models();
     if (*materials) return list_materials();
-  } catch (const kerf::InputError& e) {
-    return error(e.what(), kerf::kExitInputError);
-  } catch (const kerf::ModelError& e) {
-    return error(e.what(), kerf::kExitModelError);
-  } catch (const kerf::OutputError& e) {
-    return error(e.what(), kerf::kExitOutputError);
-  } catch (const std::exception& e) {
-    return error(e.what(), 1);
+  } catch (const std::exception&) {
+    return kerf::report_error("kerf-forces");
   }
   return 0;
 }

@@ -47,6 +47,11 @@ class OutputError : public std::runtime_error {
 
 /// The text on one line with its control characters escaped (a newline as \n, ESC as \x1b, a C1 control as
 /// \u0085...), so that no message splits, stops short at a NUL or reaches the terminal as an escape sequence.
+/// Prints "<program>: error: <what>" (one printable line) on stderr and returns the exit status of the
+/// exception being handled: InputError 2, ModelError 3, OutputError 4, anything else 1. Call it in a catch
+/// block: both command-line programs end this way.
+int report_error(std::string_view program);
+
 /// Every error's what() is printable already.
 std::string printable(std::string_view text);
 
