@@ -77,6 +77,14 @@ void check_feed_plausible(const TrepanningTool& tool, const TrepanningCut& cut) 
   // Plausibility: the abrasive face cannot advance by more than its own wall width (D - d) / 2 per turn; the
   // model's grits would then cut far deeper than any grit protrudes (docs/models.md, plausibility guards).
   const double wall_m = 0.5 * (tool.outer_diameter_m - tool.inner_diameter_m);
+  if (!std::isfinite(cut.feed_per_rev_m())) {  // a spindle speed so small that feed / speed overflows
+    throw InputError("cut.spindle_speed_rpm", format_value(cut.spindle_speed_rev_per_s * 60.0),
+                     fmt::format("a spindle speed at which the feed per revolution is finite: at a feed of {} um/s "
+                                 "it must be at least {:.6g} rpm for a feed per revolution below the cutter's wall "
+                                 "width (D - d)/2 = {:.6g} um",
+                                 format_value(units::m_to_um(cut.feed_rate_m_per_s)),
+                                 60.0 * cut.feed_rate_m_per_s / wall_m, units::m_to_um(wall_m)));
+  }
   if (cut.feed_per_rev_m() > wall_m) {
     throw InputError("cut.feed_rate_um_per_s", format_value(units::m_to_um(cut.feed_rate_m_per_s)),
                      fmt::format("a feed per revolution below the cutter's wall width (D - d)/2 = {:.6g} um; it gives "

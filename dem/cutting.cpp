@@ -363,7 +363,7 @@ void check_grooves_remove_disks(const CutParams& p, const Bounds& b, std::size_t
 
 /// The tool speed against the time step: fast enough to finish within kMaxRunSteps, slow enough to
 /// advance at most kMaxToolAdvancePerRadius of the smallest radius per step.
-void check_tool_speed(const CutParams& p, double time_step_s, double r_min_m) {
+void check_tool_speed(const CutParams& p, double time_step_s, double time_step_safety, double r_min_m) {
   const double fastest = kMaxToolAdvancePerRadius * r_min_m / time_step_s;
   const double slowest = p.length_m / (kMaxRunSteps * time_step_s);
   const std::string step = format_value(time_step_s * 1e9) + " ns";
@@ -371,6 +371,7 @@ void check_tool_speed(const CutParams& p, double time_step_s, double r_min_m) {
           "a speed of at most " + format_value(fastest) + " m/s: the tool may advance at most " +
               format_value(100 * kMaxToolAdvancePerRadius) + " % of the smallest disk radius (" +
               format_value(units::m_to_um(r_min_m)) + " um) per time step (" + step + ")");
+  refuse_small_time_step_safety(p.length_m / (p.speed_m_per_s * time_step_s), time_step_s, time_step_safety);
   require(p.speed_m_per_s >= slowest, "cut.speed_m_per_s", p.speed_m_per_s,
           "a speed of at least " + format_value(slowest) + " m/s: slower, the travel of " +
               format_value(units::m_to_mm(p.length_m)) + " mm takes more than " + format_value(kMaxRunSteps) +
@@ -447,7 +448,7 @@ CutRun::CutRun(const Simulation& specimen, const CutParams& params)
   n_tool_walls_ = static_cast<std::int32_t>(outline.size());
   sim_.invalidate_neighbours();
   sim_.initialise();
-  check_tool_speed(params_, sim_.time_step(), b0.r_min);
+  check_tool_speed(params_, sim_.time_step(), sim_.options().time_step_safety, b0.r_min);
   sim_.cracks().clear();  // only the cut's cracks count
   t0_ = sim_.time();
   res_.n_particles = sim_.particles().size();

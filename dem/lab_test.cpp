@@ -105,6 +105,8 @@ LabTestRun::LabTestRun(const Simulation& specimen, const LoadingSpec& spec) : si
   // reach max_strain within kMaxRunSteps (strain = 2 v t / length).
   const double slowest = spec.quasi_static_check ? 0.5 * v : v;
   const double min_speed = spec.max_strain * length / (2 * kMaxRunSteps * res_.time_step_s);
+  refuse_small_time_step_safety(spec.max_strain * length / (2 * slowest * res_.time_step_s), res_.time_step_s,
+                                sim_.options().time_step_safety);
   if (slowest < min_speed)
     throw InputError("loading.speed_m_per_s", format_value(v),
                      "a speed of at least " + format_value(spec.quasi_static_check ? 2 * min_speed : min_speed) +

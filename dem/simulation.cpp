@@ -148,6 +148,16 @@ Simulation::Simulation(const Material& material, const SimulationOptions& option
                                                  : std::sqrt(contact_modulus_pa / material.density_kg_per_m3);
 }
 
+void refuse_small_time_step_safety(double steps, double time_step_s, double safety) {
+  const double default_safety = SimulationOptions{}.time_step_safety;
+  // dt is proportional to the safety: at the default the run would take steps * safety / default steps.
+  if (!(steps > kMaxRunSteps) || safety >= default_safety || !(steps * safety / default_safety <= kMaxRunSteps)) return;
+  throw InputError("engine.time_step_safety", format_value(safety),
+                   fmt::format("at least {}: smaller, the run takes {:.3g} time steps of {} ns, more than {}",
+                               format_value(safety * steps / kMaxRunSteps), steps, format_value(time_step_s * 1e9),
+                               format_value(kMaxRunSteps)));
+}
+
 void Simulation::set_time_step_safety(double f) {
   if (!(f > 0 && f <= 1)) throw InputError("engine.time_step_safety", format_value(f), "a value in (0, 1]");
   opt_.time_step_safety = f;

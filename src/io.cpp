@@ -63,6 +63,12 @@ bool is_temporary_name(const std::string& name) {
   return tail.size() == 8 || tail.substr(8) == ".png";
 }
 
+/// A report's staging directory (".staging-1a2b3c4d", kerf/report.hpp's write_report).
+bool is_staging_name(const std::string& name) {
+  return name.size() == 17 && name.rfind(".staging-", 0) == 0 &&
+         name.find_first_not_of("0123456789abcdef", 9) == std::string::npos;
+}
+
 /// Writes through an existing file that is not a regular file (a device, a FIFO, "-" for stdout): there is
 /// nothing to replace atomically, and replacing it would destroy it.
 void write_through(const fs::path& path, std::string_view contents) {
@@ -235,9 +241,14 @@ std::size_t remove_stale_temporaries(const fs::path& dir) {
   std::error_code error;
   for (fs::recursive_directory_iterator it(dir, error), end; !error && it != end; it.increment(error)) {
     if (it.depth() > 2) it.disable_recursion_pending();
-    if (it->is_regular_file(error) && is_temporary_name(it->path().filename().string())) {
+    const std::string name = it->path().filename().string();
+    if (it->is_regular_file(error) && is_temporary_name(name)) {
       std::error_code ignored;
       if (fs::remove(it->path(), ignored)) ++n_removed;
+    } else if (it->is_directory(error) && is_staging_name(name)) {  // a report's, killed before its renames
+      it.disable_recursion_pending();
+      std::error_code ignored;
+      if (fs::remove_all(it->path(), ignored) > 0) ++n_removed;
     }
   }
   return n_removed;

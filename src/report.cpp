@@ -824,6 +824,7 @@ std::vector<std::filesystem::path> write_report(const Comparison& c, const std::
                                                 const ReportOptions& options) {
   namespace fs = std::filesystem;
   fs::create_directories(out_dir);
+  remove_stale_temporaries(out_dir);  // a killed report's staging directory and temporaries
   std::random_device entropy;
   const fs::path staging = out_dir / fmt::format(".staging-{:08x}", entropy());
   std::vector<std::string> names;

@@ -37,8 +37,8 @@ void check_writable_directory(const std::filesystem::path& dir);
 /// The same for one output file (its directory; a device, FIFO or "-" passes). An empty name is an
 /// InputError.
 void check_writable_file(const std::filesystem::path& path);
-/// Removes the temporary files ("*.tmp-XXXXXXXX") a killed run left in `dir` and two levels below; returns
-/// how many.
+/// Removes the temporary files ("*.tmp-XXXXXXXX") and report staging directories (".staging-XXXXXXXX") a
+/// killed run left in `dir` and two levels below; returns how many.
 std::size_t remove_stale_temporaries(const std::filesystem::path& dir);
 
 /// A run's hold on its output directory, from its start to its end. On construction: the directory is

@@ -20,6 +20,10 @@ for density in 1e308 1e-320 1e-300; do
 done
 one_error_line 3 run "$src/data/scenes/dem_tension.json" "${tiny[@]}" --set specimen.thickness_mm=1e-300 --out "$work/d"
 [ ! -e "$work/d/kerf.running" ] || fail "a failed run left its in-progress marker"
+# A time step made tiny by engine.time_step_safety: the message names that key, not the loading speed.
+one_error_line 2 run "$src/data/scenes/dem_tension.json" "${tiny[@]}" --set engine.time_step_safety=1e-300 --out "$work/s"
+grep -q "^kerf-dem: error: engine.time_step_safety = 1e-300: expected at least " "$work/err" ||
+  fail "tiny time_step_safety: $(cat "$work/err")"
 [ -z "$(find "$work/d" -name '*.tmp-*')" ] || fail "a failed run left temporary files"
 
 # A deep value under the ignored "description" key: refused while parsing, before any work.

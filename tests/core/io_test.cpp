@@ -98,8 +98,14 @@ TEST_CASE("io: the temporary files of a killed writer are removed by SIGTERM and
   std::ofstream(dir / "forces.png.tmp-0123abcd.png") << "partial";
   std::ofstream(dir / "forces.csv") << "kept";
   std::ofstream(dir / "notes.tmp-draft") << "kept";
-  CHECK(kerf::remove_stale_temporaries(dir) == 2);
-  CHECK(n_files(dir) == 2);
+  // A report killed before its renames leaves its staging directory (and its finished files in it).
+  fs::create_directory(dir / ".staging-89abcdef");
+  std::ofstream(dir / ".staging-89abcdef" / "report.md") << "partial";
+  fs::create_directory(dir / ".staging-user");  // not of kerf's pattern: kept
+  CHECK(kerf::remove_stale_temporaries(dir) == 3);
+  CHECK(!fs::exists(dir / ".staging-89abcdef"));
+  CHECK(fs::exists(dir / ".staging-user"));
+  CHECK(n_files(dir) == 3);
   fs::remove_all(dir);
 }
 

@@ -3,7 +3,10 @@
 #include <catch2/catch.hpp>
 #include <cstdint>
 #include <cstring>
+#include <new>
+#include <variant>
 
+#include "kerf/dem/simulation.hpp"
 #include "kerf/error.hpp"
 
 using kerf::dem::Checkpoint;
@@ -65,4 +68,27 @@ TEST_CASE("checkpoint: cut short, a byte too many, a wrapping length, another ve
   old.replace(0, 8, "KERFCKP1");
   CHECK_THROWS_WITH(Checkpoint::parse(old), Catch::Matchers::Contains("another kerf-dem version (KERFCKP1"));
   CHECK_THROWS_WITH(Checkpoint::parse("PNG....."), Catch::Matchers::Contains("not a kerf-dem checkpoint"));
+}
+
+// Regressions of the two faults fuzz_checkpoint found behind a valid checksum (docs/hardening.md).
+TEST_CASE("checkpoint: an engine state with empty arrays reads back; a law index beyond the laws is a ModelError",
+          "[checkpoint]") {
+  using namespace kerf::dem;
+  Simulation sim(Material{}, SimulationOptions{});  // no disks, joints, walls or cracks: every array empty
+  const std::string good = sim.serialize();
+  CHECK(Simulation::deserialize(good).serialize() == good);  // UBSan: no memcpy from a null data()
+  // Where the stored joint law keeps its alternative's index: a variant built over a known fill byte.
+  alignas(BondLaw) unsigned char buffer[sizeof(BondLaw)];
+  std::memset(buffer, 0xAA, sizeof buffer);
+  new (buffer) BondLaw(ParallelBondParams{});
+  std::size_t index_at = sizeof buffer;
+  for (std::size_t k = std::max(sizeof(FlatJointParams), sizeof(ParallelBondParams)); k < sizeof buffer; ++k)
+    if (buffer[k] == 1) index_at = k;
+  REQUIRE(index_at < sizeof buffer);
+  // The state begins: tag, density, the contact law, the joint law (serial.hpp writes each whole).
+  const std::size_t joint_at = 8 + sizeof(double) + sizeof(ContactLaw);
+  REQUIRE(static_cast<unsigned char>(good[joint_at + index_at]) == 0);  // the default material's flat joint
+  std::string bad = good;
+  bad[joint_at + index_at] = static_cast<char>(std::variant_size_v<BondLaw>);
+  CHECK_THROWS_WITH(Simulation::deserialize(bad), Catch::Matchers::Contains("an unknown law"));
 }

@@ -121,3 +121,16 @@ TEST_CASE("lab test: a loading too slow to reach max_strain within 1e9 steps is 
   load.speed_m_per_s = 2.002 * min_speed;
   CHECK_NOTHROW(LabTestRun(sim, load));
 }
+
+TEST_CASE("lab test: a run made too long by a lowered engine.time_step_safety names that key", "[lab_test]") {
+  // Issue 24: engine.time_step_safety = 1e-300 was reported as a loading speed too slow.
+  const double dt = 1e-9, fits = kMaxRunSteps / 2, too_long = 2 * kMaxRunSteps;
+  const double f0 = SimulationOptions{}.time_step_safety;
+  // Fits at the default safety (steps scale as 1 / safety): the safety is named, with the smallest value that fits.
+  CHECK_THROWS_WITH(refuse_small_time_step_safety(too_long, dt, 0.5 * f0),
+                    Catch::Contains("engine.time_step_safety = ") && Catch::Contains("at least " + kerf::format_value(f0)));
+  // Within the limit, at or above the default, or too long even at the default: nothing (the caller names its speed).
+  CHECK_NOTHROW(refuse_small_time_step_safety(fits, dt, 0.01 * f0));
+  CHECK_NOTHROW(refuse_small_time_step_safety(too_long, dt, f0));
+  CHECK_NOTHROW(refuse_small_time_step_safety(10 * kMaxRunSteps, dt, 0.4 * f0));
+}

@@ -81,6 +81,12 @@ struct CrackEvent {
 /// rather than started as if it could finish.
 inline constexpr double kMaxRunSteps = 1e9;
 
+/// A run that needs `steps` time steps of `time_step_s` at engine.time_step_safety `safety`: when it needs
+/// more than kMaxRunSteps but would fit at the default safety (SimulationOptions), the lowered safety is the
+/// cause and the InputError names engine.time_step_safety with the smallest value that fits; otherwise
+/// nothing (the caller names its speed).
+void refuse_small_time_step_safety(double steps, double time_step_s, double safety);
+
 struct SimulationOptions {
   double thickness_m = 1e-3;       ///< out-of-plane thickness t
   double skin_m = 0;               ///< neighbour skin; 0: 0.3 R_min
