@@ -91,6 +91,27 @@ const FieldTable<CutParams>& groove_fields() {
   return table;
 }
 
+const FieldTable<CutParams>& active_window_fields() {
+  using namespace units;
+  using P = CutParams;
+  static const FieldTable<CutParams> table{
+      bool_field("enabled", "integrate only the disks around the tool (a steady-state cut of a long workpiece)",
+                 &P::active_window),
+      number_field("ahead_depths", kNone, Range::positive(), "window ahead of the cutting edge, in depths of cut",
+                   &P::window_ahead_depths),
+      number_field("behind_depths", kNone, Range::positive(), "window behind the cutting edge, in depths of cut",
+                   &P::window_behind_depths),
+      number_field("below_depths", kNone, Range::positive(), "window below the cut line, in depths of cut",
+                   &P::window_below_depths),
+      number_field("above_depths", kNone, Range::positive(),
+                   "window above the uncut surface (the chip's room; a chip leaving it is removed), in depths of cut",
+                   &P::window_above_depths),
+      number_field("shift_depths", kNone, Range::positive(),
+                   "tool travel between rebuilds of the window, in depths of cut (below ahead_depths)",
+                   &P::window_shift_depths)};
+  return table;
+}
+
 namespace {
 /// The relations between fields (each field's own range is its table's); errors name section.key.
 void check_cut_relations(const CutParams& p) {
@@ -108,6 +129,10 @@ void check_cut_relations(const CutParams& p) {
   const double tangent = p.edge_radius_m / std::tan(0.5 * wedge_angle_rad(p));
   require(tangent < std::min(rake_face_length_m(p), clearance_face_length_m(p)), "tool.edge_radius_um",
           units::m_to_um(p.edge_radius_m), "an edge radius whose rounding fits on both tool faces");
+  if (p.active_window)
+    require(p.window_shift_depths < p.window_ahead_depths, "active_window.shift_depths", p.window_shift_depths,
+            "a shift below active_window.ahead_depths (" + format_value(p.window_ahead_depths) +
+                "): the tool must not leave the window between two rebuilds");
   if (p.groove_shape == GrooveShape::none) return;
   require(p.groove_width_m < p.groove_pitch_m, "grooves.width_mm", units::m_to_mm(p.groove_width_m),
           "a positive width below grooves.pitch_mm (" + format_value(units::m_to_mm(p.groove_pitch_m)) + " mm)");
@@ -124,6 +149,7 @@ void validate_cut_params(const CutParams& p) {
   if (tool.tool_friction_coefficient < 0) tool.tool_friction_coefficient = 0;  // negative: the material's
   with_path("tool", [&] { check_fields(tool_fields(), tool); });
   if (p.groove_shape != GrooveShape::none) with_path("grooves", [&] { check_fields(groove_fields(), p); });
+  if (p.active_window) with_path("active_window", [&] { check_fields(active_window_fields(), p); });
   check_cut_relations(p);
 }
 
@@ -144,6 +170,10 @@ CutParams read_cut_params(ObjectReader& root) {
       p.groove_bottom_width_m = units::mm_to_m(units::m_to_mm(0.5 * p.groove_width_m));
     grooves->finish();
   }
+  if (auto window = root.find_object("active_window")) {
+    p = read_fields(*window, active_window_fields(), p);
+    window->finish();
+  }
   check_cut_relations(p);
   return p;
 }
@@ -157,6 +187,7 @@ Json cut_params_to_json(const CutParams& p) {
   if (p.rake_face_height_m <= 0) j["tool"].erase("rake_face_height_mm");
   if (p.groove_shape == GrooveShape::none) j["grooves"] = Json{{"shape", "none"}};
   if (p.groove_shape != GrooveShape::trapezoidal) j["grooves"].erase("bottom_width_mm");
+  if (p.active_window) j["active_window"] = fields_to_json(active_window_fields(), p);
   return j;
 }
 
@@ -454,11 +485,43 @@ CutRun::CutRun(const Simulation& specimen, const CutParams& params)
   res_.n_particles = sim_.particles().size();
   res_.time_step_s = sim_.time_step();
   res_.samples.push_back({0, 0, 0, 0});
+  if (params_.active_window) {
+    // The workpiece becomes the window's reservoir; its time step (of the whole workpiece) is every window's.
+    const double d = params_.depth_of_cut_m;
+    const CutWindowBox box{params_.window_ahead_depths * d, params_.window_behind_depths * d,
+                           params_.window_below_depths * d, params_.window_above_depths * d,
+                           params_.window_shift_depths * d};
+    const double x_edge = edge()[0];
+    window_.emplace(std::move(sim_), box, res_.y_top_m, res_.y_cut_m);
+    sim_ = window_->build(nullptr, x_edge);
+  }
+}
+
+std::array<double, 2> CutRun::edge() const {
+  const auto& walls = sim_.walls();
+  double y_low = std::numeric_limits<double>::infinity(), x_edge = y_low;
+  for (std::int32_t w = 0; w < n_tool_walls_; ++w) {
+    const Wall& face = walls[static_cast<std::size_t>(first_tool_wall_ + w)];
+    for (const auto& [x, y] : {std::pair{face.x0, face.y0}, std::pair{face.x1, face.y1}}) {
+      if (y < y_low - 1e-12)
+        y_low = y, x_edge = x;
+      else if (y < y_low + 1e-12)
+        x_edge = std::min(x_edge, x);
+    }
+  }
+  return {x_edge, y_low};
+}
+
+std::size_t CutRun::n_cracks() const {
+  // A window's cracks are moved to its reservoir when it is rebuilt.
+  return window_ ? window_->cracks().size() + sim_.cracks().size() : sim_.cracks().size();
 }
 
 bool CutRun::advance() {
   if (finished_) return false;
   const auto start = std::chrono::steady_clock::now();
+  if (window_ && window_->due(edge()[0])) sim_ = window_->build(&sim_, edge()[0]);
+  res_.particle_steps += static_cast<double>(sim_.particles().size()) * params_.sample_every_steps;
   double fx = 0, fy = 0;
   const auto& walls = sim_.walls();
   for (int s = 0; s < params_.sample_every_steps; ++s) {
@@ -482,25 +545,19 @@ void CutRun::finish() {
   const double steady_from_m = params_.entry_fraction * params_.length_m;
   steady_statistics(res_, steady_from_m);
   res_.travel_windows = travel_window_means(res_.samples, params_.length_m, params_.window_m);
-  // The cutting edge now: the front-most of the tool's lowest points (a flat clearance face has two).
-  const auto& walls = sim_.walls();
-  double y_low = std::numeric_limits<double>::infinity(), x_edge = y_low;
-  for (std::int32_t w = 0; w < n_tool_walls_; ++w) {
-    const Wall& face = walls[static_cast<std::size_t>(first_tool_wall_ + w)];
-    for (const auto& [x, y] : {std::pair{face.x0, face.y0}, std::pair{face.x1, face.y1}}) {
-      if (y < y_low - 1e-12)
-        y_low = y, x_edge = x;
-      else if (y < y_low + 1e-12)
-        x_edge = std::min(x_edge, x);
-    }
-  }
+  const double x_edge = edge()[0];
   // It was (final travel - steady start) further right when the steady part began.
   res_.steady_machined_x_m = {x_edge, x_edge + res_.samples.back().travel_m - steady_from_m};
-  res_.cracks = count_cut_cracks(sim_.cracks(), res_.y_cut_m, res_.steady_machined_x_m);
+  if (window_) {
+    window_->sync(sim_);
+    res_.window = {window_->rebuilds(), window_->largest_window(), window_->chips()};
+  }
+  res_.cracks = count_cut_cracks(cracks(), res_.y_cut_m, res_.steady_machined_x_m);
 }
 
 namespace {
-constexpr std::string_view kCutMagic = "KERFCUT4";  // 3: tool_friction_coefficient, 4: rake_face_height_m
+constexpr std::string_view kCutMagic = "KERFCUT5";  // 3: tool_friction_coefficient, 4: rake_face_height_m,
+                                                    // 5: the active window
 }  // namespace
 
 template <class Self, class Io>
@@ -515,13 +572,15 @@ void CutRun::state_fields(Self& run, Io& io) {
   if constexpr (!std::is_const_v<Self>) p.groove_shape = groove_shape_names().parse(groove_shape, "cut checkpoint");
   io(r.y_top_m, r.y_cut_m, r.width_m, r.time_step_s, r.wall_time_s, run.t0_, r.workpiece_box_m);
   io(r.n_particles, r.n_removed_by_grooves, r.steps, run.first_tool_wall_, run.n_tool_walls_, run.finished_);
+  io(p.active_window, p.window_ahead_depths, p.window_behind_depths, p.window_below_depths, p.window_above_depths,
+     p.window_shift_depths, r.particle_steps);
 }
 
 std::string CutRun::serialize() const {
   std::string out(kCutMagic);
   serial::Out io{out};
   state_fields(*this, io);
-  io(sim_.serialize());
+  io(sim_.serialize(), window_ ? window_->serialize() : std::string());
   return out;
 }
 
@@ -529,11 +588,13 @@ CutRun CutRun::deserialize(std::string_view bytes) {
   serial::In io = serial::open_tagged(bytes, kCutMagic, "cut checkpoint");
   CutRun run;
   state_fields(run, io);
-  std::string state;
-  io(state);
+  std::string state, window;
+  io(state, window);
   io.expect_end("cut checkpoint");
   validate_cut_params(run.params_);
   run.sim_ = Simulation::deserialize(state);
+  if (run.params_.active_window != !window.empty()) throw ModelError("dem", "corrupt cut checkpoint (the window)");
+  if (run.params_.active_window) run.window_ = CutWindow::deserialize(window);
   if (run.finished_) run.finish();
   return run;
 }

@@ -321,6 +321,8 @@ void Simulation::rebuild_neighbours() {
     const auto first = partners.begin() + bstart[static_cast<std::size_t>(c.i)];
     const auto last = partners.begin() + bstart[static_cast<std::size_t>(c.i) + 1];
     if (!bonded_pairs_touch && std::find(first, last, c.j) != last) continue;
+    if (opt_.skip_held_pairs && p_.group[static_cast<std::size_t>(c.i)] && p_.group[static_cast<std::size_t>(c.j)])
+      continue;
     while (old < pairs_.size() && pairs_[old] < c) ++old;
     pairs.push_back(c);
     shear.push_back(old < pairs_.size() && pairs_[old] == c ? pair_shear_[old] : 0.0);
@@ -376,6 +378,33 @@ void Simulation::rebuild_neighbours() {
   for (std::size_t u = 0; u < n; ++u)
     if (p_.group[u]) fixed_.push_back(static_cast<std::int32_t>(u));
   need_rebuild_ = false;
+}
+
+ContactSprings Simulation::contact_springs() const {
+  ContactSprings s;
+  for (std::size_t k = 0; k < pairs_.size(); ++k)
+    if (pair_shear_[k] != 0) s.pairs.push_back(pairs_[k]), s.pair_shear_n.push_back(pair_shear_[k]);
+  for (std::size_t k = 0; k < wall_contacts_.size(); ++k)
+    if (wall_shear_[k] != 0) s.wall_contacts.push_back(wall_contacts_[k]), s.wall_shear_n.push_back(wall_shear_[k]);
+  return s;
+}
+
+void Simulation::set_contact_springs(ContactSprings springs) {
+  const auto n = static_cast<std::int32_t>(p_.size()), nw = static_cast<std::int32_t>(walls_.size());
+  const auto valid = [&](std::int32_t u, std::int32_t limit) { return u >= 0 && u < limit; };
+  if (springs.pairs.size() != springs.pair_shear_n.size() || springs.wall_contacts.size() != springs.wall_shear_n.size() ||
+      !std::is_sorted(springs.pairs.begin(), springs.pairs.end()) ||
+      !std::is_sorted(springs.wall_contacts.begin(), springs.wall_contacts.end()))
+    throw ModelError("dem", "contact springs: lists of different lengths or not sorted");
+  for (const auto& c : springs.pairs)
+    if (!valid(c.i, n) || !valid(c.j, n) || c.i >= c.j) throw ModelError("dem", "contact springs: a pair out of range");
+  for (const auto& c : springs.wall_contacts)
+    if (!valid(c[0], nw) || !valid(c[1], n)) throw ModelError("dem", "contact springs: a wall contact out of range");
+  pairs_ = std::move(springs.pairs);
+  pair_shear_ = std::move(springs.pair_shear_n);
+  wall_contacts_ = std::move(springs.wall_contacts);
+  wall_shear_ = std::move(springs.wall_shear_n);
+  need_rebuild_ = true;
 }
 
 void Simulation::evaluate_forces() {
@@ -804,8 +833,8 @@ std::size_t Simulation::memory_bytes() const {
 
 namespace {
 
-constexpr std::string_view kStateMagic = "KERFDEM4";  // 2: Wall::friction_coefficient; 3: the laws as variants;
-                                                      // 4: the viscous damping ratio
+constexpr std::string_view kStateMagic = "KERFDEM5";  // 2: Wall::friction_coefficient; 3: the laws as variants;
+                                                      // 4: the viscous damping ratio; 5: skip_held_pairs
 
 }  // namespace
 

@@ -21,8 +21,9 @@ export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 ctest --test-dir "$build" --output-on-failure --parallel "$(nproc)"
 corpus="$build/fuzz-corpus"
 rm -rf "$corpus" && mkdir -p "$corpus/scene" "$corpus/checkpoint"
-cp "$root"/data/scenes/*.json "$root"/validation/*/scene.json "$corpus/scene/" 2>/dev/null || true
-for tag in KERFCKP2 KERFDEM4 KERFLAB1 KERFCUT4 KERFCAL2; do
+cp "$root"/data/scenes/*.json "$corpus/scene/"
+for f in "$root"/validation/*/scene.json; do cp "$f" "$corpus/scene/$(basename "$(dirname "$f")").json"; done
+for tag in KERFCKP2 KERFDEM5 KERFLAB1 KERFCUT5 KERFCAL2; do
   printf '\001%s' "$tag" >"$corpus/checkpoint/odd-$tag"
   printf '\000%s' "$tag" >"$corpus/checkpoint/even-$tag"
 done

@@ -28,7 +28,7 @@ Json finite_or_null(double v) { return std::isfinite(v) ? Json(v) : Json(); }
 /// The cut's latest sample, for log lines.
 SampleState cut_sample(const CutRun& run) {
   const CutResult& res = run.result();
-  SampleState s{0, 0, res.n_particles, static_cast<int>(run.simulation().cracks().size()), {}, {}, {}, {}, {}};
+  SampleState s{0, 0, run.simulation().particles().size(), static_cast<int>(run.n_cracks()), {}, {}, {}, {}, {}};
   if (!res.samples.empty()) {
     const CutSample& last = res.samples.back();
     s.step = std::llround(last.time_s / res.time_step_s);  // the cut's own steps (the workpiece's count from genesis)
@@ -47,7 +47,7 @@ Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& d
   const int frame_every = common.output.frame_every_samples;
   const auto write_frame = [&](const Simulation& sim) { write_frame_files(out, sim, tp); };
   if (frame_every > 0 && tp.sample_index == 0) write_frame(run.simulation());
-  const double n = static_cast<double>(run.result().n_particles);
+  const double n = static_cast<double>(run.simulation().particles().size());  // a window's: about the same all along
   const double steps = cut.length_m / (cut.speed_m_per_s * run.result().time_step_s);
   StageProgress progress(tp.progress, "cut", n * steps, "particle-steps");
   if (tp.sample_index > 0) progress.advance(n * cut.sample_every_steps * tp.sample_index);
@@ -103,14 +103,23 @@ Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& d
   summary["n_particles"] = res.n_particles;
   summary["steps"] = res.steps;
   summary["wall_time_s"] = res.wall_time_s;
-  summary["particle_steps_per_s"] = static_cast<double>(res.n_particles) * static_cast<double>(res.steps) / res.wall_time_s;
+  summary["particle_steps_per_s"] = res.particle_steps / res.wall_time_s;  // the disks integrated: a window's
+  if (cut.active_window) {
+    summary["active_window"] = Json{{"rebuilds", res.window.rebuilds},
+                                    {"largest_window_particles", res.window.largest_window_particles},
+                                    {"mean_window_particles",
+                                     res.particle_steps / (static_cast<double>(res.samples.size() - 1) * cut.sample_every_steps)},
+                                    {"chip_particles_removed", res.window.chips.particles},
+                                    {"chip_mass_removed_kg", res.window.chips.mass_kg},
+                                    {"chip_cracks_removed", res.window.chips.cracks}};
+  }
   write_file_atomically(out / "forces.csv", cut_forces_csv(res));
-  write_file_atomically(out / "cracks.csv", cracks_csv(run.simulation().cracks(), res.y_cut_m));
+  write_file_atomically(out / "cracks.csv", cracks_csv(run.cracks(), res.y_cut_m));
   if (frame_every > 0) write_pvd(out / "result.pvd", tp.frames);
   // The workpiece with room for the tool on the right and the chip above.
   const auto& box = res.workpiece_box_m;
   const double margin = 2 * cut.depth_of_cut_m;
-  write_specimen_png(out / "specimen.png", run.simulation(), "cut, final state",
+  write_specimen_png(out / "specimen.png", run.workpiece(), "cut, final state",
                      std::array<double, 4>{box[0], box[1] + margin, box[2], box[3] + margin});
   write_cut_forces_png(out / "forces.png", res, cut.entry_fraction * cut.length_m);
   write_summary(out, summary);

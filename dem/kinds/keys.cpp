@@ -29,6 +29,8 @@ const std::vector<SectionKeys>& sections() {
       {"cut", "cut, calibrate_cut", [] { return fields_markdown(cut_fields()); }},
       {"tool", "cut, calibrate_cut", [] { return fields_markdown(tool_fields()); }},
       {"grooves", "cut, calibrate_cut", [] { return fields_markdown(groove_fields()); }},
+      {"active_window", "cut: a steady-state cut, integrating only the disks around the tool",
+       [] { return fields_markdown(active_window_fields()); }},
       {"calibration", "calibrate", kinds::calibrate_keys_markdown},
       {"calibration.targets", "calibrate", kinds::calibrate_targets_keys_markdown},
       {"calibration", "calibrate_cut", kinds::calibrate_cut_keys_markdown},

@@ -19,10 +19,12 @@
 //   CutResult res = run.result();
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "kerf/dem/cut_window.hpp"
 #include "kerf/dem/simulation.hpp"
 #include "kerf/field_table.hpp"
 #include "kerf/json_reader.hpp"
@@ -54,12 +56,18 @@ struct CutParams {
   int sample_every_steps = 50;
   /// Report only: CutResult::travel_windows, mean forces per stretch of travel of this length (steadiness).
   double window_m = 0.1e-3;
+  /// The active window of a steady-state cut (section "active_window", kerf/dem/cut_window.hpp): off, every
+  /// disk of the workpiece is integrated. Extents in depths of cut around the cutting edge.
+  bool active_window = false;
+  double window_ahead_depths = 4, window_behind_depths = 3, window_below_depths = 4, window_above_depths = 4;
+  double window_shift_depths = 0.25;  ///< tool travel between two rebuilds of the window
 };
 
 /// The keys of the scene's "cut", "tool" and "grooves" sections (kerf/field_table.hpp).
 const FieldTable<CutParams>& cut_fields();
 const FieldTable<CutParams>& tool_fields();
 const FieldTable<CutParams>& groove_fields();
+const FieldTable<CutParams>& active_window_fields();
 
 /// Checks every field's range and the cross-field constraints (groove narrower than its pitch, trapezoid bottom narrower than its
 /// top, the tool's wedge angle positive ...); InputError names the dotted key, value and expectation.
@@ -110,6 +118,12 @@ struct CutCrackCounts {
   double subsurface_steady_damage_depth_m = 0;
 };
 
+/// What a windowed cut integrated and removed (all zero without an active window).
+struct CutWindowReport {
+  std::size_t rebuilds = 0, largest_window_particles = 0;
+  ChipAccount chips;
+};
+
 /// "chip" above the cut line (y > surface - depth of cut), else "subsurface".
 inline bool is_chip_crack(double y_m, double y_cut_m) { return y_m > y_cut_m; }
 inline const char* crack_place(double y_m, double y_cut_m) { return is_chip_crack(y_m, y_cut_m) ? "chip" : "subsurface"; }
@@ -142,8 +156,11 @@ struct CutResult {
   /// x span {from, to} of the surface the tool's cutting edge (its front-most lowest point) machined
   /// during the steady part, from its position at the end of the entry to its final one (once finished).
   std::array<double, 2> steady_machined_x_m{};
-  std::size_t n_particles = 0, n_removed_by_grooves = 0;
+  std::size_t n_particles = 0, n_removed_by_grooves = 0;  ///< the workpiece's
   std::int64_t steps = 0;
+  /// Disks integrated times steps, over the cut (a windowed cut integrates its window only).
+  double particle_steps = 0;
+  CutWindowReport window;
   double time_step_s = 0, wall_time_s = 0;
 };
 
@@ -173,7 +190,14 @@ class CutRun {
   /// Runs one sample interval; returns false once the tool has travelled `length`.
   bool advance();
   bool finished() const { return finished_; }
+  /// The simulation that runs: the whole workpiece, or the active window of a windowed cut.
   const Simulation& simulation() const { return sim_; }
+  /// The whole workpiece (a windowed cut's as of its last rebuild, and whole once finished).
+  const Simulation& workpiece() const { return window_ ? window_->workpiece() : sim_; }
+  /// Every crack of the cut (a windowed cut's as of its last rebuild, and all once finished).
+  const std::vector<CrackEvent>& cracks() const { return window_ ? window_->cracks() : sim_.cracks(); }
+  /// Cracks so far, the running window's included.
+  std::size_t n_cracks() const;
   const CutParams& params() const { return params_; }
   /// The result so far (steady statistics and crack counts filled in once finished).
   const CutResult& result() const { return res_; }
@@ -184,12 +208,15 @@ class CutRun {
  private:
   CutRun() : sim_(Material{}, SimulationOptions{}) {}
   Simulation sim_;
+  std::optional<CutWindow> window_;
   CutParams params_;
   CutResult res_;
   std::int32_t first_tool_wall_ = 0, n_tool_walls_ = 0;
   double t0_ = 0;
   bool finished_ = false;
   void finish();
+  /// The cutting edge: the front-most of the tool's lowest points (a flat clearance face has two) {x, y}.
+  std::array<double, 2> edge() const;
   /// The checkpoint's fields before the engine state, in order: io(field...) writes or reads them.
   template <class Self, class Io>
   static void state_fields(Self& run, Io& io);

@@ -96,6 +96,19 @@ struct SimulationOptions {
   /// Systems with fewer particles and fewer joints than this run on one thread (a team costs more than it
   /// saves on small systems). Results do not depend on it: every sum is taken in a fixed order.
   std::int64_t min_parallel_items = 1024;
+  /// Leave unjointed contacts between two prescribed-velocity disks out of the contact lists (their forces
+  /// move nothing): the held frame of a windowed cut. Off by default: a lab test sums its grips' forces.
+  bool skip_held_pairs = false;
+};
+
+/// The shear springs of the unjointed contacts (disk pairs, disk-wall), by particle index: carried from one
+/// simulation into another that holds the same disks under other indices (the windowed cut rebuilds its
+/// window so). Pairs sorted by (i, j) with i < j; wall contacts by (wall, particle).
+struct ContactSprings {
+  std::vector<CandidatePair> pairs;
+  std::vector<double> pair_shear_n;
+  std::vector<std::array<std::int32_t, 2>> wall_contacts;
+  std::vector<double> wall_shear_n;
 };
 
 class Simulation {
@@ -163,12 +176,16 @@ class Simulation {
   int n_touching_pairs() const;
   /// The complete state (particles, joints, contact lists with their shear springs, neighbour reference
   /// positions, walls, cracks, clock) as bytes: restoring it and running on gives bit-identical results to
-  /// an uninterrupted run. Format: "KERFDEM4", then each field as a length-prefixed raw array (native
+  /// an uninterrupted run. Format: "KERFDEM5", then each field as a length-prefixed raw array (native
   /// endianness, same build).
   std::string serialize() const;
   static Simulation deserialize(std::string_view bytes);
   /// Bytes held by the engine's arrays (particles, joints with their elements, contact lists, incidence).
   std::size_t memory_bytes() const;
+  /// The unjointed contacts' shear springs now (those of touching contacts; zero ones left out).
+  ContactSprings contact_springs() const;
+  /// Installs shear springs before initialise(): its neighbour search keeps those of the contacts it finds.
+  void set_contact_springs(ContactSprings springs);
   /// Forces the neighbour lists to be rebuilt before the next force evaluation.
   void invalidate_neighbours() { need_rebuild_ = true; }
   /// Recomputes forces at the current state without moving anything (no shear increments; static checks).

@@ -1,0 +1,87 @@
+#pragma once
+// The active window of a steady-state cut (issue 20; docs/dem.md, "Steady-state cuts"): on a long
+// workpiece only the disks around the tool are integrated. The whole workpiece is a reservoir that is never
+// stepped; the simulation that runs holds
+//   - the free disks: centres inside the window box, from `ahead` depths of cut ahead of the cutting edge to
+//     `behind` depths behind it, from `below` depths under the cut line up to `above` depths over the
+//     uncut surface (the chip's room); the workpiece's held boundary disks stay held;
+//   - the held frame: the disks within two largest diameters outside the box, at rest (they hold the free
+//     disks' joints and contacts); joints and contacts between two held disks are not computed.
+// Every `shift` of tool travel the window is rebuilt around the edge: the running simulation's disks,
+// joints, cracks and contact springs go back to the reservoir, and a new simulation is built from it, the
+// shear springs of the unjointed contacts carried over. A disk the window leaves behind is frozen where it
+// is (velocity zero): the machined workpiece. A free disk that leaves the box above the uncut surface is a
+// chip: removed from the simulation and counted (disks, mass, and the cracks of the joints it carried).
+// Disks ahead of the window have never moved. So the cost per step is that of the window, whatever the
+// workpiece's length.
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "kerf/dem/simulation.hpp"
+
+namespace kerf::dem {
+
+/// The window's extent around the cutting edge [m] (the cut's depths times the scene's window keys).
+struct CutWindowBox {
+  double ahead_m = 0, behind_m = 0, below_m = 0, above_m = 0;
+  double shift_m = 0;  ///< tool travel between rebuilds
+};
+
+/// What the windowed cut removed as chips.
+struct ChipAccount {
+  std::size_t particles = 0;
+  double mass_kg = 0;
+  int cracks = 0;  ///< crack events of joints with a removed disk at either end (filled in by cracks_on_chips)
+};
+
+class CutWindow {
+ public:
+  CutWindow() = default;
+  /// `workpiece`: the whole workpiece (make_workpiece) with its tool walls and its time step set;
+  /// `y_top_m`, `y_cut_m`: the uncut surface and the cut line.
+  CutWindow(Simulation workpiece, const CutWindowBox& box, double y_top_m, double y_cut_m);
+
+  /// Whether the edge has travelled a shift since the window was built.
+  bool due(double x_edge_m) const { return x_built_m_ - x_edge_m >= box_.shift_m; }
+  /// The simulation of the window around the cutting edge at `x_edge_m`; `current` (the one running, or
+  /// null for the first) goes back to the reservoir first.
+  Simulation build(const Simulation* current, double x_edge_m);
+  /// Writes the running window back into the reservoir (positions, joints, cracks): workpiece() and
+  /// cracks() are then up to date.
+  void sync(const Simulation& current);
+
+  /// The whole workpiece as of the last sync.
+  const Simulation& workpiece() const { return full_; }
+  /// Every crack of the cut so far (joint indices of the whole workpiece), as of the last sync.
+  const std::vector<CrackEvent>& cracks() const { return cracks_; }
+  /// The chips removed so far, with the cracks they carried.
+  ChipAccount chips() const;
+  std::size_t rebuilds() const { return rebuilds_; }
+  std::size_t largest_window() const { return largest_window_; }
+
+  std::string serialize() const;
+  static CutWindow deserialize(std::string_view bytes);
+
+ private:
+  void index_reservoir();
+  Simulation full_{Material{}, SimulationOptions{}};
+  CutWindowBox box_;
+  double y_top_m_ = 0, y_cut_m_ = 0, frame_m_ = 0, skin_m_ = 0;
+  double x_built_m_ = 0;           ///< the edge's x when the window was last built
+  double max_displacement_m_ = 0;  ///< largest |x - x0| of a disk written back (widens the reservoir search)
+  std::vector<double> x0_;         ///< each disk's x in the uncut workpiece
+  std::vector<std::uint8_t> removed_;                ///< per disk: removed as a chip
+  std::vector<std::int32_t> global_of_, bond_global_of_;  ///< the window's disks and joints in the workpiece
+  std::vector<CrackEvent> cracks_;
+  ContactSprings springs_;         ///< of the last sync, by workpiece index
+  ChipAccount chips_;
+  std::size_t rebuilds_ = 0, largest_window_ = 0;
+  std::size_t cracks_synced_ = 0;  ///< the running window's cracks already in cracks_
+  // Derived from the above (not stored): disks by x0, joints per disk.
+  std::vector<std::int32_t> by_x0_, bond_start_, bond_list_;
+  std::vector<std::int32_t> local_of_;  ///< per workpiece disk: its index in the window, or -1
+};
+
+}  // namespace kerf::dem

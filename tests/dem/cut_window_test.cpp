@@ -1,0 +1,178 @@
+// The active window of a steady-state cut (kerf/dem/cut_window.hpp, issue 20): a window covering the whole
+// workpiece is the full cut to the bit; bookkeeping of disks crossing its edge, chips and held disks; the
+// window's size independent of the workpiece's length; restart equals uninterrupted.
+#include "kerf/dem/cut_window.hpp"
+
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "kerf/dem/cutting.hpp"
+#include "kerf/dem/specimen.hpp"
+#include "quick_specimen.hpp"
+
+using namespace kerf::dem;
+
+namespace {
+
+Simulation workpiece_specimen(double width_m, double height_m, std::uint64_t seed) {
+  SpecimenSpec spec = kerf::dem::testing::quick_random_spec(width_m, height_m, seed);
+  spec.radius_min_m = 10e-6;
+  spec.radius_max_m = 13e-6;
+  SpecimenReport report;
+  return make_specimen(Material{}, spec, report);
+}
+
+CutParams windowed(double ahead, double behind, double below, double above) {
+  CutParams p;
+  p.depth_of_cut_m = 0.05e-3;
+  p.speed_m_per_s = 2;
+  p.length_m = 0.1e-3;
+  p.active_window = true;
+  p.window_ahead_depths = ahead, p.window_behind_depths = behind, p.window_below_depths = below;
+  p.window_above_depths = above;
+  p.window_shift_depths = 0.2;
+  return p;
+}
+
+}  // namespace
+
+TEST_CASE("cut window: a window covering the whole workpiece is the full cut to the bit", "[cut_window]") {
+  const Simulation specimen = workpiece_specimen(0.4e-3, 0.25e-3, 3);
+  CutParams full = windowed(100, 100, 100, 100);
+  full.active_window = false;
+  CutRun a(specimen, full), b(specimen, windowed(100, 100, 100, 100));
+  std::size_t k = 0;
+  bool more = true;
+  while (more) {
+    more = a.advance();
+    REQUIRE(b.advance() == more);
+    ++k;
+    const auto& pa = a.simulation().particles();
+    const auto& pb = b.simulation().particles();
+    REQUIRE(pa.size() == pb.size());
+    INFO("sample " << k);
+    REQUIRE(pa.x == pb.x);
+    REQUIRE(pa.vx == pb.vx);
+    // Forces on the free disks (a held disk's leave out the joints and contacts between two held disks).
+    for (std::size_t u = 0; u < pa.size(); ++u)
+      if (pa.group[u] == 0) REQUIRE(pa.fx[u] == pb.fx[u]);
+    REQUIRE(a.result().samples.back().main_force_n == b.result().samples.back().main_force_n);
+  }
+  CHECK(b.result().window.rebuilds > 5);
+  CHECK(b.result().window.chips.particles == 0);
+  CHECK(a.result().cracks.tensile == b.result().cracks.tensile);
+  CHECK(a.result().cracks.subsurface == b.result().cracks.subsurface);
+  CHECK(a.result().main_force_n == b.result().main_force_n);
+}
+
+TEST_CASE("cut window: the window's size does not grow with the workpiece; chips, frozen and untouched disks",
+          "[cut_window]") {
+  // The same cut (depth, travel) on workpieces 0.6 and 1.2 mm long: twice the disks, the same window.
+  CutParams p = windowed(3, 1, 2, 2);
+  p.length_m = 0.2e-3;
+  const auto cut = [&](double width_m) {
+    CutRun run(workpiece_specimen(width_m, 0.25e-3, 5), p);
+    while (run.advance()) {}
+    return run;
+  };
+  const CutRun small = cut(0.6e-3), large = cut(1.2e-3);
+  const CutResult &a = small.result(), &b = large.result();
+  INFO("disks " << a.n_particles << " / " << b.n_particles << ", largest windows " << a.window.largest_window_particles
+                << " / " << b.window.largest_window_particles);
+  REQUIRE(b.n_particles > 1.8 * a.n_particles);
+  CHECK(b.window.largest_window_particles < 1.2 * a.window.largest_window_particles);
+  CHECK(a.window.largest_window_particles < 0.7 * a.n_particles);
+  const double steps_a = static_cast<double>(a.samples.size() - 1), steps_b = static_cast<double>(b.samples.size() - 1);
+  CHECK(b.particle_steps / steps_b < 1.2 * a.particle_steps / steps_a);  // particle-steps per sample
+  CHECK(b.window.rebuilds >= 15);  // 0.2 mm of travel in shifts of 0.01 mm
+
+  // The finished workpiece: disks far ahead of the window never moved; every disk at rest but the window's
+  // own; the chip's disks are counted with their mass, and cracks of their joints among the cut's cracks.
+  const Simulation& w = large.workpiece();
+  const auto& q = w.particles();
+  const Simulation specimen = workpiece_specimen(1.2e-3, 0.25e-3, 5);
+  const double x_edge_end = b.steady_machined_x_m[0];
+  std::size_t untouched = 0, ahead = 0;
+  for (std::size_t u = 0; u < q.size(); ++u) {
+    // (A chip flung ahead stays where it was removed, above the uncut surface.)
+    if (q.x[u] < x_edge_end - 3 * p.depth_of_cut_m - 4 * 13e-6 - 1e-6 && q.y[u] < b.y_top_m) {
+      ++ahead;
+      untouched += q.x[u] == specimen.particles().x[u] && q.y[u] == specimen.particles().y[u];
+    }
+  }
+  CHECK(ahead > 100);
+  CHECK(untouched == ahead);
+  // Disks the window left behind: frozen where they were (at rest, many of them moved by the cut).
+  std::size_t behind = 0, at_rest = 0, moved = 0;
+  for (std::size_t u = 0; u < q.size(); ++u) {
+    if (q.x[u] > x_edge_end + (1 + p.window_shift_depths) * p.depth_of_cut_m + 4 * 13e-6 + 1e-6 && q.y[u] < b.y_top_m) {
+      ++behind;
+      at_rest += q.vx[u] == 0 && q.vy[u] == 0 && q.omega[u] == 0;
+      moved += q.x[u] != specimen.particles().x[u];
+    }
+  }
+  CHECK(behind > 15);
+  CHECK(at_rest == behind);
+  CHECK(moved > behind / 4);
+  const ChipAccount& chips = b.window.chips;
+  CHECK(chips.particles > 0);
+  const double m_min = Material{}.density_kg_per_m3 * 3.14159265358979 * 10e-6 * 10e-6 * 1e-3;
+  CHECK(chips.mass_kg >= 0.999 * m_min * static_cast<double>(chips.particles));
+  CHECK(chips.mass_kg <= 1.001 * m_min * 1.69 * static_cast<double>(chips.particles));
+  CHECK(chips.cracks <= b.cracks.tensile + b.cracks.shear);
+  CHECK(static_cast<std::size_t>(b.cracks.tensile + b.cracks.shear) == large.cracks().size());
+}
+
+TEST_CASE("cut window: restored halfway, a windowed cut goes on to the bit", "[cut_window]") {
+  const Simulation specimen = workpiece_specimen(0.6e-3, 0.25e-3, 7);
+  CutParams p = windowed(3, 2, 2, 2);
+  p.length_m = 0.15e-3;
+  CutRun whole(specimen, p);
+  while (whole.advance()) {}
+  CutRun half(specimen, p);
+  for (std::size_t k = 0; k < whole.result().samples.size() / 2; ++k) half.advance();
+  CutRun restored = CutRun::deserialize(half.serialize());
+  while (restored.advance()) {}
+  const CutResult &a = whole.result(), &b = restored.result();
+  REQUIRE(a.samples.size() == b.samples.size());
+  for (std::size_t k = 0; k < a.samples.size(); ++k) {
+    REQUIRE(a.samples[k].main_force_n == b.samples[k].main_force_n);
+    REQUIRE(a.samples[k].thrust_force_n == b.samples[k].thrust_force_n);
+  }
+  CHECK(a.window.rebuilds == b.window.rebuilds);
+  CHECK(a.window.chips.particles == b.window.chips.particles);
+  CHECK(a.window.chips.cracks == b.window.chips.cracks);
+  REQUIRE(whole.cracks().size() == restored.cracks().size());
+  for (std::size_t k = 0; k < whole.cracks().size(); ++k) CHECK(whole.cracks()[k].bond == restored.cracks()[k].bond);
+  CHECK(whole.workpiece().particles().x == restored.workpiece().particles().x);
+  CHECK(a.particle_steps == b.particle_steps);
+}
+
+TEST_CASE("cut window: contacts between two held disks are left out when asked", "[cut_window]") {
+  for (const bool skip : {false, true}) {
+    SimulationOptions o;
+    o.skip_held_pairs = skip;
+    Simulation sim(Material{}, o);
+    const int a = sim.add_particle(0, 0, 10e-6), b = sim.add_particle(19.9e-6, 0, 10e-6);  // overlapping
+    const int c = sim.add_particle(-19.9e-6, 0, 10e-6);                                    // free, touching a
+    sim.particles().group[static_cast<std::size_t>(a)] = 1;
+    sim.particles().group[static_cast<std::size_t>(b)] = 1;
+    sim.initialise();
+    INFO("skip_held_pairs " << skip);
+    CHECK(sim.n_touching_pairs() == (skip ? 1 : 2));  // held-held left out; held-free kept
+    CHECK(sim.particles().fx[static_cast<std::size_t>(c)] < 0);  // the free disk is pushed off the held one
+  }
+}
+
+TEST_CASE("cut window: the window's keys are validated with their dotted names", "[cut_window]") {
+  CutParams p = windowed(3, 2, 2, 2);
+  p.window_shift_depths = 3;
+  CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains("active_window.shift_depths = 3"));
+  p = windowed(0, 2, 2, 2);
+  CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains("active_window.ahead_depths = 0"));
+  p = windowed(3, 2, 2, 2);
+  p.active_window = false;
+  p.window_ahead_depths = 0;  // not read without a window
+  CHECK_NOTHROW(validate_cut_params(p));
+}
