@@ -27,7 +27,8 @@ CutWindow::CutWindow(Simulation workpiece, const CutWindowBox& box, double y_top
   removed_.assign(p.size(), 0);
   local_of_.assign(p.size(), -1);
   x_built_m_ = std::numeric_limits<double>::infinity();
-  full_.cracks().clear();
+  r_max_m_ = *r_max;
+  full_.cracks().clear();  // the cut's cracks only
   index_reservoir();
 }
 
@@ -81,7 +82,7 @@ void CutWindow::sync(const Simulation& current) {
   for (std::size_t k = cracks_synced_; k < events.size(); ++k) {
     CrackEvent e = events[k];
     e.bond = bond_global_of_[static_cast<std::size_t>(e.bond)];
-    cracks_.push_back(e);
+    full_.cracks().push_back(e);
   }
   cracks_synced_ = events.size();
   ContactSprings s = current.contact_springs();
@@ -121,25 +122,40 @@ Simulation CutWindow::build(const Simulation* current, double x_edge_m) {
     for (std::size_t u = 0; u < c.size(); ++u)
       if (c.group[u] == 0) kept.push_back({global_of_[u], c.fx[u], c.fy[u], c.torque[u]});
   }
-  for (auto g : global_of_) local_of_[static_cast<std::size_t>(g)] = -1;
-  global_of_.clear();
-  bond_global_of_.clear();
-  std::vector<std::uint8_t> held;
-  for (const auto gi : candidates) {
-    const auto g = static_cast<std::size_t>(gi);
+  // Each candidate's role in the new window: free, held (frame) or out; a free disk of the running window
+  // that leaves the box more than a largest radius above the cut line is chip or debris (the tool passed
+  // there): removed.
+  enum Role : std::uint8_t { kOut, kFree, kHeld };
+  std::vector<Role> role(candidates.size(), kOut);
+  for (std::size_t k = 0; k < candidates.size(); ++k) {
+    const auto g = static_cast<std::size_t>(candidates[k]);
     if (removed_[g]) continue;
     const double x = q.x[g], y = q.y[g];
     const bool boundary = q.group[g] != 0;  // the workpiece's held left side and bottom
     const bool in_box = x >= x0 && x <= x1 && y >= y0 && y <= y1;
-    if (!boundary && !in_box && y > y_top_m_) {  // above the uncut surface, out of the box: a chip
+    const bool was_free = current && local_of_[g] >= 0 && current->particles().group[static_cast<std::size_t>(local_of_[g])] == 0;
+    if (was_free && !in_box && y > y_cut_m_ + r_max_m_) {
       removed_[g] = 1;
       ++chips_.particles;
       chips_.mass_kg += 1 / q.inv_mass[g];
       continue;
     }
-    const bool is_free = !boundary && in_box;
+    if (!boundary && in_box)
+      role[k] = kFree;
+    else if (x >= x0 - f && x <= x1 + f && y >= y0 - f && y <= y1 + f)
+      role[k] = kHeld;
+  }
+  for (auto g : global_of_) local_of_[static_cast<std::size_t>(g)] = -1;
+  global_of_.clear();
+  bond_global_of_.clear();
+  std::vector<std::uint8_t> held;
+  for (std::size_t k = 0; k < candidates.size(); ++k) {
+    const auto gi = candidates[k];
+    const auto g = static_cast<std::size_t>(gi);
+    if (removed_[g]) continue;
+    const bool is_free = role[k] == kFree;
     if (!is_free) q.vx[g] = q.vy[g] = q.omega[g] = 0;  // at rest from now on (until a window frees it)
-    if (!is_free && !(x >= x0 - f && x <= x1 + f && y >= y0 - f && y <= y1 + f)) continue;
+    if (role[k] == kOut) continue;
     local_of_[g] = static_cast<std::int32_t>(global_of_.size());
     global_of_.push_back(gi);
     held.push_back(is_free ? 0 : 1);
@@ -213,11 +229,40 @@ Simulation CutWindow::build(const Simulation* current, double x_edge_m) {
   return sim;
 }
 
+Simulation CutWindow::machined_workpiece() const {
+  SimulationOptions options = full_.options();
+  Simulation out(full_.material(), options);
+  out.types() = full_.types();
+  const Particles& q = full_.particles();
+  std::vector<std::int32_t> index(q.size(), -1);
+  for (std::size_t g = 0; g < q.size(); ++g) {
+    if (removed_[g]) continue;
+    index[g] = out.add_particle(q.x[g], q.y[g], q.radius[g], q.type[g]);
+    Particles& p = out.particles();
+    const auto u = static_cast<std::size_t>(index[g]);
+    p.theta[u] = q.theta[g], p.vx[u] = q.vx[g], p.vy[u] = q.vy[g], p.omega[u] = q.omega[g], p.group[u] = q.group[g];
+  }
+  const BondStore& fb = full_.bonds();
+  const auto stride = static_cast<std::size_t>(fb.stride);
+  for (std::size_t b = 0; b < fb.size(); ++b) {
+    const auto i = index[static_cast<std::size_t>(fb.i[b])], j = index[static_cast<std::size_t>(fb.j[b])];
+    if (!fb.active[b] || i < 0 || j < 0) continue;
+    const auto k = static_cast<std::size_t>(out.install_bond(i, j, fb.ref_distance_m[b], fb.ref_rotation_rad[b]));
+    for (std::size_t e = 0; e < stride; ++e) {
+      out.bonds().bonded[k * stride + e] = fb.bonded[b * stride + e];
+      out.bonds().shear_force_n[k * stride + e] = fb.shear_force_n[b * stride + e];
+    }
+  }
+  for (const Wall& w : full_.walls()) out.add_wall(w);
+  out.cracks() = full_.cracks();  // by place (their joint numbers are the whole workpiece's)
+  return out;
+}
+
 ChipAccount CutWindow::chips() const {
   ChipAccount a = chips_;
   a.cracks = 0;
   const BondStore& b = full_.bonds();
-  for (const auto& e : cracks_) {
+  for (const auto& e : full_.cracks()) {
     const auto k = static_cast<std::size_t>(e.bond);
     if (removed_[static_cast<std::size_t>(b.i[k])] || removed_[static_cast<std::size_t>(b.j[k])]) ++a.cracks;
   }
@@ -227,8 +272,8 @@ ChipAccount CutWindow::chips() const {
 std::string CutWindow::serialize() const {
   std::string out(kWindowMagic);
   serial::Out io{out};
-  io(full_.serialize(), box_, y_top_m_, y_cut_m_, frame_m_, skin_m_, x_built_m_, max_displacement_m_, x0_, removed_,
-     global_of_, bond_global_of_, cracks_, springs_.pairs, springs_.pair_shear_n, springs_.wall_contacts,
+  io(full_.serialize(), box_, y_top_m_, y_cut_m_, frame_m_, skin_m_, r_max_m_, x_built_m_, max_displacement_m_, x0_,
+     removed_, global_of_, bond_global_of_, springs_.pairs, springs_.pair_shear_n, springs_.wall_contacts,
      springs_.wall_shear_n, chips_, rebuilds_, largest_window_, cracks_synced_);
   return out;
 }
@@ -237,8 +282,8 @@ CutWindow CutWindow::deserialize(std::string_view bytes) {
   serial::In io = serial::open_tagged(bytes, kWindowMagic, "window state");
   CutWindow w;
   std::string full;
-  io(full, w.box_, w.y_top_m_, w.y_cut_m_, w.frame_m_, w.skin_m_, w.x_built_m_, w.max_displacement_m_, w.x0_,
-     w.removed_, w.global_of_, w.bond_global_of_, w.cracks_, w.springs_.pairs, w.springs_.pair_shear_n,
+  io(full, w.box_, w.y_top_m_, w.y_cut_m_, w.frame_m_, w.skin_m_, w.r_max_m_, w.x_built_m_, w.max_displacement_m_,
+     w.x0_, w.removed_, w.global_of_, w.bond_global_of_, w.springs_.pairs, w.springs_.pair_shear_n,
      w.springs_.wall_contacts, w.springs_.wall_shear_n, w.chips_, w.rebuilds_, w.largest_window_, w.cracks_synced_);
   io.expect_end("window state");
   w.full_ = Simulation::deserialize(full);
@@ -248,7 +293,7 @@ CutWindow CutWindow::deserialize(std::string_view bytes) {
   };
   if (w.x0_.size() != n || w.removed_.size() != n || !in_range(w.global_of_, n) ||
       !in_range(w.bond_global_of_, w.full_.bonds().size()) ||
-      !std::all_of(w.cracks_.begin(), w.cracks_.end(), [&](const CrackEvent& e) {
+      !std::all_of(w.full_.cracks().begin(), w.full_.cracks().end(), [&](const CrackEvent& e) {
         return e.bond >= 0 && static_cast<std::size_t>(e.bond) < w.full_.bonds().size();
       }))
     throw ModelError("dem", "corrupt window state");

@@ -10,8 +10,9 @@
 // Every `shift` of tool travel the window is rebuilt around the edge: the running simulation's disks,
 // joints, cracks and contact springs go back to the reservoir, and a new simulation is built from it, the
 // shear springs of the unjointed contacts carried over. A disk the window leaves behind is frozen where it
-// is (velocity zero): the machined workpiece. A free disk that leaves the box above the uncut surface is a
-// chip: removed from the simulation and counted (disks, mass, and the cracks of the joints it carried).
+// is (velocity zero): the machined workpiece. A free disk that leaves the box more than a largest radius
+// above the cut line is chip or debris (the tool has passed there): removed from the simulation and counted
+// (disks, mass, and the cracks of the joints it carried).
 // Disks ahead of the window have never moved. So the cost per step is that of the window, whatever the
 // workpiece's length.
 #include <cstdint>
@@ -55,7 +56,9 @@ class CutWindow {
   /// The whole workpiece as of the last sync.
   const Simulation& workpiece() const { return full_; }
   /// Every crack of the cut so far (joint indices of the whole workpiece), as of the last sync.
-  const std::vector<CrackEvent>& cracks() const { return cracks_; }
+  const std::vector<CrackEvent>& cracks() const { return full_.cracks(); }
+  /// The workpiece as the cut left it, without the removed chips (for pictures).
+  Simulation machined_workpiece() const;
   /// The chips removed so far, with the cracks they carried.
   ChipAccount chips() const;
   std::size_t rebuilds() const { return rebuilds_; }
@@ -68,17 +71,16 @@ class CutWindow {
   void index_reservoir();
   Simulation full_{Material{}, SimulationOptions{}};
   CutWindowBox box_;
-  double y_top_m_ = 0, y_cut_m_ = 0, frame_m_ = 0, skin_m_ = 0;
+  double y_top_m_ = 0, y_cut_m_ = 0, frame_m_ = 0, skin_m_ = 0, r_max_m_ = 0;
   double x_built_m_ = 0;           ///< the edge's x when the window was last built
   double max_displacement_m_ = 0;  ///< largest |x - x0| of a disk written back (widens the reservoir search)
   std::vector<double> x0_;         ///< each disk's x in the uncut workpiece
   std::vector<std::uint8_t> removed_;                ///< per disk: removed as a chip
   std::vector<std::int32_t> global_of_, bond_global_of_;  ///< the window's disks and joints in the workpiece
-  std::vector<CrackEvent> cracks_;
   ContactSprings springs_;         ///< of the last sync, by workpiece index
   ChipAccount chips_;
   std::size_t rebuilds_ = 0, largest_window_ = 0;
-  std::size_t cracks_synced_ = 0;  ///< the running window's cracks already in cracks_
+  std::size_t cracks_synced_ = 0;  ///< the running window's cracks already moved to the workpiece's
   // Derived from the above (not stored): disks by x0, joints per disk.
   std::vector<std::int32_t> by_x0_, bond_start_, bond_list_;
   std::vector<std::int32_t> local_of_;  ///< per workpiece disk: its index in the window, or -1

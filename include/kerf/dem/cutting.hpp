@@ -192,8 +192,11 @@ class CutRun {
   bool finished() const { return finished_; }
   /// The simulation that runs: the whole workpiece, or the active window of a windowed cut.
   const Simulation& simulation() const { return sim_; }
-  /// The whole workpiece (a windowed cut's as of its last rebuild, and whole once finished).
-  const Simulation& workpiece() const { return window_ ? window_->workpiece() : sim_; }
+  /// The whole workpiece (a windowed cut's as of its last rebuild, and whole once finished, its removed
+  /// chips left out), for pictures.
+  Simulation workpiece() const { return window_ ? window_->machined_workpiece() : sim_; }
+  /// The active window (null without one).
+  const CutWindow* window() const { return window_ ? &*window_ : nullptr; }
   /// Every crack of the cut (a windowed cut's as of its last rebuild, and all once finished).
   const std::vector<CrackEvent>& cracks() const { return window_ ? window_->cracks() : sim_.cracks(); }
   /// Cracks so far, the running window's included.
