@@ -635,7 +635,7 @@ Json write_study_outputs(const StudySpec& spec, const StudyScheduler& scheduler,
     const std::string& key = spec.varied_keys[ki];
     for (const std::string& n : names) {
       FigureSpec fig;
-      fig.title = fmt::format("{} against {} (95 % intervals)", n, key);
+      fig.title = "mean and 95 % interval over the packings";
       fig.x_label = key;
       fig.y_label = n;
       std::map<std::string, std::size_t> series_of;

@@ -199,7 +199,11 @@ StudyOutcome run_study_mpi(const fs::path& study_file, const StudyOptions& optio
   if (rank == 0) {
     std::cout << fmt::format("study: {} conditions over {} worker ranks, {} threads each (rank 0 coordinates)\n",
                              spec->conditions.size(), mpi.size() - 1, threads);
-    return coordinate(*spec, options, mpi.size());
+    // Open MPI gives a rank's stdout a pseudo-terminal and forwards it: plain lines, never a redrawn one.
+    StudyOptions logged = options;
+    logged.log_lines = true;
+    logged.show_progress = false;
+    return coordinate(*spec, logged, mpi.size());
   }
   try {
     work(*spec, options, rank, threads);
