@@ -137,6 +137,24 @@ wait $pid 2>/dev/null  # bash reports the kill; the rest of the test is quiet
 grep -Eq "10 items \(0 failed, [3-9] reused\)" "$work/log" || fail "rerun after kill did not reuse the finished items: $(tail -1 "$work/log")"
 same_tables "$work/full" "$work/killed" "killed and rerun vs uninterrupted"
 [ -z "$(ls -a "$work/killed/items" | grep partial)" ] || fail "a killed item's partial directory was left: $(ls -a "$work/killed/items")"
+if [ $with_mpi -eq 1 ]; then
+  # The same under mpirun, stopped as a batch system stops a job (SIGTERM to mpirun, which gives its ranks about a
+  # second), rerun on 3 ranks: the tables of an uninterrupted run on one machine.
+  sed 's/"count": 5/"count": 8/; s/"sleep_s": 0.15/"sleep_s": 0.4/' "$work/slow.json" >"$work/slower.json"
+  "$bin" study "$work/slower.json" --out "$work/mfull" --threads 2 >/dev/null 2>&1 || fail "uninterrupted slower study"
+  "${mpi[@]}" -np 3 "$bin" study "$work/slower.json" --out "$work/mkilled" >/dev/null 2>&1 &
+  pid=$!
+  for _ in $(seq 1000); do [ "$(ls "$work/mkilled/items" 2>/dev/null | wc -l)" -ge 2 ] && break; sleep 0.01; done
+  kill -TERM $pid 2>/dev/null || fail "mpirun ended before it could be stopped"
+  wait $pid 2>/dev/null
+  [ ! -e "$work/mkilled/items.csv" ] || fail "the stopped MPI study had already finished"
+  n_items=$(ls "$work/mkilled/items" | wc -l)
+  sleep 1
+  [ "$(ls "$work/mkilled/items" | wc -l)" -eq "$n_items" ] || fail "ranks went on after mpirun was stopped"
+  "${mpi[@]}" -np 3 "$bin" study "$work/slower.json" --out "$work/mkilled" >"$work/log" 2>&1 || fail "MPI rerun after stop: $(tail -2 "$work/log")"
+  grep -Eq "16 items \(0 failed, ([2-9]|1[0-5]) reused\)" "$work/log" || fail "MPI rerun did not reuse the finished items: $(tail -1 "$work/log")"
+  same_tables "$work/mfull" "$work/mkilled" "MPI: stopped and rerun vs uninterrupted (no MPI)"
+fi
 
 # A bad override fails the items of its condition (recorded in items.csv, exit 3); the others run.
 cat >"$work/bad_item.json" <<EOF
