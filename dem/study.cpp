@@ -285,12 +285,14 @@ StudyItemResult run_study_item(const StudySpec& spec, const StudyItem& item, con
         const Json old = read_json_file(summary_file.string());
         const Json& mark = old.at("study_item");
         if (mark.at("scene") == doc) {
-          r.ok = true;
           r.reused = true;
-          r.results = numeric_results(old);
           r.wall_time_s = mark.at("wall_time_s").get<double>();
           r.host = mark.at("host").get<std::string>();
           r.rank = mark.at("rank").get<int>();
+          const int status = mark.value("exit_status", 0);
+          r.ok = status == 0;
+          if (r.ok) r.results = numeric_results(old);
+          else r.error = fmt::format("the run ended with exit status {} (a calibration that did not converge)", status);
           return r;
         }
       } catch (const std::exception&) {
@@ -314,13 +316,17 @@ StudyItemResult run_study_item(const StudySpec& spec, const StudyItem& item, con
     summary["study_item"] = Json{{"condition", item.condition + 1}, {"replicate", item.replicate + 1},
                                  {"seed", item.seed},        {"scene", doc},
                                  {"wall_time_s", r.wall_time_s}, {"host", r.host},
-                                 {"rank", rank},             {"threads", std::max(1, threads)}};
+                                 {"rank", rank},             {"threads", std::max(1, threads)},
+                                 {"exit_status", outcome.exit_status}};
     write_file_atomically(partial / "summary.json", summary.dump(2) + "\n");
     // Whole or not at all: the finished directory replaces a stale one in one rename.
     fs::remove_all(final_dir, error);
     fs::rename(partial, final_dir);
-    r.ok = true;
-    r.results = numeric_results(summary);
+    // A run that finished with a status of its own (a calibration that did not converge) is kept, but its
+    // results are not a sample of the condition.
+    r.ok = outcome.exit_status == 0;
+    if (r.ok) r.results = numeric_results(summary);
+    else r.error = fmt::format("the run ended with exit status {} (a calibration that did not converge)", outcome.exit_status);
   } catch (const std::exception& e) {
     std::error_code ignored;
     fs::remove_all(partial, ignored);
@@ -453,12 +459,21 @@ StudyProgress::StudyProgress(const StudyOptions& options, int workers)
       start_(std::chrono::steady_clock::now()),
       last_draw_(start_) {}
 
+namespace {
+/// "45 s", "12 min", "3.4 h".
+std::string duration_text(double s) {
+  if (s < 120) return fmt::format("{:.0f} s", s);
+  if (s < 7200) return fmt::format("{:.0f} min", s / 60);
+  return fmt::format("{:.1f} h", s / 3600);
+}
+}  // namespace
+
 std::string StudyProgress::line(const StudyScheduler& s) const {
   std::string text = fmt::format("study: {} done, {} running, {} queued", s.done(), s.running(), s.queued());
   if (s.mean_item_wall_s() > 0) {
     const double left = s.mean_item_wall_s() * (static_cast<double>(s.queued()) + 0.5 * static_cast<double>(s.running())) /
                         workers_;
-    text += fmt::format(", ETA {:.0f} s", left);
+    text += ", ETA " + duration_text(left);
   }
   return text;
 }
