@@ -725,9 +725,7 @@ Json write_study_outputs(const StudySpec& spec, const StudyScheduler& scheduler,
 StudyOutcome run_study_local(const StudySpec& spec, const StudyOptions& options) {
   const OutputManifest hold(options.out, /*fresh=*/true);  // writable? (exit 4 before any work)
   const auto start = std::chrono::steady_clock::now();
-  fs::create_directories(options.out / "items");
-  for (const auto& entry : fs::directory_iterator(options.out / "items"))  // a killed run's items in flight
-    if (entry.path().filename().string().rfind(".partial-", 0) == 0) fs::remove_all(entry.path());
+  prepare_study_directory(options.out);
   StudyScheduler scheduler(spec);
   const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
   const std::size_t first_wave = scheduler.queued();
@@ -767,10 +765,22 @@ StudyOutcome run_study_local(const StudySpec& spec, const StudyOptions& options)
   if (failure) std::rethrow_exception(failure);
   progress.finish(scheduler);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  StudyOutcome outcome{0, write_study_outputs(spec, scheduler, options, wall, side_by_side)};
+  return finish_study(spec, scheduler, options, wall, side_by_side, "");
+}
+
+void prepare_study_directory(const fs::path& out) {
+  fs::create_directories(out / "items");
+  for (const auto& entry : fs::directory_iterator(out / "items"))  // a killed run's items in flight
+    if (entry.path().filename().string().rfind(".partial-", 0) == 0) fs::remove_all(entry.path());
+}
+
+StudyOutcome finish_study(const StudySpec& spec, const StudyScheduler& scheduler, const StudyOptions& options,
+                          double wall_time_s, int workers, const std::string& where) {
+  StudyOutcome outcome{0, write_study_outputs(spec, scheduler, options, wall_time_s, workers)};
   const std::size_t failed = outcome.summary["items_failed"].get<std::size_t>();
-  std::cout << fmt::format("study: {} items ({} failed, {} reused) in {:.1f} s -> {}\n", outcome.summary["items"].get<std::size_t>(),
-                           failed, outcome.summary["items_reused"].get<std::size_t>(), wall, options.out.string());
+  std::cout << fmt::format("study: {} items ({} failed, {} reused){} in {:.1f} s -> {}\n",
+                           outcome.summary["items"].get<std::size_t>(), failed,
+                           outcome.summary["items_reused"].get<std::size_t>(), where, wall_time_s, options.out.string());
   if (failed > 0) outcome.exit_status = kExitModelError;
   return outcome;
 }

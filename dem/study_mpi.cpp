@@ -146,13 +146,7 @@ StudyOutcome coordinate(const StudySpec& spec, const StudyOptions& options, int 
   }
   progress.finish(scheduler);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  StudyOutcome outcome{0, write_study_outputs(spec, scheduler, options, wall, size - 1)};
-  const std::size_t failed = outcome.summary["items_failed"].get<std::size_t>();
-  std::cout << fmt::format("study: {} items ({} failed, {} reused) on {} worker ranks in {:.1f} s -> {}\n",
-                           outcome.summary["items"].get<std::size_t>(), failed,
-                           outcome.summary["items_reused"].get<std::size_t>(), size - 1, wall, options.out.string());
-  if (failed > 0) outcome.exit_status = kExitModelError;
-  return outcome;
+  return finish_study(spec, scheduler, options, wall, size - 1, fmt::format(" on {} worker ranks", size - 1));
 }
 
 void work(const StudySpec& spec, const StudyOptions& options, int rank, int threads) {
@@ -187,9 +181,7 @@ StudyOutcome run_study_mpi(const fs::path& study_file, const StudyOptions& optio
     spec.emplace(read_study(read_json_file(study_file.string()), study_file));
     if (rank == 0) {
       hold.emplace(options.out, /*fresh=*/true);
-      fs::create_directories(options.out / "items");
-      for (const auto& entry : fs::directory_iterator(options.out / "items"))  // a killed run's items in flight
-        if (entry.path().filename().string().rfind(".partial-", 0) == 0) fs::remove_all(entry.path());
+      prepare_study_directory(options.out);
     }
   } catch (...) {
     status = status_of_current_exception();

@@ -168,6 +168,13 @@ StudyOutcome run_study_local(const StudySpec& spec, const StudyOptions& options)
 Json write_study_outputs(const StudySpec& spec, const StudyScheduler& scheduler, const StudyOptions& options,
                          double wall_time_s, int workers);
 
+/// Creates DIR/items and removes the partial item directories a killed run left there (before any item runs).
+void prepare_study_directory(const std::filesystem::path& out);
+/// The study's end, on one machine or on MPI's rank 0: writes the outputs, prints the closing line, and gives
+/// the exit status (kExitModelError when some item failed).
+StudyOutcome finish_study(const StudySpec& spec, const StudyScheduler& scheduler, const StudyOptions& options,
+                          double wall_time_s, int workers, const std::string& where);
+
 /// The study's progress for a terminal (one line redrawn) or a log (a line per finished item).
 class StudyProgress {
  public:
