@@ -70,7 +70,7 @@ const FieldTable<StudyReplicates>& study_replicates_fields() {
       int_field("max_count", 2, 100000, "adaptive: packings at most (the condition stops there, target met or not)",
                 &StudyReplicates::max_count),
       number_field("target_relative_sem_percent", units::kPercent, Range{0.0, 100.0, true, false},
-                   "adaptive: the relative standard error of the mean (sample std / sqrt(n) / |mean|) to reach",
+                   "adaptive: the relative standard error of the mean (sample std / sqrt(n) / abs(mean)) to reach",
                    &StudyReplicates::target_relative_sem)};
   return table;
 }
@@ -786,6 +786,8 @@ StudyOutcome finish_study(const StudySpec& spec, const StudyScheduler& scheduler
 }
 
 StudyOutcome run_study(const fs::path& study_file, const StudyOptions& options) {
+  std::error_code error;
+  if (!fs::is_regular_file(study_file, error)) throw InputError("study", study_file.string(), "a study JSON file");
   if (study_mpi_built() && study_mpi_launched()) return run_study_mpi(study_file, options);
   const StudySpec spec = read_study(read_json_file(study_file.string()), study_file);
   return run_study_local(spec, options);

@@ -181,6 +181,7 @@ bad() {  # bad <expected text> <study JSON>
 }
 tension="\"scene\": \"$src_abs/data/scenes/dem_tension.json\""
 bad "kerf-dem: error: scene = (missing)" '{"replicates": {"count": 2}}'
+expect_input_error "kerf-dem: error: study = $work/none.json: expected a study JSON file" study "$work/none.json" --out "$work/bad_out"
 bad "kerf-dem: error: scene = nowhere.json: expected an existing scene file" '{"scene": "nowhere.json"}'
 bad "did you mean 'conditions'" "{$tension, \"condtions\": {}}"
 bad "kerf-dem: error: conditions = " "{$tension, \"conditions\": {\"grid\": {\"a.b\": [1]}, \"list\": [{\"a.b\": 1}]}}"

@@ -45,7 +45,8 @@ enum class ReplicatePolicy { fixed, adaptive };
 struct StudyReplicates {
   ReplicatePolicy policy = ReplicatePolicy::fixed;
   int count = 1;                      ///< fixed: packings per condition
-  int min_count = 3;                  ///< adaptive: packings before the first test of the target
+  int min_count = 5;                  ///< adaptive: packings before the first test of the target (fewer may stop
+                                      ///< on a lucky few that agree)
   int max_count = 30;                 ///< adaptive: packings at most
   double target_relative_sem = 0.05;  ///< adaptive: sem / |mean| to reach (fraction; key in %)
   std::vector<std::string> results;   ///< adaptive: the summary results the target applies to
