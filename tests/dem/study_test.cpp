@@ -128,7 +128,7 @@ TEST_CASE("study: fixed counts hand out each item once, seeds base + k") {
   CHECK_FALSE(s.finished());
 }
 
-TEST_CASE("study: a failed item ends its adaptive condition there; a missing target result fails the item") {
+TEST_CASE("study: a failed item ends its adaptive condition there and a missing target result fails the item") {
   StudySpec spec = adaptive_spec(2);
   // Condition 0's third packing fails: the condition stops with 3 items, the last one failed.
   StudyScheduler s(spec);
@@ -150,7 +150,7 @@ TEST_CASE("study: a failed item ends its adaptive condition there; a missing tar
   CHECK(rows[0].error.find("x, y") != std::string::npos);  // and names the results there are
 }
 
-TEST_CASE("study: the grid is every combination, first key slowest; a list keeps its order") {
+TEST_CASE("study: the grid is every combination (first key slowest) and a list keeps its order") {
   const Json grid = Json::parse(R"({"scene": {"kind": "tension"},
       "conditions": {"grid": {"loading.speed_m_per_s": [0.1, 0.2, 0.3], "specimen.seed": [4, 5]}}})");
   const StudySpec s = read_study(grid, "study.json");
