@@ -5,7 +5,8 @@
 set -euo pipefail
 packages=(build-essential cmake ninja-build pkg-config libeigen3-dev libgsl-dev libboost-dev libfmt-dev
   catch2 nlohmann-json3-dev libcli11-dev libplplot-dev plplot-driver-cairo python3
-  python3-dev python3-pybind11 python3-numpy python3-pytest python3-matplotlib python3-vtk9)
+  python3-dev python3-pybind11 python3-numpy python3-pytest python3-matplotlib python3-vtk9
+  libopenmpi-dev openmpi-bin)
 [ "${1:-}" = "--sanitize" ] && packages+=(clang libomp-dev libclang-rt-dev)
 missing=()
 for p in "${packages[@]}"; do

@@ -9,9 +9,12 @@ build="${KERF_SANITIZE_BUILD_DIR:-$root/build-san}"
 seconds="${KERF_FUZZ_SECONDS:-60}"
 bash "$root/scripts/install-deps.sh" --sanitize
 # -O1 with little debug info: a sanitized build of everything in about the time of the normal one.
+# Without MPI: Open MPI's runtime leaks about 115 KB in 3350 allocations by MPI_Finalize, from components it has
+# already unloaded, which LeakSanitizer cannot name for a suppression (a 15-line MPI program under mpirun -np 3,
+# 2026-11-25); kerf-dem study's MPI transport is tested by the normal build (tests/cli/dem_study_cli.sh).
 CC=clang CXX=clang++ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DKERF_SANITIZE=ON -DKERF_FUZZ=ON -DKERF_BUILD_BENCH=OFF \
-  -DKERF_BUILD_PYTHON=OFF \
+  -DKERF_BUILD_PYTHON=OFF -DKERF_WITH_MPI=OFF \
   -DKERF_WERROR="${KERF_WERROR:-OFF}" >/dev/null
 cmake --build "$build" --parallel "$(nproc)"
 # LeakSanitizer stays on (but for the font libraries' process-long caches); any report fails the process.

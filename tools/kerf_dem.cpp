@@ -5,6 +5,8 @@
 //                [--log-every N]   (log lines on stdout when it is not a terminal)
 //   kerf-dem resume DIR [--threads N]
 //   kerf-dem keys [SECTION]      the Markdown key table of every scene section (docs/dem.md), or of one
+//   kerf-dem study STUDY.json --out DIR [--threads N] [--threads-per-rank N]
+//                a study (kerf/dem/study.hpp); under `mpirun -np N` across ranks (built with MPI)
 //
 // Exit status 2 for bad input (the message names the field, the value and what was expected), 3 when the
 // model fails (e.g. an unstable run, a calibration that does not converge, a damaged checkpoint), 4 when an
@@ -22,6 +24,8 @@
 
 #include "kerf/dem/run_log.hpp"
 #include "kerf/dem/scene.hpp"
+#include "kerf/dem/study.hpp"
+#include "kerf/dem/study_mpi.hpp"
 #include "kerf/error.hpp"
 #include "kerf/json_reader.hpp"
 #include "kerf/version.hpp"
@@ -95,6 +99,19 @@ int main(int argc, char** argv) {
   auto* keys = app.add_subcommand("keys", "print the Markdown key table of the scene sections (docs/dem.md)");
   keys->add_option("section", section, "one section (" + fmt::format("{}", fmt::join(kerf::dem::scene_sections(), ", ")) +
                                             "; default: all)");
+  std::string study_path;
+  kerf::dem::StudyOptions study_options;
+  auto* study = app.add_subcommand(
+      "study", std::string("run a study: a scene under several conditions, each on several packings (") +
+                   (kerf::dem::study_mpi_built() ? "under mpirun -np N: across ranks" : "built without MPI: this machine") +
+                   ")");
+  study->add_option("study", study_path, "study JSON file (keys: kerf-dem keys study)")->required();
+  study->add_option("--out", out_dir, "output directory (default: out); items are reused from it on a rerun");
+  study->add_option("--threads", threads, "on one machine: threads in all, items side by side (default: all)")
+      ->check(CLI::Range(1, 1024));
+  study->add_option("--threads-per-rank", study_options.threads_per_rank,
+                    "under mpirun: OpenMP threads of each worker rank (default: the cores the launcher gives it)")
+      ->check(CLI::Range(1, 1024));
   const auto error = [](const std::string& what, int status) {
     std::cerr << kProgram << ": error: " << kerf::printable(what) << "\n";
     return status;
@@ -113,6 +130,13 @@ int main(int argc, char** argv) {
         return kerf::dem::resume_scene(resume_dir, true, on_progress).exit_status;
       });
     if (out_dir.empty()) throw kerf::InputError("--out", "\"\"", "a directory name");
+    if (study->parsed()) {
+      study_options.out = out_dir;
+      study_options.threads = threads;
+      study_options.log_lines = !isatty(STDOUT_FILENO);
+      study_options.command_line = kerf::command_line(argc, argv);
+      return kerf::dem::run_study(study_path, study_options).exit_status;
+    }
     options.out = out_dir;
     options.command_line = kerf::command_line(argc, argv);
     return run_command(scene_path, sets, options, log_every);

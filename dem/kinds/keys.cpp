@@ -7,6 +7,7 @@
 #include "common.hpp"
 #include "kerf/dem/lab_test.hpp"
 #include "kerf/dem/material.hpp"
+#include "kerf/dem/study.hpp"
 #include "kerf/error.hpp"
 
 namespace kerf::dem {
@@ -34,7 +35,9 @@ const std::vector<SectionKeys>& sections() {
       {"calibration", "calibrate", kinds::calibrate_keys_markdown},
       {"calibration.targets", "calibrate", kinds::calibrate_targets_keys_markdown},
       {"calibration", "calibrate_cut", kinds::calibrate_cut_keys_markdown},
-      {"output", "every kind", [] { return fields_markdown(output_fields()); }}};
+      {"output", "every kind", [] { return fields_markdown(output_fields()); }},
+      {"study", "a study file of `kerf-dem study`, not a scene", study_keys_markdown},
+      {"study.replicates", "a study file: the packings per condition", study_replicates_keys_markdown}};
   return list;
 }
 

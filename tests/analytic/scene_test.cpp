@@ -337,7 +337,7 @@ TEST_CASE("The stagnation cut-off holds for the whole tool: a rake face below it
   CHECK(previous_edge == 0.0);
 }
 
-TEST_CASE("A contact-length variant outside its domain is not applicable; the rest goes on", "[scene][issue22]") {
+TEST_CASE("A contact-length variant outside its domain is not applicable, the rest goes on", "[scene][issue22]") {
   // Issue 22 reproducer 4: a2024_planing at rake -60 deg: the MSSP shear angle is -26.3 deg.
   Json doc = kerf::read_json_file(std::string(KERF_SOURCE_DIR) + "/data/scenes/a2024_planing.json");
   doc["tool"]["rake_deg"] = -60.0;

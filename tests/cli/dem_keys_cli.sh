@@ -10,7 +10,7 @@ forces="$1/kerf-forces"
 "$bin" keys >"$work/keys.md" || fail "kerf-dem keys failed"
 sed -n '/<!-- kerf-dem keys: begin -->/,/<!-- kerf-dem keys: end -->/p' "$src/docs/dem.md" | sed '1d;$d' >"$work/doc.md"
 diff -u "$work/doc.md" "$work/keys.md" >"$work/diff" || fail "docs/dem.md's key tables differ from kerf-dem keys: $(head -20 "$work/diff")"
-for section in material specimen engine loading cut tool grooves calibration calibration.targets output; do
+for section in material specimen engine loading cut tool grooves calibration calibration.targets output study study.replicates; do
   grep -q "^#### \`$section\`" "$work/keys.md" || fail "no key table for $section"
 done
 "$bin" keys cut | grep -q '`depth_of_cut_mm` | mm |' || fail "keys cut: no depth_of_cut_mm row"

@@ -70,7 +70,7 @@ TEST_CASE("field table: unknown keys, ranges and choices are input errors naming
   CHECK(message({{"shape", "rectangle"}}).find("did you mean 'rectangular'") != std::string::npos);
 }
 
-TEST_CASE("field table: check_fields names the key; with_path adds the JSON path") {
+TEST_CASE("field table: check_fields names the key, with_path adds the JSON path") {
   Params p;
   p.count = 0;
   CHECK_THROWS_WITH(kerf::check_fields(table(), p), "count = 0: expected an integer in [1, 16]");

@@ -37,7 +37,7 @@ void check_same_json(const Json& a, const Json& b) {
 }
 }  // namespace
 
-TEST_CASE("scene: the registry constructs every registered kind; an unknown kind lists the valid ones", "[scene]") {
+TEST_CASE("scene: the registry constructs every registered kind, an unknown kind lists the valid ones", "[scene]") {
   const std::vector<std::string> names = scene_kind_names();
   CHECK(names == std::vector<std::string>{"specimen", "tension", "compression", "calibrate", "cut", "calibrate_cut"});
   for (const auto& name : names) CHECK(make_scene_kind(name) != nullptr);
