@@ -79,4 +79,11 @@ BatchMeans batch_means(std::span<const double> x) {
   return r;
 }
 
+double standard_error_of_mean(std::span<const double> sems) {
+  if (sems.empty()) return std::numeric_limits<double>::quiet_NaN();
+  double sum2 = 0;
+  for (double s : sems) sum2 += s * s;
+  return std::sqrt(sum2) / static_cast<double>(sems.size());
+}
+
 }  // namespace kerf

@@ -16,6 +16,7 @@
 #include "kerf/error.hpp"
 #include "kerf/io.hpp"
 #include "kerf/metrics.hpp"
+#include "kerf/time_series.hpp"
 #include "kerf/units.hpp"
 
 namespace kerf::dem::kinds {
@@ -111,7 +112,9 @@ Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& d
                                      res.particle_steps / (static_cast<double>(res.samples.size() - 1) * cut.sample_every_steps)},
                                     {"chip_particles_removed", res.window.chips.particles},
                                     {"chip_mass_removed_kg", res.window.chips.mass_kg},
-                                    {"chip_cracks_removed", res.window.chips.cracks}};
+                                    {"chip_cracks_removed", res.window.chips.cracks},
+                                    // Cracks are found only inside the window: a damage depth near this is censored.
+                                    {"damage_depth_limit_um", units::m_to_um(cut.window_below_depths * cut.depth_of_cut_m)}};
   }
   write_file_atomically(out / "forces.csv", cut_forces_csv(res));
   write_file_atomically(out / "cracks.csv", cracks_csv(run.cracks(), res.y_cut_m));
@@ -289,6 +292,14 @@ SceneOutcome run_cut_replicates(const SceneCommon& common, const CutParams& cut,
   const double root_n = std::sqrt(static_cast<double>(replicates));
   stats["main_force_sem_N"] = stats["main_force_replicate_std_N"].get<double>() / root_n;
   stats["thrust_force_sem_N"] = stats["thrust_force_replicate_std_N"].get<double>() / root_n;
+  // And from the cuts' own signals, sqrt(sum sem_k^2) / n: the error of the mean of long steady cuts, which
+  // (unlike the replicate spread of a few cuts) has many batches behind it; null when a cut has none.
+  for (const std::string force : {"main_force", "thrust_force"}) {
+    std::vector<double> sems;
+    for (const auto& row : list)
+      sems.push_back(row[force + "_sem_N"].is_number() ? row[force + "_sem_N"].get<double>() : std::nan(""));
+    stats[force + "_sem_within_cuts_N"] = finite_or_null(standard_error_of_mean(sems));
+  }
   stats["width_mm"] = list[0]["width_mm"];
   summary["cut"] = cut_params_to_json(cut);
   summary["replicates"] = list;

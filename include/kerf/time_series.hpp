@@ -46,4 +46,8 @@ double statistical_inefficiency(std::span<const double> x, bool* converged = nul
 /// Mean and its batch-means standard error (see the top of this header).
 BatchMeans batch_means(std::span<const double> x);
 
+/// The standard error of the mean of n independent estimates with standard errors `sems`: sqrt(sum s_k^2) / n
+/// (replicate cuts, each with its own error bar). NaN when `sems` is empty or holds a NaN.
+double standard_error_of_mean(std::span<const double> sems);
+
 }  // namespace kerf

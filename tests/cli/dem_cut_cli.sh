@@ -66,6 +66,16 @@ for f in summary.json replicate_1/forces.csv replicate_2/forces.csv replicate_2/
 done
 grep -q '"seed": 2' "$work/r/replicate_2/summary.json" || fail "replicate 2 does not use seed 2"
 in_range "$(result "$work/r" main_force_replicate_std_N)" 0 1e4 || fail "main_force_replicate_std_N"
+# The standard error from the cuts' own signals: sqrt(sum sem_k^2) / n, null when a cut has none.
+python3 - "$work/r/summary.json" <<'PY' || fail "main_force_sem_within_cuts_N is not sqrt(sum sem_k^2) / n"
+import json, math, sys
+s = json.load(open(sys.argv[1]))
+for key in ("main_force", "thrust_force"):
+    sems = [row[key + "_sem_N"] for row in s["replicates"]]
+    got = s["results"][key + "_sem_within_cuts_N"]
+    want = None if None in sems else math.sqrt(sum(x * x for x in sems)) / len(sems)
+    assert (got is None and want is None) or abs(got - want) <= 1e-12 * want, (key, got, want)
+PY
 # One cut on a team of two threads (every engine loop split, even on this small workpiece: moving tool
 # walls, breaks, neighbour rebuilds): the same forces and cracks as on one thread, to the bit.
 OMP_WAIT_POLICY=passive "$bin" run "$scene" "${small[@]}" --set engine.min_parallel_items=0 --out "$work/c2" \

@@ -96,3 +96,30 @@ TEST_CASE("batch means: too short a series gives no standard error, a constant o
   CHECK(flat.standard_error == 0.0);
   CHECK(std::isnan(kerf::batch_means(std::vector<double>{}).mean));
 }
+
+TEST_CASE("standard error of the mean of independent estimates: sqrt(sum s^2) / n") {
+  const std::vector<double> two{3.0, 4.0};
+  CHECK_THAT(kerf::standard_error_of_mean(two), WithinRel(2.5, 1e-15));
+  // n equal errors s: s / sqrt(n), the error of a mean of n independent estimates.
+  const std::vector<double> four(4, 0.6);
+  CHECK_THAT(kerf::standard_error_of_mean(four), WithinRel(0.3, 1e-15));
+  CHECK(std::isnan(kerf::standard_error_of_mean(std::vector<double>{})));
+  CHECK(std::isnan(kerf::standard_error_of_mean(std::vector<double>{1.0, std::nan("")})));
+  // Against realisations: the spread of the mean of AR(1) series' means equals the combined batch-means errors.
+  std::vector<double> means, sems;
+  for (unsigned r = 0; r < 200; ++r) {
+    std::vector<double> m, s;
+    for (unsigned k = 0; k < 3; ++k) {
+      const auto b = kerf::batch_means(ar1(0.8, 4000, 1000 + 3 * r + k));
+      m.push_back(b.mean);
+      s.push_back(b.best_standard_error());
+    }
+    means.push_back((m[0] + m[1] + m[2]) / 3);
+    sems.push_back(kerf::standard_error_of_mean(s));
+  }
+  double mean = 0, var = 0, sem = 0;
+  for (double v : means) mean += v / 200;
+  for (double v : means) var += (v - mean) * (v - mean) / 199;
+  for (double v : sems) sem += v / 200;
+  CHECK_THAT(sem, WithinRel(std::sqrt(var), 0.15));
+}
