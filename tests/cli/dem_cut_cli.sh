@@ -28,6 +28,17 @@ expect_input_error "cut.length_mm = 1: expected a travel of at most" run "$scene
 for f in summary.json forces.csv cracks.csv result.pvd frame_0000.vtp cracks_0000.vtp specimen.png forces.png; do
   [ -s "$work/c1/$f" ] || fail "missing $f"
 done
+# The bundled steady-state scene, shrunk: its active window runs and is reported.
+"$bin" run "$src/data/scenes/dem_cut_steady.json" "${small[@]}" --set specimen.width_mm=0.8 --set cut.length_mm=0.3 \
+    --set cut.window_mm=0.1 --set cut.entry_fraction=0.25 --out "$work/steady" --threads 1 >/dev/null 2>"$work/err" ||
+  fail "steady scene: $(cat "$work/err")"
+python3 - "$work/steady/summary.json" <<'PY' || fail "steady scene: no active window in the summary"
+import json, sys
+s = json.load(open(sys.argv[1]))
+w = s["active_window"]
+assert s["cut"]["active_window"]["enabled"] is True
+assert w["rebuilds"] >= 20 and 0 < w["mean_window_particles"] < s["n_particles"], w
+PY
 head -1 "$work/c1/forces.csv" | grep -qx "tool_travel_mm,time_s,main_force_N,thrust_force_N" || fail "forces.csv header"
 head -1 "$work/c1/cracks.csv" | grep -qx "time_s,x_mm,y_mm,orientation_deg,length_um,mode,bond,element,place" || fail "cracks.csv header"
 grep -q ",chip$" "$work/c1/cracks.csv" || fail "no chip cracks in cracks.csv"
