@@ -21,7 +21,7 @@ cmake --build "$build" --parallel "$(nproc)"
 export ASAN_OPTIONS="halt_on_error=1:detect_stack_use_after_return=0"
 export LSAN_OPTIONS="suppressions=$root/scripts/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-ctest --test-dir "$build" --output-on-failure --parallel "$(nproc)" --label-exclude long  # minutes uninstrumented
+ctest --test-dir "$build" --output-on-failure --parallel "$(nproc)"
 corpus="$build/fuzz-corpus"
 rm -rf "$corpus" && mkdir -p "$corpus/scene" "$corpus/checkpoint"
 cp "$root"/data/scenes/*.json "$corpus/scene/"
