@@ -6,6 +6,7 @@
 #include <limits>
 #include <numeric>
 
+#include "kerf/dem/specimen.hpp"
 #include "kerf/error.hpp"
 #include "serial.hpp"
 
@@ -230,29 +231,9 @@ Simulation CutWindow::build(const Simulation* current, double x_edge_m) {
 }
 
 Simulation CutWindow::machined_workpiece() const {
-  SimulationOptions options = full_.options();
-  Simulation out(full_.material(), options);
-  out.types() = full_.types();
-  const Particles& q = full_.particles();
-  std::vector<std::int32_t> index(q.size(), -1);
-  for (std::size_t g = 0; g < q.size(); ++g) {
-    if (removed_[g]) continue;
-    index[g] = out.add_particle(q.x[g], q.y[g], q.radius[g], q.type[g]);
-    Particles& p = out.particles();
-    const auto u = static_cast<std::size_t>(index[g]);
-    p.theta[u] = q.theta[g], p.vx[u] = q.vx[g], p.vy[u] = q.vy[g], p.omega[u] = q.omega[g], p.group[u] = q.group[g];
-  }
-  const BondStore& fb = full_.bonds();
-  const auto stride = static_cast<std::size_t>(fb.stride);
-  for (std::size_t b = 0; b < fb.size(); ++b) {
-    const auto i = index[static_cast<std::size_t>(fb.i[b])], j = index[static_cast<std::size_t>(fb.j[b])];
-    if (!fb.active[b] || i < 0 || j < 0) continue;
-    const auto k = static_cast<std::size_t>(out.install_bond(i, j, fb.ref_distance_m[b], fb.ref_rotation_rad[b]));
-    for (std::size_t e = 0; e < stride; ++e) {
-      out.bonds().bonded[k * stride + e] = fb.bonded[b * stride + e];
-      out.bonds().shear_force_n[k * stride + e] = fb.shear_force_n[b * stride + e];
-    }
-  }
+  std::vector<std::uint8_t> keep(removed_.size());
+  for (std::size_t g = 0; g < keep.size(); ++g) keep[g] = !removed_[g];
+  Simulation out = copy_disks_and_joints(full_, full_.material(), true, keep);
   for (const Wall& w : full_.walls()) out.add_wall(w);
   out.cracks() = full_.cracks();  // by place (their joint numbers are the whole workpiece's)
   return out;

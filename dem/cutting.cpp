@@ -8,6 +8,7 @@
 #include <numbers>
 #include <type_traits>
 
+#include "kerf/dem/specimen.hpp"
 #include "kerf/error.hpp"
 #include "kerf/time_series.hpp"
 #include "kerf/io.hpp"
@@ -416,33 +417,15 @@ Simulation make_workpiece(const Simulation& specimen, const CutParams& params, s
   const auto centres = groove_centres(params, b.x_min, b.x_max);
   // Grooves: the paper deletes the disks inside each groove (seed 000 Section 4); a disk goes when its
   // centre lies inside the outline.
-  Simulation sim(specimen.material(), specimen.options());
-  sim.types() = specimen.types();
-  std::vector<std::int32_t> index(p.size(), -1);
-  for (std::size_t k = 0; k < p.size(); ++k) {
-    if (inside_any_groove(params, centres, b.y_max, p.x[k], p.y[k])) continue;
-    index[k] = sim.add_particle(p.x[k], p.y[k], p.radius[k], p.type[k]);
-    auto& q = sim.particles();
-    const auto u = static_cast<std::size_t>(index[k]);
-    q.theta[u] = p.theta[k];
-    q.vx[u] = p.vx[k], q.vy[u] = p.vy[k], q.omega[u] = p.omega[k];
-  }
+  std::vector<std::uint8_t> keep(p.size());
+  for (std::size_t k = 0; k < p.size(); ++k) keep[k] = !inside_any_groove(params, centres, b.y_max, p.x[k], p.y[k]);
+  Simulation sim = copy_disks_and_joints(specimen, specimen.material(), true, keep);
   n_removed = p.size() - sim.particles().size();
-  const auto& bs = specimen.bonds();
-  const auto stride = static_cast<std::size_t>(bs.stride);
-  for (std::size_t k = 0; k < bs.size(); ++k) {
-    const auto i = index[static_cast<std::size_t>(bs.i[k])], j = index[static_cast<std::size_t>(bs.j[k])];
-    if (!bs.active[k] || i < 0 || j < 0) continue;
-    const auto id = static_cast<std::size_t>(sim.install_bond(i, j, bs.ref_distance_m[k], bs.ref_rotation_rad[k]));
-    for (std::size_t e = 0; e < stride; ++e) {
-      sim.bonds().bonded[id * stride + e] = bs.bonded[k * stride + e];
-      sim.bonds().shear_force_n[id * stride + e] = bs.shear_force_n[k * stride + e];
-    }
-  }
   // Seed 000 Section 4: the particles on the left side and the bottom are fixed (zero prescribed
   // velocity, group 1); the top is free. "On the side" = centre within 2 R_max of the edge, as the grips.
   auto& q = sim.particles();
   for (std::size_t k = 0; k < q.size(); ++k) {
+    q.group[k] = 0;  // whatever the specimen held (a test's grips)
     if (q.x[k] < b.x_min + 2 * b.r_max || q.y[k] < b.y_min + 2 * b.r_max) {
       q.group[k] = 1;
       q.vx[k] = q.vy[k] = q.omega[k] = 0;

@@ -275,24 +275,41 @@ Simulation with_material(const Simulation& specimen, const Material& material) {
   if (elements != specimen.bonds().stride)
     throw InputError("material.n_elements", std::to_string(elements),
                      "the specimen's element count " + std::to_string(specimen.bonds().stride));
-  SimulationOptions options = specimen.options();
-  Simulation sim(material, options);
-  const auto& p = specimen.particles();
+  Simulation sim = copy_disks_and_joints(specimen, material, false);  // the new material's density
+  // The packing only: at rest, no group.
+  auto& p = sim.particles();
+  std::fill(p.vx.begin(), p.vx.end(), 0.0), std::fill(p.vy.begin(), p.vy.end(), 0.0);
+  std::fill(p.omega.begin(), p.omega.end(), 0.0), std::fill(p.group.begin(), p.group.end(), std::uint8_t{0});
+  sim.initialise();
+  return sim;
+}
+
+Simulation copy_disks_and_joints(const Simulation& source, const Material& material, bool source_types,
+                                 const std::vector<std::uint8_t>& keep) {
+  Simulation sim(material, source.options());
+  if (source_types) sim.types() = source.types();  // before the disks: their masses follow the types
+  const auto& p = source.particles();
+  std::vector<std::int32_t> index(p.size(), -1);
   for (std::size_t k = 0; k < p.size(); ++k) {
-    sim.add_particle(p.x[k], p.y[k], p.radius[k], p.type[k]);
-    sim.particles().theta[k] = p.theta[k];
+    if (!keep.empty() && !keep[k]) continue;
+    index[k] = sim.add_particle(p.x[k], p.y[k], p.radius[k], p.type[k]);
+    auto& q = sim.particles();
+    const auto u = static_cast<std::size_t>(index[k]);
+    q.theta[u] = p.theta[k];
+    q.vx[u] = p.vx[k], q.vy[u] = p.vy[k], q.omega[u] = p.omega[k];
+    q.group[u] = p.group[k];
   }
-  const auto& b = specimen.bonds();
+  const auto& b = source.bonds();
   const auto stride = static_cast<std::size_t>(b.stride);
   for (std::size_t k = 0; k < b.size(); ++k) {
-    if (!b.active[k]) continue;
-    const auto id = static_cast<std::size_t>(sim.install_bond(b.i[k], b.j[k], b.ref_distance_m[k], b.ref_rotation_rad[k]));
+    const auto i = index[static_cast<std::size_t>(b.i[k])], j = index[static_cast<std::size_t>(b.j[k])];
+    if (!b.active[k] || i < 0 || j < 0) continue;
+    const auto id = static_cast<std::size_t>(sim.install_bond(i, j, b.ref_distance_m[k], b.ref_rotation_rad[k]));
     for (std::size_t e = 0; e < stride; ++e) {
       sim.bonds().bonded[id * stride + e] = b.bonded[k * stride + e];
       sim.bonds().shear_force_n[id * stride + e] = b.shear_force_n[k * stride + e];
     }
   }
-  sim.initialise();
   return sim;
 }
 

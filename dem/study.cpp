@@ -681,18 +681,7 @@ Json write_study_outputs(const StudySpec& spec, const StudyScheduler& scheduler,
         s.y_error.push_back(std::isfinite(st.ci_high) ? st.ci_high - st.mean : NAN);
       }
       if (fig.series.empty()) continue;
-      for (PlotSeries& s : fig.series) {  // in x order
-        std::vector<std::size_t> order(s.x.size());
-        for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-        std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return s.x[a] < s.x[b]; });
-        PlotSeries sorted = s;
-        for (std::size_t i = 0; i < order.size(); ++i) {
-          sorted.x[i] = s.x[order[i]];
-          sorted.y[i] = s.y[order[i]];
-          sorted.y_error[i] = s.y_error[order[i]];
-        }
-        s = sorted;
-      }
+      for (PlotSeries& s : fig.series) sort_by_x(s);  // in x order
       if (fig.series.size() > 1) leave_room_for_legend(fig);
       const std::string file = fmt::format("plots/{}_vs_{}.png", file_part(n), file_part(key));
       fs::create_directories(out / "plots");

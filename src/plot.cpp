@@ -413,4 +413,17 @@ void render_png(const FigureSpec& fig, const std::filesystem::path& path) {
   });
 }
 
+void sort_by_x(PlotSeries& s) {
+  std::vector<std::size_t> order(s.x.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return s.x[a] < s.x[b]; });
+  const auto permuted = [&](const std::vector<double>& v) {
+    if (v.size() != order.size()) return v;  // none (empty)
+    std::vector<double> out(v.size());
+    for (std::size_t i = 0; i < order.size(); ++i) out[i] = v[order[i]];
+    return out;
+  };
+  s.x = permuted(s.x), s.y = permuted(s.y), s.x_error = permuted(s.x_error), s.y_error = permuted(s.y_error);
+}
+
 }  // namespace kerf

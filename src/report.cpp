@@ -554,17 +554,7 @@ std::vector<PlannedFigure> plan_figures(const Comparison& c) {
             const bool has_bars = std::any_of(line.y_error.begin(), line.y_error.end(), [](double e) { return std::isfinite(e); });
             const double dodge = has_bars ? 0.012 * (x_hi - x_lo) * static_cast<double>(rr.prediction + 1) : 0.0;
             for (auto& x : line.x) x += dodge;
-            // Sort by x.
-            std::vector<std::size_t> idx(line.x.size());
-            for (std::size_t k = 0; k < idx.size(); ++k) idx[k] = k;
-            std::sort(idx.begin(), idx.end(), [&](std::size_t a, std::size_t b) { return line.x[a] < line.x[b]; });
-            PlotSeries sorted = line;
-            for (std::size_t k = 0; k < idx.size(); ++k) {
-              sorted.x[k] = line.x[idx[k]];
-              sorted.y[k] = line.y[idx[k]];
-              sorted.y_error[k] = line.y_error[idx[k]];
-            }
-            line = std::move(sorted);
+            sort_by_x(line);
           }
           fig.series.push_back(std::move(line));
         }

@@ -32,6 +32,9 @@ struct PlotSeries {
   int marker = 0;  ///< 0 circle, 1 triangle, 2 square, 3 diamond, 4 down-triangle; 5-9 the same, hollow
 };
 
+/// Orders the series' points by x (a stable sort; its error bars, where it has them, move with their points).
+void sort_by_x(PlotSeries& series);
+
 /// A shaded region between two curves over the same x.
 struct PlotBand {
   std::string label;

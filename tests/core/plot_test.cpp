@@ -49,3 +49,15 @@ TEST_CASE("Figures PLplot cannot draw are refused before PLplot sees them", "[pl
   CHECK_THROWS_AS(kerf::render_png(legend, path), kerf::InputError);
   CHECK_FALSE(fs::exists(path));
 }
+
+TEST_CASE("plot: sort_by_x orders the points and carries their error bars, ties in their order") {
+  kerf::PlotSeries s;
+  s.x = {3, 1, 2, 1};
+  s.y = {30, 10, 20, 11};
+  s.y_error = {0.3, 0.1, 0.2, 0.11};
+  kerf::sort_by_x(s);
+  CHECK(s.x == std::vector<double>{1, 1, 2, 3});
+  CHECK(s.y == std::vector<double>{10, 11, 20, 30});
+  CHECK(s.y_error == std::vector<double>{0.1, 0.11, 0.2, 0.3});
+  CHECK(s.x_error.empty());  // none stays none
+}

@@ -15,13 +15,7 @@ using namespace kerf::dem;
 
 namespace {
 
-Simulation workpiece_specimen(double width_m, double height_m, std::uint64_t seed) {
-  SpecimenSpec spec = kerf::dem::testing::quick_random_spec(width_m, height_m, seed);
-  spec.radius_min_m = 10e-6;
-  spec.radius_max_m = 13e-6;
-  SpecimenReport report;
-  return make_specimen(Material{}, spec, report);
-}
+using kerf::dem::testing::quick_workpiece_specimen;
 
 CutParams windowed(double ahead, double behind, double below, double above) {
   CutParams p;
@@ -38,7 +32,7 @@ CutParams windowed(double ahead, double behind, double below, double above) {
 }  // namespace
 
 TEST_CASE("cut window: a window covering the whole workpiece is the full cut to the bit", "[cut_window]") {
-  const Simulation specimen = workpiece_specimen(0.4e-3, 0.25e-3, 3);
+  const Simulation specimen = quick_workpiece_specimen(0.4e-3, 0.25e-3, 3);
   CutParams full = windowed(100, 100, 100, 100);
   full.active_window = false;
   CutRun a(specimen, full), b(specimen, windowed(100, 100, 100, 100));
@@ -72,7 +66,7 @@ TEST_CASE("cut window: the window's size does not grow with the workpiece; chips
   CutParams p = windowed(3, 1, 2, 2);
   p.length_m = 0.2e-3;
   const auto cut = [&](double width_m) {
-    CutRun run(workpiece_specimen(width_m, 0.25e-3, 5), p);
+    CutRun run(quick_workpiece_specimen(width_m, 0.25e-3, 5), p);
     while (run.advance()) {}
     return run;
   };
@@ -93,7 +87,7 @@ TEST_CASE("cut window: the window's size does not grow with the workpiece; chips
   REQUIRE(large.window() != nullptr);
   const auto& q = large.window()->workpiece().particles();  // every disk, in the specimen's order
   CHECK(large.workpiece().particles().size() == q.size() - b.window.chips.particles);  // the picture's
-  const Simulation specimen = workpiece_specimen(1.2e-3, 0.25e-3, 5);
+  const Simulation specimen = quick_workpiece_specimen(1.2e-3, 0.25e-3, 5);
   const double x_edge_end = b.steady_machined_x_m[0];
   std::size_t untouched = 0, ahead = 0;
   for (std::size_t u = 0; u < q.size(); ++u) {
@@ -127,7 +121,7 @@ TEST_CASE("cut window: the window's size does not grow with the workpiece; chips
 }
 
 TEST_CASE("cut window: restored halfway, a windowed cut goes on to the bit", "[cut_window]") {
-  const Simulation specimen = workpiece_specimen(0.6e-3, 0.25e-3, 7);
+  const Simulation specimen = quick_workpiece_specimen(0.6e-3, 0.25e-3, 7);
   CutParams p = windowed(3, 2, 2, 2);
   p.length_m = 0.15e-3;
   CutRun whole(specimen, p);

@@ -30,13 +30,7 @@ CutParams grooved(GrooveShape shape) {
 }
 
 /// A small random specimen with the seed-000 workpiece's disk radii (10-13 um), default material.
-Simulation small_workpiece_specimen(double width_m, double height_m, std::uint64_t seed) {
-  SpecimenSpec spec = kerf::dem::testing::quick_random_spec(width_m, height_m, seed);
-  spec.radius_min_m = 10e-6;
-  spec.radius_max_m = 13e-6;
-  SpecimenReport report;
-  return make_specimen(Material{}, spec, report);
-}
+using kerf::dem::testing::quick_workpiece_specimen;
 
 double angle_deg(const std::array<double, 2>& a, const std::array<double, 2>& b) {
   return std::atan2(b[1] - a[1], b[0] - a[0]) * 180 / std::numbers::pi;
@@ -241,7 +235,7 @@ TEST_CASE("cutting: crack places and subsurface damage depth", "[cutting]") {
 }
 
 TEST_CASE("cutting: a small cut regression (forces, cracks, determinism, grooves)", "[cutting]") {
-  const Simulation specimen = small_workpiece_specimen(0.4e-3, 0.25e-3, 3);
+  const Simulation specimen = quick_workpiece_specimen(0.4e-3, 0.25e-3, 3);
   CutParams p;
   p.depth_of_cut_m = 0.05e-3;
   p.speed_m_per_s = 2;
@@ -353,7 +347,7 @@ TEST_CASE("cutting: a small cut regression (forces, cracks, determinism, grooves
 TEST_CASE("cutting: a cut the disks cannot resolve or the workpiece cannot hold is an input error", "[cutting]") {
   // Stable at the extremes: each of these ran before as a silent zero force, a tool jumping through the
   // workpiece in one step, a run of years, or a tool crushing the held disks.
-  const Simulation specimen = small_workpiece_specimen(0.3e-3, 0.2e-3, 5);
+  const Simulation specimen = quick_workpiece_specimen(0.3e-3, 0.2e-3, 5);
   const auto& q = specimen.particles();
   double r_min = 1, r_max = 0, x_min = 1, x_max = -1;
   for (std::size_t k = 0; k < q.size(); ++k) {

@@ -17,4 +17,13 @@ inline SpecimenSpec quick_random_spec(double width_m, double height_m, std::uint
   return spec;
 }
 
+/// A small random specimen with the seed-000 workpiece's disk radii (10-13 um), default material.
+inline Simulation quick_workpiece_specimen(double width_m, double height_m, std::uint64_t seed) {
+  SpecimenSpec spec = quick_random_spec(width_m, height_m, seed);
+  spec.radius_min_m = 10e-6;
+  spec.radius_max_m = 13e-6;
+  SpecimenReport report;
+  return make_specimen(Material{}, spec, report);
+}
+
 }  // namespace kerf::dem::testing

@@ -78,6 +78,14 @@ Simulation make_specimen(const Material& material, const SpecimenSpec& spec, Spe
 /// the element count must be the same). Walls and groups are not copied.
 Simulation with_material(const Simulation& specimen, const Material& material);
 
+/// A new simulation with `material` holding the disks of `source` whose `keep` flag is set (every disk when
+/// `keep` is empty), in order, with their positions, rotations, velocities and groups, and the active joints
+/// between kept disks with their element states; the disk types (densities) are the source's when
+/// `source_types`, else `material`'s. Walls, cracks and contacts are not copied. The element count of
+/// `material`'s joint must be the source's.
+Simulation copy_disks_and_joints(const Simulation& source, const Material& material, bool source_types,
+                                 const std::vector<std::uint8_t>& keep = {});
+
 /// Saves particles, joints with their element states, the spec and the report as JSON
 /// (format "kerf-dem-specimen", version 1; documented in docs/dem.md).
 void save_specimen(const std::string& file_path, const Simulation& sim, const SpecimenSpec& spec,
