@@ -654,6 +654,7 @@ Json write_study_outputs(const StudySpec& spec, const StudyScheduler& scheduler,
       fig.x_label = key;
       fig.y_label = n;
       std::map<std::string, std::size_t> series_of;
+      bool echoes_key = true;  // a result that only repeats the varied input (the loading speed) is not plotted
       for (std::size_t ci = 0; ci < spec.conditions.size(); ++ci) {
         const ResultStats& st = by_result[n][ci];
         std::optional<double> x;
@@ -666,6 +667,7 @@ Json write_study_outputs(const StudySpec& spec, const StudyScheduler& scheduler,
           }
         }
         if (!x || !std::isfinite(st.mean)) continue;
+        echoes_key = echoes_key && st.mean == *x && st.std == 0;
         auto [it, fresh] = series_of.try_emplace(label, fig.series.size());
         if (fresh) {
           PlotSeries s;
@@ -680,7 +682,7 @@ Json write_study_outputs(const StudySpec& spec, const StudyScheduler& scheduler,
         s.y.push_back(st.mean);
         s.y_error.push_back(std::isfinite(st.ci_high) ? st.ci_high - st.mean : NAN);
       }
-      if (fig.series.empty()) continue;
+      if (fig.series.empty() || echoes_key) continue;
       for (PlotSeries& s : fig.series) sort_by_x(s);  // in x order
       if (fig.series.size() > 1) leave_room_for_legend(fig);
       const std::string file = fmt::format("plots/{}_vs_{}.png", file_part(n), file_part(key));

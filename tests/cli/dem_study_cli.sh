@@ -39,6 +39,8 @@ ls "$work/s2/items" | sort | tr '\n' ' ' | grep -qx "condition_1_seed_1 conditio
 for f in plots/tensile_strength_MPa_vs_loading_speed_m_per_s.png plots/tensile_strength_MPa_vs_loading_speed_m_per_s.pdf; do
   [ -s "$work/s2/$f" ] || fail "smoke: no $f"
 done
+# A result that only repeats the varied input (the test's speed_m_per_s) gets no plot.
+[ ! -e "$work/s2/plots/speed_m_per_s_vs_loading_speed_m_per_s.png" ] || fail "smoke: a plot of the input against itself"
 grep -q "^study: condition_1_seed_1 done in" "$work/log" || fail "no log line per item when stdout is not a terminal: $(cat "$work/log")"
 # The statistics are those of the items: mean, sample std and the Student-t interval, recomputed here.
 python3 - "$work/s2" <<'EOF' || fail "conditions.csv does not match items.csv"
