@@ -20,21 +20,22 @@ CutWindow::CutWindow(Simulation workpiece, const CutWindowBox& box, double y_top
     : full_(std::move(workpiece)), box_(box), y_top_m_(y_top_m), y_cut_m_(y_cut_m) {
   const auto& p = full_.particles();
   if (p.size() == 0) throw ModelError("dem", "a windowed cut of an empty workpiece");
-  const auto [r_min, r_max] = std::minmax_element(p.radius.begin(), p.radius.end());
-  // Held frame: two largest diameters, the reach of any joint or contact of a disk inside the box.
-  frame_m_ = 4 * *r_max;
-  skin_m_ = full_.options().skin_m > 0 ? full_.options().skin_m : 0.3 * *r_min;  // as Simulation::initialise
   x0_ = p.x;
   removed_.assign(p.size(), 0);
-  local_of_.assign(p.size(), -1);
   x_built_m_ = std::numeric_limits<double>::infinity();
-  r_max_m_ = *r_max;
   full_.cracks().clear();  // the cut's cracks only
   index_reservoir();
 }
 
 void CutWindow::index_reservoir() {
   const auto& p = full_.particles();
+  const auto [r_min, r_max] = std::minmax_element(p.radius.begin(), p.radius.end());
+  r_max_m_ = *r_max;
+  // Held frame: two largest diameters, the reach of any joint or contact of a disk inside the box.
+  frame_m_ = 4 * *r_max;
+  skin_m_ = full_.options().skin_m > 0 ? full_.options().skin_m : 0.3 * *r_min;  // as Simulation::initialise
+  local_of_.assign(p.size(), -1);
+  for (std::size_t u = 0; u < global_of_.size(); ++u) local_of_[static_cast<std::size_t>(global_of_[u])] = static_cast<std::int32_t>(u);
   by_x0_.resize(p.size());
   std::iota(by_x0_.begin(), by_x0_.end(), 0);
   std::sort(by_x0_.begin(), by_x0_.end(), [&](std::int32_t a, std::int32_t b) {
@@ -137,8 +138,6 @@ Simulation CutWindow::build(const Simulation* current, double x_edge_m) {
     const bool was_free = current && local_of_[g] >= 0 && current->particles().group[static_cast<std::size_t>(local_of_[g])] == 0;
     if (was_free && !in_box && y > y_cut_m_ + r_max_m_) {
       removed_[g] = 1;
-      ++chips_.particles;
-      chips_.mass_kg += 1 / q.inv_mass[g];
       continue;
     }
     if (!boundary && in_box)
@@ -240,8 +239,10 @@ Simulation CutWindow::machined_workpiece() const {
 }
 
 ChipAccount CutWindow::chips() const {
-  ChipAccount a = chips_;
-  a.cracks = 0;
+  ChipAccount a;
+  const Particles& q = full_.particles();
+  for (std::size_t g = 0; g < removed_.size(); ++g)
+    if (removed_[g]) ++a.particles, a.mass_kg += 1 / q.inv_mass[g];
   const BondStore& b = full_.bonds();
   for (const auto& e : full_.cracks()) {
     const auto k = static_cast<std::size_t>(e.bond);
@@ -253,9 +254,9 @@ ChipAccount CutWindow::chips() const {
 std::string CutWindow::serialize() const {
   std::string out(kWindowMagic);
   serial::Out io{out};
-  io(full_.serialize(), box_, y_top_m_, y_cut_m_, frame_m_, skin_m_, r_max_m_, x_built_m_, max_displacement_m_, x0_,
-     removed_, global_of_, bond_global_of_, springs_.pairs, springs_.pair_shear_n, springs_.wall_contacts,
-     springs_.wall_shear_n, chips_, rebuilds_, largest_window_, cracks_synced_);
+  io(full_.serialize(), box_, y_top_m_, y_cut_m_, x_built_m_, max_displacement_m_, x0_, removed_, global_of_,
+     bond_global_of_, springs_.pairs, springs_.pair_shear_n, springs_.wall_contacts, springs_.wall_shear_n, rebuilds_,
+     largest_window_, cracks_synced_);
   return out;
 }
 
@@ -263,24 +264,22 @@ CutWindow CutWindow::deserialize(std::string_view bytes) {
   serial::In io = serial::open_tagged(bytes, kWindowMagic, "window state");
   CutWindow w;
   std::string full;
-  io(full, w.box_, w.y_top_m_, w.y_cut_m_, w.frame_m_, w.skin_m_, w.r_max_m_, w.x_built_m_, w.max_displacement_m_,
-     w.x0_, w.removed_, w.global_of_, w.bond_global_of_, w.springs_.pairs, w.springs_.pair_shear_n,
-     w.springs_.wall_contacts, w.springs_.wall_shear_n, w.chips_, w.rebuilds_, w.largest_window_, w.cracks_synced_);
+  io(full, w.box_, w.y_top_m_, w.y_cut_m_, w.x_built_m_, w.max_displacement_m_, w.x0_, w.removed_, w.global_of_,
+     w.bond_global_of_, w.springs_.pairs, w.springs_.pair_shear_n, w.springs_.wall_contacts, w.springs_.wall_shear_n,
+     w.rebuilds_, w.largest_window_, w.cracks_synced_);
   io.expect_end("window state");
   w.full_ = Simulation::deserialize(full);
   const std::size_t n = w.full_.particles().size();
   const auto in_range = [&](const std::vector<std::int32_t>& v, std::size_t limit) {
     return std::all_of(v.begin(), v.end(), [&](std::int32_t k) { return k >= 0 && static_cast<std::size_t>(k) < limit; });
   };
-  if (w.x0_.size() != n || w.removed_.size() != n || !in_range(w.global_of_, n) ||
+  if (n == 0 || w.x0_.size() != n || w.removed_.size() != n || !in_range(w.global_of_, n) ||
       !in_range(w.bond_global_of_, w.full_.bonds().size()) ||
       !std::all_of(w.full_.cracks().begin(), w.full_.cracks().end(), [&](const CrackEvent& e) {
         return e.bond >= 0 && static_cast<std::size_t>(e.bond) < w.full_.bonds().size();
       }))
     throw ModelError("dem", "corrupt window state");
   w.index_reservoir();
-  w.local_of_.assign(n, -1);
-  for (std::size_t u = 0; u < w.global_of_.size(); ++u) w.local_of_[static_cast<std::size_t>(w.global_of_[u])] = static_cast<std::int32_t>(u);
   return w;
 }
 

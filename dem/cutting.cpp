@@ -503,7 +503,10 @@ std::size_t CutRun::n_cracks() const {
 bool CutRun::advance() {
   if (finished_) return false;
   const auto start = std::chrono::steady_clock::now();
-  if (window_ && window_->due(edge()[0])) sim_ = window_->build(&sim_, edge()[0]);
+  if (window_) {
+    const double x_edge = edge()[0];
+    if (window_->due(x_edge)) sim_ = window_->build(&sim_, x_edge);
+  }
   res_.particle_steps += static_cast<double>(sim_.particles().size()) * params_.sample_every_steps;
   double fx = 0, fy = 0;
   const auto& walls = sim_.walls();

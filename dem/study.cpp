@@ -526,7 +526,6 @@ ResultStats stats_of(const std::vector<double>& v) {
   return r;
 }
 
-Json number_or_null(double v) { return std::isfinite(v) ? Json(v) : Json(); }
 
 /// A file name part from a key ("cut.depth_of_cut_mm" -> "cut_depth_of_cut_mm").
 std::string file_part(const std::string& key) {
@@ -630,10 +629,10 @@ Json write_study_outputs(const StudySpec& spec, const StudyScheduler& scheduler,
       cells.emplace_back(targeted ? (met ? "yes" : "no") : "");
       conditions_csv += csv_line(cells);
       Json rj{{"n", st.n},
-              {"mean", number_or_null(st.mean)},
-              {"std", number_or_null(st.std)},
-              {"sem", number_or_null(st.sem)},
-              {"ci95", Json::array({number_or_null(st.ci_low), number_or_null(st.ci_high)})}};
+              {"mean", finite_or_null(st.mean)},
+              {"std", finite_or_null(st.std)},
+              {"sem", finite_or_null(st.sem)},
+              {"ci95", Json::array({finite_or_null(st.ci_low), finite_or_null(st.ci_high)})}};
       if (targeted) rj["target_met"] = met;
       results[n] = rj;
     }

@@ -23,9 +23,6 @@ namespace kerf::dem::kinds {
 
 namespace {
 
-/// A number, or JSON null when it is not finite (a standard error the signal is too short for).
-Json finite_or_null(double v) { return std::isfinite(v) ? Json(v) : Json(); }
-
 /// The cut's latest sample, for log lines.
 SampleState cut_sample(const CutRun& run) {
   const CutResult& res = run.result();

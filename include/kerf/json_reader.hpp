@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <set>
+#include <cmath>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -109,5 +110,9 @@ Json read_json_file(const std::string& file_path);
 
 /// A short text of a JSON value for error messages (strings unquoted, long values elided).
 std::string json_value_text(const Json& value);
+
+/// A number for an output document, or null when it is not finite (a standard error a signal is too short
+/// for): JSON has no NaN or infinity.
+inline Json finite_or_null(double value) { return std::isfinite(value) ? Json(value) : Json(); }
 
 }  // namespace kerf

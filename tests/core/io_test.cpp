@@ -10,6 +10,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "file_text.hpp"
 #include "kerf/error.hpp"
 
 namespace fs = std::filesystem;
@@ -20,12 +21,6 @@ fs::path scratch(const std::string& name) {
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
-}
-std::string text_of(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 std::size_t n_files(const fs::path& dir) {
   std::size_t n = 0;
@@ -40,7 +35,7 @@ TEST_CASE("io: a symbolic link is followed and stays a link", "[io]") {
   fs::create_symlink("target.csv", dir / "link.csv");
   kerf::write_file_atomically(dir / "link.csv", "new");
   CHECK(fs::is_symlink(dir / "link.csv"));
-  CHECK(text_of(dir / "target.csv") == "new");
+  CHECK(kerf::testing::file_text(dir / "target.csv") == "new");
   CHECK(n_files(dir) == 2);
   fs::remove_all(dir);
 }

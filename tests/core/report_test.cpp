@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "file_text.hpp"
 #include "kerf/error.hpp"
 
 using Catch::Matchers::WithinAbs;
@@ -26,12 +27,6 @@ kerf::DataRow row(const std::string& surface, double depth_mm, double value, std
   return {{kerf::ConditionValue::label(surface), kerf::ConditionValue::number(depth_mm * 1e-3)}, {value}, line};
 }
 
-std::string read(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 fs::path fresh_directory(const std::string& name) {
   const fs::path dir = fs::path(KERF_BINARY_DIR) / "test_output" / name;
@@ -183,22 +178,22 @@ TEST_CASE("The report directory: summary, CSV and plots, written whole", "[repor
   CHECK(fs::exists(dir / "parity_main_force.png"));
   CHECK(fs::exists(dir / "main_force_vs_depth_of_cut.png"));
   CHECK_FALSE(has_leftovers(dir));
-  const std::string png = read(dir / "parity_main_force.png");
+  const std::string png = kerf::testing::file_text(dir / "parity_main_force.png");
   CHECK(png.substr(1, 3) == "PNG");
-  const auto summary = kerf::Json::parse(read(dir / "summary.json"));
+  const auto summary = kerf::Json::parse(kerf::testing::file_text(dir / "summary.json"));
   const auto& q = summary["quantities"]["main_force"];
   CHECK(q["n"] == 3);
   CHECK_THAT(q["mean_abs_error_percent"].get<double>(), WithinRel((0.0 + 5.0 + 100.0 * 2.0 / 28.0) / 3.0, 1e-12));
   CHECK_THAT(q["max_abs_error_percent"].get<double>(), WithinRel(100.0 * 2.0 / 28.0, 1e-12));
   CHECK_THAT(q["bias_percent"].get<double>(), WithinRel((0.0 - 5.0 + 100.0 * 2.0 / 28.0) / 3.0, 1e-12));
-  const auto table = kerf::parse_csv(read(dir / "comparison.csv"), "comparison.csv");
+  const auto table = kerf::parse_csv(kerf::testing::file_text(dir / "comparison.csv"), "comparison.csv");
   CHECK(table.header.at(2) == "surface");
   CHECK(table.header.at(3) == "depth_of_cut_mm");
   CHECK(table.has_column("main_force_measured_N"));
   CHECK(table.has_column("main_force_error_percent"));
   CHECK(table.rows.size() == 4);
   CHECK_THAT(table.number(0, table.column_index("main_force_error_percent")), WithinRel(10.0, 1e-12));
-  const std::string md = read(dir / "report.md");
+  const std::string md = kerf::testing::file_text(dir / "report.md");
   CHECK(md.find("> Source: hand-made") != std::string::npos);
   CHECK(md.find("![") != std::string::npos);
   CHECK(md.find("total force over a 1 mm width") != std::string::npos);
@@ -211,12 +206,12 @@ TEST_CASE("A failed report leaves the previous files whole and nothing half-writ
   const kerf::DataSet second{"second", "", {}, {kerf::WidthBasis::total(1e-3)}, {row("regular", 0.1, 12)}};
   const fs::path dir = fresh_directory("report_atomic");
   kerf::write_report(kerf::compare(spec, measured, {{first, {}}}), dir);
-  const std::string old_md = read(dir / "report.md");
+  const std::string old_md = kerf::testing::file_text(dir / "report.md");
   // Block one target: the second report must not replace any file.
   fs::remove(dir / "summary.json");
   fs::create_directory(dir / "summary.json");
   CHECK_THROWS_AS(kerf::write_report(kerf::compare(spec, measured, {{second, {}}}), dir), kerf::InputError);
-  CHECK(read(dir / "report.md") == old_md);
+  CHECK(kerf::testing::file_text(dir / "report.md") == old_md);
   CHECK_FALSE(has_leftovers(dir));
   // A fresh directory with a blocked target gets no files at all.
   const fs::path empty = fresh_directory("report_atomic_empty");

@@ -34,7 +34,7 @@ struct CutWindowBox {
 struct ChipAccount {
   std::size_t particles = 0;
   double mass_kg = 0;
-  int cracks = 0;  ///< crack events of joints with a removed disk at either end (filled in by cracks_on_chips)
+  int cracks = 0;  ///< crack events of joints with a removed disk at either end
 };
 
 class CutWindow {
@@ -59,7 +59,7 @@ class CutWindow {
   const std::vector<CrackEvent>& cracks() const { return full_.cracks(); }
   /// The workpiece as the cut left it, without the removed chips (for pictures).
   Simulation machined_workpiece() const;
-  /// The chips removed so far, with the cracks they carried.
+  /// The chips removed so far (from the removal flags), with the cracks they carried.
   ChipAccount chips() const;
   std::size_t rebuilds() const { return rebuilds_; }
   std::size_t largest_window() const { return largest_window_; }
@@ -68,20 +68,22 @@ class CutWindow {
   static CutWindow deserialize(std::string_view bytes);
 
  private:
+  /// The derived members below from the reservoir (and the window's disks).
   void index_reservoir();
   Simulation full_{Material{}, SimulationOptions{}};
   CutWindowBox box_;
-  double y_top_m_ = 0, y_cut_m_ = 0, frame_m_ = 0, skin_m_ = 0, r_max_m_ = 0;
+  double y_top_m_ = 0, y_cut_m_ = 0;
   double x_built_m_ = 0;           ///< the edge's x when the window was last built
   double max_displacement_m_ = 0;  ///< largest |x - x0| of a disk written back (widens the reservoir search)
   std::vector<double> x0_;         ///< each disk's x in the uncut workpiece
   std::vector<std::uint8_t> removed_;                ///< per disk: removed as a chip
   std::vector<std::int32_t> global_of_, bond_global_of_;  ///< the window's disks and joints in the workpiece
   ContactSprings springs_;         ///< of the last sync, by workpiece index
-  ChipAccount chips_;
   std::size_t rebuilds_ = 0, largest_window_ = 0;
   std::size_t cracks_synced_ = 0;  ///< the running window's cracks already moved to the workpiece's
-  // Derived from the above (not stored): disks by x0, joints per disk.
+  // Derived from the above (not stored): the frame's width, the window's skin and the largest radius, disks
+  // by x0, joints per disk.
+  double frame_m_ = 0, skin_m_ = 0, r_max_m_ = 0;
   std::vector<std::int32_t> by_x0_, bond_start_, bond_list_;
   std::vector<std::int32_t> local_of_;  ///< per workpiece disk: its index in the window, or -1
 };
