@@ -21,11 +21,10 @@
 
 namespace kerf::dem {
 
-MacroProperties measure_macro_properties(const Simulation& specimen, const Material& m, const LoadingSpec& tension,
+MacroProperties measure_macro_properties(const Simulation& specimen, const LoadingSpec& tension,
                                          const LoadingSpec& compression) {
-  const Simulation sim = with_material(specimen, m);
-  const LabTestResult t = run_lab_test(sim, tension);
-  const LabTestResult c = run_lab_test(sim, compression);
+  const LabTestResult t = run_lab_test(specimen, tension);
+  const LabTestResult c = run_lab_test(specimen, compression);
   return {c.youngs_modulus_pa, c.poissons_ratio, t.peak_stress_pa, c.peak_stress_pa};
 }
 
@@ -39,7 +38,7 @@ double max_relative_error(const MacroProperties& got, const MacroProperties& tar
 namespace {
 
 struct Context {
-  const Simulation* specimen;
+  const SpecimenSource* source;
   const CalibrationSpec* spec;
   const std::function<void(const CalibrationEvaluation&)>* on_evaluation;
   const std::vector<CalibrationEvaluation>* known;  ///< answers from an interrupted run
@@ -49,9 +48,13 @@ struct Context {
   int repeats = 0;  ///< evaluations answered from this run's own log (no new information)
 };
 
-/// Evaluates `m` (or takes its result from this run's log or from `known`), logs it, keeps the best, and
-/// applies the proportional corrections to ctx.current.
-MacroProperties evaluate(Context& ctx, const Material& m) {
+/// Evaluates `proposed` as its material file will hold it (or takes its result from this run's log or from
+/// `known`), logs it, keeps the best, and applies the proportional corrections to ctx.current.
+MacroProperties evaluate(Context& ctx, const Material& proposed) {
+  // The file's units (GPa, MPa, degrees) can round the last bit of a value, and a brittle specimen's strength
+  // answers even that (a 1-ulp change of E* moved the seed specimen's sigma_c by 0.6 %, 2026-11-26): the
+  // candidate is evaluated as written, so that the calibrated file gives what the calibration reports.
+  const Material m = read_material(material_to_json(proposed), "calibration candidate");
   for (const auto& e : ctx.result.log) {
     if (!same_micro_parameters(e.material, m)) continue;
     // A repeat tells nothing new: neither logged nor counted, and ctx.current keeps the later corrections.
@@ -67,7 +70,7 @@ MacroProperties evaluate(Context& ctx, const Material& m) {
     e.from_checkpoint = true;
   } else {
     const auto start = std::chrono::steady_clock::now();
-    e.macro = measure_macro_properties(*ctx.specimen, m, ctx.spec->tension, ctx.spec->compression);
+    e.macro = measure_macro_properties(ctx.source->for_material(m), ctx.spec->tension, ctx.spec->compression);
     e.max_relative_error = max_relative_error(e.macro, ctx.spec->targets);
     e.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
@@ -283,7 +286,7 @@ void solve_hybrid(Context& ctx) {
 }  // namespace
 
 namespace {
-constexpr std::uint64_t kEvaluationsMagic = 0x4b45524643414c32;  // "KERFCAL2" (2: the viscous damping ratio)
+constexpr std::uint64_t kEvaluationsMagic = 0x4b45524643414c33;  // "KERFCAL3" (2: the viscous damping ratio; 3: the checkpoint's specimen is the compacted packing)
 
 /// One evaluation's fields in checkpoint order: io(field...) writes (serial::Out) or reads (serial::In) them.
 template <class Self, class Io>
@@ -316,10 +319,10 @@ std::vector<CalibrationEvaluation> deserialize_evaluations(std::string_view byte
   return log;
 }
 
-CalibrationResult calibrate(const Simulation& specimen, const Material& start, const CalibrationSpec& spec,
+CalibrationResult calibrate(const SpecimenSource& source, const Material& start, const CalibrationSpec& spec,
                             const std::function<void(const CalibrationEvaluation&)>& on_evaluation,
                             const std::vector<CalibrationEvaluation>& known) {
-  Context ctx{&specimen, &spec, &on_evaluation, &known, start, {}, false, 0};
+  Context ctx{&source, &spec, &on_evaluation, &known, start, {}, false, 0};
   if (!spec.free_stiffness_ratio && !spec.free_cohesion) {
     // Only the proportional corrections: repeat them until within tolerance.
     while (!ctx.done) evaluate(ctx, ctx.current);

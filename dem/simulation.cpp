@@ -275,7 +275,15 @@ double Simulation::stable_time_step() const {
           const double kru = std::max(kr[u], 4 * self.shear * p_.radius[u] * p_.radius[u]);
           dt = std::min({dt, std::sqrt(1.0 / (p_.inv_mass[u] * ktu)), std::sqrt(1.0 / (p_.inv_inertia[u] * kru))});
         }
-        return opt_.time_step_safety * dt;
+        dt *= opt_.time_step_safety;
+        // A density or stiffness so extreme that the masses or the step leave the doubles (1e308 kg/m^3:
+        // dt = inf; 1e-300: the masses underflow) cannot be integrated: say which inputs, before any step.
+        if (!(std::isfinite(dt) && dt > 0))
+          throw ModelError("dem", fmt::format("the stable time step is {:.4g} s, not a positive finite number: the "
+                                              "masses or stiffnesses are beyond double precision "
+                                              "(material.density_kg_per_m3 = {:.6g}, specimen.thickness_mm = {:.6g})",
+                                              dt, material_.density_kg_per_m3, 1e3 * t));
+        return dt;
       },
       material_.contact);
 }

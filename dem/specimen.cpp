@@ -39,6 +39,9 @@ const FieldTable<SpecimenSpec>& specimen_fields() {
                    "disk area fraction that sets the number of disks (random)", &S::packing_fraction),
       number_field("compaction_pressure_MPa", kMPa, Range::positive(), "isotropic pressure of the frictionless compaction",
                    &S::compaction_pressure_pa),
+      number_field("compaction_modulus_GPa", kGPa, Range::positive(),
+                   "E* of the compaction's frictionless reference contact (the same for every material)",
+                   &S::compaction_modulus_pa),
       number_field("installation_gap_um", kUm, Range::non_negative(), "joints at pairs whose surface gap is below this",
                    &S::installation_gap_m),
       int_field("growth_steps", 100, 10000000, "steps of the radius growth and compaction", &S::growth_steps),
@@ -134,18 +137,16 @@ void finish_report(const Simulation& sim, const SpecimenSpec& spec, SpecimenRepo
   report.residual_stress_xy_pa = s[2];
 }
 
-Simulation make_hexagonal(const Material& material, const SpecimenSpec& spec, SpecimenReport& report) {
-  Simulation sim(material, {.thickness_m = spec.thickness_m});
+/// Equal disks on a triangular lattice, unjointed.
+CompactedPacking hexagonal_lattice(const SpecimenSpec& spec) {
+  Simulation sim(Material{}, {.thickness_m = spec.thickness_m});
   const double r = 0.5 * (spec.radius_min_m + spec.radius_max_m);
   const double row = std::sqrt(3.0) * r;
   for (int k = 0; r + k * row <= spec.height_m - r; ++k) {
     const double x0 = r + (k % 2) * r;
     for (int c = 0; x0 + 2 * r * c <= spec.width_m - r; ++c) sim.add_particle(x0 + 2 * r * c, r + k * row, r);
   }
-  sim.install_bonds_within_gap(1e-6 * r);
-  sim.initialise();
-  finish_report(sim, spec, report);
-  return sim;
+  return {std::move(sim), {}};
 }
 
 /// Mean normal stress on the four vessel walls (compression positive) [Pa].
@@ -157,8 +158,14 @@ double wall_pressure(const Simulation& sim, const SpecimenSpec& spec) {
   return 0.5 * (sxx + syy);
 }
 
-Simulation make_random(const Material& material, const SpecimenSpec& spec, SpecimenReport& report,
-                       const std::function<void(std::int64_t, std::int64_t)>& progress) {
+constexpr int kServoChunk = 100, kServoMax = 80, kFloaterRounds = 6;
+
+/// Steps of the whole random genesis, an upper bound (the servo may stop early), for progress.
+std::int64_t random_genesis_steps(const SpecimenSpec& spec) {
+  return spec.growth_steps + kServoMax * kServoChunk + kFloaterRounds * 200 + spec.relax_steps;
+}
+
+CompactedPacking compact_random(const SpecimenSpec& spec, const GenesisProgress& progress) {
   const double W = spec.width_m, H = spec.height_m, a = spec.radius_min_m, b = spec.radius_max_m;
   const double mean_r2 = (a * a + a * b + b * b) / 3;
   const auto n = static_cast<std::size_t>(std::lround(spec.packing_fraction * W * H / (std::numbers::pi * mean_r2)));
@@ -178,11 +185,15 @@ Simulation make_random(const Material& material, const SpecimenSpec& spec, Speci
     return row_of(i) != row_of(j) ? row_of(i) < row_of(j) : x[i] < x[j];
   });
 
-  Material frictionless = material;
-  frictionless.contact = std::visit([](const auto& law) { return ContactLaw(with_friction(law, 0.0)); },
-                                    material.contact);  // docs/physics-dem.md section 2: frictionless compaction
-  frictionless.local_damping = 0.7;
-  Simulation sim(frictionless, {.thickness_m = spec.thickness_m});
+  // docs/physics-dem.md section 2: frictionless compaction, here through a reference contact of the spec's,
+  // so that the packing does not depend on the material (the density only scales time: not a choice).
+  Material reference;
+  reference.name = "compaction reference";
+  reference.contact = LinearContactParams{spec.compaction_modulus_pa, kCompactionStiffnessRatio, 0.0};
+  reference.local_damping = 0.7;
+  CompactedPacking out{Simulation(reference, {.thickness_m = spec.thickness_m}), {}};
+  Simulation& sim = out.disks;
+  SpecimenReport& report = out.report;
   double scale = 0.5;
   for (std::size_t k : order) sim.add_particle(x[k], y[k], scale * r[k]);
   sim.add_wall({0, 0, W, 0});
@@ -198,22 +209,21 @@ Simulation make_random(const Material& material, const SpecimenSpec& spec, Speci
     sim.refresh_time_step();
   };
   sim.initialise();
-  const int chunk = 100, servo_max = 80, floater_rounds = 6;
-  const std::int64_t total = spec.growth_steps + servo_max * chunk + floater_rounds * 200 + spec.relax_steps;
+  const std::int64_t total = random_genesis_steps(spec);
   const auto report_progress = [&] {
     if (progress) progress(sim.step_count(), total);
   };
   // 1. Grow from half size to full size.
-  const int n_growth = std::max(1, spec.growth_steps / chunk);
+  const int n_growth = std::max(1, spec.growth_steps / kServoChunk);
   for (int k = 1; k <= n_growth; ++k) {
     set_scale(0.5 + 0.5 * k / n_growth);
-    sim.run(chunk);
+    sim.run(kServoChunk);
     report_progress();
   }
   // 2. Servo the common radius scale to the compaction pressure (areal strain ~ 2 dscale / scale).
-  const double target = spec.compaction_pressure_pa, modulus = calibrated_params(material).contact_modulus_pa;
-  for (int k = 0; k < servo_max; ++k) {
-    sim.run(chunk);
+  const double target = spec.compaction_pressure_pa, modulus = spec.compaction_modulus_pa;
+  for (int k = 0; k < kServoMax; ++k) {
+    sim.run(kServoChunk);
     report_progress();
     const double p = wall_pressure(sim, spec);
     if (k >= 5 && std::abs(p - target) < 0.2 * target) break;
@@ -221,9 +231,9 @@ Simulation make_random(const Material& material, const SpecimenSpec& spec, Speci
     set_scale(scale * (1 + change));
   }
   report.radius_scale = scale;
-  // 3. Floaters (fewer than 3 contacts): enlarge by 1 % per round, at most 6 rounds.
+  // 3. Floaters (fewer than 3 contacts): enlarge by 1 % per round, at most kFloaterRounds rounds.
   report.n_floaters_enlarged = 0;
-  for (int round = 0; round < floater_rounds; ++round) {
+  for (int round = 0; round < kFloaterRounds; ++round) {
     sim.evaluate_forces();
     int floaters = 0;
     for (std::size_t k = 0; k < n; ++k) {
@@ -241,32 +251,65 @@ Simulation make_random(const Material& material, const SpecimenSpec& spec, Speci
   sim.evaluate_forces();
   report.n_floaters_left = 0;
   for (std::size_t k = 0; k < n; ++k) report.n_floaters_left += sim.n_contacts_of(k) < 3;
-  // 4. Joints, stress free, within the installation gap; 5. walls removed; 6. relax with friction.
-  sim.install_bonds_within_gap(spec.installation_gap_m);
-  sim.walls().clear();
-  for (std::size_t k = 0; k < n; ++k) sim.particles().vx[k] = sim.particles().vy[k] = sim.particles().omega[k] = 0;
-  sim.set_contact_law(material.contact);
-  sim.set_local_damping(material.local_damping);
-  sim.invalidate_neighbours();
-  sim.refresh_time_step();
-  sim.run(spec.relax_steps);
-  report_progress();
   report.genesis_steps = sim.step_count();
-  sim.evaluate_forces();
-  finish_report(sim, spec, report);
-  return sim;
+  return out;
 }
 
 }  // namespace
 
-Simulation make_specimen(const Material& material, const SpecimenSpec& spec, SpecimenReport& report,
-                         const std::function<void(std::int64_t, std::int64_t)>& progress) {
-  report = {};
-  Simulation sim = spec.packing == Packing::hexagonal ? make_hexagonal(material, spec, report)
-                                               : make_random(material, spec, report, progress);
+CompactedPacking compact_packing(const SpecimenSpec& spec, const GenesisProgress& progress) {
+  return spec.packing == Packing::hexagonal ? hexagonal_lattice(spec) : compact_random(spec, progress);
+}
+
+Simulation finish_specimen(const CompactedPacking& packing, const Material& material, const SpecimenSpec& spec,
+                           SpecimenReport& report, const GenesisProgress& progress) {
+  report = packing.report;
+  // The disks at rest (positions, radii, rotations) in a simulation of the material: its densities and laws.
+  Simulation sim(material, {.thickness_m = spec.thickness_m});
+  const auto& p = packing.disks.particles();
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    sim.add_particle(p.x[k], p.y[k], p.radius[k]);
+    sim.particles().theta[k] = p.theta[k];
+  }
+  if (spec.packing == Packing::hexagonal) {
+    sim.install_bonds_within_gap(1e-6 * 0.5 * (spec.radius_min_m + spec.radius_max_m));
+    sim.initialise();
+  } else {
+    // 4. Joints, stress free, within the installation gap; 5. the walls are not copied; 6. relax with the
+    // material's contact law (friction on) and damping.
+    sim.install_bonds_within_gap(spec.installation_gap_m);
+    sim.initialise();
+    sim.run(spec.relax_steps);
+    if (progress) progress(report.genesis_steps + sim.step_count(), random_genesis_steps(spec));
+    report.genesis_steps += sim.step_count();
+    sim.evaluate_forces();
+  }
+  finish_report(sim, spec, report);
   // The specimen starts a test at rest, at time zero, with no crack history.
   sim.set_clock(0, 0);
   sim.cracks().clear();
+  return sim;
+}
+
+Simulation make_specimen(const Material& material, const SpecimenSpec& spec, SpecimenReport& report,
+                         const GenesisProgress& progress) {
+  return finish_specimen(compact_packing(spec, progress), material, spec, report, progress);
+}
+
+SpecimenSource SpecimenSource::genesis(CompactedPacking packing, const SpecimenSpec& spec, const EngineSettings& engine) {
+  if (packing.disks.bonds().size() != 0)
+    throw ModelError("specimen", "a compacted packing has no joints (a checkpoint of an older kerf-dem?)");
+  return {std::move(packing), spec, engine, true};
+}
+
+SpecimenSource SpecimenSource::saved(Simulation specimen, const EngineSettings& engine) {
+  return {{std::move(specimen), {}}, {}, engine, false};
+}
+
+Simulation SpecimenSource::for_material(const Material& material) const {
+  SpecimenReport report;
+  Simulation sim = genesis_ ? finish_specimen(packing_, material, spec_, report) : with_material(packing_.disks, material);
+  engine_.apply_to(sim);
   return sim;
 }
 

@@ -120,14 +120,16 @@ class CalibrateKind final : public SceneKind {
   }
 
   SceneOutcome run(const SceneCommon& common, const SceneRun& run) override {
-    StartedRun started = start_from_specimen(common, "calibrate", progress_target(run.options));
-    const Simulation& specimen = started.specimen;
-    Json& summary = started.summary;
-    return calibrate_from(common, run, specimen, std::move(summary), {});
+    StartedSource started = start_specimen_source(common, "calibrate", progress_target(run.options));
+    return calibrate_from(common, run, started.source, std::move(started.summary), {});
   }
 
   SceneOutcome resume(const SceneCommon& common, const SceneRun& run, const Checkpoint& c) override {
-    return calibrate_from(common, run, Simulation::deserialize(c.specimen), c.summary, deserialize_evaluations(c.run));
+    Simulation disks = Simulation::deserialize(c.specimen);
+    const SpecimenSource source = common.specimen_file
+                                      ? SpecimenSource::saved(std::move(disks), common.engine)
+                                      : SpecimenSource::genesis({std::move(disks), {}}, common.specimen, common.engine);
+    return calibrate_from(common, run, source, c.summary, deserialize_evaluations(c.run));
   }
 
  private:
@@ -136,8 +138,9 @@ class CalibrateKind final : public SceneKind {
 
   /// Runs (or, with `known` from a checkpoint, continues) the calibration. With checkpoints a checkpoint is
   /// written after every evaluation (an evaluation is the unit of work that cannot be cut short).
-  SceneOutcome calibrate_from(const SceneCommon& common, const SceneRun& run, const Simulation& specimen, Json summary,
+  SceneOutcome calibrate_from(const SceneCommon& common, const SceneRun& run, const SpecimenSource& source, Json summary,
                               const std::vector<CalibrationEvaluation>& known) const {
+    const Simulation& specimen = source.disks();
     const fs::path& out = run.options.out;
     const int checkpoint_every = run.options.checkpoint_every;
     const auto start = std::chrono::steady_clock::now();
@@ -146,7 +149,7 @@ class CalibrateKind final : public SceneKind {
     std::string log = csv_line({"evaluation", "effective_modulus_GPa", "stiffness_ratio", "tensile_strength_MPa",
                                 "cohesion_MPa", "youngs_modulus_GPa", "poissons_ratio", "macro_tensile_strength_MPa",
                                 "macro_compressive_strength_MPa", "max_error_percent", "wall_time_s"});
-    const CalibrationResult r = calibrate(specimen, common.material, spec_, [&](const CalibrationEvaluation& e) {
+    const CalibrationResult r = calibrate(source, common.material, spec_, [&](const CalibrationEvaluation& e) {
       const CalibratedParams m = calibrated_params(e.material);
       log += csv_line({std::to_string(e.index), csv_number(units::pa_to_gpa(m.contact_modulus_pa)),
                        csv_number(m.stiffness_ratio), csv_number(units::pa_to_mpa(m.tensile_strength_pa)),

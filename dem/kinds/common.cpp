@@ -52,6 +52,34 @@ void StageProgress::finish(std::optional<SampleState> sample) {
   }
 }
 
+namespace {
+/// A genesis's progress: the stage "specimen genesis", begun at the first report (its total known then).
+class GenesisStage {
+ public:
+  explicit GenesisStage(const ProgressTarget& target) : target_(target) {}
+  GenesisProgress callback() {
+    return [this](std::int64_t done, std::int64_t total) {
+      if (!stage_) stage_.emplace(target_, "specimen genesis", static_cast<double>(total), "steps");
+      stage_->advance(static_cast<double>(done - shown_));
+      shown_ = done;
+    };
+  }
+  /// Ends the stage with the genesis's own steps, for the log's performance lines (its total is an upper bound).
+  void finish(std::size_t n_disks) {
+    if (stage_) stage_->finish(SampleState{shown_, 0, n_disks, 0, {}, {}, {}, {}, {}});
+  }
+
+ private:
+  const ProgressTarget& target_;
+  std::optional<StageProgress> stage_;
+  std::int64_t shown_ = 0;
+};
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+}  // namespace
+
 Simulation obtain_specimen(const SceneCommon& scene, SpecimenSpec& spec, SpecimenReport& report, double& wall_s,
                            const ProgressTarget& target) {
   const auto start = std::chrono::steady_clock::now();
@@ -60,20 +88,12 @@ Simulation obtain_specimen(const SceneCommon& scene, SpecimenSpec& spec, Specime
     sim.emplace(load_specimen(*scene.specimen_file, scene.material, spec, report));
   } else {
     spec = scene.specimen;
-    std::optional<StageProgress> progress;
-    std::int64_t shown = 0;
-    sim.emplace(make_specimen(scene.material, spec, report, [&](std::int64_t done, std::int64_t total) {
-      if (!progress) progress.emplace(target, "specimen genesis", static_cast<double>(total), "steps");
-      progress->advance(static_cast<double>(done - shown));
-      shown = done;
-    }));
-    if (progress) {
-      // The genesis's own steps, for the log's performance lines (its total is an upper bound).
-      progress->finish(SampleState{shown, 0, sim->particles().size(), 0, {}, {}, {}, {}, {}});
-    }
+    GenesisStage stage(target);
+    sim.emplace(make_specimen(scene.material, spec, report, stage.callback()));
+    stage.finish(sim->particles().size());
   }
   scene.engine.apply_to(*sim);
-  wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  wall_s = seconds_since(start);
   return std::move(*sim);
 }
 
@@ -97,6 +117,20 @@ StartedRun start_from_specimen(const SceneCommon& scene, const std::string& kind
   summary["specimen"] = specimen_json(spec, report, genesis_s);
   summary["time_step_s"] = specimen.time_step();
   return {std::move(specimen), spec, report, std::move(summary)};
+}
+
+StartedSource start_specimen_source(const SceneCommon& scene, const std::string& kind, const ProgressTarget& progress) {
+  if (scene.specimen_file) {
+    StartedRun started = start_from_specimen(scene, kind, progress);
+    return {SpecimenSource::saved(std::move(started.specimen), scene.engine), std::move(started.summary)};
+  }
+  const auto start = std::chrono::steady_clock::now();
+  GenesisStage stage(progress);
+  CompactedPacking packing = compact_packing(scene.specimen, stage.callback());
+  stage.finish(packing.disks.particles().size());
+  Json summary = summary_head(kind, scene.material);
+  summary["specimen"] = specimen_json(scene.specimen, packing.report, seconds_since(start));
+  return {SpecimenSource::genesis(std::move(packing), scene.specimen, scene.engine), std::move(summary)};
 }
 
 void write_summary(const fs::path& out, const Json& summary) {

@@ -15,8 +15,6 @@ namespace kerf::dem::kinds {
 
 namespace fs = std::filesystem;
 
-/// The specimen of a scene: loaded from specimen.file or made by genesis (with a progress bar when
-/// `show_progress`), the engine settings applied; `spec`, `report` and the wall time are filled in.
 /// Where a run's progress goes: the terminal bar and the caller's callback (RunOptions).
 struct ProgressTarget {
   bool bar = true;            ///< false for replicates run side by side (one bar each would garble the terminal)
@@ -41,6 +39,8 @@ class StageProgress {
   ProgressUpdate update_;
 };
 
+/// The specimen of a scene: loaded from specimen.file or made by genesis (its progress shown), the engine
+/// settings applied; `spec`, `report` and the wall time are filled in.
 Simulation obtain_specimen(const SceneCommon& scene, SpecimenSpec& spec, SpecimenReport& report, double& wall_s,
                            const ProgressTarget& progress);
 
@@ -58,6 +58,15 @@ struct StartedRun {
   Json summary;  ///< summary_head, "specimen" (specimen_json) and "time_step_s"
 };
 StartedRun start_from_specimen(const SceneCommon& scene, const std::string& kind, const ProgressTarget& progress);
+
+/// What a calibration builds its candidates' specimens from, with the head of its summary. From a genesis: the
+/// compacted packing (the summary's "specimen" has the compaction's report: no joints yet); from
+/// specimen.file: the saved specimen (as start_from_specimen).
+struct StartedSource {
+  SpecimenSource source;
+  Json summary;
+};
+StartedSource start_specimen_source(const SceneCommon& scene, const std::string& kind, const ProgressTarget& progress);
 
 /// Writes OUT/summary.json.
 void write_summary(const fs::path& out, const Json& summary);

@@ -4,6 +4,7 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <algorithm>
 #include <array>
 #include <filesystem>
 #include <vector>
@@ -115,6 +116,45 @@ TEST_CASE("specimen: random packing is dense, well connected and nearly free of 
   Simulation sim2 = make_specimen(m, spec, again);
   CHECK(sim2.particles().x == sim.particles().x);
   CHECK(again.n_bonds == report.n_bonds);
+}
+
+TEST_CASE("specimen: the packing is the spec's alone, the joints and the relaxation the material's", "[specimen]") {
+  // Why (docs/dem.md, Calibration): a calibration evaluates each candidate material on the packing compacted
+  // once; that is the specimen a scene with the same spec and the candidate builds only if the compaction
+  // does not depend on the material.
+  const SpecimenSpec spec = small_random();
+  Material soft, stiff;
+  std::get<LinearContactParams>(stiff.contact).effective_modulus_pa *= 3;
+  std::get<FlatJointParams>(stiff.joint).effective_modulus_pa *= 3;
+  stiff.density_kg_per_m3 *= 1.5;
+  stiff.local_damping = 0.3;
+  const CompactedPacking packing = compact_packing(spec);
+  CHECK(packing.disks.bonds().size() == 0);
+  SpecimenReport a, b, c;
+  const Simulation from_soft = make_specimen(soft, spec, a);
+  const Simulation from_stiff = make_specimen(stiff, spec, b);
+  const Simulation finished = finish_specimen(packing, stiff, spec, c);
+  // The same disks: radii to the bit (set by the compaction alone), positions within the relaxation's motion.
+  REQUIRE(from_soft.particles().size() == from_stiff.particles().size());
+  CHECK(from_soft.particles().radius == from_stiff.particles().radius);
+  CHECK(from_soft.particles().radius == packing.disks.particles().radius);
+  double largest_move = 0;
+  for (std::size_t k = 0; k < from_soft.particles().size(); ++k)
+    largest_move = std::max(largest_move, std::hypot(from_soft.particles().x[k] - from_stiff.particles().x[k],
+                                                     from_soft.particles().y[k] - from_stiff.particles().y[k]));
+  CHECK(largest_move < 0.05 * spec.radius_min_m);
+  CHECK(largest_move > 0);  // the relaxation is the material's
+  // make_specimen is the two parts, to the bit.
+  CHECK(finished.particles().x == from_stiff.particles().x);
+  CHECK(finished.particles().y == from_stiff.particles().y);
+  CHECK(finished.bonds().i == from_stiff.bonds().i);
+  CHECK(c.genesis_steps == b.genesis_steps);
+  CHECK(c.residual_stress_xx_pa == b.residual_stress_xx_pa);
+  CHECK(a.radius_scale == b.radius_scale);
+  // A different reference modulus is a different packing.
+  SpecimenSpec harder = spec;
+  harder.compaction_modulus_pa *= 2;
+  CHECK(compact_packing(harder).disks.particles().radius != packing.disks.particles().radius);
 }
 
 TEST_CASE("specimen: save and load round trip", "[specimen]") {

@@ -17,10 +17,13 @@
 // Evaluations are memoised by their exact micro-parameters (a repeated point is not re-run, and is not
 // counted against max_evaluations), and `known` answers evaluations from an interrupted run: calibrate is
 // deterministic given its answers, so a resumed calibration repeats the uninterrupted one exactly.
+// Each candidate is evaluated on the specimen its SpecimenSource builds for it: from a genesis, the specimen a
+// scene with the same spec and that material builds, to the bit (the packing does not depend on the material).
 //
-//   CalibrationResult r = calibrate(specimen, start_material, spec, [](const CalibrationEvaluation& e) { ... });
+//   SpecimenSource source = SpecimenSource::genesis(compact_packing(spec), spec, EngineSettings{});
+//   CalibrationResult r = calibrate(source, start_material, cal, [](const CalibrationEvaluation& e) { ... });
 //   // after a kill: the evaluations saved by serialize_evaluations are answered, not re-run
-//   CalibrationResult same = calibrate(specimen, start_material, spec, on_evaluation, deserialize_evaluations(bytes));
+//   CalibrationResult same = calibrate(source, start_material, cal, on_evaluation, deserialize_evaluations(bytes));
 #include <functional>
 #include <string>
 #include <string_view>
@@ -28,6 +31,7 @@
 
 #include "kerf/dem/lab_test.hpp"
 #include "kerf/dem/material.hpp"
+#include "kerf/dem/specimen.hpp"
 #include "kerf/dem/simulation.hpp"
 
 namespace kerf::dem {
@@ -67,8 +71,8 @@ struct CalibrationResult {
   std::vector<CalibrationEvaluation> log;
 };
 
-/// Runs tension (for sigma_t) and compression (for E, nu, sigma_c) on a copy of the specimen with `m`.
-MacroProperties measure_macro_properties(const Simulation& specimen, const Material& m, const LoadingSpec& tension,
+/// Runs tension (for sigma_t) and compression (for E, nu, sigma_c) on copies of the specimen (its material).
+MacroProperties measure_macro_properties(const Simulation& specimen, const LoadingSpec& tension,
                                          const LoadingSpec& compression);
 
 /// Largest relative deviation of the four properties from the targets.
@@ -76,7 +80,7 @@ double max_relative_error(const MacroProperties& got, const MacroProperties& tar
 
 /// `known`: evaluations of an interrupted run of the same calibration (same specimen, start and spec); an
 /// evaluation whose micro-parameters equal one of them bit for bit takes its result instead of running.
-CalibrationResult calibrate(const Simulation& specimen, const Material& start, const CalibrationSpec& spec,
+CalibrationResult calibrate(const SpecimenSource& source, const Material& start, const CalibrationSpec& spec,
                             const std::function<void(const CalibrationEvaluation&)>& on_evaluation = {},
                             const std::vector<CalibrationEvaluation>& known = {});
 

@@ -1,20 +1,25 @@
 #pragma once
 // Bonded-particle specimen genesis (physics-dem.md section 2) and its saved form.
 //
-// Random packing: disks with radii uniform in [R_min, R_max] placed at random in a walled vessel at half
-// size, grown frictionless to their full size, then servo-controlled (a common radius scale) to a low
-// isotropic pressure; floaters (< 3 contacts) are enlarged a little; flat joints are installed at every
-// pair closer than the installation gap; the walls are removed and the specimen relaxed with friction on.
+// Random packing, in two parts. The compaction does not depend on the material: disks with radii uniform in
+// [R_min, R_max] placed at random in a walled vessel at half size, grown to their full size through a
+// frictionless reference linear contact (E* = compaction_modulus), then servo-controlled (a common radius
+// scale) to a low isotropic pressure; floaters (< 3 contacts) are enlarged a little. The finish is the
+// material's: joints of its law at every pair closer than the installation gap, the walls removed, the
+// specimen relaxed with the material's contact law, friction and damping. One spec and seed give one
+// packing whatever the material, so a calibration can evaluate each candidate on exactly the specimen a scene
+// with that material builds (SpecimenSource).
 // Hexagonal packing: equal disks of radius (R_min + R_max) / 2 on a triangular lattice, every touching
 // pair jointed (closed-form elastic constants, for verification).
 //
 //   SpecimenSpec spec = read_specimen_spec(specimen_reader);  // the scene's "specimen" object
 //   SpecimenReport report;
-//   Simulation sim = make_specimen(material, spec, report);
+//   Simulation sim = make_specimen(material, spec, report);  // = finish_specimen(compact_packing(spec), ...)
 //   save_specimen("out/specimen.json", sim, spec, report);
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <utility>
 
 #include "kerf/dem/simulation.hpp"
 #include "kerf/field_table.hpp"
@@ -33,13 +38,16 @@ struct SpecimenSpec {
   std::uint64_t seed = 1;
   double packing_fraction = 0.85;           ///< area fraction used to choose the number of disks (random)
   double compaction_pressure_pa = 3e6;      ///< isotropic pressure of the frictionless compaction
+  /// E* of the compaction's reference contact (frictionless linear, kappa* kCompactionStiffnessRatio): a
+  /// glass-like stiffness, the same for every material, so that the packing is the spec's alone.
+  double compaction_modulus_pa = 90e9;
   double installation_gap_m = 0.5e-6;       ///< joints at pairs whose surface gap is below this
   int growth_steps = 6000, relax_steps = 2000;
 };
 
 /// The "specimen" section's keys (kerf/field_table.hpp): width_mm, height_mm, thickness_mm, radius_min_um,
-/// radius_max_um, packing, seed, packing_fraction, compaction_pressure_MPa, installation_gap_um, growth_steps,
-/// relax_steps.
+/// radius_max_um, packing, seed, packing_fraction, compaction_pressure_MPa, compaction_modulus_GPa,
+/// installation_gap_um, growth_steps, relax_steps.
 const FieldTable<SpecimenSpec>& specimen_fields();
 /// Every field's range and the relations between them (radius_max >= radius_min, at most 1/8 of the smaller
 /// side, at most 5 million disks); InputError names the key ("radius_max_um").
@@ -70,9 +78,52 @@ struct SpecimenReport {
 };
 Json specimen_report_to_json(const SpecimenReport& r);
 
-/// Builds a jointed specimen. `progress(done, total)` is called now and then with steps done.
+/// kappa* of the compaction's reference contact. The compaction is frictionless, so only the time step sees it.
+inline constexpr double kCompactionStiffnessRatio = 2.5;
+
+/// The disks of a specimen before any joint: the genesis's first part, which depends on the spec alone.
+struct CompactedPacking {
+  Simulation disks;       ///< unjointed; random: in the walled vessel, at the compaction pressure
+  SpecimenReport report;  ///< radius_scale, floaters and the compaction's steps
+};
+
+/// `progress(done, total)` is called now and then with steps done (the total includes the finish's relax).
+using GenesisProgress = std::function<void(std::int64_t, std::int64_t)>;
+
+/// The genesis's first part (see the top of this header).
+CompactedPacking compact_packing(const SpecimenSpec& spec, const GenesisProgress& progress = {});
+
+/// The genesis's second part: `material`'s joints within the installation gap, walls removed, relaxed with
+/// the material's laws and damping (random; hexagonal: every touching pair jointed). The specimen at rest,
+/// time zero, no crack history; `report` complete.
+Simulation finish_specimen(const CompactedPacking& packing, const Material& material, const SpecimenSpec& spec,
+                           SpecimenReport& report, const GenesisProgress& progress = {});
+
+/// Builds a jointed specimen: finish_specimen(compact_packing(spec), material, spec, report).
 Simulation make_specimen(const Material& material, const SpecimenSpec& spec, SpecimenReport& report,
-                         const std::function<void(std::int64_t, std::int64_t)>& progress = {});
+                         const GenesisProgress& progress = {});
+
+/// What a calibration builds each candidate's specimen from. From a genesis: the compacted packing, finished
+/// with the candidate, to the bit the specimen a scene with the same spec and that material builds. From a
+/// saved specimen: its packing and joint states with the candidate's micro-parameters (with_material).
+/// The engine settings are applied to every specimen it gives.
+class SpecimenSource {
+ public:
+  static SpecimenSource genesis(CompactedPacking packing, const SpecimenSpec& spec, const EngineSettings& engine);
+  static SpecimenSource saved(Simulation specimen, const EngineSettings& engine);
+  Simulation for_material(const Material& material) const;
+  /// The compacted packing's disks, or the saved specimen (for checkpoints and counts).
+  const Simulation& disks() const { return packing_.disks; }
+  bool from_genesis() const { return genesis_; }
+
+ private:
+  SpecimenSource(CompactedPacking packing, const SpecimenSpec& spec, const EngineSettings& engine, bool genesis)
+      : packing_(std::move(packing)), spec_(spec), engine_(engine), genesis_(genesis) {}
+  CompactedPacking packing_;  ///< saved: the jointed specimen and no report
+  SpecimenSpec spec_;
+  EngineSettings engine_;
+  bool genesis_;
+};
 
 /// The same packing and joint states with another material (stiffnesses follow the new micro-parameters;
 /// the element count must be the same). Walls and groups are not copied.
