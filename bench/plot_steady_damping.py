@@ -1,0 +1,71 @@
+#!/usr/bin/env python3
+"""The steady main and thrust forces of a damping/speed study (data/studies/steady_damping.json) against Cundall's
+local damping alpha, one line per tool speed, error bars the cuts' own standard errors (batch means); a cut with
+contact dashpots is drawn as an open marker at its alpha. Reads the study's items.csv and each item's summary.json.
+
+    python3 bench/plot_steady_damping.py STUDY_DIR OUT.png
+"""
+import csv
+import json
+import pathlib
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def items(study_dir):
+    rows = []
+    with open(study_dir / "items.csv") as f:
+        for row in csv.DictReader(f):
+            if row["status"] != "ok":
+                continue
+            name = f"condition_{row['condition']}_seed_{row['seed']}"
+            scene = json.loads((study_dir / "items" / name / "summary.json").read_text())
+            material = scene["material"]
+            rows.append({
+                "speed": scene["cut"]["cut"]["speed_m_per_s"],
+                "alpha": material["local_damping"],
+                "beta": material.get("viscous_damping_ratio", 0.0),
+                "main": float(row["main_force_N"]), "main_sem": float(row["main_force_sem_N"]),
+                "thrust": float(row["thrust_force_N"]), "thrust_sem": float(row["thrust_force_sem_N"]),
+            })
+    return rows
+
+
+def main():
+    study_dir, out = pathlib.Path(sys.argv[1]), sys.argv[2]
+    rows = items(study_dir)
+    fig, axes = plt.subplots(1, 2, figsize=(10, 4.2), sharex=True)
+    speeds = sorted({r["speed"] for r in rows}, reverse=True)
+    colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    for ax, key, title in ((axes[0], "main", "main force"), (axes[1], "thrust", "thrust force")):
+        for k, speed in enumerate(speeds):
+            local = sorted((r for r in rows if r["speed"] == speed and r["beta"] == 0), key=lambda r: r["alpha"])
+            viscous = [r for r in rows if r["speed"] == speed and r["beta"] > 0]
+            ax.errorbar([r["alpha"] for r in local], [r[key] for r in local], [r[key + "_sem"] for r in local],
+                        marker="o", capsize=3, color=colours[k], label=f"{speed:g} m/s, local damping only")
+            if viscous:
+                ax.errorbar([r["alpha"] for r in viscous], [r[key] for r in viscous], [r[key + "_sem"] for r in viscous],
+                            marker="s", mfc="none", linestyle="none", capsize=3, color=colours[k],
+                            label=f"{speed:g} m/s, dashpots (ratio {viscous[0]['beta']:g})")
+        ax.set_xscale("log")
+        alphas = sorted({r["alpha"] for r in rows})
+        ax.set_xticks(alphas)
+        ax.set_xticklabels([f"{a:g}" for a in alphas])
+        ax.minorticks_off()
+        ax.set_xlabel("local damping alpha")
+        ax.set_ylabel(f"steady {title} per 1 mm width (N)")
+        ax.set_title(f"{title}: mean +- standard error of one cut")
+        ax.set_ylim(bottom=0)
+        ax.grid(alpha=0.3)
+    axes[0].legend(fontsize=8)
+    fig.suptitle("Regular 0.1 mm steady cut (12 mm workpiece, 4 mm travel): damping and tool speed")
+    fig.tight_layout()
+    fig.savefig(out, dpi=120)
+
+
+if __name__ == "__main__":
+    main()
