@@ -262,6 +262,13 @@ Json item_scene(const StudySpec& spec, const StudyItem& item, std::vector<std::s
   return doc;
 }
 
+/// The scene less its top-level free text: what an item's result depends on (a reworded description of the
+/// base scene keeps the finished items).
+Json without_description(Json scene) {
+  if (scene.is_object()) scene.erase("description");
+  return scene;
+}
+
 }  // namespace
 
 StudyItemResult run_study_item(const StudySpec& spec, const StudyItem& item, const fs::path& out, int threads,
@@ -284,7 +291,7 @@ StudyItemResult run_study_item(const StudySpec& spec, const StudyItem& item, con
       try {
         const Json old = read_json_file(summary_file.string());
         const Json& mark = old.at("study_item");
-        if (mark.at("scene") == doc) {
+        if (without_description(mark.at("scene")) == without_description(doc)) {
           r.reused = true;
           r.wall_time_s = mark.at("wall_time_s").get<double>();
           r.host = mark.at("host").get<std::string>();

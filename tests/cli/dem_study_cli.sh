@@ -72,6 +72,13 @@ cp "$work/s1/items.csv" "$work/s1_items_first.csv"
 "$bin" study "$smoke" --out "$work/s1" --threads 1 >"$work/log" 2>&1 || fail "rerun"
 grep -q "4 items (0 failed, 4 reused)" "$work/log" || fail "rerun did not reuse the 4 items: $(tail -1 "$work/log")"
 cmp -s "$work/s1_items_first.csv" "$work/s1/items.csv" || fail "rerun: items.csv changed"
+# A reworded description of the base scene changes no result: the items are reused.
+sed 's/"description": "/"description": "Reworded. /' "$src/data/scenes/dem_tension.json" >"$work/tension_reworded.json"
+grep -q '"Reworded. ' "$work/tension_reworded.json" || fail "the reworded scene has no reworded description"
+python3 -c 'import json, sys; s = json.load(open(sys.argv[1])); s["scene"] = sys.argv[2]; json.dump(s, open(sys.argv[3], "w"))' \
+  "$smoke" "$work/tension_reworded.json" "$work/smoke_reworded.json" || fail "reworded study"
+"$bin" study "$work/smoke_reworded.json" --out "$work/s1" --threads 1 >"$work/log" 2>&1 || fail "reworded rerun"
+grep -q "4 items (0 failed, 4 reused)" "$work/log" || fail "a reworded description did not reuse the items: $(tail -1 "$work/log")"
 
 if [ $with_mpi -eq 1 ]; then
   "${mpi[@]}" -np 1 "$bin" study "$smoke" --out "$work/m1" >"$work/log" 2>&1 || fail "mpirun -np 1: $(tail -3 "$work/log")"
