@@ -28,6 +28,21 @@ MacroProperties measure_macro_properties(const Simulation& specimen, const Loadi
   return {c.youngs_modulus_pa, c.poissons_ratio, t.peak_stress_pa, c.peak_stress_pa};
 }
 
+MacroProperties mean_macro_properties(std::span<const SpecimenSource> sources, const Material& m,
+                                      const LoadingSpec& tension, const LoadingSpec& compression) {
+  if (sources.empty()) throw ModelError("calibrate", "no specimen to evaluate a candidate on");
+  MacroProperties sum{0, 0, 0, 0};
+  for (const auto& source : sources) {
+    const MacroProperties one = measure_macro_properties(source.for_material(m), tension, compression);
+    sum.youngs_modulus_pa += one.youngs_modulus_pa;
+    sum.poissons_ratio += one.poissons_ratio;
+    sum.tensile_strength_pa += one.tensile_strength_pa;
+    sum.compressive_strength_pa += one.compressive_strength_pa;
+  }
+  const double n = static_cast<double>(sources.size());
+  return {sum.youngs_modulus_pa / n, sum.poissons_ratio / n, sum.tensile_strength_pa / n, sum.compressive_strength_pa / n};
+}
+
 double max_relative_error(const MacroProperties& got, const MacroProperties& target) {
   return std::max({std::abs(got.youngs_modulus_pa / target.youngs_modulus_pa - 1),
                    std::abs(got.poissons_ratio / target.poissons_ratio - 1),
@@ -38,7 +53,7 @@ double max_relative_error(const MacroProperties& got, const MacroProperties& tar
 namespace {
 
 struct Context {
-  const SpecimenSource* source;
+  std::span<const SpecimenSource> sources;
   const CalibrationSpec* spec;
   const std::function<void(const CalibrationEvaluation&)>* on_evaluation;
   const std::vector<CalibrationEvaluation>* known;  ///< answers from an interrupted run
@@ -70,7 +85,7 @@ MacroProperties evaluate(Context& ctx, const Material& proposed) {
     e.from_checkpoint = true;
   } else {
     const auto start = std::chrono::steady_clock::now();
-    e.macro = measure_macro_properties(ctx.source->for_material(m), ctx.spec->tension, ctx.spec->compression);
+    e.macro = mean_macro_properties(ctx.sources, m, ctx.spec->tension, ctx.spec->compression);
     e.max_relative_error = max_relative_error(e.macro, ctx.spec->targets);
     e.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
@@ -286,7 +301,7 @@ void solve_hybrid(Context& ctx) {
 }  // namespace
 
 namespace {
-constexpr std::uint64_t kEvaluationsMagic = 0x4b45524643414c33;  // "KERFCAL3" (2: the viscous damping ratio; 3: the checkpoint's specimen is the compacted packing)
+constexpr std::uint64_t kEvaluationsMagic = 0x4b45524643414c33;  // "KERFCAL3" (2: the viscous damping ratio; 3: the specimens are built again on resume, 2026-11-26)
 
 /// One evaluation's fields in checkpoint order: io(field...) writes (serial::Out) or reads (serial::In) them.
 template <class Self, class Io>
@@ -319,10 +334,10 @@ std::vector<CalibrationEvaluation> deserialize_evaluations(std::string_view byte
   return log;
 }
 
-CalibrationResult calibrate(const SpecimenSource& source, const Material& start, const CalibrationSpec& spec,
+CalibrationResult calibrate(std::span<const SpecimenSource> sources, const Material& start, const CalibrationSpec& spec,
                             const std::function<void(const CalibrationEvaluation&)>& on_evaluation,
                             const std::vector<CalibrationEvaluation>& known) {
-  Context ctx{&source, &spec, &on_evaluation, &known, start, {}, false, 0};
+  Context ctx{sources, &spec, &on_evaluation, &known, start, {}, false, 0};
   if (!spec.free_stiffness_ratio && !spec.free_cohesion) {
     // Only the proportional corrections: repeat them until within tolerance.
     while (!ctx.done) evaluate(ctx, ctx.current);

@@ -47,6 +47,9 @@ const FieldTable<CalibrationSpec>& calibration_fields() {
       int_field("max_evaluations", 1, 1000, "DEM evaluations (one tension and one compression test each)",
                 &CalibrationSpec::max_evaluations),
       choice_field("method", method_names(), "root finder (kerf/dem/calibration.hpp)", &CalibrationSpec::method),
+      int_field("packings", 1, 64,
+                "packings each candidate is evaluated on (seeds specimen.seed + 0..N-1); their mean is calibrated",
+                &CalibrationSpec::packings),
       FlagsField<CalibrationSpec>{"free", free_names, "the micro-parameters the calibration may change",
                                   [](const CalibrationSpec& c) {
                                     return unsigned{c.free_modulus} | unsigned{c.free_stiffness_ratio} << 1 |
@@ -120,16 +123,15 @@ class CalibrateKind final : public SceneKind {
   }
 
   SceneOutcome run(const SceneCommon& common, const SceneRun& run) override {
-    StartedSource started = start_specimen_source(common, "calibrate", progress_target(run.options));
-    return calibrate_from(common, run, started.source, std::move(started.summary), {});
+    StartedSources started = start_specimen_sources(common, "calibrate", spec_.packings, progress_target(run.options));
+    return calibrate_from(common, run, started.sources, std::move(started.summary), {});
   }
 
+  /// The specimens are built again (a genesis or a specimen file is deterministic); the checkpoint holds the
+  /// summary's head and the evaluations.
   SceneOutcome resume(const SceneCommon& common, const SceneRun& run, const Checkpoint& c) override {
-    Simulation disks = Simulation::deserialize(c.specimen);
-    const SpecimenSource source = common.specimen_file
-                                      ? SpecimenSource::saved(std::move(disks), common.engine)
-                                      : SpecimenSource::genesis({std::move(disks), {}}, common.specimen, common.engine);
-    return calibrate_from(common, run, source, c.summary, deserialize_evaluations(c.run));
+    StartedSources started = start_specimen_sources(common, "calibrate", spec_.packings, progress_target(run.options));
+    return calibrate_from(common, run, started.sources, c.summary, deserialize_evaluations(c.run));
   }
 
  private:
@@ -138,18 +140,17 @@ class CalibrateKind final : public SceneKind {
 
   /// Runs (or, with `known` from a checkpoint, continues) the calibration. With checkpoints a checkpoint is
   /// written after every evaluation (an evaluation is the unit of work that cannot be cut short).
-  SceneOutcome calibrate_from(const SceneCommon& common, const SceneRun& run, const SpecimenSource& source, Json summary,
-                              const std::vector<CalibrationEvaluation>& known) const {
-    const Simulation& specimen = source.disks();
+  SceneOutcome calibrate_from(const SceneCommon& common, const SceneRun& run, const std::vector<SpecimenSource>& sources,
+                              Json summary, const std::vector<CalibrationEvaluation>& known) const {
+    const Simulation& specimen = sources.front().disks();
     const fs::path& out = run.options.out;
     const int checkpoint_every = run.options.checkpoint_every;
     const auto start = std::chrono::steady_clock::now();
-    const std::string specimen_bytes = checkpoint_every > 0 ? specimen.serialize() : std::string();
     std::vector<CalibrationEvaluation> done;
     std::string log = csv_line({"evaluation", "effective_modulus_GPa", "stiffness_ratio", "tensile_strength_MPa",
                                 "cohesion_MPa", "youngs_modulus_GPa", "poissons_ratio", "macro_tensile_strength_MPa",
                                 "macro_compressive_strength_MPa", "max_error_percent", "wall_time_s"});
-    const CalibrationResult r = calibrate(source, common.material, spec_, [&](const CalibrationEvaluation& e) {
+    const CalibrationResult r = calibrate(sources, common.material, spec_, [&](const CalibrationEvaluation& e) {
       const CalibratedParams m = calibrated_params(e.material);
       log += csv_line({std::to_string(e.index), csv_number(units::pa_to_gpa(m.contact_modulus_pa)),
                        csv_number(m.stiffness_ratio), csv_number(units::pa_to_mpa(m.tensile_strength_pa)),
@@ -161,7 +162,7 @@ class CalibrateKind final : public SceneKind {
       done.push_back(e);
       if (checkpoint_every > 0)
         write_checkpoint(out, {run.doc, summary, {}, static_cast<int>(done.size()), checkpoint_every, run.scene_dir,
-                               specimen_bytes, serialize_evaluations(done)});
+                               std::string(), serialize_evaluations(done)});
       std::cout << fmt::format("evaluation {}: E* {:.2f} GPa, kappa {:.3f}, sigma_c {:.1f} MPa, c {:.1f} MPa -> E {:.2f} GPa, "
                                "nu {:.3f}, sigma_t {:.1f} MPa, sigma_C {:.1f} MPa (max error {:.1f} %, {:.0f} s{})\n",
                                e.index, units::pa_to_gpa(m.contact_modulus_pa), m.stiffness_ratio,
@@ -176,10 +177,14 @@ class CalibrateKind final : public SceneKind {
     const auto& t = spec_.targets;
     const std::string description = fmt::format(
         "Calibrated by kerf-dem calibrate ({} evaluations, {}converged: max error {:.2f} % against targets E {:.1f} GPa, "
-        "nu {:.3f}, sigma_t {:.1f} MPa, sigma_c {:.1f} MPa) on a {} specimen of {} disks.",
+        "nu {:.3f}, sigma_t {:.1f} MPa, sigma_c {:.1f} MPa) on a {} specimen of {} disks{}.",
         r.log.size(), r.converged ? "" : "NOT ", 100 * r.max_relative_error, units::pa_to_gpa(t.youngs_modulus_pa),
         t.poissons_ratio, units::pa_to_mpa(t.tensile_strength_pa), units::pa_to_mpa(t.compressive_strength_pa),
-        summary["specimen"]["packing"].get<std::string>(), specimen.particles().size());
+        summary["specimen"]["packing"].get<std::string>(), specimen.particles().size(),
+        sources.size() > 1 ? fmt::format(" (the mean over {} packings, seeds {} to {})", sources.size(),
+                                         summary["specimen"]["seed"].get<int>(),
+                                         summary["specimen"]["seed"].get<int>() + static_cast<int>(sources.size()) - 1)
+                           : std::string());
     const Json material = library_material_json(calibrated, "Flat-joint DEM material calibrated by kerf-dem",
                                                 description, "kerf-dem calibrate (see description)");
     write_material_output(output_, material, out, summary);

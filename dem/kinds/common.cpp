@@ -119,18 +119,32 @@ StartedRun start_from_specimen(const SceneCommon& scene, const std::string& kind
   return {std::move(specimen), spec, report, std::move(summary)};
 }
 
-StartedSource start_specimen_source(const SceneCommon& scene, const std::string& kind, const ProgressTarget& progress) {
+StartedSources start_specimen_sources(const SceneCommon& scene, const std::string& kind, int packings,
+                                      const ProgressTarget& progress) {
   if (scene.specimen_file) {
+    if (packings != 1)
+      throw InputError("calibration.packings", std::to_string(packings), "1 with specimen.file (one saved packing)");
     StartedRun started = start_from_specimen(scene, kind, progress);
-    return {SpecimenSource::saved(std::move(started.specimen), scene.engine), std::move(started.summary)};
+    std::vector<SpecimenSource> sources;
+    sources.push_back(SpecimenSource::saved(std::move(started.specimen), scene.engine));
+    return {std::move(sources), std::move(started.summary)};
   }
   const auto start = std::chrono::steady_clock::now();
-  GenesisStage stage(progress);
-  CompactedPacking packing = compact_packing(scene.specimen, stage.callback());
-  stage.finish(packing.disks.particles().size());
-  Json summary = summary_head(kind, scene.material);
-  summary["specimen"] = specimen_json(scene.specimen, packing.report, seconds_since(start));
-  return {SpecimenSource::genesis(std::move(packing), scene.specimen, scene.engine), std::move(summary)};
+  StartedSources out{{}, summary_head(kind, scene.material)};
+  for (int k = 0; k < packings; ++k) {
+    SpecimenSpec spec = scene.specimen;
+    spec.seed += static_cast<std::uint64_t>(k);
+    ProgressTarget target = progress;
+    if (packings > 1) target.prefix += fmt::format("packing {}: ", k + 1);
+    GenesisStage stage(target);
+    CompactedPacking packing = compact_packing(spec, stage.callback());
+    stage.finish(packing.disks.particles().size());
+    if (k == 0) out.summary["specimen"] = specimen_json(spec, packing.report, 0);
+    out.sources.push_back(SpecimenSource::genesis(std::move(packing), spec, scene.engine));
+  }
+  out.summary["specimen"]["genesis_wall_time_s"] = seconds_since(start);
+  out.summary["specimen"]["packings"] = packings;
+  return out;
 }
 
 void write_summary(const fs::path& out, const Json& summary) {

@@ -5,6 +5,7 @@
 #include <optional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "kerf/dem/cutting.hpp"
 #include "kerf/dem/scene.hpp"
@@ -60,13 +61,15 @@ struct StartedRun {
 StartedRun start_from_specimen(const SceneCommon& scene, const std::string& kind, const ProgressTarget& progress);
 
 /// What a calibration builds its candidates' specimens from, with the head of its summary. From a genesis: the
-/// compacted packing (the summary's "specimen" has the compaction's report: no joints yet); from
-/// specimen.file: the saved specimen (as start_from_specimen).
-struct StartedSource {
-  SpecimenSource source;
+/// compacted packings of seeds specimen.seed + 0..packings-1 (the summary's "specimen" has the first
+/// compaction's report, no joints yet, and "packings"); from specimen.file: the saved specimen, one packing (as
+/// start_from_specimen; more is an input error naming calibration.packings).
+struct StartedSources {
+  std::vector<SpecimenSource> sources;
   Json summary;
 };
-StartedSource start_specimen_source(const SceneCommon& scene, const std::string& kind, const ProgressTarget& progress);
+StartedSources start_specimen_sources(const SceneCommon& scene, const std::string& kind, int packings,
+                                      const ProgressTarget& progress);
 
 /// Writes OUT/summary.json.
 void write_summary(const fs::path& out, const Json& summary);

@@ -22,4 +22,11 @@ cmp -s <(cut -d, -f1-10 "$work/full/calibration_log.csv") <(cut -d, -f1-10 "$wor
 results() { sed -n '/^  "results": {/,/^  }/p' "$1/summary.json"; }
 [ -n "$(results "$work/full")" ] || fail "no results in summary.json"
 cmp -s <(results "$work/full") <(results "$work/kill") || fail "resumed summary results differ"
+# A saved specimen is one packing: more is refused, naming the key, before any evaluation.
+"$bin" run "$src/data/scenes/dem_specimen.json" "${tiny[@]:0:8}" --threads 1 --out "$work/spec" >/dev/null 2>&1 ||
+  fail "tiny specimen for specimen.file"
+python3 -c 'import json, sys; s = json.load(open(sys.argv[1])); s["specimen"] = {"file": sys.argv[2]}; json.dump(s, open(sys.argv[3], "w"))' \
+  "$scene" "$work/spec/specimen.json" "$work/from_file.json" || fail "scene with specimen.file"
+expect_input_error "calibration.packings = 2: expected 1 with specimen.file" run "$work/from_file.json" \
+  --set calibration.packings=2 --out "$work/x"
 echo "dem_calibrate_cli: ok"

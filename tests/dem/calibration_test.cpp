@@ -5,8 +5,10 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "quick_specimen.hpp"
 
@@ -25,8 +27,17 @@ Simulation tiny_specimen() {
   return make_specimen(Material{}, tiny_spec(), report);
 }
 
-/// The calibration's candidates are built as a scene builds its specimen: from the compacted packing.
-SpecimenSource tiny_source() { return SpecimenSource::genesis(compact_packing(tiny_spec()), tiny_spec(), EngineSettings{}); }
+/// The calibration's candidates are built as a scene builds its specimen: from the compacted packing(s) of
+/// seeds 3, 4, ...
+std::vector<SpecimenSource> tiny_sources(int packings = 1) {
+  std::vector<SpecimenSource> sources;
+  for (int k = 0; k < packings; ++k) {
+    SpecimenSpec spec = tiny_spec();
+    spec.seed += static_cast<std::uint64_t>(k);
+    sources.push_back(SpecimenSource::genesis(compact_packing(spec), spec, EngineSettings{}));
+  }
+  return sources;
+}
 
 LoadingSpec loading(LabTest test) {
   LoadingSpec l;
@@ -78,7 +89,7 @@ TEST_CASE("calibration: the macro-properties converge with the time step", "[cal
 
 namespace {
 
-CalibrationSpec reachable_spec(const SpecimenSource& source) {
+CalibrationSpec reachable_spec(std::span<const SpecimenSource> sources) {
   Material hidden;
   std::get<LinearContactParams>(hidden.contact).effective_modulus_pa = std::get<FlatJointParams>(hidden.joint).effective_modulus_pa = 80e9;
   std::get<LinearContactParams>(hidden.contact).stiffness_ratio = std::get<FlatJointParams>(hidden.joint).stiffness_ratio = 2.5;
@@ -87,7 +98,7 @@ CalibrationSpec reachable_spec(const SpecimenSource& source) {
   CalibrationSpec spec;
   spec.tension = loading(LabTest::tension);
   spec.compression = loading(LabTest::compression);
-  spec.targets = measure_macro_properties(source.for_material(hidden), spec.tension, spec.compression);
+  spec.targets = mean_macro_properties(sources, hidden, spec.tension, spec.compression);
   spec.max_evaluations = 16;
   return spec;
 }
@@ -106,11 +117,11 @@ void check_same_log(const std::vector<CalibrationEvaluation>& a, const std::vect
 }  // namespace
 
 TEST_CASE("calibration: recovers reachable targets within 3 % on a small specimen (hybrid)", "[calibration]") {
-  const SpecimenSource source = tiny_source();
-  const CalibrationSpec spec = reachable_spec(source);
+  const std::vector<SpecimenSource> sources = tiny_sources();
+  const CalibrationSpec spec = reachable_spec(sources);
   REQUIRE(spec.method == CalibrationMethod::hybrid);
   int n = 0;
-  const CalibrationResult r = calibrate(source, Material{}, spec, [&](const CalibrationEvaluation&) { ++n; });
+  const CalibrationResult r = calibrate(sources, Material{}, spec, [&](const CalibrationEvaluation&) { ++n; });
   CHECK(r.converged);
   CHECK(n == static_cast<int>(r.log.size()));
   CHECK(r.max_relative_error <= 0.03);
@@ -131,7 +142,7 @@ TEST_CASE("calibration: recovers reachable targets within 3 % on a small specime
     const auto known = deserialize_evaluations(serialize_evaluations(saved));
     check_same_log(saved, known);
     CHECK(known.back().wall_time_s == saved.back().wall_time_s);
-    const CalibrationResult resumed = calibrate(source, Material{}, spec, {}, known);
+    const CalibrationResult resumed = calibrate(sources, Material{}, spec, {}, known);
     check_same_log(r.log, resumed.log);
     for (std::size_t i = 0; i < resumed.log.size(); ++i) CHECK(resumed.log[i].from_checkpoint == (i + 1 < r.log.size()));
     CHECK(resumed.converged);
@@ -140,12 +151,35 @@ TEST_CASE("calibration: recovers reachable targets within 3 % on a small specime
 }
 
 TEST_CASE("calibration: the secant method recovers reachable targets within 3 %", "[calibration]") {
-  const SpecimenSource source = tiny_source();
-  CalibrationSpec spec = reachable_spec(source);
+  const std::vector<SpecimenSource> sources = tiny_sources();
+  CalibrationSpec spec = reachable_spec(sources);
   spec.method = CalibrationMethod::secant;
-  const CalibrationResult r = calibrate(source, Material{}, spec);
+  const CalibrationResult r = calibrate(sources, Material{}, spec);
   CHECK(r.converged);
   CHECK(r.max_relative_error <= 0.03);
+}
+
+TEST_CASE("calibration: over two packings, the mean of what two scenes build is calibrated", "[calibration]") {
+  const std::vector<SpecimenSource> sources = tiny_sources(2);
+  CalibrationSpec spec = reachable_spec(sources);
+  spec.packings = 2;
+  const CalibrationResult r = calibrate(sources, Material{}, spec);
+  CHECK(r.converged);
+  CHECK(r.max_relative_error <= 0.03);
+  // The reported macro-properties are the mean over the two scenes' own specimens (seeds 3 and 4), to the bit.
+  MacroProperties one[2];
+  for (int k = 0; k < 2; ++k) {
+    SpecimenSpec scene = tiny_spec();
+    scene.seed += static_cast<std::uint64_t>(k);
+    SpecimenReport report;
+    one[k] = measure_macro_properties(make_specimen(r.material, scene, report), spec.tension, spec.compression);
+  }
+  CHECK(r.macro.youngs_modulus_pa == (one[0].youngs_modulus_pa + one[1].youngs_modulus_pa) / 2);
+  CHECK(r.macro.poissons_ratio == (one[0].poissons_ratio + one[1].poissons_ratio) / 2);
+  CHECK(r.macro.tensile_strength_pa == (one[0].tensile_strength_pa + one[1].tensile_strength_pa) / 2);
+  CHECK(r.macro.compressive_strength_pa == (one[0].compressive_strength_pa + one[1].compressive_strength_pa) / 2);
+  // The packings differ: their mean is not either one.
+  CHECK(one[0].tensile_strength_pa != one[1].tensile_strength_pa);
 }
 
 TEST_CASE("calibration: evaluations serialise bit-exactly, corrupt bytes are rejected", "[calibration]") {

@@ -20,11 +20,12 @@
 // Each candidate is evaluated on the specimen its SpecimenSource builds for it: from a genesis, the specimen a
 // scene with the same spec and that material builds, to the bit (the packing does not depend on the material).
 //
-//   SpecimenSource source = SpecimenSource::genesis(compact_packing(spec), spec, EngineSettings{});
-//   CalibrationResult r = calibrate(source, start_material, cal, [](const CalibrationEvaluation& e) { ... });
+//   std::vector<SpecimenSource> sources{SpecimenSource::genesis(compact_packing(spec), spec, EngineSettings{})};
+//   CalibrationResult r = calibrate(sources, start_material, cal, [](const CalibrationEvaluation& e) { ... });
 //   // after a kill: the evaluations saved by serialize_evaluations are answered, not re-run
-//   CalibrationResult same = calibrate(source, start_material, cal, on_evaluation, deserialize_evaluations(bytes));
+//   CalibrationResult same = calibrate(sources, start_material, cal, on_evaluation, deserialize_evaluations(bytes));
 #include <functional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -51,6 +52,9 @@ struct CalibrationSpec {
   double tolerance = 0.03;          ///< relative, on each of the four
   int max_evaluations = 24;         ///< DEM evaluations (memoised repeats are free)
   CalibrationMethod method = CalibrationMethod::hybrid;
+  /// Packings a candidate is evaluated on (the scene's seed and the next ones): its macro-properties are their
+  /// mean, so the calibration centres the population of specimens rather than one packing.
+  int packings = 1;
   LoadingSpec tension, compression;
 };
 
@@ -78,9 +82,14 @@ MacroProperties measure_macro_properties(const Simulation& specimen, const Loadi
 /// Largest relative deviation of the four properties from the targets.
 double max_relative_error(const MacroProperties& got, const MacroProperties& target);
 
-/// `known`: evaluations of an interrupted run of the same calibration (same specimen, start and spec); an
+/// The mean macro-properties of `m` over the sources' specimens (one tension and one compression test each).
+MacroProperties mean_macro_properties(std::span<const SpecimenSource> sources, const Material& m,
+                                      const LoadingSpec& tension, const LoadingSpec& compression);
+
+/// `sources`: the packings each candidate is evaluated on (their mean; CalibrationSpec::packings of them).
+/// `known`: evaluations of an interrupted run of the same calibration (same specimens, start and spec); an
 /// evaluation whose micro-parameters equal one of them bit for bit takes its result instead of running.
-CalibrationResult calibrate(const SpecimenSource& source, const Material& start, const CalibrationSpec& spec,
+CalibrationResult calibrate(std::span<const SpecimenSource> sources, const Material& start, const CalibrationSpec& spec,
                             const std::function<void(const CalibrationEvaluation&)>& on_evaluation = {},
                             const std::vector<CalibrationEvaluation>& known = {});
 
