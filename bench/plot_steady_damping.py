@@ -1,12 +1,16 @@
 #!/usr/bin/env python3
 """The steady main and thrust forces of a damping/speed study (data/studies/steady_damping.json) against Cundall's
 local damping alpha, one line per tool speed, error bars the cuts' own standard errors (batch means); a cut with
-contact dashpots is drawn as an open marker at its alpha. Reads the study's items.csv and each item's summary.json.
+contact dashpots is drawn as an open marker at its alpha. Reads the study's items.csv and each item's summary.json
+and forces.csv, and prints a Markdown table with how intermittent each cut is: the share of the steady samples
+in which the tool touches (main force above 0.1 N) and the share of the mean carried by the largest 5 % of them.
 
     python3 bench/plot_steady_damping.py STUDY_DIR OUT.png
 """
 import csv
 import json
+
+import numpy as np
 import pathlib
 import sys
 
@@ -32,7 +36,15 @@ def items(study_dir):
                 "main": float(row["main_force_N"]), "main_sem": float(row["main_force_sem_N"]),
                 "thrust": float(row["thrust_force_N"]), "thrust_sem": float(row["thrust_force_sem_N"]),
             })
+            rows[-1].update(intermittency(study_dir / "items" / name, float(row["steady_from_travel_mm"])))
     return rows
+
+
+def intermittency(item_dir, steady_from_mm):
+    forces = np.genfromtxt(item_dir / "forces.csv", delimiter=",", names=True)
+    main_force = forces["main_force_N"][forces["tool_travel_mm"] >= steady_from_mm]
+    largest = np.sort(main_force)[::-1][: len(main_force) // 20]
+    return {"contact": float(np.mean(np.abs(main_force) > 0.1)), "top5": float(largest.sum() / main_force.sum())}
 
 
 def main():
@@ -65,6 +77,12 @@ def main():
     fig.suptitle("Regular 0.1 mm steady cut (12 mm workpiece, 4 mm travel): damping and tool speed")
     fig.tight_layout()
     fig.savefig(out, dpi=120)
+    print("| speed (m/s) | damping | main force (N) | tool in contact | largest 5 % of samples carry |")
+    print("|---:|---|---:|---:|---:|")
+    for r in sorted(rows, key=lambda r: (-r["speed"], -r["alpha"])):
+        damping = f"alpha {r['alpha']:g}" + (f", dashpots {r['beta']:g}" if r["beta"] > 0 else "")
+        print(f"| {r['speed']:g} | {damping} | {r['main']:.2f} +- {r['main_sem']:.2f} | {100 * r['contact']:.0f} % "
+              f"| {100 * r['top5']:.0f} % of the mean |")
 
 
 if __name__ == "__main__":

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <chrono>
+#include <cstdint>
 #include <iostream>
 
 #include "common.hpp"
@@ -182,8 +183,9 @@ class CalibrateKind final : public SceneKind {
         t.poissons_ratio, units::pa_to_mpa(t.tensile_strength_pa), units::pa_to_mpa(t.compressive_strength_pa),
         summary["specimen"]["packing"].get<std::string>(), specimen.particles().size(),
         sources.size() > 1 ? fmt::format(" (the mean over {} packings, seeds {} to {})", sources.size(),
-                                         summary["specimen"]["seed"].get<int>(),
-                                         summary["specimen"]["seed"].get<int>() + static_cast<int>(sources.size()) - 1)
+                                         summary["specimen"]["seed"].get<std::int64_t>(),
+                                         summary["specimen"]["seed"].get<std::int64_t>() +
+                                             static_cast<std::int64_t>(sources.size()) - 1)
                            : std::string());
     const Json material = library_material_json(calibrated, "Flat-joint DEM material calibrated by kerf-dem",
                                                 description, "kerf-dem calibrate (see description)");
