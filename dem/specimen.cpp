@@ -255,6 +255,16 @@ CompactedPacking compact_random(const SpecimenSpec& spec, const GenesisProgress&
   return out;
 }
 
+/// The disks and joints of `source` with `material`'s laws and densities, at rest and in no group: the
+/// packing only (finish_specimen, with_material).
+Simulation copy_at_rest(const Simulation& source, const Material& material) {
+  Simulation sim = copy_disks_and_joints(source, material, false);
+  auto& p = sim.particles();
+  std::fill(p.vx.begin(), p.vx.end(), 0.0), std::fill(p.vy.begin(), p.vy.end(), 0.0);
+  std::fill(p.omega.begin(), p.omega.end(), 0.0), std::fill(p.group.begin(), p.group.end(), std::uint8_t{0});
+  return sim;
+}
+
 }  // namespace
 
 CompactedPacking compact_packing(const SpecimenSpec& spec, const GenesisProgress& progress) {
@@ -264,13 +274,7 @@ CompactedPacking compact_packing(const SpecimenSpec& spec, const GenesisProgress
 Simulation finish_specimen(const CompactedPacking& packing, const Material& material, const SpecimenSpec& spec,
                            SpecimenReport& report, const GenesisProgress& progress) {
   report = packing.report;
-  // The disks at rest (positions, radii, rotations) in a simulation of the material: its densities and laws.
-  Simulation sim(material, {.thickness_m = spec.thickness_m});
-  const auto& p = packing.disks.particles();
-  for (std::size_t k = 0; k < p.size(); ++k) {
-    sim.add_particle(p.x[k], p.y[k], p.radius[k]);
-    sim.particles().theta[k] = p.theta[k];
-  }
+  Simulation sim = copy_at_rest(packing.disks, material);  // no joints yet, no walls
   if (spec.packing == Packing::hexagonal) {
     sim.install_bonds_within_gap(1e-6 * 0.5 * (spec.radius_min_m + spec.radius_max_m));
     sim.initialise();
@@ -318,11 +322,7 @@ Simulation with_material(const Simulation& specimen, const Material& material) {
   if (elements != specimen.bonds().stride)
     throw InputError("material.n_elements", std::to_string(elements),
                      "the specimen's element count " + std::to_string(specimen.bonds().stride));
-  Simulation sim = copy_disks_and_joints(specimen, material, false);  // the new material's density
-  // The packing only: at rest, no group.
-  auto& p = sim.particles();
-  std::fill(p.vx.begin(), p.vx.end(), 0.0), std::fill(p.vy.begin(), p.vy.end(), 0.0);
-  std::fill(p.omega.begin(), p.omega.end(), 0.0), std::fill(p.group.begin(), p.group.end(), std::uint8_t{0});
+  Simulation sim = copy_at_rest(specimen, material);
   sim.initialise();
   return sim;
 }

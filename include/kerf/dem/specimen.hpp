@@ -114,7 +114,6 @@ class SpecimenSource {
   Simulation for_material(const Material& material) const;
   /// The compacted packing's disks, or the saved specimen (for checkpoints and counts).
   const Simulation& disks() const { return packing_.disks; }
-  bool from_genesis() const { return genesis_; }
 
  private:
   SpecimenSource(CompactedPacking packing, const SpecimenSpec& spec, const EngineSettings& engine, bool genesis)
