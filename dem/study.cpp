@@ -271,8 +271,12 @@ Json without_description(Json scene) {
 
 }  // namespace
 
+fs::path study_item_summary_file(const fs::path& out, const StudyItem& item) {
+  return out / "items" / study_item_name(item) / "summary.json";
+}
+
 StudyItemResult run_study_item(const StudySpec& spec, const StudyItem& item, const fs::path& out, int threads,
-                               int rank) {
+                               int rank, const ProgressCallback& on_progress) {
   StudyItemResult r;
   r.item = item;
   r.host = host_name();
@@ -312,6 +316,12 @@ StudyItemResult run_study_item(const StudySpec& spec, const StudyItem& item, con
     options.show_progress = false;
     options.command_line = fmt::format("(study item {} of {})", study_item_name(item), spec.scene_path);
     options.overrides = overrides;
+    if (on_progress)
+      options.on_progress = [&on_progress, name = study_item_name(item)](const ProgressUpdate& u) {
+        ProgressUpdate named = u;
+        named.stage = name + ": " + u.stage;
+        on_progress(named);
+      };
     scene.kind->check_options(options, scene.common);
     fs::remove_all(partial, error);
     fs::create_directories(partial);
@@ -339,6 +349,7 @@ StudyItemResult run_study_item(const StudySpec& spec, const StudyItem& item, con
     fs::remove_all(partial, ignored);
     r.ok = false;
     r.error = printable(e.what());
+    r.exception = std::current_exception();
     r.results.clear();
     r.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
@@ -720,9 +731,10 @@ Json write_study_outputs(const StudySpec& spec, const StudyScheduler& scheduler,
 // ---- running on this machine ----
 
 StudyOutcome run_study_local(const StudySpec& spec, const StudyOptions& options) {
-  const OutputManifest hold(options.out, /*fresh=*/true);  // writable? (exit 4 before any work)
+  std::optional<OutputManifest> hold;
+  if (options.hold_output_directory) hold.emplace(options.out, /*fresh=*/true);  // writable? (exit 4 before any work)
   const auto start = std::chrono::steady_clock::now();
-  prepare_study_directory(options.out);
+  prepare_study_directory(spec, options.out);
   StudyScheduler scheduler(spec);
   const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
   const std::size_t first_wave = scheduler.queued();
@@ -730,7 +742,8 @@ StudyOutcome run_study_local(const StudySpec& spec, const StudyOptions& options)
   const int inner = std::max(1, threads / side_by_side);
   StudyProgress progress(options, side_by_side);
   std::mutex mutex;
-  std::exception_ptr failure;
+  std::exception_ptr failure;   // a bug or no memory: rethrown
+  std::exception_ptr stopped;   // stop_at_first_failure: the first failed item's error, rethrown
   const int max_levels = omp_get_max_active_levels();
   omp_set_max_active_levels(2);
 #pragma omp parallel num_threads(side_by_side)
@@ -739,7 +752,7 @@ StudyOutcome run_study_local(const StudySpec& spec, const StudyOptions& options)
       std::optional<StudyItem> item;
       {
         const std::lock_guard<std::mutex> lock(mutex);
-        if (failure || scheduler.finished()) break;
+        if (failure || stopped || scheduler.finished()) break;
         item = scheduler.next();
         progress.tick(scheduler);
       }
@@ -748,8 +761,10 @@ StudyOutcome run_study_local(const StudySpec& spec, const StudyOptions& options)
         continue;
       }
       try {
-        StudyItemResult r = run_study_item(spec, *item, options.out, inner, 0);
+        StudyItemResult r = run_study_item(spec, *item, options.out, inner, 0, options.on_progress);
         const std::lock_guard<std::mutex> lock(mutex);
+        if (!r.ok && options.stop_at_first_failure && !stopped)
+          stopped = r.exception ? r.exception : std::make_exception_ptr(ModelError(study_item_name(r.item), r.error));
         scheduler.complete(r);
         progress.item_done(r, scheduler);
       } catch (...) {  // run_study_item keeps the item's own failures; this is a bug or no memory
@@ -761,14 +776,51 @@ StudyOutcome run_study_local(const StudySpec& spec, const StudyOptions& options)
   omp_set_max_active_levels(max_levels);
   if (failure) std::rethrow_exception(failure);
   progress.finish(scheduler);
+  if (stopped) std::rethrow_exception(stopped);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return finish_study(spec, scheduler, options, wall, side_by_side, "");
 }
 
-void prepare_study_directory(const fs::path& out) {
-  fs::create_directories(out / "items");
-  for (const auto& entry : fs::directory_iterator(out / "items"))  // a killed run's items in flight
+std::size_t prepare_study_directory(const StudySpec& spec, const fs::path& out) {
+  const fs::path items = out / "items";
+  fs::create_directories(items);
+  for (const auto& entry : fs::directory_iterator(items))  // a killed run's items in flight
     if (entry.path().filename().string().rfind(".partial-", 0) == 0) fs::remove_all(entry.path());
+  // The finished items there, by the scene they ran (a directory of a killed re-homing included).
+  std::map<std::string, fs::path> finished;
+  for (const auto& entry : fs::directory_iterator(items)) {
+    try {
+      const Json old = read_json_file((entry.path() / "summary.json").string());
+      finished.try_emplace(without_description(old.at("study_item").at("scene")).dump(), entry.path());
+    } catch (const std::exception&) {
+      // Not a finished item: its item runs again.
+    }
+  }
+  // Each item this study may run whose scene finished under another name goes there.
+  const int most = spec.replicates.policy == ReplicatePolicy::fixed ? spec.replicates.count : spec.replicates.max_count;
+  std::vector<std::pair<fs::path, fs::path>> moves;  // from, to
+  for (std::size_t c = 0; c < spec.conditions.size(); ++c)
+    for (int k = 0; k < most; ++k) {
+      const StudyItem item{static_cast<int>(c), k, spec.base_seed + static_cast<std::uint64_t>(k)};
+      std::vector<std::string> overrides;
+      const auto found = finished.find(without_description(item_scene(spec, item, overrides)).dump());
+      const fs::path to = items / study_item_name(item);
+      if (found == finished.end()) continue;
+      if (found->second != to) moves.emplace_back(found->second, to);
+      finished.erase(found);  // two conditions with the same scene: the second runs its own
+    }
+  // In two passes, so that two items that swap names both arrive: first aside, then in place (a stale item
+  // in the way is one that no item of this study ran: it would be replaced when its item runs).
+  for (std::size_t i = 0; i < moves.size(); ++i) {
+    const fs::path aside = items / fmt::format(".rehome-{}-{}", getpid(), i);
+    fs::rename(moves[i].first, aside);
+    moves[i].first = aside;
+  }
+  for (const auto& [aside, to] : moves) {
+    fs::remove_all(to);
+    fs::rename(aside, to);
+  }
+  return moves.size();
 }
 
 StudyOutcome finish_study(const StudySpec& spec, const StudyScheduler& scheduler, const StudyOptions& options,

@@ -2,7 +2,7 @@
 //
 // Messages (JSON text, MPI_CHAR): a worker sends kRequest with the result of its last item (empty the first
 // time); the coordinator answers kItem (the item) or kStop. A worker with no answer yet waits in a loop of
-// MPI_Iprobe and 2 ms sleeps, not in a blocking receive (Open MPI's spins a core).
+// MPI_Iprobe and short sleeps (20 us doubling up to 0.5 ms), not in a blocking receive (Open MPI's spins a core).
 #include "kerf/dem/study_mpi.hpp"
 
 #include <cstdlib>
@@ -181,7 +181,7 @@ StudyOutcome run_study_mpi(const fs::path& study_file, const StudyOptions& optio
     spec.emplace(read_study(read_json_file(study_file.string()), study_file));
     if (rank == 0) {
       hold.emplace(options.out, /*fresh=*/true);
-      prepare_study_directory(options.out);
+      prepare_study_directory(*spec, options.out);
     }
   } catch (...) {
     status = status_of_current_exception();

@@ -128,7 +128,6 @@ OutputManifest::OutputManifest(const fs::path& dir, bool fresh) {
   for (std::string line; std::getline(previous, line);) {
     const fs::path relative(line);
     if (line.empty() || relative.is_absolute() || line.find("..") != std::string::npos) continue;
-    if (line.find("replicate_") != std::string::npos) continue;  // finished replicates are reused by their inputs
     std::error_code ignored;
     if (fs::is_regular_file(absolute / relative, ignored)) fs::remove(absolute / relative, ignored);
   }

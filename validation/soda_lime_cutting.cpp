@@ -7,21 +7,19 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <exception>
 #include <map>
-#include <mutex>
-#include <thread>
 
-#include <omp.h>
 
 #include "kerf/comparison_config.hpp"
 #include "kerf/dem/scene.hpp"
+#include "kerf/dem/study.hpp"
 #include "kerf/error.hpp"
 #include "kerf/io.hpp"
 #include "kerf/json_reader.hpp"
 #include "kerf/material.hpp"
+#include "kerf/metrics.hpp"
 #include "kerf/units.hpp"
 
 namespace kerf {
@@ -100,10 +98,25 @@ Estimate ratio_of(const Estimate& a, const Estimate& b) {
   return {r, r * std::hypot(a.standard_error / a.value, b.standard_error / b.value)};
 }
 
-/// Replicate results of one condition, from the run's summaries.
+/// The per-replicate columns of kerf_dem_replicates.csv after the condition's: each a result of the item's
+/// summary.json, but wall_time_s (the cut's own, genesis excluded; a reused item keeps that of the run that
+/// made it).
+const std::vector<std::string> kReplicateColumns{"width_mm",
+                                                 "main_force_N",
+                                                 "thrust_force_N",
+                                                 "cracks_tensile",
+                                                 "cracks_shear",
+                                                 "cracks_chip",
+                                                 "cracks_subsurface",
+                                                 "subsurface_damage_depth_um",
+                                                 "cracks_subsurface_steady",
+                                                 "subsurface_damage_depth_steady_um",
+                                                 "wall_time_s"};
+
+/// Replicate results of one condition, from its study items' summaries.
 struct ConditionResult {
   Condition condition;
-  Json replicates;  ///< kerf-dem's per-replicate rows, with chip/subsurface crack counts added
+  Json replicates;  ///< one row per replicate: replicate, seed and kReplicateColumns
   double main_n = 0, thrust_n = 0, main_std_n = 0, thrust_std_n = 0, width_mm = 1;
   /// The mean forces with their standard errors over the replicates (packings are independent samples).
   Estimate main() const { return {main_n, main_std_n / std::sqrt(static_cast<double>(replicates.size()))}; }
@@ -111,34 +124,38 @@ struct ConditionResult {
   double cracks_tensile = 0, cracks_shear = 0, cracks_chip = 0, cracks_subsurface = 0, subsurface_depth_um = 0;
   /// Under the surface machined during the steady part (kerf-dem's *_steady results): the cut's own damage.
   double cracks_subsurface_steady = 0, subsurface_steady_depth_um = 0;
-  double wall_time_s = 0;
+  double wall_time_s = 0;  ///< the replicates' own cut times, summed (a rerun that reuses them all takes ~0 s)
+  std::vector<fs::path> directories;  ///< each replicate's run, relative to the validation's output directory
 };
 
-ConditionResult collect(const Condition& c, const dem::SceneOutcome& run) {
-  const Json& summary = run.summary;
+ConditionResult collect(const Condition& c, const std::vector<Json>& items) {
   ConditionResult r;
   r.condition = c;
-  r.replicates = summary.at("replicates");
-  const Json& res = summary.at("results");
-  r.main_n = res.at("main_force_N"), r.thrust_n = res.at("thrust_force_N");
-  r.main_std_n = res.at("main_force_replicate_std_N"), r.thrust_std_n = res.at("thrust_force_replicate_std_N");
-  r.width_mm = res.at("width_mm");
-  // The replicates' own cut times: the run's elapsed time would be ~0 when a rerun reuses them all.
-  r.wall_time_s = summary.at("wall_time_s_sum_over_replicates");
-  const double n = static_cast<double>(r.replicates.size());
-  for (std::size_t k = 0; k < r.replicates.size(); ++k) {
-    Json& row = r.replicates[k];
-    const Json& one = run.replicate_summaries.at(k).at("results");
-    row["cracks_chip"] = one.at("cracks_chip");
-    row["cracks_subsurface"] = one.at("cracks_subsurface");
+  r.replicates = Json::array();
+  std::vector<double> main, thrust;
+  const double n = static_cast<double>(items.size());
+  for (std::size_t k = 0; k < items.size(); ++k) {
+    const Json& res = items[k].at("results");
+    const Json& item = items[k].at("study_item");
+    Json row{{"replicate", k + 1}, {"seed", item.at("seed")}};
+    for (const auto& column : kReplicateColumns)
+      row[column] = column == "wall_time_s" ? items[k].at("wall_time_s") : res.at(column);
+    main.push_back(row.at("main_force_N").get<double>());
+    thrust.push_back(row.at("thrust_force_N").get<double>());
     r.cracks_tensile += row.at("cracks_tensile").get<double>() / n;
     r.cracks_shear += row.at("cracks_shear").get<double>() / n;
-    r.cracks_chip += one.at("cracks_chip").get<double>() / n;
-    r.cracks_subsurface += one.at("cracks_subsurface").get<double>() / n;
+    r.cracks_chip += row.at("cracks_chip").get<double>() / n;
+    r.cracks_subsurface += row.at("cracks_subsurface").get<double>() / n;
     r.subsurface_depth_um += row.at("subsurface_damage_depth_um").get<double>() / n;
     r.cracks_subsurface_steady += row.at("cracks_subsurface_steady").get<double>() / n;
     r.subsurface_steady_depth_um += row.at("subsurface_damage_depth_steady_um").get<double>() / n;
+    r.wall_time_s += row.at("wall_time_s").get<double>();
+    r.replicates.push_back(row);
   }
+  const SampleStatistics m = sample_statistics(main), t = sample_statistics(thrust);
+  r.main_n = m.mean, r.main_std_n = m.standard_deviation;
+  r.thrust_n = t.mean, r.thrust_std_n = t.standard_deviation;
+  r.width_mm = r.replicates.at(0).at("width_mm").get<double>();
   return r;
 }
 
@@ -197,68 +214,47 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
   fs::create_directories(out_dir / "runs");
   CuttingValidation v;
 
-  // 1. The runs: kerf-dem reuses finished replicates, so an interrupted validation resumes where it stopped.
-  // Conditions run side by side, one kerf-dem with one thread each (its replicates one after the other), as
-  // many at a time as there are hardware threads: with one kerf-dem at a time running three replicates side
-  // by side on two cores, a core idles while the third replicate runs alone (12 rounds of cuts for 18 cuts
-  // instead of 9).
-  const std::size_t n_conditions = spec.conditions.size();
-  const std::size_t streams = std::min<std::size_t>(std::max(1u, std::thread::hardware_concurrency()), n_conditions);
-  const Json scene = read_json_file(spec.scene);
-  std::vector<dem::SceneOutcome> outcomes(n_conditions);
-  std::vector<std::exception_ptr> failed(n_conditions);
-  std::atomic<std::size_t> next{0};
-  std::mutex print_lock;
-  const auto run_conditions = [&] {
-    if (streams > 1) omp_set_num_threads(1);  // this thread's runs: one thread each
-    for (std::size_t k = next++; k < n_conditions; k = next++) {
-      const auto& c = spec.conditions[k];
-      const std::vector<std::string> sets{fmt::format("cut.depth_of_cut_mm={}", c.depth_of_cut_mm),
-                                          fmt::format("grooves.shape={}", c.groove_shape)};
-      dem::RunOptions options;
-      options.out = out_dir / "runs" / c.name;
-      options.replicates = spec.replicates;
-      {
-        // The same run from the command line.
-        const std::lock_guard<std::mutex> lock(print_lock);
-        fmt::print("{}: kerf-dem run {} --set {} --set {} --replicates {}{} --out {}\n", c.name, quoted(spec.scene),
-                   sets[0], sets[1], spec.replicates, streams > 1 ? " --threads 1" : "", quoted(options.out));
-        std::fflush(stdout);
-      }
-      try {
-        Json doc = scene;
-        for (const auto& set : sets) apply_override(doc, set);
-        outcomes[k] = dem::run_scene(doc, spec.scene, options);
-      } catch (...) {
-        failed[k] = std::current_exception();
-      }
-    }
-  };
-  std::vector<std::thread> pool;
-  for (std::size_t t = 0; t < streams; ++t) pool.emplace_back(run_conditions);
-  for (auto& t : pool) t.join();
-  for (const auto& e : failed)
-    if (e) std::rethrow_exception(e);
+  // 1. The runs: one study (kerf/dem/study.hpp) of the conditions, each on spec.replicates packings, in
+  // OUT/study: items side by side, one thread each (18 cuts in 9 rounds on 2 cores), finished items reused, so
+  // an interrupted validation resumes where it stopped. OUT/study/study.json is that study, for kerf-dem study.
+  Json conditions = Json::array();
+  for (const auto& c : spec.conditions)
+    conditions.push_back(Json{{"cut.depth_of_cut_mm", c.depth_of_cut_mm}, {"grooves.shape", c.groove_shape}});
+  const Json study_doc{
+      {"description", fmt::format("The {} validation's cuts: each condition of validation.json on {} packings", case_name,
+                                  spec.replicates)},
+      {"scene", fs::absolute(spec.scene).string()},
+      {"conditions", {{"list", conditions}}},
+      {"replicates", {{"policy", "fixed"}, {"count", spec.replicates}}}};
+  const fs::path study_dir = out_dir / "study";
+  const dem::StudySpec study = dem::read_study(study_doc, study_dir / "study.json");
+  fs::create_directories(study_dir);
+  write_file_atomically(study_dir / "study.json", study_doc.dump(2) + "\n");
+  dem::StudyOptions options;
+  options.out = study_dir;
+  options.stop_at_first_failure = true;  // the validation needs every cut
+  options.log_lines = true;
+  options.command_line = fmt::format("kerf-dem study {} --out {}", quoted(study_dir / "study.json"), quoted(study_dir));
+  fmt::print("{}\n", options.command_line);  // the same runs from the command line
+  std::fflush(stdout);
+  dem::run_study_local(study, options);
   std::map<std::string, ConditionResult> results;
-  for (std::size_t k = 0; k < n_conditions; ++k) results[spec.conditions[k].name] = collect(spec.conditions[k], outcomes[k]);
+  for (std::size_t ci = 0; ci < spec.conditions.size(); ++ci) {
+    std::vector<Json> items;
+    std::vector<fs::path> directories;
+    for (int k = 0; k < spec.replicates; ++k) {
+      const dem::StudyItem item{static_cast<int>(ci), k, study.base_seed + static_cast<std::uint64_t>(k)};
+      items.push_back(read_json_file(dem::study_item_summary_file(study_dir, item).string()));
+      directories.push_back(fs::path("study") / "items" / dem::study_item_name(item));
+    }
+    ConditionResult& r = results[spec.conditions[ci].name] = collect(spec.conditions[ci], items);
+    r.directories = std::move(directories);
+  }
 
   // 2. The kerf-dem table: one row per replicate, and the means that the report layer compares. Trapezoidal
   // grooves go beyond the paper (no measured counterpart): their rows carry their own source.
-  // The per-replicate columns after the condition's, each a number of kerf-dem's replicate row: one list gives
-  // the header and the values.
-  const std::vector<std::string> replicate_columns{"width_mm",
-                                                   "main_force_N",
-                                                   "thrust_force_N",
-                                                   "cracks_tensile",
-                                                   "cracks_shear",
-                                                   "cracks_chip",
-                                                   "cracks_subsurface",
-                                                   "subsurface_damage_depth_um",
-                                                   "cracks_subsurface_steady",
-                                                   "subsurface_damage_depth_steady_um",
-                                                   "wall_time_s"};
   std::vector<std::string> header{"source", "surface", "groove_shape", "depth_of_cut_mm", "replicate", "seed"};
-  header.insert(header.end(), replicate_columns.begin(), replicate_columns.end());
+  header.insert(header.end(), kReplicateColumns.begin(), kReplicateColumns.end());
   std::string rows = csv_line(header);
   std::string means =
       csv_line({"source", "surface", "groove_shape", "depth_of_cut_mm", "width_mm", "main_force_N",
@@ -275,7 +271,7 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
                                       csv_number(c.depth_of_cut_mm),
                                       std::to_string(row.at("replicate").get<int>()),
                                       std::to_string(row.at("seed").get<long long>())};
-      for (const auto& column : replicate_columns) fields.push_back(csv_number(row.at(column)));
+      for (const auto& column : kReplicateColumns) fields.push_back(csv_number(row.at(column)));
       rows += csv_line(fields);
     }
     means += csv_line({source, c.surface, c.groove_shape, csv_number(c.depth_of_cut_mm), csv_number(r.width_mm),
@@ -445,16 +441,16 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
   }
   md += "\nReports through the report layer: [vs_experiment/report.md](vs_experiment/report.md) (the paper's direct "
         "comparison and the per-unit-width one), [vs_paper_dem/report.md](vs_paper_dem/report.md). Per-replicate "
-        "results: `kerf_dem_replicates.csv`; each run's forces, cracks and picture: `runs/<condition>/replicate_<k>/`.\n";
-  if (fs::exists(out_dir / "runs" / "regular_0.1" / "replicate_1" / "specimen.png")) {
-    fs::copy_file(out_dir / "runs" / "regular_0.1" / "replicate_1" / "specimen.png", out_dir / "snapshot_regular_0.1.png",
-                  fs::copy_options::overwrite_existing);
-    md += "\n![regular, 0.1 mm, replicate 1](snapshot_regular_0.1.png)\n";
-  }
-  if (fs::exists(out_dir / "runs" / "grooved_0.1" / "replicate_1" / "specimen.png")) {
-    fs::copy_file(out_dir / "runs" / "grooved_0.1" / "replicate_1" / "specimen.png", out_dir / "snapshot_grooved_0.1.png",
-                  fs::copy_options::overwrite_existing);
-    md += "\n![grooved, 0.1 mm, replicate 1](snapshot_grooved_0.1.png)\n";
+        "results: `kerf_dem_replicates.csv`; each run's forces, cracks and picture: "
+        "`study/items/condition_<c>_seed_<s>/` (the conditions in validation.json's order; `study/items.csv` lists "
+        "them).\n";
+  for (const char* name : {"regular_0.1", "grooved_0.1"}) {
+    const auto r = results.find(name);
+    if (r == results.end() || r->second.directories.empty()) continue;
+    const fs::path picture = out_dir / r->second.directories.front() / "specimen.png";
+    if (!fs::exists(picture)) continue;
+    fs::copy_file(picture, out_dir / fmt::format("snapshot_{}.png", name), fs::copy_options::overwrite_existing);
+    md += fmt::format("\n![{}, replicate 1](snapshot_{}.png)\n", name, name);
   }
   md += fmt::format("\n**{}**\n", v.failures.empty() ? "PASSED" : "FAILED");
   write_file_atomically(out_dir / "report.md", md);

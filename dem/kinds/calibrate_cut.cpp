@@ -91,9 +91,17 @@ class CalibrateCutKind final : public SceneKind {
                                k, s, units::pa_to_mpa(calibrated_params(e.material).tensile_strength_pa),
                                units::pa_to_mpa(calibrated_params(e.material).cohesion_pa), fit.replicates)
                 << std::flush;
+      // The evaluation's cut: this scene as a cut with the scaled material, as its file will hold it.
+      Json scene = run.doc;
+      scene.erase("calibration");
+      scene["kind"] = "cut";
+      scene["material"] = material_to_json(e.material);
+      e.material = read_material(scene["material"], "material");
+      RunOptions options = run.options;
+      options.out = dir;
+      options.replicates = fit.replicates;
       const Json done =
-          run_cut_replicates(e, cut_, fit.replicates, summary_head("cut", e.material), dir, progress_target(run.options))
-              .summary;
+          run_cut_replicates(scene, run.scene_dir, cut_, fit.replicates, summary_head("cut", e.material), options).summary;
       const Json& r = done["results"];
       const double force = r["main_force_N"].get<double>();
       const double error = force / fit.target_main_force_n - 1;

@@ -98,11 +98,12 @@ MaterialOutput read_material_output(ObjectReader& calibration, const std::string
 void write_material_output(const MaterialOutput& output, const Json& material, const fs::path& out, Json& summary);
 
 /// Seed 000 Section 4 repeats each cut on `replicates` packings: replicate k uses packing seed specimen.seed +
-/// k and writes OUT/replicate_k; OUT/summary.json has the per-replicate results and their mean and (sample)
-/// standard deviation. A replicate whose summary.json holds the same material, specimen and cut is reused.
-/// `summary` is the head every summary starts with (kind, material, threads).
-SceneOutcome run_cut_replicates(const SceneCommon& common, const CutParams& cut, int replicates, Json summary,
-                                const fs::path& out, const ProgressTarget& progress);
+/// k. They run as a study of one condition (`cut_scene`, a scene of kind cut, with replicates) into
+/// OUT/replicates (items/condition_1_seed_S/ each; finished ones reused on a rerun); OUT/summary.json has the
+/// per-replicate results and their mean and (sample) standard deviation. `summary` is the head every summary
+/// starts with (kind, material, threads).
+SceneOutcome run_cut_replicates(const Json& cut_scene, const std::string& scene_dir, const CutParams& cut,
+                                int replicates, Json summary, const RunOptions& options);
 
 // The kinds (one file each under dem/kinds/), constructed by the registry.
 std::unique_ptr<SceneKind> make_specimen_kind();

@@ -13,6 +13,7 @@
 #include "common.hpp"
 #include "kerf/dem/output.hpp"
 #include "kerf/dem/png.hpp"
+#include "kerf/dem/study.hpp"
 #include "kerf/error.hpp"
 #include "kerf/io.hpp"
 #include "kerf/metrics.hpp"
@@ -147,8 +148,7 @@ class CutKind final : public SceneKind {
   SceneOutcome run(const SceneCommon& common, const SceneRun& run) override {
     const RunOptions& o = run.options;
     if (o.replicates > 1)
-      return run_cut_replicates(common, cut_, o.replicates, summary_head("cut", common.material), o.out,
-                                progress_target(o));
+      return run_cut_replicates(run.doc, run.scene_dir, cut_, o.replicates, summary_head("cut", common.material), o);
     StartedRun started = start_from_specimen(common, "cut", progress_target(o));
     const Simulation& specimen = started.specimen;
     Json& summary = started.summary;
@@ -172,14 +172,13 @@ class CutKind final : public SceneKind {
 
 }  // namespace
 
-/// Replicates run side by side, one thread each, as long as there are threads to spare (a cut of a few
-/// thousand disks scales better over replicates than over threads: no barrier per step); leftover threads
-/// go to each replicate's force loops. A replicate whose OUT/replicate_k/summary.json already holds the same
-/// material, specimen and cut is reused, so an interrupted study loses only the replicates in flight. The
-/// checks that need a workpiece and its time step (CutRun's) run once, on the first replicate to be run, before
-/// any other genesis starts: a bad cut is reported after one genesis, not after one per replicate.
-SceneOutcome run_cut_replicates(const SceneCommon& common, const CutParams& cut, int replicates, Json summary,
-                                const fs::path& out, const ProgressTarget& progress) {
+/// The replicates are a study of one condition (kerf/dem/study.hpp) in OUT/replicates: items side by side, one
+/// thread each while there are items to spare (a cut of a few thousand disks scales better over replicates
+/// than over threads: no barrier per step), finished items reused on a rerun, the first failure (a cut the
+/// workpiece cannot hold) rethrown as it was. OUT/replicates/study.json is that study: `kerf-dem study` reruns
+/// it. OUT/summary.json keeps the replicate rows and their means, spreads and standard errors.
+SceneOutcome run_cut_replicates(const Json& cut_scene, const std::string& scene_dir, const CutParams& cut,
+                                int replicates, Json summary, const RunOptions& options) {
   // Each result with the name of its spread over the replicates.
   const std::vector<std::pair<std::string, std::string>> keys{
       {"main_force_N", "main_force_replicate_std_N"},
@@ -190,90 +189,37 @@ SceneOutcome run_cut_replicates(const SceneCommon& common, const CutParams& cut,
       {"cracks_subsurface_steady", "cracks_subsurface_steady_replicate_std"},
       {"subsurface_damage_depth_steady_um", "subsurface_damage_depth_steady_replicate_std_um"}};
   const auto start = std::chrono::steady_clock::now();
-  std::vector<Json> done(static_cast<std::size_t>(replicates));
-  std::vector<std::exception_ptr> failed(static_cast<std::size_t>(replicates));
-  // Replicate k: its scene (packing seed + k), directory and inputs (reused only when all of them are unchanged).
-  const auto scene_of = [&](int k) {
-    SceneCommon s = common;
-    s.specimen.seed = common.specimen.seed + static_cast<std::uint64_t>(k);
-    return s;
-  };
-  const auto dir_of = [&](int k) { return out / fmt::format("replicate_{}", k + 1); };
-  const auto inputs_of = [&](const SceneCommon& s) {
-    return Json{{"material", material_to_json(s.material)}, {"specimen", specimen_spec_to_json(s.specimen)},
-                {"cut", cut_params_to_json(cut)}};
-  };
-  std::vector<int> pending;
-  for (int k = 0; k < replicates; ++k) {
-    const fs::path summary_file = dir_of(k) / "summary.json";
-    if (fs::exists(summary_file)) {
-      const Json old = read_json_file(summary_file.string());
-      // A run from before a result was added lacks it: run again.
-      const bool has_every_result = old.contains("results") && std::all_of(keys.begin(), keys.end(), [&](const auto& key) {
-        return old.at("results").contains(key.first);
-      });
-      if (old.value("replicate_inputs", Json()) == inputs_of(scene_of(k)) && has_every_result) {
-        std::cout << fmt::format("replicate {}: reusing the finished run in {}\n", k + 1, dir_of(k).string());
-        done[static_cast<std::size_t>(k)] = old;
-        continue;
-      }
-    }
-    pending.push_back(k);
-  }
-  // A replicate to run: its workpiece (genesis), the cut checked against it, then the cut.
-  struct Prepared {
-    StartedRun started;
-    CutRun run;
-  };
-  const auto prepare = [&](int k, const ProgressTarget& target) {
-    StartedRun started = start_from_specimen(scene_of(k), "cut", target);
-    CutRun run(started.specimen, cut);  // checks the cut against this workpiece and time step
-    return Prepared{std::move(started), std::move(run)};
-  };
-  const auto finish = [&](int k, Prepared prepared, int threads_each, const ProgressTarget& target) {
-    fs::create_directories(dir_of(k));
-    Json one = summary;
-    one["threads"] = threads_each;
-    one["replicate_inputs"] = inputs_of(scene_of(k));
-    one["specimen"] = prepared.started.summary["specimen"];
-    done[static_cast<std::size_t>(k)] = continue_cut(scene_of(k), cut, Json(), one, dir_of(k), 0,
-                                                     std::move(prepared.run), {{}, 0, std::string(), target});
-  };
-  const int threads = omp_get_max_threads();
-  const int side_by_side = std::max(1, std::min(threads, static_cast<int>(pending.size())));
-  const int inner_threads = std::max(1, threads / side_by_side);
-  const auto target_of = [&](int k) {
-    return ProgressTarget{progress.bar && side_by_side == 1, progress.callback, fmt::format("replicate {}: ", k + 1)};
-  };
-  // The first pending replicate's workpiece is built alone (all threads), so that a cut it cannot hold is an
-  // input error before any other genesis; it then runs beside the others.
-  std::optional<Prepared> first;
-  if (!pending.empty()) first.emplace(prepare(pending.front(), target_of(pending.front())));
-  const int max_levels = omp_get_max_active_levels();
-  omp_set_max_active_levels(2);
-#pragma omp parallel for schedule(dynamic, 1) num_threads(side_by_side)
-  for (std::size_t q = 0; q < pending.size(); ++q) {
-    const int k = pending[q];
-    try {
-      omp_set_num_threads(inner_threads);
-      finish(k, q == 0 ? std::move(*first) : prepare(k, target_of(k)), inner_threads, target_of(k));
-    } catch (...) {
-      failed[static_cast<std::size_t>(k)] = std::current_exception();
-    }
-  }
-  omp_set_max_active_levels(max_levels);
-  for (const auto& e : failed)
-    if (e) std::rethrow_exception(e);
+  const Json study_doc{{"description", fmt::format("{} replicates of a cut (kerf-dem run --replicates {})", replicates, replicates)},
+                       {"scene", cut_scene},
+                       {"replicates", {{"policy", "fixed"}, {"count", replicates}}}};
+  const StudySpec spec = read_study(study_doc, fs::path(scene_dir) / "replicates.json");
+  StudyOptions study;
+  study.out = options.out / "replicates";
+  study.threads = omp_get_max_threads();
+  study.show_progress = options.show_progress;
+  study.log_lines = true;  // a line per replicate run or reused
+  study.command_line = options.command_line;
+  study.stop_at_first_failure = true;
+  study.hold_output_directory = false;  // run_scene holds OUT
+  study.on_progress = options.on_progress;
+  fs::create_directories(study.out);
+  write_file_atomically(study.out / "study.json", study_doc.dump(2) + "\n");
+  const StudyOutcome ran = run_study_local(spec, study);
+  std::vector<Json> done;
   Json list = Json::array();
   double wall = 0;
   for (int k = 0; k < replicates; ++k) {
-    const Json& one = done[static_cast<std::size_t>(k)];
-    Json row{{"replicate", k + 1}, {"seed", one["specimen"]["seed"]}, {"directory", fmt::format("replicate_{}", k + 1)}};
+    const StudyItem item{0, k, spec.base_seed + static_cast<std::uint64_t>(k)};
+    done.push_back(read_json_file(study_item_summary_file(study.out, item).string()));
+    const Json& one = done.back();
+    Json row{{"replicate", k + 1},
+             {"seed", one["study_item"]["seed"]},
+             {"directory", (fs::path("replicates") / "items" / study_item_name(item)).generic_string()}};
     for (const auto& key : keys) row[key.first] = one["results"][key.first];
     for (const char* key : {"main_force_std_N", "thrust_force_std_N", "main_force_sem_N", "thrust_force_sem_N", "width_mm"})
-      row[key] = one["results"].value(key, Json());  // a replicate from before the standard errors has none
-    row["wall_time_s"] = one["wall_time_s"];
-    wall += one["wall_time_s"].get<double>();
+      row[key] = one["results"].value(key, Json());
+    row["wall_time_s"] = one["wall_time_s"];  // the cut's own (genesis excluded)
+    wall += row["wall_time_s"].get<double>();
     list.push_back(row);
   }
   Json stats;
@@ -301,15 +247,15 @@ SceneOutcome run_cut_replicates(const SceneCommon& common, const CutParams& cut,
   summary["cut"] = cut_params_to_json(cut);
   summary["replicates"] = list;
   summary["results"] = stats;
-  summary["replicates_side_by_side"] = side_by_side;
+  summary["replicates_side_by_side"] = ran.summary["workers"];
   summary["wall_time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   summary["wall_time_s_sum_over_replicates"] = wall;
-  write_summary(out, summary);
+  write_summary(options.out, summary);
   std::cout << fmt::format("cut, {} replicates: main force {:.3g} N (replicate std {:.2g}), thrust force {:.3g} N "
                            "(replicate std {:.2g}) per {:g} mm width -> {}\n",
                            replicates, stats["main_force_N"].get<double>(), stats["main_force_replicate_std_N"].get<double>(),
                            stats["thrust_force_N"].get<double>(), stats["thrust_force_replicate_std_N"].get<double>(),
-                           stats["width_mm"].get<double>(), out.string());
+                           stats["width_mm"].get<double>(), options.out.string());
   return {0, summary, std::move(done)};
 }
 

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # bench_dem_cut_fidelity --scene: packing seed k of the benchmark is kerf-dem's replicate k of the same
 # scene (same workpiece, same cut, same forces), the other knobs' studies hold the scene's speed, damping and
-# time step, the time-step study sets engine.time_step_safety as kerf-dem does,
-# and a results directory of one base case refuses another.
+# time step (the base setting of every knob is one cut, reused through the study), the time-step study sets
+# engine.time_step_safety as kerf-dem does, and a results directory of one base case refuses another.
 # Usage: dem_cut_fidelity_scene.sh <bench_dem_cut_fidelity> <kerf-dem> <source dir>
 set -uo pipefail
 bench="$1" dem="$2" src="$3"
@@ -39,15 +39,15 @@ grep -qxF "$work/small.json" "$work/b/base_case.txt" || fail "base_case.txt does
 
 # The damping study holds the scene's own speed (2 m/s) and damping (0.7): its 0.7 case is the cut just run.
 "$bench" --scene "$work/small.json" --knob damping --dampings 0.7 --replicates 1 --threads 1 --out-dir "$work/b" \
-  >/dev/null 2>"$work/err" || fail "bench damping: $(cat "$work/err")"
-grep -qF "0 cuts to run" "$work/err" || fail "the damping study did not reuse the scene's cut: $(cat "$work/err")"
+  >"$work/log" 2>"$work/err" || fail "bench damping: $(cat "$work/err")"
+grep -qF "1 items (0 failed, 1 reused)" "$work/log" || fail "the damping study did not reuse the scene's cut: $(cat "$work/log")"
 grep -q '^damping,0.7,1,' "$work/b/runs.csv" || fail "no damping 0.7 row in runs.csv"
 
 # The time-step study: f 0.8 (the scene's, the engine's default) is the cut just run; f 0.4 is kerf-dem's cut
 # with engine.time_step_safety 0.4 (same forces) and takes twice the steps.
 "$bench" --scene "$work/small.json" --knob time_step --time-step-safeties 0.8 0.4 --replicates 1 --threads 1 \
-  --out-dir "$work/b" >/dev/null 2>"$work/err" || fail "bench time_step: $(cat "$work/err")"
-grep -qF "1 cuts to run" "$work/err" || fail "the time-step study did not reuse the scene's cut: $(cat "$work/err")"
+  --out-dir "$work/b" >"$work/log" 2>"$work/err" || fail "bench time_step: $(cat "$work/err")"
+grep -qF "2 items (0 failed, 1 reused)" "$work/log" || fail "the time-step study did not reuse the scene's cut: $(cat "$work/log")"
 "$dem" run "$work/small.json" --set engine.time_step_safety=0.4 --threads 1 --out "$work/dem04" >/dev/null 2>"$work/err" ||
   fail "kerf-dem f 0.4: $(cat "$work/err")"
 dem04_main=$(summary_main "$work/dem04")
@@ -60,9 +60,11 @@ awk -v a="$(echo "$row04" | cut -d, -f"$steps_col")" -v b="$(echo "$row08" | cut
   'BEGIN { r = a / b; exit !(r > 1.9 && r < 2.1) }' || fail "f 0.4 does not take about twice the steps of f 0.8"
 
 # The same directory with the built-in base case: refused, exit 2, nothing run.
+cp "$work/b/runs.csv" "$work/runs_before.csv"
 "$bench" --knob speed --speeds 2 --replicates 1 --threads 1 --out-dir "$work/b" >/dev/null 2>"$work/err"
 rc=$?
 [ $rc -eq 2 ] || fail "exit $rc (expected 2) for another base case in the same directory"
 grep -qF "another base case" "$work/err" || fail "stderr lacks the reason: $(cat "$work/err")"
-[ "$(wc -l <"$work/b/runs.csv")" -eq 5 ] || fail "the refused run changed runs.csv"
+cmp -s "$work/runs_before.csv" "$work/b/runs.csv" || fail "the refused run changed runs.csv"
+[ "$(ls "$work/b/study/items" | wc -l)" -eq 2 ] || fail "the refused run added cuts: $(ls "$work/b/study/items")"
 exit 0

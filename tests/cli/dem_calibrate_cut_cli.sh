@@ -21,7 +21,7 @@ small=(--set specimen.width_mm=0.4 --set specimen.height_mm=0.25 --set specimen.
 "$bin" run "$scene" "${small[@]}" --out "$work/full" >"$work/full.out" 2>&1
 rc=$?
 [ $rc -eq 0 ] || [ $rc -eq 3 ] || fail "calibrate_cut exit $rc: $(cat "$work/full.out")"
-for f in summary.json calibration_log.csv soda_lime_glass_fj_cut.json evaluation_1/replicate_2/forces.csv; do
+for f in summary.json calibration_log.csv soda_lime_glass_fj_cut.json evaluation_1/replicates/items/condition_1_seed_2/forces.csv evaluation_1/replicates/study.json; do
   [ -s "$work/full/$f" ] || fail "missing $f"
 done
 rows=$(($(wc -l < "$work/full/calibration_log.csv") - 1))
@@ -42,7 +42,7 @@ kill -9 $pid 2>/dev/null || fail "the fit ended before it could be killed"
 wait $pid 2>/dev/null
 [ ! -e "$work/kill/summary.json" ] || fail "the killed fit had already finished"
 "$bin" run "$scene" "${small[@]}" --out "$work/kill" >"$work/kill.out" 2>&1
-grep -q "replicate 1: reusing" "$work/kill.out" || fail "the rerun reused no finished replicate: $(cat "$work/kill.out")"
+grep -q " reused in " "$work/kill.out" || fail "the rerun reused no finished replicate: $(cat "$work/kill.out")"
 cmp -s <(cut -d, -f1-9 "$work/full/calibration_log.csv") <(cut -d, -f1-9 "$work/kill/calibration_log.csv") ||
   fail "rerun calibration_log.csv differs: $(diff "$work/full/calibration_log.csv" "$work/kill/calibration_log.csv")"
 cmp -s "$work/full/soda_lime_glass_fj_cut.json" "$work/kill/soda_lime_glass_fj_cut.json" || fail "rerun material differs"

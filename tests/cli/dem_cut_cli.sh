@@ -24,6 +24,11 @@ expect_input_error "cut.speed_m_per_s = 1e+06: expected a speed of at most" run 
 expect_input_error "cut.length_mm = 1: expected a travel of at most" run "$scene" "${small[@]}" \
     --set cut.length_mm=1 --out "$work/x"
 [ ! -e "$work/x/summary.json" ] || fail "a rejected cut wrote output"
+# With replicates, the first replicate that fails stops the study, and its input error stays one (exit 2).
+expect_input_error "cut.length_mm = 1: expected a travel of at most" run "$scene" "${small[@]}" \
+    --set cut.length_mm=1 --replicates 3 --threads 2 --out "$work/xr"
+[ ! -e "$work/xr/summary.json" ] || fail "a rejected replicated cut wrote a summary"
+[ -z "$(ls "$work/xr/replicates/items" 2>/dev/null)" ] || fail "a rejected replicated cut left items"
 "$bin" run "$scene" "${small[@]}" --out "$work/c1" --threads 1 >/dev/null 2>"$work/err" || fail "cut run: $(cat "$work/err")"
 for f in summary.json forces.csv cracks.csv result.pvd frame_0000.vtp cracks_0000.vtp specimen.png forces.png; do
   [ -s "$work/c1/$f" ] || fail "missing $f"
@@ -68,14 +73,18 @@ cmp -s "$work/c1/forces.csv" "$work/k_full/forces.csv" || fail "a rerun gave dif
 expect_kill_resume_equal "$work/k_full" "$work/k_kill" "forces.csv cracks.csv result.pvd" \
   run "$scene" "${small[@]}" --set output.frame_every_samples=200 --threads 1 --checkpoint-every 40
 
-# Replicates: one directory per packing seed, mean and spread in the top summary.
+# Replicates: a study of one condition in OUT/replicates (one item directory per packing seed, the study
+# file to rerun it), mean and spread in the top summary.
 expect_input_error "--replicates = 2" run "$src/data/scenes/dem_tension.json" --replicates 2 --out "$work/x"
 "$bin" run "$scene" "${small[@]}" --set cut.length_mm=0.03 --replicates 2 --out "$work/r" --threads 1 >/dev/null 2>"$work/err" ||
   fail "replicates: $(cat "$work/err")"
-for f in summary.json replicate_1/forces.csv replicate_2/forces.csv replicate_2/summary.json; do
+item="replicates/items/condition_1_seed"
+for f in summary.json replicates/study.json replicates/items.csv replicates/conditions.csv "${item}_1/forces.csv" \
+         "${item}_2/forces.csv" "${item}_2/summary.json"; do
   [ -s "$work/r/$f" ] || fail "replicates: missing $f"
 done
-grep -q '"seed": 2' "$work/r/replicate_2/summary.json" || fail "replicate 2 does not use seed 2"
+grep -q '"seed": 2' "$work/r/${item}_2/summary.json" || fail "replicate 2 does not use seed 2"
+grep -q "\"directory\": \"${item}_2\"" "$work/r/summary.json" || fail "summary.json does not point at replicate 2's directory"
 in_range "$(result "$work/r" main_force_replicate_std_N)" 0 1e4 || fail "main_force_replicate_std_N"
 # The standard error from the cuts' own signals: sqrt(sum sem_k^2) / n, null when a cut has none.
 python3 - "$work/r/summary.json" <<'PY' || fail "main_force_sem_within_cuts_N is not sqrt(sum sem_k^2) / n"
@@ -98,16 +107,19 @@ cmp -s "$work/c1/cracks.csv" "$work/c2/cracks.csv" || fail "cracks differ betwee
 "$bin" run "$scene" "${small[@]}" --set cut.length_mm=0.03 --replicates 2 --out "$work/r2" --threads 2 >/dev/null 2>"$work/err" ||
   fail "replicates on 2 threads: $(cat "$work/err")"
 for k in 1 2; do
-  cmp -s "$work/r/replicate_$k/forces.csv" "$work/r2/replicate_$k/forces.csv" || fail "replicate $k differs on 2 threads"
+  cmp -s "$work/r/${item}_$k/forces.csv" "$work/r2/${item}_$k/forces.csv" || fail "replicate $k differs on 2 threads"
 done
 # A rerun reuses finished replicates and redoes only a missing one; a changed scene redoes all.
-rm "$work/r2/replicate_2/summary.json"
+rm "$work/r2/${item}_2/summary.json"
 "$bin" run "$scene" "${small[@]}" --set cut.length_mm=0.03 --replicates 2 --out "$work/r2" --threads 2 >"$work/log" 2>&1 ||
   fail "replicates rerun: $(cat "$work/log")"
-grep -q "replicate 1: reusing" "$work/log" || fail "finished replicate 1 was not reused"
-! grep -q "replicate 2: reusing" "$work/log" || fail "replicate 2 had no summary but was reused"
-cmp -s "$work/r/replicate_2/forces.csv" "$work/r2/replicate_2/forces.csv" || fail "rerun replicate 2 differs"
+grep -q "condition_1_seed_1 reused" "$work/log" || fail "finished replicate 1 was not reused"
+grep -q "condition_1_seed_2 done" "$work/log" || fail "replicate 2 had no summary but was not run again"
+cmp -s "$work/r/${item}_2/forces.csv" "$work/r2/${item}_2/forces.csv" || fail "rerun replicate 2 differs"
+# The study file in OUT/replicates reruns the same items with kerf-dem study (all reused).
+"$bin" study "$work/r2/replicates/study.json" --out "$work/r2/replicates" >"$work/log" 2>&1 || fail "study rerun: $(cat "$work/log")"
+[ "$(grep -c " reused in " "$work/log")" -eq 2 ] || fail "kerf-dem study on OUT/replicates/study.json did not reuse both items"
 "$bin" run "$scene" "${small[@]}" --set cut.length_mm=0.03 --set cut.speed_m_per_s=1.5 --replicates 2 --out "$work/r2" --threads 2 \
     >"$work/log" 2>&1 || fail "replicates with a changed scene: $(cat "$work/log")"
-! grep -q "reusing" "$work/log" || fail "a changed scene reused old replicates"
+! grep -q " reused in " "$work/log" || fail "a changed scene reused old replicates"
 echo "dem_cut_cli: ok"

@@ -79,6 +79,20 @@ python3 -c 'import json, sys; s = json.load(open(sys.argv[1])); s["scene"] = sys
   "$smoke" "$work/tension_reworded.json" "$work/smoke_reworded.json" || fail "reworded study"
 "$bin" study "$work/smoke_reworded.json" --out "$work/s1" --threads 1 >"$work/log" 2>&1 || fail "reworded rerun"
 grep -q "4 items (0 failed, 4 reused)" "$work/log" || fail "a reworded description did not reuse the items: $(tail -1 "$work/log")"
+# A grid that gains a value renumbers its conditions (0.2 m/s: condition 2 -> 3): the finished items move to
+# their new names and are reused; only the new value's items run, and the old values' rows are unchanged.
+python3 -c 'import json, sys; s = json.load(open(sys.argv[1])); s["conditions"]["grid"]["loading.speed_m_per_s"] = [0.1, 0.15, 0.2]; json.dump(s, open(sys.argv[2], "w"))' \
+  "$work/smoke_reworded.json" "$work/smoke_more.json" || fail "study with one more speed"
+"$bin" study "$work/smoke_more.json" --out "$work/s1" --threads 1 >"$work/log" 2>&1 || fail "study with one more speed: $(tail -3 "$work/log")"
+grep -q "6 items (0 failed, 4 reused)" "$work/log" || fail "one more speed did not reuse the 4 items: $(tail -1 "$work/log")"
+grep -q "^study: condition_2_seed_1 done" "$work/log" || fail "the new speed's items did not run: $(cat "$work/log")"
+python3 - "$work/s1_items_first.csv" "$work/s1/items.csv" <<'EOF' || fail "the reused rows differ from the first run's"
+import csv, sys
+strip = lambda r: {k: v for k, v in r.items() if k not in ("condition", "wall_time_s", "host", "rank")}
+first = [strip(r) for r in csv.DictReader(open(sys.argv[1]))]
+now = [strip(r) for r in csv.DictReader(open(sys.argv[2])) if r["loading.speed_m_per_s"] != "0.15"]
+assert first == now, (first, now)
+EOF
 
 if [ $with_mpi -eq 1 ]; then
   "${mpi[@]}" -np 1 "$bin" study "$smoke" --out "$work/m1" >"$work/log" 2>&1 || fail "mpirun -np 1: $(tail -3 "$work/log")"

@@ -33,24 +33,24 @@ export KERF_DATA_DIR="$work/tree/data"
 rc=$?
 [ $rc -eq 0 ] || [ $rc -eq 1 ] || fail "exit $rc: $(tail -5 "$work/log")"
 for f in report.md summary.json kerf_dem_replicates.csv kerf_dem_means.csv vs_experiment/report.md vs_paper_dem/report.md \
-         vs_experiment/parity_main_force_per_width.png snapshot_regular_0.1.png runs/grooved_0.1/replicate_2/forces.csv; do
+         vs_experiment/parity_main_force_per_width.png snapshot_regular_0.1.png study/study.json study/items.csv study/items/condition_2_seed_2/forces.csv; do
   [ -s "$work/out/$f" ] || fail "missing $f"
 done
 grep -q "per_unit_width" "$work/out/vs_experiment/report.md" || fail "no per-unit-width view"
 grep -q "grooved / regular main force at 0.1 mm" "$work/out/report.md" || fail "no groove ratio check"
 grep -q '"passed"' "$work/out/summary.json" || fail "no verdict in summary.json"
 [ "$(grep -c '^kerf_dem,' "$work/out/kerf_dem_replicates.csv")" -eq 4 ] || fail "expected 4 replicate rows"
-# With two or more hardware threads the two conditions run side by side, one single-thread kerf-dem each.
-if [ "$(nproc)" -ge 2 ]; then
-  [ "$(grep -c -e '--threads 1' "$work/log")" -eq 2 ] || fail "conditions not run side by side: $(grep -e ' run ' "$work/log")"
-fi
+# The cuts are one study: its items side by side, one thread each, as many as there are hardware threads.
+workers=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["workers"])' "$work/out/study/summary.json")
+[ "$workers" -eq "$(( $(nproc) < 4 ? $(nproc) : 4 ))" ] || fail "study ran $workers items side by side on $(nproc) threads"
+grep -q '^kerf-dem study .*study.json' "$work/log" || fail "the log does not give the study's command"
 # The grooves removed disks: the grooved rows differ from the regular ones.
 awk -F, 'NR > 1 { m[$2] = $6 } END { exit !(m["regular"] != m["grooved"]) }' "$work/out/kerf_dem_means.csv" ||
   fail "grooved and regular forces identical"
 # A rerun reuses every finished replicate and gives the same table.
 cp "$work/out/kerf_dem_replicates.csv" "$work/first.csv"
 "$validate" soda_lime_cutting "$work/out" >"$work/log" 2>&1
-[ "$(grep -c "reusing" "$work/log")" -eq 4 ] || fail "rerun did not reuse the 4 replicates: $(cat "$work/log")"
+[ "$(grep -c " reused in " "$work/log")" -eq 4 ] || fail "rerun did not reuse the 4 replicates: $(cat "$work/log")"
 cmp -s "$work/first.csv" "$work/out/kerf_dem_replicates.csv" || fail "rerun changed the table"
 # Every check carries its standard error: for the groove ratio, ratio x hypot of the two relative standard
 # errors of the mean (sample std / sqrt(n)) of kerf-dem's replicates; against the paper's DEM, kerf's and the
@@ -81,7 +81,7 @@ PY
 "$validate" soda_lime_cutting "$work/out" --replicates 3 >"$work/log" 2>&1
 rc=$?
 [ $rc -eq 0 ] || [ $rc -eq 1 ] || fail "--replicates 3: exit $rc: $(tail -5 "$work/log")"
-[ "$(grep -c "reusing" "$work/log")" -eq 4 ] || fail "--replicates 3 did not reuse the 4 finished replicates"
+[ "$(grep -c " reused in " "$work/log")" -eq 4 ] || fail "--replicates 3 did not reuse the 4 finished replicates"
 [ "$(grep -c '^kerf_dem,' "$work/out/kerf_dem_replicates.csv")" -eq 6 ] || fail "expected 6 replicate rows"
 grep -q "3 replicates per condition" "$work/out/report.md" || fail "report.md does not say 3 replicates"
 "$validate" soda_lime_cutting "$work/out" --replicates 1 >"$work/log" 2>&1

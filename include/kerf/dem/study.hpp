@@ -29,11 +29,13 @@
 #include <chrono>
 #include <cstdint>
 #include <filesystem>
+#include <exception>
 #include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "kerf/dem/scene.hpp"
 #include "kerf/field_table.hpp"
 #include "kerf/json_reader.hpp"
 
@@ -99,6 +101,7 @@ struct StudyItemResult {
   std::string host;
   int rank = 0;
   bool reused = false;  ///< found finished in DIR/items (wall time, host and rank are the original run's)
+  std::exception_ptr exception;  ///< on this machine: what stopped the item (not sent between ranks)
 };
 Json study_item_result_to_json(const StudyItemResult& r);
 StudyItemResult study_item_result_from_json(const Json& j);
@@ -107,9 +110,12 @@ StudyItemResult study_item_result_from_json(const Json& j);
 std::string study_item_name(const StudyItem& item);
 
 /// Runs one item into DIR/items/NAME (or reuses it there) with `threads` OpenMP threads. Never throws for the
-/// item's own failures (bad override, bad scene, unstable run): they are the result's error.
+/// item's own failures (bad override, bad scene, unstable run): they are the result's error. `on_progress`,
+/// if set, gets the item's progress reports, each stage named "NAME: stage".
 StudyItemResult run_study_item(const StudySpec& spec, const StudyItem& item, const std::filesystem::path& out,
-                               int threads, int rank);
+                               int threads, int rank, const ProgressCallback& on_progress = {});
+/// DIR/items/NAME/summary.json of a finished item.
+std::filesystem::path study_item_summary_file(const std::filesystem::path& out, const StudyItem& item);
 
 /// Which items to run next and when each condition is done: the coordinator's bookkeeping, without threads
 /// or messages (run_study_local and the MPI coordinator both drive it).
@@ -155,6 +161,13 @@ struct StudyOptions {
   bool show_progress = true; ///< items done / running / queued and an ETA on stderr when it is a terminal
   bool log_lines = false;    ///< a plain line on stdout per finished item (a batch job's log)
   std::string command_line;
+  /// Local only: the first failed item stops the study (no new items; the items in flight finish) and its
+  /// error is rethrown as it was (an input error stays one): `kerf-dem run --replicates`, where every item
+  /// is the same scene and one failure means all would fail.
+  bool stop_at_first_failure = false;
+  /// Local only: false when the caller already holds OUT's parent directory (a run's OutputManifest).
+  bool hold_output_directory = true;
+  ProgressCallback on_progress;  ///< local only: each item's progress reports (stage "NAME: stage")
 };
 
 struct StudyOutcome {
@@ -169,8 +182,11 @@ StudyOutcome run_study_local(const StudySpec& spec, const StudyOptions& options)
 Json write_study_outputs(const StudySpec& spec, const StudyScheduler& scheduler, const StudyOptions& options,
                          double wall_time_s, int workers);
 
-/// Creates DIR/items and removes the partial item directories a killed run left there (before any item runs).
-void prepare_study_directory(const std::filesystem::path& out);
+/// Before any item runs: creates DIR/items, removes the partial item directories a killed run left there, and
+/// moves each finished item whose scene is that of another item of this study to that item's name (a grid
+/// that gained or lost a value renumbers its conditions; the finished cuts are reused all the same). Returns
+/// how many items it moved.
+std::size_t prepare_study_directory(const StudySpec& spec, const std::filesystem::path& out);
 /// The study's end, on one machine or on MPI's rank 0: writes the outputs, prints the closing line, and gives
 /// the exit status (kExitModelError when some item failed).
 StudyOutcome finish_study(const StudySpec& spec, const StudyScheduler& scheduler, const StudyOptions& options,
