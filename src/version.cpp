@@ -10,6 +10,8 @@
 #include <fstream>
 #include <iterator>
 
+#include "kerf/openmp_env.hpp"
+
 namespace kerf {
 
 std::string_view version() { return KERF_VERSION; }
@@ -66,7 +68,8 @@ Json run_provenance(const std::string& command, const std::string& scene_path, c
               {"overrides", overrides},
               {"date", std::string(date.data())},
               {"host", std::string(host.data())},
-              {"threads", omp_get_max_threads()}};
+              {"threads", omp_get_max_threads()},
+              {"openmp_wait_policy", openmp_wait_policy()}};
 }
 
 }  // namespace kerf
