@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Proves a DEM refactor changed no result: runs the same reference cases with two builds and compares them
-# (CSV outputs and fitted materials byte for byte; summary.json and calibration logs without wall times).
+# (CSV outputs and fitted materials byte for byte; summary.json without wall times and provenance (binary path,
+# commit, date), calibration logs without wall times).
 #
 #   bash scripts/dem-refcheck.sh OLD_BIN_DIR NEW_BIN_DIR OUT_DIR [--skip-compression]
 #
@@ -45,10 +46,10 @@ import json, sys
 def strip(o):
     if isinstance(o, dict):
         return {k: strip(v) for k, v in o.items()
-                if not (k.startswith("wall_time") or k in ("particle_steps_per_s", "genesis_wall_time_s"))}
+                if not (k.startswith("wall_time") or k in ("particle_steps_per_s", "genesis_wall_time_s", "provenance"))}
     return [strip(v) for v in o] if isinstance(o, list) else o
 a, b = (strip(json.load(open(p))) for p in sys.argv[1:3])
-print(("same      " if a == b else "DIFFERENT ") + sys.argv[3] + "/summary.json (but wall times)")
+print(("same      " if a == b else "DIFFERENT ") + sys.argv[3] + "/summary.json (but wall times and provenance)")
 sys.exit(0 if a == b else 1)
 PY
 done
