@@ -214,6 +214,9 @@ Simulation CutWindow::build(const Simulation* current, double x_edge_m) {
   sim.set_contact_springs(std::move(s));
   sim.set_time_step(full_.time_step());
   sim.set_clock(full_.time(), full_.step_count());
+  // The team governor goes on with what it measured (a window is rebuilt more often than it measures).
+  sim.set_adaptive_team(full_.adaptive_team());
+  if (current) sim.set_team_governor(current->team_governor());
   sim.initialise();
   Particles& p = sim.particles();
   for (const KeptForce& k : kept) {

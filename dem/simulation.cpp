@@ -3,9 +3,11 @@
 #include "kerf/dem/simulation.hpp"
 
 #include <fmt/format.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <bit>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <exception>
@@ -428,9 +430,15 @@ void Simulation::evaluate_forces_with_increment() {
   apply_breaks();
 }
 
+int Simulation::team_threads() {
+  const int max_threads = omp_get_max_threads();
+  return adaptive_team_ ? governor_.team(max_threads) : max_threads;
+}
+
 void Simulation::compute_forces() {
   ForceCounts counts;
-#pragma omp parallel if (parallel_here())
+  const int team = team_threads();
+#pragma omp parallel if (parallel_here()) num_threads(team)
   force_loops(counts);
   finish_forces(counts);
 }
@@ -764,8 +772,9 @@ void Simulation::step() {
   std::exception_ptr failure;
   // One team for the whole step (not one per loop): the serial pieces run in `single` blocks and the
   // threads meet at barriers only where a loop reads what another thread wrote: after the drift, (when the
-  // neighbour lists are rebuilt), after the contact loops, and at the end.
-#pragma omp parallel if (parallel_here())
+  // neighbour lists are rebuilt), after the contact loops, and at the end. Its size: team_threads().
+  const int team = team_threads();
+#pragma omp parallel if (parallel_here()) num_threads(team)
   {
 #pragma omp single nowait
     {
@@ -817,6 +826,9 @@ void Simulation::step() {
   }
   ++steps_;
   if (opt_.check_every > 0 && steps_ % opt_.check_every == 0) check_stability();
+  // The governor's clock, every 16 steps (a window is about 0.25 s: thousands of steps).
+  if (adaptive_team_ && steps_ % 16 == 0)
+    governor_.observe(16, std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count());
 }
 
 void Simulation::run(std::int64_t n_steps) {

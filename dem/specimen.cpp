@@ -82,6 +82,7 @@ SpecimenSpec read_specimen_spec(ObjectReader& r) {
 void EngineSettings::apply_to(Simulation& sim) const {
   sim.set_time_step_safety(time_step_safety);
   sim.set_min_parallel_items(min_parallel_items);
+  sim.set_adaptive_team(adaptive_threads);
 }
 
 const FieldTable<EngineSettings>& engine_fields() {
@@ -91,7 +92,11 @@ const FieldTable<EngineSettings>& engine_fields() {
                    "fraction of the critical time step used", &E::time_step_safety),
       IntField<E>{"min_parallel_items", 0, 1 << 30, "loops shorter than this run on one thread",
                   [](const E& e) { return static_cast<int>(e.min_parallel_items); },
-                  [](E& e, int v) { e.min_parallel_items = v; }}};
+                  [](E& e, int v) { e.min_parallel_items = v; }},
+      bool_field("adaptive_threads",
+                 "choose between all threads and one by measured speed, again every few seconds: one thread when a "
+                 "core is shared with another process (docs/performance.md); results do not depend on it",
+                 &E::adaptive_threads)};
   return table;
 }
 

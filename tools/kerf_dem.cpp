@@ -28,7 +28,6 @@
 #include "kerf/dem/study_mpi.hpp"
 #include "kerf/error.hpp"
 #include "kerf/json_reader.hpp"
-#include "kerf/openmp_env.hpp"
 #include "kerf/version.hpp"
 
 namespace {
@@ -69,7 +68,6 @@ int keys_command(const std::string& section) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  kerf::adopt_openmp_wait_policy(argv);  // first: it may execute the program again (kerf/openmp_env.hpp)
   CLI::App app{"kerf-dem: 2D bonded-particle DEM with Potyondy's flat joint"};
   app.require_subcommand(1);
   app.set_version_flag("--version", kerf::version_line(kProgram));

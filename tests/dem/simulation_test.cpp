@@ -169,6 +169,31 @@ TEST_CASE("engine: bit-identical results for 1 and 2 threads", "[simulation]") {
   CHECK(a.bonds().shear_force_n == b.bonds().shear_force_n);
 }
 
+TEST_CASE("engine: a team that changes size every 16 steps gives the one-thread results to the bit", "[simulation]") {
+  // The governor (kerf/dem/team_governor.hpp) set to switch at every probe, every other window of 16 steps:
+  // the steps alternate between 2 threads and 1, joints breaking on both.
+  const int before = omp_get_max_threads();
+  omp_set_num_threads(1);
+  Simulation a = cluster(glass(0.2), 10, 10, 7);
+  a.initialise();
+  randomise_velocities(a, 8, 20.0, 2e6);
+  a.run(800);
+  omp_set_num_threads(2);
+  Simulation b = cluster(glass(0.2), 10, 10, 7);
+  b.set_team_governor(TeamGovernor({1e-12, 1, 0.0}));
+  b.initialise();
+  randomise_velocities(b, 8, 20.0, 2e6);
+  b.run(800);
+  omp_set_num_threads(before);
+  REQUIRE(!a.cracks().empty());
+  CHECK(b.team_governor().switches() >= 10);
+  CHECK(a.cracks().size() == b.cracks().size());
+  CHECK(a.particles().x == b.particles().x);
+  CHECK(a.particles().y == b.particles().y);
+  CHECK(a.particles().omega == b.particles().omega);
+  CHECK(a.bonds().shear_force_n == b.bonds().shear_force_n);
+}
+
 TEST_CASE("engine: a single joint pulled apart breaks at 2 R t sigma_c", "[simulation]") {
   Simulation sim(glass(0.0), {});
   sim.add_particle(0, 0, 10e-6);

@@ -23,6 +23,7 @@
 #include "kerf/dem/contact_laws.hpp"
 #include "kerf/dem/material.hpp"
 #include "kerf/dem/neighbor_grid.hpp"
+#include "kerf/dem/team_governor.hpp"
 
 namespace kerf::dem {
 
@@ -134,6 +135,13 @@ class Simulation {
   /// Changes f_safety (validated as engine.time_step_safety) and recomputes the step.
   void set_time_step_safety(double f);
   void set_min_parallel_items(std::int64_t n) { opt_.min_parallel_items = n; }
+  /// Whether the steps choose between all threads and one by measured rate (kerf/dem/team_governor.hpp; on
+  /// by default; results do not depend on it). Not part of the saved state: a restored run has it on.
+  void set_adaptive_team(bool on) { adaptive_team_ = on; }
+  bool adaptive_team() const { return adaptive_team_; }
+  /// The governor of the team size (a test sets one that switches often).
+  void set_team_governor(const TeamGovernor& governor) { governor_ = governor; }
+  const TeamGovernor& team_governor() const { return governor_; }
   /// f_safety min over disks of sqrt(m / k_tran), sqrt(I / k_rot), k summed over bonds and candidate contacts.
   double stable_time_step() const;
 
@@ -261,6 +269,10 @@ class Simulation {
   bool need_rebuild_ = true, need_breaks_ = false, initialised_ = false, dt_fixed_ = false;
   double dt_ = 0, time_ = 0, skin_ = 0, speed_limit_ = 0;
   std::int64_t steps_ = 0;
+  bool adaptive_team_ = true;
+  TeamGovernor governor_;
+  /// The threads of the next step's team: OpenMP's maximum, or the governor's choice out of it.
+  int team_threads();
 };
 
 }  // namespace kerf::dem

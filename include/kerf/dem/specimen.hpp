@@ -61,11 +61,12 @@ Json specimen_spec_to_json(const SpecimenSpec& spec);
 struct EngineSettings {
   double time_step_safety = SimulationOptions{}.time_step_safety;
   std::int64_t min_parallel_items = SimulationOptions{}.min_parallel_items;
-  /// Sets both on `sim`; the time step is recomputed with the safety factor.
+  bool adaptive_threads = true;  ///< the steps choose between all threads and one by measured rate
+  /// Sets them on `sim`; the time step is recomputed with the safety factor.
   void apply_to(Simulation& sim) const;
 };
 
-/// The "engine" section's keys: time_step_safety, min_parallel_items.
+/// The "engine" section's keys: time_step_safety, min_parallel_items, adaptive_threads.
 const FieldTable<EngineSettings>& engine_fields();
 /// Reads the optional "engine" object of a scene and rejects other keys.
 EngineSettings read_engine_settings(ObjectReader& scene_root);
