@@ -796,6 +796,7 @@ std::size_t prepare_study_directory(const StudySpec& spec, const fs::path& out) 
       // Not a finished item: its item runs again.
     }
   }
+  if (finished.empty()) return 0;
   // Each item this study may run whose scene finished under another name goes there.
   const int most = spec.replicates.policy == ReplicatePolicy::fixed ? spec.replicates.count : spec.replicates.max_count;
   std::vector<std::pair<fs::path, fs::path>> moves;  // from, to
@@ -803,7 +804,13 @@ std::size_t prepare_study_directory(const StudySpec& spec, const fs::path& out) 
     for (int k = 0; k < most; ++k) {
       const StudyItem item{static_cast<int>(c), k, spec.base_seed + static_cast<std::uint64_t>(k)};
       std::vector<std::string> overrides;
-      const auto found = finished.find(without_description(item_scene(spec, item, overrides)).dump());
+      Json scene;
+      try {
+        scene = item_scene(spec, item, overrides);
+      } catch (const std::exception&) {
+        continue;  // an override that does not apply: the item fails when it runs, not the study here
+      }
+      const auto found = finished.find(without_description(std::move(scene)).dump());
       const fs::path to = items / study_item_name(item);
       if (found == finished.end()) continue;
       if (found->second != to) moves.emplace_back(found->second, to);

@@ -195,6 +195,12 @@ assert [r["status"] for r in rows] == ["ok", "failed"], rows
 assert rows[0]["tensile_strength_MPa"] != "" and rows[1]["tensile_strength_MPa"] == ""
 assert "loading.speed_m_per_s = -1" in rows[1]["error"], rows[1]["error"]
 EOF
+# Rerun beside the finished item with a condition whose override cannot apply (a key under a text): the
+# finished item is reused and the new condition's item fails; the study itself does not.
+sed 's/{"loading.speed_m_per_s": -1}]/{"loading.speed_m_per_s": -1}, {"material.base.grade": 2}]/' "$work/bad_item.json" >"$work/bad_item2.json"
+"$bin" study "$work/bad_item2.json" --out "$work/bi" --threads 2 >"$work/log" 2>"$work/err"
+[ $? -eq 3 ] || fail "an override that cannot apply: expected exit 3 ($(cat "$work/err"))"
+grep -q "3 items (2 failed, 1 reused)" "$work/log" || fail "an override that cannot apply: $(tail -2 "$work/log")"
 
 # Bad study files: exit 2, one line naming the key.
 bad() {  # bad <expected text> <study JSON>
