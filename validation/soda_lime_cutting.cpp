@@ -211,7 +211,6 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
                        fmt::format("a number of packings from {} to {}", kMinReplicates, kMaxReplicates));
     spec.replicates = replicates;
   }
-  fs::create_directories(out_dir / "runs");
   CuttingValidation v;
 
   // 1. The runs: one study (kerf/dem/study.hpp) of the conditions, each on spec.replicates packings, in
