@@ -212,8 +212,7 @@ int main(int argc, char** argv) {
     std::map<std::pair<int, int>, Run> cut;
     for (int c = 0; c < static_cast<int>(list.size()); ++c)
       for (int k = 0; k < replicates; ++k) {
-        const dem::StudyItem item{c, k, study.base_seed + static_cast<std::uint64_t>(k)};
-        const Json one = read_json_file(dem::study_item_summary_file(study_dir, item).string());
+        const Json one = dem::read_study_item_summary(study_dir, dem::study_item(study, c, k));
         cut[{c, k}] = Run{one.at("n_particles").get<int>(), one.at("steps").get<std::int64_t>(),
                           one.at("results").at("main_force_N").get<double>(),
                           one.at("results").at("thrust_force_N").get<double>(), one.at("wall_time_s").get<double>()};
@@ -242,7 +241,7 @@ int main(int argc, char** argv) {
           const Run& run = cut.at({c, r});
           fm.push_back(run.main_force_n), ft.push_back(run.thrust_force_n), cost.push_back(run.cut_wall_s);
           particles = run.n_particles;
-          runs += csv_line({k.name, csv_number(v), std::to_string(r + 1), std::to_string(study.base_seed + r),
+          runs += csv_line({k.name, csv_number(v), std::to_string(r + 1), std::to_string(dem::study_item(study, c, r).seed),
                             std::to_string(c + 1), std::to_string(run.n_particles), std::to_string(run.steps),
                             csv_number(run.main_force_n), csv_number(run.thrust_force_n), csv_number(run.cut_wall_s)});
         }

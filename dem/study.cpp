@@ -211,6 +211,10 @@ StudySpec read_study(const Json& doc, const fs::path& study_file) {
   return s;
 }
 
+StudyItem study_item(const StudySpec& spec, int condition, int replicate) {
+  return {condition, replicate, spec.base_seed + static_cast<std::uint64_t>(replicate)};
+}
+
 std::string study_item_name(const StudyItem& item) {
   return fmt::format("condition_{}_seed_{}", item.condition + 1, item.seed);
 }
@@ -271,8 +275,8 @@ Json without_description(Json scene) {
 
 }  // namespace
 
-fs::path study_item_summary_file(const fs::path& out, const StudyItem& item) {
-  return out / "items" / study_item_name(item) / "summary.json";
+Json read_study_item_summary(const fs::path& out, const StudyItem& item) {
+  return read_json_file((out / "items" / study_item_name(item) / "summary.json").string());
 }
 
 StudyItemResult run_study_item(const StudySpec& spec, const StudyItem& item, const fs::path& out, int threads,
@@ -370,7 +374,7 @@ int StudyScheduler::needed(const ConditionState& c) const {
 std::optional<StudyItem> StudyScheduler::next() {
   const auto issue = [&](std::size_t ci) {
     ConditionState& c = conditions_[ci];
-    const StudyItem item{static_cast<int>(ci), c.issued, spec_.base_seed + static_cast<std::uint64_t>(c.issued)};
+    const StudyItem item = study_item(spec_, static_cast<int>(ci), c.issued);
     ++c.issued;
     ++n_issued_;
     return item;
@@ -802,7 +806,7 @@ std::size_t prepare_study_directory(const StudySpec& spec, const fs::path& out) 
   std::vector<std::pair<fs::path, fs::path>> moves;  // from, to
   for (std::size_t c = 0; c < spec.conditions.size(); ++c)
     for (int k = 0; k < most; ++k) {
-      const StudyItem item{static_cast<int>(c), k, spec.base_seed + static_cast<std::uint64_t>(k)};
+      const StudyItem item = study_item(spec, static_cast<int>(c), k);
       std::vector<std::string> overrides;
       Json scene;
       try {

@@ -242,8 +242,8 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
     std::vector<Json> items;
     std::vector<fs::path> directories;
     for (int k = 0; k < spec.replicates; ++k) {
-      const dem::StudyItem item{static_cast<int>(ci), k, study.base_seed + static_cast<std::uint64_t>(k)};
-      items.push_back(read_json_file(dem::study_item_summary_file(study_dir, item).string()));
+      const dem::StudyItem item = dem::study_item(study, static_cast<int>(ci), k);
+      items.push_back(dem::read_study_item_summary(study_dir, item));
       directories.push_back(fs::path("study") / "items" / dem::study_item_name(item));
     }
     ConditionResult& r = results[spec.conditions[ci].name] = collect(spec.conditions[ci], items);

@@ -99,7 +99,6 @@ class CalibrateCutKind final : public SceneKind {
       e.material = read_material(scene["material"], "material");
       RunOptions options = run.options;
       options.out = dir;
-      options.replicates = fit.replicates;
       const Json done =
           run_cut_replicates(scene, run.scene_dir, cut_, fit.replicates, summary_head("cut", e.material), options).summary;
       const Json& r = done["results"];

@@ -209,8 +209,8 @@ SceneOutcome run_cut_replicates(const Json& cut_scene, const std::string& scene_
   Json list = Json::array();
   double wall = 0;
   for (int k = 0; k < replicates; ++k) {
-    const StudyItem item{0, k, spec.base_seed + static_cast<std::uint64_t>(k)};
-    done.push_back(read_json_file(study_item_summary_file(study.out, item).string()));
+    const StudyItem item = study_item(spec, 0, k);
+    done.push_back(read_study_item_summary(study.out, item));
     const Json& one = done.back();
     Json row{{"replicate", k + 1},
              {"seed", one["study_item"]["seed"]},
@@ -222,19 +222,17 @@ SceneOutcome run_cut_replicates(const Json& cut_scene, const std::string& scene_
     wall += row["wall_time_s"].get<double>();
     list.push_back(row);
   }
+  // Means, sample standard deviations and the standard errors of the main and thrust means (std / sqrt(n)):
+  // the study's table of its one condition, beside each replicate's own within-cut standard errors
+  // (replicates[k].main_force_sem_N, from its force signal).
+  const Json& table = ran.summary["conditions"][0]["results"];
   Json stats;
   for (const auto& [key, spread] : keys) {
-    std::vector<double> values;
-    for (const auto& row : list) values.push_back(row[key].get<double>());
-    const SampleStatistics st = sample_statistics(values);  // replicates >= 2: a finite sample std
-    stats[key] = st.mean;
-    stats[spread] = st.standard_deviation;
+    stats[key] = table[key]["mean"];
+    stats[spread] = table[key]["std"];  // replicates >= 2: a finite sample std
   }
-  // The standard errors of the replicate means (replicate std / sqrt(n)), beside each replicate's own
-  // within-cut standard errors (replicates[k].main_force_sem_N, from its force signal).
-  const double root_n = std::sqrt(static_cast<double>(replicates));
-  stats["main_force_sem_N"] = stats["main_force_replicate_std_N"].get<double>() / root_n;
-  stats["thrust_force_sem_N"] = stats["thrust_force_replicate_std_N"].get<double>() / root_n;
+  stats["main_force_sem_N"] = table["main_force_N"]["sem"];
+  stats["thrust_force_sem_N"] = table["thrust_force_N"]["sem"];
   // And from the cuts' own signals, sqrt(sum sem_k^2) / n: the error of the mean of long steady cuts, which
   // (unlike the replicate spread of a few cuts) has many batches behind it; null when a cut has none.
   for (const std::string force : {"main_force", "thrust_force"}) {

@@ -106,6 +106,9 @@ struct StudyItemResult {
 Json study_item_result_to_json(const StudyItemResult& r);
 StudyItemResult study_item_result_from_json(const Json& j);
 
+/// Item (condition, replicate) of the study: its packing seed is the base scene's + replicate.
+StudyItem study_item(const StudySpec& spec, int condition, int replicate);
+
 /// The item's directory name under DIR/items ("condition_2_seed_7").
 std::string study_item_name(const StudyItem& item);
 
@@ -114,8 +117,8 @@ std::string study_item_name(const StudyItem& item);
 /// if set, gets the item's progress reports, each stage named "NAME: stage".
 StudyItemResult run_study_item(const StudySpec& spec, const StudyItem& item, const std::filesystem::path& out,
                                int threads, int rank, const ProgressCallback& on_progress = {});
-/// DIR/items/NAME/summary.json of a finished item.
-std::filesystem::path study_item_summary_file(const std::filesystem::path& out, const StudyItem& item);
+/// DIR/items/NAME/summary.json of a finished item, read.
+Json read_study_item_summary(const std::filesystem::path& out, const StudyItem& item);
 
 /// Which items to run next and when each condition is done: the coordinator's bookkeeping, without threads
 /// or messages (run_study_local and the MPI coordinator both drive it).
