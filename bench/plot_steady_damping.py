@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
-"""The steady main and thrust forces of a damping/speed study (data/studies/steady_damping.json) against Cundall's
-local damping alpha, one line per tool speed, error bars the cuts' own standard errors (batch means); a cut with
-contact dashpots is drawn as an open marker at its alpha. Reads the study's items.csv and each item's summary.json
+"""The steady main and thrust forces of a damping/speed study (data/studies/steady_damping.json) against the tool
+speed, one line per damping (Cundall's local damping alpha; contact dashpots as open squares), error bars the
+cuts' own standard errors (batch means): where the lines flatten and meet is the quasi-static limit. Reads the study's items.csv and each item's summary.json
 and forces.csv, and prints a Markdown table with how intermittent each cut is: the share of the steady samples
 in which the tool touches (main force above 0.1 N) and the share of the mean carried by the largest 5 % of them.
 
@@ -47,41 +47,41 @@ def intermittency(item_dir, steady_from_mm):
     return {"contact": float(np.mean(np.abs(main_force) > 0.1)), "top5": float(largest.sum() / main_force.sum())}
 
 
+def damping_label(r):
+    return f"alpha {r['alpha']:g}" + (f", dashpots {r['beta']:g}" if r["beta"] > 0 else "")
+
+
 def main():
     study_dir, out = pathlib.Path(sys.argv[1]), sys.argv[2]
     rows = items(study_dir)
-    fig, axes = plt.subplots(1, 2, figsize=(10, 4.2), sharex=True)
-    speeds = sorted({r["speed"] for r in rows}, reverse=True)
+    fig, axes = plt.subplots(1, 2, figsize=(10.5, 4.4), sharex=True)
+    dampings = sorted({(r["alpha"], r["beta"]) for r in rows}, key=lambda d: (-d[0], d[1]))
     colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
     for ax, key, title in ((axes[0], "main", "main force"), (axes[1], "thrust", "thrust force")):
-        for k, speed in enumerate(speeds):
-            local = sorted((r for r in rows if r["speed"] == speed and r["beta"] == 0), key=lambda r: r["alpha"])
-            viscous = [r for r in rows if r["speed"] == speed and r["beta"] > 0]
-            ax.errorbar([r["alpha"] for r in local], [r[key] for r in local], [r[key + "_sem"] for r in local],
-                        marker="o", capsize=3, color=colours[k], label=f"{speed:g} m/s, local damping only")
-            if viscous:
-                ax.errorbar([r["alpha"] for r in viscous], [r[key] for r in viscous], [r[key + "_sem"] for r in viscous],
-                            marker="s", mfc="none", linestyle="none", capsize=3, color=colours[k],
-                            label=f"{speed:g} m/s, dashpots (ratio {viscous[0]['beta']:g})")
+        for k, (alpha, beta) in enumerate(dampings):
+            line = sorted((r for r in rows if (r["alpha"], r["beta"]) == (alpha, beta)), key=lambda r: r["speed"])
+            nudge = 1 + 0.025 * (k - (len(dampings) - 1) / 2)  # side by side at one speed
+            ax.errorbar([r["speed"] * nudge for r in line], [r[key] for r in line], [r[key + "_sem"] for r in line],
+                        marker="s" if beta > 0 else "o", mfc="none" if beta > 0 else None, capsize=3,
+                        color=colours[k % len(colours)], label=damping_label(line[0]))
         ax.set_xscale("log")
-        alphas = sorted({r["alpha"] for r in rows})
-        ax.set_xticks(alphas)
-        ax.set_xticklabels([f"{a:g}" for a in alphas])
+        speeds = sorted({r["speed"] for r in rows})
+        ax.set_xticks(speeds)
+        ax.set_xticklabels([f"{s:g}" for s in speeds])
         ax.minorticks_off()
-        ax.set_xlabel("local damping alpha")
+        ax.set_xlabel("tool speed (m/s)")
         ax.set_ylabel(f"steady {title} per 1 mm width (N)")
         ax.set_title(f"{title}: mean +- standard error of one cut")
         ax.set_ylim(bottom=0)
         ax.grid(alpha=0.3)
-    axes[0].legend(fontsize=8)
-    fig.suptitle("Regular 0.1 mm steady cut (12 mm workpiece, 4 mm travel): damping and tool speed")
+    axes[0].legend(fontsize=8, title="damping", title_fontsize=8)
+    fig.suptitle("Regular 0.1 mm steady cut (12 mm workpiece, 4 mm travel, one packing): damping and tool speed")
     fig.tight_layout()
     fig.savefig(out, dpi=120)
     print("| speed (m/s) | damping | main force (N) | tool in contact | largest 5 % of samples carry |")
     print("|---:|---|---:|---:|---:|")
     for r in sorted(rows, key=lambda r: (-r["speed"], -r["alpha"])):
-        damping = f"alpha {r['alpha']:g}" + (f", dashpots {r['beta']:g}" if r["beta"] > 0 else "")
-        print(f"| {r['speed']:g} | {damping} | {r['main']:.2f} +- {r['main_sem']:.2f} | {100 * r['contact']:.0f} % "
+        print(f"| {r['speed']:g} | {damping_label(r)} | {r['main']:.2f} +- {r['main_sem']:.2f} | {100 * r['contact']:.0f} % "
               f"| {100 * r['top5']:.0f} % of the mean |")
 
 

@@ -5,8 +5,10 @@
 #   bash scripts/validate.sh                      # every case
 #   bash scripts/validate.sh soda_lime_cutting    # one case: k9_trepanning (seconds), soda_lime_cutting
 #                                                 # (18 kerf-dem cuts, 19-35 min on 2 cores; rerunning
-#                                                 # reuses the replicates already finished) or
-#                                                 # soda_lime_cutting_cut_fitted (12 cuts, 13-34 min)
+#                                                 # reuses the replicates already finished),
+#                                                 # soda_lime_cutting_cut_fitted (12 cuts, 13-34 min) or
+#                                                 # soda_lime_cutting_steady (six conditions x 18 packings,
+#                                                 # 108 11-mm cuts, about a day on 2 cores)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 case="${1:-all}"

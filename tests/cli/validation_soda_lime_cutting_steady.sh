@@ -18,7 +18,7 @@ csv="$work/tree/validation/soda_lime_cutting/soda_lime_orthogonal_cutting.csv"
 cp "$src/validation/soda_lime_cutting/soda_lime_orthogonal_cutting.csv" "$csv"
 case_dir="$work/tree/validation/soda_lime_cutting_steady"
 cat >"$case_dir/scene.json" <<'JSON'
-{"kind": "cut", "material": {"base": "soda_lime_glass_fj_low_damping"},
+{"kind": "cut", "material": {"base": "soda_lime_glass_fj_undamped"},
  "specimen": {"width_mm": 2, "height_mm": 0.3, "radius_min_um": 10, "radius_max_um": 13, "seed": 1,
               "growth_steps": 2000, "relax_steps": 500},
  "cut": {"depth_of_cut_mm": 0.1, "speed_m_per_s": 4, "length_mm": 0.5, "entry_fraction": 0.15, "window_mm": 0.05},
@@ -31,7 +31,7 @@ spec_from_real() {
   python3 - "$src/validation/soda_lime_cutting_steady/validation.json" "$case_dir/validation.json" "$@" <<'PY'
 import json, sys
 spec = json.load(open(sys.argv[1]))
-assert spec["statistics"] == "within_cuts" and spec["replicates"] == 1, "the real case's statistics"
+assert spec["statistics"] == "within_cuts" and spec["replicates"] >= 1, "the real case's statistics"
 spec["conditions"] = [c for c in spec["conditions"] if c["groove_shape"] != "trapezoidal"]
 spec["replicates"] = 2
 spec["acceptance"]["max_relative_sem_percent"] = 1000
