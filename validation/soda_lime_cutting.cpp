@@ -271,6 +271,32 @@ const GroupComparison& group_of(const Comparison& comparison, const std::string&
   throw InputError("validation.experiments", fmt::format("{} {} mm", surface, depth_mm), "rows for this condition");
 }
 
+/// The measured side's mean of one condition in a comparison (the experiments in vs_experiment, the paper's DEM in
+/// vs_paper_dem), SI in the basis of the result `key`.
+double reference_mean(const Comparison& comparison, const std::string& key, const std::string& surface, double depth_mm) {
+  return group_of(comparison, key, surface, depth_mm).measured_stats.mean;
+}
+
+/// The condition tables' reference cells: the paper's DEM main / thrust (N, 1 mm), the experiment's (N, 25.4 mm)
+/// and the experiment's per 1 mm of width; "—" for trapezoidal grooves, which neither has.
+struct ReferenceCells {
+  std::string paper = "—", experiment = "—", per_mm = "—";
+};
+
+ReferenceCells reference_cells(const Condition& c, const Comparison& vs_experiment, const Comparison& vs_dem) {
+  ReferenceCells cells;
+  if (c.groove_shape == "trapezoidal") return cells;
+  const auto pair = [&](const Comparison& comparison, const std::string& suffix, double scale, const char* format) {
+    return fmt::format(fmt::runtime(format), scale * reference_mean(comparison, "main_force" + suffix, c.surface, c.depth_of_cut_mm),
+                       scale * reference_mean(comparison, "thrust_force" + suffix, c.surface, c.depth_of_cut_mm));
+  };
+  cells.paper = pair(vs_dem, "", 1, "{:.2f} / {:.2f}");
+  cells.experiment = pair(vs_experiment, "", 1, "{:.2f} / {:.2f}");
+  // The per-unit-width view is in N/m: per 1 mm of width is 1e-3 of it.
+  cells.per_mm = pair(vs_experiment, "_per_width", 1e-3, "{:.3f} / {:.3f}");
+  return cells;
+}
+
 Json comparison_document(const fs::path& experiments, const fs::path& kerf_csv, const std::string& title,
                          bool against_paper_dem) {
   const Json conditions = Json::array({Json{{"key", "surface"}, {"label", "Surface"}, {"text", true}},
@@ -320,9 +346,6 @@ std::string num(double x, int digits = 3) { return std::isfinite(x) ? fmt::forma
 std::string within_cuts_report(const Spec& spec, const std::map<std::string, ConditionResult>& results,
                                const Comparison& vs_experiment, const Comparison& vs_dem,
                                std::vector<std::string>& failures, Json& summary) {
-  const auto mean_of = [](const Comparison& comparison, const std::string& key, const std::string& surface, double depth) {
-    return group_of(comparison, key, surface, depth).measured_stats.mean;
-  };
   const int n = spec.replicates;
   std::string md = fmt::format(
       "kerf-dem, scene `{}` ({} packing{} per condition, packing seed{} 1{}); steady-state cuts: each cut's means are "
@@ -344,15 +367,7 @@ std::string within_cuts_report(const Spec& spec, const std::map<std::string, Con
   const double max_rel = spec.max_relative_sem_percent;
   for (const auto& c : spec.conditions) {
     const ConditionResult& r = results.at(c.name);
-    std::string paper = "—", experiment = "—", per_mm = "—";
-    if (c.groove_shape != "trapezoidal") {
-      paper = fmt::format("{:.2f} / {:.2f}", mean_of(vs_dem, "main_force", c.surface, c.depth_of_cut_mm),
-                          mean_of(vs_dem, "thrust_force", c.surface, c.depth_of_cut_mm));
-      experiment = fmt::format("{:.2f} / {:.2f}", mean_of(vs_experiment, "main_force", c.surface, c.depth_of_cut_mm),
-                               mean_of(vs_experiment, "thrust_force", c.surface, c.depth_of_cut_mm));
-      per_mm = fmt::format("{:.3f} / {:.3f}", 1e-3 * mean_of(vs_experiment, "main_force_per_width", c.surface, c.depth_of_cut_mm),
-                           1e-3 * mean_of(vs_experiment, "thrust_force_per_width", c.surface, c.depth_of_cut_mm));
-    }
+    const auto [paper, experiment, per_mm] = reference_cells(c, vs_experiment, vs_dem);
     const Estimate main = r.main(), thrust = r.thrust();
     const double main_rel = 100 * main.standard_error / std::abs(main.value);
     const double thrust_rel = 100 * thrust.standard_error / std::abs(thrust.value);
@@ -471,8 +486,8 @@ std::string within_cuts_report(const Spec& spec, const std::map<std::string, Con
     };
     const auto reference_ratio = [&](const Comparison& comparison, const std::string& force, const std::string& num_surface,
                                      double num_depth, const std::string& den_surface, double den_depth) {
-      return mean_of(comparison, force + "_force", num_surface, num_depth) /
-             mean_of(comparison, force + "_force", den_surface, den_depth);
+      return reference_mean(comparison, force + "_force", num_surface, num_depth) /
+             reference_mean(comparison, force + "_force", den_surface, den_depth);
     };
     if (const auto *a = find_condition(results, "none", 0.1), *b = find_condition(results, "none", 0.2); a && b)
       for (const auto& force : forces)
@@ -669,9 +684,6 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
   // paper's DEM (vs_paper_dem), prediction = kerf-dem in the latter.
   const Comparison& vs_experiment = comparisons.at("vs_experiment");
   const Comparison& vs_dem = comparisons.at("vs_paper_dem");
-  const auto paper_dem_mean = [&](const std::string& key, const std::string& surface, double depth_mm) {
-    return group_of(vs_dem, key, surface, depth_mm).measured_stats.mean;
-  };
 
   // 4. Acceptance and the expected physics.
   // within_cuts: the conditions' resolution and the trends (within_cuts_report); otherwise the bands.
@@ -695,17 +707,7 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
         "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     for (const auto& c : spec.conditions) {
       const ConditionResult& r = results.at(c.name);
-      std::string paper = "—", experiment = "—", per_mm = "—";
-      if (c.groove_shape != "trapezoidal") {
-        paper = fmt::format("{:.2f} / {:.2f}", paper_dem_mean("main_force", c.surface, c.depth_of_cut_mm),
-                            paper_dem_mean("thrust_force", c.surface, c.depth_of_cut_mm));
-        const auto measured = [&](const std::string& key) {
-          return group_of(vs_experiment, key, c.surface, c.depth_of_cut_mm).measured_stats.mean;
-        };
-        experiment = fmt::format("{:.2f} / {:.2f}", measured("main_force"), measured("thrust_force"));
-        // The per-unit-width view is in N/m: per 1 mm of width is 1e-3 of it.
-        per_mm = fmt::format("{:.3f} / {:.3f}", 1e-3 * measured("main_force_per_width"), 1e-3 * measured("thrust_force_per_width"));
-      }
+      const auto [paper, experiment, per_mm] = reference_cells(c, vs_experiment, vs_dem);
       md += fmt::format(
           "| {} | {:.2f} ± {:.2f} | {:.2f} ± {:.2f} | {} | {} | {} | {:.0f} + {:.0f} ({:.0f} / {:.0f}) | {:.0f} | "
           "{:.0f}, {:.0f} | "
@@ -786,8 +788,8 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
           "- Regular, 0.1 -> 0.2 mm: main force {} ± {:.0f} %, thrust {} ± {:.0f} % (standard errors; the "
           "paper's DEM: {}, {}).\n",
           pct(main.value - 1), 100 * main.standard_error, pct(thrust.value - 1), 100 * thrust.standard_error,
-          pct(paper_dem_mean("main_force", "regular", 0.2) / paper_dem_mean("main_force", "regular", 0.1) - 1),
-          pct(paper_dem_mean("thrust_force", "regular", 0.2) / paper_dem_mean("thrust_force", "regular", 0.1) - 1));
+          pct(reference_mean(vs_dem, "main_force", "regular", 0.2) / reference_mean(vs_dem, "main_force", "regular", 0.1) - 1),
+          pct(reference_mean(vs_dem, "thrust_force", "regular", 0.2) / reference_mean(vs_dem, "thrust_force", "regular", 0.1) - 1));
       physics["regular_main_force_change_0.1_to_0.2"] = b->main_n / a->main_n - 1;
     }
     for (double depth : {0.1, 0.2}) {
