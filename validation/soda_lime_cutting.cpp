@@ -564,6 +564,137 @@ std::string within_cuts_report(const Spec& spec, const std::map<std::string, Con
   return md;
 }
 
+/// The seed case's statistics (validation/soda_lime_cutting/README.md): the condition table with the spread over
+/// the packings, the bands (each check with its standard error and whether its verdict is resolved; a failure
+/// outside its band) and the expected physics (reported, not bands). Returns the report's body (after the title)
+/// and fills `summary` and `failures`.
+std::string bands_report(const Spec& spec, const std::map<std::string, ConditionResult>& results,
+                         const Comparison& vs_experiment, const Comparison& vs_dem, std::vector<std::string>& failures,
+                         Json& summary) {
+  std::string md = fmt::format(
+      "kerf-dem, scene `{}` ({} replicates per condition, packing seeds 1..{}); forces per **1 mm** width (the DEM's "
+      "out-of-plane thickness) unless stated. Experiments: seed 000 Table 6, **25.4 mm** wide; the paper's DEM: "
+      "Table 4, 1 mm.\n\n",
+      spec.scene.filename().string(), spec.replicates, spec.replicates);
+  if (!spec.note.empty()) md += spec.note + "\n\n";
+  md +=
+      "| condition | kerf-dem main (N) | kerf-dem thrust (N) | paper DEM main / thrust (N, 1 mm) | experiment main / "
+      "thrust "
+      "(N, 25.4 mm) | experiment per 1 mm (N) | cracks tension + shear (chip / subsurface) | subsurface depth (um) | "
+      "under the steady cut: subsurface cracks, depth (um) | cut time, sum over replicates (s) |\n"
+      "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (const auto& c : spec.conditions) {
+    const ConditionResult& r = results.at(c.name);
+    const auto [paper, experiment, per_mm] = reference_cells(c, vs_experiment, vs_dem);
+    md += fmt::format(
+        "| {} | {:.2f} ± {:.2f} | {:.2f} ± {:.2f} | {} | {} | {} | {:.0f} + {:.0f} ({:.0f} / {:.0f}) | {:.0f} | "
+        "{:.0f}, {:.0f} | "
+        "{:.0f} |\n",
+        c.name, r.main_n, r.main_std_n, r.thrust_n, r.thrust_std_n, paper, experiment, per_mm, r.cracks_tensile,
+        r.cracks_shear, r.cracks_chip, r.cracks_subsurface, r.subsurface_depth_um, r.cracks_subsurface_steady,
+        r.subsurface_steady_depth_um, r.wall_time_s);
+  }
+  md +=
+      "\n± is the standard deviation over the replicates. Subsurface depth: the deepest crack below the cut line "
+      "anywhere "
+      "in the workpiece (often a breakout of its free corner at the entry); under the steady cut: the cracks below the "
+      "surface machined during the steady part of the travel, the damage the steady cut leaves in the part.\n\n"
+      "## Acceptance\n\n";
+  md += fmt::format(
+      "Each value with its standard error (kerf-dem's over its {} packings and, against the paper's DEM, "
+      "the paper's over its three); a verdict less than two standard errors from the band's edge is not "
+      "resolved by these packings (`run_validation CASE OUT --replicates N` runs more).\n\n",
+      spec.replicates);
+  Json checks = Json::array();
+  // Each check carries the standard error of its value (from kerf-dem's packings and, against the paper's DEM,
+  // from the paper's three), and says whether the verdict is resolved: the value lies two standard errors or
+  // more from the band's edge. A verdict that is not resolved could turn with other packings.
+  const auto check = [&](const std::string& what, double value, double standard_error, double distance_to_edge,
+                         bool pass, const std::string& band, bool fitted = false) {
+    const bool resolved = std::abs(distance_to_edge) >= 2 * standard_error;
+    const std::string spread = fmt::format("{:.4g} ± {:.2g} (standard error; {})", value, standard_error,
+                                           resolved ? "resolved: 2 or more of them from the band's edge"
+                                                    : "not resolved: within 2 of them of the band's edge");
+    Json row{
+        {"check", what}, {"value", value}, {"standard_error", standard_error}, {"band", band}, {"resolved", resolved}};
+    if (fitted) {
+      row["fitted"] = true;
+      checks.push_back(row);
+      md += fmt::format(
+          "- FITTED **{}**: {} (band: {}; the material was fitted to this force: it shows the fit, "
+          "not the model, and counts neither way)\n",
+          what, spread, band);
+      return;
+    }
+    row["passed"] = pass;
+    checks.push_back(row);
+    md += fmt::format("- {} **{}**: {} (band: {})\n", pass ? "PASS" : "FAIL", what, spread, band);
+    if (!pass) failures.push_back(fmt::format("{} = {:.4g} (band: {})", what, value, band));
+  };
+  const auto find = [&](const std::string& shape, double depth) { return find_condition(results, shape, depth); };
+  for (double depth : {0.1, 0.2}) {
+    const ConditionResult* regular = find("none", depth);
+    const ConditionResult* grooved = find("rectangular", depth);
+    if (regular) {
+      for (const std::string label : {"main", "thrust"}) {
+        const GroupComparison& g = group_of(vs_dem, label + "_force", "regular", depth);
+        const double paper = g.measured_stats.mean, error = g.error_percent / 100, band = spec.regular_max_error_percent / 100;
+        const Estimate paper_mean{
+            paper, g.measured_stats.standard_deviation / std::sqrt(static_cast<double>(g.measured_stats.n))};
+        // error = kerf / paper - 1: its standard error is the ratio's.
+        const double error_se =
+            ratio_of(label == "main" ? regular->main() : regular->thrust(), paper_mean).standard_error;
+        check(fmt::format("regular {} mm: {} force vs the paper's DEM mean ({:.2f} N), relative error", depth, label,
+                          paper),
+              error, error_se, std::abs(error) - band, std::abs(error) <= band,
+              fmt::format("|error| <= {:g} %", spec.regular_max_error_percent),
+              label == spec.fitted_force && std::abs(depth - spec.fitted_depth_of_cut_mm) < 1e-9);
+      }
+    }
+    if (regular && grooved) {
+      const Estimate ratio = ratio_of(grooved->main(), regular->main());
+      check(fmt::format("grooved / regular main force at {} mm", depth), ratio.value, ratio.standard_error,
+            ratio.value - spec.grooved_ratio_max, ratio.value < spec.grooved_ratio_max,
+            fmt::format("< {:.3f}", spec.grooved_ratio_max));
+    }
+  }
+  md += "\n## Expected physics and beyond the paper (reported, not bands)\n\n";
+  Json physics = Json::object();
+  if (const auto *a = find("none", 0.1), *b = find("none", 0.2); a && b) {
+    const Estimate main = ratio_of(b->main(), a->main()), thrust = ratio_of(b->thrust(), a->thrust());
+    md += fmt::format(
+        "- Regular, 0.1 -> 0.2 mm: main force {} ± {:.0f} %, thrust {} ± {:.0f} % (standard errors; the "
+        "paper's DEM: {}, {}).\n",
+        pct(main.value - 1), 100 * main.standard_error, pct(thrust.value - 1), 100 * thrust.standard_error,
+        pct(reference_mean(vs_dem, "main_force", "regular", 0.2) / reference_mean(vs_dem, "main_force", "regular", 0.1) - 1),
+        pct(reference_mean(vs_dem, "thrust_force", "regular", 0.2) / reference_mean(vs_dem, "thrust_force", "regular", 0.1) - 1));
+    physics["regular_main_force_change_0.1_to_0.2"] = b->main_n / a->main_n - 1;
+  }
+  for (double depth : {0.1, 0.2}) {
+    const ConditionResult *regular = find("none", depth), *rect = find("rectangular", depth), *trap = find("trapezoidal", depth);
+    if (regular && rect)
+      md += fmt::format(
+          "- {} mm, grooved vs regular: cracks {:.0f} vs {:.0f} (subsurface {:.0f} vs {:.0f}), subsurface depth "
+          "{:.0f} vs {:.0f} um; under the steady cut {:.0f} vs {:.0f} subsurface cracks, {:.0f} vs {:.0f} um "
+          "deep.\n",
+          depth, rect->cracks_tensile + rect->cracks_shear, regular->cracks_tensile + regular->cracks_shear,
+          rect->cracks_subsurface, regular->cracks_subsurface, rect->subsurface_depth_um, regular->subsurface_depth_um,
+          rect->cracks_subsurface_steady, regular->cracks_subsurface_steady, rect->subsurface_steady_depth_um,
+          regular->subsurface_steady_depth_um);
+    if (regular && rect && regular->subsurface_steady_depth_um > 0)
+      physics[fmt::format("grooved_vs_regular_steady_subsurface_depth_change_{}", depth)] =
+          rect->subsurface_steady_depth_um / regular->subsurface_steady_depth_um - 1;
+    if (rect && trap) {
+      md += fmt::format("- {} mm, trapezoidal vs rectangular grooves (the paper's suspected cause of its thrust error): thrust "
+                        "{:.2f} vs {:.2f} N ({}), main {:.2f} vs {:.2f} N.\n",
+                        depth, trap->thrust_n, rect->thrust_n, pct(trap->thrust_n / rect->thrust_n - 1), trap->main_n, rect->main_n);
+      physics[fmt::format("trapezoidal_vs_rectangular_thrust_change_{}", depth)] = trap->thrust_n / rect->thrust_n - 1;
+    }
+  }
+  summary = Json{{"checks", checks}, {"physics", physics}};
+  return md;
+}
+
 }  // namespace
 
 CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, const std::string& case_name,
@@ -694,126 +825,7 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
     md += within_cuts_report(spec, results, vs_experiment, vs_dem, v.failures, summary_doc);
   } else {
     md = "# Validation: soda-lime glass, orthogonal cutting (seed 000)\n\n";
-    md += fmt::format("kerf-dem, scene `{}` ({} replicates per condition, packing seeds 1..{}); forces per **1 mm** width "
-                      "(the DEM's out-of-plane thickness) unless stated. Experiments: seed 000 Table 6, **25.4 mm** wide; "
-                      "the paper's DEM: Table 4, 1 mm.\n\n",
-                      spec.scene.filename().string(), spec.replicates, spec.replicates);
-    if (!spec.note.empty()) md += spec.note + "\n\n";
-    md +=
-        "| condition | kerf-dem main (N) | kerf-dem thrust (N) | paper DEM main / thrust (N, 1 mm) | experiment main / "
-        "thrust "
-        "(N, 25.4 mm) | experiment per 1 mm (N) | cracks tension + shear (chip / subsurface) | subsurface depth (um) | "
-        "under the steady cut: subsurface cracks, depth (um) | cut time, sum over replicates (s) |\n"
-        "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
-    for (const auto& c : spec.conditions) {
-      const ConditionResult& r = results.at(c.name);
-      const auto [paper, experiment, per_mm] = reference_cells(c, vs_experiment, vs_dem);
-      md += fmt::format(
-          "| {} | {:.2f} ± {:.2f} | {:.2f} ± {:.2f} | {} | {} | {} | {:.0f} + {:.0f} ({:.0f} / {:.0f}) | {:.0f} | "
-          "{:.0f}, {:.0f} | "
-          "{:.0f} |\n",
-          c.name, r.main_n, r.main_std_n, r.thrust_n, r.thrust_std_n, paper, experiment, per_mm, r.cracks_tensile,
-          r.cracks_shear, r.cracks_chip, r.cracks_subsurface, r.subsurface_depth_um, r.cracks_subsurface_steady,
-          r.subsurface_steady_depth_um, r.wall_time_s);
-    }
-    md +=
-        "\n± is the standard deviation over the replicates. Subsurface depth: the deepest crack below the cut line "
-        "anywhere "
-        "in the workpiece (often a breakout of its free corner at the entry); under the steady cut: the cracks below the "
-        "surface machined during the steady part of the travel, the damage the steady cut leaves in the part.\n\n"
-        "## Acceptance\n\n";
-    md += fmt::format(
-        "Each value with its standard error (kerf-dem's over its {} packings and, against the paper's DEM, "
-        "the paper's over its three); a verdict less than two standard errors from the band's edge is not "
-        "resolved by these packings (`run_validation CASE OUT --replicates N` runs more).\n\n",
-        spec.replicates);
-    Json checks = Json::array();
-    // Each check carries the standard error of its value (from kerf-dem's packings and, against the paper's DEM,
-    // from the paper's three), and says whether the verdict is resolved: the value lies two standard errors or
-    // more from the band's edge. A verdict that is not resolved could turn with other packings.
-    const auto check = [&](const std::string& what, double value, double standard_error, double distance_to_edge,
-                           bool pass, const std::string& band, bool fitted = false) {
-      const bool resolved = std::abs(distance_to_edge) >= 2 * standard_error;
-      const std::string spread = fmt::format("{:.4g} ± {:.2g} (standard error; {})", value, standard_error,
-                                             resolved ? "resolved: 2 or more of them from the band's edge"
-                                                      : "not resolved: within 2 of them of the band's edge");
-      Json row{
-          {"check", what}, {"value", value}, {"standard_error", standard_error}, {"band", band}, {"resolved", resolved}};
-      if (fitted) {
-        row["fitted"] = true;
-        checks.push_back(row);
-        md += fmt::format(
-            "- FITTED **{}**: {} (band: {}; the material was fitted to this force: it shows the fit, "
-            "not the model, and counts neither way)\n",
-            what, spread, band);
-        return;
-      }
-      row["passed"] = pass;
-      checks.push_back(row);
-      md += fmt::format("- {} **{}**: {} (band: {})\n", pass ? "PASS" : "FAIL", what, spread, band);
-      if (!pass) v.failures.push_back(fmt::format("{} = {:.4g} (band: {})", what, value, band));
-    };
-    const auto find = [&](const std::string& shape, double depth) { return find_condition(results, shape, depth); };
-    for (double depth : {0.1, 0.2}) {
-      const ConditionResult* regular = find("none", depth);
-      const ConditionResult* grooved = find("rectangular", depth);
-      if (regular) {
-        for (const std::string label : {"main", "thrust"}) {
-          const GroupComparison& g = group_of(vs_dem, label + "_force", "regular", depth);
-          const double paper = g.measured_stats.mean, error = g.error_percent / 100, band = spec.regular_max_error_percent / 100;
-          const Estimate paper_mean{
-              paper, g.measured_stats.standard_deviation / std::sqrt(static_cast<double>(g.measured_stats.n))};
-          // error = kerf / paper - 1: its standard error is the ratio's.
-          const double error_se =
-              ratio_of(label == "main" ? regular->main() : regular->thrust(), paper_mean).standard_error;
-          check(fmt::format("regular {} mm: {} force vs the paper's DEM mean ({:.2f} N), relative error", depth, label,
-                            paper),
-                error, error_se, std::abs(error) - band, std::abs(error) <= band,
-                fmt::format("|error| <= {:g} %", spec.regular_max_error_percent),
-                label == spec.fitted_force && std::abs(depth - spec.fitted_depth_of_cut_mm) < 1e-9);
-        }
-      }
-      if (regular && grooved) {
-        const Estimate ratio = ratio_of(grooved->main(), regular->main());
-        check(fmt::format("grooved / regular main force at {} mm", depth), ratio.value, ratio.standard_error,
-              ratio.value - spec.grooved_ratio_max, ratio.value < spec.grooved_ratio_max,
-              fmt::format("< {:.3f}", spec.grooved_ratio_max));
-      }
-    }
-    md += "\n## Expected physics and beyond the paper (reported, not bands)\n\n";
-    Json physics = Json::object();
-    if (const auto *a = find("none", 0.1), *b = find("none", 0.2); a && b) {
-      const Estimate main = ratio_of(b->main(), a->main()), thrust = ratio_of(b->thrust(), a->thrust());
-      md += fmt::format(
-          "- Regular, 0.1 -> 0.2 mm: main force {} ± {:.0f} %, thrust {} ± {:.0f} % (standard errors; the "
-          "paper's DEM: {}, {}).\n",
-          pct(main.value - 1), 100 * main.standard_error, pct(thrust.value - 1), 100 * thrust.standard_error,
-          pct(reference_mean(vs_dem, "main_force", "regular", 0.2) / reference_mean(vs_dem, "main_force", "regular", 0.1) - 1),
-          pct(reference_mean(vs_dem, "thrust_force", "regular", 0.2) / reference_mean(vs_dem, "thrust_force", "regular", 0.1) - 1));
-      physics["regular_main_force_change_0.1_to_0.2"] = b->main_n / a->main_n - 1;
-    }
-    for (double depth : {0.1, 0.2}) {
-      const ConditionResult *regular = find("none", depth), *rect = find("rectangular", depth), *trap = find("trapezoidal", depth);
-      if (regular && rect)
-        md += fmt::format(
-            "- {} mm, grooved vs regular: cracks {:.0f} vs {:.0f} (subsurface {:.0f} vs {:.0f}), subsurface depth "
-            "{:.0f} vs {:.0f} um; under the steady cut {:.0f} vs {:.0f} subsurface cracks, {:.0f} vs {:.0f} um "
-            "deep.\n",
-            depth, rect->cracks_tensile + rect->cracks_shear, regular->cracks_tensile + regular->cracks_shear,
-            rect->cracks_subsurface, regular->cracks_subsurface, rect->subsurface_depth_um, regular->subsurface_depth_um,
-            rect->cracks_subsurface_steady, regular->cracks_subsurface_steady, rect->subsurface_steady_depth_um,
-            regular->subsurface_steady_depth_um);
-      if (regular && rect && regular->subsurface_steady_depth_um > 0)
-        physics[fmt::format("grooved_vs_regular_steady_subsurface_depth_change_{}", depth)] =
-            rect->subsurface_steady_depth_um / regular->subsurface_steady_depth_um - 1;
-      if (rect && trap) {
-        md += fmt::format("- {} mm, trapezoidal vs rectangular grooves (the paper's suspected cause of its thrust error): thrust "
-                          "{:.2f} vs {:.2f} N ({}), main {:.2f} vs {:.2f} N.\n",
-                          depth, trap->thrust_n, rect->thrust_n, pct(trap->thrust_n / rect->thrust_n - 1), trap->main_n, rect->main_n);
-        physics[fmt::format("trapezoidal_vs_rectangular_thrust_change_{}", depth)] = trap->thrust_n / rect->thrust_n - 1;
-      }
-    }
-    summary_doc = Json{{"checks", checks}, {"physics", physics}};
+    md += bands_report(spec, results, vs_experiment, vs_dem, v.failures, summary_doc);
   }
   md += "\nReports through the report layer: [vs_experiment/report.md](vs_experiment/report.md) (the paper's direct "
         "comparison and the per-unit-width one), [vs_paper_dem/report.md](vs_paper_dem/report.md). Per-replicate "
