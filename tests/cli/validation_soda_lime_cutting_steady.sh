@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # run_validation soda_lime_cutting_steady on a miniature copy of the case (a 2 mm x 0.3 mm steady-state cut with
 # a small active window, the four paper conditions, two packings; validation.json is the real one's, its
-# conditions and threshold changed): "statistics": "within_cuts" combines the cuts' own standard errors as
+# scene, conditions and threshold changed): "statistics": "within_cuts" combines the cuts' own standard errors as
 # sqrt(sum sem_k^2) / n, reports the between-packing one beside it, checks the trends' 95 % intervals against
 # the experiments' trends (from the CSV), exits 0 when every mean is resolved and 1, naming the condition, when
 # one is not; --replicates 1 is allowed here; bad acceptance keys exit 2.
@@ -32,6 +32,8 @@ spec_from_real() {
 import json, sys
 spec = json.load(open(sys.argv[1]))
 assert spec["statistics"] == "within_cuts" and spec["replicates"] >= 1, "the real case's statistics"
+assert spec["scene"] == "../../data/scenes/dem_cut_steady.json", "the real case cuts the bundled steady scene"
+spec["scene"] = "scene.json"  # the miniature scene, not the bundled one
 spec["conditions"] = [c for c in spec["conditions"] if c["groove_shape"] != "trapezoidal"]
 spec["replicates"] = 2
 spec["acceptance"]["max_relative_sem_percent"] = 1000
