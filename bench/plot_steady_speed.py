@@ -7,7 +7,10 @@ tables: per speed the means, both errors, how intermittent the cuts are and thei
 F = F0 + k v with the slope's significance; and the main force per mm of travel, averaged over all cuts, to show
 where the entry transient ends.
 
-    python3 bench/plot_steady_speed.py STUDY_DIR OUT.png
+    python3 bench/plot_steady_speed.py OUT.png STUDY_DIR [STUDY_DIR...]
+
+Each STUDY_DIR is a study's output (its items/ directory), e.g. the study above and a `kerf-dem run ... --replicates N`
+of the bundled scene on other seeds (its DIR/replicates): the items are pooled by speed.
 """
 import json
 import math
@@ -60,8 +63,8 @@ def weighted_line(speeds, means, sems):
 
 
 def main():
-    study_dir, out = pathlib.Path(sys.argv[1]), sys.argv[2]
-    rows = items(study_dir)
+    out = sys.argv[1]
+    rows = [r for study_dir in sys.argv[2:] for r in items(pathlib.Path(study_dir))]
     speeds = sorted({r["speed"] for r in rows})
     by_speed = {v: [r for r in rows if r["speed"] == v] for v in speeds}
     stats = {(v, key): condition(by_speed[v], key) for v in speeds for key in ("main", "thrust")}
