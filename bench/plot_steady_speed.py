@@ -4,8 +4,9 @@ the main and thrust forces per mm with two error bars (the cuts' own batch-means
 and the spread between packings, std / sqrt(n)), beside the chip's momentum flux rho v^2 h (the force that only
 accelerating the uncut layer to the tool speed would take) added to the slowest speed's mean. Prints Markdown
 tables: per speed the means, both errors, how intermittent the cuts are and their cost; the weighted fit
-F = F0 + k v with the slope's significance; and the main force per mm of travel, averaged over all cuts, to show
-where the entry transient ends.
+F = F0 + k v with the slope's significance; whether the cuts' own errors agree with the spread between packings
+(a chi-square test); how regular the impacts are; and the main force per mm of travel, averaged over all cuts, to
+show where the entry transient ends.
 
     python3 bench/plot_steady_speed.py OUT.png STUDY_DIR [STUDY_DIR...]
 
@@ -41,8 +42,40 @@ def items(study_dir):
         for key in ("main", "thrust"):
             r[key], r[key + "_sem"] = results[f"{key}_force_N"], results[f"{key}_force_sem_N"]
         r.update(intermittency(item_dir, results["steady_from_travel_mm"]))
+        r.update(impact_regularity(item_dir, results["steady_from_travel_mm"]))
         rows.append(r)
     return rows
+
+
+def impact_regularity(item_dir, steady_from_mm, threshold_n=5.0, merge_mm=0.02):
+    """The tool's impacts over the steady part: a main force rising above threshold_n starts one, and starts closer
+    than merge_mm to the previous one belong to it. Returns impacts per mm, the coefficient of variation of their
+    spacing (1 for impacts at random, a Poisson process) and the Fano factor of their count per mm of travel
+    (variance / mean; 1 for Poisson, below 1 for impacts more regular than chance)."""
+    forces = np.genfromtxt(item_dir / "forces.csv", delimiter=",", names=True)
+    steady = forces["tool_travel_mm"] >= steady_from_mm
+    travel, touching = forces["tool_travel_mm"][steady], forces["main_force_N"][steady] > threshold_n
+    starts = travel[1:][touching[1:] & ~touching[:-1]]
+    impacts = [starts[0]]
+    for x in starts[1:]:
+        if x - impacts[-1] > merge_mm:
+            impacts.append(x)
+    spacing = np.diff(impacts)
+    counts, _ = np.histogram(impacts, bins=np.arange(travel[0], travel[-1], 1.0))
+    return {"impacts_per_mm": len(impacts) / (travel[-1] - travel[0]), "spacing_cv": spacing.std() / spacing.mean(),
+            "fano": counts.var() / counts.mean()}
+
+
+def chi_square_lower_tail(x, dof):
+    """P(chi^2_dof <= x): the regularized lower incomplete gamma P(dof / 2, x / 2), by its series."""
+    a, z = dof / 2, x / 2
+    term = total = 1 / a
+    for k in range(1, 1000):
+        term *= z / (a + k)
+        total += term
+        if term < 1e-15 * total:
+            break
+    return math.exp(a * math.log(z) - z - math.lgamma(a)) * total
 
 
 def condition(rows, key):
@@ -119,6 +152,18 @@ def main():
         f0, k, f0_sem, k_sem = fits[key]
         print(f"\n{key}: weighted fit F = F0 + k v (errors: the larger of the two per speed): F0 {f0:.3f} +- {f0_sem:.3f} N, "
               f"k {1e3 * k:.1f} +- {1e3 * k_sem:.1f} mN per m/s ({k / k_sem:+.1f} standard errors)")
+    print("\nThe cuts' own errors against the spread between packings: r = (std / sqrt(n)) / (sqrt(sum sem^2) / n) per speed; "
+          "if the cuts' own were right, sum (n - 1) r^2 follows chi-square on sum (n - 1) degrees of freedom:")
+    for key in ("main", "thrust"):
+        ratios = [(len(by_speed[v]) - 1, stats[(v, key)][2] / stats[(v, key)][1]) for v in speeds if len(by_speed[v]) > 1]
+        x, dof = sum(d * r * r for d, r in ratios), sum(d for d, _ in ratios)
+        print(f"{key}: r {', '.join(f'{r:.2f}' for _, r in ratios)}; chi-square {x:.1f} on {dof}: "
+              f"P(lower) {chi_square_lower_tail(x, dof):.1e}, P(upper) {1 - chi_square_lower_tail(x, dof):.2f}")
+    print("\nImpacts (main force above 5 N; starts within 20 um merged), mean over the packings:")
+    for v in speeds:
+        rs = by_speed[v]
+        print(f"{v:g} m/s: {np.mean([r['impacts_per_mm'] for r in rs]):.1f} per mm, spacing CV "
+              f"{np.mean([r['spacing_cv'] for r in rs]):.2f}, Fano factor per mm {np.mean([r['fano'] for r in rs]):.2f}")
     print("\nMain force per mm of travel, mean over every cut of every speed (N):")
     windows = np.array([r["windows"] for r in rows])
     spread = windows.std(axis=0, ddof=1) / math.sqrt(len(rows))

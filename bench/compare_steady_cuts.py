@@ -1,0 +1,53 @@
+#!/usr/bin/env python3
+"""Two sets of steady cuts compared packing by packing (e.g. data/studies/steady_window_undamped.json against the
+same seeds of data/studies/steady_speed_undamped.json): the items of each study directory are matched by tool
+speed and packing seed, and for the main and thrust forces the script prints both means with the cuts' own
+errors (sqrt(sum sem^2) / n), the difference with that error and with the spread of the paired differences
+(std / sqrt(n)), and the mean active-window disks, steady damage depth (with the window's floor), steady
+subsurface cracks and wall time of each set.
+
+    python3 bench/compare_steady_cuts.py BASE_STUDY_DIR OTHER_STUDY_DIR
+"""
+import json
+import math
+import pathlib
+import statistics
+import sys
+
+
+def items(study_dir):
+    out = {}
+    for item_dir in (pathlib.Path(study_dir) / "items").glob("condition_*_seed_*"):
+        s = json.loads((item_dir / "summary.json").read_text())
+        out[(s["cut"]["cut"]["speed_m_per_s"], s["study_item"]["seed"])] = s
+    return out
+
+
+def main():
+    base, other = items(sys.argv[1]), items(sys.argv[2])
+    pairs = sorted(set(base) & set(other))
+    if not pairs:
+        sys.exit("no packing (speed, seed) in both studies")
+    print(f"{len(pairs)} packings in both: " + ", ".join(f"{v:g} m/s seed {k}" for v, k in pairs))
+    n = len(pairs)
+    for force in ("main", "thrust"):
+        b = [base[p]["results"][f"{force}_force_N"] for p in pairs]
+        o = [other[p]["results"][f"{force}_force_N"] for p in pairs]
+        b_se = math.sqrt(sum(base[p]["results"][f"{force}_force_sem_N"] ** 2 for p in pairs)) / n
+        o_se = math.sqrt(sum(other[p]["results"][f"{force}_force_sem_N"] ** 2 for p in pairs)) / n
+        diff = statistics.mean(o) - statistics.mean(b)
+        paired = statistics.stdev(x - y for x, y in zip(o, b)) / math.sqrt(n) if n > 1 else float("nan")
+        print(f"{force}: base {statistics.mean(b):.3f} +- {b_se:.3f} N, other {statistics.mean(o):.3f} +- {o_se:.3f} N; "
+              f"other - base {diff:+.3f} N (+- {math.hypot(b_se, o_se):.3f} by the cuts' own errors, +- {paired:.3f} by "
+              f"the paired spread), {100 * diff / statistics.mean(b):+.0f} % +- {100 * math.hypot(b_se, o_se) / statistics.mean(b):.0f} %")
+    for name, study in (("base", base), ("other", other)):
+        mean = lambda f: statistics.mean(f(study[p]) for p in pairs)  # noqa: E731
+        print(f"{name}: {mean(lambda s: s['active_window']['mean_window_particles']):.0f} disks integrated, steady damage "
+              f"depth {mean(lambda s: s['results']['subsurface_damage_depth_steady_um']):.0f} um (window floor "
+              f"{mean(lambda s: s['active_window']['damage_depth_limit_um']):.0f} um), "
+              f"{mean(lambda s: s['results']['cracks_subsurface_steady']):.0f} steady subsurface cracks, "
+              f"{mean(lambda s: s['study_item']['wall_time_s']):.0f} s per cut")
+
+
+if __name__ == "__main__":
+    main()
