@@ -7,8 +7,8 @@
 #                                                 # (18 kerf-dem cuts, 19-35 min on 2 cores; rerunning
 #                                                 # reuses the replicates already finished),
 #                                                 # soda_lime_cutting_cut_fitted (12 cuts, 13-34 min) or
-#                                                 # soda_lime_cutting_steady (six conditions x 18 packings,
-#                                                 # 108 11-mm cuts at 2 m/s, about 18 CPU-hours)
+#                                                 # soda_lime_cutting_steady (six conditions x 8-20 packings,
+#                                                 # about 60 11-mm cuts at 2 m/s, about 10 CPU-hours)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 case="${1:-all}"

@@ -2,8 +2,8 @@
 // each; --replicates: packings per condition of the cutting cases instead of validation.json's).
 // Cases: k9_trepanning (seconds), soda_lime_cutting (kerf-dem runs: 18 cuts, about 35 min on 2 cores),
 // soda_lime_cutting_cut_fitted (the glass fitted to one cut by kerf-dem calibrate_cut: 12 cuts, about 25 min),
-// soda_lime_cutting_steady (six conditions of 11 mm steady-state cuts, 18 packings each, about 18 CPU-hours;
-// its acceptance: every mean resolved).
+// soda_lime_cutting_steady (six conditions of 11 mm steady-state cuts, 8-20 packings each as each main force
+// needs for 5 %, about 10 CPU-hours; its acceptance: every mean resolved).
 // Exit status 0 when the acceptance bands hold, 1 when they do not, 2 for input errors.
 #include <fmt/format.h>
 

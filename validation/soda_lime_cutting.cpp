@@ -8,6 +8,7 @@
 #include "soda_lime_cutting.hpp"
 
 #include <fmt/format.h>
+#include <gsl/gsl_cdf.h>
 
 #include <algorithm>
 #include <cmath>
@@ -51,10 +52,23 @@ constexpr double kZ95 = 1.96;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
+/// validation.json's "replicates" as an object (statistics "within_cuts" only): as many packings per condition as
+/// its mean needs, the study's adaptive policy (kerf/dem/study.hpp): the smallest n in [min_count, max_count] at
+/// which the between-packing relative standard error of every named force is at most the acceptance's
+/// max_relative_sem_percent.
+struct AdaptivePackings {
+  int min_count = 8, max_count = 30;
+  std::vector<std::string> results{"main_force_N", "thrust_force_N"};
+};
+
 struct Spec {
   fs::path scene, experiments;
   std::string note;  ///< printed under the report's title (e.g. what a fitted material was fitted to)
-  int replicates = 3;
+  int replicates = 3;  ///< fixed packings per condition (adaptive: max_count)
+  std::optional<AdaptivePackings> adaptive;
+  /// within_cuts: from this many packings of a condition on, its standard error is the spread between its
+  /// packings (sample std / sqrt(n), Student-t intervals) instead of the cuts' own; 0: never.
+  int between_packings_from_replicates = 0;
   Statistics statistics = Statistics::replicates;
   int min_replicates() const { return statistics == Statistics::within_cuts ? kMinReplicatesWithinCuts : kMinReplicates; }
   std::vector<Condition> conditions;
@@ -72,7 +86,8 @@ struct Spec {
 /// The acceptance keys of each statistics mode: a key of the other mode is an error that says so.
 const std::vector<std::string> kBandKeys{"regular_force_max_abs_error_vs_paper_dem_percent",
                                          "grooved_to_regular_main_force_ratio_max", "fitted"};
-const std::vector<std::string> kWithinCutsKeys{"max_relative_sem_percent", "trends"};
+const std::vector<std::string> kWithinCutsKeys{"max_relative_sem_percent", "trends",
+                                              "between_packings_from_replicates"};
 
 Spec read_spec(const fs::path& case_dir) {
   const Json doc = read_json_file(case_dir / "validation.json");
@@ -90,7 +105,34 @@ Spec read_spec(const fs::path& case_dir) {
                      fmt::format("an integer in [{}, {}] (one packing per condition needs \"statistics\": "
                                  "\"within_cuts\", the cuts' own standard errors)",
                                  kMinReplicates, kMaxReplicates));
-  s.replicates = r.get_int_or("replicates", 3, s.min_replicates(), kMaxReplicates);
+  if (const Json* rep = r.find("replicates"); rep && rep->is_object()) {
+    ObjectReader a(*rep, "validation.replicates");
+    if (s.statistics != Statistics::within_cuts)
+      throw InputError("validation.replicates", rep->dump(),
+                       "an integer (packings by the error reached need \"statistics\": \"within_cuts\")");
+    AdaptivePackings p;
+    a.get_choice("policy", {"adaptive"});
+    // At least two packings: the rule is the spread between them.
+    p.min_count = a.get_int_or("min_count", p.min_count, 2, kMaxReplicates);
+    p.max_count = a.get_int_or("max_count", std::max(p.max_count, p.min_count), p.min_count, kMaxReplicates);
+    if (const Json* names = a.find("results")) {
+      const auto bad = [&] {
+        return InputError(a.key_path("results"), names->dump(),
+                          "a non-empty list of \"main_force_N\" and \"thrust_force_N\"");
+      };
+      if (!names->is_array() || names->empty()) throw bad();
+      p.results.clear();
+      for (const Json& name : *names) {
+        if (!name.is_string() || (name != "main_force_N" && name != "thrust_force_N")) throw bad();
+        p.results.push_back(name.get<std::string>());
+      }
+    }
+    a.finish();
+    s.adaptive = p;
+    s.replicates = p.max_count;
+  } else {
+    s.replicates = r.get_int_or("replicates", 3, s.min_replicates(), kMaxReplicates);
+  }
   const Json& list = r.get("conditions");
   if (!list.is_array() || list.empty())
     throw InputError("validation.conditions", list.dump(), "a non-empty list of conditions");
@@ -115,6 +157,10 @@ Spec read_spec(const fs::path& case_dir) {
   if (within_cuts) {
     s.max_relative_sem_percent = a.get_number("max_relative_sem_percent", Range::positive(), "%");
     s.trends = a.get_bool_or("trends", true);
+    s.between_packings_from_replicates = a.get_int_or("between_packings_from_replicates", 0, 2, kMaxReplicates);
+    if (s.adaptive && s.max_relative_sem_percent > 100)  // it is the adaptive packings' target too
+      throw InputError(a.key_path("max_relative_sem_percent"), fmt::format("{:g}", s.max_relative_sem_percent),
+                       "a percentage in (0, 100] with adaptive packings (\"replicates\": {\"policy\": \"adaptive\"})");
   } else {
     s.regular_max_error_percent = a.get_number("regular_force_max_abs_error_vs_paper_dem_percent", Range::positive(), "%");
     s.grooved_ratio_max = a.get_number("grooved_to_regular_main_force_ratio_max", Range::positive(), "");
@@ -135,16 +181,29 @@ std::string quoted(const fs::path& p) {
   return out + "'";
 }
 
-/// A mean with its standard error.
+/// A mean with its standard error and the degrees of freedom of that error: n - 1 for the spread between n
+/// packings, infinite for a cut's own batch-means error (a long signal's; the normal quantile).
 struct Estimate {
   double value = 0, standard_error = 0;
+  double degrees_of_freedom = std::numeric_limits<double>::infinity();
 };
 
 /// The ratio of two independent estimates, its standard error propagated to first order:
-/// se(a / b) = (a / b) hypot(se_a / a, se_b / b).
+/// se(a / b) = (a / b) hypot(se_a / a, se_b / b), and its degrees of freedom by Welch-Satterthwaite on the two
+/// relative variances: (v_a + v_b)^2 / (v_a^2 / df_a + v_b^2 / df_b).
 Estimate ratio_of(const Estimate& a, const Estimate& b) {
   const double r = a.value / b.value;
-  return {r, r * std::hypot(a.standard_error / a.value, b.standard_error / b.value)};
+  const double va = std::pow(a.standard_error / a.value, 2), vb = std::pow(b.standard_error / b.value, 2);
+  const double spread = va * va / a.degrees_of_freedom + vb * vb / b.degrees_of_freedom;
+  const double df = spread > 0 ? (va + vb) * (va + vb) / spread : std::numeric_limits<double>::infinity();
+  return {r, r * std::hypot(a.standard_error / a.value, b.standard_error / b.value), df};
+}
+
+/// The two-sided 95 % quantile for an error with these degrees of freedom: Student's t, the normal's 1.96 when
+/// they are infinite (or undefined: no standard error).
+double quantile95(double degrees_of_freedom) {
+  return std::isfinite(degrees_of_freedom) && degrees_of_freedom > 0 ? gsl_cdf_tdist_Pinv(0.975, degrees_of_freedom)
+                                                                      : kZ95;
 }
 
 /// The per-replicate columns of kerf_dem_replicates.csv after the condition's: each a result of the item's
@@ -180,16 +239,21 @@ struct ConditionResult {
   Condition condition;
   Json replicates;  ///< one row per replicate: replicate, seed and kReplicateColumns (within_cuts: kWithinCutColumns too)
   double main_n = 0, thrust_n = 0, main_std_n = 0, thrust_std_n = 0, width_mm = 1;
-  bool within_cuts = false;  ///< main() and thrust() carry the within-cut standard errors
+  bool within_cuts = false;  ///< main() and thrust() carry the within-cut standard errors...
+  int between_from = 0;      ///< ...but from this many packings on (0: never) the between-packing ones
   /// sqrt(sum sem_k^2) / n of the cuts' own standard errors (NaN when a cut has none, or not within_cuts).
   double main_sem_within_n = kNaN, thrust_sem_within_n = kNaN;
   /// The mean forces with their standard errors over the replicates (packings are independent samples): sample
   /// std / sqrt(n), NaN for one packing.
-  Estimate main_between() const { return {main_n, main_std_n / std::sqrt(static_cast<double>(replicates.size()))}; }
-  Estimate thrust_between() const { return {thrust_n, thrust_std_n / std::sqrt(static_cast<double>(replicates.size()))}; }
-  /// The mean forces with the standard errors the acceptance uses: the statistics mode's.
-  Estimate main() const { return within_cuts ? Estimate{main_n, main_sem_within_n} : main_between(); }
-  Estimate thrust() const { return within_cuts ? Estimate{thrust_n, thrust_sem_within_n} : thrust_between(); }
+  int n() const { return static_cast<int>(replicates.size()); }
+  Estimate main_between() const { return {main_n, main_std_n / std::sqrt(n()), n() - 1.0}; }
+  Estimate thrust_between() const { return {thrust_n, thrust_std_n / std::sqrt(n()), n() - 1.0}; }
+  /// Whether the acceptance uses the between-packing standard errors: the replicates mode always, within_cuts
+  /// from between_from packings on.
+  bool uses_between() const { return !within_cuts || (between_from > 0 && n() >= between_from); }
+  /// The mean forces with the standard errors the acceptance uses.
+  Estimate main() const { return uses_between() ? main_between() : Estimate{main_n, main_sem_within_n}; }
+  Estimate thrust() const { return uses_between() ? thrust_between() : Estimate{thrust_n, thrust_sem_within_n}; }
   /// The active window's depth limit of the crack search (NaN: no window), and how many replicates' steady
   /// damage depth reaches it (censored).
   double damage_depth_limit_um = kNaN;
@@ -202,10 +266,11 @@ struct ConditionResult {
   std::vector<fs::path> directories;  ///< each replicate's run, relative to the validation's output directory
 };
 
-ConditionResult collect(const Condition& c, const std::vector<Json>& items, bool within_cuts) {
+ConditionResult collect(const Condition& c, const std::vector<Json>& items, bool within_cuts, int between_from) {
   ConditionResult r;
   r.condition = c;
   r.within_cuts = within_cuts;
+  r.between_from = between_from;
   r.replicates = Json::array();
   std::vector<double> main, thrust, main_sems, thrust_sems, steady_cracks, steady_depths;
   const double n = static_cast<double>(items.size());
@@ -346,16 +411,31 @@ std::string num(double x, int digits = 3) { return std::isfinite(x) ? fmt::forma
 std::string within_cuts_report(const Spec& spec, const std::map<std::string, ConditionResult>& results,
                                const Comparison& vs_experiment, const Comparison& vs_dem,
                                std::vector<std::string>& failures, Json& summary) {
-  const int n = spec.replicates;
+  const int n = spec.replicates, from = spec.between_packings_from_replicates;
+  std::string packings =
+      spec.adaptive
+          ? fmt::format("as many packings per condition as its mean needs: the smallest n from {} to {} at which the "
+                        "between-packing relative standard error of the {} is at most {:g} %, packing seeds 1..n",
+                        spec.adaptive->min_count, spec.adaptive->max_count,
+                        spec.adaptive->results.size() == 2 ? "main and thrust forces"
+                        : spec.adaptive->results.front() == "main_force_N" ? "main force"
+                                                                            : "thrust force",
+                        spec.max_relative_sem_percent)
+          : fmt::format("{} packing{} per condition, packing seed{} 1{}", n, n == 1 ? "" : "s", n == 1 ? "" : "s",
+                        n == 1 ? "" : fmt::format("..{}", n));
   std::string md = fmt::format(
-      "kerf-dem, scene `{}` ({} packing{} per condition, packing seed{} 1{}); steady-state cuts: each cut's means are "
+      "kerf-dem, scene `{}` ({}); steady-state cuts: each cut's means are "
       "over its steady part (after the entry), with their standard errors from the batch means of its own force "
       "signal; a condition's mean is the mean over its packings of its cuts' steady means, and its standard error "
-      "sqrt(sum sem_k^2) / n from the cuts' own (`main_force_sem_N`, `thrust_force_sem_N`){}. Forces per **1 mm** "
+      "sqrt(sum sem_k^2) / n from the cuts' own (`main_force_sem_N`, `thrust_force_sem_N`){}{}. Forces per **1 mm** "
       "width (the DEM's out-of-plane thickness) unless stated. Experiments: seed 000 Table 6, **25.4 mm** wide; the "
       "paper's DEM: Table 4, 1 mm.\n\n",
-      spec.scene.filename().string(), n, n == 1 ? "" : "s", n == 1 ? "" : "s", n == 1 ? "" : fmt::format("..{}", n),
-      n >= 2 ? "; beside it the between-packing standard error, sample std / sqrt(n)" : "");
+      spec.scene.filename().string(), packings,
+      n >= 2 ? "; beside it the between-packing standard error, sample std / sqrt(n)" : "",
+      from > 0 ? fmt::format("; from {} packings on, the acceptance and the trends use the between-packing one "
+                             "(marked *)",
+                             from)
+               : "");
   if (!spec.note.empty()) md += spec.note + "\n\n";
   md +=
       "| condition | kerf-dem main (N) | kerf-dem thrust (N) | between packings: main / thrust (N) | paper DEM main / "
@@ -371,11 +451,12 @@ std::string within_cuts_report(const Spec& spec, const std::map<std::string, Con
     const Estimate main = r.main(), thrust = r.thrust();
     const double main_rel = 100 * main.standard_error / std::abs(main.value);
     const double thrust_rel = 100 * thrust.standard_error / std::abs(thrust.value);
-    const auto cell = [](const Estimate& e, double rel) {
-      return fmt::format("{:.2f} ± {} ({} %)", e.value, num(e.standard_error, 2), num(rel, 2));
+    const std::string mark = r.uses_between() ? "*" : "";
+    const auto cell = [&](const Estimate& e, double rel) {
+      return fmt::format("{:.2f} ± {}{} ({} %)", e.value, num(e.standard_error, 2), mark, num(rel, 2));
     };
     const bool censored = r.damage_censored_replicates > 0;
-    md += fmt::format("| {} | {} | {} | {} / {} | {} | {} | {} | {:.0f}, {:.0f}{} | {:.0f} |\n", c.name,
+    md += fmt::format("| {} (n = {}) | {} | {} | {} / {} | {} | {} | {} | {:.0f}, {:.0f}{} | {:.0f} |\n", c.name, r.n(),
                       cell(main, main_rel), cell(thrust, thrust_rel), num(r.main_between().standard_error, 2),
                       num(r.thrust_between().standard_error, 2), paper, experiment, per_mm, r.cracks_subsurface_steady,
                       r.subsurface_steady_depth_um, censored ? " (censored)" : "", r.wall_time_s);
@@ -390,16 +471,19 @@ std::string within_cuts_report(const Spec& spec, const std::map<std::string, Con
     const bool resolved = unresolved.empty();
     std::string why;
     for (const auto& u : unresolved) why += (why.empty() ? "" : ", ") + u;
-    resolution += fmt::format("- {} **{}**: main {:.3g} ± {} N ({} %), thrust {:.3g} ± {} N ({} %){}\n",
+    const std::string source = fmt::format("{} packing{}, {}", r.n(), r.n() == 1 ? "" : "s",
+                                           r.uses_between() ? "between-packing errors" : "the cuts' own errors");
+    resolution += fmt::format("- {} **{}**: main {:.3g} ± {} N ({} %), thrust {:.3g} ± {} N ({} %); {}{}\n",
                               resolved ? "RESOLVED" : "NOT RESOLVED", c.name, main.value, num(main.standard_error, 2),
-                              num(main_rel, 2), thrust.value, num(thrust.standard_error, 2), num(thrust_rel, 2),
+                              num(main_rel, 2), thrust.value, num(thrust.standard_error, 2), num(thrust_rel, 2), source,
                               resolved ? "" : ": " + why);
     if (!resolved) failures.push_back(fmt::format("{} NOT RESOLVED: {}", c.name, why));
     conditions.push_back(Json{{"condition", c.name},
                               {"surface", c.surface},
                               {"groove_shape", c.groove_shape},
                               {"depth_of_cut_mm", c.depth_of_cut_mm},
-                              {"replicates", n},
+                              {"replicates", r.n()},
+                              {"standard_error_from", r.uses_between() ? "between_packings" : "within_cuts"},
                               {"main_force_N", main.value},
                               {"main_force_sem_N", finite_or_null(main.standard_error)},
                               {"main_force_between_packings_sem_N", finite_or_null(r.main_between().standard_error)},
@@ -417,7 +501,8 @@ std::string within_cuts_report(const Spec& spec, const std::map<std::string, Con
                           {"censored", censored}});
   }
   md += fmt::format(
-      "\n± is the standard error of the mean from the cuts' own force signals (in brackets: relative to the mean); "
+      "\n± is the standard error of the mean from the cuts' own force signals (in brackets: relative to the mean), "
+      "or, marked *, from the spread between the packings; "
       "between packings: sample std / sqrt(n) over the packings (— for one packing). Under the steady cut: the "
       "subsurface cracks below the surface machined during the steady part of the travel and the deepest of them; "
       "(censored): an active window sees cracks only down to its floor, and the deepest crack is within a disk "
@@ -426,9 +511,14 @@ std::string within_cuts_report(const Spec& spec, const std::map<std::string, Con
       "Acceptance is statistical: each trend either agrees with the experiments' within its 95 % interval, or the "
       "report shows, resolved, that it does not. What fails the validation is a mean that is not resolved: every "
       "condition's mean main and thrust force must have a relative standard error of at most {:g} % (else run more "
-      "travel or `--replicates N` packings). Whether the trends agree with the experiments is the finding, reported "
+      "travel or `--replicates N` packings){}. Whether the trends agree with the experiments is the finding, reported "
       "below and in summary.json, not the exit status.\n\n",
-      max_rel);
+      max_rel,
+      from > 0 ? fmt::format("; the standard error is the cuts' own below {} packings and the spread between "
+                             "the packings from {} on (`acceptance.between_packings_from_replicates`: the batch-means "
+                             "error of one cut is conservative for the main force, docs/performance.md)",
+                             from, from)
+               : "");
   md += "### Resolution of the means\n\n" + resolution;
 
   Json checks = Json::array();
@@ -436,7 +526,9 @@ std::string within_cuts_report(const Spec& spec, const std::map<std::string, Con
     md +=
         "\n### Trends\n\n"
         "Each trend is a ratio of two condition means, its standard error propagated to first order (delta method: "
-        "ratio × hypot of the two relative standard errors), its 95 % interval value ± 1.96 standard errors. Beside "
+        "ratio × hypot of the two relative standard errors), its 95 % interval value ± q standard errors: q = 1.96 "
+        "for the cuts' own errors, Student's t quantile where a between-packing error enters, with Welch-"
+        "Satterthwaite's degrees of freedom (given as df). Beside "
         "it the same ratio of the experiments' means (Table 6; a ratio of two forces on the same 25.4 mm width does "
         "not depend on the width) and of the paper's DEM (Table 4). AGREES: the experiment's value inside the 95 % "
         "interval; DISAGREES: outside it, a resolved disagreement, by the number of standard errors given; REPORTED: "
@@ -445,7 +537,8 @@ std::string within_cuts_report(const Spec& spec, const std::map<std::string, Con
                            const Estimate& den_est, const Estimate& num_between, const Estimate& den_between,
                            std::optional<double> experiment, std::optional<double> paper_dem) {
       const Estimate e = ratio_of(num_est, den_est);
-      const double lo = e.value - kZ95 * e.standard_error, hi = e.value + kZ95 * e.standard_error;
+      const double q = quantile95(e.degrees_of_freedom);
+      const double lo = e.value - q * e.standard_error, hi = e.value + q * e.standard_error;
       std::string verdict = "REPORTED";
       Json away;
       std::string detail;
@@ -466,6 +559,8 @@ std::string within_cuts_report(const Spec& spec, const std::map<std::string, Con
                {"value", e.value},
                {"standard_error", finite_or_null(e.standard_error)},
                {"standard_error_between_packings", finite_or_null(between_se)},
+               {"degrees_of_freedom", finite_or_null(e.degrees_of_freedom)},
+               {"ci95_quantile", q},
                {"ci95_low", finite_or_null(lo)},
                {"ci95_high", finite_or_null(hi)},
                {"experiment", experiment ? Json(*experiment) : Json()},
@@ -473,8 +568,9 @@ std::string within_cuts_report(const Spec& spec, const std::map<std::string, Con
                {"standard_errors_from_experiment", away},
                {"verdict", verdict}};
       checks.push_back(row);
-      md += fmt::format("- {} **{}**: {:.3f} ± {} (95 % interval {} to {}{}); experiment {}, paper's DEM {}{}\n", verdict,
-                        what, e.value, num(e.standard_error, 2), num(lo), num(hi),
+      md += fmt::format("- {} **{}**: {:.3f} ± {} (95 % interval {} to {}{}{}); experiment {}, paper's DEM {}{}\n",
+                        verdict, what, e.value, num(e.standard_error, 2), num(lo), num(hi),
+                        std::isfinite(e.degrees_of_freedom) ? fmt::format(", df {:.1f}", e.degrees_of_freedom) : "",
                         std::isfinite(between_se) ? fmt::format("; between packings ± {}", num(between_se, 2)) : "",
                         experiment ? fmt::format("{:.3f}", *experiment) : "—",
                         paper_dem ? fmt::format("{:.3f}", *paper_dem) : "—", detail);
@@ -527,11 +623,13 @@ std::string within_cuts_report(const Spec& spec, const std::map<std::string, Con
     for (double depth : {0.1, 0.2}) {
       const ConditionResult *regular = find_condition(results, "none", depth), *grooved = find_condition(results, shape, depth);
       if (!regular || !grooved) continue;
-      const double dn = std::sqrt(static_cast<double>(n));
+      const double ng = std::sqrt(grooved->n()), nr = std::sqrt(regular->n());
       const double depth_change = grooved->subsurface_steady_depth_um - regular->subsurface_steady_depth_um;
-      const double depth_se = std::hypot(grooved->subsurface_steady_depth_std_um, regular->subsurface_steady_depth_std_um) / dn;
+      const double depth_se =
+          std::hypot(grooved->subsurface_steady_depth_std_um / ng, regular->subsurface_steady_depth_std_um / nr);
       const double cracks_change = grooved->cracks_subsurface_steady - regular->cracks_subsurface_steady;
-      const double cracks_se = std::hypot(grooved->cracks_subsurface_steady_std, regular->cracks_subsurface_steady_std) / dn;
+      const double cracks_se =
+          std::hypot(grooved->cracks_subsurface_steady_std / ng, regular->cracks_subsurface_steady_std / nr);
       const bool censored = grooved->damage_censored_replicates > 0 || regular->damage_censored_replicates > 0;
       md += fmt::format(
           "- {} mm, {} grooves vs regular: {:.0f} vs {:.0f} subsurface cracks ({:+.0f}{}), deepest {:.0f} vs {:.0f} um "
@@ -556,7 +654,12 @@ std::string within_cuts_report(const Spec& spec, const std::map<std::string, Con
           "`subsurface_damage_depth_steady_censored` in kerf_dem_replicates.csv): it is censored, a lower bound. A "
           "window as deep as the damage (`active_window.below_depths`) measures it.\n";
   summary = Json{{"statistics", "within_cuts"},
-                 {"replicates", n},
+                 {"replicates", spec.adaptive ? Json{{"policy", "adaptive"},
+                                                     {"min_count", spec.adaptive->min_count},
+                                                     {"max_count", spec.adaptive->max_count},
+                                                     {"results", spec.adaptive->results}}
+                                               : Json(n)},
+                 {"between_packings_from_replicates", from > 0 ? Json(from) : Json()},
                  {"max_relative_sem_percent", max_rel},
                  {"conditions", conditions},
                  {"checks", checks},
@@ -716,11 +819,16 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
   for (const auto& c : spec.conditions)
     conditions.push_back(Json{{"cut.depth_of_cut_mm", c.depth_of_cut_mm}, {"grooves.shape", c.groove_shape}});
   const Json study_doc{
-      {"description", fmt::format("The {} validation's cuts: each condition of validation.json on {} packings", case_name,
-                                  spec.replicates)},
+      {"description", fmt::format("The {} validation's cuts: each condition of validation.json on {}{} packings",
+                                  case_name, spec.adaptive ? "up to " : "", spec.replicates)},
       {"scene", fs::absolute(spec.scene).string()},
       {"conditions", {{"list", conditions}}},
-      {"replicates", {{"policy", "fixed"}, {"count", spec.replicates}}}};
+      {"replicates", spec.adaptive ? Json{{"policy", "adaptive"},
+                                          {"min_count", spec.adaptive->min_count},
+                                          {"max_count", spec.adaptive->max_count},
+                                          {"target_relative_sem_percent", spec.max_relative_sem_percent},
+                                          {"results", spec.adaptive->results}}
+                                    : Json{{"policy", "fixed"}, {"count", spec.replicates}}}};
   const fs::path study_dir = out_dir / "study";
   const dem::StudySpec study = dem::read_study(study_doc, study_dir / "study.json");
   fs::create_directories(study_dir);
@@ -732,18 +840,21 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
   options.command_line = fmt::format("kerf-dem study {} --out {}", quoted(study_dir / "study.json"), quoted(study_dir));
   fmt::print("{}\n", options.command_line);  // the same runs from the command line
   std::fflush(stdout);
-  dem::run_study_local(study, options);
+  const dem::StudyOutcome outcome = dem::run_study_local(study, options);
   std::map<std::string, ConditionResult> results;
   for (std::size_t ci = 0; ci < spec.conditions.size(); ++ci) {
     std::vector<Json> items;
     std::vector<fs::path> directories;
-    for (int k = 0; k < spec.replicates; ++k) {
+    // The condition's packings: fixed, or as many as the adaptive rule decided.
+    const int count = outcome.summary.at("conditions").at(ci).at("count").get<int>();
+    for (int k = 0; k < count; ++k) {
       const dem::StudyItem item = dem::study_item(study, static_cast<int>(ci), k);
       items.push_back(dem::read_study_item_summary(study_dir, item));
       directories.push_back(fs::path("study") / "items" / dem::study_item_name(item));
     }
     ConditionResult& r = results[spec.conditions[ci].name] =
-        collect(spec.conditions[ci], items, spec.statistics == Statistics::within_cuts);
+        collect(spec.conditions[ci], items, spec.statistics == Statistics::within_cuts,
+                spec.between_packings_from_replicates);
     r.directories = std::move(directories);
   }
 

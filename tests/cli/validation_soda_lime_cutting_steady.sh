@@ -4,7 +4,10 @@
 # scene, conditions and threshold changed): "statistics": "within_cuts" combines the cuts' own standard errors as
 # sqrt(sum sem_k^2) / n, reports the between-packing one beside it, checks the trends' 95 % intervals against
 # the experiments' trends (from the CSV), exits 0 when every mean is resolved and 1, naming the condition, when
-# one is not; --replicates 1 is allowed here; bad acceptance keys exit 2.
+# one is not; from acceptance.between_packings_from_replicates packings on the acceptance uses the between-packing
+# errors with Student-t intervals (Welch-Satterthwaite degrees of freedom); adaptive packings ("replicates" as the
+# study's adaptive policy) stop at min_count when the target is met and run to max_count when it is not;
+# --replicates 1 is allowed here; bad acceptance and replicates keys exit 2; the real validation.json reads.
 # Usage: validation_soda_lime_cutting_steady.sh <dir of built programs> <source dir>
 source "$(dirname "$0")/lib/dem_common.sh" "$@"
 validate="$1/../validation/run_validation"
@@ -31,12 +34,13 @@ spec_from_real() {
   python3 - "$src/validation/soda_lime_cutting_steady/validation.json" "$case_dir/validation.json" "$@" <<'PY'
 import json, sys
 spec = json.load(open(sys.argv[1]))
-assert spec["statistics"] == "within_cuts" and spec["replicates"] >= 1, "the real case's statistics"
+assert spec["statistics"] == "within_cuts", "the real case's statistics"
 assert spec["scene"] == "../../data/scenes/dem_cut_steady.json", "the real case cuts the bundled steady scene"
 spec["scene"] = "scene.json"  # the miniature scene, not the bundled one
 spec["conditions"] = [c for c in spec["conditions"] if c["groove_shape"] != "trapezoidal"]
 spec["replicates"] = 2
 spec["acceptance"]["max_relative_sem_percent"] = 1000
+spec["acceptance"].pop("between_packings_from_replicates", None)  # the cuts' own errors unless a test sets it
 for change in sys.argv[3:]:
     key, value = change.split("=", 1)
     *path, last = key.split(".")
@@ -63,12 +67,13 @@ head -1 "$work/out/kerf_dem_replicates.csv" | grep -q ',wall_time_s,main_force_s
   fail "replicate table lacks the within-cut columns at its end"
 
 # The numbers, recomputed from the cuts' own summary.json files and the experiments' CSV.
-check_numbers() {  # check_numbers <expected packings>
-  python3 - "$work/out" "$csv" "$1" <<'PY'
+check_numbers() {  # check_numbers <expected packings> [between: the acceptance uses the between-packing errors]
+  python3 - "$work/out" "$csv" "$1" "${2:-within}" <<'PY'
 import csv, json, math, statistics, sys
-out, n_expected = sys.argv[1], int(sys.argv[3])
+out, n_expected, between_mode = sys.argv[1], int(sys.argv[3]), sys.argv[4] == "between"
 summary = json.load(open(out + "/summary.json"))
-assert summary["statistics"] == "within_cuts" and summary["replicates"] == n_expected, summary["replicates"]
+assert summary["statistics"] == "within_cuts", summary["statistics"]
+assert summary["replicates"] == n_expected or summary["replicates"]["policy"] == "adaptive", summary["replicates"]
 items = list(csv.DictReader(open(out + "/study/items.csv")))
 means_csv = {r["surface"] + "_" + r["depth_of_cut_mm"]: r for r in csv.DictReader(open(out + "/kerf_dem_means.csv"))}
 close = lambda a, b: abs(a - b) <= 1e-9 * max(1.0, abs(b))
@@ -84,18 +89,23 @@ for ci, cond in enumerate(summary["conditions"]):
             vals.append(r[force + "_force_N"]); sems.append(r[force + "_force_sem_N"])
         mean = sum(vals) / len(vals)
         within = math.sqrt(sum(s * s for s in sems)) / len(sems)
-        assert close(cond[force + "_force_N"], mean), (cond["condition"], force, "mean")
-        assert close(cond[force + "_force_sem_N"], within), (cond["condition"], force, cond[force + "_force_sem_N"], within)
-        assert close(cond[force + "_force_relative_sem_percent"], 100 * within / abs(mean))
         between = cond[force + "_force_between_packings_sem_N"]
         if n_expected >= 2:
             assert close(between, statistics.stdev(vals) / math.sqrt(len(vals))), (cond["condition"], force, "between")
         else:
             assert between is None, "a between-packing standard error from one packing"
+        # The acceptance's standard error and its degrees of freedom: the spread between the packings (n - 1) or
+        # the cuts' own (a normal quantile).
+        used, df = (between, n_expected - 1) if between_mode else (within, math.inf)
+        assert cond["standard_error_from"] == ("between_packings" if between_mode else "within_cuts")
+        assert close(cond[force + "_force_N"], mean), (cond["condition"], force, "mean")
+        assert close(cond[force + "_force_sem_N"], used), (cond["condition"], force, cond[force + "_force_sem_N"], used)
+        assert close(cond[force + "_force_relative_sem_percent"], 100 * used / abs(mean))
         row = means_csv[cond["surface"] + "_" + str(cond["depth_of_cut_mm"])]
         assert close(float(row[force + "_force_sem_N"]), within), "kerf_dem_means.csv's within-cut standard error"
-        est[(cond["condition"], force)] = (mean, within)
-    assert cond["resolved"] is True
+        est[(cond["condition"], force)] = (mean, used, df)
+    assert cond["resolved"] == all(cond[f + "_force_relative_sem_percent"] <= summary["max_relative_sem_percent"]
+                                   for f in ("main", "thrust")), (cond["condition"], "resolved")
 print("conditions: means, within-cut and between-packing standard errors as recomputed")
 
 # The experiments' and the paper's DEM's trends: ratios of the means of their CSV rows.
@@ -117,11 +127,26 @@ assert set(checks) == set(expected), sorted(checks)
 for cid, ((num, den), (exp, paper)) in expected.items():
     c = checks[cid]
     force = "main" if "main" in cid else "thrust"
-    (a, sa), (b, sb) = est[(num, force)], est[(den, force)]
+    (a, sa, dfa), (b, sb, dfb) = est[(num, force)], est[(den, force)]
     value = a / b
     se = value * math.hypot(sa / a, sb / b)
     assert close(c["value"], value) and close(c["standard_error"], se), (cid, c["value"], value, c["standard_error"], se)
-    assert close(c["ci95_low"], value - 1.96 * se) and close(c["ci95_high"], value + 1.96 * se), (cid, "95 % interval")
+    # Welch-Satterthwaite's degrees of freedom of the two relative variances, and the quantile q with
+    # P(|t_df| <= q) = 0.95 (the t density integrated by Simpson's rule; 1.96 without degrees of freedom).
+    va, vb = (sa / a) ** 2, (sb / b) ** 2
+    df = (va + vb) ** 2 / (va * va / dfa + vb * vb / dfb) if math.isfinite(dfa + dfb) else math.inf
+    q = c["ci95_quantile"]
+    if math.isfinite(df):
+        assert close(c["degrees_of_freedom"], df), (cid, c["degrees_of_freedom"], df)
+        k = math.exp(math.lgamma((df + 1) / 2) - math.lgamma(df / 2)) / math.sqrt(df * math.pi)
+        f = lambda t: k * (1 + t * t / df) ** (-(df + 1) / 2)
+        m = 4000
+        h = q / m
+        area = h / 3 * (f(0) + f(q) + sum((4 if i % 2 else 2) * f(i * h) for i in range(1, m)))
+        assert abs(2 * area - 0.95) < 1e-7, (cid, "t quantile", q, df, 2 * area)
+    else:
+        assert c["degrees_of_freedom"] is None and q == 1.96, (cid, c["degrees_of_freedom"], q)
+    assert close(c["ci95_low"], value - q * se) and close(c["ci95_high"], value + q * se), (cid, "95 % interval")
     assert close(c["experiment"], exp) and close(c["paper_dem"], paper), (cid, c["experiment"], exp, c["paper_dem"], paper)
     inside = c["ci95_low"] <= exp <= c["ci95_high"]
     assert c["verdict"] == ("AGREES" if inside else "DISAGREES"), (cid, c["verdict"])
@@ -136,8 +161,38 @@ PY
 }
 check_numbers 2 || fail "the within-cut statistics of two packings"
 
+# From two packings on, the between-packing errors (acceptance.between_packings_from_replicates): the same cuts
+# (reused), each condition's error the spread of its packings, the trends' intervals Student's t.
+spec_from_real "acceptance.between_packings_from_replicates=2"
+"$validate" soda_lime_cutting_steady "$work/out" >"$work/log" 2>&1
+rc=$?
+[ $rc -eq 0 ] || fail "between-packing errors: exit $rc: $(tail -5 "$work/log")"
+[ "$(grep -c " reused in " "$work/log")" -eq 8 ] || fail "between-packing errors did not reuse the 8 cuts"
+check_numbers 2 between || fail "the between-packing statistics of two packings"
+grep -q "^- RESOLVED \*\*regular_0.1\*\*: .*; 2 packings, between-packing errors" "$work/out/report.md" ||
+  fail "report.md does not say regular_0.1's error is the between-packing one"
+
+# Packings by the error reached (validation.json "replicates" as the study's adaptive policy): a target every
+# condition meets stops each at min_count (the 2 cuts reused); one none meets runs each to max_count.
+spec_from_real 'replicates={"policy": "adaptive", "min_count": 2, "max_count": 3, "results": ["main_force_N"]}' \
+  "acceptance.max_relative_sem_percent=100"
+"$validate" soda_lime_cutting_steady "$work/out" >"$work/log" 2>&1
+rc=$?
+[ $rc -eq 0 ] || fail "adaptive, target met: exit $rc: $(tail -5 "$work/log")"
+[ "$(grep -c " reused in " "$work/log")" -eq 8 ] || fail "adaptive, target met: not the 8 cuts reused: $(cat "$work/log")"
+check_numbers 2 || fail "adaptive packings, target met at min_count"
+spec_from_real 'replicates={"policy": "adaptive", "min_count": 2, "max_count": 3, "results": ["main_force_N"]}' \
+  "acceptance.max_relative_sem_percent=0.001"
+"$validate" soda_lime_cutting_steady "$work/out" >"$work/log" 2>&1
+rc=$?
+[ $rc -eq 1 ] || fail "adaptive, target missed: exit $rc (expected 1: the means not resolved): $(tail -5 "$work/log")"
+[ -s "$work/out/study/items/condition_4_seed_3/summary.json" ] || fail "adaptive, target missed: no third packing"
+[ ! -e "$work/out/study/items/condition_1_seed_4" ] || fail "adaptive: a packing beyond max_count"
+check_numbers 3 || fail "adaptive packings, target missed: max_count"
+
 # A rerun with one packing (allowed under within_cuts) reuses the finished cuts: the standard error is the
 # cut's own, and there is no between-packing one.
+spec_from_real
 "$validate" soda_lime_cutting_steady "$work/out" --replicates 1 >"$work/log" 2>&1
 rc=$?
 [ $rc -eq 0 ] || fail "--replicates 1: exit $rc: $(tail -5 "$work/log")"
@@ -188,9 +243,31 @@ expect_validation_error "validation.acceptance.trends" 'acceptance.trends="yes"'
 expect_validation_error "validation.acceptance.regular_force_max_abs_error_vs_paper_dem_percent" \
   "acceptance.regular_force_max_abs_error_vs_paper_dem_percent=20"
 expect_validation_error "validation.replicates" "replicates=0"
+expect_validation_error "validation.replicates.min_count" 'replicates={"policy": "adaptive", "min_count": 1}'
+expect_validation_error "validation.replicates.max_count" 'replicates={"policy": "adaptive", "min_count": 4, "max_count": 3}'
+expect_validation_error "validation.replicates.results" 'replicates={"policy": "adaptive", "results": ["cracks_chip"]}'
+expect_validation_error "validation.replicates.policy" 'replicates={"policy": "fixed", "count": 3}'
+expect_validation_error "validation.replicates.target_relative_sem_percent" \
+  'replicates={"policy": "adaptive", "target_relative_sem_percent": 5}'
+expect_validation_error "validation.acceptance.between_packings_from_replicates" \
+  "acceptance.between_packings_from_replicates=1"
+expect_validation_error "validation.acceptance.max_relative_sem_percent" 'replicates={"policy": "adaptive"}' \
+  "acceptance.max_relative_sem_percent=101"
+expect_validation_error "validation.replicates" "statistics=DELETE" 'replicates={"policy": "adaptive"}' \
+  'acceptance={"regular_force_max_abs_error_vs_paper_dem_percent": 20, "grooved_to_regular_main_force_ratio_max": 0.33}'
 # One packing needs the cuts' own standard errors: with the default statistics it is refused, naming both.
 expect_validation_error "within_cuts" "statistics=DELETE" "replicates=1" \
   'acceptance={"regular_force_max_abs_error_vs_paper_dem_percent": 20, "grooved_to_regular_main_force_ratio_max": 0.33}'
 expect_validation_error "validation.acceptance.max_relative_sem_percent" "statistics=\"replicates\""
 [ ! -e "$work/bad/study" ] || fail "a bad validation.json started cuts"
+# The real validation.json as it is (its adaptive packings and acceptance), only its scene the miniature one, reads
+# without an error: the first error is the out-of-range --replicates checked after it.
+python3 - "$src/validation/soda_lime_cutting_steady/validation.json" "$case_dir/validation.json" <<'PY'
+import json, sys
+spec = json.load(open(sys.argv[1]))
+spec["scene"] = "scene.json"
+json.dump(spec, open(sys.argv[2], "w"))
+PY
+"$validate" soda_lime_cutting_steady "$work/bad" --replicates 101 >"$work/log" 2>&1
+[ $? -eq 2 ] && grep -q -- "--replicates = 101" "$work/log" || fail "the real validation.json does not read: $(cat "$work/log")"
 echo "validation_soda_lime_cutting_steady: ok"
