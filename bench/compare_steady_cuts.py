@@ -6,7 +6,9 @@ errors (sqrt(sum sem^2) / n), the difference with that error and with the spread
 (std / sqrt(n)), and the mean active-window disks, steady damage depth (with the window's floor), steady
 subsurface cracks and wall time of each set.
 
-    python3 bench/compare_steady_cuts.py BASE_STUDY_DIR OTHER_STUDY_DIR
+    python3 bench/compare_steady_cuts.py BASE_STUDY_DIR[:C] OTHER_STUDY_DIR[:C]
+
+A directory followed by :C takes only its condition C's items (a study with several conditions at one speed).
 """
 import json
 import math
@@ -17,7 +19,10 @@ import sys
 
 def items(study_dir):
     out = {}
-    for item_dir in (pathlib.Path(study_dir) / "items").glob("condition_*_seed_*"):
+    condition = "*"
+    if ":" in study_dir:
+        study_dir, condition = study_dir.rsplit(":", 1)
+    for item_dir in (pathlib.Path(study_dir) / "items").glob(f"condition_{condition}_seed_*"):
         s = json.loads((item_dir / "summary.json").read_text())
         out[(s["cut"]["cut"]["speed_m_per_s"], s["study_item"]["seed"])] = s
     return out

@@ -13,7 +13,7 @@
 namespace kerf::dem {
 
 namespace {
-constexpr std::string_view kWindowMagic = "KERFWIN1";
+constexpr std::string_view kWindowMagic = "KERFWIN2";  // 2: the absorbing layer in the box
 }  // namespace
 
 CutWindow::CutWindow(Simulation workpiece, const CutWindowBox& box, double y_top_m, double y_cut_m)
@@ -217,6 +217,20 @@ Simulation CutWindow::build(const Simulation* current, double x_edge_m) {
   // The team governor goes on with what it measured (a window is rebuilt more often than it measures).
   sim.set_adaptive_team(full_.adaptive_team());
   if (current) sim.set_team_governor(current->team_governor());
+  if (box_.absorbing_m > 0) {
+    // The absorbing layer: a quadratic ramp from 0 at its inner side to the full rate at the box's edge.
+    std::vector<double> rates(global_of_.size(), 0.0);
+    const Particles& p = sim.particles();
+    for (std::size_t u = 0; u < rates.size(); ++u) {
+      if (p.group[u] != 0) continue;
+      const double d = std::min({p.x[u] - x0, x1 - p.x[u], p.y[u] - y0});
+      if (d < box_.absorbing_m) {
+        const double ramp = 1 - std::max(d, 0.0) / box_.absorbing_m;
+        rates[u] = box_.absorbing_rate_per_s * ramp * ramp;
+      }
+    }
+    sim.set_absorbing_rates(std::move(rates));
+  }
   sim.initialise();
   Particles& p = sim.particles();
   for (const KeptForce& k : kept) {

@@ -109,7 +109,14 @@ const FieldTable<CutParams>& active_window_fields() {
                    &P::window_above_depths),
       number_field("shift_depths", kNone, Range::positive(),
                    "tool travel between rebuilds of the window, in depths of cut (below ahead_depths)",
-                   &P::window_shift_depths)};
+                   &P::window_shift_depths),
+      number_field("absorbing_depths", kNone, Range::non_negative(),
+                   "absorbing layer inside the window's ahead, behind and lower edges, in depths of cut (0: none; the "
+                   "held frame is rigid and reflects the waves an undamped cut sends out)",
+                   &P::window_absorbing_depths),
+      number_field("absorbing_attenuation", kNone, Range::positive(),
+                   "e-folds by which the absorbing layer attenuates a p-wave's amplitude through it and back",
+                   &P::window_absorbing_attenuation)};
   return table;
 }
 
@@ -134,6 +141,11 @@ void check_cut_relations(const CutParams& p) {
     require(p.window_shift_depths < p.window_ahead_depths, "active_window.shift_depths", p.window_shift_depths,
             "a shift below active_window.ahead_depths (" + format_value(p.window_ahead_depths) +
                 "): the tool must not leave the window between two rebuilds");
+  if (p.active_window)
+    require(p.window_absorbing_depths <
+                std::min({p.window_ahead_depths, p.window_behind_depths, p.window_below_depths}),
+            "active_window.absorbing_depths", p.window_absorbing_depths,
+            "a layer thinner than the window's ahead, behind and below depths");
   if (p.groove_shape == GrooveShape::none) return;
   require(p.groove_width_m < p.groove_pitch_m, "grooves.width_mm", units::m_to_mm(p.groove_width_m),
           "a positive width below grooves.pitch_mm (" + format_value(units::m_to_mm(p.groove_pitch_m)) + " mm)");
@@ -471,9 +483,18 @@ CutRun::CutRun(const Simulation& specimen, const CutParams& params)
   if (params_.active_window) {
     // The workpiece becomes the window's reservoir; its time step (of the whole workpiece) is every window's.
     const double d = params_.depth_of_cut_m;
-    const CutWindowBox box{params_.window_ahead_depths * d, params_.window_behind_depths * d,
+    CutWindowBox box{params_.window_ahead_depths * d, params_.window_behind_depths * d,
                            params_.window_below_depths * d, params_.window_above_depths * d,
                            params_.window_shift_depths * d};
+    if (params_.window_absorbing_depths > 0) {
+      const double c = std::sqrt(
+          std::visit([](const auto& law) { return law.effective_modulus_pa; }, sim_.material().contact) /
+          sim_.material().density_kg_per_m3);
+      box.absorbing_m = params_.window_absorbing_depths * d;
+      // Amplitude decays at gamma / 2 in time, gamma / (2 c) in space; through the quadratic ramp and back:
+      // exp(-gamma_max L / (3 c)) = exp(-attenuation).
+      box.absorbing_rate_per_s = 3 * params_.window_absorbing_attenuation * c / box.absorbing_m;
+    }
     const double x_edge = edge()[0];
     window_.emplace(std::move(sim_), box, res_.y_top_m, res_.y_cut_m);
     sim_ = window_->build(nullptr, x_edge);
@@ -542,8 +563,8 @@ void CutRun::finish() {
 }
 
 namespace {
-constexpr std::string_view kCutMagic = "KERFCUT5";  // 3: tool_friction_coefficient, 4: rake_face_height_m,
-                                                    // 5: the active window
+constexpr std::string_view kCutMagic = "KERFCUT6";  // 3: tool_friction_coefficient, 4: rake_face_height_m,
+                                                    // 5: the active window, 6: its absorbing layer
 }  // namespace
 
 template <class Self, class Io>
@@ -559,7 +580,7 @@ void CutRun::state_fields(Self& run, Io& io) {
   io(r.y_top_m, r.y_cut_m, r.width_m, r.time_step_s, r.wall_time_s, run.t0_, r.workpiece_box_m);
   io(r.n_particles, r.n_removed_by_grooves, r.steps, run.first_tool_wall_, run.n_tool_walls_, run.finished_);
   io(p.active_window, p.window_ahead_depths, p.window_behind_depths, p.window_below_depths, p.window_above_depths,
-     p.window_shift_depths, r.particle_steps);
+     p.window_shift_depths, r.particle_steps, p.window_absorbing_depths, p.window_absorbing_attenuation);
 }
 
 std::string CutRun::serialize() const {

@@ -180,8 +180,35 @@ int Simulation::add_particle(double x_m, double y_m, double radius_m, std::uint8
   p_.inv_inertia.push_back(2.0 / (m * radius_m * radius_m));  // disk: I = m r^2 / 2
   p_.type.push_back(type);
   p_.group.push_back(0);
+  if (!absorbing_rate_.empty()) absorbing_rate_.push_back(0.0);
   need_rebuild_ = true;
   return static_cast<int>(p_.size() - 1);
+}
+
+void Simulation::set_absorbing_rates(std::vector<double> rates_per_s) {
+  if (!rates_per_s.empty() && rates_per_s.size() != p_.size())
+    throw std::logic_error("Simulation::set_absorbing_rates: one rate per disk");
+  for (double r : rates_per_s)
+    if (!(r >= 0 && std::isfinite(r))) throw std::logic_error("Simulation::set_absorbing_rates: a rate not finite and >= 0");
+  absorbing_rate_ = std::move(rates_per_s);
+  absorbing_decay_.clear();
+  absorbing_dt_ = 0;
+}
+
+void Simulation::absorb_disks() {
+  const auto n = static_cast<std::int64_t>(p_.size());
+  const std::uint8_t* __restrict group = p_.group.data();
+  const double* __restrict decay = absorbing_decay_.data();
+  double* __restrict vx = p_.vx.data();
+  double* __restrict vy = p_.vy.data();
+  double* __restrict om = p_.omega.data();
+  // The same static partition as the kick before it: each thread decays the disks it has just kicked.
+#pragma omp for schedule(static) nowait
+  for (std::int64_t ii = 0; ii < n; ++ii) {
+    const auto u = static_cast<std::size_t>(ii);
+    const double f = blend(group[u] == 0, decay[u], 1.0);  // a prescribed disk keeps its velocity
+    vx[u] *= f, vy[u] *= f, om[u] *= f;
+  }
 }
 
 void Simulation::set_radius(std::size_t i, double radius_m) {
@@ -774,6 +801,12 @@ void Simulation::step() {
   // threads meet at barriers only where a loop reads what another thread wrote: after the drift, (when the
   // neighbour lists are rebuilt), after the contact loops, and at the end. Its size: team_threads().
   const int team = team_threads();
+  const bool absorb = !absorbing_rate_.empty();
+  if (absorb && absorbing_dt_ != dt) {  // the decay factors of this time step
+    absorbing_decay_.resize(absorbing_rate_.size());
+    for (std::size_t u = 0; u < absorbing_rate_.size(); ++u) absorbing_decay_[u] = std::exp(-absorbing_rate_[u] * dt);
+    absorbing_dt_ = dt;
+  }
 #pragma omp parallel if (parallel_here()) num_threads(team)
   {
 #pragma omp single nowait
@@ -811,6 +844,7 @@ void Simulation::step() {
         apply_breaks();  // joints only: the kick below does not read them
       }
       damped_half_kick(dt);  // no barrier after it: the region's end is one
+      if (absorb) absorb_disks();
     }
   }
   if (failure) {
@@ -853,8 +887,9 @@ std::size_t Simulation::memory_bytes() const {
 
 namespace {
 
-constexpr std::string_view kStateMagic = "KERFDEM5";  // 2: Wall::friction_coefficient; 3: the laws as variants;
-                                                      // 4: the viscous damping ratio; 5: skip_held_pairs
+constexpr std::string_view kStateMagic = "KERFDEM6";  // 2: Wall::friction_coefficient; 3: the laws as variants;
+                                                      // 4: the viscous damping ratio; 5: skip_held_pairs;
+                                                      // 6: the absorbing rates
 
 }  // namespace
 
@@ -871,7 +906,7 @@ void Simulation::state_fields(Self& sim, Io& io) {
      b.pending, b.out);
   io(sim.walls_, sim.cracks_, sim.pairs_, sim.pair_shear_, sim.pair_out_, sim.wall_contacts_, sim.wall_shear_,
      sim.wall_out_, sim.incidence_start_, sim.incidence_, sim.incidence_pair_begin_,
-     sim.incidence_wall_begin_, sim.x_ref_, sim.y_ref_, sim.wall_ref_, sim.fixed_);
+     sim.incidence_wall_begin_, sim.x_ref_, sim.y_ref_, sim.wall_ref_, sim.fixed_, sim.absorbing_rate_);
   io(sim.need_rebuild_, sim.need_breaks_, sim.initialised_, sim.dt_fixed_);
   io(sim.dt_, sim.time_, sim.skin_, sim.speed_limit_, sim.steps_);
 }

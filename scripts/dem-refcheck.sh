@@ -6,7 +6,8 @@
 #   bash scripts/dem-refcheck.sh OLD_BIN_DIR NEW_BIN_DIR OUT_DIR [--skip-compression]
 #
 # BIN_DIR holds kerf-dem (e.g. build/tools of a worktree of the commit before the change). Cases: the first
-# 0.04 mm of the seed-000 cut (regular 0.1 mm, trapezoidal-grooved 0.2 mm), the bundled tension and
+# 0.04 mm of the seed-000 cut (regular 0.1 mm, trapezoidal-grooved 0.2 mm), the first 0.2 mm of the bundled
+# steady-state cut (active window), the bundled tension and
 # compression scenes (2 threads), the tiny calibration of tests/cli/dem_calibrate_cli.sh. About 5 min on
 # 2 cores, most of it the compression test and its quasi-static check. Exit 0 when everything is identical.
 set -uo pipefail
@@ -18,6 +19,9 @@ run_cases() {  # BIN_DIR DIR
   "$bin" run "$v" --set cut.length_mm=0.04 --out "$dir/cut004" --threads 2 >"$dir/cut004.log" 2>&1
   "$bin" run "$v" --set cut.length_mm=0.04 --set grooves.shape=trapezoidal --set cut.depth_of_cut_mm=0.2 \
     --out "$dir/cutg004" --threads 2 >"$dir/cutg004.log" 2>&1
+  # The first 0.2 mm of the bundled steady-state cut (12 mm workpiece, active window, undamped glass).
+  "$bin" run "$src/data/scenes/dem_cut_steady.json" --set cut.length_mm=0.2 --set output.frame_every_samples=0 \
+    --out "$dir/steady02" --threads 2 >"$dir/steady02.log" 2>&1
   "$bin" run "$src/data/scenes/dem_tension.json" --out "$dir/tension" --threads 2 >"$dir/tension.log" 2>&1
   [ "$skip" = --skip-compression ] ||
     "$bin" run "$src/data/scenes/dem_compression.json" --out "$dir/compression" --threads 2 >"$dir/compression.log" 2>&1
@@ -29,7 +33,8 @@ run_cases() {  # BIN_DIR DIR
 run_cases "$old" "$out/old"
 run_cases "$new" "$out/new"
 rc=0
-for f in cut004/forces.csv cut004/cracks.csv cutg004/forces.csv cutg004/cracks.csv tension/curve.csv \
+for f in cut004/forces.csv cut004/cracks.csv cutg004/forces.csv cutg004/cracks.csv steady02/forces.csv \
+  steady02/cracks.csv tension/curve.csv \
   tension/cracks.csv compression/curve.csv compression/cracks.csv calib/tiny_fj.json; do
   [ -f "$out/old/$f" ] || continue
   if cmp -s "$out/old/$f" "$out/new/$f"; then echo "same      $f"; else echo "DIFFERENT $f"; rc=1; fi

@@ -6,7 +6,9 @@
 //     `behind` depths behind it, from `below` depths under the cut line up to `above` depths over the
 //     uncut surface (the chip's room); the workpiece's held boundary disks stay held;
 //   - the held frame: the disks within two largest diameters outside the box, at rest (they hold the free
-//     disks' joints and contacts); joints and contacts between two held disks are not computed.
+//     disks' joints and contacts); joints and contacts between two held disks are not computed;
+//   - optionally an absorbing layer along the box's ahead, behind and lower edges (CutWindowBox::absorbing_m):
+//     the held frame is rigid, and undamped elastic waves would reflect from it into the process zone.
 // Every `shift` of tool travel the window is rebuilt around the edge: the running simulation's disks,
 // joints, cracks and contact springs go back to the reservoir, and a new simulation is built from it, the
 // shear springs of the unjointed contacts carried over. A disk the window leaves behind is frozen where it
@@ -28,6 +30,10 @@ namespace kerf::dem {
 struct CutWindowBox {
   double ahead_m = 0, behind_m = 0, below_m = 0, above_m = 0;
   double shift_m = 0;  ///< tool travel between rebuilds
+  /// The absorbing layer inside the box's ahead, behind and lower edges (0: none): a free disk at distance
+  /// d < absorbing_m from the nearest of them has its velocity decay at absorbing_rate_per_s (1 - d / L)^2
+  /// (Simulation::set_absorbing_rates), set when the window is built. The top is the free surface.
+  double absorbing_m = 0, absorbing_rate_per_s = 0;
 };
 
 /// What the windowed cut removed as chips.

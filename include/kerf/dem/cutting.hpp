@@ -63,6 +63,10 @@ struct CutParams {
   /// their standard errors (docs/dem.md, "Steady-state cuts").
   double window_ahead_depths = 7, window_behind_depths = 3, window_below_depths = 4, window_above_depths = 4;
   double window_shift_depths = 0.25;  ///< tool travel between two rebuilds of the window
+  /// The absorbing layer inside the window's ahead, behind and lower edges (kerf/dem/cut_window.hpp), its
+  /// thickness L in depths of cut (0: none), and the e-folds by which it attenuates a p-wave's amplitude on its
+  /// way through the layer and back: the peak rate 3 a c / L, with c = sqrt(E* / rho) of the contact law.
+  double window_absorbing_depths = 0, window_absorbing_attenuation = 2;
 };
 
 /// The keys of the scene's "cut", "tool" and "grooves" sections (kerf/field_table.hpp).

@@ -164,6 +164,13 @@ class Simulation {
   /// Replaces the unbonded contact law (e.g. frictionless compaction during genesis).
   void set_contact_law(const ContactLaw& c) { material_.contact = c; }
   void set_local_damping(double alpha) { material_.local_damping = alpha; }
+  /// An absorbing layer (a sponge: Cerjan et al. 1985): each free disk's velocity and spin decay at its own rate
+  /// gamma [1/s] (dv/dt = -gamma v, applied after each step's second half kick as v exp(-gamma dt)), so the
+  /// elastic waves that reach the edge of a windowed cut's held frame are absorbed there instead of reflected.
+  /// One rate per disk (0: none; finite, >= 0), or empty: no layer (the default; the step then does what it did
+  /// before, to the bit). A disk added later gets rate 0.
+  void set_absorbing_rates(std::vector<double> rates_per_s);
+  const std::vector<double>& absorbing_rates() const { return absorbing_rate_; }
   const SimulationOptions& options() const { return opt_; }
   double time_step() const { return dt_; }
   double time() const { return time_; }
@@ -266,6 +273,10 @@ class Simulation {
   // Positions at the last rebuild.
   std::vector<double> x_ref_, y_ref_, wall_ref_;
   std::vector<std::int32_t> fixed_;  ///< indices of prescribed-velocity particles
+  std::vector<double> absorbing_rate_;   ///< per disk [1/s], or empty (set_absorbing_rates)
+  std::vector<double> absorbing_decay_;  ///< exp(-rate dt) for absorbing_dt_ (derived, not saved)
+  double absorbing_dt_ = 0;
+  void absorb_disks();  ///< this thread's share of the decay (in the step's team)
   bool need_rebuild_ = true, need_breaks_ = false, initialised_ = false, dt_fixed_ = false;
   double dt_ = 0, time_ = 0, skin_ = 0, speed_limit_ = 0;
   std::int64_t steps_ = 0;

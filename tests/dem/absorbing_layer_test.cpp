@@ -1,0 +1,193 @@
+// The absorbing layer of a windowed cut (Simulation::set_absorbing_rates, CutWindowBox::absorbing_m): a free
+// disk's velocity decays as exp(-gamma t), a prescribed one keeps its own; no layer is the engine as before,
+// to the bit; along a bonded chain held at its far end, an undamped wave packet keeps its energy (reflected by
+// the held end) and a layer before that end takes it out (a sponge absorbs waves shorter than itself; longer
+// ones, and a pulse's net momentum, it reflects in part); the window ramps the rate from the box's edges as
+// documented; a windowed cut with a layer restored halfway goes on to the bit; its keys are validated.
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <vector>
+
+#include "kerf/dem/cut_window.hpp"
+#include "kerf/dem/cutting.hpp"
+#include "kerf/dem/simulation.hpp"
+#include "quick_specimen.hpp"
+
+using namespace kerf::dem;
+using Catch::Matchers::WithinRel;
+
+namespace {
+Material undamped_elastic() {
+  Material m;
+  m.local_damping = 0;
+  auto& j = std::get<FlatJointParams>(m.joint);
+  j.tensile_strength_pa = j.cohesion_pa = 1e15;  // elastic: never breaks
+  return m;
+}
+
+/// A chain of n bonded disks along x, disk n - 1 held (the rigid frame).
+Simulation chain(int n) {
+  Simulation sim(undamped_elastic(), {});
+  for (int k = 0; k < n; ++k) sim.add_particle(20e-6 * k, 0, 10e-6);
+  for (int k = 0; k + 1 < n; ++k) sim.install_bond(k, k + 1);
+  sim.particles().group[static_cast<std::size_t>(n - 1)] = 1;
+  sim.initialise();
+  return sim;
+}
+
+double energy(const Simulation& sim) { return sim.kinetic_energy() + sim.strain_energy(); }
+
+CutParams windowed_with_layer(double layer_depths) {
+  CutParams p;
+  p.depth_of_cut_m = 0.05e-3;
+  p.speed_m_per_s = 2;
+  p.length_m = 0.15e-3;
+  p.active_window = true;
+  p.window_ahead_depths = 3, p.window_behind_depths = 2, p.window_below_depths = 2, p.window_above_depths = 2;
+  p.window_shift_depths = 0.2;
+  p.window_absorbing_depths = layer_depths;
+  return p;
+}
+}  // namespace
+
+TEST_CASE("absorbing layer: a free disk's velocity and spin decay as exp(-gamma t), a prescribed disk's do not",
+          "[absorbing_layer]") {
+  Simulation sim(undamped_elastic(), {});
+  sim.add_particle(0, 0, 10e-6);
+  sim.add_particle(1e-3, 0, 10e-6);  // far apart: no contact
+  auto& p = sim.particles();
+  p.group[1] = 1;
+  const double gamma = 3e6, dt = 1e-9;
+  sim.set_absorbing_rates({gamma, gamma});
+  sim.initialise();
+  sim.set_time_step(dt);
+  p.vx[0] = 2.0, p.vy[0] = -1.0, p.omega[0] = 5e3, p.vx[1] = 0.5;
+  const int n = 2000;
+  for (int k = 0; k < n; ++k) sim.step();
+  const double decay = std::exp(-gamma * n * dt);
+  CHECK_THAT(p.vx[0], WithinRel(2.0 * decay, 1e-12));
+  CHECK_THAT(p.vy[0], WithinRel(-1.0 * decay, 1e-12));
+  CHECK_THAT(p.omega[0], WithinRel(5e3 * decay, 1e-12));
+  // The distance travelled: the sum of the decaying velocities times dt, a geometric series.
+  const double f = std::exp(-gamma * dt);
+  CHECK_THAT(p.x[0], WithinRel(dt * 2.0 * (1 - std::pow(f, n)) / (1 - f), 1e-9));
+  CHECK(p.vx[1] == 0.5);  // prescribed: its velocity is the loading's
+  // A disk added after the rates were set has none.
+  sim.add_particle(-1e-3, 0, 10e-6);
+  CHECK(sim.absorbing_rates().back() == 0);
+  CHECK_THROWS(sim.set_absorbing_rates({1.0}));
+  CHECK_THROWS(sim.set_absorbing_rates({1.0, -1.0, 0.0}));
+}
+
+TEST_CASE("absorbing layer: no layer is the engine as before, to the bit", "[absorbing_layer]") {
+  Simulation a = chain(12), b = chain(12);
+  b.set_absorbing_rates(std::vector<double>(12, 0.0));  // a layer of zero rates...
+  Simulation c = chain(12);
+  c.set_absorbing_rates({});  // ...and none
+  for (auto* s : {&a, &b, &c}) s->particles().vx[0] = 1e-3;
+  for (int k = 0; k < 3000; ++k) a.step(), b.step(), c.step();
+  CHECK(a.particles().x == b.particles().x);
+  CHECK(a.particles().vx == b.particles().vx);
+  CHECK(a.particles().x == c.particles().x);
+  CHECK(a.particles().vx == c.particles().vx);
+}
+
+TEST_CASE("absorbing layer: a wave along an undamped chain keeps its energy off a held end and is absorbed by a layer",
+          "[absorbing_layer]") {
+  const int n = 120, layer = 30;
+  Simulation bare = chain(n), sponge = chain(n);
+  // Wave speed and the peak rate as the cut sets it: 3 a c / L for a attenuation e-folds over L.
+  const auto& g = bare.bonds().geometry[0];
+  const double k = g.normal_stiffness * 2 * g.half_length_m * g.thickness_m, m = 1 / bare.particles().inv_mass[0];
+  const double spacing = 20e-6, c = spacing * std::sqrt(k / m), length = layer * spacing;
+  const double gamma_max = 3 * 3.0 * c / length;
+  std::vector<double> rates(n, 0.0);
+  for (int u = n - 1 - layer; u < n - 1; ++u) {
+    const double d = spacing * (n - 1 - u);  // distance to the held end
+    rates[static_cast<std::size_t>(u)] = gamma_max * std::pow(1 - d / length, 2);
+  }
+  sponge.set_absorbing_rates(rates);
+  // A wave packet of zero net momentum, one wavelength of 20 spacings (shorter than the layer), near the free end.
+  for (auto* s : {&bare, &sponge})
+    for (int u = 0; u < 20; ++u)
+      s->particles().vx[static_cast<std::size_t>(u + 20)] = 1e-3 * std::sin(0.314159 * (u + 0.5));
+  const double e0 = energy(bare);
+  REQUIRE(energy(sponge) == e0);
+  // Long enough for the pulse to reach the held end and come back to the free end twice.
+  const double transit = n * spacing / c;
+  const int steps = static_cast<int>(4 * transit / bare.time_step());
+  for (int s = 0; s < steps; ++s) bare.step(), sponge.step();
+  INFO("energy left: " << energy(bare) / e0 << " without the layer, " << energy(sponge) / e0 << " with it");
+  CHECK_THAT(energy(bare), WithinRel(e0, 0.01));  // undamped and elastic: conserved, reflected by the held end
+  CHECK(energy(sponge) < 0.02 * e0);               // the layer took it out (3 e-folds each way: about e^-6)
+}
+
+TEST_CASE("absorbing layer: the window ramps the rate from its ahead, behind and lower edges", "[absorbing_layer]") {
+  Simulation work = kerf::dem::testing::quick_workpiece_specimen(0.8e-3, 0.3e-3, 5);
+  work.initialise();
+  double y_top = 0;
+  for (std::size_t u = 0; u < work.particles().size(); ++u)
+    y_top = std::max(y_top, work.particles().y[u] + work.particles().radius[u]);
+  const double depth = 0.05e-3, y_cut = y_top - depth, x_edge = 0.5e-3;
+  CutWindowBox box{3 * depth, 2 * depth, 2 * depth, 2 * depth, 0.2 * depth};
+  box.absorbing_m = depth;
+  box.absorbing_rate_per_s = 1e8;
+  CutWindow window(std::move(work), box, y_top, y_cut);
+  const Simulation sim = window.build(nullptr, x_edge);
+  const auto& p = sim.particles();
+  const auto& rates = sim.absorbing_rates();
+  REQUIRE(rates.size() == p.size());
+  const double x0 = x_edge - box.ahead_m, x1 = x_edge + box.behind_m, y0 = y_cut - box.below_m;
+  int in_layer = 0, inside = 0;
+  for (std::size_t u = 0; u < p.size(); ++u) {
+    if (p.group[u] != 0) {
+      CHECK(rates[u] == 0);  // held: at rest anyway
+      continue;
+    }
+    const double d = std::min({p.x[u] - x0, x1 - p.x[u], p.y[u] - y0});
+    REQUIRE(d >= 0);  // a free disk is inside the box
+    const double expected = d < box.absorbing_m ? 1e8 * std::pow(1 - d / box.absorbing_m, 2) : 0.0;
+    CHECK_THAT(rates[u], WithinRel(expected, 1e-12));
+    (d < box.absorbing_m ? in_layer : inside) += 1;
+  }
+  CHECK(in_layer > 20);
+  CHECK(inside > 20);
+}
+
+TEST_CASE("absorbing layer: restored halfway, a windowed cut with a layer goes on to the bit", "[absorbing_layer]") {
+  const Simulation specimen = kerf::dem::testing::quick_workpiece_specimen(0.6e-3, 0.25e-3, 7);
+  const CutParams p = windowed_with_layer(1);
+  CutRun whole(specimen, p);
+  REQUIRE(!whole.simulation().absorbing_rates().empty());
+  while (whole.advance()) {}
+  CutRun half(specimen, p);
+  for (std::size_t k = 0; k < whole.result().samples.size() / 2; ++k) half.advance();
+  CutRun restored = CutRun::deserialize(half.serialize());
+  CHECK(restored.simulation().absorbing_rates() == half.simulation().absorbing_rates());
+  while (restored.advance()) {}
+  const CutResult &a = whole.result(), &b = restored.result();
+  REQUIRE(a.samples.size() == b.samples.size());
+  for (std::size_t k = 0; k < a.samples.size(); ++k) {
+    REQUIRE(a.samples[k].main_force_n == b.samples[k].main_force_n);
+    REQUIRE(a.samples[k].thrust_force_n == b.samples[k].thrust_force_n);
+  }
+  CHECK(whole.window()->workpiece().particles().x == restored.window()->workpiece().particles().x);
+  // And the layer changes the cut (it is applied).
+  CutRun without(specimen, windowed_with_layer(0));
+  while (without.advance()) {}
+  CHECK(without.simulation().absorbing_rates().empty());
+  CHECK(without.result().main_force_n != a.main_force_n);
+}
+
+TEST_CASE("absorbing layer: its keys are validated with their dotted names", "[absorbing_layer]") {
+  CutParams p = windowed_with_layer(2);  // as thick as the window behind and below the tool
+  CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains("active_window.absorbing_depths = 2"));
+  p = windowed_with_layer(1.5);
+  CHECK_NOTHROW(validate_cut_params(p));
+  p.window_absorbing_attenuation = 0;
+  CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains("active_window.absorbing_attenuation = 0"));
+  p = windowed_with_layer(-1);
+  CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains("active_window.absorbing_depths = -1"));
+}
+
