@@ -65,7 +65,7 @@ def main():
     ax.set_xlabel("depth below the cut line (um); dotted: the window's floor")
     ax.set_ylabel(f"cracks per mm of cut per {BIN_UM:g} um of depth")
     ax.set_yscale("log")
-    ax.set_title("subsurface cracks under the steady cut (x over the steadily machined stretch)")
+    ax.set_title("subsurface cracks under the steady cut (steadily machined stretch)", fontsize=10)
     ax.legend(fontsize=8)
     ax.grid(alpha=0.3)
     fig.tight_layout()
