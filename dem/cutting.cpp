@@ -484,8 +484,8 @@ CutRun::CutRun(const Simulation& specimen, const CutParams& params)
     // The workpiece becomes the window's reservoir; its time step (of the whole workpiece) is every window's.
     const double d = params_.depth_of_cut_m;
     CutWindowBox box{params_.window_ahead_depths * d, params_.window_behind_depths * d,
-                           params_.window_below_depths * d, params_.window_above_depths * d,
-                           params_.window_shift_depths * d};
+                     params_.window_below_depths * d, params_.window_above_depths * d,
+                     params_.window_shift_depths * d};
     if (params_.window_absorbing_depths > 0) {
       const double c = std::sqrt(
           std::visit([](const auto& law) { return law.effective_modulus_pa; }, sim_.material().contact) /

@@ -802,7 +802,7 @@ void Simulation::step() {
   // neighbour lists are rebuilt), after the contact loops, and at the end. Its size: team_threads().
   const int team = team_threads();
   const bool absorb = !absorbing_rate_.empty();
-  if (absorb && absorbing_dt_ != dt) {  // the decay factors of this time step
+  if (absorb && (absorbing_dt_ != dt || absorbing_decay_.size() != absorbing_rate_.size())) {  // this step's factors
     absorbing_decay_.resize(absorbing_rate_.size());
     for (std::size_t u = 0; u < absorbing_rate_.size(); ++u) absorbing_decay_[u] = std::exp(-absorbing_rate_[u] * dt);
     absorbing_dt_ = dt;

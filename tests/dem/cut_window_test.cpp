@@ -1,6 +1,7 @@
 // The active window of a steady-state cut (kerf/dem/cut_window.hpp, issue 20): a window covering the whole
 // workpiece is the full cut to the bit; bookkeeping of disks crossing its edge, chips and held disks; the
-// window's size independent of the workpiece's length; restart equals uninterrupted.
+// window's size independent of the workpiece's length; restart equals uninterrupted (with and without an
+// absorbing layer).
 #include "kerf/dem/cut_window.hpp"
 
 #include <algorithm>
@@ -122,27 +123,34 @@ TEST_CASE("cut window: the window's size does not grow with the workpiece; chips
 
 TEST_CASE("cut window: restored halfway, a windowed cut goes on to the bit", "[cut_window]") {
   const Simulation specimen = quick_workpiece_specimen(0.6e-3, 0.25e-3, 7);
-  CutParams p = windowed(3, 2, 2, 2);
-  p.length_m = 0.15e-3;
-  CutRun whole(specimen, p);
-  while (whole.advance()) {}
-  CutRun half(specimen, p);
-  for (std::size_t k = 0; k < whole.result().samples.size() / 2; ++k) half.advance();
-  CutRun restored = CutRun::deserialize(half.serialize());
-  while (restored.advance()) {}
-  const CutResult &a = whole.result(), &b = restored.result();
-  REQUIRE(a.samples.size() == b.samples.size());
-  for (std::size_t k = 0; k < a.samples.size(); ++k) {
-    REQUIRE(a.samples[k].main_force_n == b.samples[k].main_force_n);
-    REQUIRE(a.samples[k].thrust_force_n == b.samples[k].thrust_force_n);
+  // Without and with an absorbing layer (its per-disk rates are part of the saved state).
+  for (const double layer : {0.0, 1.0}) {
+    INFO("absorbing layer " << layer << " depths");
+    CutParams p = windowed(3, 2, 2, 2);
+    p.length_m = 0.15e-3;
+    p.window_absorbing_depths = layer;
+    CutRun whole(specimen, p);
+    REQUIRE(whole.simulation().absorbing_rates().empty() == (layer == 0));
+    while (whole.advance()) {}
+    CutRun half(specimen, p);
+    for (std::size_t k = 0; k < whole.result().samples.size() / 2; ++k) half.advance();
+    CutRun restored = CutRun::deserialize(half.serialize());
+    CHECK(restored.simulation().absorbing_rates() == half.simulation().absorbing_rates());
+    while (restored.advance()) {}
+    const CutResult &a = whole.result(), &b = restored.result();
+    REQUIRE(a.samples.size() == b.samples.size());
+    for (std::size_t k = 0; k < a.samples.size(); ++k) {
+      REQUIRE(a.samples[k].main_force_n == b.samples[k].main_force_n);
+      REQUIRE(a.samples[k].thrust_force_n == b.samples[k].thrust_force_n);
+    }
+    CHECK(a.window.rebuilds == b.window.rebuilds);
+    CHECK(a.window.chips.particles == b.window.chips.particles);
+    CHECK(a.window.chips.cracks == b.window.chips.cracks);
+    REQUIRE(whole.cracks().size() == restored.cracks().size());
+    for (std::size_t k = 0; k < whole.cracks().size(); ++k) CHECK(whole.cracks()[k].bond == restored.cracks()[k].bond);
+    CHECK(whole.window()->workpiece().particles().x == restored.window()->workpiece().particles().x);
+    CHECK(a.particle_steps == b.particle_steps);
   }
-  CHECK(a.window.rebuilds == b.window.rebuilds);
-  CHECK(a.window.chips.particles == b.window.chips.particles);
-  CHECK(a.window.chips.cracks == b.window.chips.cracks);
-  REQUIRE(whole.cracks().size() == restored.cracks().size());
-  for (std::size_t k = 0; k < whole.cracks().size(); ++k) CHECK(whole.cracks()[k].bond == restored.cracks()[k].bond);
-  CHECK(whole.window()->workpiece().particles().x == restored.window()->workpiece().particles().x);
-  CHECK(a.particle_steps == b.particle_steps);
 }
 
 TEST_CASE("cut window: contacts between two held disks are left out when asked", "[cut_window]") {
