@@ -17,12 +17,15 @@ import statistics
 import sys
 
 
-def items(study_dir):
+def item_dirs(spec):
+    """The finished items of STUDY_DIR, or of its condition C for STUDY_DIR:C, in name order."""
+    study_dir, condition = spec.rsplit(":", 1) if ":" in spec else (spec, "*")
+    return sorted((pathlib.Path(study_dir) / "items").glob(f"condition_{condition}_seed_*"))
+
+
+def items(spec):
     out = {}
-    condition = "*"
-    if ":" in study_dir:
-        study_dir, condition = study_dir.rsplit(":", 1)
-    for item_dir in (pathlib.Path(study_dir) / "items").glob(f"condition_{condition}_seed_*"):
+    for item_dir in item_dirs(spec):
         s = json.loads((item_dir / "summary.json").read_text())
         out[(s["cut"]["cut"]["speed_m_per_s"], s["study_item"]["seed"])] = s
     return out

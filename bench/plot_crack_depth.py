@@ -19,13 +19,15 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+from compare_steady_cuts import item_dirs  # noqa: E402
+
 BIN_UM = 25.0
 
 
 def profile(spec):
-    study_dir, condition = (spec.rsplit(":", 1) + ["*"])[:2] if ":" in spec else (spec, "*")
     counts, floor, n = None, None, 0
-    for item in sorted((pathlib.Path(study_dir) / "items").glob(f"condition_{condition}_seed_*")):
+    for item in item_dirs(spec):
         s = json.loads((item / "summary.json").read_text())
         r = s["results"]
         y_cut, x_from, x_to = r["cut_line_y_mm"], r["steady_machined_from_x_mm"], r["steady_machined_to_x_mm"]
@@ -53,7 +55,7 @@ def main():
     out = sys.argv[1]
     fig, ax = plt.subplots(figsize=(7, 4.2))
     table = {}
-    for k, arg in enumerate(sys.argv[2:]):
+    for arg in sys.argv[2:]:
         label, spec = arg.split("=", 1)
         c, floor, n = profile(spec)
         centres = np.arange(len(c)) * BIN_UM + BIN_UM / 2

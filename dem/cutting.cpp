@@ -487,9 +487,7 @@ CutRun::CutRun(const Simulation& specimen, const CutParams& params)
                      params_.window_below_depths * d, params_.window_above_depths * d,
                      params_.window_shift_depths * d};
     if (params_.window_absorbing_depths > 0) {
-      const double c = std::sqrt(
-          std::visit([](const auto& law) { return law.effective_modulus_pa; }, sim_.material().contact) /
-          sim_.material().density_kg_per_m3);
+      const double c = p_wave_speed_m_per_s(sim_.material());
       box.absorbing_m = params_.window_absorbing_depths * d;
       // Amplitude decays at gamma / 2 in time, gamma / (2 c) in space; through the quadratic ramp and back:
       // exp(-gamma_max L / (3 c)) = exp(-attenuation).

@@ -145,9 +145,12 @@ Simulation::Simulation(const Material& material, const SimulationOptions& option
   if (!(options.time_step_safety > 0 && options.time_step_safety <= 1))
     throw InputError("engine.time_step_safety", format_value(options.time_step_safety), "a value in (0, 1]");
   b_.stride = std::visit([](const auto& law) { return bond_elements(law); }, material.joint);
+  speed_limit_ = options.speed_limit_m_per_s > 0 ? options.speed_limit_m_per_s : p_wave_speed_m_per_s(material);
+}
+
+double p_wave_speed_m_per_s(const Material& material) {
   const double contact_modulus_pa = std::visit([](const auto& law) { return law.effective_modulus_pa; }, material.contact);
-  speed_limit_ = options.speed_limit_m_per_s > 0 ? options.speed_limit_m_per_s
-                                                 : std::sqrt(contact_modulus_pa / material.density_kg_per_m3);
+  return std::sqrt(contact_modulus_pa / material.density_kg_per_m3);
 }
 
 void refuse_small_time_step_safety(double steps, double time_step_s, double safety) {

@@ -61,6 +61,11 @@ struct AdaptivePackings {
   std::vector<std::string> results{"main_force_N", "thrust_force_N"};
 };
 
+/// The adaptive packings as the study's "replicates" section, without its target (the acceptance's).
+Json adaptive_json(const AdaptivePackings& p) {
+  return Json{{"policy", "adaptive"}, {"min_count", p.min_count}, {"max_count", p.max_count}, {"results", p.results}};
+}
+
 struct Spec {
   fs::path scene, experiments;
   std::string note;  ///< printed under the report's title (e.g. what a fitted material was fitted to)
@@ -412,7 +417,7 @@ std::string within_cuts_report(const Spec& spec, const std::map<std::string, Con
                                const Comparison& vs_experiment, const Comparison& vs_dem,
                                std::vector<std::string>& failures, Json& summary) {
   const int n = spec.replicates, from = spec.between_packings_from_replicates;
-  std::string packings =
+  const std::string packings =
       spec.adaptive
           ? fmt::format("as many packings per condition as its mean needs: the smallest n from {} to {} at which the "
                         "between-packing relative standard error of the {} is at most {:g} %, packing seeds 1..n",
@@ -654,11 +659,7 @@ std::string within_cuts_report(const Spec& spec, const std::map<std::string, Con
           "`subsurface_damage_depth_steady_censored` in kerf_dem_replicates.csv): it is censored, a lower bound. A "
           "window as deep as the damage (`active_window.below_depths`) measures it.\n";
   summary = Json{{"statistics", "within_cuts"},
-                 {"replicates", spec.adaptive ? Json{{"policy", "adaptive"},
-                                                     {"min_count", spec.adaptive->min_count},
-                                                     {"max_count", spec.adaptive->max_count},
-                                                     {"results", spec.adaptive->results}}
-                                               : Json(n)},
+                 {"replicates", spec.adaptive ? adaptive_json(*spec.adaptive) : Json(n)},
                  {"between_packings_from_replicates", from > 0 ? Json(from) : Json()},
                  {"max_relative_sem_percent", max_rel},
                  {"conditions", conditions},
@@ -818,17 +819,17 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
   Json conditions = Json::array();
   for (const auto& c : spec.conditions)
     conditions.push_back(Json{{"cut.depth_of_cut_mm", c.depth_of_cut_mm}, {"grooves.shape", c.groove_shape}});
+  Json study_replicates{{"policy", "fixed"}, {"count", spec.replicates}};
+  if (spec.adaptive) {
+    study_replicates = adaptive_json(*spec.adaptive);
+    study_replicates["target_relative_sem_percent"] = spec.max_relative_sem_percent;
+  }
   const Json study_doc{
       {"description", fmt::format("The {} validation's cuts: each condition of validation.json on {}{} packings",
                                   case_name, spec.adaptive ? "up to " : "", spec.replicates)},
       {"scene", fs::absolute(spec.scene).string()},
       {"conditions", {{"list", conditions}}},
-      {"replicates", spec.adaptive ? Json{{"policy", "adaptive"},
-                                          {"min_count", spec.adaptive->min_count},
-                                          {"max_count", spec.adaptive->max_count},
-                                          {"target_relative_sem_percent", spec.max_relative_sem_percent},
-                                          {"results", spec.adaptive->results}}
-                                    : Json{{"policy", "fixed"}, {"count", spec.replicates}}}};
+      {"replicates", study_replicates}};
   const fs::path study_dir = out_dir / "study";
   const dem::StudySpec study = dem::read_study(study_doc, study_dir / "study.json");
   fs::create_directories(study_dir);

@@ -39,13 +39,8 @@ Simulation chain(int n) {
 double energy(const Simulation& sim) { return sim.kinetic_energy() + sim.strain_energy(); }
 
 CutParams windowed_with_layer(double layer_depths) {
-  CutParams p;
-  p.depth_of_cut_m = 0.05e-3;
-  p.speed_m_per_s = 2;
+  CutParams p = kerf::dem::testing::windowed(3, 2, 2, 2);
   p.length_m = 0.15e-3;
-  p.active_window = true;
-  p.window_ahead_depths = 3, p.window_behind_depths = 2, p.window_below_depths = 2, p.window_above_depths = 2;
-  p.window_shift_depths = 0.2;
   p.window_absorbing_depths = layer_depths;
   return p;
 }

@@ -17,18 +17,7 @@ using namespace kerf::dem;
 namespace {
 
 using kerf::dem::testing::quick_workpiece_specimen;
-
-CutParams windowed(double ahead, double behind, double below, double above) {
-  CutParams p;
-  p.depth_of_cut_m = 0.05e-3;
-  p.speed_m_per_s = 2;
-  p.length_m = 0.1e-3;
-  p.active_window = true;
-  p.window_ahead_depths = ahead, p.window_behind_depths = behind, p.window_below_depths = below;
-  p.window_above_depths = above;
-  p.window_shift_depths = 0.2;
-  return p;
-}
+using kerf::dem::testing::windowed;
 
 }  // namespace
 

@@ -3,6 +3,7 @@
 // small bonded specimen in well under a second. Default radii of SpecimenSpec unless the test sets them.
 #include <cstdint>
 
+#include "kerf/dem/cutting.hpp"
 #include "kerf/dem/specimen.hpp"
 
 namespace kerf::dem::testing {
@@ -24,6 +25,20 @@ inline Simulation quick_workpiece_specimen(double width_m, double height_m, std:
   spec.radius_max_m = 13e-6;
   SpecimenReport report;
   return make_specimen(Material{}, spec, report);
+}
+
+/// A 0.05 mm deep, 0.1 mm long cut at 2 m/s through an active window of these extents (depths of cut),
+/// rebuilt every 0.2 depths: the windowed cut of the window tests.
+inline CutParams windowed(double ahead, double behind, double below, double above) {
+  CutParams p;
+  p.depth_of_cut_m = 0.05e-3;
+  p.speed_m_per_s = 2;
+  p.length_m = 0.1e-3;
+  p.active_window = true;
+  p.window_ahead_depths = ahead, p.window_behind_depths = behind, p.window_below_depths = below;
+  p.window_above_depths = above;
+  p.window_shift_depths = 0.2;
+  return p;
 }
 
 }  // namespace kerf::dem::testing

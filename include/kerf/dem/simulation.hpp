@@ -112,6 +112,10 @@ struct ContactSprings {
   std::vector<double> wall_shear_n;
 };
 
+/// The p-wave speed sqrt(E* / rho) of the material's unbonded contact law [m/s]: the engine's runaway limit by
+/// default, and the wave speed a windowed cut's absorbing layer is tuned to.
+double p_wave_speed_m_per_s(const Material& material);
+
 class Simulation {
  public:
   Simulation(const Material& material, const SimulationOptions& options);
