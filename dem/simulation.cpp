@@ -184,6 +184,9 @@ int Simulation::add_particle(double x_m, double y_m, double radius_m, std::uint8
   p_.type.push_back(type);
   p_.group.push_back(0);
   if (!absorbing_rate_.empty()) absorbing_rate_.push_back(0.0);
+  // Added to a running simulation: the next step's drift measures its move from where it starts (the neighbour
+  // lists are rebuilt after that drift).
+  if (initialised_) x_ref_.push_back(x_m), y_ref_.push_back(y_m);
   need_rebuild_ = true;
   return static_cast<int>(p_.size() - 1);
 }

@@ -42,8 +42,10 @@ one_error_line 2 run "$src/data/scenes/dem_tension.json" --out ""
 
 # The marker while in progress, and a rerun into the same directory: the stale temporary file of a killed run
 # and the files of the run before are gone, the user's own file stays.
+# The cut is long enough (about 10 times the wait for its first checkpoint, under the sanitizers too) to be
+# still running when it is killed on a loaded machine.
 small=(--set specimen.width_mm=0.4 --set specimen.height_mm=0.25 --set specimen.growth_steps=2000
-       --set specimen.relax_steps=500 --set cut.depth_of_cut_mm=0.05 --set cut.length_mm=0.08
+       --set specimen.relax_steps=500 --set cut.depth_of_cut_mm=0.05 --set cut.length_mm=0.25
        --set output.frame_every_samples=500 --set cut.speed_m_per_s=2)
 scene="$src/data/scenes/dem_cut.json"
 "$bin" run "$scene" "${small[@]}" --threads 1 --checkpoint-every 40 --out "$work/k" >/dev/null 2>&1 &

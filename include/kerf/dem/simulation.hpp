@@ -195,7 +195,7 @@ class Simulation {
   int n_touching_pairs() const;
   /// The complete state (particles, joints, contact lists with their shear springs, neighbour reference
   /// positions, walls, cracks, clock) as bytes: restoring it and running on gives bit-identical results to
-  /// an uninterrupted run. Format: "KERFDEM5", then each field as a length-prefixed raw array (native
+  /// an uninterrupted run. Format: "KERFDEM6", then each field as a length-prefixed raw array (native
   /// endianness, same build).
   std::string serialize() const;
   static Simulation deserialize(std::string_view bytes);
