@@ -7,7 +7,8 @@
 #
 # BIN_DIR holds kerf-dem (e.g. build/tools of a worktree of the commit before the change). Cases: the first
 # 0.04 mm of the seed-000 cut (regular 0.1 mm, trapezoidal-grooved 0.2 mm), the first 0.2 mm of the bundled
-# steady-state cut (active window), the bundled tension and
+# steady-state cut (active window), the first 0.8 mm of the same cut without a window on a 1.5 mm workpiece
+# (fragments fly off undamped: the neighbour search's strays), the bundled tension and
 # compression scenes (2 threads), the tiny calibration of tests/cli/dem_calibrate_cli.sh. About 5 min on
 # 2 cores, most of it the compression test and its quasi-static check. Exit 0 when everything is identical.
 set -uo pipefail
@@ -22,6 +23,9 @@ run_cases() {  # BIN_DIR DIR
   # The first 0.2 mm of the bundled steady-state cut (12 mm workpiece, active window, undamped glass).
   "$bin" run "$src/data/scenes/dem_cut_steady.json" --set cut.length_mm=0.2 --set output.frame_every_samples=0 \
     --out "$dir/steady02" --threads 2 >"$dir/steady02.log" 2>&1
+  "$bin" run "$src/data/scenes/dem_cut_steady.json" --set cut.length_mm=0.8 --set specimen.width_mm=1.5 \
+    --set active_window.enabled=false --set output.frame_every_samples=0 \
+    --out "$dir/whole08" --threads 2 >"$dir/whole08.log" 2>&1
   "$bin" run "$src/data/scenes/dem_tension.json" --out "$dir/tension" --threads 2 >"$dir/tension.log" 2>&1
   [ "$skip" = --skip-compression ] ||
     "$bin" run "$src/data/scenes/dem_compression.json" --out "$dir/compression" --threads 2 >"$dir/compression.log" 2>&1
@@ -34,7 +38,7 @@ run_cases "$old" "$out/old"
 run_cases "$new" "$out/new"
 rc=0
 for f in cut004/forces.csv cut004/cracks.csv cutg004/forces.csv cutg004/cracks.csv steady02/forces.csv \
-  steady02/cracks.csv tension/curve.csv \
+  steady02/cracks.csv whole08/forces.csv whole08/cracks.csv tension/curve.csv \
   tension/cracks.csv compression/curve.csv compression/cracks.csv calib/tiny_fj.json; do
   [ -f "$out/old/$f" ] || continue
   if cmp -s "$out/old/$f" "$out/new/$f"; then echo "same      $f"; else echo "DIFFERENT $f"; rc=1; fi
@@ -44,7 +48,7 @@ if cmp -s <(cut -d, -f1-10 "$out/old/calib/calibration_log.csv") <(cut -d, -f1-1
 else
   echo "DIFFERENT calib/calibration_log.csv"; rc=1
 fi
-for d in cut004 cutg004 tension compression calib; do
+for d in cut004 cutg004 steady02 whole08 tension compression calib; do
   [ -f "$out/old/$d/summary.json" ] || continue
   python3 - "$out/old/$d/summary.json" "$out/new/$d/summary.json" "$d" <<'PY' || rc=1
 import json, sys

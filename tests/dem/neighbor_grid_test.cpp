@@ -1,5 +1,6 @@
 // The cell-grid neighbour search against brute force: a packed assembly, fragments flown far away (the grid
-// then covers the bulk and clamps the rest into its edge cells), a long thin strip, and all disks at one point.
+// then covers the bulk, the strays outside it are paired through their occupied cells), strays touching the
+// bulk's edge, so many flown that no grid fits (every disk a stray), a long thin strip, all disks at one point.
 #include "kerf/dem/neighbor_grid.hpp"
 
 #include <catch2/catch.hpp>
@@ -69,6 +70,25 @@ TEST_CASE("neighbour grid: the pairs of brute force, near and far", "[neighbor_g
     for (int k = 0; k < 200; ++k) c.add(far(rng), 0.02 + far(rng), 12e-6);
     c.add(0.0, 0.02, 12e-6);  // two of them touching
     c.add(20e-6, 0.02, 12e-6);
+    require_same_as_brute_force(c, skin);
+  }
+  SECTION("a row of disks running out of the lattice, among strays (pairs across the grid's edge)") {
+    Cloud c = lattice(40, 40, 6);
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> far(-0.05, 0.05);
+    for (int k = 0; k < 300; ++k) c.add(far(rng), far(rng), 12e-6);  // enough strays to shrink the grid to the bulk
+    for (int k = 0; k < 60; ++k) c.add(0.5e-3 + 22e-6 * k, 0.4e-3, 11e-6);  // a row of disks across the lattice's right side
+    require_same_as_brute_force(c, skin);
+  }
+  SECTION("40 % flown in a wide fan (no central part fits a grid: every disk a stray)") {
+    Cloud c = lattice(40, 25, 8);
+    std::mt19937_64 rng(9);
+    std::uniform_real_distribution<double> angle(0, 3), distance(0, 0.3);
+    for (int k = 0; k < 700; ++k) {
+      const double a = angle(rng), d = distance(rng);
+      c.add(0.5e-3 + d * std::cos(a), 0.5e-3 + d * std::sin(a), 12e-6);
+    }
+    for (int k = 0; k < 5; ++k) c.add(0.1 + 23e-6 * k, 0.1, 12e-6);  // a flown chip, touching along its row
     require_same_as_brute_force(c, skin);
   }
   SECTION("every disk at one point") {
