@@ -3,13 +3,16 @@
 same seeds of data/studies/steady_speed_undamped.json): the items of each study directory are matched by tool
 speed and packing seed, and for the main and thrust forces the script prints both means with the cuts' own
 errors (sqrt(sum sem^2) / n), the difference with that error and with the spread of the paired differences
-(std / sqrt(n)), and the mean active-window disks, steady damage depth (with the window's floor), steady
-subsurface cracks and wall time of each set.
+(std / sqrt(n)), and the mean active-window disks (a cut without a window: the workpiece's), steady damage
+depth (with the window's floor), steady subsurface cracks and wall time of each set, and, from each item's
+forces.csv over the steady part, the share of samples with the tool in contact (main force > 0), the mean main
+force while in contact and the main force's 99th percentile.
 
     python3 bench/compare_steady_cuts.py BASE_STUDY_DIR[:C] OTHER_STUDY_DIR[:C]
 
 A directory followed by :C takes only its condition C's items (a study with several conditions at one speed).
 """
+import csv
 import json
 import math
 import pathlib
@@ -27,8 +30,24 @@ def items(spec):
     out = {}
     for item_dir in item_dirs(spec):
         s = json.loads((item_dir / "summary.json").read_text())
+        s["item_dir"] = item_dir
         out[(s["cut"]["cut"]["speed_m_per_s"], s["study_item"]["seed"])] = s
     return out
+
+
+def contact_statistics(item_dir, steady_from_mm):
+    """Share of the steady samples with a main force > 0, mean main force over them, and its 99th percentile."""
+    with open(item_dir / "forces.csv", newline="") as f:
+        main = [float(r["main_force_N"]) for r in csv.DictReader(f) if float(r["tool_travel_mm"]) >= steady_from_mm]
+    touching = [x for x in main if x > 0]
+    p99 = sorted(main)[min(len(main) - 1, int(0.99 * len(main)))]
+    return len(touching) / len(main), statistics.mean(touching) if touching else 0.0, p99
+
+
+def window_of(s):
+    """Mean disks integrated and the window's floor (um below the cut line; none without a window)."""
+    w = s.get("active_window")
+    return (w["mean_window_particles"], w["damage_depth_limit_um"]) if w else (s["n_particles"], math.nan)
 
 
 def main():
@@ -50,11 +69,15 @@ def main():
               f"the paired spread), {100 * diff / statistics.mean(b):+.0f} % +- {100 * math.hypot(b_se, o_se) / statistics.mean(b):.0f} %")
     for name, study in (("base", base), ("other", other)):
         mean = lambda f: statistics.mean(f(study[p]) for p in pairs)  # noqa: E731
-        print(f"{name}: {mean(lambda s: s['active_window']['mean_window_particles']):.0f} disks integrated, steady damage "
+        contact = {p: contact_statistics(study[p]["item_dir"], study[p]["results"]["steady_from_travel_mm"]) for p in pairs}
+        print(f"{name}: {mean(lambda s: window_of(s)[0]):.0f} disks integrated, steady damage "
               f"depth {mean(lambda s: s['results']['subsurface_damage_depth_steady_um']):.0f} um (window floor "
-              f"{mean(lambda s: s['active_window']['damage_depth_limit_um']):.0f} um), "
+              f"{mean(lambda s: window_of(s)[1]):.0f} um), "
               f"{mean(lambda s: s['results']['cracks_subsurface_steady']):.0f} steady subsurface cracks, "
-              f"{mean(lambda s: s['study_item']['wall_time_s']):.0f} s per cut")
+              f"{mean(lambda s: s['study_item']['wall_time_s']):.0f} s per cut; tool in contact in "
+              f"{100 * statistics.mean(c[0] for c in contact.values()):.1f} % of the steady samples, main force "
+              f"{statistics.mean(c[1] for c in contact.values()):.2f} N while in contact, 99th percentile "
+              f"{statistics.mean(c[2] for c in contact.values()):.2f} N")
 
 
 if __name__ == "__main__":

@@ -1,0 +1,84 @@
+#!/usr/bin/env python3
+"""The steady cut's mean forces against the window's size: for each series (windows of one workpiece), the mean
+main and thrust forces over the packings every set of the series has, with the cuts' own errors
+(sqrt(sum sem^2) / n), against the mean number of disks integrated (log scale); a cut without a window (every
+disk active) is drawn as a horizontal line with its error band. Prints the table and draws the figure.
+
+    python3 bench/plot_window_convergence.py OUT.png "LABEL=STUDY_DIR[:C];STUDY_DIR[:C];..." [...]
+
+Needs numpy and matplotlib (/usr/bin/python3 on Debian).
+"""
+import math
+import pathlib
+import statistics
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+from compare_steady_cuts import items, window_of  # noqa: E402
+
+
+def series_points(specs):
+    sets = [items(spec) for spec in specs]
+    common = sorted(set.intersection(*(set(s) for s in sets)))
+    if not common:
+        sys.exit(f"no packing in every set of {specs}")
+    points = []
+    for spec, study in zip(specs, sets):
+        n = len(common)
+        w = study[common[0]]["cut"].get("active_window", {"enabled": False})
+        point = {"spec": spec, "n": n, "windowed": w["enabled"],
+                 "window": ", ".join(f"{w[k + '_depths']:g}" for k in ("ahead", "behind", "below", "above"))
+                 if w["enabled"] else "no window",
+                 "disks": statistics.mean(window_of(study[p])[0] for p in common)}
+        for force in ("main", "thrust"):
+            point[force] = statistics.mean(study[p]["results"][f"{force}_force_N"] for p in common)
+            point[force + "_se"] = math.sqrt(sum(study[p]["results"][f"{force}_force_sem_N"] ** 2 for p in common)) / n
+        points.append(point)
+    return points
+
+
+def main():
+    if len(sys.argv) < 3:
+        sys.exit(__doc__)
+    fig, axes = plt.subplots(1, 2, figsize=(10, 4.2))
+    for k, arg in enumerate(sys.argv[2:]):
+        label, specs = arg.split("=", 1)
+        points = series_points(specs.split(";"))
+        colour = f"C{k}"
+        print(f"{label}:")
+        for p in points:
+            print(f"  {p['spec']} ({p['window']}): {p['n']} packings, {p['disks']:.0f} disks, main {p['main']:.3f} +- {p['main_se']:.3f} N, "
+                  f"thrust {p['thrust']:.3f} +- {p['thrust_se']:.3f} N" + ("" if p["windowed"] else " (no window)"))
+        for ax, force in zip(axes, ("main", "thrust")):
+            windows = [p for p in points if p["windowed"]]
+            ax.errorbar([p["disks"] for p in windows], [p[force] for p in windows],
+                        yerr=[p[force + "_se"] for p in windows], fmt="o-", color=colour, capsize=3,
+                        label=f"{label} ({windows[0]['n'] if windows else points[0]['n']} packings)")
+            for p in windows:
+                ax.annotate(p["window"], (p["disks"], p[force]), textcoords="offset points", xytext=(4, 4),
+                            fontsize=7, color=colour)
+            for p in points:
+                if p["windowed"]:
+                    continue
+                ax.axhline(p[force], color=colour, ls="--", lw=1)
+                ax.axhspan(p[force] - p[force + "_se"], p[force] + p[force + "_se"], color=colour, alpha=0.15)
+                ax.plot([], [], color=colour, ls="--", label=f"{label}: every disk active ({p['disks']:.0f} disks)")
+    for ax, force in zip(axes, ("main", "thrust")):
+        ax.set_xscale("log")
+        ax.set_xlabel("disks integrated (mean over the cut)")
+        ax.set_ylabel(f"steady {force} force (N per mm of width)")
+        ax.set_ylim(bottom=0)
+        ax.grid(True, which="both", alpha=0.3)
+    axes[0].legend(fontsize=7, loc="lower left")
+    fig.suptitle("windows as depths of cut ahead, behind, below, above the edge", fontsize=9)
+    fig.tight_layout()
+    fig.savefig(sys.argv[1], dpi=130)
+
+
+if __name__ == "__main__":
+    main()
