@@ -1,4 +1,4 @@
-// Cell-grid neighbour search (linked cells via counting sort), O(N) per rebuild.
+// Cell-grid neighbour search (linked cells via counting sort), O(N) per rebuild; strays by sorted cell keys.
 #include "kerf/dem/neighbor_grid.hpp"
 
 #include <algorithm>
