@@ -35,6 +35,11 @@ def items(spec):
     return out
 
 
+def own_error(study, pairs, force):
+    """The standard error of the mean force over the packings `pairs` from the cuts' own errors: sqrt(sum sem^2) / n."""
+    return math.sqrt(sum(study[p]["results"][f"{force}_force_sem_N"] ** 2 for p in pairs)) / len(pairs)
+
+
 def contact_statistics(item_dir, steady_from_mm):
     """Share of the steady samples with a main force > 0, mean main force over them, and its 99th percentile."""
     with open(item_dir / "forces.csv", newline="") as f:
@@ -60,8 +65,7 @@ def main():
     for force in ("main", "thrust"):
         b = [base[p]["results"][f"{force}_force_N"] for p in pairs]
         o = [other[p]["results"][f"{force}_force_N"] for p in pairs]
-        b_se = math.sqrt(sum(base[p]["results"][f"{force}_force_sem_N"] ** 2 for p in pairs)) / n
-        o_se = math.sqrt(sum(other[p]["results"][f"{force}_force_sem_N"] ** 2 for p in pairs)) / n
+        b_se, o_se = own_error(base, pairs, force), own_error(other, pairs, force)
         diff = statistics.mean(o) - statistics.mean(b)
         paired = statistics.stdev(x - y for x, y in zip(o, b)) / math.sqrt(n) if n > 1 else float("nan")
         print(f"{force}: base {statistics.mean(b):.3f} +- {b_se:.3f} N, other {statistics.mean(o):.3f} +- {o_se:.3f} N; "

@@ -12,23 +12,15 @@
 #include <optional>
 #include <random>
 #include <span>
-#include <stdexcept>
 #include <string>
 #include <tuple>
 #include <utility>
 #include <vector>
 
-namespace kerf {
-struct ModelError : std::runtime_error {
-  ModelError(const char*, const char* what) : std::runtime_error(what) {}
-};
-}  // namespace kerf
+#include "kerf/dem/neighbor_grid.hpp"
+#include "kerf/error.hpp"
+
 namespace kerf::dem {
-struct CandidatePair {
-  std::int32_t i, j;
-  friend bool operator==(const CandidatePair&, const CandidatePair&) = default;
-  friend bool operator<(const CandidatePair& a, const CandidatePair& b) { return a.i != b.i ? a.i < b.i : a.j < b.j; }
-};
 namespace old_grid {
 #include OLD_GRID
 }

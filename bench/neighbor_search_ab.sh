@@ -12,6 +12,6 @@ body() {  # the file's code between its includes and the end of its namespace
 }
 git -C "$src" show "$1:dem/neighbor_grid.cpp" | body > "$tmp/old.inc"
 body < "$src/dem/neighbor_grid.cpp" > "$tmp/new.inc"
-g++ -std=c++20 -O3 -DNDEBUG -DOLD_GRID="\"$tmp/old.inc\"" -DNEW_GRID="\"$tmp/new.inc\"" \
-  "$src/bench/neighbor_search_ab.cpp" -o "$tmp/ab"
+g++ -std=c++20 -O3 -DNDEBUG -I"$src/include" -DOLD_GRID="\"$tmp/old.inc\"" -DNEW_GRID="\"$tmp/new.inc\"" \
+  "$src/bench/neighbor_search_ab.cpp" "$src/src/error.cpp" -lfmt -o "$tmp/ab"
 "$tmp/ab"

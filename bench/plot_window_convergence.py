@@ -8,7 +8,6 @@ disk active) is drawn as a horizontal line with its error band. Prints the table
 
 Needs numpy and matplotlib (/usr/bin/python3 on Debian).
 """
-import math
 import pathlib
 import statistics
 import sys
@@ -19,7 +18,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from compare_steady_cuts import items, window_of  # noqa: E402
+from compare_steady_cuts import items, own_error, window_of  # noqa: E402
 
 
 def series_points(specs):
@@ -37,7 +36,7 @@ def series_points(specs):
                  "disks": statistics.mean(window_of(study[p])[0] for p in common)}
         for force in ("main", "thrust"):
             point[force] = statistics.mean(study[p]["results"][f"{force}_force_N"] for p in common)
-            point[force + "_se"] = math.sqrt(sum(study[p]["results"][f"{force}_force_sem_N"] ** 2 for p in common)) / n
+            point[force + "_se"] = own_error(study, common, force)
         points.append(point)
     return points
 
@@ -53,7 +52,7 @@ def main():
         print(f"{label}:")
         for p in points:
             print(f"  {p['spec']} ({p['window']}): {p['n']} packings, {p['disks']:.0f} disks, main {p['main']:.3f} +- {p['main_se']:.3f} N, "
-                  f"thrust {p['thrust']:.3f} +- {p['thrust_se']:.3f} N" + ("" if p["windowed"] else " (no window)"))
+                  f"thrust {p['thrust']:.3f} +- {p['thrust_se']:.3f} N")
         for ax, force in zip(axes, ("main", "thrust")):
             windows = [p for p in points if p["windowed"]]
             ax.errorbar([p["disks"] for p in windows], [p[force] for p in windows],

@@ -61,7 +61,6 @@ struct GridCells {
 };
 /// The strays and the grid's particles near its edge (`sparse`), and their cells.
 struct StrayCells {
-  const std::uint8_t* stray = nullptr;     ///< per particle: outside the grid's box
   const std::int32_t* sparse = nullptr;    ///< the points of `cells`
   const std::int32_t* sparse_of = nullptr; ///< per particle: its index in `sparse`, or -1
   const SparseCells* cells = nullptr;
@@ -96,7 +95,7 @@ void grid_pairs(std::span<const double> x, std::span<const double> y, std::span<
         for (std::size_t d = 0; d < 3; ++d)
           for (auto k = range[2 * d]; k < range[2 * d + 1]; ++k) {
             const std::int32_t j = s.sparse[static_cast<std::size_t>(s.cells->keyed[static_cast<std::size_t>(k)].second)];
-            if (s.stray[i] || s.stray[static_cast<std::size_t>(j)]) consider(i, j);
+            if (g.cell_of[i] == kStray || g.cell_of[j] == kStray) consider(i, j);
           }
       }
     }
@@ -167,11 +166,10 @@ void find_candidate_pairs(std::span<const double> x, std::span<const double> y, 
   bool any_stray = false;
   std::vector<std::int32_t> cell_of(n), sparse;
   std::vector<std::int32_t> start(static_cast<std::size_t>(nx * ny + 1), 0);
-  std::vector<std::uint8_t> stray(bulk_only ? n : 0, 0);  // outside the grid's box
   for (std::size_t i = 0; i < n; ++i) {
     const bool inside = x[i] >= gx0 && x[i] <= gx1 && y[i] >= gy0 && y[i] <= gy1;
     if (!inside) {
-      cell_of[i] = kStray, stray[i] = 1, any_stray = true;
+      cell_of[i] = kStray, any_stray = true;
       sparse.push_back(static_cast<std::int32_t>(i));
       continue;
     }
@@ -194,7 +192,7 @@ void find_candidate_pairs(std::span<const double> x, std::span<const double> y, 
 
   const GridCells grid{nx, ny, cell_of.data(), start.data(), members.data()};
   if (strays)
-    grid_pairs<true>(x, y, r, skin_m, grid, {stray.data(), sparse.data(), sparse_of.data(), &*strays}, pairs);
+    grid_pairs<true>(x, y, r, skin_m, grid, {sparse.data(), sparse_of.data(), &*strays}, pairs);
   else
     grid_pairs<false>(x, y, r, skin_m, grid, {}, pairs);
 }
