@@ -10,7 +10,8 @@ force while in contact and the main force's 99th percentile.
 
     python3 bench/compare_steady_cuts.py BASE_STUDY_DIR[:C] OTHER_STUDY_DIR[:C]
 
-A directory followed by :C takes only its condition C's items (a study with several conditions at one speed).
+A directory followed by :C takes only its condition C's items (a study with several conditions at one speed);
+a suffix @A-B only the packing seeds A to B.
 """
 import csv
 import json
@@ -21,9 +22,15 @@ import sys
 
 
 def item_dirs(spec):
-    """The finished items of STUDY_DIR, or of its condition C for STUDY_DIR:C, in name order."""
+    """The finished items of STUDY_DIR, or of its condition C for STUDY_DIR:C, in name order; a suffix @A-B keeps
+    only the packing seeds A to B (STUDY_DIR@1-4, STUDY_DIR:2@1-4)."""
+    spec, seeds = spec.rsplit("@", 1) if "@" in spec else (spec, None)
     study_dir, condition = spec.rsplit(":", 1) if ":" in spec else (spec, "*")
-    return sorted((pathlib.Path(study_dir) / "items").glob(f"condition_{condition}_seed_*"))
+    found = sorted((pathlib.Path(study_dir) / "items").glob(f"condition_{condition}_seed_*"))
+    if seeds is None:
+        return found
+    first, last = (int(v) for v in seeds.split("-", 1))
+    return [d for d in found if first <= int(d.name.rsplit("_", 1)[1]) <= last]
 
 
 def items(spec):
