@@ -14,9 +14,11 @@
 #include <iostream>
 #include <limits>
 #include <mutex>
+#include <optional>
 #include <set>
 #include <thread>
 
+#include "kerf/dem/checkpoint.hpp"
 #include "kerf/dem/scene.hpp"
 #include "kerf/dem/study_mpi.hpp"
 #include "kerf/error.hpp"
@@ -224,7 +226,8 @@ Json study_item_result_to_json(const StudyItemResult& r) {
   for (const auto& [name, value] : r.results) results.push_back(Json::array({name, value}));
   return Json{{"condition", r.item.condition}, {"replicate", r.item.replicate}, {"seed", r.item.seed},
               {"ok", r.ok},           {"error", r.error},         {"results", results},
-              {"wall_time_s", r.wall_time_s}, {"host", r.host}, {"rank", r.rank}, {"reused", r.reused}};
+              {"wall_time_s", r.wall_time_s}, {"host", r.host}, {"rank", r.rank}, {"reused", r.reused},
+              {"resumed_from_sample", r.resumed_from_sample}};
 }
 
 StudyItemResult study_item_result_from_json(const Json& j) {
@@ -237,6 +240,7 @@ StudyItemResult study_item_result_from_json(const Json& j) {
   r.host = j.at("host").get<std::string>();
   r.rank = j.at("rank").get<int>();
   r.reused = j.at("reused").get<bool>();
+  r.resumed_from_sample = j.at("resumed_from_sample").get<int>();
   return r;
 }
 
@@ -273,6 +277,20 @@ Json without_description(Json scene) {
   return scene;
 }
 
+/// The checkpoint a killed run of the item left in its directory `partial`, if it is of the item's scene `doc`
+/// (its description aside); none when there is none, or it is damaged or of another scene.
+std::optional<Checkpoint> item_checkpoint(const fs::path& partial, const Json& doc) {
+  std::error_code error;
+  if (!fs::is_regular_file(partial / "checkpoint.bin", error)) return std::nullopt;
+  try {
+    Checkpoint c = read_checkpoint(partial);
+    if (without_description(c.scene) == without_description(doc)) return c;
+  } catch (const std::exception&) {
+    // Damaged or of another version: the item runs from its start.
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 Json read_study_item_summary(const fs::path& out, const StudyItem& item) {
@@ -280,14 +298,15 @@ Json read_study_item_summary(const fs::path& out, const StudyItem& item) {
 }
 
 StudyItemResult run_study_item(const StudySpec& spec, const StudyItem& item, const fs::path& out, int threads,
-                               int rank, const ProgressCallback& on_progress) {
+                               int rank, double checkpoint_every_s, const ProgressCallback& on_progress) {
   StudyItemResult r;
   r.item = item;
   r.host = host_name();
   r.rank = rank;
   const fs::path items = out / "items";
   const fs::path final_dir = items / study_item_name(item);
-  const fs::path partial = items / fmt::format(".partial-{}-{}-{}", study_item_name(item), r.host, getpid());
+  // One name per item, so that a rerun finds a killed run's checkpoint (one process runs an item at a time).
+  const fs::path partial = items / (".partial-" + study_item_name(item));
   const auto start = std::chrono::steady_clock::now();
   try {
     std::vector<std::string> overrides;
@@ -326,11 +345,17 @@ StudyItemResult run_study_item(const StudySpec& spec, const StudyItem& item, con
         named.stage = name + ": " + u.stage;
         on_progress(named);
       };
+    if (scene.kind->writes_checkpoints()) options.checkpoint_every_s = checkpoint_every_s;
     scene.kind->check_options(options, scene.common);
-    fs::remove_all(partial, error);
-    fs::create_directories(partial);
+    const std::optional<Checkpoint> saved = item_checkpoint(partial, doc);
+    if (!saved) {
+      fs::remove_all(partial, error);
+      fs::create_directories(partial);
+    }
     omp_set_num_threads(std::max(1, threads));
-    SceneOutcome outcome = scene.kind->run(scene.common, SceneRun{doc, spec.scene_dir.string(), options});
+    const SceneRun run{doc, spec.scene_dir.string(), options};
+    SceneOutcome outcome = saved ? scene.kind->resume(scene.common, run, *saved) : scene.kind->run(scene.common, run);
+    if (saved) r.resumed_from_sample = saved->sample_index;  // >= 1: none is written before the first sample
     r.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     Json summary = outcome.summary;
     summary["provenance"] = run_provenance(options.command_line, spec.scene_path, overrides);
@@ -338,7 +363,8 @@ StudyItemResult run_study_item(const StudySpec& spec, const StudyItem& item, con
                                  {"seed", item.seed},        {"scene", doc},
                                  {"wall_time_s", r.wall_time_s}, {"host", r.host},
                                  {"rank", rank},             {"threads", std::max(1, threads)},
-                                 {"exit_status", outcome.exit_status}};
+                                 {"exit_status", outcome.exit_status},
+                                 {"resumed_from_sample", r.resumed_from_sample}};
     write_file_atomically(partial / "summary.json", summary.dump(2) + "\n");
     // Whole or not at all: the finished directory replaces a stale one in one rename.
     fs::remove_all(final_dir, error);
@@ -350,7 +376,8 @@ StudyItemResult run_study_item(const StudySpec& spec, const StudyItem& item, con
     else r.error = fmt::format("the run ended with exit status {} (a calibration that did not converge)", outcome.exit_status);
   } catch (const std::exception& e) {
     std::error_code ignored;
-    fs::remove_all(partial, ignored);
+    // A checkpoint stays for the rerun (a run stopped by its caller, e.g. Ctrl-C in Python, continues there).
+    if (!fs::is_regular_file(partial / "checkpoint.bin", ignored)) fs::remove_all(partial, ignored);
     r.ok = false;
     r.error = printable(e.what());
     r.exception = std::current_exception();
@@ -502,8 +529,10 @@ std::string StudyProgress::line(const StudyScheduler& s) const {
 
 void StudyProgress::item_done(const StudyItemResult& r, const StudyScheduler& s) {
   if (log_) {
-    std::cout << fmt::format("study: {} {} in {:.3g} s on {} rank {}{} | {}\n", study_item_name(r.item),
-                             r.reused ? "reused" : (r.ok ? "done" : "FAILED"), r.wall_time_s, r.host, r.rank,
+    const std::string resumed =
+        r.resumed_from_sample > 0 ? fmt::format(" (resumed from sample {})", r.resumed_from_sample) : std::string();
+    std::cout << fmt::format("study: {} {}{} in {:.3g} s on {} rank {}{} | {}\n", study_item_name(r.item),
+                             r.reused ? "reused" : (r.ok ? "done" : "FAILED"), resumed, r.wall_time_s, r.host, r.rank,
                              r.ok ? "" : ": " + r.error, line(s));
     std::cout.flush();
   }
@@ -765,7 +794,8 @@ StudyOutcome run_study_local(const StudySpec& spec, const StudyOptions& options)
         continue;
       }
       try {
-        StudyItemResult r = run_study_item(spec, *item, options.out, inner, 0, options.on_progress);
+        StudyItemResult r =
+            run_study_item(spec, *item, options.out, inner, 0, options.checkpoint_every_s, options.on_progress);
         const std::lock_guard<std::mutex> lock(mutex);
         if (!r.ok && options.stop_at_first_failure && !stopped)
           stopped = r.exception ? r.exception : std::make_exception_ptr(ModelError(study_item_name(r.item), r.error));
@@ -788,8 +818,13 @@ StudyOutcome run_study_local(const StudySpec& spec, const StudyOptions& options)
 std::size_t prepare_study_directory(const StudySpec& spec, const fs::path& out) {
   const fs::path items = out / "items";
   fs::create_directories(items);
-  for (const auto& entry : fs::directory_iterator(items))  // a killed run's items in flight
-    if (entry.path().filename().string().rfind(".partial-", 0) == 0) fs::remove_all(entry.path());
+  // A killed run's items in flight: those with a checkpoint stay (their items continue from it).
+  std::vector<fs::path> stale;
+  for (const auto& entry : fs::directory_iterator(items)) {
+    const bool partial = entry.path().filename().string().rfind(".partial-", 0) == 0;
+    if (partial && !fs::is_regular_file(entry.path() / "checkpoint.bin")) stale.push_back(entry.path());
+  }
+  for (const fs::path& dir : stale) fs::remove_all(dir);
   // The finished items there, by the scene they ran (a directory of a killed re-homing included).
   std::map<std::string, fs::path> finished;
   for (const auto& entry : fs::directory_iterator(items)) {

@@ -158,7 +158,8 @@ void work(const StudySpec& spec, const StudyOptions& options, int rank, int thre
     if (status.MPI_TAG == kStop) return;
     const Json j = Json::parse(text);
     const StudyItem item{j.at("condition").get<int>(), j.at("replicate").get<int>(), j.at("seed").get<std::uint64_t>()};
-    last = study_item_result_to_json(run_study_item(spec, item, options.out, threads, rank)).dump();
+    last = study_item_result_to_json(run_study_item(spec, item, options.out, threads, rank, options.checkpoint_every_s))
+               .dump();
   }
 }
 

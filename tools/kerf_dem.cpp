@@ -5,7 +5,7 @@
 //                [--log-every N]   (log lines on stdout when it is not a terminal)
 //   kerf-dem resume DIR [--threads N]
 //   kerf-dem keys [SECTION]      the Markdown key table of every scene section (docs/dem.md), or of one
-//   kerf-dem study STUDY.json --out DIR [--threads N] [--threads-per-rank N]
+//   kerf-dem study STUDY.json --out DIR [--threads N] [--threads-per-rank N] [--checkpoint-minutes M]
 //                a study (kerf/dem/study.hpp); under `mpirun -np N` across ranks (built with MPI)
 //
 // Exit status 2 for bad input (the message names the field, the value and what was expected), 3 when the
@@ -112,6 +112,11 @@ int main(int argc, char** argv) {
   study->add_option("--threads-per-rank", study_options.threads_per_rank,
                     "under mpirun: OpenMP threads of each worker rank (default: the cores the launcher gives it)")
       ->check(CLI::Range(1, 1024));
+  double checkpoint_minutes = study_options.checkpoint_every_s / 60;
+  study->add_option("--checkpoint-minutes", checkpoint_minutes,
+                    "items of tension, compression, calibrate and cut scenes: a checkpoint every M minutes in "
+                    "OUT/items/.partial-NAME, from which a rerun continues a killed item (default: 10; 0: none)")
+      ->check(CLI::Range(0.0, 1e6));
   const auto error = [](const std::string& what, int status) {
     std::cerr << kProgram << ": error: " << kerf::printable(what) << "\n";
     return status;
@@ -133,6 +138,7 @@ int main(int argc, char** argv) {
     if (study->parsed()) {
       study_options.out = out_dir;
       study_options.threads = threads;
+      study_options.checkpoint_every_s = 60 * checkpoint_minutes;
       study_options.log_lines = !isatty(STDOUT_FILENO);
       study_options.command_line = kerf::command_line(argc, argv);
       return kerf::dem::run_study(study_path, study_options).exit_status;

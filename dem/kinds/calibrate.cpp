@@ -94,6 +94,7 @@ Json macro_json(const MacroProperties& m) { return fields_to_json(target_fields(
 
 class CalibrateKind final : public SceneKind {
  public:
+  bool writes_checkpoints() const override { return true; }
   void read(ObjectReader& root, const SceneCommon&) override {
     auto& c = spec_;
     ObjectReader cal = root.get_object("calibration");
@@ -161,7 +162,7 @@ class CalibrateKind final : public SceneKind {
                        csv_number(e.wall_time_s)});
       write_file_atomically(out / "calibration_log.csv", log);
       done.push_back(e);
-      if (checkpoint_every > 0)
+      if (run.options.checkpoints())
         write_checkpoint(out, {run.doc, summary, {}, static_cast<int>(done.size()), checkpoint_every, run.scene_dir,
                                std::string(), serialize_evaluations(done)});
       std::cout << fmt::format("evaluation {}: E* {:.2f} GPa, kappa {:.3f}, sigma_c {:.1f} MPa, c {:.1f} MPa -> E {:.2f} GPa, "

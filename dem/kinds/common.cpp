@@ -17,6 +17,19 @@ namespace kerf::dem::kinds {
 
 ProgressTarget progress_target(const RunOptions& options) { return {options.show_progress, options.on_progress, ""}; }
 
+CheckpointSchedule::CheckpointSchedule(const RunOptions& options)
+    : every_samples_(options.checkpoint_every),
+      every_(options.checkpoint_every_s),
+      last_(std::chrono::steady_clock::now()) {}
+
+bool CheckpointSchedule::due(int sample_index) {
+  const bool by_samples = every_samples_ > 0 && sample_index % every_samples_ == 0;
+  const auto now = std::chrono::steady_clock::now();
+  const bool by_time = every_.count() > 0 && now - last_ >= every_;
+  if (by_samples || by_time) last_ = now;
+  return by_samples || by_time;
+}
+
 namespace {
 /// One callback at a time across threads (replicates side by side); a mutex, not an OpenMP critical section,
 /// so that an exception the callback throws (a Python KeyboardInterrupt) leaves it unlocked.

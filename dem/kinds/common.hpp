@@ -1,6 +1,7 @@
 #pragma once
 // What the scene kinds share (internal to dem/kinds/): the specimen (genesis or file), the summary's head,
 // VTK frames, the material a calibration writes, and the factories the kind registry calls.
+#include <chrono>
 #include <filesystem>
 #include <optional>
 #include <memory>
@@ -73,6 +74,20 @@ StartedSources start_specimen_sources(const SceneCommon& scene, const std::strin
 
 /// Writes OUT/summary.json.
 void write_summary(const fs::path& out, const Json& summary);
+
+/// When a run writes its next checkpoint (RunOptions): every checkpoint_every samples, and at the first
+/// sample after checkpoint_every_s of wall time since the last one (or the start).
+class CheckpointSchedule {
+ public:
+  explicit CheckpointSchedule(const RunOptions& options);
+  /// Whether to write one after sample `sample_index`; true restarts the wall-time interval.
+  bool due(int sample_index);
+
+ private:
+  int every_samples_;
+  std::chrono::duration<double> every_;
+  std::chrono::steady_clock::time_point last_;
+};
 
 /// Where a run stands between checkpoints: frames written, samples done.
 struct RunProgress {

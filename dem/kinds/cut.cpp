@@ -40,9 +40,11 @@ SampleState cut_sample(const CutRun& run) {
 }
 
 /// Runs (or continues, from a checkpoint) a cut to the end of its travel and writes the outputs; returns the
-/// summary. `doc` and `checkpoint_every` are for the checkpoints (none: 0).
-Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& doc, Json summary, const fs::path& out,
-                  int checkpoint_every, CutRun run, RunProgress tp) {
+/// summary. `doc` and the options' checkpoint interval are for the checkpoints.
+Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& doc, Json summary,
+                  const RunOptions& options, CutRun run, RunProgress tp) {
+  const fs::path& out = options.out;
+  CheckpointSchedule checkpoints(options);
   const int frame_every = common.output.frame_every_samples;
   const auto write_frame = [&](const Simulation& sim) { write_frame_files(out, sim, tp); };
   if (frame_every > 0 && tp.sample_index == 0) write_frame(run.simulation());
@@ -54,10 +56,10 @@ Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& d
     ++tp.sample_index;
     progress.advance(n * cut.sample_every_steps, cut_sample(run));
     if (frame_every > 0 && tp.sample_index % frame_every == 0) write_frame(run.simulation());
-    if (checkpoint_every > 0 && tp.sample_index % checkpoint_every == 0)
+    if (checkpoints.due(tp.sample_index))
       // The cut holds its own workpiece: the checkpoint's specimen part stays empty.
-      write_checkpoint(out, {doc, summary, tp.frames, tp.sample_index, checkpoint_every, tp.scene_dir, std::string(),
-                             run.serialize()});
+      write_checkpoint(out, {doc, summary, tp.frames, tp.sample_index, options.checkpoint_every, tp.scene_dir,
+                             std::string(), run.serialize()});
   }
   progress.finish(cut_sample(run));  // the last sample (advance returned false)
   if (frame_every > 0) write_frame(run.simulation());
@@ -138,6 +140,7 @@ Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& d
 class CutKind final : public SceneKind {
  public:
   void read(ObjectReader& root, const SceneCommon&) override { cut_ = read_cut_params(root); }
+  bool writes_checkpoints() const override { return true; }
 
   void check_options(const RunOptions& options, const SceneCommon& common) const override {
     if (options.replicates > 1 && common.specimen_file)
@@ -154,15 +157,15 @@ class CutKind final : public SceneKind {
     Json& summary = started.summary;
     // CutRun checks the cut against the workpiece and the time step before the first step.
     return {0,
-            continue_cut(common, cut_, run.doc, std::move(summary), o.out, o.checkpoint_every, CutRun(specimen, cut_),
+            continue_cut(common, cut_, run.doc, std::move(summary), o, CutRun(specimen, cut_),
                          {{}, 0, run.scene_dir, progress_target(o)}),
             {}};
   }
 
   SceneOutcome resume(const SceneCommon& common, const SceneRun& run, const Checkpoint& c) override {
     return {0,
-            continue_cut(common, cut_, c.scene, c.summary, run.options.out, c.checkpoint_every,
-                         CutRun::deserialize(c.run), {c.frames, c.sample_index, c.scene_dir, progress_target(run.options)}),
+            continue_cut(common, cut_, c.scene, c.summary, run.options, CutRun::deserialize(c.run),
+                         {c.frames, c.sample_index, c.scene_dir, progress_target(run.options)}),
             {}};
   }
 

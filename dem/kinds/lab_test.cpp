@@ -50,6 +50,7 @@ LabTestResult run_test(const Simulation& specimen, const LoadingSpec& loading, c
 class LabTestKind final : public SceneKind {
  public:
   explicit LabTestKind(LabTest test) : test_(test) {}
+  bool writes_checkpoints() const override { return true; }
 
   void read(ObjectReader& root, const SceneCommon&) override {
     if (auto loading = root.find_object("loading")) {
@@ -86,7 +87,7 @@ class LabTestKind final : public SceneKind {
   SceneOutcome continue_test(const SceneCommon& common, const SceneRun& scene_run, const Simulation& specimen,
                              Json summary, LabTestRun run, RunProgress tp) const {
     const fs::path& out = scene_run.options.out;
-    const int checkpoint_every = scene_run.options.checkpoint_every;
+    CheckpointSchedule checkpoints(scene_run.options);
     const int frame_every = common.output.frame_every_samples;
     // Frames: every frame_every_samples samples, plus the final state.
     const auto write_frame = [&](const Simulation& sim) { write_frame_files(out, sim, tp); };
@@ -103,9 +104,9 @@ class LabTestKind final : public SceneKind {
       ++tp.sample_index;
       progress.advance(n * loading_.sample_every_steps, last_sample());
       if (frame_every > 0 && tp.sample_index % frame_every == 0) write_frame(run.simulation());
-      if (checkpoint_every > 0 && tp.sample_index % checkpoint_every == 0)
-        write_checkpoint(out, {scene_run.doc, summary, tp.frames, tp.sample_index, checkpoint_every, tp.scene_dir,
-                               specimen.serialize(), run.serialize()});
+      if (checkpoints.due(tp.sample_index))
+        write_checkpoint(out, {scene_run.doc, summary, tp.frames, tp.sample_index, scene_run.options.checkpoint_every,
+                               tp.scene_dir, specimen.serialize(), run.serialize()});
     }
     // The last sample (advance returned false).
     progress.finish(last_sample());

@@ -44,8 +44,9 @@ std::size_t remove_stale_temporaries(const std::filesystem::path& dir);
 /// A run's hold on its output directory, from its start to its end. On construction: the directory is
 /// checked writable, the temporary files of a killed run are removed, and so are the files the previous run
 /// into it listed in its manifest (DIR/.kerf-outputs; `fresh` false, for a resumed run, keeps them;
-/// a study's items are moved into place whole from a directory the manifest lists, so they stay); DIR/kerf.running marks the run in
-/// progress. Every file written into DIR while
+/// a study's items are moved into place whole from a directory the manifest lists, so they stay, and its
+/// items in flight, under a directory .partial-NAME, are the study's to continue or remove); DIR/kerf.running
+/// marks the run in progress. Every file written into DIR while
 /// it lives is listed in the manifest. The destructor removes the marker (a killed run leaves it).
 class OutputManifest {
  public:

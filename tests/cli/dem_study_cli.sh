@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # kerf-dem study (issue 21): the bundled smoke study writes its tables and plots; the same tables on 1 and 2
 # threads, with no MPI and (built with MPI, mpirun present) under mpirun with 1 and 3 ranks; a rerun reuses
-# every item; a study killed mid-way and rerun gives the tables of an uninterrupted one; adaptive replicates
+# every item; a study killed mid-way and rerun gives the tables of an uninterrupted one, an item killed inside
+# continues from its checkpoint; adaptive replicates
 # stop at the count the prefix rule gives on the values of a known distribution (test-only kind "synthetic");
 # a bad override fails its items only; bad study files exit 2 naming the key.
 # Usage: dem_study_cli.sh <dir of built programs> <source dir>
@@ -160,6 +161,25 @@ wait $pid 2>/dev/null  # bash reports the kill; the rest of the test is quiet
 grep -Eq "10 items \(0 failed, [3-9] reused\)" "$work/log" || fail "rerun after kill did not reuse the finished items: $(tail -1 "$work/log")"
 same_tables "$work/full" "$work/killed" "killed and rerun vs uninterrupted"
 [ -z "$(ls -a "$work/killed/items" | grep partial)" ] || fail "a killed item's partial directory was left: $(ls -a "$work/killed/items")"
+# Killed inside an item (checkpoints every sample or so here; by default every 10 minutes): the rerun continues
+# the item from its checkpoint, and every item's curve and cracks equal those of the uninterrupted smoke study.
+"$bin" study "$smoke" --out "$work/ck" --threads 1 --checkpoint-minutes 0.00001 >/dev/null 2>&1 &
+pid=$!
+for _ in $(seq 3000); do compgen -G "$work/ck/items/.partial-*/checkpoint.bin" >/dev/null && break; sleep 0.01; done
+kill -9 $pid 2>/dev/null || fail "the checkpointed study ended before it could be killed"
+wait $pid 2>/dev/null
+compgen -G "$work/ck/items/.partial-*/checkpoint.bin" >/dev/null || fail "no item checkpoint: $(ls -a "$work/ck/items")"
+"$bin" study "$smoke" --out "$work/ck" --threads 1 >"$work/log" 2>&1 || fail "rerun after a kill inside an item: $(tail -2 "$work/log")"
+grep -Eq "^study: condition_[12]_seed_[12] done \(resumed from sample [1-9][0-9]*\)" "$work/log" ||
+  fail "no item continued from its checkpoint: $(cat "$work/log")"
+same_tables "$work/s2" "$work/ck" "killed inside an item and rerun vs uninterrupted"
+for item in "$work"/s2/items/condition_*; do
+  for f in curve.csv cracks.csv; do
+    cmp -s "$item/$f" "$work/ck/items/$(basename "$item")/$f" || fail "resumed study: $(basename "$item")/$f differs"
+  done
+done
+[ -z "$(ls -a "$work/ck/items" | grep partial)" ] || fail "a resumed item's directory was left: $(ls -a "$work/ck/items")"
+grep -q '"resumed_from_sample": [1-9]' "$work"/ck/items/condition_*/summary.json || fail "no summary records the resume"
 if [ $with_mpi -eq 1 ]; then
   # The same under mpirun, stopped as a batch system stops a job (SIGTERM to mpirun, which gives its ranks about a
   # second), rerun on 3 ranks: the tables of an uninterrupted run on one machine.

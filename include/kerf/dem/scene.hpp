@@ -72,6 +72,10 @@ using ProgressCallback = std::function<void(const ProgressUpdate&)>;
 struct RunOptions {
   std::filesystem::path out = "out";
   int checkpoint_every = 0;  ///< samples between checkpoints (a calibration: one per evaluation); 0: none
+  /// Besides: a checkpoint at the first sample after this much wall time since the last one (a study's
+  /// items; a calibration: one per evaluation); 0: none.
+  double checkpoint_every_s = 0;
+  bool checkpoints() const { return checkpoint_every > 0 || checkpoint_every_s > 0; }
   int replicates = 1;        ///< cut scenes: packings specimen.seed + 0 .. replicates - 1
   bool show_progress = true; ///< progress bars on stderr (drawn only when it is a terminal)
   ProgressCallback on_progress;  ///< besides the bars (a notebook, a log); empty: none
@@ -106,6 +110,8 @@ class SceneKind {
   virtual SceneOutcome run(const SceneCommon& common, const SceneRun& run) = 0;
   /// Continues a run from its checkpoint (only kinds that write checkpoints get one).
   virtual SceneOutcome resume(const SceneCommon& common, const SceneRun& run, const Checkpoint& checkpoint);
+  /// Whether the kind writes checkpoints when RunOptions asks for them (a study then checkpoints its items).
+  virtual bool writes_checkpoints() const { return false; }
 };
 
 /// The registered kinds' names, in the registry's order.

@@ -101,6 +101,7 @@ struct StudyItemResult {
   std::string host;
   int rank = 0;
   bool reused = false;  ///< found finished in DIR/items (wall time, host and rank are the original run's)
+  int resumed_from_sample = 0;  ///< > 0: continued from a killed run's checkpoint (wall time: this run's part)
   std::exception_ptr exception;  ///< on this machine: what stopped the item (not sent between ranks)
 };
 Json study_item_result_to_json(const StudyItemResult& r);
@@ -112,11 +113,13 @@ StudyItem study_item(const StudySpec& spec, int condition, int replicate);
 /// The item's directory name under DIR/items ("condition_2_seed_7").
 std::string study_item_name(const StudyItem& item);
 
-/// Runs one item into DIR/items/NAME (or reuses it there) with `threads` OpenMP threads. Never throws for the
-/// item's own failures (bad override, bad scene, unstable run): they are the result's error. `on_progress`,
-/// if set, gets the item's progress reports, each stage named "NAME: stage".
+/// Runs one item into DIR/items/NAME (or reuses it there) with `threads` OpenMP threads. It runs in
+/// DIR/items/.partial-NAME; a kind that writes checkpoints writes one there every `checkpoint_every_s` of wall
+/// time (0: none), and a checkpoint of the item's scene found there (a killed run's) is continued, not begun
+/// again. Never throws for the item's own failures (bad override, bad scene, unstable run): they are the
+/// result's error. `on_progress`, if set, gets the item's progress reports, each stage named "NAME: stage".
 StudyItemResult run_study_item(const StudySpec& spec, const StudyItem& item, const std::filesystem::path& out,
-                               int threads, int rank, const ProgressCallback& on_progress = {});
+                               int threads, int rank, double checkpoint_every_s, const ProgressCallback& on_progress = {});
 /// DIR/items/NAME/summary.json of a finished item, read.
 Json read_study_item_summary(const std::filesystem::path& out, const StudyItem& item);
 
@@ -170,6 +173,9 @@ struct StudyOptions {
   bool stop_at_first_failure = false;
   /// Local only: false when the caller already holds OUT's parent directory (a run's OutputManifest).
   bool hold_output_directory = true;
+  /// Items of kinds that write checkpoints (tension, compression, calibrate, cut): a checkpoint every this
+  /// many seconds of wall time, continued by a rerun after a kill (0: none).
+  double checkpoint_every_s = 600;
   ProgressCallback on_progress;  ///< local only: each item's progress reports (stage "NAME: stage")
 };
 
