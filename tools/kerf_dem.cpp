@@ -5,7 +5,7 @@
 //                [--log-every N]   (log lines on stdout when it is not a terminal)
 //   kerf-dem resume DIR [--threads N]
 //   kerf-dem keys [SECTION]      the Markdown key table of every scene section (docs/dem.md), or of one
-//   kerf-dem study STUDY.json --out DIR [--threads N] [--threads-per-rank N] [--checkpoint-minutes M]
+//   kerf-dem study STUDY.json --out DIR [--threads N] [--threads-per-rank N] [--checkpoint-minutes M] [--log-every N]
 //                a study (kerf/dem/study.hpp); under `mpirun -np N` across ranks (built with MPI)
 //
 // Exit status 2 for bad input (the message names the field, the value and what was expected), 3 when the
@@ -117,6 +117,11 @@ int main(int argc, char** argv) {
                     "items of tension, compression, calibrate and cut scenes: a checkpoint every M minutes in "
                     "OUT/items/.partial-NAME, from which a rerun continues a killed item (default: 10; 0: none)")
       ->check(CLI::Range(0.0, 1e6));
+  int study_log_every = 10000;
+  study->add_option("--log-every", study_log_every,
+                    "on one machine, when standard output is not a terminal: besides a line per finished item, a "
+                    "log line every N samples of each item's stages (0: none; default: 10000)")
+      ->check(CLI::Range(0, 100000000));
   const auto error = [](const std::string& what, int status) {
     std::cerr << kProgram << ": error: " << kerf::printable(what) << "\n";
     return status;
@@ -141,6 +146,12 @@ int main(int argc, char** argv) {
       study_options.checkpoint_every_s = 60 * checkpoint_minutes;
       study_options.log_lines = !isatty(STDOUT_FILENO);
       study_options.command_line = kerf::command_line(argc, argv);
+      // The items' stage lines (no performance line: the study's last line sums it up); local runs only.
+      std::optional<kerf::dem::RunLog> log;
+      if (study_log_every > 0 && study_options.log_lines) {
+        log.emplace(std::cout, study_log_every);
+        study_options.on_progress = [&log](const kerf::dem::ProgressUpdate& u) { log->report(u); };
+      }
       return kerf::dem::run_study(study_path, study_options).exit_status;
     }
     options.out = out_dir;

@@ -43,6 +43,13 @@ done
 # A result that only repeats the varied input (the test's speed_m_per_s) gets no plot.
 [ ! -e "$work/s2/plots/speed_m_per_s_vs_loading_speed_m_per_s.png" ] || fail "smoke: a plot of the input against itself"
 grep -q "^study: condition_1_seed_1 done in" "$work/log" || fail "no log line per item when stdout is not a terminal: $(cat "$work/log")"
+# With --log-every N, also each item's stage lines (as kerf-dem run's), named by item; no performance line.
+"$bin" study "$smoke" --out "$work/s_log" --threads 2 --log-every 5 >"$work/log" 2>&1 || fail "smoke study with --log-every"
+for item in condition_1_seed_1 condition_2_seed_2; do
+  grep -q "^$item: tension: step [0-9]* time .* stress .* MPa" "$work/log" || fail "no stage lines of $item: $(head -5 "$work/log")"
+  grep -q "^$item: tension: done: " "$work/log" || fail "no stage end line of $item"
+done
+! grep -q "^performance:" "$work/log" || fail "a study printed a run's performance line"
 # The statistics are those of the items: mean, sample std and the Student-t interval, recomputed here.
 python3 - "$work/s2" <<'EOF' || fail "conditions.csv does not match items.csv"
 import csv, math, statistics, sys
