@@ -16,6 +16,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.ticker import ScalarFormatter  # noqa: E402
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 from compare_steady_cuts import items, own_error, window_of  # noqa: E402
@@ -28,9 +29,8 @@ def series_points(specs):
         sys.exit(f"no packing in every set of {specs}")
     points = []
     for spec, study in zip(specs, sets):
-        n = len(common)
         w = study[common[0]]["cut"].get("active_window", {"enabled": False})
-        point = {"spec": spec, "n": n, "windowed": w["enabled"],
+        point = {"spec": spec, "n": len(common), "windowed": w["enabled"],
                  "window": ", ".join(f"{w[k + '_depths']:g}" for k in ("ahead", "behind", "below", "above"))
                  if w["enabled"] else "no window",
                  "disks": statistics.mean(window_of(study[p])[0] for p in common)}
@@ -57,9 +57,9 @@ def main():
             windows = [p for p in points if p["windowed"]]
             ax.errorbar([p["disks"] for p in windows], [p[force] for p in windows],
                         yerr=[p[force + "_se"] for p in windows], fmt="o-", color=colour, capsize=3,
-                        label=f"{label} ({windows[0]['n'] if windows else points[0]['n']} packings)")
+                        label=f"{label} ({points[0]['n']} packings)")
             for p in windows:
-                ax.annotate(p["window"], (p["disks"], p[force]), textcoords="offset points", xytext=(4, 4),
+                ax.annotate(p["window"], (p["disks"], p[force]), textcoords="offset points", xytext=(5, 5 - 14 * (k % 2)),
                             fontsize=7, color=colour)
             for p in points:
                 if p["windowed"]:
@@ -69,6 +69,8 @@ def main():
                 ax.plot([], [], color=colour, ls="--", label=f"{label}: every disk active ({p['disks']:.0f} disks)")
     for ax, force in zip(axes, ("main", "thrust")):
         ax.set_xscale("log")
+        ax.xaxis.set_major_formatter(ScalarFormatter())  # plain disk counts, not powers of ten
+        ax.xaxis.set_minor_formatter(ScalarFormatter())
         ax.set_xlabel("disks integrated (mean over the cut)")
         ax.set_ylabel(f"steady {force} force (N per mm of width)")
         ax.set_ylim(bottom=0)

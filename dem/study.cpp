@@ -306,7 +306,7 @@ StudyItemResult run_study_item(const StudySpec& spec, const StudyItem& item, con
   const fs::path items = out / "items";
   const fs::path final_dir = items / study_item_name(item);
   // One name per item, so that a rerun finds a killed run's checkpoint (one process runs an item at a time).
-  const fs::path partial = items / (".partial-" + study_item_name(item));
+  const fs::path partial = items / (std::string(OutputManifest::kInFlightPrefix) + study_item_name(item));
   const auto start = std::chrono::steady_clock::now();
   try {
     std::vector<std::string> overrides;
@@ -821,8 +821,8 @@ std::size_t prepare_study_directory(const StudySpec& spec, const fs::path& out) 
   // A killed run's items in flight: those with a checkpoint stay (their items continue from it).
   std::vector<fs::path> stale;
   for (const auto& entry : fs::directory_iterator(items)) {
-    const bool partial = entry.path().filename().string().rfind(".partial-", 0) == 0;
-    if (partial && !fs::is_regular_file(entry.path() / "checkpoint.bin")) stale.push_back(entry.path());
+    if (OutputManifest::in_flight(entry.path().filename()) && !fs::is_regular_file(entry.path() / "checkpoint.bin"))
+      stale.push_back(entry.path());
   }
   for (const fs::path& dir : stale) fs::remove_all(dir);
   // The finished items there, by the scene they ran (a directory of a killed re-homing included).

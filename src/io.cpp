@@ -124,13 +124,12 @@ OutputManifest::OutputManifest(const fs::path& dir, bool fresh) {
   remove_stale_temporaries(dir);
   const fs::path absolute = fs::absolute(dir);
   // The files the previous run into this directory wrote (finished or killed): gone before this one writes;
-  // not those under a directory .partial-NAME (a study's item in flight: the study continues or removes it).
+  // not those under a directory of work in flight (kInFlightPrefix: a study's item, continued or removed by it).
   std::ifstream previous;
   if (fresh) previous.open(absolute / kFileName);
   for (std::string line; std::getline(previous, line);) {
     const fs::path relative(line);
     if (line.empty() || relative.is_absolute() || line.find("..") != std::string::npos) continue;
-    const auto in_flight = [](const fs::path& part) { return part.string().rfind(".partial-", 0) == 0; };
     if (std::any_of(relative.begin(), relative.end(), in_flight)) continue;
     std::error_code ignored;
     if (fs::is_regular_file(absolute / relative, ignored)) fs::remove(absolute / relative, ignored);

@@ -36,8 +36,10 @@ constexpr const char* kProgram = "kerf-dem";
 
 /// Runs `body(on_progress)`; when standard output is not a terminal (a log file, a batch job) and `log_every`
 /// > 0, with a log line every `log_every` samples of each stage and the performance lines
-/// (kerf/dem/run_log.hpp), which on_progress feeds.
-int with_log(int log_every, const std::function<int(const kerf::dem::ProgressCallback&)>& body) {
+/// (kerf/dem/run_log.hpp), which on_progress feeds; without the run's last one for a study (`performance_line`
+/// false: the study's last line sums it up).
+int with_log(int log_every, const std::function<int(const kerf::dem::ProgressCallback&)>& body,
+             bool performance_line = true) {
   std::optional<kerf::dem::RunLog> log;
   kerf::dem::ProgressCallback on_progress;
   if (log_every > 0 && !isatty(STDOUT_FILENO)) {
@@ -45,7 +47,7 @@ int with_log(int log_every, const std::function<int(const kerf::dem::ProgressCal
     on_progress = [&log](const kerf::dem::ProgressUpdate& u) { log->report(u); };
   }
   const int status = body(on_progress);
-  if (log) log->finish(omp_get_max_threads());
+  if (log && performance_line) log->finish(omp_get_max_threads());
   return status;
 }
 
@@ -146,13 +148,14 @@ int main(int argc, char** argv) {
       study_options.checkpoint_every_s = 60 * checkpoint_minutes;
       study_options.log_lines = !isatty(STDOUT_FILENO);
       study_options.command_line = kerf::command_line(argc, argv);
-      // The items' stage lines (no performance line: the study's last line sums it up); local runs only.
-      std::optional<kerf::dem::RunLog> log;
-      if (study_log_every > 0 && study_options.log_lines) {
-        log.emplace(std::cout, study_log_every);
-        study_options.on_progress = [&log](const kerf::dem::ProgressUpdate& u) { log->report(u); };
-      }
-      return kerf::dem::run_study(study_path, study_options).exit_status;
+      // The items' stage lines (on_progress: local runs only).
+      return with_log(
+          study_log_every,
+          [&](const kerf::dem::ProgressCallback& on_progress) {
+            study_options.on_progress = on_progress;
+            return kerf::dem::run_study(study_path, study_options).exit_status;
+          },
+          /*performance_line=*/false);
     }
     options.out = out_dir;
     options.command_line = kerf::command_line(argc, argv);

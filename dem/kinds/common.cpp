@@ -24,10 +24,11 @@ CheckpointSchedule::CheckpointSchedule(const RunOptions& options)
 
 bool CheckpointSchedule::due(int sample_index) {
   const bool by_samples = every_samples_ > 0 && sample_index % every_samples_ == 0;
+  if (every_.count() <= 0) return by_samples;  // no clock read per sample without a wall-time interval
   const auto now = std::chrono::steady_clock::now();
-  const bool by_time = every_.count() > 0 && now - last_ >= every_;
-  if (by_samples || by_time) last_ = now;
-  return by_samples || by_time;
+  if (!by_samples && now - last_ < every_) return false;
+  last_ = now;
+  return true;
 }
 
 namespace {

@@ -52,6 +52,9 @@ class OutputManifest {
  public:
   static constexpr const char* kFileName = ".kerf-outputs";
   static constexpr const char* kRunningName = "kerf.running";
+  /// A directory whose name starts so holds work in flight (a study's item): its owner continues or removes it.
+  static constexpr std::string_view kInFlightPrefix = ".partial-";
+  static bool in_flight(const std::filesystem::path& name) { return name.string().starts_with(kInFlightPrefix); }
   OutputManifest(const std::filesystem::path& dir, bool fresh);
   ~OutputManifest();
   OutputManifest(const OutputManifest&) = delete;
