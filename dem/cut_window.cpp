@@ -13,7 +13,7 @@
 namespace kerf::dem {
 
 namespace {
-constexpr std::string_view kWindowMagic = "KERFWIN2";  // 2: the absorbing layer in the box
+constexpr std::string_view kWindowMagic = "KERFWIN3";  // 2: the absorbing layer in the box; 3: the held rows' layer
 }  // namespace
 
 CutWindow::CutWindow(Simulation workpiece, const CutWindowBox& box, double y_top_m, double y_cut_m)
@@ -217,17 +217,18 @@ Simulation CutWindow::build(const Simulation* current, double x_edge_m) {
   // The team governor goes on with what it measured (a window is rebuilt more often than it measures).
   sim.set_adaptive_team(full_.adaptive_team());
   if (current) sim.set_team_governor(current->team_governor());
-  if (box_.absorbing_m > 0) {
-    // The absorbing layer: a quadratic ramp from 0 at its inner side to the full rate at the box's edge.
+  if (box_.absorbing_m > 0 || box_.held_absorbing_m > 0) {
+    // The absorbing layers: a quadratic ramp from 0 at their inner side to the full rate at the box's edge
+    // (and at the workpiece's held rows).
     std::vector<double> rates(global_of_.size(), 0.0);
     const Particles& p = sim.particles();
     for (std::size_t u = 0; u < rates.size(); ++u) {
       if (p.group[u] != 0) continue;
       const double d = std::min({p.x[u] - x0, x1 - p.x[u], p.y[u] - y0});
-      if (d < box_.absorbing_m) {
-        const double ramp = 1 - std::max(d, 0.0) / box_.absorbing_m;
-        rates[u] = box_.absorbing_rate_per_s * ramp * ramp;
-      }
+      rates[u] = sponge_rate_per_s(d, box_.absorbing_m, box_.absorbing_rate_per_s);
+      if (box_.held_absorbing_m > 0)
+        rates[u] = std::max(rates[u], sponge_rate_per_s(box_.held_rows.distance_m(p.x[u], p.y[u]),
+                                                        box_.held_absorbing_m, box_.held_absorbing_rate_per_s));
     }
     sim.set_absorbing_rates(std::move(rates));
   }

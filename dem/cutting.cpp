@@ -57,7 +57,12 @@ const FieldTable<CutParams>& cut_fields() {
                    "part of the travel left out of the mean forces (the entry)", &P::entry_fraction),
       int_field("sample_every_steps", 1, 1000000, "steps per force sample", &P::sample_every_steps),
       number_field("window_mm", kMm, Range::positive(),
-                   "travel per window of results.travel_windows (at least 1/1000 of length_mm)", &P::window_m)};
+                   "travel per window of results.travel_windows (at least 1/1000 of length_mm)", &P::window_m),
+      number_field("held_absorbing_depths", kNone, Range::non_negative(),
+                   "absorbing layer along the workpiece's held left side and bottom rows, in depths of cut (0: none; "
+                   "the held rows are rigid and reflect the waves an undamped cut sends out; attenuation: "
+                   "active_window.absorbing_attenuation)",
+                   &P::held_absorbing_depths)};
   return table;
 }
 
@@ -115,7 +120,8 @@ const FieldTable<CutParams>& active_window_fields() {
                    "held frame is rigid and reflects the waves an undamped cut sends out)",
                    &P::window_absorbing_depths),
       number_field("absorbing_attenuation", kNone, Range::positive(),
-                   "e-folds by which the absorbing layer attenuates a p-wave's amplitude through it and back",
+                   "e-folds by which the absorbing layer (and cut.held_absorbing_depths') attenuates a p-wave's amplitude "
+                   "through it and back",
                    &P::window_absorbing_attenuation)};
   return table;
 }
@@ -386,12 +392,23 @@ void check_cut_fits_workpiece(const CutParams& p, const Bounds& b) {
           "a depth of cut of at least the smallest disk radius (" + format_value(units::m_to_um(b.r_min)) +
               " um): a shallower tool passes over the disks' tops; use smaller disks (specimen.radius_min_um, "
               "specimen.radius_max_um)");
-  const double width = b.x_max - b.x_min, max_travel = width - 2.5 * b.r_max;
+  // The layer along the held rows (held_absorbing_depths) must stay below the cut line and off the tool's path.
+  const double layer_m = p.held_absorbing_depths * p.depth_of_cut_m;
+  if (layer_m > 0)
+    require(layer_m < held_top_depth_m - p.depth_of_cut_m, "cut.held_absorbing_depths", p.held_absorbing_depths,
+            "a layer below the cut line: thinner than " +
+                format_value((held_top_depth_m - p.depth_of_cut_m) / p.depth_of_cut_m) + " depths of cut (" +
+                format_value(units::m_to_mm(held_top_depth_m - p.depth_of_cut_m)) +
+                " mm, the distance from the held bottom rows to the cut line)");
+  const double width = b.x_max - b.x_min, max_travel = width - 2.5 * b.r_max - layer_m;
   require(p.length_m <= max_travel, "cut.length_mm", units::m_to_mm(p.length_m),
-          "a travel of at most " + format_value(units::m_to_mm(max_travel)) +
-              " mm: further on, the tool would reach the held left disks of the " +
-              format_value(units::m_to_mm(width)) + " mm long workpiece");
+          "a travel of at most " + format_value(units::m_to_mm(max_travel)) + " mm: further on, the tool would reach the held left disks" +
+              (layer_m > 0 ? " (or their absorbing layer)" : "") + " of the " + format_value(units::m_to_mm(width)) +
+              " mm long workpiece");
 }
+
+/// The held rows of the workpiece cut from a specimen of bounds `b` (make_workpiece).
+HeldRows held_rows_of(const Bounds& b) { return {b.x_min + 2 * b.r_max, b.y_min + 2 * b.r_max}; }
 
 /// A groove pattern that removes no disk is not a grooved workpiece: either no groove lies on the surface
 /// (the pitch) or none is wide enough to hold a disk's centre (the width).
@@ -426,6 +443,7 @@ void check_tool_speed(const CutParams& p, double time_step_s, double time_step_s
 Simulation make_workpiece(const Simulation& specimen, const CutParams& params, std::size_t& n_removed) {
   const auto& p = specimen.particles();
   const Bounds b = bounds_of(p);
+  const HeldRows held = held_rows_of(b);
   const auto centres = groove_centres(params, b.x_min, b.x_max);
   // Grooves: the paper deletes the disks inside each groove (seed 000 Section 4); a disk goes when its
   // centre lies inside the outline.
@@ -438,7 +456,7 @@ Simulation make_workpiece(const Simulation& specimen, const CutParams& params, s
   auto& q = sim.particles();
   for (std::size_t k = 0; k < q.size(); ++k) {
     q.group[k] = 0;  // whatever the specimen held (a test's grips)
-    if (q.x[k] < b.x_min + 2 * b.r_max || q.y[k] < b.y_min + 2 * b.r_max) {
+    if (q.x[k] < held.x_m || q.y[k] < held.y_m) {
       q.group[k] = 1;
       q.vx[k] = q.vy[k] = q.omega[k] = 0;
     }
@@ -480,22 +498,39 @@ CutRun::CutRun(const Simulation& specimen, const CutParams& params)
   res_.n_particles = sim_.particles().size();
   res_.time_step_s = sim_.time_step();
   res_.samples.push_back({0, 0, 0, 0});
+  const double d = params_.depth_of_cut_m;
+  // A sponge layer's peak rate for its thickness L: the amplitude decays at gamma / 2 in time, gamma / (2 c)
+  // in space; through the quadratic ramp and back, exp(-gamma_max L / (3 c)) = exp(-attenuation).
+  const auto peak_rate_per_s = [&](double thickness_m) {
+    return 3 * params_.window_absorbing_attenuation * p_wave_speed_m_per_s(sim_.material()) / thickness_m;
+  };
+  const HeldRows held = held_rows_of(b0);
+  const double held_layer_m = params_.held_absorbing_depths * d;
   if (params_.active_window) {
     // The workpiece becomes the window's reservoir; its time step (of the whole workpiece) is every window's.
-    const double d = params_.depth_of_cut_m;
     CutWindowBox box{params_.window_ahead_depths * d, params_.window_behind_depths * d,
                      params_.window_below_depths * d, params_.window_above_depths * d,
                      params_.window_shift_depths * d};
     if (params_.window_absorbing_depths > 0) {
-      const double c = p_wave_speed_m_per_s(sim_.material());
       box.absorbing_m = params_.window_absorbing_depths * d;
-      // Amplitude decays at gamma / 2 in time, gamma / (2 c) in space; through the quadratic ramp and back:
-      // exp(-gamma_max L / (3 c)) = exp(-attenuation).
-      box.absorbing_rate_per_s = 3 * params_.window_absorbing_attenuation * c / box.absorbing_m;
+      box.absorbing_rate_per_s = peak_rate_per_s(box.absorbing_m);
+    }
+    if (held_layer_m > 0) {
+      box.held_absorbing_m = held_layer_m;
+      box.held_absorbing_rate_per_s = peak_rate_per_s(held_layer_m);
+      box.held_rows = held;
     }
     const double x_edge = edge()[0];
     window_.emplace(std::move(sim_), box, res_.y_top_m, res_.y_cut_m);
     sim_ = window_->build(nullptr, x_edge);
+  } else if (held_layer_m > 0) {
+    // Every disk active: the layer along the held rows is set once (no disk joins or leaves the cut).
+    const Particles& p = sim_.particles();
+    std::vector<double> rates(p.size(), 0.0);
+    const double peak = peak_rate_per_s(held_layer_m);
+    for (std::size_t u = 0; u < p.size(); ++u)
+      if (p.group[u] == 0) rates[u] = sponge_rate_per_s(held.distance_m(p.x[u], p.y[u]), held_layer_m, peak);
+    sim_.set_absorbing_rates(std::move(rates));
   }
 }
 
@@ -561,8 +596,9 @@ void CutRun::finish() {
 }
 
 namespace {
-constexpr std::string_view kCutMagic = "KERFCUT6";  // 3: tool_friction_coefficient, 4: rake_face_height_m,
-                                                    // 5: the active window, 6: its absorbing layer
+constexpr std::string_view kCutMagic = "KERFCUT7";  // 3: tool_friction_coefficient, 4: rake_face_height_m,
+                                                    // 5: the active window, 6: its absorbing layer,
+                                                    // 7: the held rows' layer
 }  // namespace
 
 template <class Self, class Io>
@@ -579,6 +615,7 @@ void CutRun::state_fields(Self& run, Io& io) {
   io(r.n_particles, r.n_removed_by_grooves, r.steps, run.first_tool_wall_, run.n_tool_walls_, run.finished_);
   io(p.active_window, p.window_ahead_depths, p.window_behind_depths, p.window_below_depths, p.window_above_depths,
      p.window_shift_depths, r.particle_steps, p.window_absorbing_depths, p.window_absorbing_attenuation);
+  io(p.held_absorbing_depths);
 }
 
 std::string CutRun::serialize() const {

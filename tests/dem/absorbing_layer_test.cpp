@@ -3,7 +3,9 @@
 // to the bit; along a bonded chain held at its far end, an undamped wave packet keeps its energy (reflected by
 // the held end) and a layer before that end takes it out (a sponge absorbs waves shorter than itself; longer
 // ones, and a pulse's net momentum, it reflects in part); the window ramps the rate from the box's edges as
-// documented; a windowed cut with a layer differs from one without; its keys are validated.
+// documented; a windowed cut with a layer differs from one without; its keys are validated. The layer along
+// the workpiece's held rows (cut.held_absorbing_depths): ramped from the held left side and bottom, with every
+// disk active and in a window (the larger of the two rates), applied, its key validated against the workpiece.
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -37,6 +39,19 @@ Simulation chain(int n) {
 }
 
 double energy(const Simulation& sim) { return sim.kinetic_energy() + sim.strain_energy(); }
+
+/// The inner lines of a cut workpiece's held rows, from the specimen itself (seed 000 Section 4: centres within
+/// two largest radii of the left side or the bottom).
+HeldRows held_rows_of_specimen(const Simulation& specimen) {
+  const auto& p = specimen.particles();
+  double x_min = 1e300, y_min = 1e300, r_max = 0;
+  for (std::size_t u = 0; u < p.size(); ++u) {
+    x_min = std::min(x_min, p.x[u] - p.radius[u]);
+    y_min = std::min(y_min, p.y[u] - p.radius[u]);
+    r_max = std::max(r_max, p.radius[u]);
+  }
+  return {x_min + 2 * r_max, y_min + 2 * r_max};
+}
 
 CutParams windowed_with_layer(double layer_depths) {
   CutParams p = kerf::dem::testing::windowed(3, 2, 2, 2);
@@ -175,3 +190,110 @@ TEST_CASE("absorbing layer: its keys are validated with their dotted names", "[a
   CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains("active_window.absorbing_depths = -1"));
 }
 
+
+TEST_CASE("absorbing layer along the held rows: every disk active, ramped from the held left side and bottom",
+          "[absorbing_layer]") {
+  const Simulation specimen = kerf::dem::testing::quick_workpiece_specimen(0.6e-3, 0.25e-3, 7);
+  CutParams p = windowed_with_layer(0);
+  p.active_window = false;
+  {
+    const CutRun none(specimen, p);
+    CHECK(none.simulation().absorbing_rates().empty());  // no layer: the engine as before
+  }
+  p.held_absorbing_depths = 1;
+  const CutRun run(specimen, p);
+  const auto& q = run.simulation().particles();
+  const auto& rates = run.simulation().absorbing_rates();
+  REQUIRE(rates.size() == q.size());
+  const HeldRows held = held_rows_of_specimen(specimen);
+  const double layer = p.depth_of_cut_m;
+  // The peak rate as the window's layer has it: 3 a c / L.
+  const double peak = 3 * p.window_absorbing_attenuation * p_wave_speed_m_per_s(run.simulation().material()) / layer;
+  int in_left = 0, in_bottom = 0, inside = 0;
+  for (std::size_t u = 0; u < q.size(); ++u) {
+    const double dx = q.x[u] - held.x_m, dy = q.y[u] - held.y_m;
+    if (dx < 0 || dy < 0) {
+      CHECK(q.group[u] != 0);  // the held rows themselves
+      CHECK(rates[u] == 0);
+      continue;
+    }
+    REQUIRE(q.group[u] == 0);
+    const double d = std::min(dx, dy);
+    const double expected = d < layer ? peak * std::pow(1 - d / layer, 2) : 0.0;
+    CHECK_THAT(rates[u], WithinRel(expected, 1e-12));
+    if (d >= layer) ++inside;
+    else (dx < dy ? in_left : in_bottom) += 1;
+  }
+  CHECK(in_left > 10);
+  CHECK(in_bottom > 20);
+  CHECK(inside > 100);
+}
+
+TEST_CASE("absorbing layer along the held rows: in a window, the larger of its rate and the window layer's",
+          "[absorbing_layer]") {
+  const Simulation specimen = kerf::dem::testing::quick_workpiece_specimen(0.6e-3, 0.25e-3, 7);
+  CutParams p = kerf::dem::testing::windowed(3, 2, 4, 2);  // down to the bottom rows
+  p.length_m = 0.15e-3;
+  p.window_absorbing_depths = 1;  // as thick as the held rows' layer, which starts two radii higher
+  p.held_absorbing_depths = 1;
+  const CutRun run(specimen, p);
+  const CutRun window_layer_only = [&] {
+    CutParams q = p;
+    q.held_absorbing_depths = 0;
+    return CutRun(specimen, q);
+  }();
+  const auto& q = run.simulation().particles();
+  const auto& rates = run.simulation().absorbing_rates();
+  const auto& box_rates = window_layer_only.simulation().absorbing_rates();
+  REQUIRE(rates.size() == q.size());
+  REQUIRE(box_rates.size() == q.size());  // the same window: the held rows' layer adds no disk
+  const HeldRows held = held_rows_of_specimen(specimen);
+  const double layer = p.depth_of_cut_m;
+  const double peak = 3 * p.window_absorbing_attenuation * p_wave_speed_m_per_s(run.simulation().material()) / layer;
+  int raised = 0;
+  for (std::size_t u = 0; u < q.size(); ++u) {
+    if (q.group[u] != 0) {
+      CHECK(rates[u] == 0);
+      continue;
+    }
+    const double d = held.distance_m(q.x[u], q.y[u]);
+    const double own = d < layer ? peak * std::pow(1 - d / layer, 2) : 0.0;
+    CHECK_THAT(rates[u], WithinRel(std::max(own, box_rates[u]), 1e-12));
+    raised += rates[u] > box_rates[u];
+  }
+  // Over the bottom rows the held rows' layer is the higher (the window, 0.25 mm long at the start, holds
+  // about two rows of ten such disks).
+  CHECK(raised >= 5);
+}
+
+TEST_CASE("absorbing layer along the held rows: applied, with every disk active", "[absorbing_layer]") {
+  const Simulation specimen = kerf::dem::testing::quick_workpiece_specimen(0.4e-3, 0.2e-3, 5);
+  CutParams p = windowed_with_layer(0);
+  p.active_window = false;
+  p.length_m = 0.1e-3;
+  CutRun without(specimen, p);
+  p.held_absorbing_depths = 1;
+  CutRun with(specimen, p);
+  while (with.advance()) {}
+  while (without.advance()) {}
+  CHECK(without.result().main_force_n != with.result().main_force_n);
+  CHECK(std::isfinite(with.result().main_force_n));
+}
+
+TEST_CASE("absorbing layer along the held rows: its key is validated against the workpiece", "[absorbing_layer]") {
+  const Simulation specimen = kerf::dem::testing::quick_workpiece_specimen(0.6e-3, 0.25e-3, 7);
+  CutParams p = windowed_with_layer(0);
+  p.held_absorbing_depths = -1;
+  CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains("cut.held_absorbing_depths = -1"));
+  // From the held bottom rows (about 26 um up) to the cut line (0.05 mm under the 0.25 mm top): about 0.17 mm,
+  // 3.5 depths of cut; a layer that thick would reach the cut line.
+  p.held_absorbing_depths = 3.6;
+  CHECK_THROWS_WITH(CutRun(specimen, p), Catch::Contains("cut.held_absorbing_depths = 3.6") &&
+                                             Catch::Contains("below the cut line"));
+  // The tool must stop before the left side's layer: 0.6 mm less 2.5 largest radii and the layer.
+  p.held_absorbing_depths = 2;
+  p.length_m = 0.5e-3;
+  CHECK_THROWS_WITH(CutRun(specimen, p), Catch::Contains("cut.length_mm = 0.5") && Catch::Contains("absorbing layer"));
+  p.length_m = 0.45e-3;
+  CHECK_NOTHROW(CutRun(specimen, p));
+}

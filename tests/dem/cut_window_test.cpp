@@ -1,12 +1,13 @@
 // The active window of a steady-state cut (kerf/dem/cut_window.hpp, issue 20): a window covering the whole
 // workpiece is the full cut to the bit; bookkeeping of disks crossing its edge, chips and held disks; the
 // window's size independent of the workpiece's length; restart equals uninterrupted (with and without an
-// absorbing layer).
+// absorbing layer, and with one along the held rows).
 #include "kerf/dem/cut_window.hpp"
 
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <utility>
 
 #include "kerf/dem/cutting.hpp"
 #include "kerf/dem/specimen.hpp"
@@ -112,12 +113,14 @@ TEST_CASE("cut window: the window's size does not grow with the workpiece; chips
 
 TEST_CASE("cut window: restored halfway, a windowed cut goes on to the bit", "[cut_window]") {
   const Simulation specimen = quick_workpiece_specimen(0.6e-3, 0.25e-3, 7);
-  // Without and with an absorbing layer (its per-disk rates are part of the saved state).
-  for (const double layer : {0.0, 1.0}) {
-    INFO("absorbing layer " << layer << " depths");
-    CutParams p = windowed(3, 2, 2, 2);
+  // Without and with an absorbing layer, and with one along the held rows as well (the window then reaching
+  // the bottom rows): the per-disk rates are part of the saved state.
+  for (const auto& [layer, held_layer] : {std::pair{0.0, 0.0}, {1.0, 0.0}, {1.0, 1.0}}) {
+    INFO("absorbing layer " << layer << " depths, along the held rows " << held_layer);
+    CutParams p = windowed(3, 2, held_layer > 0 ? 4 : 2, 2);
     p.length_m = 0.15e-3;
     p.window_absorbing_depths = layer;
+    p.held_absorbing_depths = held_layer;
     CutRun whole(specimen, p);
     REQUIRE(whole.simulation().absorbing_rates().empty() == (layer == 0));
     while (whole.advance()) {}

@@ -8,7 +8,8 @@
 //   - the held frame: the disks within two largest diameters outside the box, at rest (they hold the free
 //     disks' joints and contacts); joints and contacts between two held disks are not computed;
 //   - optionally an absorbing layer along the box's ahead, behind and lower edges (CutWindowBox::absorbing_m):
-//     the held frame is rigid, and undamped elastic waves would reflect from it into the process zone.
+//     the held frame is rigid, and undamped elastic waves would reflect from it into the process zone; and
+//     one along the workpiece's own held rows (CutWindowBox::held_absorbing_m), which are as rigid.
 // Every `shift` of tool travel the window is rebuilt around the edge: the running simulation's disks,
 // joints, cracks and contact springs go back to the reservoir, and a new simulation is built from it, the
 // shear springs of the unjointed contacts carried over. A disk the window leaves behind is frozen where it
@@ -17,6 +18,7 @@
 // (disks, mass, and the cracks of the joints it carried).
 // Disks ahead of the window have never moved. So the cost per step is that of the window, whatever the
 // workpiece's length.
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -26,6 +28,22 @@
 
 namespace kerf::dem {
 
+/// The sponge's profile (Cerjan et al. 1985): the rate at distance `d_m` from the layer's outer edge, a
+/// quadratic ramp from `peak_rate_per_s` at the edge (d <= 0) to 0 at its inner side (d >= thickness_m).
+inline double sponge_rate_per_s(double d_m, double thickness_m, double peak_rate_per_s) {
+  if (!(d_m < thickness_m)) return 0.0;
+  const double ramp = 1 - std::max(d_m, 0.0) / thickness_m;
+  return peak_rate_per_s * ramp * ramp;
+}
+
+/// The held rows of a cut's workpiece (seed 000 Section 4: the disks whose centres lie within two largest
+/// radii of the left side or of the bottom are fixed): their inner lines, x = x_m and y = y_m.
+struct HeldRows {
+  double x_m = 0, y_m = 0;
+  /// A free disk's distance from the held rows (the nearer of the two lines).
+  double distance_m(double x, double y) const { return std::min(x - x_m, y - y_m); }
+};
+
 /// The window's extent around the cutting edge [m] (the cut's depths times the scene's window keys).
 struct CutWindowBox {
   double ahead_m = 0, behind_m = 0, below_m = 0, above_m = 0;
@@ -34,6 +52,11 @@ struct CutWindowBox {
   /// d < absorbing_m from the nearest of them has its velocity decay at absorbing_rate_per_s (1 - d / L)^2
   /// (Simulation::set_absorbing_rates), set when the window is built. The top is the free surface.
   double absorbing_m = 0, absorbing_rate_per_s = 0;
+  /// The absorbing layer along the workpiece's own held rows (the left side and the bottom: CutParams::
+  /// held_absorbing_depths; 0: none): a free disk at distance d < held_absorbing_m from them (HeldRows) has
+  /// its velocity decay at held_absorbing_rate_per_s (1 - d / L)^2; where the two layers meet, the larger rate.
+  double held_absorbing_m = 0, held_absorbing_rate_per_s = 0;
+  HeldRows held_rows{};  ///< where the held rows are (when held_absorbing_m > 0)
 };
 
 /// What the windowed cut removed as chips.

@@ -67,6 +67,9 @@ struct CutParams {
   /// thickness L in depths of cut (0: none), and the e-folds by which it attenuates a p-wave's amplitude on its
   /// way through the layer and back: the peak rate 3 a c / L, with c = sqrt(E* / rho) of the contact law.
   double window_absorbing_depths = 0, window_absorbing_attenuation = 2;
+  /// An absorbing layer along the workpiece's held rows (its left side and bottom, as rigid as the window's
+  /// frame), with or without a window: its thickness in depths of cut (0: none), the same attenuation.
+  double held_absorbing_depths = 0;
 };
 
 /// The keys of the scene's "cut", "tool" and "grooves" sections (kerf/field_table.hpp).
