@@ -8,6 +8,7 @@ disk active) is drawn as a horizontal line with its error band. Prints the table
 
 Needs numpy and matplotlib (/usr/bin/python3 on Debian).
 """
+import math
 import pathlib
 import statistics
 import sys
@@ -45,6 +46,7 @@ def main():
     if len(sys.argv) < 3:
         sys.exit(__doc__)
     fig, axes = plt.subplots(1, 2, figsize=(10, 4.2))
+    fewest_disks, most_disks = float("inf"), 0.0
     for k, arg in enumerate(sys.argv[2:]):
         label, specs = arg.split("=", 1)
         points = series_points(specs.split(";"))
@@ -53,8 +55,10 @@ def main():
         for p in points:
             print(f"  {p['spec']} ({p['window']}): {p['n']} packings, {p['disks']:.0f} disks, main {p['main']:.3f} +- {p['main_se']:.3f} N, "
                   f"thrust {p['thrust']:.3f} +- {p['thrust_se']:.3f} N")
+        windows = [p for p in points if p["windowed"]]
+        fewest_disks = min([fewest_disks] + [p["disks"] for p in windows])
+        most_disks = max([most_disks] + [p["disks"] for p in windows])
         for ax, force in zip(axes, ("main", "thrust")):
-            windows = [p for p in points if p["windowed"]]
             ax.errorbar([p["disks"] for p in windows], [p[force] for p in windows],
                         yerr=[p[force + "_se"] for p in windows], fmt="o-", color=colour, capsize=3,
                         label=f"{label} ({points[0]['n']} packings)")
@@ -69,6 +73,10 @@ def main():
                 ax.plot([], [], color=colour, ls="--", label=f"{label}: every disk active ({p['disks']:.0f} disks)")
     for ax, force in zip(axes, ("main", "thrust")):
         ax.set_xscale("log")
+        if most_disks > 0:
+            # From the power of ten below the smallest window (a labelled tick left of it) to room for the
+            # largest window's label.
+            ax.set_xlim(10 ** math.floor(math.log10(fewest_disks)), 1.6 * most_disks)
         ax.xaxis.set_major_formatter(ScalarFormatter())  # plain disk counts, not powers of ten
         ax.xaxis.set_minor_formatter(ScalarFormatter())
         ax.set_xlabel("disks integrated (mean over the cut)")

@@ -16,6 +16,14 @@ namespace {
 constexpr std::string_view kWindowMagic = "KERFWIN3";  // 2: the absorbing layer in the box; 3: the held rows' layer
 }  // namespace
 
+void add_held_rows_layer(const Particles& p, const HeldRows& held, double thickness_m, double peak_rate_per_s,
+                         std::vector<double>& rates_per_s) {
+  for (std::size_t u = 0; u < p.size(); ++u)
+    if (p.group[u] == 0)
+      rates_per_s[u] =
+          std::max(rates_per_s[u], sponge_rate_per_s(held.distance_m(p.x[u], p.y[u]), thickness_m, peak_rate_per_s));
+}
+
 CutWindow::CutWindow(Simulation workpiece, const CutWindowBox& box, double y_top_m, double y_cut_m)
     : full_(std::move(workpiece)), box_(box), y_top_m_(y_top_m), y_cut_m_(y_cut_m) {
   const auto& p = full_.particles();
@@ -226,10 +234,9 @@ Simulation CutWindow::build(const Simulation* current, double x_edge_m) {
       if (p.group[u] != 0) continue;
       const double d = std::min({p.x[u] - x0, x1 - p.x[u], p.y[u] - y0});
       rates[u] = sponge_rate_per_s(d, box_.absorbing_m, box_.absorbing_rate_per_s);
-      if (box_.held_absorbing_m > 0)
-        rates[u] = std::max(rates[u], sponge_rate_per_s(box_.held_rows.distance_m(p.x[u], p.y[u]),
-                                                        box_.held_absorbing_m, box_.held_absorbing_rate_per_s));
     }
+    if (box_.held_absorbing_m > 0)
+      add_held_rows_layer(p, box_.held_rows, box_.held_absorbing_m, box_.held_absorbing_rate_per_s, rates);
     sim.set_absorbing_rates(std::move(rates));
   }
   sim.initialise();

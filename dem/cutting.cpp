@@ -525,11 +525,8 @@ CutRun::CutRun(const Simulation& specimen, const CutParams& params)
     sim_ = window_->build(nullptr, x_edge);
   } else if (held_layer_m > 0) {
     // Every disk active: the layer along the held rows is set once (no disk joins or leaves the cut).
-    const Particles& p = sim_.particles();
-    std::vector<double> rates(p.size(), 0.0);
-    const double peak = peak_rate_per_s(held_layer_m);
-    for (std::size_t u = 0; u < p.size(); ++u)
-      if (p.group[u] == 0) rates[u] = sponge_rate_per_s(held.distance_m(p.x[u], p.y[u]), held_layer_m, peak);
+    std::vector<double> rates(sim_.particles().size(), 0.0);
+    add_held_rows_layer(sim_.particles(), held, held_layer_m, peak_rate_per_s(held_layer_m), rates);
     sim_.set_absorbing_rates(std::move(rates));
   }
 }

@@ -44,6 +44,11 @@ struct HeldRows {
   double distance_m(double x, double y) const { return std::min(x - x_m, y - y_m); }
 };
 
+/// The sponge along the held rows, `thickness_m` thick with `peak_rate_per_s` at their lines: raises each free
+/// disk's rate in `rates_per_s` (one per disk of `p`) to the layer's where that is higher.
+void add_held_rows_layer(const Particles& p, const HeldRows& held, double thickness_m, double peak_rate_per_s,
+                         std::vector<double>& rates_per_s);
+
 /// The window's extent around the cutting edge [m] (the cut's depths times the scene's window keys).
 struct CutWindowBox {
   double ahead_m = 0, behind_m = 0, below_m = 0, above_m = 0;
