@@ -4,7 +4,9 @@ main and thrust forces over the packings every set of the series has, with the c
 (sqrt(sum sem^2) / n), against the mean number of disks integrated (log scale); a cut without a window (every
 disk active) is drawn as a horizontal line with its error band. Prints the table and draws the figure.
 
-    python3 bench/plot_window_convergence.py OUT.png "LABEL=STUDY_DIR[:C];STUDY_DIR[:C];..." [...]
+    python3 bench/plot_window_convergence.py OUT.png "LABEL=SET;SET;..." [...]
+
+A SET is a study directory or a record file (bench/compare_steady_cuts.py), with :C and @A-B as there.
 
 Needs numpy and matplotlib (/usr/bin/python3 on Debian).
 """
@@ -20,23 +22,22 @@ import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.ticker import ScalarFormatter  # noqa: E402
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from compare_steady_cuts import items, own_error, window_of  # noqa: E402
+from compare_steady_cuts import known_mean, own_error, records  # noqa: E402
 
 
 def series_points(specs):
-    sets = [items(spec) for spec in specs]
+    sets = [records(spec) for spec in specs]
     common = sorted(set.intersection(*(set(s) for s in sets)))
     if not common:
         sys.exit(f"no packing in every set of {specs}")
     points = []
     for spec, study in zip(specs, sets):
-        w = study[common[0]]["cut"].get("active_window", {"enabled": False})
-        point = {"spec": spec, "n": len(common), "windowed": w["enabled"],
-                 "window": ", ".join(f"{w[k + '_depths']:g}" for k in ("ahead", "behind", "below", "above"))
-                 if w["enabled"] else "no window",
-                 "disks": statistics.mean(window_of(study[p])[0] for p in common)}
+        window = study[common[0]]["window"]
+        point = {"spec": spec, "n": len(common), "windowed": window != "none",
+                 "window": window if window != "none" else "no window",
+                 "disks": known_mean(study[p]["disks"] for p in common)}
         for force in ("main", "thrust"):
-            point[force] = statistics.mean(study[p]["results"][f"{force}_force_N"] for p in common)
+            point[force] = known_mean(study[p][f"{force}_force_N"] for p in common)
             point[force + "_se"] = own_error(study, common, force)
         points.append(point)
     return points
