@@ -43,8 +43,9 @@ def main():
     forces = [f for f in ("main", "thrust") if any(len(paired(b, o, f)[0]) >= 2 for _, b, o in comparisons)]
     if not forces:
         sys.exit("no comparison has a force recorded for two packings")
-    fig, axes = plt.subplots(1, len(forces), figsize=(5 * len(forces), 4.4), squeeze=False)
-    for ax, force in zip(axes[0], forces):
+    fig, axes = plt.subplots(len(forces), 1, figsize=(max(6.0, 1.5 * len(comparisons)), 3.4 * len(forces) + 0.6),
+                             squeeze=False, sharex=True)
+    for ax, force in zip(axes[:, 0], forces):
         for k, (label, base, other) in enumerate(comparisons):
             diffs, bases, seeds = paired(base, other, force)
             label = label.replace("\n", " ")
@@ -60,14 +61,16 @@ def main():
             ax.plot([k + 0.12] * n, diffs, "o", ms=3, color="0.5", zorder=2)
             ax.errorbar([k], [mean], yerr=[half] if n >= 3 else None, fmt="s" if n >= 3 else "D", color=f"C{k}",
                         mfc=f"C{k}" if n >= 3 else "none", capsize=4, zorder=3)
-            ax.annotate(f"{100 * mean / base_mean:+.0f} %\n({n} packings" + (")" if n >= 3 else ",\nno interval)"),
-                        (k, mean), textcoords="offset points", xytext=(-10, 0), ha="right", va="center", fontsize=7,
+            top = max(diffs + [mean + half if n >= 3 else mean])
+            ax.annotate(f"{100 * mean / base_mean:+.0f} %, {n} packings" + ("" if n >= 3 else "\n(no interval)"),
+                        (k, top), textcoords="offset points", xytext=(0, 6), ha="center", va="bottom", fontsize=7,
                         color=f"C{k}")
+        ax.margins(y=0.18)
         ax.axhline(0, color="k", lw=0.8)
         ax.set_xticks(range(len(comparisons)))
         ax.set_xticklabels([c[0] for c in comparisons], fontsize=7)
-        ax.set_xlim(-0.8, len(comparisons) - 0.4)
-        ax.set_ylabel(f"{force} force difference, paired (N per mm of width)")
+        ax.set_xlim(-0.6, len(comparisons) - 0.4)
+        ax.set_ylabel(f"{force} force difference\n(N per mm of width)")
         ax.grid(True, axis="y", alpha=0.3)
     fig.suptitle("packing by packing (grey points): mean (square) and Student-t 95 % interval; open diamond: two "
                  "packings, mean only", fontsize=9)
