@@ -3,10 +3,10 @@
 same seeds of data/studies/steady_speed_undamped.json): the cuts of each set are matched by tool speed and packing
 seed, and for the main and thrust forces the script prints both means with the cuts' own errors
 (sqrt(sum sem^2) / n), the difference with that error and with the spread of the paired differences
-(std / sqrt(n), and its Student-t 95 % interval), and the mean active-window disks (a cut without a window: the workpiece's), steady damage
-depth (with the window's floor), steady subsurface cracks and wall time of each set, and, from each cut's
-forces.csv over the steady part, the share of samples with the tool in contact (main force > 0), the mean main
-force while in contact and the main force's 99th percentile.
+(std / sqrt(n), and its Student-t 95 % interval), and the mean active-window disks (a cut without a window:
+the workpiece's), steady damage depth (with the window's floor), steady subsurface cracks and wall time of each
+set, and, from each cut's forces.csv over the steady part, the share of samples with the tool in contact (main
+force > 0), the mean main force while in contact and the main force's 99th percentile.
 
     python3 bench/compare_steady_cuts.py BASE[:C][@A-B] OTHER[:C][@A-B]
     python3 bench/compare_steady_cuts.py record STUDY_DIR OUT.csv
@@ -157,7 +157,8 @@ def compare(base, other):
               f"{mean('subsurface_damage_depth_steady_um'):.0f} um (window floor {mean('damage_floor_um'):.0f} um), "
               f"{mean('cracks_subsurface_steady'):.0f} steady subsurface cracks, {mean('wall_time_s'):.0f} s per cut; "
               f"tool in contact in {100 * mean('contact_share'):.1f} % of the steady samples, main force "
-              f"{mean('main_force_in_contact_N'):.2f} N while in contact, 99th percentile {mean('main_force_p99_N'):.2f} N "
+              f"{mean('main_force_in_contact_N'):.2f} N while in contact, "
+              f"99th percentile {mean('main_force_p99_N'):.2f} N "
               f"(means of the packings that record them)")
 
 
