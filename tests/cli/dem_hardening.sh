@@ -50,9 +50,7 @@ small=(--set specimen.width_mm=0.4 --set specimen.height_mm=0.25 --set specimen.
 scene="$src/data/scenes/dem_cut.json"
 "$bin" run "$scene" "${small[@]}" --threads 1 --checkpoint-every 40 --out "$work/k" >/dev/null 2>&1 &
 pid=$!
-for _ in $(seq 1500); do [ -e "$work/k/checkpoint.bin" ] && break; sleep 0.01; done
-kill -9 $pid 2>/dev/null || fail "the cut ended before it could be killed"
-wait $pid 2>/dev/null
+kill_after_checkpoint $pid "$work/k"
 [ -e "$work/k/kerf.running" ] || fail "a killed run left no in-progress marker"
 cp "$work/k/checkpoint.bin" "$work/good.bin"
 echo partial >"$work/k/forces.csv.tmp-0badc0de"

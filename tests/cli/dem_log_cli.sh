@@ -46,9 +46,7 @@ grep -q "^cut: main force" "$work/log0" || fail "--log-every 0 lost the result l
 # A resumed run logs too: kill a checkpointed cut, resume it with stdout to a file.
 "$bin" run "$scene" "${small[@]}" --threads 1 --checkpoint-every 5 --out "$work/k" >/dev/null 2>&1 &
 pid=$!
-for _ in $(seq 1500); do [ -e "$work/k/checkpoint.bin" ] && break; sleep 0.01; done
-kill -9 $pid 2>/dev/null || fail "the run ended before it could be killed"
-wait $pid 2>/dev/null
+kill_after_checkpoint $pid "$work/k"
 "$bin" resume "$work/k" --threads 1 --log-every 1 >"$work/logr" 2>"$work/err" || fail "resume: $(cat "$work/err")"
 grep -qE "^cut: step [0-9]+ .* \| 100 %$" "$work/logr" || fail "the resumed cut does not log to 100 %: $(tail -3 "$work/logr")"
 tail -1 "$work/logr" | grep -q "^performance:" || fail "the resumed run has no performance line"

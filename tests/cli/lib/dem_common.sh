@@ -16,6 +16,19 @@ expect_input_error() {  # expect_input_error <text expected on stderr> <args...>
   grep -qF -- "$want" "$work/err" || fail "stderr lacks '$want' for: $*: $(cat "$work/err")"
 }
 
+# kill_after_checkpoint <pid> <dir>: waits until the run <pid> has written <dir>/checkpoint.bin (up to 300 s, or
+# until the run ends: on a loaded machine the first checkpoint can take many seconds), kills it (-9) and waits
+# for it; fails, saying which, if the run ended first or wrote no checkpoint.
+kill_after_checkpoint() {
+  local pid=$1 dir=$2 waited=0
+  until [ -e "$dir/checkpoint.bin" ] || ! kill -0 "$pid" 2>/dev/null || [ $waited -ge 30000 ]; do
+    sleep 0.01; waited=$((waited + 1))
+  done
+  kill -9 "$pid" 2>/dev/null || fail "the run ended before it could be killed ($dir)"
+  wait "$pid" 2>/dev/null
+  [ -e "$dir/checkpoint.bin" ] || fail "no checkpoint in $dir after $((waited / 100)) s"
+}
+
 # expect_kill_resume_equal <full dir> <kill dir> "<files>" <run args...>: runs kerf-dem with the args and
 # --out <kill dir> in the background, kills it (-9) once it has written a checkpoint, resumes it, and checks
 # that each file equals the one in <full dir> (an uninterrupted run of the same args) and that no
@@ -24,9 +37,7 @@ expect_kill_resume_equal() {
   local full="$1" kill_dir="$2" files="$3"; shift 3
   "$bin" "$@" --out "$kill_dir" >/dev/null 2>&1 &
   local pid=$!
-  for _ in $(seq 1500); do [ -e "$kill_dir/checkpoint.bin" ] && break; sleep 0.01; done
-  kill -9 $pid 2>/dev/null || fail "the run ended before it could be killed: $*"
-  wait $pid 2>/dev/null
+  kill_after_checkpoint $pid "$kill_dir"
   [ ! -e "$kill_dir/summary.json" ] || fail "the killed run had already finished: $*"
   "$bin" resume "$kill_dir" --threads 1 >/dev/null 2>"$work/err" || fail "resume: $(cat "$work/err")"
   local f
