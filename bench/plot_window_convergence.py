@@ -12,7 +12,6 @@ Needs numpy and matplotlib (/usr/bin/python3 on Debian).
 """
 import math
 import pathlib
-import statistics
 import sys
 
 import matplotlib
@@ -60,8 +59,9 @@ def main():
         fewest_disks = min([fewest_disks] + [p["disks"] for p in windows])
         most_disks = max([most_disks] + [p["disks"] for p in windows])
         for ax, force in zip(axes, ("main", "thrust")):
+            errors = [p[force + "_se"] for p in windows]
             ax.errorbar([p["disks"] for p in windows], [p[force] for p in windows],
-                        yerr=[p[force + "_se"] for p in windows], fmt="o-", color=colour, capsize=3,
+                        yerr=errors if all(map(math.isfinite, errors)) else None, fmt="o-", color=colour, capsize=3,
                         label=f"{label} ({points[0]['n']} packings)")
             for p in windows:
                 ax.annotate(p["window"], (p["disks"], p[force]), textcoords="offset points", xytext=(5, 5 - 14 * (k % 2)),
