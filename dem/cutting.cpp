@@ -308,18 +308,21 @@ CutCrackCounts count_cut_cracks(const std::vector<CrackEvent>& cracks, double y_
 
 void steady_statistics(CutResult& res, double from_travel_m) {
   double sm = 0, st = 0, sm2 = 0, st2 = 0;
-  int n = 0;
+  int n = 0, touching = 0;
   for (const auto& s : res.samples) {
     if (s.travel_m < from_travel_m) continue;
     sm += s.main_force_n, st += s.thrust_force_n;
     sm2 += s.main_force_n * s.main_force_n, st2 += s.thrust_force_n * s.thrust_force_n;
+    touching += s.main_force_n > 0 ? 1 : 0;
     ++n;
   }
   res.n_steady_samples = n;
   if (n == 0) {
     res.main_force_n = res.thrust_force_n = res.main_force_std_n = res.thrust_force_std_n = 0;
+    res.contact_share = 0;
     return;
   }
+  res.contact_share = static_cast<double>(touching) / n;
   res.main_force_n = sm / n;
   res.thrust_force_n = st / n;
   res.main_force_std_n = std::sqrt(std::max(0.0, sm2 / n - res.main_force_n * res.main_force_n));

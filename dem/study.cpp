@@ -1,6 +1,7 @@
 // A study: a base scene under several conditions, each on several packings, one table of results
 // (kerf/dem/study.hpp). The MPI transport is dem/study_mpi.cpp.
 #include "kerf/dem/study.hpp"
+#include "kerf/dem/study_record.hpp"
 
 #include <fmt/format.h>
 #include <gsl/gsl_cdf.h>
@@ -86,9 +87,14 @@ std::string study_keys_markdown() {
          "| `conditions.grid` | - | an object of non-empty lists | one condition | every combination of the values "
          "listed for each scene key path (the first key varies slowest) |\n"
          "| `conditions.list` | - | a non-empty list of objects | one condition | the conditions one by one, each "
-         "an object of scene key path: value |\n"
+         "an object of scene key path: value, and optionally `tags`, an object of name: value that labels the "
+         "condition in the record (no override) |\n"
          "| `replicates` | - | an object | `{\"policy\": \"fixed\", \"count\": 1}` | the packings per condition "
          "(`study.replicates`) |\n"
+         "| `record.file` | - | a CSV file name | none | one row per finished item, written as each finishes and "
+         "reused by a rerun on any machine (relative to the study file; e.g. `results/NAME.csv`) |\n"
+         "| `record.results` | - | a non-empty list of result names | required with `record.file` | the summary "
+         "results each row carries (e.g. `main_force_N`) |\n"
          "| `description` | - | a text | none | free text, copied into summary.json |\n";
 }
 
@@ -163,6 +169,17 @@ StudySpec read_study(const Json& doc, const fs::path& study_file) {
         if (!l[i].is_object()) throw InputError(where, json_value_text(l[i]), "an object (key path: value)");
         StudyCondition c;
         for (const auto& [key, v] : l[i].items()) {
+          if (key == "tags") {  // labels of the condition (the record's columns), not overrides
+            if (!v.is_object()) throw InputError(where + ".tags", json_value_text(v), "an object of name: value");
+            for (const auto& [name, t] : v.items()) {
+              if (t.is_array() || t.is_object() || t.is_null())
+                throw InputError(where + ".tags." + name, json_value_text(t), "a number, text or true/false");
+              c.tags.emplace_back(name, t);
+              if (std::find(s.tag_names.begin(), s.tag_names.end(), name) == s.tag_names.end())
+                s.tag_names.push_back(name);
+            }
+            continue;
+          }
           check_key_path(key, where);
           if (v.is_array() || v.is_object() || v.is_null())
             throw InputError(where + "." + key, json_value_text(v), "a number, text or true/false");
@@ -196,6 +213,22 @@ StudySpec read_study(const Json& doc, const fs::path& study_file) {
       throw InputError("replicates.max_count", std::to_string(s.replicates.max_count),
                        fmt::format("at least min_count ({})", s.replicates.min_count));
     r->finish();
+  }
+  if (auto record = root.find_object("record")) {
+    StudyRecordSpec r;
+    const std::string file = record->get_string("file");
+    if (file.empty()) throw InputError("record.file", "(empty)", "a CSV file name, relative to the study file");
+    r.file = fs::path(file).is_relative() ? study_dir / file : fs::path(file);
+    const Json& results = record->get("results");
+    if (!results.is_array() || results.empty())
+      throw InputError("record.results", json_value_text(results), "a non-empty list of result names");
+    for (const Json& name : results) {
+      if (!name.is_string() || name.get<std::string>().empty())
+        throw InputError("record.results", json_value_text(name), "a result name, e.g. main_force_N");
+      r.results.push_back(name.get<std::string>());
+    }
+    record->finish();
+    s.record = std::move(r);
   }
   root.finish();
   // The base scene as the items will read it (its kind, its sections); errors name the scene's key.
@@ -291,7 +324,20 @@ std::optional<Checkpoint> item_checkpoint(const fs::path& partial, const Json& d
   return std::nullopt;
 }
 
+double thread_cpu_s() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
 }  // namespace
+
+std::string study_scene_key(const Json& scene) { return text_hash_fnv1a64(without_description(scene).dump()); }
+
+std::string study_item_scene_key(const StudySpec& spec, const StudyItem& item) {
+  std::vector<std::string> overrides;
+  return study_scene_key(item_scene(spec, item, overrides));
+}
 
 Json read_study_item_summary(const fs::path& out, const StudyItem& item) {
   return read_json_file((out / "items" / study_item_name(item) / "summary.json").string());
@@ -308,6 +354,7 @@ StudyItemResult run_study_item(const StudySpec& spec, const StudyItem& item, con
   // One name per item, so that a rerun finds a killed run's checkpoint (one process runs an item at a time).
   const fs::path partial = items / (std::string(OutputManifest::kInFlightPrefix) + study_item_name(item));
   const auto start = std::chrono::steady_clock::now();
+  const double cpu_start = thread_cpu_s();
   try {
     std::vector<std::string> overrides;
     const Json doc = item_scene(spec, item, overrides);
@@ -363,6 +410,9 @@ StudyItemResult run_study_item(const StudySpec& spec, const StudyItem& item, con
                                  {"seed", item.seed},        {"scene", doc},
                                  {"wall_time_s", r.wall_time_s}, {"host", r.host},
                                  {"rank", rank},             {"threads", std::max(1, threads)},
+                                 // This thread's CPU time: the item's, when it ran on one thread (this run's
+                                 // part of a resumed item).
+                                 {"cpu_time_s", threads <= 1 ? Json(thread_cpu_s() - cpu_start) : Json(nullptr)},
                                  {"exit_status", outcome.exit_status},
                                  {"resumed_from_sample", r.resumed_from_sample}};
     write_file_atomically(partial / "summary.json", summary.dump(2) + "\n");
@@ -774,6 +824,9 @@ StudyOutcome run_study_local(const StudySpec& spec, const StudyOptions& options)
   const int side_by_side = std::max(1, std::min(threads, static_cast<int>(first_wave)));
   const int inner = std::max(1, threads / side_by_side);
   StudyProgress progress(options, side_by_side);
+  std::optional<StudyRecord> record;
+  if (spec.record) record.emplace(spec);
+  StudyRecord* const recorded = record ? &*record : nullptr;
   std::mutex mutex;
   std::exception_ptr failure;   // a bug or no memory: rethrown
   std::exception_ptr stopped;   // stop_at_first_failure: the first failed item's error, rethrown
@@ -786,7 +839,7 @@ StudyOutcome run_study_local(const StudySpec& spec, const StudyOptions& options)
       {
         const std::lock_guard<std::mutex> lock(mutex);
         if (failure || stopped || scheduler.finished()) break;
-        item = scheduler.next();
+        item = next_item_to_run(scheduler, recorded, options.out, progress);
         progress.tick(scheduler);
       }
       if (!item) {  // an adaptive condition waits for results before it asks for more
@@ -799,6 +852,7 @@ StudyOutcome run_study_local(const StudySpec& spec, const StudyOptions& options)
         const std::lock_guard<std::mutex> lock(mutex);
         if (!r.ok && options.stop_at_first_failure && !stopped)
           stopped = r.exception ? r.exception : std::make_exception_ptr(ModelError(study_item_name(r.item), r.error));
+        record_finished_item(recorded, r, options.out);
         scheduler.complete(r);
         progress.item_done(r, scheduler);
       } catch (...) {  // run_study_item keeps the item's own failures; this is a bug or no memory

@@ -4,6 +4,7 @@
 // time); the coordinator answers kItem (the item) or kStop. A worker with no answer yet waits in a loop of
 // MPI_Iprobe and short sleeps (20 us doubling up to 0.5 ms), not in a blocking receive (Open MPI's spins a core).
 #include "kerf/dem/study_mpi.hpp"
+#include "kerf/dem/study_record.hpp"
 
 #include <cstdlib>
 
@@ -116,10 +117,13 @@ StudyOutcome coordinate(const StudySpec& spec, const StudyOptions& options, int 
   const auto start = std::chrono::steady_clock::now();
   StudyScheduler scheduler(spec);
   StudyProgress progress(options, size - 1);
+  std::optional<StudyRecord> record;
+  if (spec.record) record.emplace(spec);
+  StudyRecord* const recorded = record ? &*record : nullptr;
   std::deque<int> waiting;  // workers with nothing to do until a result decides an adaptive condition
   int stopped = 0;
   const auto answer = [&](int worker) {
-    if (const auto item = scheduler.next()) {
+    if (const auto item = next_item_to_run(scheduler, recorded, options.out, progress)) {
       send_text(Json{{"condition", item->condition}, {"replicate", item->replicate}, {"seed", item->seed}}.dump(),
                 worker, kItem);
     } else if (scheduler.finished()) {
@@ -134,6 +138,7 @@ StudyOutcome coordinate(const StudySpec& spec, const StudyOptions& options, int 
     const std::string text = receive_text(MPI_ANY_SOURCE, status, [&] { progress.tick(scheduler); });
     if (!text.empty()) {
       const StudyItemResult r = study_item_result_from_json(Json::parse(text));
+      record_finished_item(recorded, r, options.out);
       scheduler.complete(r);
       progress.item_done(r, scheduler);
     }

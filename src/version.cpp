@@ -41,15 +41,20 @@ std::string command_line(int argc, const char* const* argv) {
   return line;
 }
 
-std::string file_hash_fnv1a64(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return "";
+std::string text_hash_fnv1a64(std::string_view text) {
   std::uint64_t hash = 14695981039346656037ull;
-  for (auto it = std::istreambuf_iterator<char>(in); it != std::istreambuf_iterator<char>(); ++it) {
-    hash ^= static_cast<unsigned char>(*it);
+  for (const char c : text) {
+    hash ^= static_cast<unsigned char>(c);
     hash *= 1099511628211ull;
   }
   return fmt::format("{:016x}", hash);
+}
+
+std::string file_hash_fnv1a64(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return "";
+  const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  return text_hash_fnv1a64(bytes);
 }
 
 Json run_provenance(const std::string& command, const std::string& scene_path, const std::vector<std::string>& overrides) {

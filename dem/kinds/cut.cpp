@@ -81,6 +81,7 @@ Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& d
            {"thrust_force_batch_samples", res.thrust_force_batch_samples},
            {"steady_from_travel_mm", units::m_to_mm(cut.entry_fraction * cut.length_m)},
            {"steady_samples", res.n_steady_samples},
+           {"contact_share_steady", res.contact_share},
            {"width_mm", units::m_to_mm(res.width_m)},
            {"cracks_tensile", res.cracks.tensile},
            {"cracks_shear", res.cracks.shear},

@@ -22,6 +22,8 @@ std::string version_line(std::string_view program);
 /// Arguments joined into one shell line, quoting those that need it.
 std::string command_line(int argc, const char* const* argv);
 
+/// 64-bit FNV-1a of a text's bytes as 16 hex digits.
+std::string text_hash_fnv1a64(std::string_view text);
 /// 64-bit FNV-1a of a file's bytes as 16 hex digits; empty when it cannot be read.
 std::string file_hash_fnv1a64(const std::string& path);
 

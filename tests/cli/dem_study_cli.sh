@@ -229,6 +229,59 @@ sed 's/{"loading.speed_m_per_s": -1}]/{"loading.speed_m_per_s": -1}, {"material.
 [ $? -eq 3 ] || fail "an override that cannot apply: expected exit 3 ($(cat "$work/err"))"
 grep -q "3 items (2 failed, 1 reused)" "$work/log" || fail "an override that cannot apply: $(tail -2 "$work/log")"
 
+# A record (issue 41): a row per finished item with its condition's tags, written as each finishes; a rerun
+# into another directory (the first one lost with its machine) reuses every recorded item, runs none and leaves
+# the record as it was; a condition that changes runs again and adds its rows; under mpirun the same rows.
+record_study() {  # record_study <file> <second speed>
+  cat >"$1" <<JSON
+{"scene": "$src_abs/data/scenes/dem_tension.json",
+ "set": ["specimen.width_mm=0.2", "specimen.height_mm=0.4", "specimen.growth_steps=2000", "specimen.relax_steps=500",
+         "loading.quasi_static_check=false", "output.frame_every_samples=0"],
+ "conditions": {"list": [{"tags": {"grip": "slow", "rate": 1}, "loading.speed_m_per_s": 0.1},
+                         {"tags": {"grip": "fast", "rate": 2}, "loading.speed_m_per_s": $2}]},
+ "replicates": {"policy": "fixed", "count": 2},
+ "record": {"file": "results/rec.csv", "results": ["tensile_strength_MPa", "no_such_result"]}}
+JSON
+}
+mkdir -p "$work/rec"
+record_study "$work/rec/study.json" 0.2
+"$bin" study "$work/rec/study.json" --out "$work/rec_a" --threads 2 >"$work/log" 2>"$work/err" || fail "record study: $(cat "$work/err")"
+rec="$work/rec/results/rec.csv"
+[ -s "$rec" ] || fail "no record written"
+head -1 "$rec" | grep -qx "condition,grip,rate,seed,tensile_strength_MPa,no_such_result,cpu_time_s,wall_time_s,threads,host,kerf_version,git_commit,date,scene_fnv1a64" ||
+  fail "record header: $(head -1 "$rec")"
+python3 - "$rec" "$work/rec_a/items.csv" <<'EOF' || fail "the record does not hold the items' results"
+import csv, sys
+rec = list(csv.DictReader(open(sys.argv[1])))
+items = {(r["condition"], r["seed"]): r for r in csv.DictReader(open(sys.argv[2]))}
+assert len(rec) == 4, rec
+assert [(r["condition"], r["grip"], r["rate"], r["seed"]) for r in rec] == \
+    [("1", "slow", "1", "1"), ("1", "slow", "1", "2"), ("2", "fast", "2", "1"), ("2", "fast", "2", "2")], rec
+for r in rec:
+    assert float(r["tensile_strength_MPa"]) == float(items[(r["condition"], r["seed"])]["tensile_strength_MPa"]), r
+    assert r["no_such_result"] == "" and float(r["cpu_time_s"]) > 0 and r["threads"] == "1", r
+    assert len(r["scene_fnv1a64"]) == 16 and r["kerf_version"] and r["date"], r
+assert len({r["scene_fnv1a64"] for r in rec}) == 4
+EOF
+cp "$rec" "$work/rec_first.csv"
+"$bin" study "$work/rec/study.json" --out "$work/rec_b" --threads 2 >"$work/log" 2>"$work/err" || fail "record rerun: $(cat "$work/err")"
+grep -q "study: 4 items (0 failed, 4 reused)" "$work/log" || fail "record rerun did not reuse every item: $(cat "$work/log")"
+[ ! -e "$work/rec_b/items/condition_1_seed_1" ] || fail "record rerun ran an item"
+cmp -s "$rec" "$work/rec_first.csv" || fail "record rerun changed the record: $(diff "$rec" "$work/rec_first.csv" | head -5)"
+same_means() { grep tensile_strength "$1/conditions.csv" | cut -d, -f1-6; }
+diff <(same_means "$work/rec_a") <(same_means "$work/rec_b") >/dev/null || fail "record rerun: other means: $(cat "$work/rec_b/conditions.csv")"
+record_study "$work/rec/study.json" 0.3
+"$bin" study "$work/rec/study.json" --out "$work/rec_c" --threads 2 >"$work/log" 2>"$work/err" || fail "record, changed condition: $(cat "$work/err")"
+grep -q "study: 4 items (0 failed, 2 reused)" "$work/log" || fail "a changed condition: $(cat "$work/log")"
+[ "$(tail -n +2 "$rec" | wc -l)" -eq 6 ] || fail "a changed condition's rows were not added: $(cat "$rec")"
+if [ "$with_mpi" = 1 ]; then
+  record_study "$work/rec/study.json" 0.2
+  rm "$rec"
+  "${mpi[@]}" -np 3 "$bin" study "$work/rec/study.json" --out "$work/rec_mpi" >"$work/log" 2>"$work/err" || fail "record under mpirun: $(cat "$work/err")"
+  diff <(cut -d, -f1-5,14 "$rec") <(cut -d, -f1-5,14 "$work/rec_first.csv") >/dev/null ||
+    fail "record under mpirun differs: $(diff "$rec" "$work/rec_first.csv" | head -5)"
+fi
+
 # Bad study files: exit 2, one line naming the key.
 bad() {  # bad <expected text> <study JSON>
   printf '%s\n' "$2" >"$work/bad.json"
@@ -250,6 +303,8 @@ bad "kerf-dem: error: replicates.results = (missing)" "{$tension, \"replicates\"
 bad "kerf-dem: error: replicates.max_count = 3: expected at least min_count (5)" "{$tension, \"replicates\": {\"policy\": \"adaptive\", \"results\": [\"x\"], \"min_count\": 5, \"max_count\": 3}}"
 bad "kerf-dem: error: replicates.target_relative_sem_percent = 0" "{$tension, \"replicates\": {\"policy\": \"adaptive\", \"results\": [\"x\"], \"target_relative_sem_percent\": 0}}"
 bad "kerf-dem: error: set = 3" "{$tension, \"set\": [3]}"
+bad "kerf-dem: error: record.results = []" "{$tension, \"record\": {\"file\": \"r.csv\", \"results\": []}}"
+bad "kerf-dem: error: conditions.list[0].tags = 3" "{$tension, \"conditions\": {\"list\": [{\"tags\": 3}]}}"
 bad "kerf-dem: error: scene.specimen.radius_min_um = -1" "{$tension, \"set\": [\"specimen.radius_min_um=-1\"]}"
 bad "kerf-dem: error: scene.kind = bending" "{\"scene\": {\"kind\": \"bending\"}}"
 [ ! -e "$work/bad_out/items.csv" ] || fail "a rejected study wrote output"

@@ -159,6 +159,8 @@ struct CutResult {
   double main_force_inefficiency = 1, thrust_force_inefficiency = 1;
   std::size_t main_force_batch_samples = 1, thrust_force_batch_samples = 1;
   int n_steady_samples = 0;
+  /// Share of the steady samples with the tool in contact (main force > 0): an intermittent cut's duty cycle.
+  double contact_share = 0;
   std::vector<TravelWindow> travel_windows;  ///< mean forces per params.window_m of travel (once finished)
   CutCrackCounts cracks;
   double y_top_m = 0, y_cut_m = 0, width_m = 0;  ///< width = out-of-plane thickness

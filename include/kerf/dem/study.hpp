@@ -55,9 +55,19 @@ struct StudyReplicates {
 };
 const FieldTable<StudyReplicates>& study_replicates_fields();
 
-/// One condition: the overrides (key path, value) it applies to the base scene, in the study's key order.
+/// One condition: the overrides (key path, value) it applies to the base scene, in the study's key order, and
+/// its tags (name, value: a list condition's "tags", e.g. {"domain": "default"}), which label it in the record
+/// and change nothing in its scene.
 struct StudyCondition {
   std::vector<std::pair<std::string, Json>> values;
+  std::vector<std::pair<std::string, Json>> tags;
+};
+
+/// The study's "record": a CSV file with one row per finished item (kerf/dem/study_record.hpp), which a rerun
+/// anywhere reuses, so that a study's results outlive its output directory.
+struct StudyRecordSpec {
+  std::filesystem::path file;        ///< absolute (the study file's key is relative to the study file)
+  std::vector<std::string> results;  ///< the summary results each row carries
 };
 
 struct StudySpec {
@@ -69,6 +79,8 @@ struct StudySpec {
   std::vector<std::string> varied_keys;
   std::vector<StudyCondition> conditions;
   StudyReplicates replicates;
+  std::optional<StudyRecordSpec> record;
+  std::vector<std::string> tag_names;  ///< every condition's tag names, in first-seen order
   bool seeded = true;                 ///< the base scene generates its specimen (replicates differ in seed)
   std::uint64_t base_seed = 0;        ///< the base scene's specimen.seed
   Json document;                      ///< the study file as read (summary.json's provenance)
@@ -100,7 +112,7 @@ struct StudyItemResult {
   double wall_time_s = 0;
   std::string host;
   int rank = 0;
-  bool reused = false;  ///< found finished in DIR/items (wall time, host and rank are the original run's)
+  bool reused = false;  ///< found finished in DIR/items or in the record (wall time, host, rank: the original run's)
   int resumed_from_sample = 0;  ///< > 0: continued from a killed run's checkpoint (wall time: this run's part)
   std::exception_ptr exception;  ///< on this machine: what stopped the item (not sent between ranks)
 };
@@ -120,6 +132,11 @@ std::string study_item_name(const StudyItem& item);
 /// result's error. `on_progress`, if set, gets the item's progress reports, each stage named "NAME: stage".
 StudyItemResult run_study_item(const StudySpec& spec, const StudyItem& item, const std::filesystem::path& out,
                                int threads, int rank, double checkpoint_every_s, const ProgressCallback& on_progress = {});
+/// What an item's result depends on, as a key: the 64-bit FNV-1a (16 hex digits) of its scene (the base scene,
+/// the study's `set`, the condition's overrides, its packing seed), top-level description aside.
+std::string study_item_scene_key(const StudySpec& spec, const StudyItem& item);
+/// The same key of a scene as an item ran it (its summary's study_item.scene).
+std::string study_scene_key(const Json& scene);
 /// DIR/items/NAME/summary.json of a finished item, read.
 Json read_study_item_summary(const std::filesystem::path& out, const StudyItem& item);
 
@@ -128,6 +145,7 @@ Json read_study_item_summary(const std::filesystem::path& out, const StudyItem& 
 class StudyScheduler {
  public:
   explicit StudyScheduler(const StudySpec& spec);
+  const StudySpec& spec() const { return spec_; }
   /// The next item to hand out: the items every condition needs first (replicate-major), then, while an
   /// adaptive condition is undecided, one more of the least advanced one. None: nothing now (finished(), or
   /// wait for results).

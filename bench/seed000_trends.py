@@ -1,0 +1,319 @@
+#!/usr/bin/env python3
+"""The seed-000 trends from a record of steady cuts (issue 41): does the DEM reproduce what the experiments show,
+and is each trend the same in the two domains?
+
+    python3 bench/seed000_trends.py [RECORD.csv] [--out DIR] [--experiments CSV]
+
+RECORD (default data/studies/results/seed000_steady.csv) is the record that `kerf-dem study
+data/studies/seed000_steady.json` writes, one row per cut: domain, surface (regular, rectangular, trapezoidal),
+depth_of_cut_mm, seed, main_force_N, thrust_force_N, width_mm, ... Everything here comes from the record and the
+experiments' table alone, so the numbers outlive the machine that ran the cuts.
+
+Statistics. A condition's mean is over its packings (the independent samples); its standard error is the
+sample standard deviation / sqrt(n), with n - 1 degrees of freedom. A ratio of two conditions' means (depth
+effect, groove effect, trapezoid against rectangle) is treated as a ratio of independent means (the cuts of two
+conditions share a packing seed, but an intermittent cut decorrelates them; the paired spread is printed beside
+it): its 95 % interval is Fieller's (Fieller 1954; exact for normal means, unbounded when the denominator is
+not resolved from zero), with Student's t at the Welch-Satterthwaite degrees of freedom of the delta-method
+variance (rounded down). A difference of two estimates (kerf against the experiments, one domain against the
+other) uses the delta-method standard errors, sqrt(se1^2 + se2^2), with Welch-Satterthwaite degrees of freedom.
+Verdicts come from those intervals only: 'agrees' when the 95 % interval of the difference contains 0,
+'differs' when it does not, 'not resolved' when an interval cannot be formed (fewer than two packings, or an
+unbounded ratio).
+
+Writes DIR/trends.csv (one row per trend and source) and DIR/trends.png (+ .pdf): each trend with both domains,
+the experiments and the paper's DEM, with their intervals.
+"""
+import argparse
+import csv
+import math
+import pathlib
+import statistics
+import sys
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+from compare_steady_cuts import t975  # noqa: E402  (Student's t table, shared)
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+RECORD = ROOT / "data/studies/results/seed000_steady.csv"
+EXPERIMENTS = ROOT / "data/experiments/soda_lime_orthogonal_cutting.csv"
+DOMAINS = ("default", "large")
+GROOVED = ("rectangular", "trapezoidal")
+
+
+class Estimate:
+    """A value with its standard error, degrees of freedom and 95 % interval (low, high)."""
+
+    def __init__(self, value, se, dof, low=None, high=None, n=0):
+        self.value, self.se, self.dof, self.n = value, se, dof, n
+        usable = math.isfinite(se) and dof >= 1
+        half = t(dof) * se if usable else math.nan
+        self.low = low if low is not None else (value - half if usable else math.nan)
+        self.high = high if high is not None else (value + half if usable else math.nan)
+
+    def resolved(self):
+        return all(math.isfinite(x) for x in (self.value, self.low, self.high))
+
+
+def t(dof):
+    """Student's t, two-sided 95 %, at dof rounded down (conservative for Welch's fractional dof)."""
+    return t975(max(1, int(math.floor(dof))))
+
+
+def mean_of(values):
+    """The mean over packings: sample std / sqrt(n), n - 1 degrees of freedom."""
+    values = [v for v in values if math.isfinite(v)]
+    n = len(values)
+    if n == 0:
+        return Estimate(math.nan, math.nan, 0)
+    if n == 1:
+        return Estimate(values[0], math.nan, 0, n=1)
+    return Estimate(statistics.mean(values), statistics.stdev(values) / math.sqrt(n), n - 1, n=n)
+
+
+def welch_dof(terms):
+    """Welch-Satterthwaite: terms are (variance contribution, its dof)."""
+    total = sum(v for v, _ in terms)
+    denominator = sum(v * v / d for v, d in terms if d > 0)
+    return total * total / denominator if denominator > 0 else math.inf
+
+
+def ratio(a, b):
+    """a / b of two independent means: Fieller's 95 % interval at the delta method's Welch dof."""
+    if not (math.isfinite(a.se) and math.isfinite(b.se)) or b.value == 0:
+        return Estimate(a.value / b.value if b.value else math.nan, math.nan, 0)
+    r = a.value / b.value
+    va, vb = (a.se / b.value) ** 2, (r * b.se / b.value) ** 2
+    dof = welch_dof([(va, a.dof), (vb, b.dof)])
+    q = t(dof) ** 2
+    # (a - theta b)^2 <= q (sa^2 + theta^2 sb^2): a quadratic in theta.
+    qa = b.value ** 2 - q * b.se ** 2
+    qb = -2 * a.value * b.value
+    qc = a.value ** 2 - q * a.se ** 2
+    disc = qb * qb - 4 * qa * qc
+    if qa <= 0 or disc < 0:  # the denominator is not resolved from zero: unbounded
+        return Estimate(r, math.sqrt(va + vb), dof, -math.inf, math.inf)
+    root = math.sqrt(disc)
+    return Estimate(r, math.sqrt(va + vb), dof, (-qb - root) / (2 * qa), (-qb + root) / (2 * qa))
+
+
+def difference(x, y):
+    """x - y of two independent estimates: delta-method standard error, Welch dof (not resolved where either
+    interval is not: an unbounded Fieller interval is not made finite by the delta method)."""
+    if not (x.resolved() and y.resolved()):
+        return Estimate(x.value - y.value, math.nan, 0)
+    dof = welch_dof([(x.se ** 2, x.dof), (y.se ** 2, y.dof)])
+    return Estimate(x.value - y.value, math.hypot(x.se, y.se), dof)
+
+
+def verdict(d):
+    """From the interval of a difference only."""
+    if not d.resolved():
+        return "not resolved"
+    return "agrees" if d.low <= 0 <= d.high else "differs"
+
+
+def read_record(path):
+    """{(domain, surface, depth_mm): {seed: row}} with numbers as floats."""
+    cuts = {}
+    with open(path, newline="") as f:
+        for row in csv.DictReader(f):
+            key = (row["domain"], row["surface"], round(float(row["depth_of_cut_mm"]), 6))
+            values = {}
+            for k, v in row.items():
+                try:
+                    values[k] = float(v)
+                except (TypeError, ValueError):
+                    values[k] = v
+            cuts.setdefault(key, {})[int(float(row["seed"]))] = values
+    return cuts
+
+
+def per_width(row, force):
+    width = row.get("width_mm", 1.0)
+    width = width if isinstance(width, float) and math.isfinite(width) and width > 0 else 1.0
+    return row[f"{force}_force_N"] / width
+
+
+def read_experiments(path):
+    """{(source, surface, depth_mm): {"main": [...], "thrust": [...]}} per mm of width."""
+    out = {}
+    with open(path, newline="") as f:
+        for row in csv.DictReader(line for line in f if not line.startswith("#")):
+            key = (row["source"], row["surface"], round(float(row["depth_of_cut_mm"]), 6))
+            width = float(row["width_mm"])
+            d = out.setdefault(key, {"main": [], "thrust": []})
+            d["main"].append(float(row["main_force_N"]) / width)
+            d["thrust"].append(float(row["thrust_force_N"]) / width)
+    return out
+
+
+class Sources:
+    """Per condition means of kerf (by domain) and of the references (experiment, paper_dem)."""
+
+    def __init__(self, cuts, experiments):
+        self.cuts, self.experiments = cuts, experiments
+
+    def kerf(self, domain, surface, depth, quantity):
+        rows = self.cuts.get((domain, surface, depth), {}).values()
+        if quantity in ("main", "thrust"):
+            return mean_of([per_width(r, quantity) for r in rows])
+        return mean_of([r.get(quantity, math.nan) for r in rows])
+
+    def reference(self, source, surface, depth, quantity):
+        surface = "grooved" if surface in GROOVED else surface
+        values = self.experiments.get((source, surface, depth), {}).get(quantity)
+        return mean_of(values) if values else None
+
+
+def trends(src):
+    """Every trend: (name, group, {source: Estimate}), sources 'kerf default', 'kerf large', 'experiment',
+    'paper DEM'; ratios of condition means (levels: the means themselves)."""
+    out = []
+
+    def add(name, group, make_kerf, make_ref):
+        values = {}
+        for domain in DOMAINS:
+            e = make_kerf(domain)
+            if e is not None and math.isfinite(e.value):
+                values[f"kerf {domain}"] = e
+        for source, label in (("experiment", "experiment"), ("paper_dem", "paper DEM")):
+            e = make_ref(source) if make_ref else None
+            if e is not None and math.isfinite(e.value):
+                values[label] = e
+        if values:
+            out.append((name, group, values))
+
+    def ref_ratio(source, num, den, q):
+        a, b = src.reference(source, *num, q), src.reference(source, *den, q)
+        return ratio(a, b) if a and b else None
+
+    for q in ("main", "thrust"):
+        for surface in ("regular",) + GROOVED:
+            for depth in (0.1, 0.2):
+                add(f"{q} force per mm, {surface} {depth} mm (N/mm)", "level",
+                    lambda dom, s=surface, d=depth, q=q: src.kerf(dom, s, d, q),
+                    lambda source, s=surface, d=depth, q=q: src.reference(source, s, d, q))
+    for q in ("main", "thrust"):
+        for surface in ("regular",) + GROOVED:
+            add(f"depth effect {q}, {surface} (0.2 / 0.1 mm)", "ratio",
+                lambda dom, s=surface, q=q: ratio(src.kerf(dom, s, 0.2, q), src.kerf(dom, s, 0.1, q)),
+                lambda source, s=surface, q=q: ref_ratio(source, (s, 0.2), (s, 0.1), q))
+    for q in ("main", "thrust"):
+        for surface in GROOVED:
+            for depth in (0.1, 0.2):
+                add(f"groove effect {q}, {surface} / regular at {depth} mm", "ratio",
+                    lambda dom, s=surface, d=depth, q=q: ratio(src.kerf(dom, s, d, q), src.kerf(dom, "regular", d, q)),
+                    lambda source, s=surface, d=depth, q=q: ref_ratio(source, (s, d), ("regular", d), q))
+    for depth in (0.1, 0.2):
+        add(f"trapezoidal / rectangular thrust at {depth} mm", "ratio",
+            lambda dom, d=depth: ratio(src.kerf(dom, "trapezoidal", d, "thrust"),
+                                       src.kerf(dom, "rectangular", d, "thrust")), None)
+        for surface in GROOVED:
+            add(f"damage depth, {surface} / regular at {depth} mm", "ratio",
+                lambda dom, s=surface, d=depth: ratio(src.kerf(dom, s, d, "subsurface_damage_depth_steady_um"),
+                                                     src.kerf(dom, "regular", d, "subsurface_damage_depth_steady_um")),
+                None)
+    return out
+
+
+def rows_of(all_trends):
+    """trends.csv's rows: each source's estimate, its difference from the experiment (and, for kerf's default
+    domain, from the large one) with the verdicts."""
+    rows = []
+    for name, group, values in all_trends:
+        exp = values.get("experiment")
+        for source, e in values.items():
+            row = {"trend": name, "group": group, "source": source, "n": e.n if group == "level" else "",
+                   "value": e.value, "ci95_low": e.low, "ci95_high": e.high}
+            if exp is not None and source != "experiment":
+                d = difference(e, exp)
+                row.update(minus_experiment=d.value, minus_experiment_low=d.low, minus_experiment_high=d.high,
+                           against_experiment=verdict(d))
+            if source == "kerf default" and "kerf large" in values:
+                d = difference(e, values["kerf large"])
+                row.update(default_minus_large=d.value, default_minus_large_low=d.low,
+                           default_minus_large_high=d.high, domain_robust=verdict(d))
+            rows.append(row)
+    return rows
+
+
+FIELDS = ["trend", "group", "source", "n", "value", "ci95_low", "ci95_high", "minus_experiment",
+          "minus_experiment_low", "minus_experiment_high", "against_experiment", "default_minus_large",
+          "default_minus_large_low", "default_minus_large_high", "domain_robust"]
+
+
+def write_csv(rows, path):
+    tmp = path.with_suffix(".csv.tmp")
+    with open(tmp, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=FIELDS, lineterminator="\n")
+        w.writeheader()
+        for r in rows:
+            w.writerow({k: f"{v:.4g}" if isinstance(v, float) else v for k, v in r.items()})
+    tmp.replace(path)
+
+
+STYLE = {"kerf default": ("o", "tab:blue"), "kerf large": ("s", "tab:orange"), "experiment": ("D", "black"),
+         "paper DEM": ("^", "tab:green")}
+
+
+def plot(all_trends, path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    groups = [("level", "force per mm of width (N/mm)", False), ("ratio", "ratio (log scale)", True)]
+    heights = [sum(1 for _, g, _ in all_trends if g == group) for group, _, _ in groups]
+    fig, axes = plt.subplots(1, 2, figsize=(15, 0.32 * max(heights) + 2.2))
+    for ax, (group, xlabel, log) in zip(axes, groups):
+        items = [(n, v) for n, g, v in all_trends if g == group]
+        offsets = {s: (k - 1.5) * 0.18 for k, s in enumerate(STYLE)}
+        for y, (name, values) in enumerate(items):
+            for source, e in values.items():
+                marker, colour = STYLE[source]
+                lo = e.low if math.isfinite(e.low) else e.value
+                hi = e.high if math.isfinite(e.high) else e.value
+                if log:
+                    lo, hi = max(lo, 1e-3), min(hi, 1e3)
+                ax.errorbar(e.value, y + offsets[source], xerr=[[max(0, e.value - lo)], [max(0, hi - e.value)]],
+                            fmt=marker, color=colour, ms=4, capsize=2, lw=1)
+        ax.set_yticks(range(len(items)))
+        ax.set_yticklabels([n for n, _ in items], fontsize=7)
+        ax.invert_yaxis()
+        ax.set_xlabel(xlabel)
+        if log:
+            ax.set_xscale("log")
+            ax.axvline(1, color="grey", lw=0.5)
+        ax.grid(axis="x", lw=0.3)
+    handles = [plt.Line2D([], [], marker=m, color=c, ls="", label=s) for s, (m, c) in STYLE.items()]
+    fig.legend(handles=handles, loc="upper center", ncol=4, frameon=False)
+    fig.suptitle("seed-000 trends: kerf's steady cut in two domains against the experiments and the paper's DEM "
+                 "(95 % intervals)", y=0.995, fontsize=10)
+    fig.tight_layout(rect=(0, 0, 1, 0.95))
+    fig.savefig(path)
+    fig.savefig(path.with_suffix(".pdf"))
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("record", nargs="?", default=str(RECORD))
+    parser.add_argument("--experiments", default=str(EXPERIMENTS))
+    parser.add_argument("--out", default="out/seed000_trends")
+    args = parser.parse_args(argv)
+    cuts = read_record(args.record)
+    all_trends = trends(Sources(cuts, read_experiments(args.experiments)))
+    rows = rows_of(all_trends)
+    out = pathlib.Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    write_csv(rows, out / "trends.csv")
+    plot(all_trends, out / "trends.png")
+    print("cuts per condition: " + ", ".join(f"{d}/{s}/{h} mm {len(v)}" for (d, s, h), v in sorted(cuts.items())))
+    for r in rows:
+        extra = f"  vs experiment: {r['against_experiment']}" if "against_experiment" in r else ""
+        extra += f"  domain: {r['domain_robust']}" if "domain_robust" in r else ""
+        print(f"{r['trend']:<58} {r['source']:<13} {r['value']:8.3g} [{r['ci95_low']:.3g}, {r['ci95_high']:.3g}]"
+              f"{extra}")
+    print(f"wrote {out / 'trends.csv'}, {out / 'trends.png'}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,121 @@
+"""bench/seed000_trends.py: the statistics of the seed-000 trends on synthetic records with known answers."""
+import csv
+import math
+import pathlib
+import random
+import sys
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "bench"))
+import seed000_trends as st  # noqa: E402
+
+
+def test_fieller_without_denominator_error_is_the_scaled_numerator_interval():
+    a = st.Estimate(6.0, 0.5, 7)
+    b = st.Estimate(2.0, 0.0, 7)
+    r = st.ratio(a, b)
+    half = st.t(7) * 0.5 / 2.0
+    assert math.isclose(r.value, 3.0)
+    assert math.isclose(r.low, 3.0 - half, rel_tol=1e-12)
+    assert math.isclose(r.high, 3.0 + half, rel_tol=1e-12)
+
+
+def test_fieller_is_unbounded_when_the_denominator_is_not_resolved_from_zero():
+    r = st.ratio(st.Estimate(1.0, 0.1, 7), st.Estimate(0.2, 0.5, 7))
+    assert r.low == -math.inf and r.high == math.inf
+    assert st.verdict(st.difference(r, st.Estimate(1.0, 0.1, 5))) == "not resolved"
+
+
+def test_fieller_interval_covers_the_true_ratio_95_percent_of_the_time():
+    rng = random.Random(41)
+    true_a, true_b, sd, n = 0.3, 0.45, 0.08, 8
+    trials, covered = 3000, 0
+    for _ in range(trials):
+        a = st.mean_of([rng.gauss(true_a, sd) for _ in range(n)])
+        b = st.mean_of([rng.gauss(true_b, sd) for _ in range(n)])
+        r = st.ratio(a, b)
+        covered += r.low <= true_a / true_b <= r.high
+    # Welch's dof rounded down makes it a little conservative; 3000 trials: binomial sd 0.4 %.
+    assert 0.94 <= covered / trials <= 0.975
+
+
+def test_welch_dof_of_two_equal_samples_is_their_pooled_dof():
+    x = st.mean_of([1.0, 2.0, 3.0, 4.0, 5.0])
+    y = st.mean_of([2.0, 3.0, 4.0, 5.0, 6.0])
+    d = st.difference(x, y)
+    assert math.isclose(d.dof, 8.0)
+    assert math.isclose(d.value, -1.0)
+    assert math.isclose(d.se, math.sqrt(2) * x.se)
+
+
+def write_record(path, means, n=8, spread=0.02, seed=3):
+    """A record whose conditions have the given mean main force (thrust = 0.8 main), n packings each."""
+    rng = random.Random(seed)
+    with open(path, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["condition", "domain", "surface", "depth_of_cut_mm", "seed", "main_force_N", "thrust_force_N",
+                    "width_mm", "subsurface_damage_depth_steady_um", "scene_fnv1a64"])
+        for c, ((domain, surface, depth), m) in enumerate(means.items()):
+            for k in range(n):
+                v = m * (1 + rng.gauss(0, spread))
+                w.writerow([c + 1, domain, surface, depth, k + 1, v, 0.8 * v, 1, 100 * v, f"{c:08x}{k:08x}"])
+
+
+def write_experiments(path, regular, grooved):
+    with open(path, "w", newline="") as f:
+        f.write("# synthetic\n")
+        w = csv.writer(f)
+        w.writerow(["source", "surface", "depth_of_cut_mm", "replicate", "width_mm", "main_force_N",
+                    "thrust_force_N"])
+        for surface, level in (("regular", regular), ("grooved", grooved)):
+            for depth in (0.1, 0.2):
+                for k, e in enumerate((-0.02, 0.0, 0.02)):
+                    w.writerow(["experiment", surface, depth, k + 1, 25.4, 25.4 * level * (1 + e),
+                                25.4 * 0.8 * level * (1 + e)])
+
+
+def groove_row(rows, source):
+    name = "groove effect main, rectangular / regular at 0.1 mm"
+    return next(r for r in rows if r["trend"] == name and r["source"] == source)
+
+
+def run(tmp_path, kerf_grooved, experiment_grooved):
+    means = {}
+    for domain in st.DOMAINS:
+        for depth in (0.1, 0.2):
+            means[(domain, "regular", depth)] = 0.5
+            means[(domain, "rectangular", depth)] = 0.5 * kerf_grooved
+    write_record(tmp_path / "record.csv", means)
+    write_experiments(tmp_path / "experiments.csv", 0.65, 0.65 * experiment_grooved)
+    src = st.Sources(st.read_record(tmp_path / "record.csv"), st.read_experiments(tmp_path / "experiments.csv"))
+    return st.rows_of(st.trends(src))
+
+
+def test_verdicts_follow_the_intervals(tmp_path):
+    # kerf's groove ratio 0.73 against the experiments' 0.15: resolved, it differs.
+    rows = run(tmp_path, 0.73, 0.15)
+    r = groove_row(rows, "kerf default")
+    assert math.isclose(r["value"], 0.73, rel_tol=0.03)
+    assert r["ci95_low"] < r["value"] < r["ci95_high"]
+    assert r["against_experiment"] == "differs"
+    assert r["domain_robust"] == "agrees"  # both domains drawn from the same means
+    # The same ratio in the experiments: it agrees.
+    rows = run(tmp_path, 0.15, 0.15)
+    assert groove_row(rows, "kerf default")["against_experiment"] == "agrees"
+    assert groove_row(rows, "kerf large")["against_experiment"] == "agrees"
+
+
+def test_domain_robustness_detects_a_domain_that_moves_a_trend(tmp_path):
+    means = {}
+    for depth in (0.1, 0.2):
+        means[("default", "regular", depth)] = 0.5
+        means[("default", "rectangular", depth)] = 0.4
+        means[("large", "regular", depth)] = 0.3
+        means[("large", "rectangular", depth)] = 0.06
+    write_record(tmp_path / "record.csv", means)
+    write_experiments(tmp_path / "experiments.csv", 0.65, 0.1)
+    rows = st.rows_of(st.trends(st.Sources(st.read_record(tmp_path / "record.csv"),
+                                           st.read_experiments(tmp_path / "experiments.csv"))))
+    assert groove_row(rows, "kerf default")["domain_robust"] == "differs"
+    level = next(r for r in rows if r["trend"] == "main force per mm, regular 0.1 mm (N/mm)"
+                 and r["source"] == "experiment")
+    assert math.isclose(level["value"], 0.65, rel_tol=1e-9)  # per mm of the experiments' 25.4 mm width
