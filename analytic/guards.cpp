@@ -25,7 +25,8 @@ constexpr GuardInfo kGuards[kGuardCount] = {
     {Guard::heat_partition_clamped, "heat_partition_clamped",
      "Oxley: heat partition beta outside [0, 1] (R_T tan(phi) outside the fitted range): clamped"},
     {Guard::no_chip_on_edge, "no_chip_on_edge",
-     "Liu-Li: the whole cut on the edge lies below the lower limit: ploughed, its force is not modelled"},
+     "Liu-Li: the whole cut on the edge lies below the lower limit: ploughed, no chip force; the ploughing "
+     "model (models.ploughing) gives its force, zero with 'none'"},
     {Guard::lower_limit_above_pole, "lower_limit_above_pole",
      "Liu-Li: constant friction angle puts a pole on the edge; integration starts above it"},
     {Guard::solver_at_bound, "solver_at_bound",
@@ -34,10 +35,13 @@ constexpr GuardInfo kGuards[kGuardCount] = {
      "turning: the chip is thinner along the edge than the feed suggests (depth of cut small against feed)"},
     {Guard::no_chip_on_rake_face, "no_chip_on_rake_face",
      "the nominal rake lies below the lower limit (stagnation point or pole): the rake face forms no chip either; "
-     "the whole cut is ploughed, its chip force is zero"},
+     "the whole cut is ploughed, its chip force is zero (the ploughing model gives the force under the edge)"},
     {Guard::contact_length_not_applicable, "contact_length_not_applicable",
      "a contact-length model is outside its domain here (its shear angle or length is not positive): its column "
      "is empty, the warning names the reason, the rest of the prediction stands"},
+    {Guard::ploughing_field_capped, "ploughing_field_capped",
+     "wave ploughing model: the chord of the engaged arc is steeper than eta = acos(f)/2, where the slip-line field "
+     "does not exist; its attack angle is capped at eta (the chord's length is kept)"},
 };
 }  // namespace
 

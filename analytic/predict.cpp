@@ -120,6 +120,12 @@ double prediction_friction_angle(const AnalyticScene& scene, double shear_angle_
   return beta;
 }
 
+/// The ploughing model's friction factor: the scene's cut.friction_factor, else sin(2 beta) from the prediction's
+/// one friction angle (Lee & Shaffer 1951; 0 for beta <= 0, 1, sticking, for beta >= 45 deg).
+double ploughing_friction_factor(const AnalyticScene& scene, double friction_angle_rad) {
+  return scene.friction_factor ? *scene.friction_factor : friction_factor_from_friction_angle(friction_angle_rad);
+}
+
 /// The sharp-tool models (Merchant, Oxley) ignore the edge: say so when it is not small against t0.
 void warn_if_edge_ignored(const AnalyticScene& scene, const char* model_and_remedy, Prediction& p) {
   const double ratio = scene.edge_radius_m / scene.uncut_chip_thickness_m;
@@ -265,8 +271,16 @@ Prediction predict_forces(const AnalyticScene& scene) {
                                      lower_limit_rule_name(scene.liu_li.lower_limit),
                                      units::rad_to_deg(liu_li.cut_off_rad)));
   }
-  p.cutting_force_N = liu_li.total.cutting_N_per_m * scene.width_m;
-  p.thrust_force_N = liu_li.total.thrust_N_per_m * scene.width_m;
+  // The ploughing term under the edge: the wave model on the chord of the arc below h_p = min(t0, h_s).
+  ForcePerWidth ploughing;
+  if (p.liu_li && scene.ploughing == PloughingModel::wave && params.edge_radius_m > 0.0) {
+    p.friction_factor = ploughing_friction_factor(scene, beta);
+    const EdgePloughingParams plough{.edge_radius_m = params.edge_radius_m, .friction_factor = p.friction_factor};
+    p.ploughing = edge_ploughing_force_per_width(plough, k_s, liu_li.ploughed_thickness_m, &p.guards);
+    ploughing = p.ploughing->force;
+  }
+  p.cutting_force_N = (liu_li.total.cutting_N_per_m + ploughing.cutting_N_per_m) * scene.width_m;
+  p.thrust_force_N = (liu_li.total.thrust_N_per_m + ploughing.thrust_N_per_m) * scene.width_m;
 
   if (scene.friction_angle_rad && std::fabs(beta - *scene.friction_angle_rad) > kSameAngle_rad) {
     p.warnings.push_back(fmt::format(
@@ -334,6 +348,11 @@ std::vector<std::pair<std::string, std::string>> prediction_columns(const Analyt
   add_input("width_mm", width_mm);
   add("cutting_force_N", p.cutting_force_N);
   add("thrust_force_N", p.thrust_force_N);
+  // The ploughing part of the totals (zero where the model adds none; empty for Oxley, which ignores the edge).
+  const bool chip_model = p.force_model != ForceModel::oxley;
+  const ForcePerWidth plough = p.ploughing ? p.ploughing->force : ForcePerWidth{};
+  row.emplace_back("ploughing_cutting_force_N", chip_model ? csv_number(plough.cutting_N_per_m * p.width_m) : "");
+  row.emplace_back("ploughing_thrust_force_N", chip_model ? csv_number(plough.thrust_N_per_m * p.width_m) : "");
   add("cutting_force_N_per_mm", p.cutting_force_N / width_mm);
   add("thrust_force_N_per_mm", p.thrust_force_N / width_mm);
   add("shear_angle_deg", units::rad_to_deg(p.shear_angle_rad));
@@ -367,6 +386,12 @@ std::vector<std::pair<std::string, std::string>> prediction_columns(const Analyt
     row.emplace_back("ploughed_thickness_um", optional_number(has, units::m_to_um(l.ploughed_thickness_m)));
     row.emplace_back("edge_cutting_force_N", optional_number(has, l.edge.cutting_N_per_m * p.width_m));
     row.emplace_back("edge_thrust_force_N", optional_number(has, l.edge.thrust_N_per_m * p.width_m));
+    add_text("ploughing_model", std::string(ploughing_model_name(scene.ploughing)));
+    const bool ploughs = p.ploughing.has_value();
+    row.emplace_back("friction_factor", optional_number(ploughs, p.friction_factor));
+    row.emplace_back("ploughing_attack_angle_deg",
+                     optional_number(ploughs, units::rad_to_deg(p.ploughing.value_or(EdgePloughingResult{})
+                                                                    .factors.attack_angle_rad)));
   }
   if (scene.oxley || scene.force_auto) {
     const bool has = p.oxley.has_value();

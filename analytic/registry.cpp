@@ -51,6 +51,11 @@ const std::vector<AnalyticModelInfo>& analytic_models() {
        id(LowerLimitRule::stagnation)},
       {"lower_limit", "pole", "integrate from just above the pole (or -pi/2)", "models.lower_limit_margin_deg",
        id(LowerLimitRule::pole)},
+      {"ploughing", "wave", "Challen-Oxley wave model (Wear 53, 1979) on the chord of the engaged arc below the "
+                            "stagnation point, as Waldorf, DeVor & Kapoor (1998) use it under a rounded edge",
+       "an edge radius; cut.friction_factor or a friction angle in [0, 45) deg", id(PloughingModel::wave)},
+      {"ploughing", "none", "no force under the edge below the stagnation point (the ploughed layer is reported)", "",
+       id(PloughingModel::none)},
       {"contact_length", "altintas", "Altintas, seed 003 Eq. 1 (suffix _mep or _mssp picks the shear angle)", "friction",
        id(ContactLengthModel::altintas)},
       {"contact_length", "vinogradov", "Vinogradov, seed 003 Eq. 2 (suffix _mep or _mssp)", "friction",

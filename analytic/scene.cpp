@@ -162,6 +162,7 @@ AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
   scene.speed_m_per_s =
       cut.get_si("speed_m_per_min", Range::positive(), "m/min", units::m_per_min_to_m_per_s);
   scene.chip_ratio = cut.get_optional_number("chip_ratio", Range::positive(), "");
+  scene.friction_factor = cut.get_optional_number("friction_factor", Range{0.0, 1.0, false, true}, "(tau/k)");
   parse_friction(cut, root, scene);
   const auto strain = cut.get_optional_number("strain", Range::non_negative(), "");
   const auto strain_rate = cut.get_optional_number("strain_rate_per_s", Range::non_negative(), "1/s");
@@ -182,6 +183,7 @@ AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
       "shear_angle", scene.chip_ratio ? "chip_ratio" : "merchant", analytic_model_names("shear_angle"));
   const std::string closure_name = models.get_choice_or("friction_closure", "merchant", analytic_model_names("friction_closure"));
   const std::string lower_name = models.get_choice_or("lower_limit", "stagnation", analytic_model_names("lower_limit"));
+  const std::string ploughing_name = models.get_choice_or("ploughing", "wave", analytic_model_names("ploughing"));
   scene.liu_li.lower_limit_margin_rad =
       units::deg_to_rad(models.get_number_or("lower_limit_margin_deg", 1.0, Range::open(0.0, 45.0), "deg"));
   if (auto quadrature = models.find_object("quadrature")) {
@@ -208,6 +210,7 @@ AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
   scene.shear_angle = registered_model<ShearAngleSource>("shear_angle", shear_name);
   scene.liu_li.closure = registered_model<FrictionClosure>("friction_closure", closure_name);
   scene.liu_li.lower_limit = registered_model<LowerLimitRule>("lower_limit", lower_name);
+  scene.ploughing = registered_model<PloughingModel>("ploughing", ploughing_name);
   scene.deformation = registered_model<DeformationModel>("deformation", deformation_name);
 
   // The round-nose chip gives thickness and width (width = chip area / thickness).

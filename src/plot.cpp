@@ -183,7 +183,7 @@ void draw(const FigureSpec& fig, const std::pair<double, double>& xr, const std:
   // Grid, then the bands, the data, and the frame on top.
   plcol0(kGrid);
   plwidth(1.0);
-  plbox("g", 0.0, 0, "g", 0.0, 0);
+  plbox(fig.x_log ? "gl" : "g", 0.0, 0, "g", 0.0, 0);
 
   for (const auto& band : fig.bands) {
     plcol0(band_index(band.color));
@@ -236,7 +236,7 @@ void draw(const FigureSpec& fig, const std::pair<double, double>& xr, const std:
   plcol0(kBlack);
   plwidth(1.5);
   plsmin(0.0, 1.0);
-  plbox("bcnst", 0.0, 0, "bcnstv", 0.0, 0);
+  plbox(fig.x_log ? "bcnstl" : "bcnst", 0.0, 0, "bcnstv", 0.0, 0);
   plmtex("b", 2.9, 0.5, 0.5, fig.x_label.c_str());
   plmtex("l", 4.6, 0.5, 0.5, fig.y_label.c_str());
   plschr(0.0, 1.45);
@@ -346,7 +346,36 @@ void leave_room_for_legend(FigureSpec& figure) {
   figure.legend_position = "top_left";
 }
 
-void render_png(const FigureSpec& fig, const std::filesystem::path& path) {
+namespace {
+/// A logarithmic x axis: PLplot draws log10(x) with the labels of x ("l" in plbox).
+FigureSpec with_log10_x(FigureSpec fig) {
+  const auto to_log = [](std::vector<double>& xs, const std::string& field) {
+    for (double& x : xs) {
+      if (std::isfinite(x) && !(x > 0.0)) {
+        throw InputError(field, format_value(x), "positive x values on a logarithmic x axis");
+      }
+      x = std::log10(x);
+    }
+  };
+  for (std::size_t k = 0; k < fig.series.size(); ++k) {
+    if (!fig.series[k].x_error.empty()) {
+      throw InputError(fmt::format("figure.series[{}].x_error", k), "(given)", "no x error bars on a logarithmic x axis");
+    }
+    to_log(fig.series[k].x, fmt::format("figure.series[{}].x", k));
+  }
+  for (std::size_t k = 0; k < fig.bands.size(); ++k) to_log(fig.bands[k].x, fmt::format("figure.bands[{}].x", k));
+  for (auto* limit : {&fig.x_min, &fig.x_max}) {
+    if (!*limit) continue;
+    std::vector<double> one{**limit};
+    to_log(one, "figure.x_range");
+    *limit = one[0];
+  }
+  return fig;
+}
+}  // namespace
+
+void render_png(const FigureSpec& figure, const std::filesystem::path& path) {
+  const FigureSpec fig = figure.x_log ? with_log10_x(figure) : figure;
   // Validate everything PLplot would otherwise exit() on.
   Extent xe, ye;
   bool any_point = false;

@@ -105,6 +105,15 @@ void print_prediction(const std::string& scene_path, const kerf::AnalyticScene& 
                m_to_um(l.ploughed_thickness_m));
     fmt::print("edge part         cutting {:.6g} N, thrust {:.6g} N (the thrust depends strongly on the lower limit)\n",
                l.edge.cutting_N_per_m * p.width_m, l.edge.thrust_N_per_m * p.width_m);
+    if (p.ploughing) {
+      const auto& w = *p.ploughing;
+      fmt::print("ploughing part    cutting {:.6g} N, thrust {:.6g} N (wave model, f = {:.4g}, chord {:.6g} um at "
+                 "{:.4g} deg)\n",
+                 w.force.cutting_N_per_m * p.width_m, w.force.thrust_N_per_m * p.width_m, p.friction_factor,
+                 m_to_um(w.chord_m), rad_to_deg(w.factors.attack_angle_rad));
+    } else {
+      fmt::print("ploughing part    none (models.ploughing = {})\n", kerf::ploughing_model_name(scene.ploughing));
+    }
   }
   if (p.oxley) {
     fmt::print("oxley             C0 = {:.4g}, delta = {:.4g}, interface T = {:.5g} K, contact length {:.6g} mm\n",
@@ -250,6 +259,7 @@ int run_report(const std::string& config_path, const std::string& out_dir) {
 struct Axis {
   std::string path;
   std::vector<double> values;
+  bool log_spacing = false;  ///< START:STOP:COUNT:log (the figure then draws this axis logarithmically)
 };
 
 Axis parse_axis(const std::string& spec) {
@@ -296,6 +306,7 @@ Axis parse_axis(const std::string& spec) {
   if (!std::isfinite(start) || !std::isfinite(stop)) fail("finite START and STOP");
   if (count < 1 || count > 10'000'000) fail("COUNT in [1, 10000000]");
   const bool log_spacing = parts.size() == 4 && parts[3] == "log";
+  axis.log_spacing = log_spacing;
   if (log_spacing && !(start > 0 && stop > 0)) fail("positive START and STOP for :log spacing");
   for (long i = 0; i < count; ++i) {
     const double f = count == 1 ? 0.0 : static_cast<double>(i) / static_cast<double>(count - 1);
@@ -312,8 +323,10 @@ Axis parse_axis(const std::string& spec) {
 void plot_sweep(const std::string& path, const std::vector<std::string>& axis_paths,
                 const std::vector<std::vector<double>>& axis_values, const std::vector<std::string>& names,
                 const std::function<std::vector<double>(std::size_t)>& coordinates,
-                const std::function<const std::vector<std::string>*(std::size_t)>& row_values, std::size_t n_points) {
+                const std::function<const std::vector<std::string>*(std::size_t)>& row_values, std::size_t n_points,
+                bool x_log) {
   kerf::FigureSpec fig;
+  fig.x_log = x_log;
   fig.x_label = axis_paths[0];
   fig.y_label = "force for the scene's width (N)";
   fig.title = "kerf-forces sweep";
@@ -430,7 +443,8 @@ int run_sweep(const std::string& scene_path, const std::vector<std::string>& ove
     std::vector<std::vector<double>> values;
     for (const auto& axis : axes) paths.push_back(axis.path), values.push_back(axis.values);
     plot_sweep(plot, paths, values, names, coordinates,
-               [&](std::size_t i) { return rows[i].error.empty() ? &rows[i].values : nullptr; }, n_points);
+               [&](std::size_t i) { return rows[i].error.empty() ? &rows[i].values : nullptr; }, n_points,
+               axes[0].log_spacing);
   }
   fmt::print(stderr, "kerf-forces: {} points written to {} ({} refused with an error, see the 'error' column)\n",
              n_points, csv, n_failed);

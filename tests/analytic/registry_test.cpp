@@ -43,6 +43,10 @@ TEST_CASE("The registry maps a name to its model by the name, not by the line's 
       CHECK(kerf::contact_length_model_name(
                 kerf::registered_model<kerf::ContactLengthModel>("contact_length", name, *list)) == name);
     }
+    for (const char* name : {"none", "wave"}) {
+      CHECK(kerf::ploughing_model_name(kerf::registered_model<kerf::PloughingModel>("ploughing", name, *list)) ==
+            name);
+    }
     CHECK(kerf::registered_model<kerf::ShearAngleSource>("shear_angle", "chip_ratio", *list) ==
           kerf::ShearAngleSource::chip_ratio);
     CHECK(kerf::registered_model<kerf::ShearAngleSource>("shear_angle", "lee_shaffer", *list) ==

@@ -312,10 +312,19 @@ TEST_CASE("The stagnation cut-off holds for the whole tool: a rake face below it
       doc["tool"]["edge_radius_um"] = radius_um;
       doc["models"]["force"] = force;
       const auto p = kerf::predict(kerf::parse_analytic_scene(doc));
-      CHECK(p.cutting_force_N == 0.0);
-      CHECK(p.thrust_force_N == 0.0);
       CHECK(p.guards.has(kerf::Guard::no_chip_on_rake_face));
+      // No chip force: with an edge, the force is the ploughing force under it alone (issue 38).
+      const double ploughing_N = p.ploughing ? p.ploughing->force.cutting_N_per_m * p.width_m : 0.0;
+      CHECK(p.cutting_force_N == ploughing_N);
+      CHECK((ploughing_N > 0.0) == (radius_um > 0.0 && std::string(force) == "liu_li"));
       if (p.liu_li) CHECK(p.liu_li->ploughed_thickness_m == 3e-6);
+      if (p.liu_li) CHECK(p.liu_li->total.cutting_N_per_m == 0.0);
+      if (p.liu_li) CHECK(p.liu_li->total.thrust_N_per_m == 0.0);
+      doc["models"]["ploughing"] = "none";
+      const auto none = kerf::predict(kerf::parse_analytic_scene(doc));
+      doc["models"].erase("ploughing");
+      CHECK(none.cutting_force_N == 0.0);
+      CHECK(none.thrust_force_N == 0.0);
     }
   }
   // Across the stagnation angle (-55 deg): the edge part closes continuously (its range [g_s, a] shrinks to
@@ -446,4 +455,105 @@ TEST_CASE("Oxley without a physical solution is a model failure naming why", "[s
       kerf::read_json_file(std::string(KERF_SOURCE_DIR) + "/data/scenes/aisi1045_oxley.json")));
   REQUIRE(p.oxley.has_value());
   CHECK(p.oxley->shear_angle_roots == 1);
+}
+
+namespace {
+/// The psic scene at thickness t0 (um) and edge radius r (um) with a ploughing model.
+kerf::Prediction predict_ploughing(double t0_um, double r_um, const char* ploughing = "wave") {
+  Json doc = orthogonal_scene();
+  doc["cut"]["uncut_chip_thickness_um"] = t0_um;
+  doc["tool"]["edge_radius_um"] = r_um;
+  doc["models"]["ploughing"] = ploughing;
+  return kerf::predict(kerf::parse_analytic_scene(doc));
+}
+}  // namespace
+
+TEST_CASE("Ploughing: the total force is continuous where the chip starts at the stagnation height", "[scene][ploughing]") {
+  // h_s = r (1 + sin g_s) does not depend on t0: read it off a thick cut.
+  const double r_um = 0.2;
+  const auto thick = predict_ploughing(1.0, r_um);
+  REQUIRE(thick.liu_li.has_value());
+  const double h_s_um = kerf::units::m_to_um(thick.liu_li->ploughed_thickness_m);
+  CHECK_THAT(h_s_um, WithinRel(r_um * (1.0 + std::sin(thick.liu_li->stagnation_angle_rad)), 1e-12));
+  const auto below = predict_ploughing(h_s_um - 0.5e-9, r_um);
+  const auto above = predict_ploughing(h_s_um + 0.5e-9, r_um);
+  REQUIRE(below.ploughing.has_value());
+  REQUIRE(above.ploughing.has_value());
+  CHECK(below.guards.has(kerf::Guard::no_chip_on_edge));
+  CHECK_FALSE(above.guards.has(kerf::Guard::no_chip_on_edge));
+  CHECK(below.liu_li->total.cutting_N_per_m == 0.0);
+  CHECK(below.ploughing->force.cutting_N_per_m > 0.0);
+  // The note's criterion: no step finer than 1e-6 relative across a 1e-9 um step.
+  CHECK_THAT(above.cutting_force_N, WithinRel(below.cutting_force_N, 1e-6));
+  CHECK_THAT(above.thrust_force_N, WithinRel(below.thrust_force_N, 1e-6));
+  // Inside the layer the ploughed height is t0 itself, above it h_s: the ploughing term stops growing there.
+  const auto inside = predict_ploughing(0.5 * h_s_um, r_um);
+  CHECK_THAT(inside.ploughing->ploughed_height_m, WithinRel(0.5 * h_s_um * 1e-6, 1e-12));
+  CHECK(inside.ploughing->force.thrust_N_per_m < below.ploughing->force.thrust_N_per_m);
+  CHECK_THAT(thick.ploughing->ploughed_height_m, WithinRel(h_s_um * 1e-6, 1e-12));
+}
+
+TEST_CASE("Ploughing: above the layer the chip term is unchanged and the ploughing term stays at h_s", "[scene][ploughing]") {
+  for (double t0_um : {0.1, 0.3, 1.0, 5.0}) {
+    CAPTURE(t0_um);
+    const auto wave = predict_ploughing(t0_um, 0.2);
+    const auto none = predict_ploughing(t0_um, 0.2, "none");
+    REQUIRE(wave.ploughing.has_value());
+    CHECK_FALSE(none.ploughing.has_value());
+    CHECK(wave.liu_li->total.cutting_N_per_m == none.liu_li->total.cutting_N_per_m);
+    CHECK(wave.liu_li->total.thrust_N_per_m == none.liu_li->total.thrust_N_per_m);
+    CHECK(none.cutting_force_N == none.liu_li->total.cutting_N_per_m * none.width_m);
+    CHECK_THAT(wave.cutting_force_N - none.cutting_force_N,
+               WithinRel(wave.ploughing->force.cutting_N_per_m * wave.width_m, 1e-9));
+    CHECK_THAT(wave.thrust_force_N - none.thrust_force_N,
+               WithinRel(wave.ploughing->force.thrust_N_per_m * wave.width_m, 1e-9));
+    CHECK_THAT(wave.ploughing->ploughed_height_m, WithinRel(wave.liu_li->ploughed_thickness_m, 1e-14));
+    // The friction factor is the Lee-Shaffer sin(2 beta) of the prediction's one friction angle.
+    CHECK_THAT(wave.friction_factor, WithinRel(std::sin(2.0 * wave.friction_angle_rad), 1e-14));
+  }
+}
+
+TEST_CASE("Ploughing: grows with the edge radius at a fixed thickness, vanishes with it", "[scene][ploughing]") {
+  for (double t0_um : {0.001, 0.02, 0.1}) {
+    CAPTURE(t0_um);
+    double previous_cut = 0.0, previous_thrust = 0.0;
+    for (double r_um = 0.01; r_um <= 5.0; r_um *= 1.25) {
+      CAPTURE(r_um);
+      const auto p = predict_ploughing(t0_um, r_um);
+      REQUIRE(p.ploughing.has_value());
+      const double cut = p.ploughing->force.cutting_N_per_m, thrust = p.ploughing->force.thrust_N_per_m;
+      CHECK(cut > previous_cut);
+      CHECK(thrust > previous_thrust);
+      previous_cut = cut;
+      previous_thrust = thrust;
+    }
+  }
+  // r -> 0: the ploughing force goes to zero with r (its layer is a fixed fraction of r).
+  const auto small = predict_ploughing(0.1, 1e-6), smaller = predict_ploughing(0.1, 1e-9);
+  CHECK_THAT(smaller.ploughing->force.thrust_N_per_m, WithinRel(1e-3 * small.ploughing->force.thrust_N_per_m, 1e-6));
+  CHECK(predict_ploughing(0.1, 0.0).cutting_force_N == predict_ploughing(0.1, 0.0, "none").cutting_force_N);
+}
+
+TEST_CASE("Ploughing: a friction factor outside [0, 1) names its key; a given one is used", "[scene][ploughing]") {
+  for (double f : {-0.1, 1.0, 1.5}) {
+    CAPTURE(f);
+    Json doc = orthogonal_scene();
+    doc["cut"]["friction_factor"] = f;
+    try {
+      kerf::parse_analytic_scene(doc);
+      FAIL("accepted");
+    } catch (const kerf::InputError& e) {
+      CHECK_THAT(e.what(), Contains("cut.friction_factor"));
+      CHECK_THAT(e.what(), Contains("[0, 1)"));
+    }
+  }
+  Json doc = orthogonal_scene();
+  doc["cut"]["friction_factor"] = 0.25;
+  const auto p = kerf::predict(kerf::parse_analytic_scene(doc));
+  CHECK(p.friction_factor == 0.25);
+  auto row = kerf::prediction_columns(kerf::parse_analytic_scene(doc), p);
+  std::map<std::string, std::string> cells(row.begin(), row.end());
+  CHECK(cells["friction_factor"] == "0.25");
+  CHECK(std::stod(cells["ploughing_thrust_force_N"]) > 0.0);
+  CHECK(cells["ploughing_model"] == "wave");
 }

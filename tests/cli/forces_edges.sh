@@ -29,9 +29,16 @@ done
 python3 -c "import sys; b=float(sys.argv[1]); sys.exit(0 if abs(b - 46.96) < 0.01 else 1)" \
   "$(column "$tmp/liu_li.csv" friction_angle_deg)" || fail "reproducer 1: beta is not the closure's 46.96 deg"
 
-# 2. The stagnation cut-off on the whole tool: rake -60 deg cuts no chip.
+# 2. The stagnation cut-off on the whole tool: rake -60 deg cuts no chip; the force left is the ploughing force
+#    under the edge (issue 38), zero with models.ploughing = none.
 expect 0 "cutting force     0 N" -- predict "$a2024" --set models.shear_angle=merchant --set tool.rake_deg=-60 \
-  --set cut.uncut_chip_thickness_um=3
+  --set cut.uncut_chip_thickness_um=3 --set models.ploughing=none
+"$bin" predict "$a2024" --set models.shear_angle=merchant --set tool.rake_deg=-60 --set cut.uncut_chip_thickness_um=3 \
+  --csv "$tmp/plough.csv" >/dev/null 2>&1 || fail "reproducer 2 with ploughing exits $?"
+[ "$(column "$tmp/plough.csv" edge_cutting_force_N)" = 0 ] || fail "reproducer 2: a chip force under the cut-off"
+[ "$(column "$tmp/plough.csv" cutting_force_N)" = "$(column "$tmp/plough.csv" ploughing_cutting_force_N)" ] &&
+  python3 -c "import sys; sys.exit(0 if float(sys.argv[1]) > 0 else 1)" "$(column "$tmp/plough.csv" cutting_force_N)" ||
+  fail "reproducer 2: the force is not the ploughing force alone"
 expect 0 "guard             no_chip_on_rake_face" -- predict "$a2024" --set tool.rake_deg=-60
 
 # 3. Extended Oxley: no physical solution is exit 3 naming why; Oxley's own beta is printed.

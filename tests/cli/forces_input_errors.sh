@@ -12,6 +12,10 @@ expect 2 "tool.rake_deg = 95: expected a value in (-90, 90) deg" -- predict "$sc
 expect 2 "material = unobtainium: expected one of" -- predict "$scene" --set material=unobtainium
 expect 2 "cut.speed_m_per_min = (missing)" -- predict "$scene" --set 'cut={"uncut_chip_thickness_um": 1, "width_mm": 1, "friction_coefficient": 0.3}'
 expect 2 "models.flow_stress = grain: expected one of" -- predict "$scene" --set 'models.flow_stress=["grain"]'
+# The ploughing model's friction factor tau/k lies in [0, 1) (issue 38).
+expect 2 "cut.friction_factor = 1: expected a value in [0, 1) (tau/k)" -- predict "$scene" --set cut.friction_factor=1
+expect 2 "cut.friction_factor = -0.1: expected a value in [0, 1) (tau/k)" -- predict "$scene" --set cut.friction_factor=-0.1
+expect 2 "models.ploughing = waves: expected one of 'wave', 'none' (did you mean 'wave'?)" -- predict "$scene" --set models.ploughing=waves
 expect 2 "no-such-file.json" -- predict "$src/no-such-file.json"
 expect 2 "--vary" -- sweep "$scene" --vary cut.width_mm=1:2 --csv "$tmp/x.csv"
 expect 2 "" -- predict

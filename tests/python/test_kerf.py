@@ -186,3 +186,21 @@ def test_dem_input_error_names_the_key(tmp_path):
     assert caught.value.field == "cut.depth_of_cut_mn"
     assert "depth_of_cut_mm" in caught.value.expected
     assert "cut" in kerf.dem.kinds()
+
+
+def test_ploughing_parts_beside_the_totals():
+    # Inside the ploughed layer (r = 0.2 um: h_s = 0.037 um) the chip term is zero and the total is the ploughing
+    # term alone; 'none' keeps the chip term only (issue 38).
+    inside = {"cut.uncut_chip_thickness_um": 0.01}
+    wave = kerf.predict(ORTHOGONAL, **inside)
+    none = kerf.predict(ORTHOGONAL, **inside, **{"models.ploughing": "none"})
+    assert none["cutting_force_N"] == 0 and none["ploughing_cutting_force_N"] == 0
+    assert wave["ploughing_cutting_force_N"] > 0 and wave["ploughing_thrust_force_N"] > 0
+    assert wave["cutting_force_N"] == wave["ploughing_cutting_force_N"]
+    assert wave["thrust_force_N"] == wave["ploughing_thrust_force_N"]
+    # Above it the totals are the chip term plus the ploughing term.
+    above = {"cut.uncut_chip_thickness_um": 0.5}
+    wave, none = kerf.predict(ORTHOGONAL, **above), kerf.predict(ORTHOGONAL, **above, **{"models.ploughing": "none"})
+    for part in ("cutting", "thrust"):
+        total = none[f"{part}_force_N"] + wave[f"ploughing_{part}_force_N"]
+        assert math.isclose(wave[f"{part}_force_N"], total, rel_tol=1e-12)

@@ -27,9 +27,10 @@ enum class Guard : std::uint32_t {
   turning_depth_below_feed = 1u << 10,
   no_chip_on_rake_face = 1u << 11,
   contact_length_not_applicable = 1u << 12,
+  ploughing_field_capped = 1u << 13,
 };
 
-inline constexpr int kGuardCount = 13;
+inline constexpr int kGuardCount = 14;
 
 /// Name (snake_case, for CSV and JSON) of a guard.
 std::string_view guard_name(Guard guard);

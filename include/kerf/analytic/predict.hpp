@@ -12,6 +12,7 @@
 #include "kerf/analytic/flow_stress.hpp"
 #include "kerf/analytic/guards.hpp"
 #include "kerf/analytic/liu_li.hpp"
+#include "kerf/analytic/ploughing.hpp"
 #include "kerf/analytic/scene.hpp"
 
 namespace kerf {
@@ -42,7 +43,11 @@ struct Prediction {
   FlowStress flow;
   /// (column, value); no value where the model is not applicable (Guard::contact_length_not_applicable)
   std::vector<std::pair<std::string, std::optional<double>>> contact_lengths_m;
-  std::optional<LiuLiResult> liu_li;
+  std::optional<LiuLiResult> liu_li;  ///< the chip term (its total is the chip force alone)
+  /// The ploughing term under the edge (models.ploughing = wave with force liu_li and an edge radius): added to
+  /// the chip term in cutting_force_N and thrust_force_N.
+  std::optional<EdgePloughingResult> ploughing;
+  double friction_factor = 0.0;  ///< the ploughing model's f (given, or sin(2 beta))
   std::optional<OxleyDetails> oxley;
   std::string regime;  ///< "ductile", "transition" or "brittle" against the critical depth; empty without one
   Guards guards;

@@ -18,6 +18,7 @@
 #include "kerf/analytic/liu_li.hpp"
 #include "kerf/analytic/material_models.hpp"
 #include "kerf/analytic/oxley.hpp"
+#include "kerf/analytic/ploughing.hpp"
 #include "kerf/analytic/round_nose.hpp"
 #include "kerf/analytic/shear_angle.hpp"
 #include "kerf/analytic/thermal.hpp"
@@ -66,6 +67,7 @@ struct AnalyticScene {
   std::optional<double> friction_angle_rad;  ///< given, from a friction coefficient, or from measured forces
   std::string friction_origin;               ///< "friction_angle_deg", "friction_coefficient", "measured forces"
   std::optional<double> chip_ratio;
+  std::optional<double> friction_factor;  ///< tau / k on the edge, for the ploughing model (else from beta)
   std::optional<DeformationState> given_state;
   std::optional<double> given_strain_rate_per_s;  ///< for the room_temperature deformation model
 
@@ -78,6 +80,7 @@ struct AnalyticScene {
   DeformationModel deformation = DeformationModel::room_temperature;
   ShearAngleSource shear_angle = ShearAngleSource::merchant;
   LiuLiParams liu_li;  ///< closure, lower limit, margin, quadrature (geometry filled at prediction)
+  PloughingModel ploughing = PloughingModel::wave;  ///< the force under the edge below the stagnation point
   std::vector<ContactLengthRequest> contact_lengths;
 
   /// Bifano's ductile-brittle critical depth, when the material has E, hardness and toughness.
