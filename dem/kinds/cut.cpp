@@ -51,7 +51,7 @@ Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& d
   const double n = static_cast<double>(run.simulation().particles().size());  // a window's: about the same all along
   const double steps = cut.length_m / (cut.speed_m_per_s * run.result().time_step_s);
   StageProgress progress(tp.progress, "cut", n * steps, "particle-steps");
-  if (tp.sample_index > 0) progress.advance(n * cut.sample_every_steps * tp.sample_index);
+  if (tp.sample_index > 0) progress.resume_at(n * cut.sample_every_steps * tp.sample_index, cut_sample(run));
   while (run.advance()) {
     ++tp.sample_index;
     progress.advance(n * cut.sample_every_steps, cut_sample(run));
@@ -59,7 +59,7 @@ Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& d
     if (checkpoints.due(tp.sample_index))
       // The cut holds its own workpiece: the checkpoint's specimen part stays empty.
       write_checkpoint(out, {doc, summary, tp.frames, tp.sample_index, options.checkpoint_every, tp.scene_dir,
-                             std::string(), run.serialize()});
+                             std::string(), run.serialize(), options.provenance});
   }
   progress.finish(cut_sample(run));  // the last sample (advance returned false)
   if (frame_every > 0) write_frame(run.simulation());
