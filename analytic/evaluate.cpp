@@ -2,6 +2,7 @@
 
 #include "kerf/analytic/critical_depth.hpp"
 #include "kerf/analytic/predict.hpp"
+#include "kerf/error.hpp"
 #include "kerf/io.hpp"
 #include "kerf/units.hpp"
 
@@ -85,6 +86,22 @@ std::vector<std::string> scene_column_names(const Json& document, MaterialCache*
   std::vector<std::string> names;
   for (const auto& column : columns) names.push_back(column.first);
   return names;
+}
+
+void check_varied_key(Json document, const std::string& assignment, const std::string& option_name,
+                      MaterialCache* cache) {
+  apply_override(document, assignment, option_name);  // a path through a non-object fails every point alike
+  const std::string key = assignment.substr(0, assignment.find('='));
+  try {
+    scene_column_names(document, cache);
+  } catch (const InputError& e) {
+    // The reader names the first unknown key on the path: the key itself, or a section above it ("tools").
+    const bool unknown =
+        e.expected().starts_with("a known key") && (key == e.field() || key.starts_with(e.field() + "."));
+    if (unknown) throw InputError(option_name, key, e.expected());
+  } catch (const ModelError&) {
+    // the point's own failure, refused in the sweep
+  }
 }
 
 }  // namespace kerf

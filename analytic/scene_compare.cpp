@@ -198,6 +198,20 @@ SceneComparison compare_scene(const Json& scene_document, const std::filesystem:
                      "a column named like a prediction (cutting_force_N, thrust_force_N, axial_force_N, torque_N_m) "
                      "or --map prediction_column=csv_column");
   }
+  if (conditions.empty() && !options.pool) {
+    // Every row would be taken at the scene's own condition, as replicates of one measurement: say so, unasked.
+    std::vector<std::string> keys;
+    for (const auto& [name, path] : scene_condition_keys(scene_document))
+      if (name != "width_mm") keys.push_back(name);
+    throw InputError(
+        "--experiments", experiments_csv.string(),
+        fmt::format("a column that sets a condition: named like a key of the scene's tool or cut ({}) or "
+                    "bound by --map scene.key.path=column; none matched ({}; --pool, in Python pool=True, "
+                    "takes every row as a measurement at the scene's own condition)",
+                    fmt::join(keys, ", "),
+                    out.unused_columns.empty() ? std::string("the CSV has no other column")
+                                               : fmt::format("unused: {}", fmt::join(out.unused_columns, ", "))));
+  }
 
   // The comparison: conditions and quantities in their units; width bases explicit.
   ComparisonSpec& spec = out.comparison.spec;

@@ -36,7 +36,7 @@ std::uint32_t crc32(std::string_view bytes) {
 
 std::string Checkpoint::bytes() const {
   const Json head{{"scene", scene}, {"summary", summary}, {"frames", frames}, {"sample_index", sample_index},
-                  {"checkpoint_every", checkpoint_every}, {"scene_dir", scene_dir}};
+                  {"checkpoint_every", checkpoint_every}, {"scene_dir", scene_dir}, {"provenance", provenance}};
   const std::string head_text = head.dump(-1, ' ', false, Json::error_handler_t::replace);
   std::string out(kMagic);
   put_u64(out, 0);  // the length, below
@@ -73,6 +73,7 @@ Checkpoint Checkpoint::parse(const std::string& bytes) {
     c.sample_index = head.at("sample_index");
     c.checkpoint_every = head.at("checkpoint_every");
     c.scene_dir = head.at("scene_dir");
+    c.provenance = head.value("provenance", Json());  // absent from the checkpoints of kerf before it
   } catch (const std::exception& e) {
     damaged(fmt::format("its head: {}", e.what()));
   }

@@ -1,17 +1,20 @@
 // Orthogonal cutting (seed 000, Section 4; physics-dem.md section 4).
 #include "kerf/dem/cutting.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <string>
 #include <type_traits>
 
 #include "kerf/dem/specimen.hpp"
 #include "kerf/error.hpp"
-#include "kerf/time_series.hpp"
 #include "kerf/io.hpp"
+#include "kerf/time_series.hpp"
 #include "kerf/units.hpp"
 #include "serial.hpp"
 
@@ -317,9 +320,16 @@ void steady_statistics(CutResult& res, double from_travel_m) {
     ++n;
   }
   res.n_steady_samples = n;
+  res.steady_from_travel_m = from_travel_m;
+  res.steady_to_travel_m = res.samples.empty() ? from_travel_m : res.samples.back().travel_m;
   if (n == 0) {
     res.main_force_n = res.thrust_force_n = res.main_force_std_n = res.thrust_force_std_n = 0;
     res.contact_share = 0;
+    res.main_force_sem_n = res.thrust_force_sem_n = std::nan("");
+    res.main_force_sem_method = res.thrust_force_sem_method = "none";
+    res.steady = false;
+    res.not_steady_reason =
+        fmt::format("no sample at or beyond {:.4g} mm of travel, where the means start", units::m_to_mm(from_travel_m));
     return;
   }
   res.contact_share = static_cast<double>(touching) / n;
@@ -335,6 +345,30 @@ void steady_statistics(CutResult& res, double from_travel_m) {
   res.thrust_force_sem_n = bt.best_standard_error(&res.thrust_force_sem_method);
   res.main_force_inefficiency = bm.statistical_inefficiency, res.thrust_force_inefficiency = bt.statistical_inefficiency;
   res.main_force_batch_samples = bm.batch_length, res.thrust_force_batch_samples = bt.batch_length;
+  // Steady: the means start after the entry (to 1e-4 of it: a scene's entry_fraction x length rounds) and each
+  // has a standard error.
+  std::vector<std::string> why;
+  const double entry_mm = units::m_to_mm(kEntryTravelM);
+  if (res.steady_to_travel_m <= kEntryTravelM)
+    why.push_back(
+        fmt::format("the cut travels {:.4g} mm, within the entry (the first {:g} mm; docs/dem.md, \"How "
+                    "long a cut must be\"): cut further (cut.length_mm)",
+                    units::m_to_mm(res.steady_to_travel_m), entry_mm));
+  else if (from_travel_m < kEntryTravelM * (1 - 1e-4))
+    why.push_back(
+        fmt::format("the means start at {:.4g} mm of travel, within the entry (the first {:g} mm; "
+                    "docs/dem.md, \"How long a cut must be\"): start them later (cut.entry_fraction)",
+                    units::m_to_mm(from_travel_m), entry_mm));
+  if (!std::isfinite(res.main_force_sem_n) || !std::isfinite(res.thrust_force_sem_n))
+    why.push_back(fmt::format(
+        "the standard error of the {} cannot be computed from {} samples (too few for batch "
+        "means or the autocorrelation): cut further",
+        !std::isfinite(res.main_force_sem_n) && !std::isfinite(res.thrust_force_sem_n) ? "main and thrust means"
+        : !std::isfinite(res.main_force_sem_n)                                         ? "main mean"
+                                                                                       : "thrust mean",
+        n));
+  res.steady = why.empty();
+  res.not_steady_reason = fmt::format("{}", fmt::join(why, "; "));
 }
 
 std::vector<TravelWindow> travel_window_means(const std::vector<CutSample>& samples, double length_m, double window_m) {

@@ -70,7 +70,7 @@ void write_specimen_png(const std::filesystem::path& path, const Simulation& sim
   });
 }
 
-void write_cut_forces_png(const std::filesystem::path& path, const CutResult& result, double steady_from_m) {
+void write_cut_forces_png(const std::filesystem::path& path, const CutResult& result) {
   FigureSpec fig;
   fig.title = "cut: force on the tool";
   fig.x_label = "tool travel (mm)";
@@ -81,11 +81,16 @@ void write_cut_forces_png(const std::filesystem::path& path, const CutResult& re
     main.x.push_back(units::m_to_mm(s.travel_m)), main.y.push_back(s.main_force_n);
     thrust.x.push_back(units::m_to_mm(s.travel_m)), thrust.y.push_back(s.thrust_force_n);
   }
-  const double x0 = units::m_to_mm(steady_from_m), x1 = main.x.empty() ? x0 : main.x.back();
-  PlotSeries main_mean{fmt::format("mean {:.3g} N (steady part)", result.main_force_n), {x0, x1},
-                       {result.main_force_n, result.main_force_n}, {}, {}, SeriesStyle::dashed_line, 0, 0};
-  PlotSeries thrust_mean{fmt::format("mean {:.3g} N (steady part)", result.thrust_force_n), {x0, x1},
-                         {result.thrust_force_n, result.thrust_force_n}, {}, {}, SeriesStyle::dashed_line, 1, 0};
+  // The means over the travel they cover, and whether that is a steady cut (CutResult::steady).
+  const double x0 = units::m_to_mm(result.steady_from_travel_m), x1 = units::m_to_mm(result.steady_to_travel_m);
+  const auto mean_label = [&](double force_n) {
+    return fmt::format("mean {:.3g} N over {:.3g}-{:.3g} mm{}", force_n, x0, x1, result.steady ? "" : " (NOT STEADY)");
+  };
+  PlotSeries main_mean{mean_label(result.main_force_n), {x0, x1}, {result.main_force_n, result.main_force_n}, {}, {},
+                       SeriesStyle::dashed_line, 0, 0};
+  PlotSeries thrust_mean{mean_label(result.thrust_force_n), {x0, x1}, {result.thrust_force_n, result.thrust_force_n},
+                         {}, {}, SeriesStyle::dashed_line, 1, 0};
+  if (!result.steady) fig.title += " (means NOT STEADY)";
   fig.series = {main, thrust, main_mean, thrust_mean};
   leave_room_for_legend(fig);
   render_png(fig, path);

@@ -19,11 +19,19 @@ void RunLog::report(const ProgressUpdate& u) {
   auto [it, is_new] = stages_.try_emplace(u.stage);
   Stage& s = it->second;
   if (is_new || s.done) s = Stage{now, now};  // a stage run again starts afresh
+  if (u.resumed) {  // where a checkpoint left it: the work before is not this process's, nor in its rates
+    s.last_line_done = u.done;
+    if (u.sample) s.last_line_step = s.first_step = u.sample->step;
+    line(fmt::format("{}: resumed at step {}{} ({:.0f} %)", u.stage, s.first_step,
+                     u.sample && u.sample->travel_mm ? fmt::format(" travel {:.4g} mm", *u.sample->travel_mm) : "",
+                     u.total > 0 ? 100 * u.done / u.total : 100.0));
+    return;
+  }
   if (u.done == 0 && u.done != u.total) return;                           // the start
   ++s.reports;
   if (u.sample) {
-    s.steps = u.sample->step;
-    s.particle_steps = static_cast<double>(u.sample->step) * static_cast<double>(u.sample->n_particles);
+    s.steps = u.sample->step - s.first_step;  // this process's
+    s.particle_steps = static_cast<double>(s.steps) * static_cast<double>(u.sample->n_particles);
   }
   const bool end = u.done >= u.total;
   if (s.reports % every_ != 0 && !end) return;
@@ -63,8 +71,9 @@ void RunLog::report(const ProgressUpdate& u) {
     particle_steps_ += s.particle_steps;
     stage_wall_s_ += s.wall_s;
     const std::size_t n = u.sample ? u.sample->n_particles : 0;
-    line(fmt::format("{}: done: {} steps of {} particles in {:.3g} s, {:.3g} particle-steps/s", u.stage, s.steps, n,
-                     s.wall_s, s.wall_s > 0 ? s.particle_steps / s.wall_s : 0.0));
+    line(fmt::format("{}: done: {} steps{} of {} particles in {:.3g} s, {:.3g} particle-steps/s", u.stage, s.steps,
+                     s.first_step > 0 ? fmt::format(" since the resume at step {}", s.first_step) : "", n, s.wall_s,
+                     s.wall_s > 0 ? s.particle_steps / s.wall_s : 0.0));
   }
 }
 

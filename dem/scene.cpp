@@ -77,13 +77,16 @@ SceneOutcome run_scene(const Json& doc, const fs::path& scene_file, const RunOpt
   if (options.checkpoint_every > 0 && options.replicates > 1)
     throw InputError("--checkpoint-every", std::to_string(options.checkpoint_every), "no checkpoints with --replicates");
   const OutputManifest hold(options.out, /*fresh=*/true);  // writable? then the old outputs go, before any work
-  const SceneRun run{doc, fs::absolute(scene_file).parent_path().string(), options};
-  Json provenance = run_provenance(options.command_line, scene_file.string(), options.overrides);
+  RunOptions with_provenance_kept = options;               // the checkpoints keep it for a resume
+  with_provenance_kept.provenance = run_provenance(options.command_line, scene_file.string(), options.overrides);
+  const SceneRun run{doc, fs::absolute(scene_file).parent_path().string(), with_provenance_kept};
+  Json provenance = with_provenance_kept.provenance;
   provenance["scene_as_run"] = doc;
   return with_provenance(scene.kind->run(scene.common, run), options.out, std::move(provenance));
 }
 
-SceneOutcome resume_scene(const fs::path& dir, bool show_progress, const ProgressCallback& on_progress) {
+SceneOutcome resume_scene(const fs::path& dir, bool show_progress, const ProgressCallback& on_progress,
+                          const std::string& command_line) {
   const Checkpoint c = read_checkpoint(dir);
   const Scene scene = read_scene(c.scene, c.scene_dir);
   RunOptions options;
@@ -92,7 +95,17 @@ SceneOutcome resume_scene(const fs::path& dir, bool show_progress, const Progres
   options.show_progress = show_progress;
   options.on_progress = on_progress;
   const OutputManifest hold(dir, /*fresh=*/false);
-  Json provenance = run_provenance("(resumed from " + (dir / "checkpoint.bin").string() + ")", "", {});
+  // The original run's provenance (a checkpoint of a kerf before it kept none: its command line is unknown),
+  // and this resume appended: a checkpoint written from here on keeps both for the next one.
+  options.provenance = c.provenance.is_object()
+                           ? c.provenance
+                           : run_provenance("(unknown: the checkpoint predates provenance in checkpoints)", "", {});
+  const Json now = run_provenance(command_line, "", {});
+  Json resume{{"from_sample", c.sample_index}, {"checkpoint", (dir / "checkpoint.bin").string()}};
+  for (const char* key : {"date", "command_line", "version", "git_commit", "host", "threads"})
+    resume[key] = now.at(key);
+  options.provenance["resumes"].push_back(std::move(resume));
+  Json provenance = options.provenance;
   provenance["scene_as_run"] = c.scene;
   return with_provenance(scene.kind->resume(scene.common, SceneRun{c.scene, c.scene_dir, options}, c), dir,
                          std::move(provenance));

@@ -163,6 +163,8 @@ py::object sweep(const py::object& scene, const py::dict& vary, bool as_frame, c
   if (keys.empty()) throw kerf::InputError("vary", "{}", "at least one key with its values");
   kerf::MaterialCache cache;
   const std::vector<std::string> names = kerf::scene_column_names(input.document, &cache);
+  for (std::size_t a = 0; a < keys.size(); ++a)
+    kerf::check_varied_key(input.document, keys[a] + "=" + json_dumps(axes[a][0]), "vary", &cache);
   std::vector<std::string> header = keys;
   header.insert(header.end(), names.begin(), names.end());
   header.push_back("error");
@@ -241,7 +243,7 @@ py::dict metrics_dict(const kerf::ErrorMetrics& m) {
   return out;
 }
 
-py::dict compare(const py::object& scene, const py::object& experiments, const py::dict& map, bool fit,
+py::dict compare(const py::object& scene, const py::object& experiments, const py::dict& map, bool fit, bool pool,
                  const py::object& measured_width_mm, const py::object& out, const py::kwargs& overrides) {
   const SceneInput input = scene_input(scene, overrides);
   kerf::SceneComparisonOptions options;
@@ -249,6 +251,7 @@ py::dict compare(const py::object& scene, const py::object& experiments, const p
     options.mappings.push_back(py::str(key).cast<std::string>() + "=" + py::str(column).cast<std::string>());
   }
   options.fit = fit;
+  options.pool = pool;
   if (!measured_width_mm.is_none()) options.measured_width_mm = measured_width_mm.cast<double>();
   const std::string csv = py::str(py::module_::import("os").attr("fspath")(experiments)).cast<std::string>();
   kerf::SceneComparison result = kerf::compare_scene(input.document, csv, options);
@@ -372,14 +375,17 @@ PYBIND11_MODULE(kerf, m) {
   m.def("sweep", &sweep, py::arg("scene"), py::kw_only(), py::arg("vary"), py::arg("frame") = true,
         "sweep(scene, vary={key: values, ...}, frame=True, **overrides): the cartesian product of the varied keys;\n"
         "columns as numpy arrays (a pandas DataFrame when pandas is installed and frame is true); refused points\n"
-        "have NaN values and their message in the 'error' column");
+        "have NaN values and their message in the 'error' column; a key the scene does not read raises InputError");
   m.def("materials", &materials, "materials() -> list of dict: the bundled material library (name, title, groups)");
   m.def("models", &models, "models() -> list of dict: every registered analytic model (kind, name, summary, needs)");
   m.def("compare", &compare, py::arg("scene"), py::arg("experiments"), py::kw_only(), py::arg("map") = py::dict(),
-        py::arg("fit") = false, py::arg("measured_width_mm") = py::none(), py::arg("out") = py::none(),
-        "compare(scene, experiments_csv, map={scene_key_or_prediction_column: csv_column}, fit=False,\n"
+        py::arg("fit") = false, py::arg("pool") = false, py::arg("measured_width_mm") = py::none(),
+        py::arg("out") = py::none(),
+        "compare(scene, experiments_csv, map={scene_key_or_prediction_column: csv_column}, fit=False, pool=False,\n"
         "measured_width_mm=None, out=None, **overrides) -> dict: per quantity the metrics and the measured and\n"
-        "predicted means (arrays); with out, the report (report.md, CSV, JSON, plots) is written there too");
+        "predicted means (arrays); with out, the report (report.md, CSV, JSON, plots) is written there too. A CSV\n"
+        "none of whose columns sets a condition raises InputError unless pool=True (every row a measurement at\n"
+        "the scene's own condition)");
 
   py::module_ dem = m.def_submodule("dem", "the 2D bonded-particle DEM (kerf-dem)");
   dem.def("run", &dem_run, py::arg("scene"), py::kw_only(), py::arg("out"), py::arg("threads") = py::none(),

@@ -35,9 +35,34 @@ struct TemporarySlot {
 TemporarySlot temporary_slots[kTemporarySlots];
 std::mutex temporary_slots_mutex;
 
+// The interrupt note (set_interrupt_note): fixed buffers the handler reads once `note_ready` says they are whole.
+constexpr std::size_t kNoteBytes = 1024;
+struct InterruptNote {
+  std::atomic<bool> ready{false};
+  char path[kPathBytes];
+  char if_exists[kNoteBytes + 1], otherwise[kNoteBytes + 1];
+  std::size_t if_exists_size = 0, otherwise_size = 0;
+};
+InterruptNote interrupt_note;
+
+void write_all(int fd, const char* text, std::size_t size) {  // async-signal-safe
+  while (size > 0) {
+    const ssize_t n = ::write(fd, text, size);
+    if (n <= 0) return;
+    text += n, size -= static_cast<std::size_t>(n);
+  }
+}
+
 extern "C" void remove_temporaries_and_die(int signal_number) {
   for (auto& slot : temporary_slots) {
     if (slot.used.load()) ::unlink(slot.path);
+  }
+  if (interrupt_note.ready.load()) {
+    const bool exists = interrupt_note.path[0] != '\0' && ::access(interrupt_note.path, F_OK) == 0;
+    if (exists)
+      write_all(STDERR_FILENO, interrupt_note.if_exists, interrupt_note.if_exists_size);
+    else
+      write_all(STDERR_FILENO, interrupt_note.otherwise, interrupt_note.otherwise_size);
   }
   std::signal(signal_number, SIG_DFL);
   std::raise(signal_number);
@@ -53,6 +78,15 @@ void install_signal_cleanup() {
       std::signal(signal_number, remove_temporaries_and_die);
     }
   });
+}
+
+/// Copies `text` and a newline into `buffer` (at most kNoteBytes in all); returns the size.
+std::size_t copy_note(char* buffer, std::string_view text) {
+  if (text.empty()) return 0;
+  const std::size_t n = std::min(text.size(), kNoteBytes - 1);
+  std::memcpy(buffer, text.data(), n);
+  buffer[n] = '\n';
+  return n + 1;
 }
 
 bool is_temporary_name(const std::string& name) {
@@ -164,6 +198,18 @@ fs::path TemporaryFile::reserve(const fs::path& path, std::string_view suffix) {
     break;
   }
   return temporary;
+}
+
+void set_interrupt_note(const fs::path& path, std::string_view if_exists, std::string_view otherwise) {
+  install_signal_cleanup();
+  interrupt_note.ready.store(false);  // the handler reads no half-written note
+  const std::string text = path.string();
+  const std::size_t n = text.size() < kPathBytes ? text.size() : 0;  // too long: as if there were no file
+  std::memcpy(interrupt_note.path, text.data(), n);
+  interrupt_note.path[n] = '\0';
+  interrupt_note.if_exists_size = copy_note(interrupt_note.if_exists, if_exists);
+  interrupt_note.otherwise_size = copy_note(interrupt_note.otherwise, otherwise);
+  interrupt_note.ready.store(true);
 }
 
 void TemporaryFile::release(const fs::path& temporary) {
@@ -304,6 +350,10 @@ void Progress::advance(std::size_t count) {
   }
 }
 
+void Progress::resume_at(std::size_t done) {
+  done_ = done_before_ = done;
+}
+
 void Progress::finish() {
   if (finished_) return;
   finished_ = true;
@@ -313,7 +363,7 @@ void Progress::finish() {
 void Progress::draw(bool final_line) {
   const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   const double fraction = total_ ? static_cast<double>(done_) / static_cast<double>(total_) : 1.0;
-  const double rate = elapsed_s > 0 ? static_cast<double>(done_) / elapsed_s : 0.0;
+  const double rate = elapsed_s > 0 ? static_cast<double>(done_ - done_before_) / elapsed_s : 0.0;  // this process's
   const double eta_s = rate > 0 ? static_cast<double>(total_ - std::min(done_, total_)) / rate : 0.0;
   fmt::print(stderr, "\r{}: {:5.1f}%  {}/{} {}  {:.3g} {}/s  ETA {:.0f} s   {}", label_, 100.0 * fraction, done_,
              total_, unit_, rate, unit_, eta_s, final_line ? "\n" : "");

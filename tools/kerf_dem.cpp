@@ -13,10 +13,9 @@
 // output cannot be written (the directory is checked before any work).
 #include <fmt/format.h>
 #include <omp.h>
-
-#include <CLI/CLI.hpp>
 #include <unistd.h>
 
+#include <CLI/CLI.hpp>
 #include <filesystem>
 #include <functional>
 #include <iostream>
@@ -27,6 +26,7 @@
 #include "kerf/dem/study.hpp"
 #include "kerf/dem/study_mpi.hpp"
 #include "kerf/error.hpp"
+#include "kerf/io.hpp"
 #include "kerf/json_reader.hpp"
 #include "kerf/version.hpp"
 
@@ -60,6 +60,25 @@ int run_command(const std::string& scene_path, const std::vector<std::string>& s
     options.on_progress = on_progress;
     return kerf::dem::run_scene(doc, scene_path, options).exit_status;
   });
+}
+
+/// What a SIGINT/SIGTERM/SIGHUP prints before the run dies (kerf/io.hpp): how to continue it from its checkpoint
+/// in `out`, if it has written one by then.
+void note_how_to_continue(const std::filesystem::path& out, const kerf::dem::RunOptions& options) {
+  const std::string dir = out.string();
+  const char* resume[] = {kProgram, "resume", dir.c_str()};
+  if (options.replicates > 1) {
+    kerf::set_interrupt_note({}, "",
+                             fmt::format("{}: interrupted; the same command continues it (finished replicates "
+                                         "are reused, from {})",
+                                         kProgram, (out / "replicates").string()));
+    return;
+  }
+  kerf::set_interrupt_note(out / "checkpoint.bin",
+                           fmt::format("{}: interrupted; continue with: {}", kProgram, kerf::command_line(3, resume)),
+                           fmt::format("{}: interrupted before its first checkpoint (none in {}; --checkpoint-every N "
+                                       "writes them): nothing to resume, run it again",
+                                       kProgram, dir));
 }
 
 int keys_command(const std::string& section) {
@@ -137,10 +156,12 @@ int main(int argc, char** argv) {
   try {
     if (threads > 0) omp_set_num_threads(threads);
     if (keys->parsed()) return keys_command(section);
-    if (resume->parsed())
+    if (resume->parsed()) {
+      note_how_to_continue(resume_dir, options);
       return with_log(log_every, [&](const kerf::dem::ProgressCallback& on_progress) {
-        return kerf::dem::resume_scene(resume_dir, true, on_progress).exit_status;
+        return kerf::dem::resume_scene(resume_dir, true, on_progress, kerf::command_line(argc, argv)).exit_status;
       });
+    }
     if (out_dir.empty()) throw kerf::InputError("--out", "\"\"", "a directory name");
     if (study->parsed()) {
       study_options.out = out_dir;
@@ -159,6 +180,7 @@ int main(int argc, char** argv) {
     }
     options.out = out_dir;
     options.command_line = kerf::command_line(argc, argv);
+    note_how_to_continue(options.out, options);
     return run_command(scene_path, sets, options, log_every);
   } catch (const std::exception&) {
     return kerf::report_error(kProgram);

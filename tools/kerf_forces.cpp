@@ -2,7 +2,7 @@
 //
 //   kerf-forces predict SCENE.json [--set key.path=value]... [--csv FILE]
 //   kerf-forces sweep SCENE.json --vary key.path=START:STOP:COUNT[:log] [--vary ...] --csv FILE
-//   kerf-forces compare SCENE.json --experiments FILE.csv [--map a=b]... [--fit] --out DIR
+//   kerf-forces compare SCENE.json --experiments FILE.csv [--map a=b]... [--fit] [--pool] --out DIR
 //   kerf-forces report COMPARISON.json --out DIR   (measured and predicted CSV files named in a JSON file)
 //   kerf-forces regime SCENE.json (the ductile-brittle critical depth and the regime of the scene's cut)
 //   kerf-forces models            (the registered models)
@@ -56,54 +56,57 @@ std::string csv_text(const std::vector<std::string>& header, const std::vector<s
   return text;
 }
 
-void print_prediction(const std::string& scene_path, const kerf::AnalyticScene& scene, const kerf::Prediction& p) {
+void print_prediction(std::FILE* text, const std::string& scene_path, const kerf::AnalyticScene& scene,
+                      const kerf::Prediction& p) {
   using kerf::units::m_to_mm;
   using kerf::units::m_to_um;
   using kerf::units::pa_to_mpa;
   using kerf::units::rad_to_deg;
   const double width_mm = m_to_mm(p.width_m);
-  fmt::print("scene             {}\n", scene_path);
-  fmt::print("material          {} ({})\n", scene.material.name, scene.material.title);
-  fmt::print("force model       {}{}\n", kerf::force_model_name(p.force_model),
+  fmt::print(text, "scene             {}\n", scene_path);
+  fmt::print(text, "material          {} ({})\n", scene.material.name, scene.material.title);
+  fmt::print(text, "force model       {}{}\n", kerf::force_model_name(p.force_model),
              scene.force_choice_reason.empty() ? "" : " (auto: " + scene.force_choice_reason + ")");
-  fmt::print("cut               t0 = {:.6g} um, width = {:.6g} mm, speed = {:.6g} m/min\n",
+  fmt::print(text, "cut               t0 = {:.6g} um, width = {:.6g} mm, speed = {:.6g} m/min\n",
              m_to_um(p.uncut_chip_thickness_m), width_mm, kerf::units::m_per_s_to_m_per_min(scene.speed_m_per_s));
-  fmt::print("tool              rake = {:.6g} deg, edge radius = {:.6g} um\n", rad_to_deg(scene.rake_rad),
+  fmt::print(text, "tool              rake = {:.6g} deg, edge radius = {:.6g} um\n", rad_to_deg(scene.rake_rad),
              m_to_um(scene.edge_radius_m));
-  fmt::print("cutting force     {:.6g} N  ({:.6g} N/mm)\n", p.cutting_force_N, p.cutting_force_N / width_mm);
-  fmt::print("thrust force      {:.6g} N  ({:.6g} N/mm)\n", p.thrust_force_N, p.thrust_force_N / width_mm);
-  fmt::print("shear angle       {:.4g} deg\n", rad_to_deg(p.shear_angle_rad));
+  fmt::print(text, "cutting force     {:.6g} N  ({:.6g} N/mm)\n", p.cutting_force_N, p.cutting_force_N / width_mm);
+  fmt::print(text, "thrust force      {:.6g} N  ({:.6g} N/mm)\n", p.thrust_force_N, p.thrust_force_N / width_mm);
+  fmt::print(text, "shear angle       {:.4g} deg\n", rad_to_deg(p.shear_angle_rad));
   if (p.has_friction) {
     const bool from_scene = scene.friction_angle_rad && p.force_model != kerf::ForceModel::oxley &&
                             std::fabs(*scene.friction_angle_rad - p.friction_angle_rad) <= 1e-9;
-    fmt::print("friction angle    {:.4g} deg (from {})\n", rad_to_deg(p.friction_angle_rad),
+    fmt::print(text, "friction angle    {:.4g} deg (from {})\n", rad_to_deg(p.friction_angle_rad),
                p.force_model == kerf::ForceModel::oxley ? "the extended-Oxley solution"
-               : from_scene                              ? scene.friction_origin
-                                                         : fmt::format("the {} friction closure at the nominal rake",
-                                                                       kerf::friction_closure_name(scene.liu_li.closure)));
+               : from_scene                             ? scene.friction_origin
+                                                        : fmt::format("the {} friction closure at the nominal rake",
+                                                                      kerf::friction_closure_name(scene.liu_li.closure)));
   }
-  fmt::print("chip ratio        {:.4g} (chip thickness {:.6g} um)\n", p.chip_ratio, m_to_um(p.chip_thickness_m));
-  fmt::print("flow stress       {:.6g} MPa (JC {:.6g} + Hall-Petch {:.6g} + dislocation {:.6g}); k_s = {:.6g} MPa\n",
+  fmt::print(text, "chip ratio        {:.4g} (chip thickness {:.6g} um)\n", p.chip_ratio, m_to_um(p.chip_thickness_m));
+  fmt::print(text,
+             "flow stress       {:.6g} MPa (JC {:.6g} + Hall-Petch {:.6g} + dislocation {:.6g}); k_s = {:.6g} MPa\n",
              pa_to_mpa(p.flow.total_Pa), pa_to_mpa(p.flow.johnson_cook_Pa), pa_to_mpa(p.flow.hall_petch_Pa),
              pa_to_mpa(p.flow.dislocation_Pa), pa_to_mpa(p.flow.shear_Pa));
-  fmt::print("at                strain {:.4g}, strain rate {:.4g} 1/s, temperature {:.5g} K\n", p.state.strain,
+  fmt::print(text, "at                strain {:.4g}, strain rate {:.4g} 1/s, temperature {:.5g} K\n", p.state.strain,
              p.state.strain_rate_per_s, p.state.temperature_K);
   if (scene.critical_depth_m) {
-    fmt::print("regime            {} (critical depth d_c = {:.3g} nm)\n", p.regime,
+    fmt::print(text, "regime            {} (critical depth d_c = {:.3g} nm)\n", p.regime,
                kerf::units::m_to_nm(*scene.critical_depth_m));
   }
   for (const auto& [column, length_m] : p.contact_lengths_m) {
     const std::string name = column.substr(0, column.size() - 3);
-    if (length_m) fmt::print("{:<17} {:.6g} mm\n", name, m_to_mm(*length_m));
-    if (!length_m) fmt::print("{:<17} not applicable (see the warnings)\n", name);
+    if (length_m) fmt::print(text, "{:<17} {:.6g} mm\n", name, m_to_mm(*length_m));
+    if (!length_m) fmt::print(text, "{:<17} not applicable (see the warnings)\n", name);
   }
   if (p.liu_li) {
     const auto& l = *p.liu_li;
-    fmt::print("edge integral     from {:.4g} deg to {:.4g} deg (stagnation {:.4g} deg{}); ploughed layer {:.6g} um\n",
-               rad_to_deg(l.lower_limit_rad), rad_to_deg(l.upper_limit_rad), rad_to_deg(l.stagnation_angle_rad),
-               l.pole_rad ? fmt::format(", pole {:.4g} deg", rad_to_deg(*l.pole_rad)) : "",
-               m_to_um(l.ploughed_thickness_m));
-    fmt::print("edge part         cutting {:.6g} N, thrust {:.6g} N (the thrust depends strongly on the lower limit)\n",
+    fmt::print(
+        text, "edge integral     from {:.4g} deg to {:.4g} deg (stagnation {:.4g} deg{}); ploughed layer {:.6g} um\n",
+        rad_to_deg(l.lower_limit_rad), rad_to_deg(l.upper_limit_rad), rad_to_deg(l.stagnation_angle_rad),
+        l.pole_rad ? fmt::format(", pole {:.4g} deg", rad_to_deg(*l.pole_rad)) : "", m_to_um(l.ploughed_thickness_m));
+    fmt::print(text,
+               "edge part         cutting {:.6g} N, thrust {:.6g} N (the thrust depends strongly on the lower limit)\n",
                l.edge.cutting_N_per_m * p.width_m, l.edge.thrust_N_per_m * p.width_m);
     if (p.ploughing) {
       const auto& w = *p.ploughing;
@@ -116,14 +119,22 @@ void print_prediction(const std::string& scene_path, const kerf::AnalyticScene& 
     }
   }
   if (p.oxley) {
-    fmt::print("oxley             C0 = {:.4g}, delta = {:.4g}, interface T = {:.5g} K, contact length {:.6g} mm\n",
+    fmt::print(text,
+               "oxley             C0 = {:.4g}, delta = {:.4g}, interface T = {:.5g} K, contact length {:.6g} mm\n",
                p.oxley->strain_rate_constant_C0, p.oxley->delta, p.oxley->interface_temperature_K,
                m_to_mm(p.oxley->contact_length_m));
   }
   const auto fired = p.guards.fired();
-  if (fired.empty()) fmt::print("guards            none fired\n");
-  for (auto guard : fired) fmt::print("guard             {}: {}\n", kerf::guard_name(guard), kerf::guard_policy(guard));
-  for (const auto& w : p.warnings) fmt::print("warning           {}\n", w);
+  if (fired.empty()) fmt::print(text, "guards            none fired\n");
+  for (auto guard : fired)
+    fmt::print(text, "guard             {}: {}\n", kerf::guard_name(guard), kerf::guard_policy(guard));
+  for (const auto& w : p.warnings) fmt::print(text, "warning           {}\n", w);
+}
+
+/// Where the human-readable text goes: standard error when the CSV goes to standard output (`--csv -`), so that
+/// `kerf-forces predict SCENE --csv - > out.csv` writes nothing but the CSV there.
+std::FILE* text_stream(const std::string& csv) {
+  return csv == "-" ? stderr : stdout;
 }
 
 void write_row_csv(const std::string& csv, const kerf::Columns& columns) {
@@ -138,28 +149,32 @@ void write_row_csv(const std::string& csv, const kerf::Columns& columns) {
 int run_predict_trepanning(const std::string& scene_path, const Json& document, const std::string& csv) {
   const kerf::TrepanningScene scene = kerf::parse_trepanning_scene(document);
   const kerf::TrepanningForces forces = kerf::trepanning_forces(scene.tool, scene.cut, scene.groups);
-  fmt::print("scene             {}\n", scene_path);
-  fmt::print("material          {} ({})\n", scene.material.name, scene.material.title);
-  fmt::print("force model       trepanning (seed 002 Eqs. 21-22, brittle regime)\n");
-  fmt::print("tool              outer diameter {:.6g} mm, inner diameter {:.6g} mm\n",
+  std::FILE* text = text_stream(csv);
+  fmt::print(text, "scene             {}\n", scene_path);
+  fmt::print(text, "material          {} ({})\n", scene.material.name, scene.material.title);
+  fmt::print(text, "force model       trepanning (seed 002 Eqs. 21-22, brittle regime)\n");
+  fmt::print(text, "tool              outer diameter {:.6g} mm, inner diameter {:.6g} mm\n",
              kerf::units::m_to_mm(scene.tool.outer_diameter_m), kerf::units::m_to_mm(scene.tool.inner_diameter_m));
-  fmt::print("cut               feed rate {:.6g} um/s, spindle speed {:.6g} rpm ({:.6g} um/rev)\n",
+  fmt::print(text, "cut               feed rate {:.6g} um/s, spindle speed {:.6g} rpm ({:.6g} um/rev)\n",
              kerf::units::m_to_um(scene.cut.feed_rate_m_per_s), scene.cut.spindle_speed_rev_per_s * 60.0,
              kerf::units::m_to_um(forces.feed_per_rev_m));
-  fmt::print("axial force       {:.6g} N\n", forces.axial_force_N);
-  fmt::print("torque            {:.6g} N m\n", forces.torque_N_m);
-  fmt::print("lumped groups     K_F = H tan(phi) = {:.6g} MPa, K_M = H (1 + pi tan(phi) mu / 2) = {:.6g} MPa ({})\n",
+  fmt::print(text, "axial force       {:.6g} N\n", forces.axial_force_N);
+  fmt::print(text, "torque            {:.6g} N m\n", forces.torque_N_m);
+  fmt::print(text,
+             "lumped groups     K_F = H tan(phi) = {:.6g} MPa, K_M = H (1 + pi tan(phi) mu / 2) = {:.6g} MPa ({})\n",
              kerf::units::pa_to_mpa(scene.groups.axial_group_Pa), kerf::units::pa_to_mpa(scene.groups.torque_group_Pa),
              scene.groups_origin);
   const kerf::Columns columns = kerf::trepanning_columns(scene, forces);
   if (scene.grits) {
     const auto d = kerf::trepanning_grit_diagnostics(scene.tool, scene.cut, scene.groups, *scene.grits);
-    fmt::print("per grit          {:.4g} grits, {:.4g} cutting edges, depth {:.4g} nm, normal {:.4g} mN, tangential "
+    fmt::print(text,
+               "per grit          {:.4g} grits, {:.4g} cutting edges, depth {:.4g} nm, normal {:.4g} mN, tangential "
                "{:.4g} mN (Eqs. 1-20)\n",
                d.grit_count, d.cutting_edges, kerf::units::m_to_nm(d.grit_depth_m), 1e3 * d.grit_normal_force_N,
                1e3 * d.grit_tangential_force_N);
     for (const auto& [name, value] : columns) {
-      if (name == "grit_regime" && !value.empty()) fmt::print("grit regime       {} (each grit's depth against d_c)\n", value);
+      if (name == "grit_regime" && !value.empty())
+        fmt::print(text, "grit regime       {} (each grit's depth against d_c)\n", value);
     }
   }
   if (!csv.empty()) write_row_csv(csv, columns);
@@ -171,7 +186,7 @@ int run_predict(const std::string& scene_path, const std::vector<std::string>& o
   if (kerf::is_trepanning_scene(document)) return run_predict_trepanning(scene_path, document, csv);
   const kerf::AnalyticScene scene = kerf::parse_analytic_scene(document);
   const kerf::Prediction prediction = kerf::predict(scene);
-  print_prediction(scene_path, scene, prediction);
+  print_prediction(text_stream(csv), scene_path, scene, prediction);
   if (!csv.empty()) write_row_csv(csv, kerf::prediction_columns(scene, prediction));
   return 0;
 }
@@ -211,12 +226,13 @@ int run_regime(const std::string& scene_path, const std::vector<std::string>& ov
 }
 
 int run_compare(const std::string& scene_path, const std::vector<std::string>& overrides,
-                const std::string& experiments, const std::vector<std::string>& mappings, bool fit,
+                const std::string& experiments, const std::vector<std::string>& mappings, bool fit, bool pool,
                 std::optional<double> measured_width_mm, const std::string& out_dir) {
   const Json document = load_scene_document(scene_path, overrides);
   kerf::SceneComparisonOptions options;
   options.mappings = mappings;
   options.fit = fit;
+  options.pool = pool;
   options.measured_width_mm = measured_width_mm;
   kerf::SceneComparison result = kerf::compare_scene(document, experiments, options);
   result.comparison.spec.description = fmt::format("Scene {} against {}.", scene_path, experiments);
@@ -378,6 +394,10 @@ int run_sweep(const std::string& scene_path, const std::vector<std::string>& ove
 
   // The column set depends only on the models the scene asks for: take the names from the unvaried scene.
   const std::vector<std::string> names = kerf::scene_column_names(base, &materials);
+  // A key the scene does not read would refuse every point: an input error now, not a CSV of errors.
+  for (const auto& axis : axes) {
+    kerf::check_varied_key(base, fmt::format("{}={}", axis.path, axis.values[0]), "--vary", &materials);
+  }
 
   struct Row {
     std::vector<std::string> values;
@@ -530,7 +550,7 @@ int main(int argc, char** argv) {
 
   std::string experiments, out_dir;
   std::vector<std::string> mappings;
-  bool fit = false;
+  bool fit = false, pool = false;
   std::optional<double> measured_width_mm;
   auto* compare = app.add_subcommand("compare", "hold a scene against measured forces: report.md, CSV, JSON, plots");
   compare->add_option("scene", scene_path, "scene file (JSON)")->required();
@@ -539,6 +559,9 @@ int main(int argc, char** argv) {
   compare->add_option("--map", mappings,
                       "bind a CSV column: scene.key.path=column (a condition) or prediction_column=column");
   compare->add_flag("--fit", fit, "fit the trepanning model's lumped groups to the measured rows first");
+  compare->add_flag("--pool", pool,
+                    "compare a CSV none of whose columns sets a condition: every row a measurement at the scene's own "
+                    "condition (without it such a CSV is refused)");
   compare->add_option("--measured-width-mm", measured_width_mm, "width the measured forces act over (mm)")
       ->check(CLI::PositiveNumber);
   compare->add_option("--out", out_dir, "directory for the report")->required();
@@ -578,7 +601,8 @@ int main(int argc, char** argv) {
     if (*compare || *report) kerf::check_writable_directory(out_dir);
     if (*predict) return run_predict(scene_path, overrides, csv);
     if (*sweep) return run_sweep(scene_path, overrides, vary, csv, plot);
-    if (*compare) return run_compare(scene_path, overrides, experiments, mappings, fit, measured_width_mm, out_dir);
+    if (*compare)
+      return run_compare(scene_path, overrides, experiments, mappings, fit, pool, measured_width_mm, out_dir);
     if (*regime) return run_regime(scene_path, overrides);
     if (*report) return run_report(config_path, out_dir);
     if (*models) return list_models();

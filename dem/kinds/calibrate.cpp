@@ -164,7 +164,7 @@ class CalibrateKind final : public SceneKind {
       done.push_back(e);
       if (run.options.checkpoints())
         write_checkpoint(out, {run.doc, summary, {}, static_cast<int>(done.size()), checkpoint_every, run.scene_dir,
-                               std::string(), serialize_evaluations(done)});
+                               std::string(), serialize_evaluations(done), run.options.provenance});
       std::cout << fmt::format("evaluation {}: E* {:.2f} GPa, kappa {:.3f}, sigma_c {:.1f} MPa, c {:.1f} MPa -> E {:.2f} GPa, "
                                "nu {:.3f}, sigma_t {:.1f} MPa, sigma_C {:.1f} MPa (max error {:.1f} %, {:.0f} s{})\n",
                                e.index, units::pa_to_gpa(m.contact_modulus_pa), m.stiffness_ratio,

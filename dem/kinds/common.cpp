@@ -56,6 +56,18 @@ void StageProgress::advance(double count, std::optional<SampleState> sample) {
   }
 }
 
+void StageProgress::resume_at(double done, std::optional<SampleState> sample) {
+  update_.done = done;
+  update_.sample = std::move(sample);
+  if (bar_) bar_->resume_at(static_cast<std::size_t>(done));
+  if (callback_) {
+    ProgressUpdate start = update_;
+    start.resumed = true;
+    const std::lock_guard<std::mutex> lock(progress_callback_mutex);
+    callback_(start);
+  }
+}
+
 void StageProgress::finish(std::optional<SampleState> sample) {
   if (bar_) bar_->finish();
   if (callback_ && (update_.done != update_.total || sample)) {

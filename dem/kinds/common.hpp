@@ -32,6 +32,9 @@ class StageProgress {
   StageProgress(const ProgressTarget& target, const std::string& stage, double total, const std::string& unit);
   /// Adds `count` units done; `sample` is what the stage measured last (kept for later reports).
   void advance(double count, std::optional<SampleState> sample = std::nullopt);
+  /// A stage resumed from a checkpoint: `done` units and `sample` were done before (reported as `resumed`,
+  /// left out of the rates). Call it before the first advance.
+  void resume_at(double done, std::optional<SampleState> sample);
   /// Ends the stage at 100 %; `sample`: its last one, when advance has not reported it.
   void finish(std::optional<SampleState> sample = std::nullopt);
 

@@ -51,7 +51,7 @@ Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& d
   const double n = static_cast<double>(run.simulation().particles().size());  // a window's: about the same all along
   const double steps = cut.length_m / (cut.speed_m_per_s * run.result().time_step_s);
   StageProgress progress(tp.progress, "cut", n * steps, "particle-steps");
-  if (tp.sample_index > 0) progress.advance(n * cut.sample_every_steps * tp.sample_index);
+  if (tp.sample_index > 0) progress.resume_at(n * cut.sample_every_steps * tp.sample_index, cut_sample(run));
   while (run.advance()) {
     ++tp.sample_index;
     progress.advance(n * cut.sample_every_steps, cut_sample(run));
@@ -59,7 +59,7 @@ Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& d
     if (checkpoints.due(tp.sample_index))
       // The cut holds its own workpiece: the checkpoint's specimen part stays empty.
       write_checkpoint(out, {doc, summary, tp.frames, tp.sample_index, options.checkpoint_every, tp.scene_dir,
-                             std::string(), run.serialize()});
+                             std::string(), run.serialize(), options.provenance});
   }
   progress.finish(cut_sample(run));  // the last sample (advance returned false)
   if (frame_every > 0) write_frame(run.simulation());
@@ -79,9 +79,13 @@ Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& d
            {"thrust_force_inefficiency_samples", res.thrust_force_inefficiency},
            {"main_force_batch_samples", res.main_force_batch_samples},
            {"thrust_force_batch_samples", res.thrust_force_batch_samples},
-           {"steady_from_travel_mm", units::m_to_mm(cut.entry_fraction * cut.length_m)},
+           {"steady_from_travel_mm", units::m_to_mm(res.steady_from_travel_m)},
+           {"steady_to_travel_mm", units::m_to_mm(res.steady_to_travel_m)},
            {"steady_samples", res.n_steady_samples},
            {"contact_share_steady", res.contact_share},
+           // Whether the means above are a steady cut's; if not, why (null when they are).
+           {"steady", res.steady},
+           {"not_steady_reason", res.steady ? Json() : Json(res.not_steady_reason)},
            {"width_mm", units::m_to_mm(res.width_m)},
            {"cracks_tensile", res.cracks.tensile},
            {"cracks_shear", res.cracks.shear},
@@ -125,16 +129,19 @@ Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& d
   const double margin = 2 * cut.depth_of_cut_m;
   write_specimen_png(out / "specimen.png", run.workpiece(), "cut, final state",
                      std::array<double, 4>{box[0], box[1] + margin, box[2], box[3] + margin});
-  write_cut_forces_png(out / "forces.png", res, cut.entry_fraction * cut.length_m);
+  write_cut_forces_png(out / "forces.png", res);
   write_summary(out, summary);
   remove_checkpoint(out);  // finished: nothing to resume
 #pragma omp critical(kerf_dem_stdout)
-  std::cout << fmt::format("cut: main force {:.3g} N (std {:.2g}), thrust force {:.3g} N (std {:.2g}) per {:g} mm width; "
-                           "{} tensile + {} shear cracks ({} chip, {} subsurface, damage depth {:.1f} um); {} steps, {:.1f} s -> {}\n",
-                           res.main_force_n, res.main_force_std_n, res.thrust_force_n, res.thrust_force_std_n,
-                           units::m_to_mm(res.width_m), res.cracks.tensile, res.cracks.shear, res.cracks.chip,
-                           res.cracks.subsurface, units::m_to_um(res.cracks.subsurface_damage_depth_m), res.steps,
-                           res.wall_time_s, out.string());
+  std::cout << fmt::format(
+      "cut: main force {:.3g} N (std {:.2g}), thrust force {:.3g} N (std {:.2g}) per {:g} mm width, "
+      "means over {:.4g}-{:.4g} mm of travel{}; {} tensile + {} shear cracks ({} chip, {} "
+      "subsurface, damage depth {:.1f} um); {} steps, {:.1f} s -> {}\n",
+      res.main_force_n, res.main_force_std_n, res.thrust_force_n, res.thrust_force_std_n, units::m_to_mm(res.width_m),
+      units::m_to_mm(res.steady_from_travel_m), units::m_to_mm(res.steady_to_travel_m),
+      res.steady ? "" : " (NOT STEADY: " + res.not_steady_reason + ")", res.cracks.tensile, res.cracks.shear,
+      res.cracks.chip, res.cracks.subsurface, units::m_to_um(res.cracks.subsurface_damage_depth_m), res.steps,
+      res.wall_time_s, out.string());
   return summary;
 }
 
@@ -220,7 +227,8 @@ SceneOutcome run_cut_replicates(const Json& cut_scene, const std::string& scene_
              {"seed", one["study_item"]["seed"]},
              {"directory", (fs::path("replicates") / "items" / study_item_name(item)).generic_string()}};
     for (const auto& key : keys) row[key.first] = one["results"][key.first];
-    for (const char* key : {"main_force_std_N", "thrust_force_std_N", "main_force_sem_N", "thrust_force_sem_N", "width_mm"})
+    for (const char* key : {"main_force_std_N", "thrust_force_std_N", "main_force_sem_N", "thrust_force_sem_N",
+                            "width_mm", "steady", "not_steady_reason"})
       row[key] = one["results"].value(key, Json());
     row["wall_time_s"] = one["wall_time_s"];  // the cut's own (genesis excluded)
     wall += row["wall_time_s"].get<double>();
@@ -246,6 +254,18 @@ SceneOutcome run_cut_replicates(const Json& cut_scene, const std::string& scene_
     stats[force + "_sem_within_cuts_N"] = finite_or_null(standard_error_of_mean(sems));
   }
   stats["width_mm"] = list[0]["width_mm"];
+  // Steady when every replicate's means are; else the first replicate that is not, and why.
+  stats["steady"] = true;
+  stats["not_steady_reason"] = Json();
+  for (const auto& row : list) {
+    if (row["steady"] == true) continue;
+    stats["steady"] = false;
+    stats["not_steady_reason"] =
+        fmt::format("replicate {}: {}", row["replicate"].get<int>(),
+                    row["not_steady_reason"].is_string() ? row["not_steady_reason"].get<std::string>()
+                                                         : std::string("no steady verdict"));
+    break;
+  }
   summary["cut"] = cut_params_to_json(cut);
   summary["replicates"] = list;
   summary["results"] = stats;
@@ -253,11 +273,14 @@ SceneOutcome run_cut_replicates(const Json& cut_scene, const std::string& scene_
   summary["wall_time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   summary["wall_time_s_sum_over_replicates"] = wall;
   write_summary(options.out, summary);
-  std::cout << fmt::format("cut, {} replicates: main force {:.3g} N (replicate std {:.2g}), thrust force {:.3g} N "
-                           "(replicate std {:.2g}) per {:g} mm width -> {}\n",
-                           replicates, stats["main_force_N"].get<double>(), stats["main_force_replicate_std_N"].get<double>(),
-                           stats["thrust_force_N"].get<double>(), stats["thrust_force_replicate_std_N"].get<double>(),
-                           stats["width_mm"].get<double>(), options.out.string());
+  std::cout << fmt::format(
+      "cut, {} replicates: main force {:.3g} N (replicate std {:.2g}), thrust force {:.3g} N "
+      "(replicate std {:.2g}) per {:g} mm width{} -> {}\n",
+      replicates, stats["main_force_N"].get<double>(), stats["main_force_replicate_std_N"].get<double>(),
+      stats["thrust_force_N"].get<double>(), stats["thrust_force_replicate_std_N"].get<double>(),
+      stats["width_mm"].get<double>(),
+      stats["steady"] == true ? "" : " (NOT STEADY: " + stats["not_steady_reason"].get<std::string>() + ")",
+      options.out.string());
   return {0, summary, std::move(done)};
 }
 

@@ -96,17 +96,19 @@ class LabTestKind final : public SceneKind {
     const double steps =
         loading_.max_strain * run.result().height_m / (2 * loading_.speed_m_per_s * run.simulation().time_step());
     StageProgress progress(tp.progress, name(), n * steps, "particle-steps");
-    if (tp.sample_index > 0) progress.advance(n * loading_.sample_every_steps * tp.sample_index);
     const auto last_sample = [&] {
       return test_sample(run.result().curve.back(), run.simulation().time_step(), specimen.particles().size());
     };
+    if (tp.sample_index > 0)
+      progress.resume_at(n * loading_.sample_every_steps * tp.sample_index,
+                         run.result().curve.empty() ? std::nullopt : std::optional<SampleState>(last_sample()));
     while (run.advance()) {
       ++tp.sample_index;
       progress.advance(n * loading_.sample_every_steps, last_sample());
       if (frame_every > 0 && tp.sample_index % frame_every == 0) write_frame(run.simulation());
       if (checkpoints.due(tp.sample_index))
         write_checkpoint(out, {scene_run.doc, summary, tp.frames, tp.sample_index, scene_run.options.checkpoint_every,
-                               tp.scene_dir, specimen.serialize(), run.serialize()});
+                               tp.scene_dir, specimen.serialize(), run.serialize(), scene_run.options.provenance});
     }
     // The last sample (advance returned false).
     progress.finish(last_sample());

@@ -31,6 +31,15 @@ struct TemporaryFile {
   static void release(const std::filesystem::path& temporary);
 };
 
+/// A line for the same handler to write to standard error before the process dies (then killed by the signal
+/// as before: exit status 128 + its number): `if_exists` when the file `path` exists at that moment, else
+/// `otherwise` (an empty `path`: always `otherwise`). Newlines are added. One note per process, a later call
+/// replaces it; longer than 1 KiB each is cut.
+///
+///   kerf::set_interrupt_note("out/checkpoint.bin", "kerf-dem: interrupted; continue with: kerf-dem resume out",
+///                            "kerf-dem: interrupted before its first checkpoint: run it again");
+void set_interrupt_note(const std::filesystem::path& path, std::string_view if_exists, std::string_view otherwise);
+
 /// Creates `dir` if needed and writes and removes a probe file in it: throws OutputError before any work
 /// when the output could not be written at the end.
 void check_writable_directory(const std::filesystem::path& dir);
@@ -81,6 +90,9 @@ class Progress {
   Progress& operator=(const Progress&) = delete;
 
   void advance(std::size_t count);
+  /// Counts `done` as done before this process began (a run resumed from a checkpoint): shown in the bar, left
+  /// out of the rate and the ETA. Call it before the first advance.
+  void resume_at(std::size_t done);
   void finish();
   bool enabled() const { return enabled_; }
 
@@ -88,7 +100,7 @@ class Progress {
   void draw(bool final_line);
 
   std::string label_, unit_;
-  std::size_t total_, done_ = 0;
+  std::size_t total_, done_ = 0, done_before_ = 0;
   bool enabled_, finished_ = false;
   std::chrono::steady_clock::time_point start_, last_draw_;
 };

@@ -4,13 +4,13 @@
 
 #include <algorithm>
 #include <catch2/catch.hpp>
-
-#include "quick_specimen.hpp"
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 
 #include "kerf/dem/specimen.hpp"
 #include "kerf/error.hpp"
+#include "quick_specimen.hpp"
 
 using namespace kerf::dem;
 using Catch::Matchers::WithinAbs;
@@ -209,6 +209,58 @@ TEST_CASE("cutting: mean forces per travel window", "[cutting]") {
   CutParams p;
   p.window_m = 0;
   CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains("cut.window_mm = 0"));
+}
+
+TEST_CASE("cutting: means say whether they are steady (after the entry, with standard errors)", "[cutting]") {
+  // Forces of independent noise about 5 N (main) and 2 N (thrust), a sample every um of travel up to `to_mm`.
+  const auto cut_to = [](double to_mm) {
+    CutResult r;
+    std::uint64_t state = 12345;
+    const auto noise = [&state] {  // uniform in [-0.5, 0.5), a fixed LCG: the same samples on every machine
+      state = state * 6364136223846793005ull + 1442695040888963407ull;
+      return static_cast<double>(state >> 11) / 9007199254740992.0 - 0.5;
+    };
+    for (int k = 0; k <= static_cast<int>(std::lround(to_mm * 1000)); ++k)
+      r.samples.push_back({k * 1e-6, 0, 5 + noise(), 2 + noise()});
+    return r;
+  };
+  // Long enough, means from 0.3 mm (the entry, kEntryTravelM): steady; the range is the one averaged.
+  CutResult steady = cut_to(2.0);
+  steady_statistics(steady, kEntryTravelM);
+  CHECK(steady.steady);
+  CHECK(steady.not_steady_reason.empty());
+  CHECK(std::isfinite(steady.main_force_sem_n));
+  CHECK(steady.steady_from_travel_m == kEntryTravelM);
+  CHECK_THAT(steady.steady_to_travel_m, WithinAbs(2e-3, 1e-15));
+  // A scene's entry_fraction x length a hair short of 0.3 mm (0.0272727 x 11 mm) still counts as after the entry.
+  CutResult rounded = cut_to(2.0);
+  steady_statistics(rounded, 0.0272727 * 11e-3);
+  CHECK(rounded.steady);
+  // The same signal averaged from 0.1 mm: the entry is in the means.
+  CutResult early = cut_to(2.0);
+  steady_statistics(early, 0.1e-3);
+  CHECK_FALSE(early.steady);
+  CHECK_THAT(early.not_steady_reason, Catch::Contains("the means start at 0.1 mm of travel, within the entry") &&
+                                          Catch::Contains("cut.entry_fraction"));
+  // A cut that ends within the entry (issue 40: cut.length_mm=0.1, means over 0.025-0.1 mm).
+  CutResult short_cut = cut_to(0.1);
+  steady_statistics(short_cut, 0.025e-3);
+  CHECK_FALSE(short_cut.steady);
+  CHECK_THAT(short_cut.not_steady_reason, Catch::Contains("the cut travels 0.1 mm, within the entry"));
+  CHECK_THAT(short_cut.steady_to_travel_m, WithinAbs(0.1e-3, 1e-15));
+  // Past the entry but with too few samples for a standard error: not steady either, and said why.
+  CutResult few = cut_to(0.303);
+  steady_statistics(few, kEntryTravelM);
+  REQUIRE_FALSE(std::isfinite(few.main_force_sem_n));
+  CHECK_FALSE(few.steady);
+  CHECK_THAT(few.not_steady_reason,
+             Catch::Contains("cannot be computed from " + std::to_string(few.n_steady_samples) + " samples"));
+  // No sample in the range at all.
+  CutResult none = cut_to(0.2);
+  steady_statistics(none, kEntryTravelM);
+  CHECK_FALSE(none.steady);
+  CHECK(none.n_steady_samples == 0);
+  CHECK_THAT(none.not_steady_reason, Catch::Contains("no sample"));
 }
 
 TEST_CASE("cutting: crack places and subsurface damage depth", "[cutting]") {

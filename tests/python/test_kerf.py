@@ -117,6 +117,27 @@ def test_sweep_refuses_a_bad_axis():
     assert caught.value.field == "vary.cut.uncut_chip_thickness_um"
 
 
+def test_sweep_refuses_a_key_the_scene_does_not_read():
+    # A misspelt key would refuse every point (rows of NaN): an exception instead, with the did-you-mean.
+    with pytest.raises(kerf.InputError) as caught:
+        kerf.sweep(ORTHOGONAL, vary={"tool.rake_deg": [0, 5], "tool.edge_radius": [0.1, 0.2]}, frame=False)
+    assert caught.value.field == "vary" and caught.value.value == "tool.edge_radius"
+    assert "edge_radius_um" in str(caught.value)
+    # A known key whose first value is refused is that point's error, as before.
+    table = kerf.sweep(ORTHOGONAL, vary={"tool.rake_deg": [95, 0]}, frame=False)
+    assert math.isnan(table["cutting_force_N"][0]) and not math.isnan(table["cutting_force_N"][1])
+
+
+def test_compare_refuses_a_csv_without_conditions_unless_pooled(tmp_path):
+    csv_path = tmp_path / "nocond.csv"
+    csv_path.write_text("depth_um,cutting_force_N\n0.1,1.5\n0.2,2.5\n")
+    with pytest.raises(kerf.InputError) as caught:
+        kerf.compare(ORTHOGONAL, csv_path)
+    assert "depth_um" in str(caught.value) and "--pool" in str(caught.value)
+    pooled = kerf.compare(ORTHOGONAL, csv_path, pool=True)
+    assert pooled["quantities"]["cutting_force"]["n"] == 1  # both rows at the scene's one condition
+
+
 def test_materials_and_models():
     names = [m["name"] for m in kerf.materials()]
     assert "soda_lime_glass_fj" in names and names == sorted(names)

@@ -39,4 +39,15 @@ std::vector<std::size_t> falling_points(const std::vector<std::optional<double>>
 /// The column names a scene's rows will have (its models fix them), without predicting.
 std::vector<std::string> scene_column_names(const Json& document, MaterialCache* cache);
 
+/// Refuses a varied key that the scene does not read (a sweep's --vary, Python's `vary`), before any point is
+/// evaluated: applies `assignment` (key.path=value, the axis's first value) to a copy of the document and parses
+/// it; a key the scene does not know is an InputError naming `option_name` and the key, with the parser's
+/// did-you-mean, and so is a path that cannot be applied. A value the scene refuses is not: that point is
+/// refused in the sweep like any other.
+///
+///   kerf::check_varied_key(base, "tool.edge_radius=0", "--vary", &cache);
+///   // "--vary = tool.edge_radius: expected a known key (did you mean 'edge_radius_um'?); see docs/scenes.md"
+void check_varied_key(Json document, const std::string& assignment, const std::string& option_name,
+                      MaterialCache* cache);
+
 }  // namespace kerf

@@ -33,6 +33,9 @@ struct SceneComparisonOptions {
   bool fit = false;
   /// The width the measured forces act over, when the CSV has no width_mm column (default: the scene's).
   std::optional<double> measured_width_mm;
+  /// Whether a CSV none of whose columns sets a condition is compared anyway, every row a measurement at the
+  /// scene's own condition (replicates of one point); without it such a CSV is an InputError naming its columns.
+  bool pool = false;
 };
 
 /// What the prediction of one measured row said besides its numbers.

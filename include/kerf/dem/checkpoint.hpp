@@ -3,15 +3,16 @@
 // the sample reached, the specimen and the run's own state (written atomically to OUT/checkpoint.bin every
 // --checkpoint-every samples; a calibration writes one after every evaluation).
 //
-//   Checkpoint c{doc, summary, frames, sample_index, every, scene_dir, specimen.serialize(), run.serialize()};
+//   Checkpoint c{doc, summary, frames, sample_index, every, scene_dir, specimen.serialize(), run.serialize(),
+//                options.provenance};
 //   write_checkpoint(out, c);
 //   Checkpoint again = read_checkpoint(out);   // InputError when OUT holds none
 //
 // Format "KERFCKP2": the magic (a name and a version digit), the file's length (native 64 bits), three parts,
 // each a native 64-bit length and its bytes: the JSON head (scene, summary, frames, sample_index,
-// checkpoint_every, scene_dir), the specimen, the run; last the CRC-32 (IEEE 802.3, boost::crc_32_type) of
-// every byte before it. A file that is damaged (a flipped bit, cut short, a byte too many) or of another
-// version is a ModelError (exit 3), read before anything in it is used.
+// checkpoint_every, scene_dir and, when the run has one, provenance), the specimen, the run; last the CRC-32 (IEEE
+// 802.3, boost::crc_32_type) of every byte before it. A file that is damaged (a flipped bit, cut short, a byte too
+// many) or of another version is a ModelError (exit 3), read before anything in it is used.
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -31,6 +32,8 @@ struct Checkpoint {
   FrameList frames;
   int sample_index = 0, checkpoint_every = 0;
   std::string scene_dir, specimen, run;
+  /// The run's provenance (RunOptions::provenance; in the JSON head, null in a checkpoint written without it).
+  Json provenance;
 
   std::string bytes() const;
   /// ModelError when the bytes are not a checkpoint, of another version, or damaged in any way.

@@ -4,7 +4,7 @@
 // black lines. Written whole or not at all.
 //
 //   write_specimen_png("out/specimen.png", sim, "compression, final state");
-//   write_cut_forces_png("out/forces.png", cut_result, steady_from_m);   // force against tool travel
+//   write_cut_forces_png("out/forces.png", cut_result);   // force against tool travel, the means
 //   write_stress_strain_png("out/curve.png", test_result, "compression");
 #include <array>
 #include <filesystem>
@@ -22,9 +22,9 @@ namespace kerf::dem {
 void write_specimen_png(const std::filesystem::path& path, const Simulation& sim, const std::string& title,
                         const std::optional<std::array<double, 4>>& view_m = std::nullopt);
 
-/// Main and thrust force against tool travel (the samples of forces.csv), with the steady-part means drawn
-/// from `steady_from_m` on as dashed lines.
-void write_cut_forces_png(const std::filesystem::path& path, const CutResult& result, double steady_from_m);
+/// Main and thrust force against tool travel (the samples of forces.csv), with the means as dashed lines over
+/// the travel they cover, labelled with it, and "NOT STEADY" (also in the title) when CutResult::steady is false.
+void write_cut_forces_png(const std::filesystem::path& path, const CutResult& result);
 
 /// A tension or compression test's stress against axial strain (curve.csv), with the secant E over its fit
 /// range (0 to 50 % of the peak) and the peak marked.

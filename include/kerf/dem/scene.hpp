@@ -12,7 +12,7 @@
 //   RunOptions options;
 //   options.out = "out";
 //   SceneOutcome done = run_scene(doc, "scene.json", options);  // writes out/summary.json and the rest
-//   SceneOutcome again = resume_scene("out", {});                // a run killed after a checkpoint
+//   SceneOutcome again = resume_scene("out");                    // a run killed after a checkpoint
 #include <filesystem>
 #include <cstdint>
 #include <functional>
@@ -57,12 +57,15 @@ struct SampleState {
 };
 
 /// One report of a running stage: "specimen genesis", "cut", "tension", "replicate 2: cut", ... The first
-/// report of a stage has done = 0 (its start), the last done = total.
+/// report of a stage has done = 0 (its start), the last done = total. A stage resumed from a checkpoint starts
+/// with a report marked `resumed` whose done and sample are where the checkpoint left it (not work of this
+/// process: rates count from there).
 struct ProgressUpdate {
   std::string stage;
   double done = 0, total = 0;  ///< in `unit`; done reaches total when the stage finishes
   std::string unit;            ///< "steps", "particle-steps"
   std::optional<SampleState> sample;  ///< the latest sample (none before the first, nor in a genesis)
+  bool resumed = false;               ///< the start of a stage resumed from a checkpoint
 };
 /// Called as a run advances (every sample; a genesis as it reports). Replicates run side by side report from
 /// several threads, never two calls at once.
@@ -81,6 +84,9 @@ struct RunOptions {
   ProgressCallback on_progress;  ///< besides the bars (a notebook, a log); empty: none
   std::string command_line;            ///< what started the run, for summary.json's provenance
   std::vector<std::string> overrides;  ///< the --set assignments already applied to the scene, for the same
+  /// The run's provenance block (run_scene and resume_scene set it), kept in its checkpoints so that a resume
+  /// reports the run it continues; null: none (a study's items).
+  Json provenance;
 };
 
 /// What a run produced: its exit status (0; kExitModelError for a calibration that did not converge), the
@@ -141,8 +147,10 @@ Scene read_scene(const Json& doc, const std::filesystem::path& scene_dir);
 /// host, threads (kerf/version.hpp).
 SceneOutcome run_scene(const Json& doc, const std::filesystem::path& scene_file, const RunOptions& options);
 
-/// Continues the run killed in `dir` from dir/checkpoint.bin (options.out is `dir`).
+/// Continues the run killed in `dir` from dir/checkpoint.bin (options.out is `dir`). The summary's provenance is
+/// the original run's (command line, scene path and hash, overrides, date: kept in the checkpoint), with a
+/// "resumes" list: per resume its date, `command_line`, the sample it continued from, version, host, threads.
 SceneOutcome resume_scene(const std::filesystem::path& dir, bool show_progress = true,
-                          const ProgressCallback& on_progress = {});
+                          const ProgressCallback& on_progress = {}, const std::string& command_line = "");
 
 }  // namespace kerf::dem

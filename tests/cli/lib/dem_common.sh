@@ -16,16 +16,18 @@ expect_input_error() {  # expect_input_error <text expected on stderr> <args...>
   grep -qF -- "$want" "$work/err" || fail "stderr lacks '$want' for: $*: $(cat "$work/err")"
 }
 
-# kill_after_checkpoint <pid> <dir>: waits until the run <pid> has written <dir>/checkpoint.bin (up to 300 s, or
-# until the run ends: on a loaded machine the first checkpoint can take many seconds), kills it (-9) and waits
-# for it; fails, saying which, if the run ended first or wrote no checkpoint.
+# kill_after_checkpoint <pid> <dir> [signal]: waits until the run <pid> has written <dir>/checkpoint.bin (up to
+# 300 s, or until the run ends: on a loaded machine the first checkpoint can take many seconds), kills it (with
+# the signal, default KILL) and waits for it, leaving its exit status in $killed_status; fails, saying which, if
+# the run ended first or wrote no checkpoint.
 kill_after_checkpoint() {
-  local pid=$1 dir=$2 start=$SECONDS
+  local pid=$1 dir=$2 signal=${3:-KILL} start=$SECONDS
   until [ -e "$dir/checkpoint.bin" ] || ! kill -0 "$pid" 2>/dev/null || [ $((SECONDS - start)) -ge 300 ]; do
     sleep 0.01
   done
-  kill -9 "$pid" 2>/dev/null || fail "the run ended before it could be killed ($dir)"
+  kill -s "$signal" "$pid" 2>/dev/null || fail "the run ended before it could be killed ($dir)"
   wait "$pid" 2>/dev/null
+  killed_status=$?
   [ -e "$dir/checkpoint.bin" ] || fail "no checkpoint in $dir after $((SECONDS - start)) s"
 }
 
