@@ -110,12 +110,12 @@ void print_prediction(std::FILE* text, const std::string& scene_path, const kerf
                l.edge.cutting_N_per_m * p.width_m, l.edge.thrust_N_per_m * p.width_m);
     if (p.ploughing) {
       const auto& w = *p.ploughing;
-      fmt::print("ploughing part    cutting {:.6g} N, thrust {:.6g} N (wave model, f = {:.4g}, chord {:.6g} um at "
+      fmt::print(text, "ploughing part    cutting {:.6g} N, thrust {:.6g} N (wave model, f = {:.4g}, chord {:.6g} um at "
                  "{:.4g} deg)\n",
                  w.force.cutting_N_per_m * p.width_m, w.force.thrust_N_per_m * p.width_m, p.friction_factor,
                  m_to_um(w.chord_m), rad_to_deg(w.factors.attack_angle_rad));
     } else {
-      fmt::print("ploughing part    none (models.ploughing = {})\n", kerf::ploughing_model_name(scene.ploughing));
+      fmt::print(text, "ploughing part    none (models.ploughing = {})\n", kerf::ploughing_model_name(scene.ploughing));
     }
   }
   if (p.oxley) {
