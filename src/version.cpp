@@ -16,7 +16,11 @@ namespace kerf {
 
 std::string_view version() { return KERF_VERSION; }
 
-std::string_view git_commit() { return KERF_GIT_COMMIT; }
+std::string_view git_commit() {
+  return
+#include "git_commit.inc"
+      ;
+}
 
 std::string version_line(std::string_view program) {
   return git_commit().empty() ? fmt::format("{} {}", program, version())
