@@ -120,4 +120,35 @@ void write_stress_strain_png(const std::filesystem::path& path, const LabTestRes
   render_png(fig, path);
 }
 
+void write_load_deflection_png(const std::filesystem::path& path, const std::vector<ToughnessResult>& results,
+                               const std::string& title) {
+  FigureSpec fig;
+  fig.title = title;
+  fig.x_label = "load-point deflection (um)";
+  fig.y_label = results.empty() ? "load (N)" : fmt::format("load per {:g} mm thickness (N)", units::m_to_mm(results[0].thickness_m));
+  double peak_max = 0;
+  for (std::size_t k = 0; k < results.size(); ++k) {
+    const ToughnessResult& r = results[k];
+    PlotSeries curve{k == 0 ? std::string("load on the load roller") : std::string(), {}, {}, {}, {}, SeriesStyle::line,
+                     static_cast<int>(k % 6), 0};
+    for (const auto& s : r.curve) curve.x.push_back(units::m_to_um(s.deflection_m)), curve.y.push_back(s.load_n);
+    fig.series.push_back(curve);
+    peak_max = std::max(peak_max, r.peak_load_n);
+  }
+  for (std::size_t k = 0; k < results.size(); ++k) {
+    const ToughnessResult& r = results[k];
+    const std::string label =
+        k == 0 ? fmt::format("peak {:.3g} N: K_IC = {:.3g} MPa sqrt(m) (a/W {:.2f}, W {:.3g} mm)", r.peak_load_n,
+                             units::pa_to_mpa(r.fracture_toughness_pa_sqrt_m), r.notch_m / r.depth_m, units::m_to_mm(r.depth_m))
+               : std::string();
+    fig.series.push_back({label, {units::m_to_um(r.deflection_at_peak_m)}, {r.peak_load_n}, {}, {}, SeriesStyle::points,
+                          static_cast<int>(k % 6), 3});
+  }
+  fig.x_min = 0;
+  fig.y_min = 0;
+  fig.y_max = 1.4 * peak_max;  // room for the legend above the curves
+  fig.legend_position = "top_left";
+  render_png(fig, path);
+}
+
 }  // namespace kerf::dem
