@@ -131,14 +131,20 @@ void write_load_deflection_png(const std::filesystem::path& path, const std::vec
     const ToughnessResult& r = results[k];
     PlotSeries curve{k == 0 ? std::string("load on the load roller") : std::string(), {}, {}, {}, {}, SeriesStyle::line,
                      static_cast<int>(k % 6), 0};
-    for (const auto& s : r.curve) curve.x.push_back(units::m_to_um(s.deflection_m)), curve.y.push_back(s.load_n);
+    PlotSeries smooth{k == 0 ? std::string("averaged over the peak window") : std::string(), {}, {}, {}, {},
+                      SeriesStyle::dashed_line, static_cast<int>(k % 6), 0};
+    for (const auto& s : r.curve) {
+      curve.x.push_back(units::m_to_um(s.deflection_m)), curve.y.push_back(s.load_n);
+      smooth.x.push_back(units::m_to_um(s.deflection_m)), smooth.y.push_back(s.smoothed_load_n);
+    }
     fig.series.push_back(curve);
-    peak_max = std::max(peak_max, r.peak_load_n);
+    fig.series.push_back(smooth);
+    peak_max = std::max(peak_max, r.raw_peak_load_n);
   }
   for (std::size_t k = 0; k < results.size(); ++k) {
     const ToughnessResult& r = results[k];
     const std::string label =
-        k == 0 ? fmt::format("peak {:.3g} N: K_IC = {:.3g} MPa sqrt(m) (a/W {:.2f}, W {:.3g} mm)", r.peak_load_n,
+        k == 0 ? fmt::format("peak (averaged) {:.3g} N: K_IC = {:.3g} MPa sqrt(m) (a/W {:.2f}, W {:.3g} mm)", r.peak_load_n,
                              units::pa_to_mpa(r.fracture_toughness_pa_sqrt_m), r.notch_m / r.depth_m, units::m_to_mm(r.depth_m))
                : std::string();
     fig.series.push_back({label, {units::m_to_um(r.deflection_at_peak_m)}, {r.peak_load_n}, {}, {}, SeriesStyle::points,

@@ -38,6 +38,10 @@ const FieldTable<ToughnessSpec>& toughness_fields() {
                    &T::stop_fraction),
       number_field("max_deflection_um", units::kUm, Range::positive(),
                    "stop anyway at this load-point deflection", &T::max_deflection_m),
+      number_field("peak_window_um", units::kUm, Range::positive(),
+                   "K_IC from the peak of the load averaged over this much deflection (centred moving average; the "
+                   "load on a rigid roller rings in an undamped glass)",
+                   &T::peak_window_m),
       number_field("youngs_modulus_GPa", units::kGPa, Range::positive(),
                    "E' of the 2D model for the check K_IC^2 / E' against G_c: the glass's calibrated in-plane E "
                    "(seed 000 Table 2 for the shipped glasses)",
@@ -165,7 +169,7 @@ ToughnessRun::ToughnessRun(const Simulation& specimen, const ToughnessSpec& spec
                          (spec.quasi_static_check ? " at the quasi-static check's half speed" : ""));
   counted_ = sim_.cracks().size();
   t0_ = sim_.time();
-  res_.curve.push_back({0, 0, 0, 0, 0, sim_.strain_energy(), sim_.kinetic_energy(), 0});
+  res_.curve.push_back({0, 0, 0, 0, 0, sim_.strain_energy(), sim_.kinetic_energy(), 0, 0});
 }
 
 double ToughnessRun::roller_force(const std::vector<int>& walls) const {
@@ -194,9 +198,9 @@ bool ToughnessRun::advance() {
   n_cracks_ = static_cast<int>(sim_.cracks().size() - counted_);
   const double elapsed = sim_.time() - t0_, deflection = v * elapsed, load = load_sum / spec_.sample_every_steps;
   res_.curve.push_back({elapsed, deflection, load, support_sum / spec_.sample_every_steps, work, sim_.strain_energy(),
-                        sim_.kinetic_energy(), n_cracks_});
-  if (load > res_.peak_load_n) res_.peak_load_n = load, res_.deflection_at_peak_m = deflection;
-  if (n_cracks_ > 0 && load < spec_.stop_fraction * res_.peak_load_n) {
+                        sim_.kinetic_energy(), n_cracks_, 0});
+  if (load > res_.raw_peak_load_n) res_.raw_peak_load_n = load;
+  if (n_cracks_ > 0 && load < spec_.stop_fraction * res_.raw_peak_load_n) {
     res_.stop_reason = "load fell below the stop fraction of the peak";
     finished_ = true;
   } else if (deflection >= spec_.max_deflection_m) {
@@ -211,7 +215,21 @@ bool ToughnessRun::advance() {
 
 void ToughnessRun::finish() {
   ToughnessResult& r = res_;
+  // The load averaged over peak_window_um of deflection about each sample (the samples within half the
+  // window either side; equal spacing in deflection), and its peak.
+  auto& c = r.curve;
+  const double half = 0.5 * spec_.peak_window_m;
+  std::size_t lo = 0, hi = 0;
+  double sum = 0;
+  for (std::size_t k = 0; k < c.size(); ++k) {
+    while (hi < c.size() && c[hi].deflection_m <= c[k].deflection_m + half) sum += c[hi++].load_n;
+    while (c[lo].deflection_m < c[k].deflection_m - half) sum -= c[lo++].load_n;
+    c[k].smoothed_load_n = sum / static_cast<double>(hi - lo);
+    if (c[k].smoothed_load_n > r.peak_load_n) r.peak_load_n = c[k].smoothed_load_n, r.deflection_at_peak_m = c[k].deflection_m;
+  }
   r.fracture_toughness_pa_sqrt_m = senb_stress_intensity(r.peak_load_n, r.span_m, r.thickness_m, r.depth_m, r.notch_m);
+  r.raw_peak_toughness_pa_sqrt_m =
+      senb_stress_intensity(r.raw_peak_load_n, r.span_m, r.thickness_m, r.depth_m, r.notch_m);
   const double ligament_area = r.thickness_m * (r.depth_m - r.notch_m);
   // The energy stored and moving at the end, less what the specimen held at the start (the genesis's
   // residual stresses): the rest of the load roller's work was dissipated (joints broken, friction).

@@ -41,11 +41,12 @@ std::pair<double, double> mean_and_sem(const std::vector<double>& v) {
 
 std::string curve_csv(const std::vector<std::pair<std::uint64_t, const ToughnessResult*>>& runs) {
   std::ostringstream out;
-  out << "seed,time_s,deflection_um,load_N,support_load_N,external_work_J,strain_energy_J,kinetic_energy_J,n_cracks\n";
+  out << "seed,time_s,deflection_um,load_N,smoothed_load_N,support_load_N,external_work_J,strain_energy_J,"
+         "kinetic_energy_J,n_cracks\n";
   for (const auto& [seed, r] : runs)
     for (const auto& s : r->curve)
-      out << fmt::format("{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{}\n", seed, s.time_s,
-                         units::m_to_um(s.deflection_m), s.load_n, s.support_load_n, s.external_work_j,
+      out << fmt::format("{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{}\n", seed, s.time_s,
+                         units::m_to_um(s.deflection_m), s.load_n, s.smoothed_load_n, s.support_load_n, s.external_work_j,
                          s.strain_energy_j, s.kinetic_energy_j, s.n_cracks);
   return out.str();
 }
@@ -56,6 +57,8 @@ Json result_json(const ToughnessResult& r) {
               {"work_of_fracture_J_per_m2", r.work_of_fracture_j_per_m2},
               {"irwin_energy_J_per_m2", r.irwin_energy_j_per_m2},
               {"peak_load_N", r.peak_load_n},
+              {"raw_peak_load_N", r.raw_peak_load_n},
+              {"raw_peak_toughness_MPa_sqrt_m", units::pa_to_mpa(r.raw_peak_toughness_pa_sqrt_m)},
               {"deflection_at_peak_um", units::m_to_um(r.deflection_at_peak_m)},
               {"external_work_J", r.external_work_j},
               {"n_cracks", r.curve.back().n_cracks},
@@ -143,6 +146,7 @@ class ToughnessKind final : public SceneKind {
              {"notch_over_depth", r0.notch_m / r0.depth_m},
              {"geometry_factor", senb_geometry_factor(r0.notch_m / r0.depth_m)},
              {"speed_m_per_s", spec_.speed_m_per_s},
+             {"peak_window_um", units::m_to_um(spec_.peak_window_m)},
              {"per_packing", per_packing}};
     if (packings > 1) {
       res["fracture_toughness_sem_MPa_sqrt_m"] = k_sem;

@@ -93,6 +93,9 @@ TEST_CASE("toughness: a small notched beam breaks through its ligament, in equil
   CHECK(r.fracture_energy_j_per_m2 > 0);
   CHECK(r.fracture_energy_j_per_m2 <= r.work_of_fracture_j_per_m2 * (1 + 1e-9));
   CHECK(r.fracture_toughness_pa_sqrt_m > 0);
+  // The averaged peak lies below the raw one (an average of samples), and K follows P.
+  CHECK(r.peak_load_n <= r.raw_peak_load_n);
+  CHECK_THAT(r.raw_peak_toughness_pa_sqrt_m / r.fracture_toughness_pa_sqrt_m, WithinRel(r.raw_peak_load_n / r.peak_load_n, 1e-12));
   CHECK_THAT(r.irwin_energy_j_per_m2,
              WithinRel(r.fracture_toughness_pa_sqrt_m * r.fracture_toughness_pa_sqrt_m / t.youngs_modulus_pa, 1e-12));
 }
