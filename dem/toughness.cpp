@@ -34,7 +34,8 @@ const FieldTable<ToughnessSpec>& toughness_fields() {
       number_field("speed_m_per_s", units::kSi("m/s"), Range{0.0, 10.0, true, false},
                    "speed of the load roller (the supports stand still)", &T::speed_m_per_s),
       number_field("stop_fraction_of_peak", units::kNone, Range::open(0.0, 1.0),
-                   "stop once the load has fallen below this fraction of the peak (the ligament broken through)",
+                   "stop once the load has stayed below this fraction of the peak over peak_window_um (the ligament broken "
+                   "through)",
                    &T::stop_fraction),
       number_field("max_deflection_um", units::kUm, Range::positive(),
                    "stop anyway at this load-point deflection", &T::max_deflection_m),
@@ -200,7 +201,14 @@ bool ToughnessRun::advance() {
   res_.curve.push_back({elapsed, deflection, load, support_sum / spec_.sample_every_steps, work, sim_.strain_energy(),
                         sim_.kinetic_energy(), n_cracks_, 0});
   if (load > res_.raw_peak_load_n) res_.raw_peak_load_n = load;
+  // Broken through: the load below the stop fraction over a whole peak window (a ringing load touches zero
+  // for a moment after a break, and a hexagonal lattice's ligament stood after three).
   if (n_cracks_ > 0 && load < spec_.stop_fraction * res_.raw_peak_load_n) {
+    if (low_since_m_ < 0) low_since_m_ = deflection;
+  } else {
+    low_since_m_ = -1;
+  }
+  if (low_since_m_ >= 0 && deflection - low_since_m_ >= spec_.peak_window_m) {
     res_.stop_reason = "load fell below the stop fraction of the peak";
     finished_ = true;
   } else if (deflection >= spec_.max_deflection_m) {

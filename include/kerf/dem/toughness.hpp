@@ -36,7 +36,7 @@ struct ToughnessSpec {
   double notch_depth_m = 0.2e-3;       ///< a, from the tension face
   double roller_radius_m = 0.05e-3;    ///< of the three rigid rollers
   double speed_m_per_s = 0.02;         ///< of the load roller (the supports stand still)
-  double stop_fraction = 0.05;         ///< stop once the load has fallen below this fraction of the peak
+  double stop_fraction = 0.05;         ///< stop once the load has stayed below this fraction of the peak over a peak window
   double max_deflection_m = 20e-6;     ///< stop anyway at this load-point deflection
   /// K_IC from the peak of the load averaged over this much deflection (a centred moving average): the load on
   /// a rigid roller rings in an undamped glass, by tens of per cent of the load in a W = 1 mm beam.
@@ -114,6 +114,7 @@ class ToughnessRun {
   ToughnessResult res_;
   std::vector<int> load_walls_, support_walls_;
   double t0_ = 0, load_prev_ = 0;
+  double low_since_m_ = -1;  ///< deflection since which the load has stayed below the stop fraction; -1: not
   std::size_t counted_ = 0;
   int n_cracks_ = 0;
   bool finished_ = false;
