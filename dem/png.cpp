@@ -144,8 +144,8 @@ void write_load_deflection_png(const std::filesystem::path& path, const std::vec
   for (std::size_t k = 0; k < results.size(); ++k) {
     const ToughnessResult& r = results[k];
     const std::string label =
-        k == 0 ? fmt::format("peak (averaged) {:.3g} N: K_IC = {:.3g} MPa sqrt(m) (a/W {:.2f}, W {:.3g} mm)", r.peak_load_n,
-                             units::pa_to_mpa(r.fracture_toughness_pa_sqrt_m), r.notch_m / r.depth_m, units::m_to_mm(r.depth_m))
+        k == 0 ? fmt::format("averaged peak {:.3g} N: K_IC {:.3g} MPa sqrt(m)", r.peak_load_n,
+                             units::pa_to_mpa(r.fracture_toughness_pa_sqrt_m))
                : std::string();
     fig.series.push_back({label, {units::m_to_um(r.deflection_at_peak_m)}, {r.peak_load_n}, {}, {}, SeriesStyle::points,
                           static_cast<int>(k % 6), 3});

@@ -158,6 +158,10 @@ ToughnessRun::ToughnessRun(const Simulation& specimen, const ToughnessSpec& spec
   sim_.invalidate_neighbours();
   sim_.initialise();
   res_.n_particles = n;
+  // Broken through once a crack within W/2 of the notch's line lies within two disk diameters of the loaded
+  // face (the crack has crossed the ligament).
+  through_y_m_ = y_max - 4 * r_max;
+  crack_band_m_ = 0.5 * w;
   res_.time_step_s = sim_.time_step();
   const double slowest = spec.quasi_static_check ? 0.5 * v : v;
   const double steps = spec.max_deflection_m / (slowest * res_.time_step_s);
@@ -196,11 +200,17 @@ bool ToughnessRun::advance() {
     support_sum -= roller_force(support_walls_);
   }
   res_.external_work_j = work;
+  for (std::size_t k = counted_ + static_cast<std::size_t>(n_cracks_); k < sim_.cracks().size(); ++k) {
+    const CrackEvent& e = sim_.cracks()[k];
+    if (std::abs(e.x_m - res_.notch_x_m) < crack_band_m_) res_.crack_tip_y_m = std::max(res_.crack_tip_y_m, e.y_m);
+  }
   n_cracks_ = static_cast<int>(sim_.cracks().size() - counted_);
   const double elapsed = sim_.time() - t0_, deflection = v * elapsed, load = load_sum / spec_.sample_every_steps;
   res_.curve.push_back({elapsed, deflection, load, support_sum / spec_.sample_every_steps, work, sim_.strain_energy(),
                         sim_.kinetic_energy(), n_cracks_, 0});
   if (load > res_.raw_peak_load_n) res_.raw_peak_load_n = load;
+  if (res_.through_sample < 0 && res_.crack_tip_y_m >= through_y_m_)
+    res_.through_sample = static_cast<int>(res_.curve.size()) - 1;
   // Broken through: the load below the stop fraction over a whole peak window (a ringing load touches zero
   // for a moment after a break, and a hexagonal lattice's ligament stood after three).
   if (n_cracks_ > 0 && load < spec_.stop_fraction * res_.raw_peak_load_n) {
@@ -241,10 +251,13 @@ void ToughnessRun::finish() {
   const double ligament_area = r.thickness_m * (r.depth_m - r.notch_m);
   // The energy stored and moving at the end, less what the specimen held at the start (the genesis's
   // residual stresses): the rest of the load roller's work was dissipated (joints broken, friction).
-  const ToughnessSample &start = r.curve.front(), &end = r.curve.back();
+  // At the sample the crack broke through the ligament (the end when it did not): later work goes into the
+  // hinge the broken halves make under the load roller (friction, contacts), not into the crack.
+  const ToughnessSample &start = r.curve.front(),
+                        &end = r.through_sample >= 0 ? r.curve[static_cast<std::size_t>(r.through_sample)] : r.curve.back();
   const double kept = end.strain_energy_j - start.strain_energy_j + end.kinetic_energy_j - start.kinetic_energy_j;
-  r.fracture_energy_j_per_m2 = (r.external_work_j - kept) / ligament_area;
-  r.work_of_fracture_j_per_m2 = r.external_work_j / ligament_area;
+  r.fracture_energy_j_per_m2 = (end.external_work_j - kept) / ligament_area;
+  r.work_of_fracture_j_per_m2 = end.external_work_j / ligament_area;
   r.irwin_energy_j_per_m2 = r.fracture_toughness_pa_sqrt_m * r.fracture_toughness_pa_sqrt_m / spec_.youngs_modulus_pa;
 }
 

@@ -61,6 +61,9 @@ Json result_json(const ToughnessResult& r) {
               {"raw_peak_toughness_MPa_sqrt_m", units::pa_to_mpa(r.raw_peak_toughness_pa_sqrt_m)},
               {"deflection_at_peak_um", units::m_to_um(r.deflection_at_peak_m)},
               {"external_work_J", r.external_work_j},
+              {"broken_through", r.through_sample >= 0},
+              {"deflection_broken_through_um",
+               r.through_sample >= 0 ? units::m_to_um(r.curve[static_cast<std::size_t>(r.through_sample)].deflection_m) : 0.0},
               {"n_cracks", r.curve.back().n_cracks},
               {"n_notch_disks_removed", r.n_notch_disks},
               {"n_notch_joints_retired", r.n_notch_joints_retired},
@@ -165,8 +168,9 @@ class ToughnessKind final : public SceneKind {
     write_file_atomically(out / "curve.csv", curve_csv(runs));
     write_file_atomically(out / "cracks.csv", cracks_csv(first_final->cracks()));
     write_load_deflection_png(out / "curve.png", results,
-                              packings > 1 ? fmt::format("toughness (SENB): load-deflection, {} packings", packings)
-                                           : std::string("toughness (SENB): load-deflection"));
+                              fmt::format("toughness (SENB, W {:.3g} mm, a/W {:.2f}): load-deflection{}",
+                                          units::m_to_mm(r0.depth_m), r0.notch_m / r0.depth_m,
+                                          packings > 1 ? fmt::format(", {} packings", packings) : std::string()));
     write_specimen_png(out / "specimen.png", *first_final, "toughness (SENB), final state");
     // The crack's neighbourhood: W either side of the notch, the whole depth.
     const double xc = r0.notch_x_m;

@@ -88,6 +88,10 @@ TEST_CASE("toughness: a small notched beam breaks through its ligament, in equil
     if (std::abs(c.x_m - r.notch_x_m) < 0.5 * r.depth_m) ++near, y_top = std::max(y_top, c.y_m);
   }
   CHECK(y_top > y_min + 0.8 * r.depth_m);
+  // The books stop where the crack has crossed the ligament, before the end.
+  REQUIRE(r.through_sample > 0);
+  CHECK(static_cast<std::size_t>(r.through_sample) < r.curve.size());
+  CHECK(r.curve[static_cast<std::size_t>(r.through_sample)].deflection_m >= r.deflection_at_peak_m);
   CHECK(near > 0.8 * all);
   // Energy: what the load did is at least what it dissipated, which is positive; K from the peak is positive.
   CHECK(r.fracture_energy_j_per_m2 > 0);

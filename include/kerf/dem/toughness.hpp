@@ -8,7 +8,11 @@
 //   K_IC = P_max S / (B W^1.5) f(a/W)                         (Srawley 1976, Eq. 2; ASTM E399 A3.5.3)
 //   G_c  = (W_ext - dU - dK) / (B (W - a))                   (energy books: the work the load roller did,
 //                                                             less the change of what is stored and moving,
-//                                                             per unit of new crack area)
+//                                                             per unit of new crack area, from the start to
+//                                                             the sample the crack has crossed the ligament:
+//                                                             a crack within two disk diameters of the loaded
+//                                                             face; later work goes into the hinge of the
+//                                                             broken halves)
 // and the work of fracture W_ext / (B (W - a)) (the load-deflection curve alone, all stored energy taken as
 // released). Irwin's relation compares them: G = K^2 / E' (E' = E of the 2D model's in-plane response).
 //
@@ -85,8 +89,10 @@ struct ToughnessResult {
   double fracture_toughness_pa_sqrt_m = 0;   ///< K_IC from the peak of the smoothed load
   double raw_peak_toughness_pa_sqrt_m = 0;   ///< K from the raw peak (ringing included), for comparison
   double external_work_j = 0;                ///< W_ext, the load roller's work to the end
-  double fracture_energy_j_per_m2 = 0;       ///< G_c: (W_ext - dU - dK) / (B (W - a)), start to end
-  double work_of_fracture_j_per_m2 = 0;      ///< W_ext / (B (W - a))
+  double fracture_energy_j_per_m2 = 0;       ///< G_c: (W_ext - dU - dK) / (B (W - a)), start to broken through
+  double crack_tip_y_m = -1e300;             ///< highest crack within W/2 of the notch's line
+  int through_sample = -1;                   ///< the sample at which the crack had crossed the ligament; -1: never
+  double work_of_fracture_j_per_m2 = 0;      ///< W_ext / (B (W - a)), to broken through
   double irwin_energy_j_per_m2 = 0;          ///< K_IC^2 / E'
   double speed_m_per_s = 0, time_step_s = 0, wall_time_s = 0;
   std::int64_t steps = 0;
@@ -114,7 +120,8 @@ class ToughnessRun {
   ToughnessResult res_;
   std::vector<int> load_walls_, support_walls_;
   double t0_ = 0, load_prev_ = 0;
-  double low_since_m_ = -1;  ///< deflection since which the load has stayed below the stop fraction; -1: not
+  double low_since_m_ = -1;
+  double through_y_m_ = 0, crack_band_m_ = 0;  ///< where a crack counts as through the ligament  ///< deflection since which the load has stayed below the stop fraction; -1: not
   std::size_t counted_ = 0;
   int n_cracks_ = 0;
   bool finished_ = false;
