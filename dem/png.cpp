@@ -147,8 +147,9 @@ void write_load_deflection_png(const std::filesystem::path& path, const std::vec
         k == 0 ? fmt::format("averaged peak {:.3g} N: K_IC {:.3g} MPa sqrt(m)", r.peak_load_n,
                              units::pa_to_mpa(r.fracture_toughness_pa_sqrt_m))
                : std::string();
+    // One packing: the peak in red, to stand out of its own curve.
     fig.series.push_back({label, {units::m_to_um(r.deflection_at_peak_m)}, {r.peak_load_n}, {}, {}, SeriesStyle::points,
-                          static_cast<int>(k % 6), 3});
+                          results.size() == 1 ? 3 : static_cast<int>(k % 6), 3});
   }
   fig.x_min = 0;
   fig.y_min = 0;

@@ -168,7 +168,7 @@ class ToughnessKind final : public SceneKind {
     write_file_atomically(out / "curve.csv", curve_csv(runs));
     write_file_atomically(out / "cracks.csv", cracks_csv(first_final->cracks()));
     write_load_deflection_png(out / "curve.png", results,
-                              fmt::format("toughness (SENB, W {:.3g} mm, a/W {:.2f}): load-deflection{}",
+                              fmt::format("toughness: SENB, W {:.3g} mm, a/W {:.2f}{}",
                                           units::m_to_mm(r0.depth_m), r0.notch_m / r0.depth_m,
                                           packings > 1 ? fmt::format(", {} packings", packings) : std::string()));
     write_specimen_png(out / "specimen.png", *first_final, "toughness (SENB), final state");

@@ -10,9 +10,9 @@
 //                                                             less the change of what is stored and moving,
 //                                                             per unit of new crack area, from the start to
 //                                                             the sample the crack has crossed the ligament:
-//                                                             a crack within two disk diameters of the loaded
-//                                                             face; later work goes into the hinge of the
-//                                                             broken halves)
+//                                                             a crack within 0.1 W or two disk diameters of
+//                                                             the loaded face; later work goes into the hinge
+//                                                             of the broken halves)
 // and the work of fracture W_ext / (B (W - a)) (the load-deflection curve alone, all stored energy taken as
 // released). Irwin's relation compares them: G = K^2 / E' (E' = E of the 2D model's in-plane response).
 //
