@@ -125,4 +125,42 @@ void write_stress_strain_png(const std::filesystem::path& path, const LabTestRes
   render_png(fig, path);
 }
 
+void write_load_deflection_png(const std::filesystem::path& path, const std::vector<ToughnessResult>& results,
+                               const std::string& title) {
+  FigureSpec fig;
+  fig.title = title;
+  fig.x_label = "load-point deflection (um)";
+  fig.y_label = results.empty() ? "load (N)" : fmt::format("load per {:g} mm thickness (N)", units::m_to_mm(results[0].thickness_m));
+  double peak_max = 0;
+  for (std::size_t k = 0; k < results.size(); ++k) {
+    const ToughnessResult& r = results[k];
+    PlotSeries curve{k == 0 ? std::string("load on the load roller") : std::string(), {}, {}, {}, {}, SeriesStyle::line,
+                     static_cast<int>(k % 6), 0};
+    PlotSeries smooth{k == 0 ? std::string("averaged over the peak window") : std::string(), {}, {}, {}, {},
+                      SeriesStyle::dashed_line, static_cast<int>(k % 6), 0};
+    for (const auto& s : r.curve) {
+      curve.x.push_back(units::m_to_um(s.deflection_m)), curve.y.push_back(s.load_n);
+      smooth.x.push_back(units::m_to_um(s.deflection_m)), smooth.y.push_back(s.smoothed_load_n);
+    }
+    fig.series.push_back(curve);
+    fig.series.push_back(smooth);
+    peak_max = std::max(peak_max, r.raw_peak_load_n);
+  }
+  for (std::size_t k = 0; k < results.size(); ++k) {
+    const ToughnessResult& r = results[k];
+    const std::string label =
+        k == 0 ? fmt::format("averaged peak {:.3g} N: K_IC {:.3g} MPa sqrt(m)", r.peak_load_n,
+                             units::pa_to_mpa(r.fracture_toughness_pa_sqrt_m))
+               : std::string();
+    // One packing: the peak in red, to stand out of its own curve.
+    fig.series.push_back({label, {units::m_to_um(r.deflection_at_peak_m)}, {r.peak_load_n}, {}, {}, SeriesStyle::points,
+                          results.size() == 1 ? 3 : static_cast<int>(k % 6), 3});
+  }
+  fig.x_min = 0;
+  fig.y_min = 0;
+  fig.y_max = 1.4 * peak_max;  // room for the legend above the curves
+  fig.legend_position = "top_left";
+  render_png(fig, path);
+}
+
 }  // namespace kerf::dem

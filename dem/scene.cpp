@@ -20,7 +20,7 @@ const FieldTable<OutputSpec>& output_fields() {
 void SceneKind::check_options(const RunOptions& options, const SceneCommon&) const {
   if (options.replicates > 1)
     throw InputError("--replicates", std::to_string(options.replicates),
-                     "replicates only for cut scenes (calibrate_cut: calibration.replicates)");
+                     "replicates only for cut and toughness scenes (calibrate_cut: calibration.replicates)");
 }
 
 SceneOutcome SceneKind::resume(const SceneCommon&, const SceneRun&, const Checkpoint&) {

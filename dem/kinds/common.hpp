@@ -130,6 +130,7 @@ std::unique_ptr<SceneKind> make_compression_kind();
 std::unique_ptr<SceneKind> make_calibrate_kind();
 std::unique_ptr<SceneKind> make_cut_kind();
 std::unique_ptr<SceneKind> make_calibrate_cut_kind();
+std::unique_ptr<SceneKind> make_toughness_kind();
 /// Test-only (KERF_DEM_TEST_KINDS=1): kind "synthetic", a result of known distribution (dem/kinds/synthetic.cpp).
 std::unique_ptr<SceneKind> make_synthetic_kind();
 

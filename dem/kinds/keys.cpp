@@ -8,6 +8,7 @@
 #include "kerf/dem/lab_test.hpp"
 #include "kerf/dem/material.hpp"
 #include "kerf/dem/study.hpp"
+#include "kerf/dem/toughness.hpp"
 #include "kerf/error.hpp"
 
 namespace kerf::dem {
@@ -35,6 +36,7 @@ const std::vector<SectionKeys>& sections() {
       {"calibration", "calibrate", kinds::calibrate_keys_markdown},
       {"calibration.targets", "calibrate", kinds::calibrate_targets_keys_markdown},
       {"calibration", "calibrate_cut", kinds::calibrate_cut_keys_markdown},
+      {"toughness", "toughness: the notched beam in three-point bending", [] { return fields_markdown(toughness_fields()); }},
       {"output", "every kind", [] { return fields_markdown(output_fields()); }},
       {"study", "a study file of `kerf-dem study`, not a scene", study_keys_markdown},
       {"study.replicates", "a study file: the packings per condition", study_replicates_keys_markdown}};

@@ -11,13 +11,14 @@ namespace kerf::dem {
 
 namespace {
 using Factory = std::unique_ptr<SceneKind> (*)();
-constexpr std::array<std::pair<std::string_view, Factory>, 6> kKinds{{
+constexpr std::array<std::pair<std::string_view, Factory>, 7> kKinds{{
     {"specimen", kinds::make_specimen_kind},
     {"tension", kinds::make_tension_kind},
     {"compression", kinds::make_compression_kind},
     {"calibrate", kinds::make_calibrate_kind},
     {"cut", kinds::make_cut_kind},
     {"calibrate_cut", kinds::make_calibrate_cut_kind},
+    {"toughness", kinds::make_toughness_kind},
 }};
 }  // namespace
 

@@ -10,7 +10,7 @@ forces="$1/kerf-forces"
 "$bin" keys >"$work/keys.md" || fail "kerf-dem keys failed"
 sed -n '/<!-- kerf-dem keys: begin -->/,/<!-- kerf-dem keys: end -->/p' "$src/docs/dem.md" | sed '1d;$d' >"$work/doc.md"
 diff -u "$work/doc.md" "$work/keys.md" >"$work/diff" || fail "docs/dem.md's key tables differ from kerf-dem keys: $(head -20 "$work/diff")"
-for section in material specimen engine loading cut tool grooves calibration calibration.targets output study study.replicates; do
+for section in material specimen engine loading cut tool grooves calibration calibration.targets toughness output study study.replicates; do
   grep -q "^#### \`$section\`" "$work/keys.md" || fail "no key table for $section"
 done
 "$bin" keys cut | grep -q '`depth_of_cut_mm` | mm |' || fail "keys cut: no depth_of_cut_mm row"
@@ -34,7 +34,7 @@ grep -q "^kerf-forces: error: " "$work/err" || fail "kerf-forces parse error pre
 echo '{"kind": "cutt"}' >"$work/bad.json"
 "$bin" run "$work/bad.json" --out "$work/out" >/dev/null 2>"$work/err"
 [ $? -eq 2 ] || fail "unknown kind: expected exit 2"
-grep -q "^kerf-dem: error: kind = cutt: expected one of 'specimen', 'tension', 'compression', 'calibrate', 'cut', 'calibrate_cut' (did you mean 'cut'?)" "$work/err" ||
+grep -q "^kerf-dem: error: kind = cutt: expected one of 'specimen', 'tension', 'compression', 'calibrate', 'cut', 'calibrate_cut', 'toughness' (did you mean 'cut'?)" "$work/err" ||
   fail "unknown kind: $(cat "$work/err")"
 "$forces" predict "$work/bad.json" >/dev/null 2>"$work/err"
 [ $? -eq 2 ] || fail "kerf-forces input error: expected exit 2"

@@ -41,11 +41,12 @@ void check_same_json(const Json& a, const Json& b) {
 
 TEST_CASE("scene: the registry constructs every registered kind, an unknown kind lists the valid ones", "[scene]") {
   const std::vector<std::string> names = scene_kind_names();
-  CHECK(names == std::vector<std::string>{"specimen", "tension", "compression", "calibrate", "cut", "calibrate_cut"});
+  CHECK(names == std::vector<std::string>{"specimen", "tension", "compression", "calibrate", "cut", "calibrate_cut",
+                                             "toughness"});
   for (const auto& name : names) CHECK(make_scene_kind(name) != nullptr);
   CHECK_THROWS_WITH(make_scene_kind("cutt"),
                     "kind = cutt: expected one of 'specimen', 'tension', 'compression', 'calibrate', 'cut', "
-                    "'calibrate_cut' (did you mean 'cut'?)");
+                    "'calibrate_cut', 'toughness' (did you mean 'cut'?)");
   CHECK_THROWS_WITH(read_scene(Json{{"kind", "tensoin"}}, "."), Catch::Contains("kind = tensoin") &&
                                                                    Catch::Contains("did you mean 'tension'?"));
 }

@@ -6,6 +6,7 @@
 //   write_specimen_png("out/specimen.png", sim, "compression, final state");
 //   write_cut_forces_png("out/forces.png", cut_result);   // force against tool travel, the means
 //   write_stress_strain_png("out/curve.png", test_result, "compression");
+//   write_load_deflection_png("out/curve.png", {toughness_result}, "toughness");  // SENB load against deflection
 #include <array>
 #include <filesystem>
 #include <optional>
@@ -14,6 +15,7 @@
 #include "kerf/dem/cutting.hpp"
 #include "kerf/dem/lab_test.hpp"
 #include "kerf/dem/simulation.hpp"
+#include "kerf/dem/toughness.hpp"
 
 namespace kerf::dem {
 
@@ -29,5 +31,10 @@ void write_cut_forces_png(const std::filesystem::path& path, const CutResult& re
 /// A tension or compression test's stress against axial strain (curve.csv), with the secant E over its fit
 /// range (0 to 50 % of the peak) and the peak marked.
 void write_stress_strain_png(const std::filesystem::path& path, const LabTestResult& result, const std::string& title);
+
+/// Fracture-toughness tests' load against load-point deflection (curve.csv), one line per packing, each peak
+/// marked (the first packing's labelled with K_IC).
+void write_load_deflection_png(const std::filesystem::path& path, const std::vector<ToughnessResult>& results,
+                               const std::string& title);
 
 }  // namespace kerf::dem
