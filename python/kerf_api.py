@@ -58,6 +58,8 @@ def compare(scene, experiments, /, *, map=None, fit=False, pool=False, measured_
     'rows' (per CSV row its regime, and 'guards' and 'warnings' lists); with out (a directory) the report
     (report.md, CSV, JSON, plots) is written there and 'files' lists it. A CSV none of whose columns sets a
     condition raises InputError unless pool=True (every row a measurement at the scene's own condition).
+    fit=True first fits the trepanning model's lumped groups to the measured rows (kerf-forces compare --fit);
+    measured_width_mm: the width the measured forces act over (--measured-width-mm).
     """
     return _compare(scene, experiments, {} if map is None else map, fit, pool, measured_width_mm, out,
                     **overrides)
@@ -91,7 +93,9 @@ def _run(scene, /, *, out, threads=None, replicates=1, checkpoint_every=0, progr
 
     Returns a dict: 'exit_status', 'summary' (summary.json as a dict), 'out', and 'forces', 'cracks', 'curve':
     the CSV files of the run as dicts of numpy arrays, None for a table the kind does not write (a cut writes no
-    curve, a lab test no forces). threads sets OpenMP's threads for the run (restored after it).
+    curve, a lab test no forces). threads sets OpenMP's threads for the run (restored after it); replicates
+    runs that many packings (kerf-dem run --replicates); checkpoint_every writes a checkpoint every that many
+    samples (0: none).
     progress(stage, done, total, unit), if given, is called as the run advances: stage a str ('specimen
     genesis', 'cut', ...), done and total ints in unit ('steps' or 'particle-steps'); every stage ends at
     done == total. An exception it raises stops the run and reaches the caller.
@@ -148,6 +152,8 @@ def _read_vtp(path):
 
 def _read_frames(directory):
     """The VTK frames of a kerf-dem run: its .pvd series (result.pvd) read into numpy arrays, no VTK needed.
+
+    directory: the run's output directory (or one .pvd file).
 
     Returns a list, one dict per time step in time order: 'time_s' (float) and, per part the run wrote,
     'particles', 'walls', 'cracks' (each a dict of numpy arrays named as in the files: 'position_mm' (n, 3),

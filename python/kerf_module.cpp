@@ -97,12 +97,14 @@ py::dict columns_dict(const kerf::Columns& columns) {
   return row;
 }
 
-/// Columns as numpy arrays: float64 where every cell is a number or empty (NaN), an object array otherwise.
-py::dict column_arrays(const std::vector<std::string>& names, const std::vector<std::vector<py::object>>& columns) {
+/// Columns as numpy arrays: float64 where every cell is a number or empty (NaN), an object array otherwise
+/// and for the `text` columns (an object array of None where every cell is empty: e.g. no point's error).
+py::dict column_arrays(const std::vector<std::string>& names, const std::vector<std::vector<py::object>>& columns,
+                       const std::vector<std::string>& text = {}) {
   py::module_ numpy = py::module_::import("numpy");
   py::dict out;
   for (std::size_t c = 0; c < names.size(); ++c) {
-    bool numeric = true;
+    bool numeric = std::find(text.begin(), text.end(), names[c]) == text.end();
     for (const auto& cell : columns[c]) numeric = numeric && (cell.is_none() || py::isinstance<py::float_>(cell));
     if (numeric) {
       py::array_t<double> array(static_cast<py::ssize_t>(columns[c].size()));
@@ -225,7 +227,7 @@ py::dict sweep(const py::object& scene, const py::dict& vary, const py::kwargs& 
     }
     columns.back().push_back(error.empty() ? py::object(py::none()) : py::object(py::str(error)));
   }
-  return column_arrays(header, columns);
+  return column_arrays(header, columns, {"error"});
 }
 
 py::list materials() {
