@@ -352,7 +352,8 @@ void plot_sweep(const std::string& path, const std::string& scene_path, const Js
   std::string material;
   try {
     const auto& record = materials.get(base.at("material"), "material");
-    material = record.title.empty() || record.title == record.name ? record.name : record.title;
+    // The title, where it fits the figure's width beside the scene's file name; else the library name.
+    material = record.title.empty() || record.title.size() > 40 ? record.name : record.title;
   } catch (const std::exception&) {
     material = "material?";  // the scene's own errors are the sweep's to report, not the figure's
   }
