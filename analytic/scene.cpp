@@ -115,10 +115,19 @@ void parse_friction(ObjectReader& cut, ObjectReader& root, AnalyticScene& scene)
 
 }  // namespace
 
+void refuse_dem_scene(const Json& document) {
+  if (!document.is_object() || !document.contains("kind")) return;
+  const Json& kind = document["kind"];
+  throw InputError("kind", json_value_text(kind),
+                   fmt::format("no kind in a kerf-forces scene: this is a kerf-dem scene (kind: {}); run it with "
+                               "kerf-dem run",
+                               json_value_text(kind)));
+}
+
 AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
+  refuse_dem_scene(document);
   ObjectReader root(document, "");
   root.ignore("description");
-  root.ignore("kind");
   AnalyticScene scene;
 
   const Json& material_spec = root.get("material");

@@ -1,11 +1,13 @@
 #include "kerf/analytic/trepanning_scene.hpp"
 
+#include "kerf/analytic/scene.hpp"
 #include "kerf/error.hpp"
 #include "kerf/units.hpp"
 
 namespace kerf {
 
 TrepanningScene parse_trepanning_scene(const Json& document) {
+  refuse_dem_scene(document);
   ObjectReader root(document, "");
   root.ignore("description");
   TrepanningScene scene;

@@ -24,7 +24,7 @@ Material read_material(const Json& object, const std::string& path) {
   if (auto it = object.find("base"); it != object.end()) {
     // A library material (data/materials/, shared with the analytic models): its "dem" group holds the
     // micro-parameters; the scene's other keys override them.
-    const MaterialRecord record = load_material(*it, path + ".base");
+    const MaterialRecord record = load_material(*it, path + ".base", "dem");
     Json base = record.require_group("dem", path + ".base", "the DEM (flat-joint micro-parameters)");
     for (auto& [key, value] : object.items())
       if (key != "base") base[key] = value;

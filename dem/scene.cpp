@@ -30,6 +30,12 @@ SceneOutcome SceneKind::resume(const SceneCommon&, const SceneRun&, const Checkp
 Scene read_scene(const Json& doc, const fs::path& scene_dir) {
   ObjectReader root(doc, "");
   Scene s;
+  if (!root.has("kind") && doc.contains("models") && doc.contains("cut")) {
+    // A scene of the analytic models (no kind, a "models" section): the other program's.
+    throw InputError("kind", "(missing)",
+                     "one of the kerf-dem kinds: this is a kerf-forces scene (analytic models, no kind); run it with "
+                     "kerf-forces predict");
+  }
   s.kind_name = root.get_string("kind");
   s.kind = make_scene_kind(s.kind_name, root.key_path("kind"));
   root.ignore("description");

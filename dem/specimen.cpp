@@ -55,7 +55,9 @@ void check_specimen_relations(const SpecimenSpec& s) {
   using namespace units;
   if (s.radius_max_m < s.radius_min_m)
     throw InputError("radius_max_um", format_value(m_to_um(s.radius_max_m)),
-                     "a value >= radius_min_um = " + format_value(m_to_um(s.radius_min_m)) + " um");
+                     "a value >= radius_min_um = " + format_value(m_to_um(s.radius_min_m)) + " um")
+        .or_from(InputError("radius_min_um", format_value(m_to_um(s.radius_min_m)),
+                            "a value <= radius_max_um = " + format_value(m_to_um(s.radius_max_m)) + " um"));
   if (2 * s.radius_max_m * 4 > std::min(s.width_m, s.height_m))
     throw InputError("radius_max_um", format_value(m_to_um(s.radius_max_m)),
                      "at most 1/8 of the specimen's smaller side in um");

@@ -237,7 +237,7 @@ StudySpec read_study(const Json& doc, const fs::path& study_file) {
     s.seeded = !base.common.specimen_file.has_value();
     s.base_seed = base.common.specimen.seed;
   } catch (const InputError& e) {
-    throw InputError("scene." + e.field(), e.value(), e.expected());
+    throw e.with_prefix("scene");
   }
   const int most = s.replicates.policy == ReplicatePolicy::fixed ? s.replicates.count : s.replicates.max_count;
   if (!s.seeded && most > 1)

@@ -11,16 +11,21 @@
 // value is any JSON-able Python value. kerf.InputError (a ValueError with .field, .value, .expected) and
 // kerf.ModelError (a RuntimeError) carry the library's errors.
 #include <omp.h>
+#include <pybind11/eval.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "kerf/analytic/evaluate.hpp"
+#include "kerf/analytic/predict.hpp"
+#include "kerf/analytic/scene.hpp"
 #include "kerf/analytic/registry.hpp"
 #include "kerf/analytic/scene_compare.hpp"
 #include "kerf/csv_table.hpp"
@@ -30,6 +35,7 @@
 #include "kerf/material.hpp"
 #include "kerf/report.hpp"
 #include "kerf/version.hpp"
+#include "kerf_api.hpp"  // python/kerf_api.py as text (python/CMakeLists.txt)
 
 namespace py = pybind11;
 
@@ -91,12 +97,14 @@ py::dict columns_dict(const kerf::Columns& columns) {
   return row;
 }
 
-/// Columns as numpy arrays: float64 where every cell is a number or empty (NaN), an object array otherwise.
-py::dict column_arrays(const std::vector<std::string>& names, const std::vector<std::vector<py::object>>& columns) {
+/// Columns as numpy arrays: float64 where every cell is a number or empty (NaN), an object array otherwise
+/// and for the `text` columns (an object array of None where every cell is empty: e.g. no point's error).
+py::dict column_arrays(const std::vector<std::string>& names, const std::vector<std::vector<py::object>>& columns,
+                       const std::vector<std::string>& text = {}) {
   py::module_ numpy = py::module_::import("numpy");
   py::dict out;
   for (std::size_t c = 0; c < names.size(); ++c) {
-    bool numeric = true;
+    bool numeric = std::find(text.begin(), text.end(), names[c]) == text.end();
     for (const auto& cell : columns[c]) numeric = numeric && (cell.is_none() || py::isinstance<py::float_>(cell));
     if (numeric) {
       py::array_t<double> array(static_cast<py::ssize_t>(columns[c].size()));
@@ -107,9 +115,11 @@ py::dict column_arrays(const std::vector<std::string>& names, const std::vector<
       }
       out[py::str(names[c])] = array;
     } else {
-      py::list cells;
-      for (const auto& cell : columns[c]) cells.append(cell.is_none() ? py::object(py::str("")) : cell);
-      out[py::str(names[c])] = numpy.attr("array")(cells, py::arg("dtype") = "object");
+      // An object array filled cell by cell: a cell may be a list (guards, warnings), which numpy.array would
+      // turn into a dimension; an absent value is None.
+      py::object cells = numpy.attr("empty")(columns[c].size(), py::arg("dtype") = "object");
+      for (std::size_t i = 0; i < columns[c].size(); ++i) cells[py::int_(i)] = columns[c][i];
+      out[py::str(names[c])] = cells;
     }
   }
   return out;
@@ -123,20 +133,35 @@ py::dict table_arrays(const kerf::CsvTable& table) {
   return column_arrays(table.header, columns);
 }
 
-/// A pandas DataFrame of the columns when pandas is installed, else the dict of arrays.
-py::object frame_or_dict(const py::dict& columns) {
-  try {
-    return py::module_::import("pandas").attr("DataFrame")(columns);
-  } catch (const py::error_already_set& e) {
-    if (!e.matches(PyExc_ImportError)) throw;
-    return columns;
+py::list string_list(const std::vector<std::string>& items) {
+  py::list out;
+  for (const auto& item : items) out.append(py::str(item));
+  return out;
+}
+
+/// One scene's prediction as Python: the CSV row's columns (floats, str, None), with 'guards' and 'warnings'
+/// as lists of str (the prediction's own, not the CSV's joined text, whose warnings may hold "; ").
+py::dict evaluate_row(const Json& document, kerf::MaterialCache* cache) {
+  if (kerf::is_trepanning_scene(document)) {
+    py::dict row = columns_dict(kerf::evaluate_scene_columns(document, cache));
+    row["guards"] = py::list();
+    row["warnings"] = py::list();
+    return row;
   }
+  const kerf::AnalyticScene scene = kerf::parse_analytic_scene(document, cache);
+  const kerf::Prediction p = kerf::predict(scene);
+  py::dict row = columns_dict(kerf::prediction_columns(scene, p));
+  std::vector<std::string> guards;
+  for (auto guard : p.guards.fired()) guards.emplace_back(kerf::guard_name(guard));
+  row["guards"] = string_list(guards);
+  row["warnings"] = string_list(p.warnings);
+  return row;
 }
 
 py::dict predict(const py::object& scene, const py::kwargs& overrides) {
   const SceneInput input = scene_input(scene, overrides);
   kerf::MaterialCache cache;
-  return columns_dict(kerf::evaluate_scene_columns(input.document, &cache));
+  return evaluate_row(input.document, &cache);
 }
 
 /// The values of one axis: a sequence of numbers (or of any JSON values).
@@ -150,7 +175,7 @@ std::vector<py::object> axis_values(const std::string& key, const py::handle& va
   return out;
 }
 
-py::object sweep(const py::object& scene, const py::dict& vary, bool as_frame, const py::kwargs& overrides) {
+py::dict sweep(const py::object& scene, const py::dict& vary, const py::kwargs& overrides) {
   const SceneInput input = scene_input(scene, overrides);
   std::vector<std::string> keys;
   std::vector<std::vector<py::object>> axes;
@@ -167,6 +192,8 @@ py::object sweep(const py::object& scene, const py::dict& vary, bool as_frame, c
     kerf::check_varied_key(input.document, keys[a] + "=" + json_dumps(axes[a][0]), "vary", &cache);
   std::vector<std::string> header = keys;
   header.insert(header.end(), names.begin(), names.end());
+  for (const char* listed : {"guards", "warnings"})  // every row has them (evaluate_row), trepanning's too
+    if (std::find(header.begin(), header.end(), listed) == header.end()) header.emplace_back(listed);
   header.push_back("error");
   std::vector<std::vector<py::object>> columns(header.size());
   for (std::size_t i = 0; i < n_points; ++i) {
@@ -183,7 +210,7 @@ py::object sweep(const py::object& scene, const py::dict& vary, bool as_frame, c
       for (std::size_t a = 0; a < axes.size(); ++a) {
         kerf::apply_override(document, keys[a] + "=" + json_dumps(x[a]), "vary");
       }
-      row = columns_dict(kerf::evaluate_scene_columns(document, &cache));
+      row = evaluate_row(document, &cache);
     } catch (const kerf::InputError& e) {
       error = e.what();
     } catch (const kerf::ModelError& e) {
@@ -192,14 +219,15 @@ py::object sweep(const py::object& scene, const py::dict& vary, bool as_frame, c
     for (std::size_t a = 0; a < axes.size(); ++a) {
       columns[a].push_back(py::isinstance<py::int_>(x[a]) ? py::float_(x[a].cast<double>()) : x[a]);
     }
-    for (std::size_t c = 0; c < names.size(); ++c) {
-      columns[keys.size() + c].push_back(row.contains(names[c]) ? py::reinterpret_borrow<py::object>(row[py::str(names[c])])
-                                                                 : py::object(py::none()));
+    for (std::size_t c = keys.size(); c + 1 < header.size(); ++c) {
+      const bool listed = header[c] == "guards" || header[c] == "warnings";
+      columns[c].push_back(row.contains(header[c]) ? py::reinterpret_borrow<py::object>(row[py::str(header[c])])
+                           : listed                ? py::object(py::list())  // a refused point: none fired
+                                                   : py::object(py::none()));
     }
-    columns.back().push_back(py::str(error));  // text, "" where the point was predicted
+    columns.back().push_back(error.empty() ? py::object(py::none()) : py::object(py::str(error)));
   }
-  const py::dict arrays = column_arrays(header, columns);
-  return as_frame ? frame_or_dict(arrays) : py::object(arrays);
+  return column_arrays(header, columns, {"error"});
 }
 
 py::list materials() {
@@ -231,6 +259,52 @@ py::list models() {
     out.append(entry);
   }
   return out;
+}
+
+/// The bundled scenes: data/scenes/*.json (under $KERF_DATA_DIR when set), by name.
+std::vector<std::filesystem::path> scene_files() {
+  std::vector<std::filesystem::path> files;
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(kerf::data_directory() / "scenes", error)) {
+    if (entry.path().extension() == ".json") files.push_back(entry.path());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+py::list scenes() {
+  py::list out;
+  for (const auto& file : scene_files()) {
+    py::dict entry;
+    entry["name"] = file.stem().string();
+    entry["path"] = py::module_::import("pathlib").attr("Path")(file.string());
+    entry["program"] = "kerf-forces";
+    entry["kind"] = py::none();
+    entry["description"] = py::none();
+    try {
+      const Json document = kerf::read_json_file(file.string());
+      if (document.contains("kind") && document["kind"].is_string()) {
+        entry["program"] = "kerf-dem";
+        entry["kind"] = document["kind"].get<std::string>();
+      }
+      if (document.contains("description") && document["description"].is_string()) {
+        entry["description"] = document["description"].get<std::string>();
+      }
+    } catch (const kerf::InputError&) {
+      // listed by its name all the same; reading it says what is wrong
+    }
+    out.append(entry);
+  }
+  return out;
+}
+
+std::string scene_path(const std::string& name) {
+  std::vector<std::string> names;
+  for (const auto& file : scene_files()) {
+    names.push_back(file.stem().string());
+    if (name == names.back() || name == file.filename().string()) return file.string();
+  }
+  throw kerf::InputError("scene", name, kerf::describe_choices(name, names) + " (kerf.scenes() lists them)");
 }
 
 py::dict metrics_dict(const kerf::ErrorMetrics& m) {
@@ -277,9 +351,16 @@ py::dict compare(const py::object& scene, const py::object& experiments, const p
   for (const auto& r : result.rows) {
     py::dict row;
     row["line"] = r.line;
-    row["regime"] = r.regime;
-    row["guards"] = r.guards;
-    row["warnings"] = r.warnings;
+    row["regime"] = r.regime.empty() ? py::object(py::none()) : py::object(py::str(r.regime));
+    std::vector<std::string> guards;
+    for (std::size_t start = 0; start < r.guards.size();) {  // guard names hold no ';'
+      const std::size_t end = std::min(r.guards.find(';', start), r.guards.size());
+      guards.push_back(r.guards.substr(start, end - start));
+      start = end + 1;
+    }
+    row["guards"] = string_list(guards);
+    // The row's warnings as one text (a warning may itself hold "; "): a list of one, empty when none.
+    row["warnings"] = string_list(r.warnings.empty() ? std::vector<std::string>{} : std::vector<std::string>{r.warnings});
     rows.append(row);
   }
   answer["rows"] = rows;
@@ -310,7 +391,9 @@ py::dict dem_run(const py::object& scene, const py::object& out, const py::objec
   if (!progress.is_none()) {
     options.on_progress = [progress](const kerf::dem::ProgressUpdate& u) {
       py::gil_scoped_acquire acquire;
-      progress(u.stage, u.done, u.total, u.unit);
+      // Counts of steps or particle-steps: ints, as a progress bar takes them.
+      progress(u.stage, static_cast<long long>(std::llround(u.done)), static_cast<long long>(std::llround(u.total)),
+               u.unit);
     };
   }
   for (const auto& [key, value] : overrides) {
@@ -339,7 +422,7 @@ py::dict dem_run(const py::object& scene, const py::object& out, const py::objec
   answer["out"] = options.out.string();
   for (const char* table : {"forces", "cracks", "curve"}) {
     const auto file = options.out / (std::string(table) + ".csv");
-    if (std::filesystem::exists(file)) answer[table] = table_arrays(kerf::read_csv_file(file));
+    answer[table] = std::filesystem::exists(file) ? py::object(table_arrays(kerf::read_csv_file(file))) : py::none();
   }
   return answer;
 }
@@ -369,30 +452,20 @@ PYBIND11_MODULE(kerf, m) {
     }
   });
 
-  m.def("predict", &predict, py::arg("scene"),
-        "predict(scene, **overrides) -> dict: one prediction (the columns of kerf-forces predict --csv), e.g.\n"
-        "kerf.predict('data/scenes/psic_liu_li.json', **{'tool.edge_radius_um': 0.2})['cutting_force_N']");
-  m.def("sweep", &sweep, py::arg("scene"), py::kw_only(), py::arg("vary"), py::arg("frame") = true,
-        "sweep(scene, vary={key: values, ...}, frame=True, **overrides): the cartesian product of the varied keys;\n"
-        "columns as numpy arrays (a pandas DataFrame when pandas is installed and frame is true); refused points\n"
-        "have NaN values and their message in the 'error' column; a key the scene does not read raises InputError");
-  m.def("materials", &materials, "materials() -> list of dict: the bundled material library (name, title, groups)");
-  m.def("models", &models, "models() -> list of dict: every registered analytic model (kind, name, summary, needs)");
-  m.def("compare", &compare, py::arg("scene"), py::arg("experiments"), py::kw_only(), py::arg("map") = py::dict(),
-        py::arg("fit") = false, py::arg("pool") = false, py::arg("measured_width_mm") = py::none(),
-        py::arg("out") = py::none(),
-        "compare(scene, experiments_csv, map={scene_key_or_prediction_column: csv_column}, fit=False, pool=False,\n"
-        "measured_width_mm=None, out=None, **overrides) -> dict: per quantity the metrics and the measured and\n"
-        "predicted means (arrays); with out, the report (report.md, CSV, JSON, plots) is written there too. A CSV\n"
-        "none of whose columns sets a condition raises InputError unless pool=True (every row a measurement at\n"
-        "the scene's own condition)");
-
-  py::module_ dem = m.def_submodule("dem", "the 2D bonded-particle DEM (kerf-dem)");
-  dem.def("run", &dem_run, py::arg("scene"), py::kw_only(), py::arg("out"), py::arg("threads") = py::none(),
-          py::arg("replicates") = 1, py::arg("checkpoint_every") = 0, py::arg("progress") = py::none(),
-          "run(scene, out=DIR, threads=None, replicates=1, checkpoint_every=0, progress=None, **overrides) -> dict:\n"
-          "runs a kerf-dem scene into DIR; 'summary' (summary.json as a dict), and 'forces', 'cracks', 'curve' (the\n"
-          "CSV files the kind wrote, columns as numpy arrays). progress(stage, done, total, unit) is called as the\n"
-          "run advances (a notebook's progress bar).");
-  dem.def("kinds", &kerf::dem::scene_kind_names, "kinds() -> list of str: the scene kinds");
+  // The C++ functions under private names; python/kerf_api.py (compiled in as text) defines the public ones
+  // over them with Python signatures and docstrings, so that help(), inspect.signature and Jupyter's tooltips
+  // work (a C++ function has no signature Python can read).
+  m.def("_predict", &predict, py::arg("scene"));
+  m.def("_sweep", &sweep, py::arg("scene"), py::arg("vary"));
+  m.def("_materials", &materials);
+  m.def("_models", &models);
+  m.def("_scenes", &scenes);
+  m.def("_scene_path", &scene_path, py::arg("name"));
+  m.def("_compare", &compare, py::arg("scene"), py::arg("experiments"), py::arg("map"), py::arg("fit"),
+        py::arg("pool"), py::arg("measured_width_mm"), py::arg("out"));
+  m.def("_dem_run", &dem_run, py::arg("scene"), py::arg("out"), py::arg("threads"), py::arg("replicates"),
+        py::arg("checkpoint_every"), py::arg("progress"));
+  m.def("_dem_kinds", &kerf::dem::scene_kind_names);
+  m.def_submodule("dem", "the 2D bonded-particle DEM (kerf-dem): run, kinds, read_frames");
+  py::exec(kKerfApiPy, m.attr("__dict__"));
 }

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <map>
 
 #include "kerf/error.hpp"
@@ -27,6 +28,11 @@ const std::map<std::string, Unit>& unit_table() {
       {"kN", {"kN", "kN", 1e3}},
       {"N m", {"N·m", "N_m", 1.0}},
       {"N/mm", {"N/mm", "N_per_mm", 1e3}},
+      {"K", {"K", "K", 1.0}},
+      {"MPa", {"MPa", "MPa", 1e6}},
+      {"GPa", {"GPa", "GPa", 1e9}},
+      {"1/s", {"1/s", "per_s", 1.0}},
+      {"um/rev", {"µm/rev", "um_per_rev", 1e-6}},
   };
   return table;
 }
@@ -96,6 +102,19 @@ const std::vector<std::string>& unit_names() {
     return n;
   }();
   return names;
+}
+
+std::string key_label(std::string_view key_path) {
+  std::string key(key_path.substr(key_path.rfind('.') == std::string_view::npos ? 0 : key_path.rfind('.') + 1));
+  const Unit* unit = nullptr;
+  for (const auto& [name, candidate] : unit_table()) {
+    const std::string tail = "_" + candidate.suffix;
+    if (candidate.suffix.empty() || key.size() <= tail.size() || !key.ends_with(tail)) continue;
+    if (!unit || candidate.suffix.size() > unit->suffix.size()) unit = &candidate;  // m_per_min, not min
+  }
+  if (unit) key.resize(key.size() - unit->suffix.size() - 1);
+  std::replace(key.begin(), key.end(), '_', ' ');
+  return unit ? fmt::format("{} ({})", key, unit->label) : key;
 }
 
 Unit unit_named(const std::string& name, const std::string& path) {

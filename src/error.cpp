@@ -33,6 +33,17 @@ InputError::InputError(std::string field, std::string value, std::string expecte
       value_(std::move(value)),
       expected_(std::move(expected)) {}
 
+InputError InputError::or_from(InputError other) && {
+  other_ = std::make_shared<const InputError>(std::move(other));
+  return std::move(*this);
+}
+
+InputError InputError::with_prefix(const std::string& prefix) const {
+  InputError prefixed(prefix + "." + field_, value_, expected_);
+  if (other_) prefixed.other_ = std::make_shared<const InputError>(other_->with_prefix(prefix));
+  return prefixed;
+}
+
 ModelError::ModelError(const std::string& model, const std::string& reason)
     : std::runtime_error(printable(fmt::format("model '{}': {}", model, reason))) {}
 

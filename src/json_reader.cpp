@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -103,13 +104,36 @@ const Json* ObjectReader::find(std::string_view key) {
 
 const Json& ObjectReader::get(std::string_view key) {
   const Json* value = find(key);
-  if (!value) throw InputError(key_path(key), "(missing)", "a value for this required key");
+  if (!value) {
+    // A key of the object that nothing has read yet and is near this one ("tools" for "tool") is its misspelling.
+    std::vector<std::string> unread;
+    for (const auto& [name, ignored] : object_.items())
+      if (!known_.contains(name)) unread.push_back(name);
+    std::string expected = "a value for this required key";
+    if (auto near = nearest_choice(key, unread)) expected += fmt::format(" (the scene has '{}': did you mean '{}'?)", *near, key);
+    throw InputError(key_path(key), "(missing)", expected);
+  }
   return *value;
 }
 
 namespace {
+/// What a text where a number belongs gets told: "0.2um" is a number with a unit, which the key's name carries.
+std::string not_a_number(const Json& value, const Range& range, std::string_view unit) {
+  std::string expected = range.describe(unit);
+  if (!value.is_string()) return expected;
+  const std::string text = value.get<std::string>();
+  char* end = nullptr;
+  const double number = std::strtod(text.c_str(), &end);
+  if (end == text.c_str() || !std::isfinite(number)) return expected + " (a number)";
+  std::string_view rest(end);
+  while (!rest.empty() && rest.front() == ' ') rest.remove_prefix(1);
+  return expected + fmt::format(" ('{}' is not a number; the unit is in the key name{}: write {})", text,
+                                unit.empty() || unit.front() == '(' ? "" : fmt::format(", {}", unit),
+                                text.substr(0, static_cast<std::size_t>(end - text.c_str())));
+}
+
 double as_number(const Json& value, const std::string& path, const Range& range, std::string_view unit) {
-  if (!value.is_number()) throw InputError(path, json_value_text(value), range.describe(unit));
+  if (!value.is_number()) throw InputError(path, json_value_text(value), not_a_number(value, range, unit));
   return check_number(value.get<double>(), path, range, unit);
 }
 }  // namespace
@@ -333,6 +357,15 @@ void apply_override(Json& document, const std::string& assignment, const std::st
     start = dot + 1;
   }
   *node = parse_override_value(assignment.substr(eq + 1));
+}
+
+void blame_the_key_set(const InputError& e, const std::vector<std::string>& assignments) {
+  const auto set = [&](const std::string& field) {
+    return std::any_of(assignments.begin(), assignments.end(),
+                       [&](const std::string& a) { return a.substr(0, a.find('=')) == field; });
+  };
+  if (e.other_side() && set(e.other_side()->field()) && !set(e.field())) throw *e.other_side();
+  throw e;
 }
 
 Json read_json_file(const std::string& file_path) {

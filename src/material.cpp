@@ -148,7 +148,7 @@ MaterialRecord material_from_json(const Json& object, const std::string& path, b
   return record;
 }
 
-MaterialRecord load_material(const Json& spec, const std::string& path) {
+MaterialRecord load_material(const Json& spec, const std::string& path, const std::string& needed_group) {
   if (spec.is_object()) {
     MaterialRecord record = material_from_json(spec, path, /*require_provenance=*/false);
     record.origin = "inline";
@@ -173,8 +173,24 @@ MaterialRecord load_material(const Json& spec, const std::string& path) {
   if (!file) {
     std::string where;
     for (const auto& dir : material_directories()) where += (where.empty() ? "" : ", ") + dir.string();
-    throw InputError(path, name, describe_choices(name, library_material_names()) + " from " + where +
-                                     " (or a material file by its path)");
+    // Only the materials this use can take: a DEM scene suggests none without a "dem" group.
+    std::vector<std::string> names;
+    for (const auto& candidate : library_material_names()) {
+      if (!needed_group.empty()) {
+        try {
+          const auto candidate_file = library_material_file(candidate);
+          const Json document = read_json_file(candidate_file->string());
+          if (!document.is_object() || !document.contains(needed_group)) continue;
+        } catch (const std::exception&) {
+          continue;  // a library file that does not read is not a suggestion
+        }
+      }
+      names.push_back(candidate);
+    }
+    throw InputError(path, name,
+                     describe_choices(name, names) +
+                         (needed_group.empty() ? "" : fmt::format(" (the materials with a '{}' group)", needed_group)) +
+                         " from " + where + " (or a material file by its path)");
   }
   MaterialRecord record = material_from_json(read_json_file(file->string()), path, /*require_provenance=*/true);
   record.origin = file->string();

@@ -201,7 +201,7 @@ void draw(const FigureSpec& fig, const std::pair<double, double>& xr, const std:
 
   for (const auto& s : fig.series) {
     Points p = finite_points(s);
-    if (p.x.empty()) continue;
+    if (p.x.empty() || s.legend_only) continue;
     const PLINT n = static_cast<PLINT>(p.x.size());
     plcol0(palette_index(s.color));
     const bool has_line = s.style != SeriesStyle::points;
@@ -257,7 +257,7 @@ void draw(const FigureSpec& fig, const std::pair<double, double>& xr, const std:
     symbols.emplace_back("");
   }
   for (const auto& s : fig.series) {
-    if (s.label.empty() || finite_points(s).x.empty()) continue;
+    if (s.label.empty() || (finite_points(s).x.empty() && !s.legend_only)) continue;
     PLINT opt = 0;
     if (s.style != SeriesStyle::points) opt |= PL_LEGEND_LINE;
     if (s.style == SeriesStyle::points || s.style == SeriesStyle::points_and_line) opt |= PL_LEGEND_SYMBOL;
@@ -382,6 +382,7 @@ void render_png(const FigureSpec& figure, const std::filesystem::path& path) {
   for (std::size_t k = 0; k < fig.series.size(); ++k) {
     const auto& s = fig.series[k];
     check_sizes(s, k);
+    if (s.legend_only) continue;
     for (std::size_t i = 0; i < s.x.size(); ++i) {
       if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i])) continue;
       any_point = true;

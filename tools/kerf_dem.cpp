@@ -58,7 +58,11 @@ int run_command(const std::string& scene_path, const std::vector<std::string>& s
   options.overrides = sets;
   return with_log(log_every, [&](const kerf::dem::ProgressCallback& on_progress) {
     options.on_progress = on_progress;
-    return kerf::dem::run_scene(doc, scene_path, options).exit_status;
+    try {
+      return kerf::dem::run_scene(doc, scene_path, options).exit_status;
+    } catch (const kerf::InputError& e) {
+      kerf::blame_the_key_set(e, sets);
+    }
   });
 }
 

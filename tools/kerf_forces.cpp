@@ -16,6 +16,8 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <array>
+#include <filesystem>
 #include <cmath>
 #include <functional>
 #include <iostream>
@@ -334,49 +336,96 @@ Axis parse_axis(const std::string& spec) {
   return axis;
 }
 
-/// The sweep's figure: cutting and thrust force against the first varied key, one line per value of the
-/// second (the first 6 of them), refused points left out. PNG with a PDF beside it.
-void plot_sweep(const std::string& path, const std::vector<std::string>& axis_paths,
+/// The sweep's figure: cutting (solid) and thrust (dashed) force against the first varied key, one colour per
+/// value of the second (the first 6 of them; further keys at their first value), refused points left out; the
+/// axes labelled from the keys' unit suffixes, the material, scene and width in the title and y label, the
+/// legend (a row per colour and one per line style) beside the plot. PNG with a PDF beside it.
+void plot_sweep(const std::string& path, const std::string& scene_path, const Json& base,
+                kerf::MaterialCache& materials, const std::vector<std::string>& axis_paths,
                 const std::vector<std::vector<double>>& axis_values, const std::vector<std::string>& names,
                 const std::function<std::vector<double>(std::size_t)>& coordinates,
                 const std::function<const std::vector<std::string>*(std::size_t)>& row_values, std::size_t n_points,
                 bool x_log) {
   kerf::FigureSpec fig;
   fig.x_log = x_log;
-  fig.x_label = axis_paths[0];
-  fig.y_label = "force for the scene's width (N)";
-  fig.title = "kerf-forces sweep";
+  fig.x_label = kerf::key_label(axis_paths[0]);
+  std::string material;
+  try {
+    const auto& record = materials.get(base.at("material"), "material");
+    // The title, where it fits the figure's width beside the scene's file name; else the library name.
+    material = record.title.empty() || record.title.size() > 40 ? record.name : record.title;
+  } catch (const std::exception&) {
+    material = "material?";  // the scene's own errors are the sweep's to report, not the figure's
+  }
+  fig.title = fmt::format("{}: {}", material, std::filesystem::path(scene_path).filename().string());
+  // The width the forces are for: the scene's, stated; per mm of width where the width is swept.
+  const auto width_axis =
+      static_cast<std::size_t>(std::find(axis_paths.begin(), axis_paths.end(), "cut.width_mm") - axis_paths.begin());
+  const Json* width = nullptr;
+  if (base.contains("cut") && base["cut"].is_object() && base["cut"].contains("width_mm")) width = &base["cut"]["width_mm"];
+  const bool per_mm = width_axis < axis_paths.size();
+  if (per_mm) {
+    fig.y_label = "force per mm of width (N/mm)";
+  } else if (width && width->is_number()) {
+    fig.y_label = fmt::format("force for a width of {:g} mm (N)", width->get<double>());
+  } else {
+    fig.y_label = "force for the cut's engaged width (N)";
+  }
   const auto column = [&](const std::string& name) {
     return static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
   };
-  const std::size_t n_second = axis_values.size() > 1 ? std::min<std::size_t>(6, axis_values[1].size()) : 1;
-  int color = 0;
+  // Colours 0-4 and 6: grey (5) is the line-style key's.
+  constexpr std::array<int, 6> kColors = {0, 1, 2, 3, 4, 6};
+  const std::size_t n_second = axis_values.size() > 1 ? std::min<std::size_t>(kColors.size(), axis_values[1].size()) : 1;
+  std::vector<kerf::PlotSeries> keys;
   for (std::size_t k = 0; k < n_second; ++k) {
+    bool drawn = false;
     for (const auto& [name, dashed] : {std::pair{std::string("cutting_force_N"), false}, std::pair{std::string("thrust_force_N"), true}}) {
       const std::size_t c = column(name);
       if (c == names.size()) continue;
       kerf::PlotSeries series;
-      series.label = std::string(dashed ? "thrust" : "cutting") +
-                     (axis_values.size() > 1 ? fmt::format(", {} = {:g}", axis_paths[1].substr(axis_paths[1].rfind('.') + 1),
-                                                           axis_values[1][k])
-                                             : "");
-      series.style = dashed ? kerf::SeriesStyle::dashed_line : kerf::SeriesStyle::points_and_line;
-      series.color = color;
+      series.style = dashed ? kerf::SeriesStyle::dashed_line : kerf::SeriesStyle::line;
+      series.color = kColors[k];
       for (std::size_t i = 0; i < n_points; ++i) {
         const auto x = coordinates(i);
         if (axis_values.size() > 1 && x[1] != axis_values[1][k]) continue;
-        if (axis_values.size() > 2 && x[2] != axis_values[2][0]) continue;  // further axes: their first value
+        bool first_of_the_rest = true;  // further axes: their first value
+        for (std::size_t a = 2; a < axis_values.size(); ++a) first_of_the_rest = first_of_the_rest && x[a] == axis_values[a][0];
+        if (!first_of_the_rest) continue;
         const auto* values = row_values(i);
         if (!values || values->at(c).empty()) continue;  // refused
         series.x.push_back(x[0]);
-        series.y.push_back(std::stod(values->at(c)));
+        series.y.push_back(std::stod(values->at(c)) / (per_mm ? x[width_axis] : 1.0));
       }
-      if (!series.x.empty()) fig.series.push_back(std::move(series));
+      if (series.x.empty()) continue;
+      drawn = true;
+      fig.series.push_back(std::move(series));
     }
-    ++color;
+    if (drawn && axis_values.size() > 1) {
+      const std::string label = kerf::key_label(axis_paths[1]);
+      const auto open = label.rfind(" (");
+      kerf::PlotSeries key;
+      key.label = open == std::string::npos
+                      ? fmt::format("{} = {:g}", label, axis_values[1][k])
+                      : fmt::format("{} = {:g} {}", label.substr(0, open), axis_values[1][k],
+                                    label.substr(open + 2, label.size() - open - 3));
+      key.style = kerf::SeriesStyle::line;
+      key.color = kColors[k];
+      key.legend_only = true;
+      keys.push_back(std::move(key));
+    }
   }
   if (fig.series.empty()) throw kerf::InputError("--plot", path, "a sweep with cutting_force_N or thrust_force_N values");
-  kerf::leave_room_for_legend(fig);
+  for (const auto& [label, dashed] : {std::pair{"cutting force", false}, std::pair{"thrust force", true}}) {
+    kerf::PlotSeries key;
+    key.label = label;
+    key.style = dashed ? kerf::SeriesStyle::dashed_line : kerf::SeriesStyle::line;
+    key.color = 5;
+    key.legend_only = true;
+    keys.push_back(std::move(key));
+  }
+  fig.series.insert(fig.series.end(), keys.begin(), keys.end());
+  fig.legend_position = "outside_right";
   kerf::render_png(fig, path);
 }
 
@@ -462,7 +511,7 @@ int run_sweep(const std::string& scene_path, const std::vector<std::string>& ove
     std::vector<std::string> paths;
     std::vector<std::vector<double>> values;
     for (const auto& axis : axes) paths.push_back(axis.path), values.push_back(axis.values);
-    plot_sweep(plot, paths, values, names, coordinates,
+    plot_sweep(plot, scene_path, base, materials, paths, values, names, coordinates,
                [&](std::size_t i) { return rows[i].error.empty() ? &rows[i].values : nullptr; }, n_points,
                axes[0].log_spacing);
   }

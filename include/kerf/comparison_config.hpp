@@ -23,14 +23,19 @@
 //   kerf::write_report(c, "out/soda_lime");
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "kerf/report.hpp"
 
 namespace kerf {
 
-/// The units a comparison file may name: "mm", "um", "um/s", "mm/s", "m/min", "rpm", "N", "N m", "N/mm", "deg", "".
+/// The units a comparison file may name: "mm", "um", "um/s", "mm/s", "m/min", "rpm", "N", "N m", "N/mm", "deg",
+/// "K", "MPa", "GPa", "1/s", "um/rev", "".
 const std::vector<std::string>& unit_names();
+/// A scene key as a figure's axis label, its unit read from its suffix by the same table:
+/// "cut.uncut_chip_thickness_um" -> "uncut chip thickness (µm)"; "cut.friction_coefficient" -> "friction coefficient".
+std::string key_label(std::string_view key_path);
 /// The unit with that name (InputError naming `path` and listing the valid names otherwise).
 Unit unit_named(const std::string& name, const std::string& path);
 

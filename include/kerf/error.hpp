@@ -6,6 +6,7 @@
 //
 //   throw kerf::InputError("tool.rake_deg", "95", "a value in (-90, 90) deg");
 //   // what(): "tool.rake_deg = 95: expected a value in (-90, 90) deg"
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -29,8 +30,17 @@ class InputError : public std::runtime_error {
   const std::string& value() const noexcept { return value_; }
   const std::string& expected() const noexcept { return expected_; }
 
+  /// A fault in a relation between two keys (radius_min_um <= radius_max_um) told from either key: `other` is
+  /// the same fault named from the other key, which a program prints instead when the user set that key and
+  /// not this one (kerf::blame_the_key_set, json_reader.hpp).
+  InputError or_from(InputError other) &&;
+  const InputError* other_side() const noexcept { return other_.get(); }
+  /// The same error with `prefix.` before its field (and its other side's).
+  InputError with_prefix(const std::string& prefix) const;
+
  private:
   std::string field_, value_, expected_;
+  std::shared_ptr<const InputError> other_;
 };
 
 /// A model failed for input it accepted (no bracket, no convergence): says which model and why.

@@ -323,7 +323,7 @@ decltype(auto) with_path(const std::string& path, Body&& body) {
     return std::forward<Body>(body)();
   } catch (const InputError& e) {
     if (path.empty()) throw;
-    throw InputError(path + "." + e.field(), e.value(), e.expected());
+    throw e.with_prefix(path);
   }
 }
 

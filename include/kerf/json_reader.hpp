@@ -15,6 +15,8 @@
 #include <string_view>
 #include <vector>
 
+#include "kerf/error.hpp"
+
 namespace kerf {
 
 using Json = nlohmann::json;
@@ -97,6 +99,10 @@ Json parse_override_value(const std::string& text);
 /// Applies `path=value` (dotted path) to a JSON document, creating intermediate objects. Throws
 /// InputError when the text has no '=' or the path crosses a non-object value.
 void apply_override(Json& document, const std::string& assignment, const std::string& option_name = "--set");
+
+/// Throws `e`, or the same fault told from its other key (InputError::or_from) when the assignments
+/// ("key.path=value", as for apply_override) set that key and not `e`'s: the key the user changed is the one named.
+[[noreturn]] void blame_the_key_set(const InputError& e, const std::vector<std::string>& assignments);
 
 /// The deepest nesting of arrays and objects a document may have (the bundled scenes use 4).
 inline constexpr std::size_t kMaxJsonDepth = 64;

@@ -47,7 +47,8 @@ std::vector<std::string> library_material_names();
 MaterialRecord material_from_json(const Json& object, const std::string& path, bool require_provenance);
 
 /// A scene's `material`: a library name, a file (a string with '/' or ending in .json: "/path/glass.json",
-/// provenance optional), or an inline object. Unknown names list the library.
-MaterialRecord load_material(const Json& spec, const std::string& path);
+/// provenance optional), or an inline object. Unknown names list the library; with `needed_group` ("dem"), only
+/// the library's materials that have that group.
+MaterialRecord load_material(const Json& spec, const std::string& path, const std::string& needed_group = "");
 
 }  // namespace kerf

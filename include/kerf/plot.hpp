@@ -30,6 +30,8 @@ struct PlotSeries {
   SeriesStyle style = SeriesStyle::points;
   int color = 0;   ///< index into the palette (0: blue, 1: orange, 2: green, 3: red, 4: purple, 5: grey, ...)
   int marker = 0;  ///< 0 circle, 1 triangle, 2 square, 3 diamond, 4 down-triangle; 5-9 the same, hollow
+  /// A legend entry only (no data drawn): a key for a colour or a line style that several series share.
+  bool legend_only = false;
 };
 
 /// Orders the series' points by x (a stable sort; its error bars, where it has them, move with their points).

@@ -53,7 +53,7 @@ TEST_CASE("Missing required keys and wrong types are named", "[json]") {
   CHECK_THROWS_WITH(reader.get_number("speed_m_per_min", Range::positive(), "m/min"),
                     "cut.speed_m_per_min = (missing): expected a value for this required key");
   CHECK_THROWS_WITH(reader.get_number("width_mm", Range::positive(), "mm"),
-                    "cut.width_mm = wide: expected a positive value in mm");
+                    "cut.width_mm = wide: expected a positive value in mm (a number)");
 }
 
 TEST_CASE("Non-finite numbers are rejected", "[json]") {

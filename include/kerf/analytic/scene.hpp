@@ -102,6 +102,10 @@ class MaterialCache {
   std::map<std::string, std::shared_ptr<const MaterialRecord>> records_;
 };
 
+/// A kerf-dem scene (one with a "kind") given to the analytic models: InputError naming its kind and the program
+/// that runs it, before any other key is read. The analytic scene parsers call it first.
+void refuse_dem_scene(const Json& document);
+
 /// Validates a scene document. Throws InputError naming the first bad field.
 AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache = nullptr);
 

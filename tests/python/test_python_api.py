@@ -1,0 +1,131 @@
+"""Issue 40 item 7: the module behaves as Python users expect: the same types in every call, signatures and
+docstrings that help() and inspect read, the bundled scenes, the DEM's VTK frames as numpy arrays, pandas asked for
+explicitly.
+
+Run by ctest ("python: pytest") with PYTHONPATH at build/python.
+"""
+import importlib.util
+import inspect
+import json
+import pathlib
+import xml.etree.ElementTree as ElementTree
+
+import numpy as np
+import pytest
+
+import kerf
+
+SOURCE = pathlib.Path(__file__).resolve().parents[2]
+ORTHOGONAL = SOURCE / "data" / "scenes" / "psic_orthogonal.json"
+K9 = SOURCE / "validation" / "k9_trepanning" / "scene.json"
+PUBLIC = [kerf.predict, kerf.sweep, kerf.compare, kerf.materials, kerf.models, kerf.scenes, kerf.scene_path,
+          kerf.dem.run, kerf.dem.kinds, kerf.dem.read_frames]
+
+
+@pytest.mark.parametrize("function", PUBLIC, ids=lambda f: f.__name__)
+def test_every_public_function_has_a_signature_and_a_docstring(function):
+    signature = inspect.signature(function)  # raises ValueError for a function without one
+    assert function.__doc__ and len(function.__doc__.strip()) > 30
+    for name, parameter in signature.parameters.items():  # every named argument is documented
+        if parameter.kind not in (parameter.VAR_KEYWORD, parameter.VAR_POSITIONAL):
+            assert name in function.__doc__, (function.__name__, name)
+
+
+def test_signatures_name_the_arguments():
+    assert list(inspect.signature(kerf.sweep).parameters) == ["scene", "vary", "frame", "overrides"]
+    assert inspect.signature(kerf.sweep).parameters["frame"].default is False
+    run = inspect.signature(kerf.dem.run).parameters
+    assert run["threads"].default is None and run["replicates"].default == 1 and "out" in run
+    assert kerf.dem.run.__module__ == "kerf.dem" and kerf.dem.read_frames.__name__ == "read_frames"
+
+
+def test_exception_classes_have_docstrings():
+    for error in (kerf.InputError, kerf.ModelError):
+        assert error.__doc__ and len(error.__doc__) > 30
+    assert issubclass(kerf.InputError, ValueError) and issubclass(kerf.ModelError, RuntimeError)
+
+
+def test_predict_types_are_stable():
+    plain = kerf.predict(ORTHOGONAL)
+    warned = kerf.predict(ORTHOGONAL, tool__edge_radius_um=5)  # a blunt edge: a guard or a warning fires
+    for row in (plain, warned):
+        assert isinstance(row["guards"], list) and all(isinstance(g, str) for g in row["guards"])
+        assert isinstance(row["warnings"], list) and all(isinstance(w, str) for w in row["warnings"])
+        assert all(v is None or isinstance(v, (float, str, list)) for v in row.values())
+        assert "" not in row.values()
+    assert warned["guards"] or warned["warnings"]
+    trepanning = kerf.predict(K9)
+    assert trepanning["guards"] == [] and trepanning["warnings"] == []
+
+
+def test_sweep_types_are_stable():
+    table = kerf.sweep(ORTHOGONAL, vary={"tool.rake_deg": [0, 95], "tool.edge_radius_um": [0.1, 5]})
+    assert isinstance(table, dict)
+    assert table["cutting_force_N"].dtype == np.float64
+    refused = [e is not None for e in table["error"]]
+    assert refused == [False, False, True, True]
+    assert all(isinstance(e, str) and e for e in table["error"][2:])
+    assert np.isnan(table["cutting_force_N"][2:]).all()
+    for column in ("guards", "warnings"):
+        assert table[column].dtype == object and table[column].shape == (4,)
+        assert all(isinstance(cell, list) for cell in table[column])
+    assert table["guards"][2] == [] and table["warnings"][3] == []
+    assert table["regime"][2] is None
+
+
+def test_sweep_frame_is_explicit():
+    if importlib.util.find_spec("pandas") is None:
+        with pytest.raises(ImportError, match="needs pandas.*frame=False"):
+            kerf.sweep(ORTHOGONAL, vary={"tool.rake_deg": [0, 5]}, frame=True)
+    else:
+        import pandas
+        frame = kerf.sweep(ORTHOGONAL, vary={"tool.rake_deg": [0, 5]}, frame=True)
+        assert isinstance(frame, pandas.DataFrame) and len(frame) == 2
+    assert isinstance(kerf.sweep(ORTHOGONAL, vary={"tool.rake_deg": [0, 5]}), dict)
+
+
+def test_scenes_and_scene_path():
+    listed = kerf.scenes()
+    on_disk = sorted(p.stem for p in (SOURCE / "data" / "scenes").glob("*.json"))
+    assert [s["name"] for s in listed] == on_disk
+    for entry in listed:
+        document = json.loads(pathlib.Path(entry["path"]).read_text())
+        assert entry["kind"] == document.get("kind")
+        assert entry["program"] == ("kerf-dem" if "kind" in document else "kerf-forces")
+        assert kerf.scene_path(entry["name"]) == pathlib.Path(entry["path"])
+    assert kerf.scene_path("psic_orthogonal.json").samefile(ORTHOGONAL)
+    assert kerf.predict(kerf.scene_path("psic_orthogonal"))["cutting_force_N"] > 0
+    with pytest.raises(kerf.InputError, match="did you mean 'dem_cut'"):
+        kerf.scene_path("dem_cutt")
+
+
+FRAMED_CUT = {
+    "kind": "cut", "material": {"base": "soda_lime_glass_fj"},
+    "specimen": {"width_mm": 0.4, "height_mm": 0.25, "radius_min_um": 10, "radius_max_um": 13, "seed": 1,
+                 "growth_steps": 2000, "relax_steps": 500},
+    "cut": {"depth_of_cut_mm": 0.05, "speed_m_per_s": 2, "length_mm": 0.02},
+    "output": {"frame_every_samples": 1}}
+
+
+def test_dem_run_progress_counts_are_ints_and_tables_always_present(tmp_path):
+    seen = []
+    done = kerf.dem.run(FRAMED_CUT, out=tmp_path / "cut", threads=1, progress=lambda *u: seen.append(u))
+    assert seen and all(type(d) is int and type(t) is int for _stage, d, t, _unit in seen)
+    assert set(done) >= {"forces", "cracks", "curve", "summary", "exit_status", "out"}
+    assert done["curve"] is None and isinstance(done["forces"], dict)
+
+    frames = kerf.dem.read_frames(tmp_path / "cut")
+    pvd = ElementTree.parse(tmp_path / "cut" / "result.pvd").getroot()
+    times = sorted({float(d.get("timestep")) for d in pvd.iter("DataSet")})
+    assert [f["time_s"] for f in frames] == times and len(frames) >= 2
+    particles = frames[-1]["particles"]
+    n = done["summary"]["n_particles"]
+    assert particles["position_mm"].shape == (n, 3) and particles["radius_mm"].shape == (n,)
+    width = FRAMED_CUT["specimen"]["width_mm"]
+    assert particles["position_mm"][:, 0].max() <= width * 1.5 and (particles["radius_mm"] > 0).all()
+    assert particles["radius_mm"].max() <= FRAMED_CUT["specimen"]["radius_max_um"] * 1e-3 * (1 + 1e-9)
+    assert particles["lines"].shape[1] == 2 and particles["lines"].max() < n
+    assert particles["intact_elements"].shape == (len(particles["lines"]),)
+    assert (particles["id"] == np.arange(n)).all()
+    with pytest.raises(kerf.InputError, match="pvd"):
+        kerf.dem.read_frames(tmp_path)
