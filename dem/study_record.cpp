@@ -1,7 +1,9 @@
 #include "kerf/dem/study_record.hpp"
 
 #include <algorithm>
+#include <array>
 #include <filesystem>
+#include <initializer_list>
 
 #include <fmt/format.h>
 

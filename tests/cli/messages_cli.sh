@@ -23,16 +23,7 @@ expect 2 "this is a kerf-dem scene (kind: tension)" -- sweep "$src/data/scenes/d
   --vary cut.width_mm=1,2 --csv "$tmp/s.csv"
 
 # expect_dem STATUS PATTERN -- ARGS...: as expect, for kerf-dem.
-expect_dem() {
-  local status=$1 pattern=$2; shift 3
-  "$dem" "$@" >"$tmp/out" 2>"$tmp/err"; local got=$?
-  if [ "$got" -ne "$status" ] || ! grep -qF -- "$pattern" "$tmp/err"; then
-    echo "FAIL: kerf-dem $* -> status $got (want $status), stderr: $(head -c 400 "$tmp/err")"; failures=$((failures + 1))
-  fi
-  if [ "$(wc -l <"$tmp/err")" -ne 1 ] || ! grep -q "^kerf-dem: error: " "$tmp/err"; then
-    echo "FAIL: kerf-dem $*: not one 'kerf-dem: error:' line: $(head -c 400 "$tmp/err")"; failures=$((failures + 1))
-  fi
-}
+expect_dem() { expect_of kerf-dem "$dem" "$@"; }
 cut="$src/data/scenes/dem_cut.json"
 # The reverse: an analytic scene given to kerf-dem.
 expect_dem 2 "this is a kerf-forces scene (analytic models, no kind); run it with kerf-forces predict" \

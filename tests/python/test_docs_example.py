@@ -1,19 +1,15 @@
 """The worked example of docs/python.md runs as written and draws its figure (needs matplotlib: Debian's
 python3-matplotlib; without it the test is skipped with that reason)."""
 import os
-import pathlib
 import re
 
 import pytest
 
-SOURCE = pathlib.Path(__file__).resolve().parents[2]
+from doc_blocks import SOURCE, one_block
 
 
 def example_code():
-    text = (SOURCE / "docs" / "python.md").read_text()
-    blocks = re.findall(r"```python example\n(.*?)```", text, re.S)
-    assert len(blocks) == 1, "docs/python.md must hold one ```python example block"
-    return blocks[0]
+    return one_block("python.md", "example")
 
 
 def test_worked_example_draws_the_parity_plot(tmp_path, monkeypatch):

@@ -1,19 +1,13 @@
 """The notebook cell of docs/guide.md (task 7) runs as written, from a directory laid out as the repository root,
 and draws its figure (needs matplotlib: Debian's python3-matplotlib; without it the test is skipped with that
 reason)."""
-import pathlib
-import re
-
 import pytest
 
-SOURCE = pathlib.Path(__file__).resolve().parents[2]
+from doc_blocks import SOURCE, one_block
 
 
 def notebook_code():
-    text = (SOURCE / "docs" / "guide.md").read_text()
-    blocks = re.findall(r"```python guide\n(.*?)```", text, re.S)
-    assert len(blocks) == 1, "docs/guide.md must hold one ```python guide block"
-    return blocks[0]
+    return one_block("guide.md", "guide")
 
 
 def test_guide_notebook_cell_runs_and_draws(tmp_path, monkeypatch):

@@ -4,16 +4,17 @@ set -u
 bin="$1/kerf-forces"; src="$2"
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 failures=0
-# expect STATUS PATTERN -- ARGS...: the status, the pattern on stderr, one 'kerf-forces: error:' line there
-# (issue 24), and no NaN or inf in what was printed.
-expect() {
-  local status=$1 pattern=$2; shift 3
-  "$bin" "$@" >"$tmp/out" 2>"$tmp/err"; local got=$?
+# expect_of NAME PROGRAM STATUS PATTERN -- ARGS...: PROGRAM's status, the pattern on stderr, one 'NAME: error:'
+# line there (issue 24), and no NaN or inf in what was printed. expect: the same for kerf-forces.
+expect_of() {
+  local name=$1 program=$2 status=$3 pattern=$4; shift 5
+  "$program" "$@" >"$tmp/out" 2>"$tmp/err"; local got=$?
   if [ "$got" -ne "$status" ] || ! grep -qF -- "$pattern" "$tmp/err"; then
-    echo "FAIL: kerf-forces $* -> status $got (want $status), stderr: $(head -c 400 "$tmp/err")"; failures=$((failures + 1))
+    echo "FAIL: $name $* -> status $got (want $status), stderr: $(head -c 400 "$tmp/err")"; failures=$((failures + 1))
   fi
-  if [ "$(wc -l <"$tmp/err")" -ne 1 ] || ! grep -q "^kerf-forces: error: " "$tmp/err"; then
-    echo "FAIL: kerf-forces $*: not one 'kerf-forces: error:' line: $(head -c 400 "$tmp/err")"; failures=$((failures + 1))
+  if [ "$(wc -l <"$tmp/err")" -ne 1 ] || ! grep -q "^$name: error: " "$tmp/err"; then
+    echo "FAIL: $name $*: not one '$name: error:' line: $(head -c 400 "$tmp/err")"; failures=$((failures + 1))
   fi
   if grep -qiE "nan|inf( |$)" "$tmp/out"; then echo "FAIL: a non-finite number in the output of $*"; failures=$((failures + 1)); fi
 }
+expect() { expect_of kerf-forces "$bin" "$@"; }
