@@ -58,6 +58,27 @@ void check_key_path(const std::string& key, const std::string& where) {
   if (bad) throw InputError(where, key, "a dotted scene key path, e.g. cut.depth_of_cut_mm");
 }
 
+
+/// A condition's value or tag: a number, a text or true/false (InputError naming `where`).
+const Json& scalar(const Json& v, const std::string& where) {
+  if (v.is_array() || v.is_object() || v.is_null())
+    throw InputError(where, json_value_text(v), "a number, text or true/false");
+  return v;
+}
+
+/// A non-empty list of summary result names ("replicates.results", "record.results").
+std::vector<std::string> result_names(const Json& list, const std::string& where) {
+  if (!list.is_array() || list.empty())
+    throw InputError(where, json_value_text(list), "a non-empty list of result names");
+  std::vector<std::string> names;
+  for (const Json& name : list) {
+    if (!name.is_string() || name.get<std::string>().empty())
+      throw InputError(where, json_value_text(name), "a result name, e.g. main_force_N");
+    names.push_back(name.get<std::string>());
+  }
+  return names;
+}
+
 }  // namespace
 
 const FieldTable<StudyReplicates>& study_replicates_fields() {
@@ -152,10 +173,8 @@ StudySpec read_study(const Json& doc, const fs::path& study_file) {
         std::vector<StudyCondition> next;
         for (const StudyCondition& c : s.conditions)
           for (const Json& v : values) {
-            if (v.is_array() || v.is_object() || v.is_null())
-              throw InputError("conditions.grid." + key, json_value_text(v), "a number, text or true/false");
             StudyCondition more = c;
-            more.values.emplace_back(key, v);
+            more.values.emplace_back(key, scalar(v, "conditions.grid." + key));
             next.push_back(std::move(more));
           }
         s.conditions = std::move(next);
@@ -172,9 +191,7 @@ StudySpec read_study(const Json& doc, const fs::path& study_file) {
           if (key == "tags") {  // labels of the condition (the record's columns), not overrides
             if (!v.is_object()) throw InputError(where + ".tags", json_value_text(v), "an object of name: value");
             for (const auto& [name, t] : v.items()) {
-              if (t.is_array() || t.is_object() || t.is_null())
-                throw InputError(where + ".tags." + name, json_value_text(t), "a number, text or true/false");
-              c.tags.emplace_back(name, t);
+              c.tags.emplace_back(name, scalar(t, where + ".tags." + name));
               if (std::find(s.tag_names.begin(), s.tag_names.end(), name) == s.tag_names.end())
                 s.tag_names.push_back(name);
             }
@@ -198,15 +215,8 @@ StudySpec read_study(const Json& doc, const fs::path& study_file) {
     for (const char* key : {"min_count", "max_count", "target_relative_sem_percent", "results"})
       if (!adaptive && r->has(key)) throw InputError(r->key_path(key), "(given)", "only with \"policy\": \"adaptive\"");
     if (adaptive && r->has("count")) throw InputError(r->key_path("count"), "(given)", "only with \"policy\": \"fixed\"");
-    if (const Json* results = r->find("results")) {
-      if (!results->is_array() || results->empty())
-        throw InputError("replicates.results", json_value_text(*results), "a non-empty list of result names");
-      for (const Json& name : *results) {
-        if (!name.is_string() || name.get<std::string>().empty())
-          throw InputError("replicates.results", json_value_text(name), "a result name, e.g. main_force_N");
-        s.replicates.results.push_back(name.get<std::string>());
-      }
-    }
+    if (const Json* results = r->find("results"))
+      s.replicates.results = result_names(*results, "replicates.results");
     if (adaptive && s.replicates.results.empty())
       throw InputError("replicates.results", "(missing)", "the results the adaptive target applies to");
     if (adaptive && s.replicates.min_count > s.replicates.max_count)
@@ -219,14 +229,7 @@ StudySpec read_study(const Json& doc, const fs::path& study_file) {
     const std::string file = record->get_string("file");
     if (file.empty()) throw InputError("record.file", "(empty)", "a CSV file name, relative to the study file");
     r.file = fs::path(file).is_relative() ? study_dir / file : fs::path(file);
-    const Json& results = record->get("results");
-    if (!results.is_array() || results.empty())
-      throw InputError("record.results", json_value_text(results), "a non-empty list of result names");
-    for (const Json& name : results) {
-      if (!name.is_string() || name.get<std::string>().empty())
-        throw InputError("record.results", json_value_text(name), "a result name, e.g. main_force_N");
-      r.results.push_back(name.get<std::string>());
-    }
+    r.results = result_names(record->get("results"), "record.results");
     record->finish();
     s.record = std::move(r);
   }
@@ -824,9 +827,8 @@ StudyOutcome run_study_local(const StudySpec& spec, const StudyOptions& options)
   const int side_by_side = std::max(1, std::min(threads, static_cast<int>(first_wave)));
   const int inner = std::max(1, threads / side_by_side);
   StudyProgress progress(options, side_by_side);
-  std::optional<StudyRecord> record;
-  if (spec.record) record.emplace(spec);
-  StudyRecord* const recorded = record ? &*record : nullptr;
+  const std::unique_ptr<StudyRecord> record = open_study_record(spec);
+  StudyRecord* const recorded = record.get();
   std::mutex mutex;
   std::exception_ptr failure;   // a bug or no memory: rethrown
   std::exception_ptr stopped;   // stop_at_first_failure: the first failed item's error, rethrown

@@ -117,9 +117,8 @@ StudyOutcome coordinate(const StudySpec& spec, const StudyOptions& options, int 
   const auto start = std::chrono::steady_clock::now();
   StudyScheduler scheduler(spec);
   StudyProgress progress(options, size - 1);
-  std::optional<StudyRecord> record;
-  if (spec.record) record.emplace(spec);
-  StudyRecord* const recorded = record ? &*record : nullptr;
+  const std::unique_ptr<StudyRecord> record = open_study_record(spec);
+  StudyRecord* const recorded = record.get();
   std::deque<int> waiting;  // workers with nothing to do until a result decides an adaptive condition
   int stopped = 0;
   const auto answer = [&](int worker) {

@@ -140,6 +140,10 @@ void StudyRecord::write() const {
 
 namespace kerf::dem {
 
+std::unique_ptr<StudyRecord> open_study_record(const StudySpec& spec) {
+  return spec.record ? std::make_unique<StudyRecord>(spec) : nullptr;
+}
+
 std::optional<StudyItem> next_item_to_run(StudyScheduler& scheduler, const StudyRecord* record,
                                           const std::filesystem::path& out, StudyProgress& progress) {
   while (std::optional<StudyItem> item = scheduler.next()) {

@@ -13,6 +13,7 @@
 //   StudyRecord record(spec);                      // reads the file if it exists (InputError if not a record)
 //   if (auto r = record.find(item)) ...            // a recorded item: its results, reused = true
 //   record.add(result, item_summary);              // rewrites the file whole with the new row
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -46,6 +47,8 @@ class StudyRecord {
 
 namespace kerf::dem {
 
+/// The study's record, or none when the study has no "record" (the coordinator's, local or MPI).
+std::unique_ptr<StudyRecord> open_study_record(const StudySpec& spec);
 /// The coordinator's next item to run (local or MPI): the scheduler's next items that the record holds are
 /// completed from it (and logged as reused), unless DIR/items holds the same item finished (reused there, with
 /// every result of its summary). None: nothing to run now (StudyScheduler::next).
