@@ -96,7 +96,14 @@ const FieldTable<CutParams>& groove_fields() {
       number_field("width_mm", kMm, Range::positive(), "groove width at the surface (below the pitch)",
                    &P::groove_width_m),
       number_field("bottom_width_mm", kMm, Range::non_negative(),
-                   "trapezoidal: width at the groove bottom (default: half the width)", &P::groove_bottom_width_m)};
+                   "trapezoidal: width at the groove bottom (default: half the width)", &P::groove_bottom_width_m),
+      number_field("damage_depth_um", kUm, Range::non_negative(),
+                   "laser-affected layer: joints within this distance of a groove's walls and bottom are pre-broken "
+                   "(0: pristine glass up to the groove)",
+                   &P::groove_damage_depth_m),
+      number_field("damage_broken_fraction", kNone, Range::closed(0, 1),
+                   "share of the layer's joints pre-broken (chosen by a hash of the joint: reproducible per packing)",
+                   &P::groove_damage_broken_fraction)};
   return table;
 }
 
@@ -209,6 +216,10 @@ Json cut_params_to_json(const CutParams& p) {
   if (p.rake_face_height_m <= 0) j["tool"].erase("rake_face_height_mm");
   if (p.groove_shape == GrooveShape::none) j["grooves"] = Json{{"shape", "none"}};
   if (p.groove_shape != GrooveShape::trapezoidal) j["grooves"].erase("bottom_width_mm");
+  if (p.groove_damage_depth_m <= 0) {  // pristine: the summaries of scenes without a damaged layer unchanged
+    j["grooves"].erase("damage_depth_um");
+    j["grooves"].erase("damage_broken_fraction");
+  }
   if (p.active_window) j["active_window"] = fields_to_json(active_window_fields(), p);
   return j;
 }
@@ -221,6 +232,53 @@ bool inside_groove_outline(const CutParams& p, double dx_m, double depth_m) {
   if (p.groove_shape == GrooveShape::trapezoidal)
     width += (p.groove_bottom_width_m - p.groove_width_m) * depth_m / p.groove_depth_m;
   return std::abs(dx_m) <= 0.5 * width;
+}
+
+double distance_to_groove_outline(const CutParams& p, double dx_m, double depth_m) {
+  if (inside_groove_outline(p, dx_m, depth_m)) return 0;
+  const double top = 0.5 * p.groove_width_m, depth = p.groove_depth_m;
+  const double bottom = p.groove_shape == GrooveShape::trapezoidal ? 0.5 * p.groove_bottom_width_m : top;
+  // The nearest of the two walls (by symmetry, the one on the point's side) and the bottom.
+  const double x = std::abs(dx_m);
+  const auto to_segment = [&](double ax, double ay, double bx, double by) {
+    const double ux = bx - ax, uy = by - ay;
+    const double s = std::clamp(((x - ax) * ux + (depth_m - ay) * uy) / (ux * ux + uy * uy), 0.0, 1.0);
+    return std::hypot(x - (ax + s * ux), depth_m - (ay + s * uy));
+  };
+  return std::min(to_segment(top, 0, bottom, depth), to_segment(0, depth, bottom, depth));
+}
+
+std::array<std::size_t, 2> apply_groove_damage(Simulation& workpiece, const CutParams& p,
+                                               const std::array<double, 4>& box_m) {
+  std::array<std::size_t, 2> count{};
+  if (p.groove_shape == GrooveShape::none || p.groove_damage_depth_m <= 0) return count;
+  const auto& q = workpiece.particles();
+  auto& b = workpiece.bonds();
+  const double y_top_m = box_m[3];
+  const auto centres = groove_centres(p, box_m[0], box_m[1]);
+  const auto stride = static_cast<std::size_t>(b.stride);
+  for (std::size_t k = 0; k < b.size(); ++k) {
+    if (!b.active[k]) continue;
+    const auto i = static_cast<std::size_t>(b.i[k]), j = static_cast<std::size_t>(b.j[k]);
+    const double x = 0.5 * (q.x[i] + q.x[j]), depth = y_top_m - 0.5 * (q.y[i] + q.y[j]);
+    bool in_layer = false;
+    for (double c : centres)
+      in_layer = in_layer || distance_to_groove_outline(p, x - c, depth) <= p.groove_damage_depth_m;
+    if (!in_layer) continue;
+    ++count[0];
+    // SplitMix64's finaliser of the joint's index: a uniform draw in [0, 1) that needs no generator state.
+    std::uint64_t z = (static_cast<std::uint64_t>(k) + 1) * 0x9E3779B97F4A7C15ull;
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    z ^= z >> 31;
+    if (static_cast<double>(z >> 11) * 0x1.0p-53 >= p.groove_damage_broken_fraction) continue;
+    ++count[1];
+    for (std::size_t e = 0; e < stride; ++e) {
+      b.bonded[k * stride + e] = 0;
+      b.shear_force_n[k * stride + e] = 0;
+    }
+  }
+  return count;
 }
 
 std::vector<double> groove_centres(const CutParams& p, double x_left_m, double x_right_m) {
@@ -510,6 +568,7 @@ CutRun::CutRun(const Simulation& specimen, const CutParams& params)
   check_grooves_remove_disks(params_, b0, res_.n_removed_by_grooves);
   res_.y_top_m = b0.y_max;
   res_.workpiece_box_m = {b0.x_min, b0.x_max, b0.y_min, b0.y_max};
+  res_.groove_damage_joints = apply_groove_damage(sim_, params_, res_.workpiece_box_m);
   res_.y_cut_m = b0.y_max - params_.depth_of_cut_m;
   res_.width_m = sim_.options().thickness_m;
   // The tool starts with the part that meets the workpiece first (its left-most point between the cut

@@ -164,8 +164,13 @@ class CutKind final : public SceneKind {
     const Simulation& specimen = started.specimen;
     Json& summary = started.summary;
     // CutRun checks the cut against the workpiece and the time step before the first step.
+    CutRun cut(specimen, cut_);
+    if (cut_.groove_damage_depth_m > 0) {  // counted here: the summary travels in the checkpoints, the counts do not
+      const auto joints = cut.result().groove_damage_joints;
+      summary["groove_damage"] = Json{{"joints_in_layer", joints[0]}, {"joints_pre_broken", joints[1]}};
+    }
     return {0,
-            continue_cut(common, cut_, run.doc, std::move(summary), o, CutRun(specimen, cut_),
+            continue_cut(common, cut_, run.doc, std::move(summary), o, std::move(cut),
                          {{}, 0, run.scene_dir, progress_target(o)}),
             {}};
   }

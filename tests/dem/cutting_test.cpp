@@ -55,6 +55,84 @@ TEST_CASE("cutting: groove outline membership", "[cutting]") {
   CHECK_FALSE(inside_groove_outline(CutParams{}, 0, 0.05e-3));  // shape none
 }
 
+TEST_CASE("cutting: distance to a groove's walls and bottom", "[cutting]") {
+  const CutParams rect = grooved(GrooveShape::rectangular);  // half-width 0.03 mm, depth 0.1 mm
+  CHECK(distance_to_groove_outline(rect, 0.01e-3, 0.05e-3) == 0);                          // inside
+  CHECK_THAT(distance_to_groove_outline(rect, 0.04e-3, 0.05e-3), WithinAbs(0.01e-3, 1e-12));  // beside a wall
+  CHECK_THAT(distance_to_groove_outline(rect, -0.04e-3, 0.05e-3), WithinAbs(0.01e-3, 1e-12));  // symmetric
+  CHECK_THAT(distance_to_groove_outline(rect, 0, 0.12e-3), WithinAbs(0.02e-3, 1e-12));        // below the bottom
+  CHECK_THAT(distance_to_groove_outline(rect, 0.06e-3, 0.14e-3), WithinAbs(0.05e-3, 1e-12));   // off the corner: 3-4-5
+  // The inverted trapezoid: the wall from (0.03, 0) to (0.01, 0.1) mm. A point on the wall's outward normal
+  // through its midpoint (0.02, 0.05), 0.01 mm out, is 0.01 mm from it.
+  const CutParams trap = grooved(GrooveShape::trapezoidal);
+  const double len = std::hypot(0.02e-3, 0.1e-3), nx = 0.1e-3 / len, ny = 0.02e-3 / len;
+  CHECK_THAT(distance_to_groove_outline(trap, 0.02e-3 + 0.01e-3 * nx, 0.05e-3 + 0.01e-3 * ny),
+             WithinAbs(0.01e-3, 1e-12));
+  CHECK_THAT(distance_to_groove_outline(trap, 0, 0.13e-3), WithinAbs(0.03e-3, 1e-12));  // below the narrow bottom
+}
+
+TEST_CASE("cutting: the grooves' laser-affected layer breaks the joints near the walls and bottom", "[cutting]") {
+  const Simulation specimen = quick_workpiece_specimen(0.4e-3, 0.3e-3, 11);
+  CutParams g = grooved(GrooveShape::rectangular);
+  g.groove_depth_m = 0.08e-3;
+  g.groove_pitch_m = 0.2e-3;
+  std::size_t removed = 0;
+  const Simulation pristine = make_workpiece(specimen, g, removed);
+  // The specimen's box, as CutRun finds it (disk edges).
+  std::array<double, 4> box{1, -1, 1, -1};
+  const auto& sp = specimen.particles();
+  for (std::size_t k = 0; k < sp.size(); ++k) {
+    box[0] = std::min(box[0], sp.x[k] - sp.radius[k]), box[1] = std::max(box[1], sp.x[k] + sp.radius[k]);
+    box[2] = std::min(box[2], sp.y[k] - sp.radius[k]), box[3] = std::max(box[3], sp.y[k] + sp.radius[k]);
+  }
+  const double y_top = box[3];
+  const auto broken_elements = [](const Simulation& s) {
+    std::size_t n = 0;
+    for (auto e : s.bonds().bonded) n += e == 0;
+    return n;
+  };
+  // No layer: nothing broken.
+  Simulation none = pristine;
+  CHECK(apply_groove_damage(none, g, box) == std::array<std::size_t, 2>{0, 0});
+  CHECK(broken_elements(none) == broken_elements(pristine));
+  // A layer of 20 um, every joint in it broken: exactly those joints, each whole.
+  g.groove_damage_depth_m = 20e-6;
+  g.groove_damage_broken_fraction = 1;
+  Simulation all = pristine;
+  const auto counts = apply_groove_damage(all, g, box);
+  CHECK(counts[0] >= 10);  // a layer, not a few joints (about 20 in this packing)
+  CHECK(counts[1] == counts[0]);
+  CHECK(broken_elements(all) - broken_elements(pristine) == counts[1] * static_cast<std::size_t>(all.bonds().stride));
+  const auto& q = all.particles();
+  const auto& b = all.bonds();
+  const auto centres = groove_centres(g, box[0], box[1]);
+  for (std::size_t k = 0; k < b.size(); ++k) {
+    const auto i = static_cast<std::size_t>(b.i[k]), j = static_cast<std::size_t>(b.j[k]);
+    const double x = 0.5 * (q.x[i] + q.x[j]), depth = y_top - 0.5 * (q.y[i] + q.y[j]);
+    double d = 1;
+    for (double c : centres) d = std::min(d, distance_to_groove_outline(g, x - c, depth));
+    if (d > g.groove_damage_depth_m) CHECK(b.n_bonded_elements(k) == pristine.bonds().n_bonded_elements(k));
+    else CHECK(b.n_bonded_elements(k) == 0);
+  }
+  // Half of them: a binomial share (6 sigma), the same joints on a second call, none when the share is 0.
+  g.groove_damage_broken_fraction = 0.5;
+  Simulation half = pristine, again = pristine;
+  const auto h = apply_groove_damage(half, g, box);
+  CHECK(h[0] == counts[0]);
+  const double n = static_cast<double>(h[0]);
+  CHECK(std::abs(static_cast<double>(h[1]) - 0.5 * n) < 6 * std::sqrt(0.25 * n));
+  apply_groove_damage(again, g, box);
+  CHECK(again.bonds().bonded == half.bonds().bonded);
+  g.groove_damage_broken_fraction = 0;
+  Simulation zero = pristine;
+  CHECK(apply_groove_damage(zero, g, box)[1] == 0);
+  CHECK(zero.bonds().bonded == pristine.bonds().bonded);
+  // A thicker layer holds more joints.
+  g.groove_damage_depth_m = 40e-6;
+  Simulation thick = pristine;
+  CHECK(apply_groove_damage(thick, g, box)[0] > counts[0]);
+}
+
 TEST_CASE("cutting: grooves every pitch across the cut path", "[cutting]") {
   CutParams p = grooved(GrooveShape::rectangular);
   auto c = groove_centres(p, 0, 1e-3);

@@ -51,6 +51,11 @@ struct CutParams {
   GrooveShape groove_shape = GrooveShape::none;
   double groove_depth_m = 0.1e-3, groove_pitch_m = 0.2e-3, groove_width_m = 0.06e-3;
   double groove_bottom_width_m = 0.03e-3;  ///< trapezoidal only: width at the groove bottom
+  /// The laser-affected layer along each groove's walls and bottom (apply_groove_damage): joints whose
+  /// midpoint lies within this distance of the groove's outline are pre-broken, each with probability
+  /// groove_damage_broken_fraction. 0 (the default): pristine glass up to the groove, as seed 000's DEM.
+  double groove_damage_depth_m = 0;
+  double groove_damage_broken_fraction = 1;
   /// Part of the travel excluded from the mean forces (the entry), as a fraction of the travel.
   double entry_fraction = 0.25;
   int sample_every_steps = 50;
@@ -175,6 +180,9 @@ struct CutResult {
   /// during the steady part, from its position at the end of the entry to its final one (once finished).
   std::array<double, 2> steady_machined_x_m{};
   std::size_t n_particles = 0, n_removed_by_grooves = 0;  ///< the workpiece's
+  /// Joints within the grooves' laser-affected layer, and those of them broken before the cut (known at the
+  /// start only: a checkpoint holds the joints themselves, not these counts).
+  std::array<std::size_t, 2> groove_damage_joints{};
   std::int64_t steps = 0;
   /// Disks integrated times steps, over the cut (a windowed cut integrates its window only).
   double particle_steps = 0;
@@ -204,7 +212,21 @@ void steady_statistics(CutResult& result, double from_travel_m);
 /// edge, or a tool that has come near the held side.
 std::vector<TravelWindow> travel_window_means(const std::vector<CutSample>& samples, double length_m, double window_m);
 
+/// Distance from a point `dx` from a groove's centre line and `depth` below the top surface to the groove's
+/// walls and bottom (0 inside the outline; the top surface is not part of it).
+double distance_to_groove_outline(const CutParams& params, double dx_m, double depth_m);
+
+/// The laser-affected layer of a grooved workpiece cut from a specimen of box {x_min, x_max, y_min, y_max}
+/// (the grooves' places: groove_centres, below y_max): breaks every element of
+/// the joints whose midpoint lies within params.groove_damage_depth_m of a groove's walls or bottom, each
+/// joint with probability params.groove_damage_broken_fraction (a hash of the joint's index: the same joints
+/// for the same packing). A broken element carries compression and friction (a closed micro-crack), no
+/// tension. Returns {joints in the layer, joints broken}.
+std::array<std::size_t, 2> apply_groove_damage(Simulation& workpiece, const CutParams& params,
+                                               const std::array<double, 4>& box_m);
+
 /// The workpiece: the specimen without the groove disks, left and bottom boundary disks held (group 1).
+/// CutRun then breaks the grooves' laser-affected layer (apply_groove_damage).
 Simulation make_workpiece(const Simulation& specimen, const CutParams& params, std::size_t& n_removed);
 
 /// A cut in progress, advanced one sample at a time.
