@@ -12,6 +12,8 @@ namespace kerf {
 struct CuttingValidation {
   std::vector<std::string> failures;         ///< one line per missed band (within_cuts: unresolved mean); empty when passed
   std::vector<std::filesystem::path> files;  ///< the files written
+  /// false: a reproduction of the paper's method (validation.json without bands), reported without pass or fail.
+  bool judged = true;
   bool passed() const { return failures.empty(); }
 };
 

@@ -2,7 +2,8 @@
 # run_validation soda_lime_cutting on a miniature copy of the case (tiny workpiece, two conditions, two
 # packings): it runs kerf-dem, writes the tables, both comparison reports and the acceptance summary, exits
 # 0 or 1 (bands held or not; never a crash), reuses finished replicates on a rerun, and rejects a bad
-# validation.json with exit status 2.
+# validation.json with exit status 2. Without bands (the real case's validation.json) it is a reproduction:
+# exit 0, no pass or fail, and each trend's verdict is the one its 95 % interval gives.
 # Usage: validation_soda_lime_cutting.sh <dir of built programs> <source dir>
 source "$(dirname "$0")/lib/dem_common.sh" "$@"
 validate="$1/../validation/run_validation"
@@ -101,6 +102,62 @@ grep -q "^- FITTED \*\*regular 0.1 mm: main force" "$work/fitted/report.md" || f
   fail "fitted case: the fitted check was also judged"
 grep -q "^- \(PASS\|FAIL\) \*\*regular 0.1 mm: thrust force" "$work/fitted/report.md" || fail "fitted case: thrust not judged"
 grep -q '"fitted": true' "$work/fitted/summary.json" || fail "fitted case: summary.json does not mark the fitted check"
+# Without bands: a reproduction. Exit 0, REPORTED, and the trends' verdicts recomputed here from the replicate
+# table and the experiments' table: ratio of the means, first-order standard error from the two standard errors
+# of the means (std / sqrt(n)), Welch-Satterthwaite dof, Student's t quantile (by integrating its density).
+mkdir -p "$work/tree2/validation"
+ln -s "$(cd "$src" && pwd)/data" "$work/tree2/data"
+repro_dir="$work/tree2/validation/soda_lime_cutting"
+cp -r "$case_dir" "$repro_dir"
+sed -i 's/"acceptance": {.*}}$/"acceptance": {}}/' "$repro_dir/validation.json"
+grep -q '"acceptance": {}}' "$repro_dir/validation.json" || fail "reproduction case: acceptance not emptied"
+sed -i 's/"replicates": 2/"replicates": 3/' "$repro_dir/validation.json"
+KERF_DATA_DIR="$work/tree2/data" "$validate" soda_lime_cutting "$work/repro" >"$work/log" 2>&1
+rc=$?
+[ $rc -eq 0 ] || fail "reproduction case: exit $rc: $(tail -5 "$work/log")"
+grep -q "soda_lime_cutting: REPORTED" "$work/log" || fail "reproduction case: not reported as such: $(tail -3 "$work/log")"
+grep -q "^## What this case compares, and why" "$work/repro/report.md" || fail "reproduction: no lead section"
+grep -q "a reproduction reference, not a band" "$work/repro/report.md" || fail "reproduction: paper's DEM not a reference"
+! grep -q "^- \(PASS\|FAIL\) " "$work/repro/report.md" || fail "reproduction: a band was judged"
+python3 - "$work/repro" "$case_dir/soda_lime_orthogonal_cutting.csv" <<'PY' || fail "reproduction: trend verdicts"
+import csv, json, math, statistics, sys
+rows = list(csv.DictReader(open(sys.argv[1] + "/kerf_dem_replicates.csv")))
+exp = [r for r in csv.DictReader(l for l in open(sys.argv[2]) if not l.startswith("#")) if r["source"] == "experiment"]
+def t_cdf(x, dof):  # Student's t, by Simpson's rule on its density from 0 to x
+    c = math.gamma((dof + 1) / 2) / (math.sqrt(dof * math.pi) * math.gamma(dof / 2))
+    f = lambda u: c * (1 + u * u / dof) ** (-(dof + 1) / 2)
+    n = 2000; h = x / n
+    return 0.5 + h / 3 * sum((1 if k in (0, n) else 4 if k % 2 else 2) * f(k * h) for k in range(n + 1))
+summary = json.load(open(sys.argv[1] + "/summary.json"))
+assert summary["passed"] is None and summary["role"] == "reproduction", summary.get("passed")
+trends = {t["id"]: t for t in summary["trends"]}
+checked = 0
+for force in ("main", "thrust"):
+    key = force + "_force_N"
+    g = [float(r[key]) for r in rows if r["surface"] == "grooved"]
+    r = [float(r[key]) for r in rows if r["surface"] == "regular"]
+    (mg, sg), (mr, sr) = [(statistics.mean(v), statistics.stdev(v) / math.sqrt(len(v))) for v in (g, r)]
+    value = mg / mr
+    va, vb = (sg / mg) ** 2, (sr / mr) ** 2
+    se = value * math.sqrt(va + vb)
+    dof = (va + vb) ** 2 / (va ** 2 / (len(g) - 1) + vb ** 2 / (len(r) - 1))
+    lo_q, hi_q = 0.0, 100.0
+    for _ in range(60):  # bisection for the 97.5 % quantile
+        mid = 0.5 * (lo_q + hi_q)
+        lo_q, hi_q = (mid, hi_q) if t_cdf(mid, dof) < 0.975 else (lo_q, mid)
+    q = 0.5 * (lo_q + hi_q)
+    mean_exp = lambda s: statistics.mean(float(e[key]) for e in exp if e["surface"] == s and float(e["depth_of_cut_mm"]) == 0.1)
+    ratio_exp = mean_exp("grooved") / mean_exp("regular")
+    want = "AGREES" if value - q * se <= ratio_exp <= value + q * se else "DISAGREES"
+    t = trends[f"grooved_to_regular_{force}_force_0.1"]
+    print(force, "ratio", value, "+-", se, "dof", dof, "q", q, "experiment", ratio_exp, "->", want, "report:", t["verdict"])
+    assert abs(t["value"] - value) <= 1e-9 * value and abs(t["standard_error"] - se) <= 1e-9 * se
+    assert abs(t["ci95_quantile"] - q) <= 1e-3 * q and abs(t["experiment"] - ratio_exp) <= 1e-12
+    assert t["verdict"] == want
+    assert t["check"] in summary["trend_verdicts"][want]
+    checked += 1
+assert checked == 2
+PY
 # Bad input: exit 2 naming the field.
 sed -i 's/"surface": "grooved"/"surface": "polished"/' "$case_dir/validation.json"
 "$validate" soda_lime_cutting "$work/bad" >"$work/log" 2>&1
