@@ -221,7 +221,8 @@ double distance_to_groove_outline(const CutParams& params, double dx_m, double d
 /// the joints whose midpoint lies within params.groove_damage_depth_m of a groove's walls or bottom, each
 /// joint with probability params.groove_damage_broken_fraction (a hash of the joint's index: the same joints
 /// for the same packing). A broken element carries compression and friction (a closed micro-crack), no
-/// tension. Returns {joints in the layer, joints broken}.
+/// tension (ultrashort laser pulses leave micro-cracks around what they modify in glass: Werr et al. 2022,
+/// docs/references.md). Returns {joints in the layer, joints broken}.
 std::array<std::size_t, 2> apply_groove_damage(Simulation& workpiece, const CutParams& params,
                                                const std::array<double, 4>& box_m);
 
