@@ -22,7 +22,8 @@ Verdicts come from those intervals only: 'agrees' when the 95 % interval of the 
 unbounded ratio).
 
 Writes DIR/trends.csv (one row per trend and source) and DIR/trends.png (+ .pdf): each trend with both domains,
-the experiments and the paper's DEM, with their intervals.
+the experiments and the paper's DEM, with their intervals. With --report also DIR/report.md, the acceptance of
+validation/soda_lime_cutting_steady/ (exit 1 while a verdict is not resolved).
 """
 import argparse
 import csv
@@ -296,11 +297,110 @@ def plot(all_trends, path):
     fig.savefig(path.with_suffix(".pdf"))
 
 
+def fmt_interval(value, low, high):
+    """'0.64 [0.52, 0.77]'; '—' for a missing value, an open end for an unbounded interval."""
+    if not isinstance(value, float) or not math.isfinite(value):
+        return "—"
+    if not (isinstance(low, float) and math.isfinite(low) and isinstance(high, float) and math.isfinite(high)):
+        return f"{value:.3g} (no interval)"
+    return f"{value:.3g} [{low:.3g}, {high:.3g}]"
+
+
+def acceptance(rows):
+    """The steady case's acceptance (validation/soda_lime_cutting_steady/README.md): every trend compared with the
+    experiments has a resolved verdict in each domain (agrees or differs), and so has its domain robustness.
+    Returns (resolved, [what is not])."""
+    missing = []
+    for r in rows:
+        if r["group"] != "ratio":
+            continue
+        if "against_experiment" in r and r["against_experiment"] == "not resolved":
+            missing.append(f"{r['trend']} ({r['source']}) against the experiments")
+        if "domain_robust" in r and r["domain_robust"] == "not resolved":
+            missing.append(f"{r['trend']}: default against large domain")
+    ratios_with_experiment = {r["trend"] for r in rows if r["group"] == "ratio" and r["source"] == "experiment"}
+    for trend in sorted(ratios_with_experiment):
+        sources = {r["source"] for r in rows if r["trend"] == trend}
+        for domain in DOMAINS:
+            if f"kerf {domain}" not in sources:
+                missing.append(f"{trend} (kerf {domain}): no cuts")
+    return not missing, missing
+
+
+def report(rows, cuts, record_path):
+    """The steady case's report.md: what is compared and why, the trends with their verdicts, the levels, and
+    the acceptance line. Every verdict is the one rows_of drew from the intervals."""
+    record = pathlib.Path(record_path).resolve()
+    record_path = record.relative_to(ROOT) if record.is_relative_to(ROOT) else record
+    n_cuts = sum(len(v) for v in cuts.values())
+    cpu_h = sum(r.get("cpu_time_s", 0.0) for v in cuts.values() for r in v.values()
+                if isinstance(r.get("cpu_time_s"), float)) / 3600
+    md = ["# Validation: soda-lime glass, the seed-000 trends in the steady cut", "",
+          f"From the record `{record_path}` alone ({n_cuts} cuts, {cpu_h:.1f} CPU-hours; `kerf-dem study "
+          "data/studies/seed000_steady.json` adds to it, this report is `python3 bench/seed000_trends.py --report`).",
+          "", "## What is compared, and why", "",
+          "- **Trends, not levels.** The undamped steady cut's force per mm of width moves with the integrated "
+          "domain (docs/dem.md, 'Steady-state cuts'); a ratio between two conditions cut in the same domain may "
+          "not. The acceptance is on the ratios the experiments show: the depth effect (0.2 / 0.1 mm) and the groove "
+          "effect (grooved / regular), main and thrust; the levels are reported beside.",
+          "- **Two domains.** `default`: the scene's window (7, 3, 4, 4 depths of cut); `large`: a window fixed in "
+          "millimetres (1.4, 0.7, 1.0, 0.8 mm). A trend the two domains give alike (its difference's interval holds "
+          "0) does not depend on the window.",
+          "- **Against the experiments** (seed 000 Table 6, 25.4 mm wide; per mm of width for the levels): each "
+          "kerf trend's 95 % interval (Fieller's, packings as the samples) and the experiments' (their three "
+          "tests); the verdict is on the difference: *agrees* when its 95 % interval holds 0, *differs* when it "
+          "does not (resolved), *not resolved* when no interval can be formed. The paper's DEM is shown beside.",
+          "- **Acceptance.** Every verdict resolved, either way: the case then says what the DEM reproduces and what "
+          "it does not. It fails while a verdict is not resolved (more packings: rerun the study).", ""]
+    ratio_rows = [r for r in rows if r["group"] == "ratio"]
+    level_rows = [r for r in rows if r["group"] == "level"]
+
+    def table(selected, with_verdicts):
+        trends_in_order = list(dict.fromkeys(r["trend"] for r in selected))
+        head = "| trend | kerf default | kerf large | experiment | paper's DEM |"
+        rule = "|---|---:|---:|---:|---:|"
+        if with_verdicts:
+            head += " default vs experiment | large vs experiment | default - large |"
+            rule += "---|---|---|"
+        out = [head, rule]
+        for trend in trends_in_order:
+            by = {r["source"]: r for r in selected if r["trend"] == trend}
+            cell = lambda s: fmt_interval(by[s]["value"], by[s]["ci95_low"], by[s]["ci95_high"]) if s in by else "—"
+            line = f"| {trend} | {cell('kerf default')} | {cell('kerf large')} | {cell('experiment')} | " \
+                   f"{cell('paper DEM')} |"
+            if with_verdicts:
+                verdict = lambda s, k: by[s].get(k, "—") if s in by else "—"
+                line += f" {verdict('kerf default', 'against_experiment')} | " \
+                        f"{verdict('kerf large', 'against_experiment')} | {verdict('kerf default', 'domain_robust')} |"
+            out.append(line)
+        return out
+
+    md += ["## Trends (95 % intervals)", ""] + table(ratio_rows, True) + [""]
+    summary = {}
+    for r in ratio_rows:
+        if "against_experiment" in r and r["source"].startswith("kerf"):
+            summary.setdefault(r["against_experiment"], []).append(f"{r['trend']} ({r['source'][5:]})")
+    md += ["## What the DEM reproduces", ""]
+    for verdict, label in (("agrees", "Agrees with the experiments"), ("differs", "Differs from them, resolved"),
+                           ("not resolved", "Not resolved yet")):
+        md.append(f"- {label}: {'; '.join(summary.get(verdict, [])) or 'none'}.")
+    moved = [r["trend"] for r in ratio_rows if r.get("domain_robust") == "differs"]
+    md.append(f"- Moved by the domain (resolved): {'; '.join(moved) or 'none'}.")
+    md += ["", "## Levels, per mm of width (reported, not acceptance)", ""] + table(level_rows, False) + [""]
+    resolved, missing = acceptance(rows)
+    md.append("**RESOLVED**: every verdict above is resolved." if resolved else
+              "**NOT RESOLVED**: " + "; ".join(missing) + ".")
+    return "\n".join(md) + "\n", resolved
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("record", nargs="?", default=str(RECORD))
     parser.add_argument("--experiments", default=str(EXPERIMENTS))
     parser.add_argument("--out", default="out/seed000_trends")
+    parser.add_argument("--report", action="store_true",
+                        help="also write DIR/report.md, the steady validation case's report, and exit 1 while a "
+                             "verdict is not resolved")
     args = parser.parse_args(argv)
     cuts = read_record(args.record)
     all_trends = trends(Sources(cuts, read_experiments(args.experiments)))
@@ -316,7 +416,15 @@ def main(argv=None):
         print(f"{r['trend']:<58} {r['source']:<13} {r['value']:8.3g} [{r['ci95_low']:.3g}, {r['ci95_high']:.3g}]"
               f"{extra}")
     print(f"wrote {out / 'trends.csv'}, {out / 'trends.png'}")
+    if args.report:
+        text, resolved = report(rows, cuts, args.record)
+        tmp = out / "report.md.tmp"
+        tmp.write_text(text)
+        tmp.replace(out / "report.md")
+        print(f"wrote {out / 'report.md'}: {'RESOLVED' if resolved else 'NOT RESOLVED'}")
+        return 0 if resolved else 1
+    return 0
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())

@@ -7,8 +7,11 @@
 #                                                 # (18 kerf-dem cuts, 19-35 min on 2 cores; rerunning
 #                                                 # reuses the replicates already finished),
 #                                                 # soda_lime_cutting_cut_fitted (12 cuts, 13-34 min) or
-#                                                 # soda_lime_cutting_steady (six conditions x 8-20 packings,
-#                                                 # about 60 11-mm cuts at 2 m/s, about 10 CPU-hours)
+#                                                 # soda_lime_cutting_steady (the seed-000 study's record:
+#                                                 # kerf-dem study data/studies/seed000_steady.json runs the
+#                                                 # cuts not yet recorded, 23+ CPU-hours from nothing, then
+#                                                 # bench/seed000_trends.py --report; exit 0 when every
+#                                                 # verdict is resolved)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 case="${1:-all}"
@@ -16,4 +19,18 @@ bash "$root/scripts/install-deps.sh"
 bash "$root/scripts/build.sh" >/dev/null
 out="$root/out/validation"
 [ "$case" = all ] || out="$out/$case"
-"${KERF_BUILD_DIR:-$root/build}/validation/run_validation" "$case" "$out"
+build="${KERF_BUILD_DIR:-$root/build}"
+steady() {  # the steady case's acceptance comes from the study's record (its README)
+  "$build/tools/kerf-dem" study "$root/data/studies/seed000_steady.json" --out "$1/study" --checkpoint-minutes 5
+  python3 "$root/bench/seed000_trends.py" --report --out "$1"
+}
+case "$case" in
+  soda_lime_cutting_steady) steady "$out" ;;
+  all) rc=0
+       for c in k9_trepanning soda_lime_cutting soda_lime_cutting_cut_fitted; do
+         "$build/validation/run_validation" "$c" "$out/$c" || rc=1
+       done
+       steady "$out/soda_lime_cutting_steady" || rc=1
+       exit $rc ;;
+  *) "$build/validation/run_validation" "$case" "$out" ;;
+esac

@@ -119,3 +119,46 @@ def test_domain_robustness_detects_a_domain_that_moves_a_trend(tmp_path):
     level = next(r for r in rows if r["trend"] == "main force per mm, regular 0.1 mm (N/mm)"
                  and r["source"] == "experiment")
     assert math.isclose(level["value"], 0.65, rel_tol=1e-9)  # per mm of the experiments' 25.4 mm width
+
+
+def full_record(tmp_path, kerf_grooved, n):
+    """Every condition the acceptance needs, in both domains, with n packings each."""
+    means = {}
+    for domain in st.DOMAINS:
+        for depth in (0.1, 0.2):
+            means[(domain, "regular", depth)] = 0.5 * depth / 0.1
+            for surface in st.GROOVED:
+                means[(domain, surface, depth)] = 0.5 * depth / 0.1 * kerf_grooved
+    write_record(tmp_path / "record.csv", means, n=n)
+    write_experiments(tmp_path / "experiments.csv", 0.65, 0.65 * 0.15)
+
+
+def test_report_lists_each_trend_under_the_verdict_its_interval_gives(tmp_path):
+    full_record(tmp_path, 0.73, n=8)
+    rc = st.main([str(tmp_path / "record.csv"), "--experiments", str(tmp_path / "experiments.csv"),
+                  "--out", str(tmp_path / "out"), "--report"])
+    text = (tmp_path / "out" / "report.md").read_text()
+    rows = list(csv.DictReader(open(tmp_path / "out" / "trends.csv")))
+    differs = next(line for line in text.splitlines() if line.startswith("- Differs from them"))
+    agrees = next(line for line in text.splitlines() if line.startswith("- Agrees with the experiments"))
+    for r in rows:
+        if r["group"] != "ratio" or not r["source"].startswith("kerf") or not r["against_experiment"]:
+            continue
+        entry = f"{r['trend']} ({r['source'][5:]})"
+        assert entry in (differs if r["against_experiment"] == "differs" else agrees), entry
+    # kerf's groove effect 0.73 against the experiments' 0.15 differs, resolved; every verdict is resolved.
+    assert "groove effect main, rectangular / regular at 0.1 mm (default)" in differs
+    assert rc == 0 and text.rstrip().endswith("**RESOLVED**: every verdict above is resolved.")
+
+
+def test_report_is_not_resolved_with_one_packing_or_a_missing_domain(tmp_path):
+    full_record(tmp_path, 0.15, n=1)
+    args = [str(tmp_path / "record.csv"), "--experiments", str(tmp_path / "experiments.csv"),
+            "--out", str(tmp_path / "out"), "--report"]
+    assert st.main(args) == 1
+    assert "**NOT RESOLVED**" in (tmp_path / "out" / "report.md").read_text()
+    # Eight packings but only the default window: the large domain's trends are missing, so not resolved.
+    means = {("default", s, d): 0.5 for s in ("regular",) + st.GROOVED for d in (0.1, 0.2)}
+    write_record(tmp_path / "record.csv", means, n=8)
+    assert st.main(args) == 1
+    assert "(kerf large): no cuts" in (tmp_path / "out" / "report.md").read_text()
