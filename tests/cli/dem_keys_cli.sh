@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# kerf-dem keys: the key tables in docs/dem.md are the ones generated from the field tables (regenerate:
+# kerf-dem keys: the key tables in docs/dem-keys.md are the ones generated from the field tables (regenerate:
 # build/tools/kerf-dem keys, pasted between the markers); an unknown section lists the valid ones. And one
 # error prefix across both programs: "kerf-dem: error:" / "kerf-forces: error:" for input errors, model
 # errors and command-line parse errors, exit status 2 for bad input.
@@ -8,8 +8,8 @@ source "$(dirname "$0")/lib/dem_common.sh" "$@"
 forces="$1/kerf-forces"
 
 "$bin" keys >"$work/keys.md" || fail "kerf-dem keys failed"
-sed -n '/<!-- kerf-dem keys: begin -->/,/<!-- kerf-dem keys: end -->/p' "$src/docs/dem.md" | sed '1d;$d' >"$work/doc.md"
-diff -u "$work/doc.md" "$work/keys.md" >"$work/diff" || fail "docs/dem.md's key tables differ from kerf-dem keys: $(head -20 "$work/diff")"
+sed -n '/<!-- kerf-dem keys: begin -->/,/<!-- kerf-dem keys: end -->/p' "$src/docs/dem-keys.md" | sed '1d;$d' >"$work/doc.md"
+diff -u "$work/doc.md" "$work/keys.md" >"$work/diff" || fail "docs/dem-keys.md's key tables differ from kerf-dem keys: $(head -20 "$work/diff")"
 for section in material specimen engine loading cut tool grooves calibration calibration.targets toughness output study study.replicates; do
   grep -q "^#### \`$section\`" "$work/keys.md" || fail "no key table for $section"
 done
