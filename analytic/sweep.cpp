@@ -157,6 +157,7 @@ void SweepGrid::evaluate(std::size_t point, Json& document, SweepRow& row, bool 
   }
   const auto scene = parse_scene(document, &materials_);
   scene->predict();
+  row.cells.reserve(16 * names_.size());  // about the text of a row: one allocation, not a doubling series
   CellJoiner joiner(row.cells);
   scene->write_cells(joiner);
   if (joiner.count() != names_.size()) {
