@@ -143,17 +143,10 @@ std::size_t SweepGrid::value_index(std::size_t point, std::size_t a) const {
 }
 
 void SweepGrid::evaluate(std::size_t point, Json& document, SweepRow& row, bool lists) const {
-  std::size_t index = point;
-  std::size_t k[16];
-  std::vector<std::size_t> many(axes_.size() > 16 ? axes_.size() : 0);
-  std::size_t* at = axes_.size() > 16 ? many.data() : k;
-  for (std::size_t a = axes_.size(); a-- > 0;) {
-    at[a] = index % axes_[a].values.size();
-    index /= axes_[a].values.size();
-  }
   for (std::size_t a = 0; a < axes_.size(); ++a) {
     const SweepAxis& axis = axes_[a];
-    apply_override(document, axis.key + "=" + axis.texts[at[a]], axis.values[at[a]], option_name_);
+    const std::size_t k = value_index(point, a);
+    apply_override(document, axis.key + "=" + axis.texts[k], axis.values[k], option_name_);
   }
   const auto scene = parse_scene(document, &materials_);
   scene->predict();
