@@ -8,15 +8,15 @@
 namespace kerf {
 
 void DislocationParams::validate(const std::string& path) const {
-  check_number(taylor_factor, path + ".taylor_factor", Range::positive(), "");
-  check_number(alpha, path + ".alpha", Range::positive(), "");
-  check_number(shear_modulus_Pa * 1e-9, path + ".shear_modulus_GPa", Range::positive(), "GPa");
-  check_number(burgers_vector_m * 1e9, path + ".burgers_vector_nm", Range::positive(), "nm");
-  check_number(boundary_constant_k, path + ".boundary_constant_k", Range::positive(), "");
-  check_number(units::rad_to_deg(misorientation_rad), path + ".misorientation_deg", Range::closed(0.0, 90.0), "deg");
-  check_number(boundary_spacing_m * 1e6, path + ".boundary_spacing_um", Range::positive(), "um");
-  check_number(critical_spacing_m * 1e9, path + ".critical_grain_size_nm", Range::non_negative(), "nm");
-  check_number(interior_density_per_m2, path + ".interior_dislocation_density_per_m2", Range::non_negative(), "1/m^2");
+  check_field(taylor_factor, path, "taylor_factor", Range::positive(), "");
+  check_field(alpha, path, "alpha", Range::positive(), "");
+  check_field(shear_modulus_Pa * 1e-9, path, "shear_modulus_GPa", Range::positive(), "GPa");
+  check_field(burgers_vector_m * 1e9, path, "burgers_vector_nm", Range::positive(), "nm");
+  check_field(boundary_constant_k, path, "boundary_constant_k", Range::positive(), "");
+  check_field(units::rad_to_deg(misorientation_rad), path, "misorientation_deg", Range::closed(0.0, 90.0), "deg");
+  check_field(boundary_spacing_m * 1e6, path, "boundary_spacing_um", Range::positive(), "um");
+  check_field(critical_spacing_m * 1e9, path, "critical_grain_size_nm", Range::non_negative(), "nm");
+  check_field(interior_density_per_m2, path, "interior_dislocation_density_per_m2", Range::non_negative(), "1/m^2");
 }
 
 double boundary_dislocation_density(const DislocationParams& d, Guards* guards) {

@@ -9,18 +9,18 @@
 namespace kerf {
 
 void HallPetchParams::validate(const std::string& path) const {
-  check_number(taylor_factor, path + ".taylor_factor", Range::positive(), "");
-  check_number(grain_size_m * 1e6, path + ".grain_size_um", Range::positive(), "um");
-  check_number(critical_grain_size_m * 1e9, path + ".critical_grain_size_nm", Range::non_negative(), "nm");
+  check_field(taylor_factor, path, "taylor_factor", Range::positive(), "");
+  check_field(grain_size_m * 1e6, path, "grain_size_um", Range::positive(), "um");
+  check_field(critical_grain_size_m * 1e9, path, "critical_grain_size_nm", Range::non_negative(), "nm");
   if (coefficient_Pa_sqrt_m) {
-    check_number(*coefficient_Pa_sqrt_m * 1e-6, path + ".hall_petch_coefficient_MPa_sqrt_m", Range::non_negative(),
+    check_field(*coefficient_Pa_sqrt_m * 1e-6, path, "hall_petch_coefficient_MPa_sqrt_m", Range::non_negative(),
                  "MPa m^0.5");
     return;
   }
-  check_number(shear_modulus_Pa * 1e-9, path + ".shear_modulus_GPa", Range::positive(), "GPa");
-  check_number(burgers_vector_m * 1e9, path + ".burgers_vector_nm", Range::positive(), "nm");
-  check_number(poissons_ratio, path + ".poissons_ratio", Range{-1.0, 0.5, true, true}, "");
-  check_number(grain_boundary_stress_ratio, path + ".grain_boundary_stress_ratio", Range::positive(), "");
+  check_field(shear_modulus_Pa * 1e-9, path, "shear_modulus_GPa", Range::positive(), "GPa");
+  check_field(burgers_vector_m * 1e9, path, "burgers_vector_nm", Range::positive(), "nm");
+  check_field(poissons_ratio, path, "poissons_ratio", Range{-1.0, 0.5, true, true}, "");
+  check_field(grain_boundary_stress_ratio, path, "grain_boundary_stress_ratio", Range::positive(), "");
 }
 
 double hall_petch_coefficient(const HallPetchParams& hp) {

@@ -10,14 +10,14 @@ namespace kerf {
 
 void JohnsonCookParams::validate(const std::string& path) const {
   const auto field = [&](const char* name) { return path + "." + name; };
-  check_number(units::pa_to_mpa(A_Pa), field("A_MPa"), Range::non_negative(), "MPa");
-  check_number(units::pa_to_mpa(B_Pa), field("B_MPa"), Range::non_negative(), "MPa");
-  check_number(n, field("n"), Range{0.0, 1.5, true, false}, "");
-  check_number(C, field("C"), Range::non_negative(), "");
-  check_number(m, field("m"), Range::positive(), "");
-  check_number(reference_strain_rate_per_s, field("reference_strain_rate_per_s"), Range::positive(), "1/s");
-  check_number(room_temperature_K, field("room_temperature_K"), Range::positive(), "K");
-  check_number(melting_temperature_K, field("melting_temperature_K"), Range::above(room_temperature_K),
+  check_field(units::pa_to_mpa(A_Pa), path, "A_MPa", Range::non_negative(), "MPa");
+  check_field(units::pa_to_mpa(B_Pa), path, "B_MPa", Range::non_negative(), "MPa");
+  check_field(n, path, "n", Range{0.0, 1.5, true, false}, "");
+  check_field(C, path, "C", Range::non_negative(), "");
+  check_field(m, path, "m", Range::positive(), "");
+  check_field(reference_strain_rate_per_s, path, "reference_strain_rate_per_s", Range::positive(), "1/s");
+  check_field(room_temperature_K, path, "room_temperature_K", Range::positive(), "K");
+  check_field(melting_temperature_K, path, "melting_temperature_K", Range::above(room_temperature_K),
                "K (above room_temperature_K)");
   if (A_Pa + B_Pa <= 0.0) throw InputError(field("A_MPa"), "0", "A + B > 0 (a material with strength)");
 }

@@ -93,7 +93,7 @@ void add_contact_lengths(const AnalyticScene& scene, double friction_angle_rad, 
                                      contact_length(request.model, t0, phi, friction_angle_rad, scene.rake_rad));
   }
   if (!scene.contact_lengths.empty() && t0 > kContactLengthValidatedThickness_m &&
-      scene.material.name == kContactLengthValidatedMaterial) {
+      scene.material->name == kContactLengthValidatedMaterial) {
     p.warnings.push_back("contact-length models were validated up to h = 0.1 mm (seed 003: chip segmentation above)");
   }
 }
@@ -324,100 +324,96 @@ Prediction predict(const AnalyticScene& scene) {
   return p;
 }
 
-std::vector<std::pair<std::string, std::string>> prediction_columns(const AnalyticScene& scene, const Prediction& p) {
-  std::vector<std::pair<std::string, std::string>> row;
-  const auto add = [&](std::string name, double value) { row.emplace_back(std::move(name), csv_number(value)); };
-  const auto add_text = [&](std::string name, std::string text) { row.emplace_back(std::move(name), csv_escape(text)); };
+void write_prediction_cells(const AnalyticScene& scene, const Prediction& p, CellWriter& w) {
   const double width_mm = units::m_to_mm(p.width_m);
 
-  // The inputs, converted back from SI: rounded to 15 significant digits so that the scene's 0.05 um reads 0.05,
-  // not the 0.049999999999999996 of the round trip through metres.
-  const auto add_input = [&](std::string name, double value) {
-    row.emplace_back(std::move(name), csv_number(std::stod(fmt::format("{:.15g}", value))));
-  };
-  add_text("force_model", std::string(force_model_name(p.force_model)));
-  add_text("material", scene.material.name);
-  add_input("rake_deg", units::rad_to_deg(scene.rake_rad));
-  add_input("edge_radius_um", units::m_to_um(scene.edge_radius_m));
-  add_input("clearance_deg", units::rad_to_deg(scene.clearance_rad));
-  add_input("speed_m_per_min", units::m_per_s_to_m_per_min(scene.speed_m_per_s));
-  add_input("workpiece_temperature_K", scene.workpiece_temperature_K);
-  row.emplace_back("scene_friction_angle_deg",
-                   scene.friction_angle_rad ? csv_number(units::rad_to_deg(*scene.friction_angle_rad)) : "");
-  add_input("uncut_chip_thickness_um", units::m_to_um(p.uncut_chip_thickness_m));
-  add_input("width_mm", width_mm);
-  add("cutting_force_N", p.cutting_force_N);
-  add("thrust_force_N", p.thrust_force_N);
+  // The inputs, converted back from SI (CellWriter::input rounds them to 15 significant digits).
+  w.text("force_model", force_model_name(p.force_model));
+  w.text("material", scene.material->name);
+  w.input("rake_deg", units::rad_to_deg(scene.rake_rad));
+  w.input("edge_radius_um", units::m_to_um(scene.edge_radius_m));
+  w.input("clearance_deg", units::rad_to_deg(scene.clearance_rad));
+  w.input("speed_m_per_min", units::m_per_s_to_m_per_min(scene.speed_m_per_s));
+  w.input("workpiece_temperature_K", scene.workpiece_temperature_K);
+  w.optional_number("scene_friction_angle_deg", scene.friction_angle_rad.has_value(),
+                    units::rad_to_deg(scene.friction_angle_rad.value_or(0.0)));
+  w.input("uncut_chip_thickness_um", units::m_to_um(p.uncut_chip_thickness_m));
+  w.input("width_mm", width_mm);
+  w.number("cutting_force_N", p.cutting_force_N);
+  w.number("thrust_force_N", p.thrust_force_N);
   // The ploughing part of the totals (zero where the model adds none; empty for Oxley, which ignores the edge).
   const bool chip_model = p.force_model != ForceModel::oxley;
   const ForcePerWidth plough = p.ploughing ? p.ploughing->force : ForcePerWidth{};
-  row.emplace_back("ploughing_cutting_force_N", chip_model ? csv_number(plough.cutting_N_per_m * p.width_m) : "");
-  row.emplace_back("ploughing_thrust_force_N", chip_model ? csv_number(plough.thrust_N_per_m * p.width_m) : "");
-  add("cutting_force_N_per_mm", p.cutting_force_N / width_mm);
-  add("thrust_force_N_per_mm", p.thrust_force_N / width_mm);
-  add("shear_angle_deg", units::rad_to_deg(p.shear_angle_rad));
-  row.emplace_back("friction_angle_deg", p.has_friction ? csv_number(units::rad_to_deg(p.friction_angle_rad)) : "");
-  add("chip_ratio", p.chip_ratio);
-  add("chip_thickness_um", units::m_to_um(p.chip_thickness_m));
-  add("flow_stress_MPa", units::pa_to_mpa(p.flow.total_Pa));
-  add("shear_flow_stress_MPa", units::pa_to_mpa(p.flow.shear_Pa));
-  if (scene.flow_stress.johnson_cook) add("johnson_cook_stress_MPa", units::pa_to_mpa(p.flow.johnson_cook_Pa));
-  if (scene.flow_stress.hall_petch) add("hall_petch_stress_MPa", units::pa_to_mpa(p.flow.hall_petch_Pa));
-  if (scene.flow_stress.dislocation) add("dislocation_stress_MPa", units::pa_to_mpa(p.flow.dislocation_Pa));
-  add("strain", p.state.strain);
-  add("strain_rate_per_s", p.state.strain_rate_per_s);
-  add("temperature_K", p.state.temperature_K);
+  w.optional_number("ploughing_cutting_force_N", chip_model, plough.cutting_N_per_m * p.width_m);
+  w.optional_number("ploughing_thrust_force_N", chip_model, plough.thrust_N_per_m * p.width_m);
+  w.number("cutting_force_N_per_mm", p.cutting_force_N / width_mm);
+  w.number("thrust_force_N_per_mm", p.thrust_force_N / width_mm);
+  w.number("shear_angle_deg", units::rad_to_deg(p.shear_angle_rad));
+  w.optional_number("friction_angle_deg", p.has_friction, units::rad_to_deg(p.friction_angle_rad));
+  w.number("chip_ratio", p.chip_ratio);
+  w.number("chip_thickness_um", units::m_to_um(p.chip_thickness_m));
+  w.number("flow_stress_MPa", units::pa_to_mpa(p.flow.total_Pa));
+  w.number("shear_flow_stress_MPa", units::pa_to_mpa(p.flow.shear_Pa));
+  if (scene.flow_stress.johnson_cook) w.number("johnson_cook_stress_MPa", units::pa_to_mpa(p.flow.johnson_cook_Pa));
+  if (scene.flow_stress.hall_petch) w.number("hall_petch_stress_MPa", units::pa_to_mpa(p.flow.hall_petch_Pa));
+  if (scene.flow_stress.dislocation) w.number("dislocation_stress_MPa", units::pa_to_mpa(p.flow.dislocation_Pa));
+  w.number("strain", p.state.strain);
+  w.number("strain_rate_per_s", p.state.strain_rate_per_s);
+  w.number("temperature_K", p.state.temperature_K);
   for (std::size_t i = 0; i < scene.contact_lengths.size(); ++i) {
     const bool has = i < p.contact_lengths_m.size() && p.contact_lengths_m[i].second.has_value();
-    row.emplace_back(scene.contact_lengths[i].column,
-                     has ? csv_number(units::m_to_mm(*p.contact_lengths_m[i].second)) : "");
+    w.optional_number(scene.contact_lengths[i].column, has,
+                      has ? units::m_to_mm(*p.contact_lengths_m[i].second) : 0.0);
   }
   // The columns follow the models the scene asked for ('auto' may choose differently point by point).
-  const auto optional_number = [](bool present, double value) { return present ? csv_number(value) : std::string(); };
   if (scene.force == ForceModel::liu_li || scene.force_auto) {
     const bool has = p.liu_li.has_value();
     const LiuLiResult l = p.liu_li.value_or(LiuLiResult{});
-    add_text("friction_closure", std::string(friction_closure_name(scene.liu_li.closure)));
-    add_text("lower_limit_rule", std::string(lower_limit_rule_name(scene.liu_li.lower_limit)));
-    row.emplace_back("lower_limit_deg", optional_number(has, units::rad_to_deg(l.lower_limit_rad)));
-    row.emplace_back("upper_limit_deg", optional_number(has, units::rad_to_deg(l.upper_limit_rad)));
-    row.emplace_back("stagnation_angle_deg", optional_number(has, units::rad_to_deg(l.stagnation_angle_rad)));
-    row.emplace_back("pole_deg", optional_number(has && l.pole_rad, units::rad_to_deg(l.pole_rad.value_or(0.0))));
-    row.emplace_back("ploughed_thickness_um", optional_number(has, units::m_to_um(l.ploughed_thickness_m)));
-    row.emplace_back("edge_cutting_force_N", optional_number(has, l.edge.cutting_N_per_m * p.width_m));
-    row.emplace_back("edge_thrust_force_N", optional_number(has, l.edge.thrust_N_per_m * p.width_m));
-    add_text("ploughing_model", std::string(ploughing_model_name(scene.ploughing)));
+    w.text("friction_closure", friction_closure_name(scene.liu_li.closure));
+    w.text("lower_limit_rule", lower_limit_rule_name(scene.liu_li.lower_limit));
+    w.optional_number("lower_limit_deg", has, units::rad_to_deg(l.lower_limit_rad));
+    w.optional_number("upper_limit_deg", has, units::rad_to_deg(l.upper_limit_rad));
+    w.optional_number("stagnation_angle_deg", has, units::rad_to_deg(l.stagnation_angle_rad));
+    w.optional_number("pole_deg", has && l.pole_rad, units::rad_to_deg(l.pole_rad.value_or(0.0)));
+    w.optional_number("ploughed_thickness_um", has, units::m_to_um(l.ploughed_thickness_m));
+    w.optional_number("edge_cutting_force_N", has, l.edge.cutting_N_per_m * p.width_m);
+    w.optional_number("edge_thrust_force_N", has, l.edge.thrust_N_per_m * p.width_m);
+    w.text("ploughing_model", ploughing_model_name(scene.ploughing));
     const bool ploughs = p.ploughing.has_value();
-    row.emplace_back("friction_factor", optional_number(ploughs, p.friction_factor));
-    row.emplace_back("ploughing_attack_angle_deg",
-                     optional_number(ploughs, units::rad_to_deg(p.ploughing.value_or(EdgePloughingResult{})
-                                                                    .factors.attack_angle_rad)));
+    w.optional_number("friction_factor", ploughs, p.friction_factor);
+    w.optional_number("ploughing_attack_angle_deg", ploughs,
+                      units::rad_to_deg(p.ploughing.value_or(EdgePloughingResult{}).factors.attack_angle_rad));
   }
   if (scene.oxley || scene.force_auto) {
     const bool has = p.oxley.has_value();
     const OxleyDetails o = p.oxley.value_or(OxleyDetails{});
-    row.emplace_back("strain_rate_constant_C0", optional_number(has, o.strain_rate_constant_C0));
-    row.emplace_back("secondary_zone_ratio_delta", optional_number(has, o.delta));
-    row.emplace_back("interface_temperature_K", optional_number(has, o.interface_temperature_K));
-    row.emplace_back("contact_length_oxley_mm", optional_number(has, units::m_to_mm(o.contact_length_m)));
-    row.emplace_back("oxley_residual", optional_number(has, o.residual));
-    row.emplace_back("oxley_shear_angle_roots", optional_number(has, o.shear_angle_roots));
+    w.optional_number("strain_rate_constant_C0", has, o.strain_rate_constant_C0);
+    w.optional_number("secondary_zone_ratio_delta", has, o.delta);
+    w.optional_number("interface_temperature_K", has, o.interface_temperature_K);
+    w.optional_number("contact_length_oxley_mm", has, units::m_to_mm(o.contact_length_m));
+    w.optional_number("oxley_residual", has, o.residual);
+    w.optional_number("oxley_shear_angle_roots", has, o.shear_angle_roots);
   }
   if (scene.turning) {
-    add("feed_um_per_rev", units::m_to_um(scene.turning->geometry.feed_m_per_rev));
-    add("depth_of_cut_um", units::m_to_um(scene.turning->geometry.depth_of_cut_m));
-    add("maximum_chip_thickness_um", units::m_to_um(scene.turning->chip.maximum_thickness_m));
-    add("equivalent_chip_thickness_um", units::m_to_um(scene.turning->chip.equivalent_thickness_m));
-    add("engaged_edge_length_mm", units::m_to_mm(scene.turning->chip.engaged_edge_length_m));
+    w.number("feed_um_per_rev", units::m_to_um(scene.turning->geometry.feed_m_per_rev));
+    w.number("depth_of_cut_um", units::m_to_um(scene.turning->geometry.depth_of_cut_m));
+    w.number("maximum_chip_thickness_um", units::m_to_um(scene.turning->chip.maximum_thickness_m));
+    w.number("equivalent_chip_thickness_um", units::m_to_um(scene.turning->chip.equivalent_thickness_m));
+    w.number("engaged_edge_length_mm", units::m_to_mm(scene.turning->chip.engaged_edge_length_m));
   }
-  row.emplace_back("critical_depth_nm",
-                   scene.critical_depth_m ? csv_number(units::m_to_nm(*scene.critical_depth_m)) : "");
-  add_text("regime", p.regime);
-  add_text("guards", p.guards.names());
+  w.optional_number("critical_depth_nm", scene.critical_depth_m.has_value(),
+                    units::m_to_nm(scene.critical_depth_m.value_or(0.0)));
+  w.text("regime", p.regime);
+  w.text("guards", p.guards.names());
   std::string warnings;
-  for (const auto& w : p.warnings) warnings += (warnings.empty() ? "" : "; ") + w;
-  add_text("warnings", warnings);
-  return row;
+  for (const auto& w_text : p.warnings) warnings += (warnings.empty() ? "" : "; ") + w_text;
+  w.text("warnings", warnings);
+}
+
+Columns prediction_columns(const AnalyticScene& scene, const Prediction& p) {
+  ColumnCollector row;
+  write_prediction_cells(scene, p, row);
+  return std::move(row.columns);
 }
 
 }  // namespace kerf

@@ -2,6 +2,7 @@
 
 #include <map>
 
+#include "kerf/analytic/evaluate.hpp"
 #include "kerf/analytic/scene.hpp"
 
 namespace kerf {
@@ -13,19 +14,22 @@ constexpr int id(Enum value) {
 }
 }  // namespace
 
-const std::vector<AnalyticModelInfo>& analytic_models() {
-  static const std::vector<AnalyticModelInfo> models = {
-      // kind, name, summary, needs, the enum value the name constructs (none: handled by name)
+namespace {
+std::vector<AnalyticModelInfo>& registry() {
+  static std::vector<AnalyticModelInfo> models = {
+      // kind, name, summary, needs, the enum value the name constructs (none: handled by name); force lines:
+      // the scene kind that runs the model
       {"force", "auto", "the cheapest valid force model: oxley without friction data, merchant for a sharp edge "
-                        "(r < 5 % of t0), else liu_li", "as the chosen model"},
-      {"force", "merchant", "sharp-tool Merchant force circle", "flow stress, friction, shear angle", id(ForceModel::merchant)},
+                        "(r < 5 % of t0), else liu_li", "as the chosen model", -1, &build_orthogonal_scene},
+      {"force", "merchant", "sharp-tool Merchant force circle", "flow stress, friction, shear angle", id(ForceModel::merchant),
+       &build_orthogonal_scene},
       {"force", "liu_li", "Liu-Li edge-radius model, seed 001 Eqs. 1-3", "flow stress, friction, shear angle or chip ratio",
-       id(ForceModel::liu_li)},
+       id(ForceModel::liu_li), &build_orthogonal_scene},
       {"force", "oxley", "extended Oxley theory with Johnson-Cook (Lalwani et al. 2009), sharp tool",
-       "material johnson_cook, thermal and oxley groups", id(ForceModel::oxley)},
+       "material johnson_cook, thermal and oxley groups", id(ForceModel::oxley), &build_orthogonal_scene},
       {"force", "trepanning", "fixed-abrasive trepanning drill, axial force and torque (seed 002 Eqs. 21-22; brittle "
                               "regime)", "tool outer/inner diameter, cut feed rate and spindle speed, the two lumped "
-                              "groups or hardness, half angle and friction"},
+                              "groups or hardness, half angle and friction", -1, &build_trepanning_scene},
       {"flow_stress", "johnson_cook", "Johnson-Cook, seed 001 Eq. 9", "material johnson_cook group; a deformation state"},
       {"flow_stress", "hall_petch", "Hall-Petch with K_HP from seed 001 Eqs. 10-11", "material microstructure and elastic groups"},
       {"flow_stress", "dislocation", "incidental-boundary strengthening, seed 001 Eqs. 4-6", "material microstructure and elastic groups"},
@@ -66,15 +70,43 @@ const std::vector<AnalyticModelInfo>& analytic_models() {
   return models;
 }
 
-const std::vector<std::string>& analytic_model_names(std::string_view kind) {
-  static const auto by_kind = [] {
+/// The names by kind, in registry order (built at the first call, kept in step by register_analytic_model).
+std::map<std::string, std::vector<std::string>, std::less<>>& names_by_kind() {
+  static auto by_kind = [] {
     std::map<std::string, std::vector<std::string>, std::less<>> table;
-    for (const auto& m : analytic_models()) table[std::string(m.kind)].emplace_back(m.name);
+    for (const auto& m : registry()) table[std::string(m.kind)].emplace_back(m.name);
     return table;
   }();
+  return by_kind;
+}
+}  // namespace
+
+const std::vector<AnalyticModelInfo>& analytic_models() { return registry(); }
+
+bool register_analytic_model(const AnalyticModelInfo& line) {
+  if (registered_line(registry(), line.kind, line.name)) {
+    throw std::logic_error("analytic registry: " + std::string(line.kind) + " '" + std::string(line.name) +
+                           "' registered twice");
+  }
+  auto& names = names_by_kind();  // built from the lines before this one
+  registry().push_back(line);
+  names[std::string(line.kind)].emplace_back(line.name);
+  return true;
+}
+
+const std::vector<std::string>& analytic_model_names(std::string_view kind) {
   static const std::vector<std::string> none;
+  const auto& by_kind = names_by_kind();
   const auto it = by_kind.find(kind);
   return it == by_kind.end() ? none : it->second;
+}
+
+const AnalyticModelInfo* registered_line(const std::vector<AnalyticModelInfo>& registry, std::string_view kind,
+                                         std::string_view name) {
+  for (const auto& m : registry) {
+    if (m.kind == kind && m.name == name) return &m;
+  }
+  return nullptr;
 }
 
 std::optional<int> registered_id(const std::vector<AnalyticModelInfo>& registry, std::string_view kind,

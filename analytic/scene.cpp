@@ -20,15 +20,15 @@ std::string_view force_model_name(ForceModel model) {
   return "";
 }
 
-const MaterialRecord& MaterialCache::get(const Json& spec, const std::string& path) {
+std::shared_ptr<const MaterialRecord> MaterialCache::share(const Json& spec, const std::string& path) {
   const std::string key = spec.dump();
   {
     std::lock_guard lock(mutex_);
-    if (auto it = records_.find(key); it != records_.end()) return *it->second;
+    if (auto it = records_.find(key); it != records_.end()) return it->second;
   }
   auto record = std::make_shared<const MaterialRecord>(load_material(spec, path));
   std::lock_guard lock(mutex_);
-  return *records_.try_emplace(key, std::move(record)).first->second;
+  return records_.try_emplace(key, std::move(record)).first->second;
 }
 
 namespace {
@@ -132,14 +132,16 @@ AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
 
   const Json& material_spec = root.get("material");
   MaterialCache local_cache;
-  scene.material = (cache ? cache : &local_cache)->get(material_spec, "material");
+  MaterialCache& materials = cache ? *cache : local_cache;
+  scene.material = materials.share(material_spec, "material");
+  const MaterialRecord& record = *scene.material;
 
   // Tool
   {
     auto tool = root.get_object("tool");
     scene.rake_rad = units::deg_to_rad(tool.get_number("rake_deg", Range::open(-90.0, 90.0), "deg"));
     scene.edge_radius_m = tool.get_si_or("edge_radius_um", 0.0, Range::non_negative(), "um", units::um_to_m);
-    scene.clearance_rad = units::deg_to_rad(tool.get_number_or("clearance_deg", 7.0, Range::open(0.0, 90.0), "deg"));
+    scene.clearance_rad = units::deg_to_rad(tool.get_number_or("clearance_deg", kDefaultClearance_deg, Range::open(0.0, 90.0), "deg"));
     tool.finish();
   }
 
@@ -275,21 +277,21 @@ AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
   // Oxley needs the Johnson-Cook law even when the flow stress of the force model does not add it.
   const bool uses_oxley = scene.force == ForceModel::oxley || scene.deformation == DeformationModel::oxley;
   std::optional<JohnsonCookParams> johnson_cook;
-  if (has_term("johnson_cook") || uses_oxley) johnson_cook = johnson_cook_from_material(scene.material, "material");
+  if (has_term("johnson_cook") || uses_oxley) johnson_cook = materials.derived(record, &johnson_cook_from_material);
   if (has_term("johnson_cook") || scene.force == ForceModel::oxley) scene.flow_stress.johnson_cook = johnson_cook;
   if (has_term("hall_petch") || has_term("dislocation")) {
-    const auto micro = microstructure_from_material(scene.material, "material");
+    const auto micro = materials.derived(record, &microstructure_from_material);
     if (has_term("hall_petch")) scene.flow_stress.hall_petch = micro.hall_petch;
     if (has_term("dislocation")) scene.flow_stress.dislocation = micro.dislocation;
   }
   const double room_K =
       johnson_cook ? johnson_cook->room_temperature_K : 293.15;
   scene.workpiece_temperature_K = workpiece_temperature.value_or(room_K);
-  if (const Json* jc_group = scene.material.group("johnson_cook"); jc_group && jc_group->contains("melting_temperature_K")) {
+  if (const Json* jc_group = record.group("johnson_cook"); jc_group && jc_group->contains("melting_temperature_K")) {
     scene.flow_stress.melting_temperature_K = jc_group->at("melting_temperature_K").get<double>();
     // The microstructural terms soften with the material's Johnson-Cook thermal factor (flow_stress.hpp).
     if (!scene.flow_stress.johnson_cook && (has_term("hall_petch") || has_term("dislocation")) && jc_group->contains("m")) {
-      scene.flow_stress.thermal_softening = johnson_cook ? *johnson_cook : johnson_cook_from_material(scene.material, "material");
+      scene.flow_stress.thermal_softening = johnson_cook ? *johnson_cook : materials.derived(record, &johnson_cook_from_material);
     }
   }
   scene.flow_stress.validate("models.flow_stress");
@@ -311,12 +313,12 @@ AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
                      "johnson_cook alone with models.force = oxley (Oxley's solution uses the Johnson-Cook law; "
                      "use force merchant or liu_li with deformation oxley to add microstructure terms)");
   }
-  if (uses_oxley) scene.oxley = oxley_params_from_material(scene.material, "material", scene.flow_stress.policy);
+  if (uses_oxley) scene.oxley = oxley_params_from_material(record, "material", scene.flow_stress.policy);
 
   // The regime check needs E, H and K_c; metals carry no brittle group and get none.
-  if (const Json* brittle = scene.material.group("brittle");
+  if (const Json* brittle = record.group("brittle");
       brittle && brittle->contains("hardness_GPa") && brittle->contains("fracture_toughness_MPa_sqrt_m")) {
-    scene.critical_depth_m = critical_depth_m(brittle_properties(scene.material, "material"));
+    scene.critical_depth_m = critical_depth_m(materials.derived(record, &brittle_properties));
   }
 
   cut.finish();

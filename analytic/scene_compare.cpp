@@ -141,7 +141,10 @@ SceneComparison compare_scene(const Json& scene_document, const std::filesystem:
   SceneComparison out;
   const CsvTable table = read_csv_file(experiments_csv);
   MaterialCache materials;
-  const bool trepanning = is_trepanning_scene(scene_document);
+  const auto kind = parse_scene(scene_document, &materials);
+  // Forces that scale with a width (orthogonal cutting's; not trepanning's axial force and torque).
+  const std::optional<double> force_width_m = kind->force_width_m();
+  const bool per_width = force_width_m.has_value();
   const auto predicted_names = scene_column_names(scene_document, &materials);
   const auto has_prediction = [&](const std::string& name) {
     return std::find(predicted_names.begin(), predicted_names.end(), name) != predicted_names.end();
@@ -215,7 +218,7 @@ SceneComparison compare_scene(const Json& scene_document, const std::filesystem:
 
   // The comparison: conditions and quantities in their units; width bases explicit.
   ComparisonSpec& spec = out.comparison.spec;
-  spec.title = fmt::format("{} against {}", trepanning ? "Trepanning model" : "Analytic force model",
+  spec.title = fmt::format("{} against {}", kind->comparison_title(),
                            experiments_csv.filename().string());
   CsvBinding measured_binding;
   measured_binding.name = experiments_csv.filename().string();
@@ -226,10 +229,7 @@ SceneComparison compare_scene(const Json& scene_document, const std::filesystem:
     measured_binding.condition_si.push_back(c.unit.si);
     out.notes.push_back(fmt::format("condition {} <- CSV column {}", c.scene_path, c.column));
   }
-  const double scene_width_m = [&] {
-    if (trepanning) return 0.0;
-    return parse_analytic_scene(scene_document, &materials).width_m;
-  }();
+  const double scene_width_m = force_width_m.value_or(0.0);
   WidthBasis measured_basis = WidthBasis::total(scene_width_m);
   if (table.has_column("width_mm")) {
     measured_binding.width_column_mm = "width_mm";
@@ -237,7 +237,7 @@ SceneComparison compare_scene(const Json& scene_document, const std::filesystem:
   } else if (options.measured_width_mm) {
     measured_basis = WidthBasis::total(*options.measured_width_mm * 1e-3);
     out.notes.push_back(fmt::format("measured forces act over {} mm (--measured-width-mm)", *options.measured_width_mm));
-  } else if (!trepanning) {
+  } else if (per_width) {
     out.notes.push_back(fmt::format("measured forces assumed to act over the scene's width, {} mm (the CSV has no "
                                     "width_mm column; set --measured-width-mm otherwise)",
                                     units::m_to_mm(scene_width_m)));
@@ -247,20 +247,20 @@ SceneComparison compare_scene(const Json& scene_document, const std::filesystem:
     spec.quantities.push_back({key, label_of(key), unit});
     measured_binding.quantity_columns.push_back(q.column);
     measured_binding.quantity_si.push_back(q.unit.si);
-    const bool force = unit.suffix == "N" && !trepanning;
+    const bool force = unit.suffix == "N" && per_width;
     measured_binding.bases.push_back(force ? measured_basis : WidthBasis::none());
     out.notes.push_back(fmt::format("quantity {} <- CSV column {}", q.prediction_column, q.column));
   }
   const DataSet measured = dataset_from_csv(table, spec, measured_binding);
   const bool widths_differ =
-      !trepanning && (!measured_binding.width_column_mm.empty() ||
+      per_width && (!measured_binding.width_column_mm.empty() ||
                       std::abs(measured_basis.width_m - scene_width_m) > 1e-12 * scene_width_m);
   if (widths_differ) spec.views = {WidthView::as_published, WidthView::per_unit_width};
 
   // With --fit, a trepanning scene's groups are fitted to the measured rows.
   Json document = scene_document;
   if (options.fit) {
-    if (!trepanning) {
+    if (!kind->fits_lumped_groups()) {
       throw InputError("--fit", "(given)", "a trepanning scene: the fit calibrates its two lumped groups");
     }
     const TrepanningScene scene = parse_trepanning_scene(document);
@@ -331,7 +331,7 @@ SceneComparison compare_scene(const Json& scene_document, const std::filesystem:
   DataSet predicted;
   predicted.name = options.fit ? "model (fitted)" : "model";
   for (std::size_t q = 0; q < quantities.size(); ++q) {
-    const bool force = spec.quantities[q].unit.suffix == "N" && !trepanning;
+    const bool force = spec.quantities[q].unit.suffix == "N" && per_width;
     predicted.bases.push_back(force ? WidthBasis::total(scene_width_m) : WidthBasis::none());
   }
   for (const auto& row : measured.rows) {

@@ -35,7 +35,8 @@ def sweep(scene, /, *, vary, frame=False, **overrides):
     the prediction's columns (float64 where numeric, NaN at a refused point; object arrays of str or None for
     text; 'guards' and 'warnings' lists of str), and 'error' (None where the point was predicted, the message
     where the models refused it). frame=True returns a pandas DataFrame of the same columns (ImportError when
-    pandas is not installed). A key the scene does not read raises InputError.
+    pandas is not installed). A key the scene does not read raises InputError. The points run in parallel
+    (OpenMP's threads), through the same library sweep as kerf-forces sweep.
     """
     columns = _sweep(scene, vary, **overrides)
     if not frame:

@@ -28,6 +28,7 @@
 #include "kerf/analytic/scene.hpp"
 #include "kerf/analytic/registry.hpp"
 #include "kerf/analytic/scene_compare.hpp"
+#include "kerf/analytic/sweep.hpp"
 #include "kerf/csv_table.hpp"
 #include "kerf/dem/scene.hpp"
 #include "kerf/error.hpp"
@@ -142,19 +143,11 @@ py::list string_list(const std::vector<std::string>& items) {
 /// One scene's prediction as Python: the CSV row's columns (floats, str, None), with 'guards' and 'warnings'
 /// as lists of str (the prediction's own, not the CSV's joined text, whose warnings may hold "; ").
 py::dict evaluate_row(const Json& document, kerf::MaterialCache* cache) {
-  if (kerf::is_trepanning_scene(document)) {
-    py::dict row = columns_dict(kerf::evaluate_scene_columns(document, cache));
-    row["guards"] = py::list();
-    row["warnings"] = py::list();
-    return row;
-  }
-  const kerf::AnalyticScene scene = kerf::parse_analytic_scene(document, cache);
-  const kerf::Prediction p = kerf::predict(scene);
-  py::dict row = columns_dict(kerf::prediction_columns(scene, p));
-  std::vector<std::string> guards;
-  for (auto guard : p.guards.fired()) guards.emplace_back(kerf::guard_name(guard));
-  row["guards"] = string_list(guards);
-  row["warnings"] = string_list(p.warnings);
+  const auto scene = kerf::parse_scene(document, cache);
+  scene->predict();
+  py::dict row = columns_dict(kerf::scene_columns(*scene));
+  row["guards"] = string_list(scene->guard_names());
+  row["warnings"] = string_list(scene->warnings());
   return row;
 }
 
@@ -175,57 +168,56 @@ std::vector<py::object> axis_values(const std::string& key, const py::handle& va
   return out;
 }
 
+/// The library's sweep (sweep.hpp: the same grid, checks, parallel evaluation and error policy as kerf-forces
+/// sweep), its rows as numpy columns.
 py::dict sweep(const py::object& scene, const py::dict& vary, const py::kwargs& overrides) {
   const SceneInput input = scene_input(scene, overrides);
   std::vector<std::string> keys;
   std::vector<std::vector<py::object>> axes;
-  std::size_t n_points = 1;
+  std::vector<kerf::SweepAxis> grid_axes;
   for (const auto& [key, values] : vary) {
     keys.push_back(py::str(key).cast<std::string>());
     axes.push_back(axis_values(keys.back(), values));
-    n_points *= axes.back().size();
+    std::vector<std::string> texts;
+    for (const auto& value : axes.back()) texts.push_back(json_dumps(value));
+    grid_axes.push_back(kerf::sweep_axis_from_texts(keys.back(), std::move(texts)));
   }
   if (keys.empty()) throw kerf::InputError("vary", "{}", "at least one key with its values");
-  kerf::MaterialCache cache;
-  const std::vector<std::string> names = kerf::scene_column_names(input.document, &cache);
-  for (std::size_t a = 0; a < keys.size(); ++a)
-    kerf::check_varied_key(input.document, keys[a] + "=" + json_dumps(axes[a][0]), "vary", &cache);
+  const kerf::SweepGrid grid(input.document, std::move(grid_axes), "vary");
+  std::vector<kerf::SweepRow> rows;
+  {
+    py::gil_scoped_release release;
+    rows = grid.run(/*lists=*/true);
+  }
+  const std::vector<std::string>& names = grid.column_names();
   std::vector<std::string> header = keys;
   header.insert(header.end(), names.begin(), names.end());
-  for (const char* listed : {"guards", "warnings"})  // every row has them (evaluate_row), trepanning's too
+  for (const char* listed : {"guards", "warnings"})  // every row has them, trepanning's too
     if (std::find(header.begin(), header.end(), listed) == header.end()) header.emplace_back(listed);
   header.push_back("error");
   std::vector<std::vector<py::object>> columns(header.size());
-  for (std::size_t i = 0; i < n_points; ++i) {
-    Json document = input.document;
-    std::size_t index = i;
-    std::vector<py::object> x(axes.size());
-    for (std::size_t a = axes.size(); a-- > 0;) {
-      x[a] = axes[a][index % axes[a].size()];
-      index /= axes[a].size();
-    }
-    py::dict row;
-    std::string error;
-    try {
-      for (std::size_t a = 0; a < axes.size(); ++a) {
-        kerf::apply_override(document, keys[a] + "=" + json_dumps(x[a]), "vary");
-      }
-      row = evaluate_row(document, &cache);
-    } catch (const kerf::InputError& e) {
-      error = e.what();
-    } catch (const kerf::ModelError& e) {
-      error = e.what();
-    }
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const kerf::SweepRow& row = rows[i];
     for (std::size_t a = 0; a < axes.size(); ++a) {
-      columns[a].push_back(py::isinstance<py::int_>(x[a]) ? py::float_(x[a].cast<double>()) : x[a]);
+      const py::object& x = axes[a][grid.value_index(i, a)];
+      columns[a].push_back(py::isinstance<py::int_>(x) ? py::float_(x.cast<double>()) : x);
+    }
+    py::dict cells;
+    if (row.error.empty()) {
+      kerf::Columns named;
+      const auto fields = kerf::split_cells(row.cells);
+      for (std::size_t c = 0; c < names.size(); ++c) named.emplace_back(names[c], std::string(fields.at(c)));
+      cells = columns_dict(named);
+      cells["guards"] = string_list(row.guards);
+      cells["warnings"] = string_list(row.warnings);
     }
     for (std::size_t c = keys.size(); c + 1 < header.size(); ++c) {
       const bool listed = header[c] == "guards" || header[c] == "warnings";
-      columns[c].push_back(row.contains(header[c]) ? py::reinterpret_borrow<py::object>(row[py::str(header[c])])
-                           : listed                ? py::object(py::list())  // a refused point: none fired
-                                                   : py::object(py::none()));
+      columns[c].push_back(cells.contains(header[c]) ? py::reinterpret_borrow<py::object>(cells[py::str(header[c])])
+                           : listed                  ? py::object(py::list())  // a refused point: none fired
+                                                     : py::object(py::none()));
     }
-    columns.back().push_back(error.empty() ? py::object(py::none()) : py::object(py::str(error)));
+    columns.back().push_back(row.error.empty() ? py::object(py::none()) : py::object(py::str(row.error)));
   }
   return column_arrays(header, columns, {"error"});
 }

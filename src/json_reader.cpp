@@ -39,6 +39,11 @@ double check_number(double value, const std::string& path, const Range& range, s
   return value;
 }
 
+double check_field(double value, const std::string& path, std::string_view field, const Range& range,
+                   std::string_view unit) {
+  return range.contains(value) ? value : check_number(value, fmt::format("{}.{}", path, field), range, unit);
+}
+
 namespace {
 std::size_t edit_distance(std::string_view a, std::string_view b) {
   std::vector<std::size_t> row(b.size() + 1);
@@ -96,8 +101,16 @@ std::string ObjectReader::key_path(std::string_view key) const {
 
 bool ObjectReader::has(std::string_view key) const { return object_.contains(key); }
 
+bool ObjectReader::knows(std::string_view key) const {
+  return std::find(known_.begin(), known_.end(), key) != known_.end();
+}
+
+void ObjectReader::mark_known(std::string_view key) {
+  if (!knows(key)) known_.emplace_back(key);
+}
+
 const Json* ObjectReader::find(std::string_view key) {
-  known_.emplace(key);
+  mark_known(key);
   auto it = object_.find(key);
   return it == object_.end() ? nullptr : &*it;
 }
@@ -108,7 +121,7 @@ const Json& ObjectReader::get(std::string_view key) {
     // A key of the object that nothing has read yet and is near this one ("tools" for "tool") is its misspelling.
     std::vector<std::string> unread;
     for (const auto& [name, ignored] : object_.items())
-      if (!known_.contains(name)) unread.push_back(name);
+      if (!knows(name)) unread.push_back(name);
     std::string expected = "a value for this required key";
     if (auto near = nearest_choice(key, unread)) expected += fmt::format(" (the scene has '{}': did you mean '{}'?)", *near, key);
     throw InputError(key_path(key), "(missing)", expected);
@@ -132,21 +145,24 @@ std::string not_a_number(const Json& value, const Range& range, std::string_view
                                 text.substr(0, static_cast<std::size_t>(end - text.c_str())));
 }
 
-double as_number(const Json& value, const std::string& path, const Range& range, std::string_view unit) {
-  if (!value.is_number()) throw InputError(path, json_value_text(value), not_a_number(value, range, unit));
-  return check_number(value.get<double>(), path, range, unit);
+/// The number at `key` of `reader`, checked against `range`; the key's path is built only for a message.
+double as_number(const Json& value, const ObjectReader& reader, std::string_view key, const Range& range,
+                 std::string_view unit) {
+  if (!value.is_number()) throw InputError(reader.key_path(key), json_value_text(value), not_a_number(value, range, unit));
+  const double number = value.get<double>();
+  return range.contains(number) ? number : check_number(number, reader.key_path(key), range, unit);
 }
 }  // namespace
 
 double ObjectReader::get_number(std::string_view key, const Range& range, std::string_view unit) {
-  return as_number(get(key), key_path(key), range, unit);
+  return as_number(get(key), *this, key, range, unit);
 }
 
 std::optional<double> ObjectReader::get_optional_number(std::string_view key, const Range& range,
                                                         std::string_view unit) {
   const Json* value = find(key);
   if (!value || value->is_null()) return std::nullopt;
-  return as_number(*value, key_path(key), range, unit);
+  return as_number(*value, *this, key, range, unit);
 }
 
 double ObjectReader::get_number_or(std::string_view key, double fallback, const Range& range,
@@ -155,23 +171,24 @@ double ObjectReader::get_number_or(std::string_view key, double fallback, const 
 }
 
 namespace {
-double checked_si(double given, double (*to_si)(double), const std::string& path, std::string_view unit) {
+double checked_si(double given, double (*to_si)(double), const ObjectReader& reader, std::string_view key,
+                  std::string_view unit) {
   const double si = to_si(given);
   if (std::isfinite(si) && (given == 0.0 || std::isnormal(si))) return si;
-  throw InputError(path, format_value(given),
+  throw InputError(reader.key_path(key), format_value(given),
                    fmt::format("a value in {} that stays a finite, non-zero number in SI units (it becomes {})", unit,
                                format_value(si)));
 }
 }  // namespace
 
 double ObjectReader::get_si(std::string_view key, const Range& range, std::string_view unit, double (*to_si)(double)) {
-  return checked_si(get_number(key, range, unit), to_si, key_path(key), unit);
+  return checked_si(get_number(key, range, unit), to_si, *this, key, unit);
 }
 
 double ObjectReader::get_si_or(std::string_view key, double fallback, const Range& range, std::string_view unit,
                                double (*to_si)(double)) {
   const auto value = get_optional_number(key, range, unit);
-  return value ? checked_si(*value, to_si, key_path(key), unit) : to_si(fallback);
+  return value ? checked_si(*value, to_si, *this, key, unit) : to_si(fallback);
 }
 
 int ObjectReader::get_int_or(std::string_view key, int fallback, int lo, int hi) {
@@ -223,13 +240,15 @@ std::optional<ObjectReader> ObjectReader::find_object(std::string_view key) {
   return ObjectReader(*value, key_path(key));
 }
 
-void ObjectReader::ignore(std::string_view key) { known_.emplace(key); }
+void ObjectReader::ignore(std::string_view key) { mark_known(key); }
 
 void ObjectReader::finish(const std::vector<std::string>& also_valid) const {
-  std::vector<std::string> valid(known_.begin(), known_.end());
-  valid.insert(valid.end(), also_valid.begin(), also_valid.end());
   for (const auto& [key, value] : object_.items()) {
-    if (known_.contains(key)) continue;
+    if (knows(key)) continue;
+    // The valid keys in sorted order (the order of the suggestion's ties), then also_valid.
+    std::vector<std::string> valid = known_;
+    std::sort(valid.begin(), valid.end());
+    valid.insert(valid.end(), also_valid.begin(), also_valid.end());
     std::string expected = "a known key";
     if (auto near = nearest_choice(key, valid)) expected += fmt::format(" (did you mean '{}'?)", *near);
     throw InputError(key_path(key), json_value_text(value), expected + "; see docs/scenes.md");
@@ -337,6 +356,12 @@ Json parse_override_value(const std::string& text) {
 
 void apply_override(Json& document, const std::string& assignment, const std::string& option_name) {
   const auto eq = assignment.find('=');
+  apply_override(document, assignment,
+                 parse_override_value(eq == std::string::npos ? std::string() : assignment.substr(eq + 1)), option_name);
+}
+
+void apply_override(Json& document, const std::string& assignment, Json value, const std::string& option_name) {
+  const auto eq = assignment.find('=');
   if (eq == std::string::npos || eq == 0) {
     throw InputError(option_name, assignment, "key.path=value, e.g. tool.rake_deg=-5");
   }
@@ -356,7 +381,7 @@ void apply_override(Json& document, const std::string& assignment, const std::st
     if (node->is_null()) *node = Json::object();
     start = dot + 1;
   }
-  *node = parse_override_value(assignment.substr(eq + 1));
+  *node = std::move(value);
 }
 
 void blame_the_key_set(const InputError& e, const std::vector<std::string>& assignments) {

@@ -41,6 +41,10 @@ struct Range {
 
 /// Checks a finite number against a range; throws InputError naming `path` otherwise.
 double check_number(double value, const std::string& path, const Range& range, std::string_view unit);
+/// check_number for the field `field` of the object at `path` (path "material.johnson_cook", field "A_MPa"): the
+/// field's path is built only for a message (validation that runs at every point of a sweep).
+double check_field(double value, const std::string& path, std::string_view field, const Range& range,
+                   std::string_view unit);
 
 /// Returns the choice closest to `word` (edit distance) if it is close enough to be a likely typo.
 std::optional<std::string> nearest_choice(std::string_view word, const std::vector<std::string>& choices);
@@ -88,9 +92,12 @@ class ObjectReader {
   void finish(const std::vector<std::string>& also_valid = {}) const;
 
  private:
+  bool knows(std::string_view key) const;
+  void mark_known(std::string_view key);
+
   const Json& object_;
   std::string path_;
-  std::set<std::string, std::less<>> known_;  ///< every key asked for, present or not
+  std::vector<std::string> known_;  ///< every key asked for, present or not (a few: a list is cheaper than a set)
 };
 
 /// Parses the text of a --set value: JSON if it parses (numbers, true, "quoted", [..]), else a string.
@@ -99,6 +106,9 @@ Json parse_override_value(const std::string& text);
 /// Applies `path=value` (dotted path) to a JSON document, creating intermediate objects. Throws
 /// InputError when the text has no '=' or the path crosses a non-object value.
 void apply_override(Json& document, const std::string& assignment, const std::string& option_name = "--set");
+/// apply_override with the value already parsed (`value` is parse_override_value of the text after '='; the
+/// assignment's text is only for messages): a sweep parses each axis value once, not once per point.
+void apply_override(Json& document, const std::string& assignment, Json value, const std::string& option_name);
 
 /// Throws `e`, or the same fault told from its other key (InputError::or_from) when the assignments
 /// ("key.path=value", as for apply_override) set that key and not `e`'s: the key the user changed is the one named.

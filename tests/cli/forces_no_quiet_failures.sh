@@ -17,6 +17,9 @@ expect 2 "--vary = tools.rake_deg: expected a known key (did you mean 'tool'?)" 
 expect 2 "--vary = cut.uncut_chip_thickness_nm: expected a known key" -- \
   sweep "$scene" --vary tool.rake_deg=0,5 --vary cut.uncut_chip_thickness_nm=10:100:3 --csv "$tmp/s.csv"
 expect 2 "'material' is not an object" -- sweep "$scene" --vary material.density_kg_per_m3=1,2 --csv "$tmp/s.csv"
+# The same for the other scene kind (one library sweep for every kind, issue 39).
+expect 2 "--vary = cut.feed_rate_um_per_min: expected a known key (did you mean 'feed_rate_um_per_s'?)" -- \
+  sweep "$k9" --vary cut.feed_rate_um_per_min=10,20 --csv "$tmp/s.csv"
 [ ! -e "$tmp/s.csv" ] || fail "a sweep with an unknown key wrote its CSV"
 # A known key whose first value the scene refuses: that point is refused, the sweep goes on (exit 0).
 "$bin" sweep "$scene" --vary tool.rake_deg=95,0 --csv "$tmp/s.csv" 2>"$tmp/err" || fail "refused value: $(cat "$tmp/err")"

@@ -130,6 +130,27 @@ def test_sweep_refuses_a_key_the_scene_does_not_read():
     assert math.isnan(table["cutting_force_N"][0]) and not math.isnan(table["cutting_force_N"][1])
 
 
+def test_sweep_is_the_cli_sweep():
+    # One library sweep (issue 39): the same unknown-key refusal for either scene kind, and the same numbers as
+    # kerf-forces sweep's CSV, refused points included.
+    k9 = SOURCE / "validation" / "k9_trepanning" / "scene.json"
+    with pytest.raises(kerf.InputError) as caught:
+        kerf.sweep(k9, vary={"cut.feed_rate_um_per_min": [10, 20]})
+    assert caught.value.field == "vary" and "feed_rate_um_per_s" in str(caught.value)
+    out = pathlib.Path(os.environ.get("TMPDIR", "/tmp")) / f"kerf_sweep_{os.getpid()}.csv"
+    subprocess.run([str(TOOLS / "kerf-forces"), "sweep", str(ORTHOGONAL), "--vary", "tool.rake_deg=95,0,10",
+                    "--vary", "cut.uncut_chip_thickness_um=0.1,0.5", "--csv", str(out)], check=True,
+                   capture_output=True)
+    rows = list(csv.DictReader(out.open()))
+    out.unlink()
+    table = kerf.sweep(ORTHOGONAL, vary={"tool.rake_deg": [95, 0, 10], "cut.uncut_chip_thickness_um": [0.1, 0.5]})
+    assert len(rows) == len(table["error"]) == 6
+    for i, row in enumerate(rows):
+        assert (table["error"][i] or "") == row["error"]
+        for column in ("cutting_force_N", "thrust_force_N", "shear_angle_deg"):
+            assert (math.isnan(table[column][i]) if row[column] == "" else table[column][i] == float(row[column]))
+
+
 def test_compare_refuses_a_csv_without_conditions_unless_pooled(tmp_path):
     csv_path = tmp_path / "nocond.csv"
     csv_path.write_text("depth_um,cutting_force_N\n0.1,1.5\n0.2,2.5\n")

@@ -1,15 +1,23 @@
 #pragma once
-// One entry point for every analytic scene kind that kerf-forces runs: orthogonal cutting (models.force
-// merchant, liu_li, oxley or auto; scene.hpp) and the fixed-abrasive trepanning drill (models.force =
-// trepanning; trepanning_scene.hpp). Sweeps and comparisons call these and need not know the kind.
+// One interface for every analytic scene kind that kerf-forces runs: orthogonal cutting (models.force merchant,
+// liu_li, oxley or auto; scene.hpp, orthogonal_kind.cpp) and the fixed-abrasive trepanning drill
+// (models.force = trepanning; trepanning_scene.hpp, trepanning_kind.cpp). parse_scene picks the kind through
+// the registry line of the scene's models.force (registry.cpp): the CLI, the sweep, comparisons and Python
+// call the interface and never ask which kind a scene is. How to add a kind: docs/analytic-models.md.
 //
 //   kerf::MaterialCache cache;
-//   kerf::Columns row = kerf::evaluate_scene_columns(document, &cache);   // [("axial_force_N", "440.1"), ...]
+//   auto scene = kerf::parse_scene(document, &cache);     // InputError naming the first bad field
+//   scene->predict();                                     // ModelError when a model fails
+//   kerf::Columns row = kerf::scene_columns(*scene);      // [("axial_force_N", "440.1"), ...]
+#include <cstdio>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "kerf/analytic/cells.hpp"
+#include "kerf/analytic/registry.hpp"
 #include "kerf/analytic/scene.hpp"
 #include "kerf/analytic/trepanning.hpp"
 #include "kerf/analytic/trepanning_scene.hpp"
@@ -17,15 +25,46 @@
 
 namespace kerf {
 
-using Columns = std::vector<std::pair<std::string, std::string>>;
+/// A parsed analytic scene of some kind, and after predict() its prediction.
+class AnalyticCase {
+ public:
+  virtual ~AnalyticCase() = default;
+  /// Runs the kind's models. Throws InputError for input the models cannot accept, ModelError when one fails.
+  virtual void predict() = 0;
+  /// The CSV row in column order. Before predict(): the column names (the scene's model choices fix them),
+  /// with the cells of an empty prediction.
+  virtual void write_cells(CellWriter& out) const = 0;
+  /// The human-readable report of `kerf-forces predict` (after predict()).
+  virtual void print(std::FILE* text, const std::string& scene_path) const = 0;
+  /// The report of `kerf-forces regime`: the ductile-brittle critical depth and the regime of the scene's cut.
+  virtual void print_regime(std::FILE* text, const std::string& scene_path) const = 0;
+  /// The guards that fired and the validity warnings, as lists (after predict(); empty where the kind has none).
+  virtual std::vector<std::string> guard_names() const { return {}; }
+  virtual std::vector<std::string> warnings() const { return {}; }
+  /// What a comparison report calls the model ("Analytic force model").
+  virtual std::string_view comparison_title() const = 0;
+  /// The width the forces act over (a comparison scales measured forces to it); none where the forces do not
+  /// scale with a width (trepanning's axial force and torque).
+  virtual std::optional<double> force_width_m() const { return std::nullopt; }
+  /// Whether `kerf-forces compare --fit` can calibrate the kind's lumped groups (scene_compare.cpp).
+  virtual bool fits_lumped_groups() const { return false; }
+};
 
-/// True when the document's models.force is "trepanning".
-bool is_trepanning_scene(const Json& document);
+/// The scene of the kind its models.force names (no models.force: orthogonal cutting, force auto). A kerf-dem
+/// scene (one with a "kind") is refused first. Throws InputError naming the first bad field.
+std::unique_ptr<AnalyticCase> parse_scene(const Json& document, MaterialCache* cache);
+
+/// The two kinds' builders (registry.cpp names them on its force lines).
+std::unique_ptr<AnalyticCase> build_orthogonal_scene(const Json& document, MaterialCache* cache);
+std::unique_ptr<AnalyticCase> build_trepanning_scene(const Json& document, MaterialCache* cache);
+
+/// The case's CSV row as (name, text) pairs.
+Columns scene_columns(const AnalyticCase& scene);
 
 /// The CSV row of a trepanning prediction (pass default forces for the column names alone).
 Columns trepanning_columns(const TrepanningScene& scene, const TrepanningForces& forces);
 
-/// Parses, predicts and formats one scene of either kind. Throws InputError / ModelError like the models.
+/// Parses, predicts and formats one scene of any kind. Throws InputError / ModelError like the models.
 Columns evaluate_scene_columns(const Json& document, MaterialCache* cache);
 
 /// The points of a sweep grid (row-major, `stride` between neighbours along the uncut chip thickness axis of

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "kerf/analytic/cells.hpp"
 #include "kerf/analytic/flow_stress.hpp"
 #include "kerf/analytic/guards.hpp"
 #include "kerf/analytic/liu_li.hpp"
@@ -59,6 +60,8 @@ Prediction predict(const AnalyticScene& scene);
 
 /// One CSV row: (column name with unit, formatted value). The column set depends only on the scene's
 /// model choices, so every row of a sweep has the same columns.
-std::vector<std::pair<std::string, std::string>> prediction_columns(const AnalyticScene& scene, const Prediction& p);
+Columns prediction_columns(const AnalyticScene& scene, const Prediction& p);
+/// The same row written cell by cell (what prediction_columns gathers; the sweep writes it straight to CSV).
+void write_prediction_cells(const AnalyticScene& scene, const Prediction& p, CellWriter& out);
 
 }  // namespace kerf

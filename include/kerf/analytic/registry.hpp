@@ -13,7 +13,17 @@
 #include <string_view>
 #include <vector>
 
+#include <memory>
+
+#include "kerf/json_reader.hpp"
+
 namespace kerf {
+
+class AnalyticCase;   // evaluate.hpp
+class MaterialCache;  // scene.hpp
+
+/// Builds the scene kind a force line names from a document (evaluate.hpp's parse_scene calls it).
+using SceneBuilder = std::unique_ptr<AnalyticCase> (*)(const Json& document, MaterialCache* cache);
 
 struct AnalyticModelInfo {
   std::string_view kind;     ///< the scene key under `models` ("force", "flow_stress", ...)
@@ -21,11 +31,21 @@ struct AnalyticModelInfo {
   std::string_view summary;  ///< what it is, with its source
   std::string_view needs;    ///< what the scene and material must provide
   int id = -1;               ///< the value of the kind's enum this name constructs; -1: none (handled by name)
+  SceneBuilder build = nullptr;  ///< force lines: the scene kind that runs this model (parse_scene)
 };
 
 const std::vector<AnalyticModelInfo>& analytic_models();
+/// Adds a line to the registry (a model or scene kind that lives outside registry.cpp: a test's toy, a
+/// plug-in). Call it before the registry is read by other threads (a static initialiser); returns true so that
+/// `static const bool registered = kerf::register_analytic_model({...});` registers at start-up. A kind and name
+/// already registered is a std::logic_error.
+bool register_analytic_model(const AnalyticModelInfo& line);
 /// The names registered under one kind, in registry order (built once).
 const std::vector<std::string>& analytic_model_names(std::string_view kind);
+
+/// The line of `kind` and `name` in `registry`; nullptr when none.
+const AnalyticModelInfo* registered_line(const std::vector<AnalyticModelInfo>& registry, std::string_view kind,
+                                         std::string_view name);
 
 /// The enum value registered for `kind` and `name` in `registry` (a line's own id, never its position);
 /// nullopt when no line has that kind and name, or the line has no enum value.

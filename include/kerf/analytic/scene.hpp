@@ -6,6 +6,7 @@
 //   kerf::apply_override(doc, "tool.edge_radius_um=0.2");
 //   kerf::AnalyticScene scene = kerf::parse_analytic_scene(doc);
 //   kerf::Prediction p = kerf::predict(scene);                      // predict.hpp
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -23,6 +24,7 @@
 #include "kerf/analytic/shear_angle.hpp"
 #include "kerf/analytic/thermal.hpp"
 #include "kerf/material.hpp"
+#include "kerf/units.hpp"
 
 namespace kerf {
 
@@ -31,6 +33,8 @@ enum class ForceModel { merchant, liu_li, oxley };
 /// r / t0 below which the edge changes the force by only a few percent: models.force = auto takes the
 /// sharp-tool model there, and the sharp-tool models warn above it.
 inline constexpr double kSharpEdgeRatio = 0.05;
+/// tool.clearance_deg when the scene gives none (recorded, not used by the ductile models).
+inline constexpr double kDefaultClearance_deg = 7.0;
 enum class DeformationModel { room_temperature, given, oxley };
 enum class ShearAngleSource { merchant, lee_shaffer, chip_ratio };
 enum class TurningThickness { equivalent, maximum };
@@ -51,12 +55,12 @@ struct TurningScene {
 };
 
 struct AnalyticScene {
-  MaterialRecord material;
+  std::shared_ptr<const MaterialRecord> material;  ///< shared with the MaterialCache (a sweep's points share it)
 
   // Tool
   double rake_rad = 0.0;
   double edge_radius_m = 0.0;
-  double clearance_rad = 0.0;
+  double clearance_rad = units::deg_to_rad(kDefaultClearance_deg);  ///< tool.clearance_deg
 
   // Cut (for turning, thickness and width come from the round-nose chip)
   double uncut_chip_thickness_m = 0.0;
@@ -95,11 +99,28 @@ struct AnalyticScene {
 /// scenes on several threads.
 class MaterialCache {
  public:
-  const MaterialRecord& get(const Json& spec, const std::string& path);
+  const MaterialRecord& get(const Json& spec, const std::string& path) { return *share(spec, path); }
+  /// The record as get() gives it, shared.
+  std::shared_ptr<const MaterialRecord> share(const Json& spec, const std::string& path);
+
+  /// derive(record, "material") (johnson_cook_from_material, ...), computed once per record and function:
+  /// `record` must be one this cache returned. A failure is not kept: the next call throws it again.
+  template <class T>
+  T derived(const MaterialRecord& record, T (*derive)(const MaterialRecord&, const std::string&)) {
+    const auto key = std::make_pair(static_cast<const void*>(&record), reinterpret_cast<std::uintptr_t>(derive));
+    {
+      std::lock_guard lock(mutex_);
+      if (auto it = derived_.find(key); it != derived_.end()) return *static_cast<const T*>(it->second.get());
+    }
+    auto value = std::make_shared<const T>(derive(record, "material"));
+    std::lock_guard lock(mutex_);
+    return *static_cast<const T*>(derived_.try_emplace(key, std::move(value)).first->second.get());
+  }
 
  private:
   std::mutex mutex_;
   std::map<std::string, std::shared_ptr<const MaterialRecord>> records_;
+  std::map<std::pair<const void*, std::uintptr_t>, std::shared_ptr<const void>> derived_;
 };
 
 /// A kerf-dem scene (one with a "kind") given to the analytic models: InputError naming its kind and the program

@@ -1,0 +1,155 @@
+// The sweep's reports beside its CSV: the figure (kerf-forces sweep --plot) and the warnings about forces that
+// fall as the chip thickens.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <filesystem>
+
+#include "kerf/analytic/evaluate.hpp"
+#include "kerf/analytic/sweep.hpp"
+#include "kerf/comparison_config.hpp"
+#include "kerf/error.hpp"
+#include "kerf/plot.hpp"
+
+namespace kerf {
+
+std::vector<std::optional<double>> column_numbers(const SweepGrid& grid, const std::vector<SweepRow>& rows,
+                                                  std::string_view name) {
+  std::vector<std::optional<double>> values(rows.size());
+  const auto& names = grid.column_names();
+  const auto column = std::find(names.begin(), names.end(), name);
+  if (column == names.end()) return values;
+  const auto c = static_cast<std::size_t>(column - names.begin());
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (rows[i].error.empty()) values[i] = cell_number(rows[i].cells, c);
+  }
+  return values;
+}
+
+void plot_sweep(const SweepGrid& grid, const std::vector<SweepRow>& rows, const std::string& path,
+                const std::string& scene_path) {
+  const Json& base = grid.base();
+  MaterialCache& materials = grid.materials();
+  const auto& names = grid.column_names();
+  const std::size_t n_points = grid.size();
+  const bool x_log = grid.axes()[0].log_spacing;
+  std::vector<std::string> axis_paths;
+  std::vector<std::vector<double>> axis_values;
+  for (const auto& axis : grid.axes()) axis_paths.push_back(axis.key), axis_values.push_back(axis.numbers);
+  const auto coordinates = [&](std::size_t i) {
+    std::vector<double> x(axis_values.size());
+    for (std::size_t a = 0; a < x.size(); ++a) x[a] = axis_values[a][grid.value_index(i, a)];
+    return x;
+  };
+  // The two force columns' numbers, read once.
+  std::vector<std::vector<std::optional<double>>> force_numbers;
+  for (const char* force : {"cutting_force_N", "thrust_force_N"}) force_numbers.push_back(column_numbers(grid, rows, force));
+  FigureSpec fig;
+  fig.x_log = x_log;
+  fig.x_label = key_label(axis_paths[0]);
+  std::string material;
+  try {
+    const auto& record = materials.get(base.at("material"), "material");
+    // The title, where it fits the figure's width beside the scene's file name; else the library name.
+    material = record.title.empty() || record.title.size() > 40 ? record.name : record.title;
+  } catch (const std::exception&) {
+    material = "material?";  // the scene's own errors are the sweep's to report, not the figure's
+  }
+  fig.title = fmt::format("{}: {}", material, std::filesystem::path(scene_path).filename().string());
+  // The width the forces are for: the scene's, stated; per mm of width where the width is swept.
+  const auto width_axis =
+      static_cast<std::size_t>(std::find(axis_paths.begin(), axis_paths.end(), "cut.width_mm") - axis_paths.begin());
+  const Json* width = nullptr;
+  if (base.contains("cut") && base["cut"].is_object() && base["cut"].contains("width_mm")) width = &base["cut"]["width_mm"];
+  const bool per_mm = width_axis < axis_paths.size();
+  if (per_mm) {
+    fig.y_label = "force per mm of width (N/mm)";
+  } else if (width && width->is_number()) {
+    fig.y_label = fmt::format("force for a width of {:g} mm (N)", width->get<double>());
+  } else {
+    fig.y_label = "force for the cut's engaged width (N)";
+  }
+  const auto column = [&](const std::string& name) {
+    return static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
+  };
+  // Colours 0-4 and 6: grey (5) is the line-style key's.
+  constexpr std::array<int, 6> kColors = {0, 1, 2, 3, 4, 6};
+  const std::size_t n_second = axis_values.size() > 1 ? std::min<std::size_t>(kColors.size(), axis_values[1].size()) : 1;
+  std::vector<PlotSeries> keys;
+  for (std::size_t k = 0; k < n_second; ++k) {
+    bool drawn = false;
+    for (const auto& [name, dashed] : {std::pair{std::string("cutting_force_N"), false}, std::pair{std::string("thrust_force_N"), true}}) {
+      const std::size_t c = column(name);
+      if (c == names.size()) continue;
+      PlotSeries series;
+      series.style = dashed ? SeriesStyle::dashed_line : SeriesStyle::line;
+      series.color = kColors[k];
+      for (std::size_t i = 0; i < n_points; ++i) {
+        const auto x = coordinates(i);
+        if (axis_values.size() > 1 && x[1] != axis_values[1][k]) continue;
+        bool first_of_the_rest = true;  // further axes: their first value
+        for (std::size_t a = 2; a < axis_values.size(); ++a) first_of_the_rest = first_of_the_rest && x[a] == axis_values[a][0];
+        if (!first_of_the_rest) continue;
+        const auto& value = force_numbers[dashed ? 1 : 0][i];
+        if (!value) continue;  // refused
+        series.x.push_back(x[0]);
+        series.y.push_back(*value / (per_mm ? x[width_axis] : 1.0));
+      }
+      if (series.x.empty()) continue;
+      drawn = true;
+      fig.series.push_back(std::move(series));
+    }
+    if (drawn && axis_values.size() > 1) {
+      const std::string label = key_label(axis_paths[1]);
+      const auto open = label.rfind(" (");
+      PlotSeries key;
+      key.label = open == std::string::npos
+                      ? fmt::format("{} = {:g}", label, axis_values[1][k])
+                      : fmt::format("{} = {:g} {}", label.substr(0, open), axis_values[1][k],
+                                    label.substr(open + 2, label.size() - open - 3));
+      key.style = SeriesStyle::line;
+      key.color = kColors[k];
+      key.legend_only = true;
+      keys.push_back(std::move(key));
+    }
+  }
+  if (fig.series.empty()) throw InputError("--plot", path, "a sweep with cutting_force_N or thrust_force_N values");
+  for (const auto& [label, dashed] : {std::pair{"cutting force", false}, std::pair{"thrust force", true}}) {
+    PlotSeries key;
+    key.label = label;
+    key.style = dashed ? SeriesStyle::dashed_line : SeriesStyle::line;
+    key.color = 5;
+    key.legend_only = true;
+    keys.push_back(std::move(key));
+  }
+  fig.series.insert(fig.series.end(), keys.begin(), keys.end());
+  fig.legend_position = "outside_right";
+  render_png(fig, path);
+}
+
+std::vector<std::string> falling_force_warnings(const SweepGrid& grid, const std::vector<SweepRow>& rows) {
+  std::vector<std::string> out;
+  const auto& axes = grid.axes();
+  const auto& names = grid.column_names();
+  for (std::size_t a = 0; a < axes.size(); ++a) {
+    if (axes[a].key != "cut.uncut_chip_thickness_um") continue;
+    const std::size_t stride = grid.stride(a);
+    const std::size_t n_h = axes[a].values.size();
+    for (const char* force : {"cutting_force_N", "thrust_force_N"}) {
+      if (std::find(names.begin(), names.end(), force) == names.end()) continue;
+      const std::vector<std::optional<double>> values = column_numbers(grid, rows, force);
+      const std::vector<std::size_t> falls = falling_points(values, stride, n_h);
+      if (falls.empty()) continue;
+      const std::size_t i = falls.front(), j = i - stride;
+      const auto x = [&](std::size_t point) { return axes[a].numbers[grid.value_index(point, a)]; };
+      out.push_back(fmt::format("{} falls as cut.uncut_chip_thickness_um grows at {} point(s), first from {:.6g} N "
+                                "at {:.6g} um to {:.6g} N at {:.6g} um: the model may have changed branch or left "
+                                "its domain there",
+                                force, falls.size(), *values[j], x(j), *values[i], x(i)));
+    }
+  }
+  return out;
+}
+
+}  // namespace kerf
