@@ -109,7 +109,7 @@ MacroProperties evaluate(Context& ctx, const Material& proposed) {
     std::visit(
         [&](auto& c, auto& j, const auto& c0, const auto& j0) {
           c.effective_modulus_pa = c0.effective_modulus_pa * a;
-          j.effective_modulus_pa = j0.effective_modulus_pa * a;
+          j.bond.effective_modulus_pa = j0.bond.effective_modulus_pa * a;
         },
         ctx.current.contact, ctx.current.joint, m.contact, m.joint);
   }
@@ -117,8 +117,8 @@ MacroProperties evaluate(Context& ctx, const Material& proposed) {
     const double b = t.tensile_strength_pa / e.macro.tensile_strength_pa;
     std::visit(
         [&](auto& j, const auto& j0) {
-          j.tensile_strength_pa = j0.tensile_strength_pa * b;
-          j.cohesion_pa = j0.cohesion_pa * b;
+          j.bond.tensile_strength_pa = j0.bond.tensile_strength_pa * b;
+          j.bond.cohesion_pa = j0.bond.cohesion_pa * b;
         },
         ctx.current.joint, m.joint);
   }
@@ -141,10 +141,11 @@ Material material_at(const Context& ctx, double ln_kappa, double ln_ratio) {
   std::visit(
       [&](auto& contact, auto& joint) {
         if (ctx.spec->free_stiffness_ratio)
-          contact.stiffness_ratio = joint.stiffness_ratio =
+          contact.stiffness_ratio = joint.bond.stiffness_ratio =
               std::exp(std::clamp(ln_kappa, std::log(kKappaMin), std::log(kKappaMax)));
         if (ctx.spec->free_cohesion)
-          joint.cohesion_pa = std::exp(std::clamp(ln_ratio, std::log(kRatioMin), std::log(kRatioMax))) * joint.tensile_strength_pa;
+          joint.bond.cohesion_pa =
+              std::exp(std::clamp(ln_ratio, std::log(kRatioMin), std::log(kRatioMax))) * joint.bond.tensile_strength_pa;
         joint = with_path("material", [&] { return std::decay_t<decltype(joint)>::validated(joint); });
       },
       m.contact, m.joint);

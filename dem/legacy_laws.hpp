@@ -50,7 +50,7 @@ inline LawRecord record_of(const FlatJoint6& p) {
            {"tensile_strength_MPa", p.tensile_strength_pa},
            {"cohesion_MPa", p.cohesion_pa},
            {"friction_angle_deg", p.friction_angle_rad},
-           {"friction_coefficient", p.friction_coefficient},
+           {"residual_friction_coefficient", p.friction_coefficient},
            {"n_elements", static_cast<double>(p.n_elements)},
            {"radius_multiplier", p.radius_multiplier}}};
 }

@@ -105,14 +105,13 @@ Material odd_material(const BondLaw& joint) {
 }
 FlatJointParams odd_flat_joint() {
   FlatJointParams p;
-  p.effective_modulus_pa = 81e9, p.stiffness_ratio = 2.2, p.tensile_strength_pa = 123.456e6, p.cohesion_pa = 201e6;
-  p.friction_angle_rad = 0.31, p.friction_coefficient = 0.33, p.n_elements = 4, p.radius_multiplier = 0.8;
+  p.bond = {81e9, 2.2, 123.456e6, 201e6, 0.31, 0.8};
+  p.residual_friction_coefficient = 0.33, p.n_elements = 4;
   return FlatJointParams::validated(p);
 }
 ParallelBondParams odd_parallel_bond() {
   ParallelBondParams p;
-  p.effective_modulus_pa = 77e9, p.stiffness_ratio = 1.9, p.tensile_strength_pa = 99.9e6, p.cohesion_pa = 150e6;
-  p.friction_angle_rad = 0.2, p.radius_multiplier = 0.6;
+  p.bond = {77e9, 1.9, 99.9e6, 150e6, 0.2, 0.6};
   return ParallelBondParams::validated(p);
 }
 
@@ -131,14 +130,16 @@ LawBytes law_bytes(const Material& m) {
   alignas(legacy::BondLaw6) unsigned char joint6[sizeof(legacy::BondLaw6)];
   std::memset(joint6, 0xAA, sizeof joint6);  // the padding and the index's place told apart
   if (const auto* f = std::get_if<FlatJointParams>(&m.joint))
-    new (joint6) legacy::BondLaw6(legacy::FlatJoint6{f->effective_modulus_pa, f->stiffness_ratio, f->tensile_strength_pa,
-                                                     f->cohesion_pa, f->friction_angle_rad, f->friction_coefficient,
-                                                     f->n_elements, f->radius_multiplier, f->tan_friction_angle});
+    new (joint6) legacy::BondLaw6(legacy::FlatJoint6{
+        f->bond.effective_modulus_pa, f->bond.stiffness_ratio, f->bond.tensile_strength_pa, f->bond.cohesion_pa,
+        f->bond.friction_angle_rad, f->residual_friction_coefficient, f->n_elements, f->bond.radius_multiplier,
+        f->tan_friction_angle});
   else {
     const auto& p = std::get<ParallelBondParams>(m.joint);
-    new (joint6) legacy::BondLaw6(legacy::ParallelBond6{p.effective_modulus_pa, p.stiffness_ratio,
-                                                        p.tensile_strength_pa, p.cohesion_pa, p.friction_angle_rad,
-                                                        p.radius_multiplier, p.tan_friction_angle});
+    const BondStiffnessStrength& b = p.bond;
+    new (joint6) legacy::BondLaw6(legacy::ParallelBond6{b.effective_modulus_pa, b.stiffness_ratio, b.tensile_strength_pa,
+                                                        b.cohesion_pa, b.friction_angle_rad, b.radius_multiplier,
+                                                        p.tan_friction_angle});
   }
   serial::put_raw(out.raw, contact6);
   // The variant keeps its index in the first byte past its largest alternative.
