@@ -109,7 +109,7 @@ MacroProperties evaluate(Context& ctx, const Material& proposed) {
     std::visit(
         [&](auto& c, auto& j, const auto& c0, const auto& j0) {
           c.effective_modulus_pa = c0.effective_modulus_pa * a;
-          j.effective_modulus_pa = j0.effective_modulus_pa * a;
+          j.bond.effective_modulus_pa = j0.bond.effective_modulus_pa * a;
         },
         ctx.current.contact, ctx.current.joint, m.contact, m.joint);
   }
@@ -117,8 +117,8 @@ MacroProperties evaluate(Context& ctx, const Material& proposed) {
     const double b = t.tensile_strength_pa / e.macro.tensile_strength_pa;
     std::visit(
         [&](auto& j, const auto& j0) {
-          j.tensile_strength_pa = j0.tensile_strength_pa * b;
-          j.cohesion_pa = j0.cohesion_pa * b;
+          j.bond.tensile_strength_pa = j0.bond.tensile_strength_pa * b;
+          j.bond.cohesion_pa = j0.bond.cohesion_pa * b;
         },
         ctx.current.joint, m.joint);
   }
@@ -141,10 +141,11 @@ Material material_at(const Context& ctx, double ln_kappa, double ln_ratio) {
   std::visit(
       [&](auto& contact, auto& joint) {
         if (ctx.spec->free_stiffness_ratio)
-          contact.stiffness_ratio = joint.stiffness_ratio =
+          contact.stiffness_ratio = joint.bond.stiffness_ratio =
               std::exp(std::clamp(ln_kappa, std::log(kKappaMin), std::log(kKappaMax)));
         if (ctx.spec->free_cohesion)
-          joint.cohesion_pa = std::exp(std::clamp(ln_ratio, std::log(kRatioMin), std::log(kRatioMax))) * joint.tensile_strength_pa;
+          joint.bond.cohesion_pa =
+              std::exp(std::clamp(ln_ratio, std::log(kRatioMin), std::log(kRatioMax))) * joint.bond.tensile_strength_pa;
         joint = with_path("material", [&] { return std::decay_t<decltype(joint)>::validated(joint); });
       },
       m.contact, m.joint);
@@ -301,14 +302,16 @@ void solve_hybrid(Context& ctx) {
 }  // namespace
 
 namespace {
-constexpr std::uint64_t kEvaluationsMagic = 0x4b45524643414c33;  // "KERFCAL3" (2: the viscous damping ratio; 3: the specimens are built again on resume, 2026-11-26)
+// "KERFCAL4" (2: the viscous damping ratio; 3: the specimens are built again on resume, 2026-11-26; 4: the laws
+// by name). "KERFCAL3" is still read (the laws as raw variants of 4a34e1f).
+constexpr std::uint64_t kEvaluationsMagic = 0x4b45524643414c34, kEvaluationsMagicRawLaws = 0x4b45524643414c33;
 
 /// One evaluation's fields in checkpoint order: io(field...) writes (serial::Out) or reads (serial::In) them.
 template <class Self, class Io>
 void evaluation_fields(Self& e, Io& io) {
   auto& m = e.material;
   io(m.name, m.density_kg_per_m3, m.local_damping, m.viscous_damping_ratio);
-  io(m.contact, m.joint);  // the laws (variants of trivially copyable parameter structs), every field
+  io(m.contact, m.joint);  // the laws, by name and every field (serial.hpp)
   io(e.macro.youngs_modulus_pa, e.macro.poissons_ratio, e.macro.tensile_strength_pa, e.macro.compressive_strength_pa);
   io(e.index, e.max_relative_error, e.wall_time_s);
 }
@@ -326,7 +329,9 @@ std::vector<CalibrationEvaluation> deserialize_evaluations(std::string_view byte
   serial::In io{bytes};
   std::uint64_t magic = 0, n = 0;
   io(magic);
-  if (magic != kEvaluationsMagic) throw ModelError("calibrate", "not a list of calibration evaluations");
+  if (magic != kEvaluationsMagic && magic != kEvaluationsMagicRawLaws)
+    throw ModelError("calibrate", "not a list of calibration evaluations of this kerf-dem (KERFCAL4 or KERFCAL3)");
+  io.raw_laws = magic == kEvaluationsMagicRawLaws;
   io(n);
   if (n > bytes.size()) throw ModelError("calibrate", "corrupt list of calibration evaluations");
   std::vector<CalibrationEvaluation> log(static_cast<std::size_t>(n));

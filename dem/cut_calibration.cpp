@@ -18,8 +18,8 @@ Material scale_bond_strengths(const Material& m, double factor, const std::strin
   out.name = name;
   std::visit(
       [&](auto& j) {
-        j.tensile_strength_pa *= factor;
-        j.cohesion_pa *= factor;
+        j.bond.tensile_strength_pa *= factor;
+        j.bond.cohesion_pa *= factor;
       },
       out.joint);
   return out;

@@ -488,7 +488,7 @@ void check_cut_fits_workpiece(const CutParams& p, const Bounds& b) {
               " um): a shallower tool passes over the disks' tops; use smaller disks (specimen.radius_min_um, "
               "specimen.radius_max_um)");
   // The layer along the held rows (held_absorbing_depths) must stay below the cut line and off the tool's path.
-  const double layer_m = p.held_absorbing_depths * p.depth_of_cut_m;
+  const double layer_m = window_box_m(p).held_absorbing_m;
   if (layer_m > 0)
     require(layer_m < held_top_depth_m - p.depth_of_cut_m, "cut.held_absorbing_depths", p.held_absorbing_depths,
             "a layer below the cut line: thinner than " +
@@ -559,6 +559,15 @@ Simulation make_workpiece(const Simulation& specimen, const CutParams& params, s
   return sim;
 }
 
+CutWindowBox window_box_m(const CutParams& p) {
+  const double d = p.depth_of_cut_m;
+  CutWindowBox box{p.window_ahead_depths * d, p.window_behind_depths * d, p.window_below_depths * d,
+                   p.window_above_depths * d, p.window_shift_depths * d};
+  if (p.window_absorbing_depths > 0) box.absorbing_m = p.window_absorbing_depths * d;
+  box.held_absorbing_m = p.held_absorbing_depths * d;
+  return box;
+}
+
 CutRun::CutRun(const Simulation& specimen, const CutParams& params)
     : sim_(specimen.material(), specimen.options()), params_(params) {
   validate_cut_params(params_);
@@ -594,25 +603,18 @@ CutRun::CutRun(const Simulation& specimen, const CutParams& params)
   res_.n_particles = sim_.particles().size();
   res_.time_step_s = sim_.time_step();
   res_.samples.push_back({0, 0, 0, 0});
-  const double d = params_.depth_of_cut_m;
   // A sponge layer's peak rate for its thickness L: the amplitude decays at gamma / 2 in time, gamma / (2 c)
   // in space; through the quadratic ramp and back, exp(-gamma_max L / (3 c)) = exp(-attenuation).
   const auto peak_rate_per_s = [&](double thickness_m) {
     return 3 * params_.window_absorbing_attenuation * p_wave_speed_m_per_s(sim_.material()) / thickness_m;
   };
   const HeldRows held = held_rows_of(b0);
-  const double held_layer_m = params_.held_absorbing_depths * d;
+  CutWindowBox box = window_box_m(params_);
+  const double held_layer_m = box.held_absorbing_m;
   if (params_.active_window) {
     // The workpiece becomes the window's reservoir; its time step (of the whole workpiece) is every window's.
-    CutWindowBox box{params_.window_ahead_depths * d, params_.window_behind_depths * d,
-                     params_.window_below_depths * d, params_.window_above_depths * d,
-                     params_.window_shift_depths * d};
-    if (params_.window_absorbing_depths > 0) {
-      box.absorbing_m = params_.window_absorbing_depths * d;
-      box.absorbing_rate_per_s = peak_rate_per_s(box.absorbing_m);
-    }
+    if (box.absorbing_m > 0) box.absorbing_rate_per_s = peak_rate_per_s(box.absorbing_m);
     if (held_layer_m > 0) {
-      box.held_absorbing_m = held_layer_m;
       box.held_absorbing_rate_per_s = peak_rate_per_s(held_layer_m);
       box.held_rows = held;
     }

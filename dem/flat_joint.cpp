@@ -10,34 +10,28 @@ namespace kerf::dem {
 
 const FieldTable<FlatJointParams>& FlatJointParams::fields() {
   using P = FlatJointParams;
-  static const FieldTable<P> table{
-      number_field("bond_effective_modulus_GPa", units::kGPa, Range::positive(),
-                   "bond effective modulus Ebar* (k_n = Ebar* / (R1 + R2))", &P::effective_modulus_pa),
-      number_field("bond_stiffness_ratio", units::kNone, Range::positive(), "bond normal-to-shear stiffness ratio kappabar*",
-                   &P::stiffness_ratio),
-      number_field("tensile_strength_MPa", units::kMPa, Range::non_negative(), "bond tensile strength sigma_c",
-                   &P::tensile_strength_pa),
-      number_field("cohesion_MPa", units::kMPa, Range::non_negative(), "bond cohesion c", &P::cohesion_pa),
-      number_field("friction_angle_deg", units::kDeg, Range{0.0, 90.0, false, true},
-                   "bond friction angle phi (Coulomb envelope of bonded elements)", &P::friction_angle_rad),
-      number_field("friction_coefficient", units::kNone, Range::non_negative(),
-                   "friction of unbonded elements (and of the unbonded contact: one key)", &P::friction_coefficient),
-      int_field("n_elements", 2, 16, "elements per interface N_r (>= 2, else bending never enters the strength test)",
-                &P::n_elements),
-      number_field("radius_multiplier", units::kNone, Range{0.0, 1.0, true, false},
-                   "interface half-length R = lambda min(R1, R2)", &P::radius_multiplier)};
+  static const FieldTable<P> table = [] {
+    FieldTable<P> t = embedded_fields(BondStiffnessStrength::fields(), &P::bond);
+    t.push_back(number_field("residual_friction_coefficient", units::kNone, Range::non_negative(),
+                             "friction of unbonded elements (the linear contact's is friction_coefficient)",
+                             &P::residual_friction_coefficient));
+    t.push_back(int_field("n_elements", 2, 16,
+                          "elements per interface N_r (>= 2, else bending never enters the strength test)",
+                          &P::n_elements));
+    return t;
+  }();
   return table;
 }
 
 FlatJointParams FlatJointParams::validated(const FlatJointParams& raw) {
   check_fields(fields(), raw);
   FlatJointParams p = raw;
-  p.tan_friction_angle = std::tan(raw.friction_angle_rad);
+  p.tan_friction_angle = std::tan(raw.bond.friction_angle_rad);
   return p;
 }
 
 BondGeometry bond_geometry(const FlatJointParams& p, double r1_m, double r2_m, double thickness_m) {
-  return interface_geometry(p.effective_modulus_pa, p.stiffness_ratio, p.radius_multiplier, r1_m, r2_m, thickness_m);
+  return interface_geometry(p.bond, r1_m, r2_m, thickness_m);
 }
 
 double flat_joint_bonded_energy(const FlatJointParams& p, const BondGeometry& geo, const BondKinematics& kin,

@@ -66,7 +66,7 @@ Json material_to_json(const Material& m) {
   Json j = fields_to_json(Material::fields(), m);
   j["name"] = m.name;
   j.update(law_to_json(m.joint));
-  j.update(law_to_json(m.contact));  // a key both laws have is the contact's (read_material sets both from it)
+  j.update(law_to_json(m.contact));  // the two laws' keys are distinct (material_keys_markdown's test checks it)
   j["contact_model"] = law_name(m.contact);
   j["bond_model"] = law_name(m.joint);
   return j;
@@ -80,8 +80,8 @@ bool same_micro_parameters(const Material& a, const Material& b) {
 CalibratedParams calibrated_params(const Material& m) {
   return std::visit(
       [](const auto& c, const auto& j) {
-        return CalibratedParams{c.effective_modulus_pa, c.stiffness_ratio,  j.effective_modulus_pa,
-                                j.stiffness_ratio,      j.tensile_strength_pa, j.cohesion_pa};
+        return CalibratedParams{c.effective_modulus_pa, c.stiffness_ratio,          j.bond.effective_modulus_pa,
+                                j.bond.stiffness_ratio, j.bond.tensile_strength_pa, j.bond.cohesion_pa};
       },
       m.contact, m.joint);
 }
@@ -90,7 +90,7 @@ std::string material_keys_markdown() {
   return fmt::format(
       "The material's own keys (besides `name`, `description` and `base`, the name of a library material whose "
       "`dem` group the other keys override):\n\n{}\n`contact_model` (default `{}`) and `bond_model` (default `{}`) "
-      "choose the laws; each law reads its own keys from the same object (a key both laws have sets both):\n\n"
+      "choose the laws; each law reads its own keys from the same object (no key belongs to two laws):\n\n"
       "Unbonded contact laws (`contact_model`):\n\n{}Bond laws (`bond_model`):\n\n{}",
       fields_markdown(Material::fields()), law_name(ContactLaw{}), law_name(BondLaw{}), laws_markdown<ContactLaw>(),
       laws_markdown<BondLaw>());

@@ -63,19 +63,20 @@ Scene read_scene(const Json& doc, const fs::path& scene_dir) {
 
 namespace {
 
-/// Adds the provenance block to the outcome's summary and to OUT/summary.json.
-SceneOutcome with_provenance(SceneOutcome outcome, const fs::path& out, Json provenance) {
-  outcome.summary["provenance"] = provenance;
-  const fs::path file = out / "summary.json";
-  if (fs::exists(file)) {
-    Json written = read_json_file(file.string());
-    written["provenance"] = std::move(provenance);
-    write_file_atomically(file, written.dump(2) + "\n");
-  }
+/// The outcome's summary with the provenance block its OUT/summary.json got (write_summary).
+SceneOutcome with_provenance(SceneOutcome outcome, const RunOptions& options, const Json& scene) {
+  outcome.summary["provenance"] = summary_provenance(options, scene);
   return outcome;
 }
 
 }  // namespace
+
+Json summary_provenance(const RunOptions& options, const Json& scene) {
+  if (!options.provenance.is_object()) return Json();
+  Json provenance = options.provenance;
+  provenance["scene_as_run"] = scene;
+  return provenance;
+}
 
 SceneOutcome run_scene(const Json& doc, const fs::path& scene_file, const RunOptions& options) {
   const Scene scene = read_scene(doc, scene_file.parent_path());
@@ -86,9 +87,7 @@ SceneOutcome run_scene(const Json& doc, const fs::path& scene_file, const RunOpt
   RunOptions with_provenance_kept = options;               // the checkpoints keep it for a resume
   with_provenance_kept.provenance = run_provenance(options.command_line, scene_file.string(), options.overrides);
   const SceneRun run{doc, fs::absolute(scene_file).parent_path().string(), with_provenance_kept};
-  Json provenance = with_provenance_kept.provenance;
-  provenance["scene_as_run"] = doc;
-  return with_provenance(scene.kind->run(scene.common, run), options.out, std::move(provenance));
+  return with_provenance(scene.kind->run(scene.common, run), with_provenance_kept, doc);
 }
 
 SceneOutcome resume_scene(const fs::path& dir, bool show_progress, const ProgressCallback& on_progress,
@@ -111,10 +110,8 @@ SceneOutcome resume_scene(const fs::path& dir, bool show_progress, const Progres
   for (const char* key : {"date", "command_line", "version", "git_commit", "host", "threads"})
     resume[key] = now.at(key);
   options.provenance["resumes"].push_back(std::move(resume));
-  Json provenance = options.provenance;
-  provenance["scene_as_run"] = c.scene;
-  return with_provenance(scene.kind->resume(scene.common, SceneRun{c.scene, c.scene_dir, options}, c), dir,
-                         std::move(provenance));
+  return with_provenance(scene.kind->resume(scene.common, SceneRun{c.scene, c.scene_dir, options}, c), options,
+                         c.scene);
 }
 
 }  // namespace kerf::dem

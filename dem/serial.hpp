@@ -1,16 +1,24 @@
 #pragma once
 // Byte-level helpers for the checkpoints (the engine state, LabTestRun, CutRun, calibration evaluations): raw
-// values and vectors with a length prefix, native endianness (a checkpoint is read back by the same build).
+// values and vectors with a length prefix, native endianness (a checkpoint is read back by the same build), and
+// the contact laws as records by name (a law list may be reordered or grow without misreading a checkpoint).
 // Internal to dem/.
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <initializer_list>
+#include <optional>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <type_traits>
+#include <utility>
 #include <variant>
 #include <vector>
 
+#include "kerf/dem/contact_laws.hpp"
 #include "kerf/error.hpp"
+#include "legacy_laws.hpp"
 
 namespace kerf::dem::serial {
 
@@ -41,7 +49,14 @@ struct is_vector : std::false_type {};
 template <class T, class A>
 struct is_vector<std::vector<T, A>> : std::true_type {};
 
-/// Writes fields in order: a string or vector with its length prefix, anything else as raw bytes. A state
+struct In;
+template <class V>
+void put_law(std::string& out, const V& law);
+template <class V>
+V get_law(In& io);
+
+/// Writes fields in order: a string or vector with its length prefix, a law (a variant of the registry) as its
+/// record by name (put_law), anything else as raw bytes. A state
 /// class lists its fields once, in a template `state_fields(self, io)`, and calls it with Out to write and
 /// In to read, so the two directions cannot drift apart.
 struct Out {
@@ -58,6 +73,8 @@ struct Out {
       put_str(s, v);
     else if constexpr (is_vector<T>::value)
       put_vec(s, v);
+    else if constexpr (is_variant<T>::value)
+      put_law(s, v);
     else
       put_raw(s, v);
   }
@@ -66,6 +83,9 @@ struct Out {
 struct In {
   std::string_view b;
   std::size_t at = 0;
+  /// The laws are stored as raw variants in the layout of 4a34e1f (legacy_laws.hpp): the formats before
+  /// "KERFDEM7" and "KERFCAL4".
+  bool raw_laws = false;
   void take(void* d, std::size_t n) {
     if (at > b.size() || n > b.size() - at) throw ModelError("dem", "truncated checkpoint");  // cannot wrap
     if (n == 0) return;  // an empty vector's data() may be null, and memcpy's pointers must not be (found by fuzzing)
@@ -108,27 +128,149 @@ struct In {
       str(v);
     } else if constexpr (is_vector<T>::value) {
       vec(v);
+    } else if constexpr (is_variant<T>::value) {
+      v = get_law<T>(*this);
     } else {
       raw(v);
-      // A variant (a contact law) is stored whole, its index with it: an index beyond its alternatives would
-      // make every visit undefined (found by fuzz_checkpoint behind a valid checksum).
-      if constexpr (is_variant<T>::value) {
-        if (v.index() >= std::variant_size_v<T>) throw ModelError("dem", "corrupt checkpoint (an unknown law)");
-      }
     }
   }
 };
 
-/// Checks the format tag at the start of `bytes` (a name and a version digit, like "KERFCUT2") and returns a
-/// reader just after it. A tag of the same name with another version is refused by name, so that a user
-/// knows the file is old rather than foreign; `what` names the file kind in the messages.
-inline In open_tagged(std::string_view bytes, std::string_view tag, const std::string& what) {
-  const std::string_view head = bytes.substr(0, tag.size());
-  if (head.size() == tag.size() && head != tag && head.substr(0, tag.size() - 1) == tag.substr(0, tag.size() - 1))
+/// Checks the format tag at the start of `bytes` (a name and a version digit, like "KERFCUT2") against the
+/// versions this build reads (`tags`, the same name each, the newest first) and returns a reader just after it;
+/// `version` receives the index of the tag found. A tag of the same name with another version is refused by
+/// name (ModelError, exit 3), so that a user knows the file is old rather than foreign; `what` names the file
+/// kind in the messages.
+inline In open_tagged(std::string_view bytes, std::initializer_list<std::string_view> tags, const std::string& what,
+                      std::size_t* version = nullptr) {
+  const std::string_view newest = *tags.begin();
+  const std::string_view head = bytes.substr(0, newest.size());
+  std::size_t k = 0;
+  for (const std::string_view tag : tags) {
+    if (head == tag) {
+      if (version) *version = k;
+      return In{bytes, tag.size()};
+    }
+    ++k;
+  }
+  if (head.size() == newest.size() && head.substr(0, newest.size() - 1) == newest.substr(0, newest.size() - 1)) {
+    std::string known;
+    for (const std::string_view tag : tags) known += (known.empty() ? "" : " or ") + std::string(tag);
     throw ModelError("dem", "a " + what + " of another kerf-dem version (" + std::string(head) + ", this one reads " +
-                                std::string(tag) + "): start the run again");
-  if (head != tag) throw ModelError("dem", "not a kerf-dem " + what);
-  return In{bytes, tag.size()};
+                                known + "): start the run again");
+  }
+  throw ModelError("dem", "not a kerf-dem " + what);
+}
+inline In open_tagged(std::string_view bytes, std::string_view tag, const std::string& what) {
+  return open_tagged(bytes, {tag}, what);
+}
+
+// --- the laws as records: the registry name, then each key of the law's field table with its SI value ---
+
+using legacy::LawRecord;
+
+/// The law's record: its name and every field of its table (numbers in SI, to the bit; integers and flags as
+/// numbers). Derived members (tan phi) are not stored: validated() derives them again on reading.
+template <class P>
+LawRecord law_record(const P& p) {
+  LawRecord r{std::string(P::kName), {}};
+  for (const auto& field : P::fields()) {
+    std::visit(
+        [&](const auto& f) {
+          using F = std::decay_t<decltype(f)>;
+          if constexpr (std::is_same_v<F, NumberField<P>> || std::is_same_v<F, IntField<P>> ||
+                        std::is_same_v<F, BoolField<P>>)
+            r.values.emplace_back(std::string(f.key), static_cast<double>(f.get(p)));
+          else
+            throw std::logic_error("a law field of a kind the checkpoints cannot store: " + std::string(f.key));
+        },
+        field);
+  }
+  return r;
+}
+
+/// The law of list V that `r` names, every field of its table set from the record and validated; ModelError
+/// (exit 3) when V has no law of that name, a key is missing, unknown or repeated, or a value is out of range.
+template <class V>
+V law_from_record(const LawRecord& r) {
+  auto corrupt = [&](const std::string& why) -> ModelError {
+    return ModelError("dem", "corrupt checkpoint (the law '" + r.name + "': " + why + ")");
+  };
+  std::optional<V> law;
+  [&]<std::size_t... I>(std::index_sequence<I...>) {
+    ((std::variant_alternative_t<I, V>::kName == r.name ? (void)law.emplace(std::in_place_index<I>) : (void)0), ...);
+  }(std::make_index_sequence<std::variant_size_v<V>>{});
+  if (!law) {
+    std::string known;
+    for (const std::string& name : law_names<V>()) known += (known.empty() ? "" : ", ") + name;
+    throw corrupt("an unknown law; this build has " + known);
+  }
+  std::visit(
+      [&](auto& p) {
+        using P = std::decay_t<decltype(p)>;
+        std::size_t used = 0;
+        for (const auto& field : P::fields()) {
+          std::visit(
+              [&](const auto& f) {
+                using F = std::decay_t<decltype(f)>;
+                const auto it = std::find_if(r.values.begin(), r.values.end(),
+                                             [&](const auto& kv) { return kv.first == f.key; });
+                if (it == r.values.end()) throw corrupt("no value for " + std::string(f.key));
+                ++used;
+                if constexpr (std::is_same_v<F, NumberField<P>>)
+                  f.set(p, it->second);
+                else if constexpr (std::is_same_v<F, IntField<P>>)
+                  f.set(p, static_cast<int>(it->second));
+                else if constexpr (std::is_same_v<F, BoolField<P>>)
+                  f.set(p, it->second != 0);
+              },
+              field);
+        }
+        if (used != r.values.size()) throw corrupt("keys this build's law does not have, or a key twice");
+        try {
+          p = P::validated(p);
+        } catch (const InputError& e) {
+          throw corrupt(e.what());
+        }
+      },
+      *law);
+  return *law;
+}
+
+template <class V>
+void put_law(std::string& out, const V& law) {
+  const LawRecord r = std::visit([](const auto& p) { return law_record(p); }, law);
+  put_str(out, r.name);
+  put_raw(out, static_cast<std::uint64_t>(r.values.size()));
+  for (const auto& [key, value] : r.values) {
+    put_str(out, key);
+    put_raw(out, value);
+  }
+}
+
+/// The old formats' raw variant of list V (a bond or a contact law list), translated by name.
+template <class V>
+V get_legacy_law(In& io) {
+  using Legacy = std::conditional_t<BondLawParams<std::variant_alternative_t<0, V>>, legacy::BondLaw6,
+                                    legacy::ContactLaw6>;
+  Legacy old;
+  io.raw(old);
+  // An index beyond its alternatives would make every visit undefined (found by fuzz_checkpoint behind a
+  // valid checksum).
+  if (old.index() >= std::variant_size_v<Legacy>) throw ModelError("dem", "corrupt checkpoint (an unknown law)");
+  return law_from_record<V>(std::visit([](const auto& p) { return legacy::record_of(p); }, old));
+}
+
+template <class V>
+V get_law(In& io) {
+  if (io.raw_laws) return get_legacy_law<V>(io);
+  LawRecord r;
+  std::uint64_t n = 0;
+  io(r.name, n);
+  if (n > io.b.size() - io.at) throw ModelError("dem", "corrupt checkpoint (a length beyond its end)");
+  r.values.resize(static_cast<std::size_t>(n));
+  for (auto& [key, value] : r.values) io(key, value);
+  return law_from_record<V>(r);
 }
 
 }  // namespace kerf::dem::serial

@@ -893,9 +893,10 @@ std::size_t Simulation::memory_bytes() const {
 
 namespace {
 
-constexpr std::string_view kStateMagic = "KERFDEM6";  // 2: Wall::friction_coefficient; 3: the laws as variants;
+constexpr std::string_view kStateMagic = "KERFDEM7";  // 2: Wall::friction_coefficient; 3: the laws as variants;
                                                       // 4: the viscous damping ratio; 5: skip_held_pairs;
-                                                      // 6: the absorbing rates
+                                                      // 6: the absorbing rates; 7: the laws by name
+constexpr std::string_view kStateMagicRawLaws = "KERFDEM6";  // still read: the laws as raw variants of 4a34e1f
 
 }  // namespace
 
@@ -927,7 +928,9 @@ std::string Simulation::serialize() const {
 }
 
 Simulation Simulation::deserialize(std::string_view bytes) {
-  serial::In io = serial::open_tagged(bytes, kStateMagic, "engine state");
+  std::size_t version = 0;
+  serial::In io = serial::open_tagged(bytes, {kStateMagic, kStateMagicRawLaws}, "engine state", &version);
+  io.raw_laws = version == 1;
   Material m;
   SimulationOptions opt;
   io(m.density_kg_per_m3, m.contact, m.joint, m.local_damping, m.viscous_damping_ratio, m.name, opt);

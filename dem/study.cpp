@@ -4,7 +4,6 @@
 #include "kerf/dem/study_record.hpp"
 
 #include <fmt/format.h>
-#include <gsl/gsl_cdf.h>
 #include <omp.h>
 #include <unistd.h>
 
@@ -23,6 +22,7 @@
 #include "kerf/dem/scene.hpp"
 #include "kerf/dem/study_mpi.hpp"
 #include "kerf/error.hpp"
+#include "kerf/interval95.hpp"
 #include "kerf/io.hpp"
 #include "kerf/metrics.hpp"
 #include "kerf/plot.hpp"
@@ -623,7 +623,7 @@ ResultStats stats_of(const std::vector<double>& v) {
   if (v.size() >= 2) {
     r.std = st.standard_deviation;
     r.sem = r.std / std::sqrt(static_cast<double>(v.size()));
-    const double t = gsl_cdf_tdist_Pinv(0.975, static_cast<double>(v.size() - 1));
+    const double t = quantile95(static_cast<double>(v.size() - 1));
     r.ci_low = r.mean - t * r.sem;
     r.ci_high = r.mean + t * r.sem;
   }

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Proves a DEM refactor changed no result: runs the same reference cases with two builds and compares them
-# (CSV outputs and fitted materials byte for byte; summary.json without wall times and provenance (binary path,
-# commit, date), calibration logs without wall times).
+# (CSV outputs byte for byte; summary.json and fitted materials as JSON without wall times and provenance (binary
+# path, commit, date), an old flat-joint material's friction_coefficient also its residual_friction_coefficient (see
+# below); calibration logs without wall times).
 #
 #   bash scripts/dem-refcheck.sh OLD_BIN_DIR NEW_BIN_DIR OUT_DIR [--skip-compression]
 #
@@ -39,7 +40,7 @@ run_cases "$new" "$out/new"
 rc=0
 for f in cut004/forces.csv cut004/cracks.csv cutg004/forces.csv cutg004/cracks.csv steady02/forces.csv \
   steady02/cracks.csv whole08/forces.csv whole08/cracks.csv tension/curve.csv \
-  tension/cracks.csv compression/curve.csv compression/cracks.csv calib/tiny_fj.json; do
+  tension/cracks.csv compression/curve.csv compression/cracks.csv; do
   [ -f "$out/old/$f" ] || continue
   if cmp -s "$out/old/$f" "$out/new/$f"; then echo "same      $f"; else echo "DIFFERENT $f"; rc=1; fi
 done
@@ -48,17 +49,25 @@ if cmp -s <(cut -d, -f1-10 "$out/old/calib/calibration_log.csv") <(cut -d, -f1-1
 else
   echo "DIFFERENT calib/calibration_log.csv"; rc=1
 fi
-for d in cut004 cutg004 steady02 whole08 tension compression calib; do
-  [ -f "$out/old/$d/summary.json" ] || continue
-  python3 - "$out/old/$d/summary.json" "$out/new/$d/summary.json" "$d" <<'PY' || rc=1
+# A material written before issue 39 has one friction_coefficient, which set the linear contact's friction and the
+# flat joint's residual friction alike; since then the flat joint has its own key residual_friction_coefficient. The
+# material objects (summary.json, the fitted material file) are compared as JSON with an old flat-joint material's
+# friction_coefficient given to that key too, so that the new key must hold exactly the value the one key set.
+for f in cut004/summary.json cutg004/summary.json steady02/summary.json whole08/summary.json tension/summary.json \
+  compression/summary.json calib/summary.json calib/tiny_fj.json; do
+  [ -f "$out/old/$f" ] || continue
+  python3 - "$out/old/$f" "$out/new/$f" "$f" <<'PY' || rc=1
 import json, sys
 def strip(o):
     if isinstance(o, dict):
+        o = dict(o)
+        if "friction_coefficient" in o and "n_elements" in o and "residual_friction_coefficient" not in o:
+            o["residual_friction_coefficient"] = o["friction_coefficient"]  # an old flat-joint material
         return {k: strip(v) for k, v in o.items()
                 if not (k.startswith("wall_time") or k in ("particle_steps_per_s", "genesis_wall_time_s", "provenance"))}
     return [strip(v) for v in o] if isinstance(o, list) else o
 a, b = (strip(json.load(open(p))) for p in sys.argv[1:3])
-print(("same      " if a == b else "DIFFERENT ") + sys.argv[3] + "/summary.json (but wall times and provenance)")
+print(("same      " if a == b else "DIFFERENT ") + sys.argv[3] + " (as JSON, but wall times and provenance)")
 sys.exit(0 if a == b else 1)
 PY
 done

@@ -8,7 +8,6 @@
 #include "soda_lime_cutting.hpp"
 
 #include <fmt/format.h>
-#include <gsl/gsl_cdf.h>
 
 #include <algorithm>
 #include <cmath>
@@ -21,6 +20,7 @@
 #include "kerf/dem/scene.hpp"
 #include "kerf/dem/study.hpp"
 #include "kerf/error.hpp"
+#include "kerf/interval95.hpp"
 #include "kerf/io.hpp"
 #include "kerf/json_reader.hpp"
 #include "kerf/material.hpp"
@@ -46,9 +46,6 @@ constexpr int kMinReplicates = 2, kMinReplicatesWithinCuts = 1, kMaxReplicates =
 /// Where a condition's standard error comes from: the spread between its packings (sample std / sqrt(n)), or
 /// each cut's own batch-means standard error of its steady mean, sqrt(sum sem_k^2) / n.
 enum class Statistics { replicates, within_cuts };
-
-/// The two-sided 95 % interval of a trend: value +- kZ95 standard errors.
-constexpr double kZ95 = 1.96;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
@@ -207,13 +204,6 @@ Estimate ratio_of(const Estimate& a, const Estimate& b) {
   const double spread = va * va / a.degrees_of_freedom + vb * vb / b.degrees_of_freedom;
   const double df = spread > 0 ? (va + vb) * (va + vb) / spread : std::numeric_limits<double>::infinity();
   return {r, r * std::hypot(a.standard_error / a.value, b.standard_error / b.value), df};
-}
-
-/// The two-sided 95 % quantile for an error with these degrees of freedom: Student's t, the normal's 1.96 when
-/// they are infinite (or undefined: no standard error).
-double quantile95(double degrees_of_freedom) {
-  return std::isfinite(degrees_of_freedom) && degrees_of_freedom > 0 ? gsl_cdf_tdist_Pinv(0.975, degrees_of_freedom)
-                                                                      : kZ95;
 }
 
 /// The per-replicate columns of kerf_dem_replicates.csv after the condition's: each a result of the item's

@@ -200,7 +200,7 @@ class CalibrateKind final : public SceneKind {
                               {"calibrated_material", material}};
     summary["n_particles"] = specimen.particles().size();
     summary["wall_time_s"] = wall;
-    write_summary(out, summary);
+    write_summary(run.options, run.doc, summary);
     remove_checkpoint(out);  // finished: nothing to resume
     std::cout << fmt::format("calibration {} after {} evaluations (max error {:.2f} %), {:.0f} s -> {}\n",
                              r.converged ? "converged" : "did NOT converge", r.log.size(), 100 * r.max_relative_error,

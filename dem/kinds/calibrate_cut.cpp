@@ -99,6 +99,7 @@ class CalibrateCutKind final : public SceneKind {
       e.material = read_material(scene["material"], "material");
       RunOptions options = run.options;
       options.out = dir;
+      options.provenance = Json();  // an evaluation's summary carries none: the calibration's is the run's
       const Json done =
           run_cut_replicates(scene, run.scene_dir, cut_, fit.replicates, summary_head("cut", e.material), options).summary;
       const Json& r = done["results"];
@@ -155,7 +156,7 @@ class CalibrateCutKind final : public SceneKind {
                               {"evaluations", evaluations},
                               {"calibrated_material", material}};
     summary["wall_time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    write_summary(out, summary);
+    write_summary(run.options, run.doc, summary);
     std::cout << fmt::format("cut calibration {} after {} evaluations: bond strengths x {:.4g}, main force {:.4g} +- {:.2g} N "
                              "against {:.4g} N -> {}\n",
                              converged ? "converged" : "did NOT converge", history.size(), b.strength_factor,

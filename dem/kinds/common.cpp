@@ -173,8 +173,10 @@ StartedSources start_specimen_sources(const SceneCommon& scene, const std::strin
   return out;
 }
 
-void write_summary(const fs::path& out, const Json& summary) {
-  write_file_atomically(out / "summary.json", summary.dump(2) + "\n");
+void write_summary(const RunOptions& options, const Json& scene, Json summary) {
+  if (Json provenance = summary_provenance(options, scene); !provenance.is_null())
+    summary["provenance"] = std::move(provenance);
+  write_file_atomically(options.out / "summary.json", summary.dump(2) + "\n");
 }
 
 void write_frame_files(const fs::path& out, const Simulation& sim, RunProgress& progress) {

@@ -75,8 +75,9 @@ struct StartedSources {
 StartedSources start_specimen_sources(const SceneCommon& scene, const std::string& kind, int packings,
                                       const ProgressTarget& progress);
 
-/// Writes OUT/summary.json.
-void write_summary(const fs::path& out, const Json& summary);
+/// Writes options.out/summary.json, with the run's provenance block (summary_provenance) when it has one: the
+/// summary is written once, by its kind, never read back to be completed.
+void write_summary(const RunOptions& options, const Json& scene, Json summary);
 
 /// When a run writes its next checkpoint (RunOptions): every checkpoint_every samples, and at the first
 /// sample after checkpoint_every_s of wall time since the last one (or the start).

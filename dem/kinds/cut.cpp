@@ -119,7 +119,7 @@ Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& d
                                     {"chip_mass_removed_kg", res.window.chips.mass_kg},
                                     {"chip_cracks_removed", res.window.chips.cracks},
                                     // Cracks are found only inside the window: a damage depth near this is censored.
-                                    {"damage_depth_limit_um", units::m_to_um(cut.window_below_depths * cut.depth_of_cut_m)}};
+                                    {"damage_depth_limit_um", units::m_to_um(window_box_m(cut).below_m)}};
   }
   write_file_atomically(out / "forces.csv", cut_forces_csv(res));
   write_file_atomically(out / "cracks.csv", cracks_csv(run.cracks(), res.y_cut_m));
@@ -130,7 +130,7 @@ Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& d
   write_specimen_png(out / "specimen.png", run.workpiece(), "cut, final state",
                      std::array<double, 4>{box[0], box[1] + margin, box[2], box[3] + margin});
   write_cut_forces_png(out / "forces.png", res);
-  write_summary(out, summary);
+  write_summary(options, doc, summary);
   remove_checkpoint(out);  // finished: nothing to resume
 #pragma omp critical(kerf_dem_stdout)
   std::cout << fmt::format(
@@ -277,7 +277,7 @@ SceneOutcome run_cut_replicates(const Json& cut_scene, const std::string& scene_
   summary["replicates_side_by_side"] = ran.summary["workers"];
   summary["wall_time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   summary["wall_time_s_sum_over_replicates"] = wall;
-  write_summary(options.out, summary);
+  write_summary(options, cut_scene, summary);
   std::cout << fmt::format(
       "cut, {} replicates: main force {:.3g} N (replicate std {:.2g}), thrust force {:.3g} N "
       "(replicate std {:.2g}) per {:g} mm width{} -> {}\n",

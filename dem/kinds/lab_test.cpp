@@ -156,7 +156,7 @@ class LabTestKind final : public SceneKind {
     if (frame_every > 0) write_pvd(out / "result.pvd", tp.frames);
     write_specimen_png(out / "specimen.png", run.simulation(), name() + ", final state");
     write_stress_strain_png(out / "curve.png", res, name() + ": stress-strain curve");
-    write_summary(out, summary);
+    write_summary(scene_run.options, scene_run.doc, summary);
     remove_checkpoint(out);  // finished: nothing to resume
     std::cout << fmt::format("{}: E = {:.2f} GPa, nu = {:.3f}, {} strength = {:.1f} MPa, {} steps, {:.1f} s -> {}\n",
                              name(), units::pa_to_gpa(res.youngs_modulus_pa), res.poissons_ratio,

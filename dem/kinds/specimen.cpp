@@ -38,7 +38,7 @@ class SpecimenKind final : public SceneKind {
     summary["steps"] = report.genesis_steps;
     summary["wall_time_s"] = genesis_s;
     summary["particle_steps_per_s"] = report.n_particles * static_cast<double>(report.genesis_steps) / genesis_s;
-    write_summary(out, summary);
+    write_summary(run.options, run.doc, summary);
     std::cout << fmt::format("specimen: {} disks, {} joints, packing fraction {:.4f}, coordination {:.3f}, residual "
                              "stress ({:.3g}, {:.3g}) MPa -> {}\n",
                              report.n_particles, report.n_bonds, report.packing_fraction, report.coordination_number,

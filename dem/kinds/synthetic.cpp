@@ -44,7 +44,7 @@ class SyntheticKind final : public SceneKind {
     if (value > fail_above_) throw ModelError("synthetic", fmt::format("value {} above fail_above", value));
     Json summary{{"kind", "synthetic"}, {"seed", common.specimen.seed},
                  {"results", {{"value", value}, {"value_squared", value * value}}}, {"wall_time_s", sleep_s_}};
-    write_summary(run.options.out, summary);
+    write_summary(run.options, run.doc, summary);
     return {0, summary, {}};
   }
 

@@ -179,7 +179,7 @@ class ToughnessKind final : public SceneKind {
     for (std::size_t i = 0; i < p.size(); ++i) y0 = std::min(y0, p.y[i] - p.radius[i]), y1 = std::max(y1, p.y[i] + p.radius[i]);
     write_specimen_png(out / "crack.png", *first_final, "toughness (SENB): the notch and the crack, final state",
                        std::array<double, 4>{xc - r0.depth_m, xc + r0.depth_m, y0, y1});
-    write_summary(out, summary);
+    write_summary(scene_run.options, scene_run.doc, summary);
     std::cout << fmt::format(
         "toughness: K_IC = {:.3f}{} MPa sqrt(m), G_c = {:.3g}{} J/m^2 (K_IC^2/E' = {:.3g} J/m^2), work of fracture "
         "{:.3g} J/m^2, {} packing{}, {:.1f} s -> {}\n",

@@ -24,6 +24,7 @@
 #include <type_traits>
 #include <functional>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -169,6 +170,32 @@ template <class S, class E>
 ChoiceField<S> choice_field(std::string_view key, const EnumNames<E>& names, std::string_view doc, E S::*member) {
   return {key, names.names, doc, [member](const S& s) { return static_cast<int>(s.*member); },
           [member](S& s, int v) { s.*member = static_cast<E>(v); }};
+}
+
+/// The fields of a member struct (`member` of S, of type B, with its own table) as fields of S: one table
+/// written once and embedded in each struct that holds it (the bond laws' BondStiffnessStrength). Number and
+/// integer fields.
+template <class S, class B>
+FieldTable<S> embedded_fields(const FieldTable<B>& table, B S::*member) {
+  FieldTable<S> out;
+  for (const auto& field : table) {
+    std::visit(
+        [&](const auto& f) {
+          using F = std::decay_t<decltype(f)>;
+          if constexpr (std::is_same_v<F, NumberField<B>>)
+            out.push_back(NumberField<S>{f.key, f.unit, f.range, f.doc,
+                                         [get = f.get, member](const S& s) { return get(s.*member); },
+                                         [set = f.set, member](S& s, double v) { set(s.*member, v); }, f.required});
+          else if constexpr (std::is_same_v<F, IntField<B>>)
+            out.push_back(IntField<S>{f.key, f.lo, f.hi, f.doc,
+                                      [get = f.get, member](const S& s) { return get(s.*member); },
+                                      [set = f.set, member](S& s, int v) { set(s.*member, v); }});
+          else
+            throw std::logic_error("embedded_fields: numbers and integers only (" + std::string(f.key) + ")");
+        },
+        field);
+  }
+  return out;
 }
 
 /// Reads every field present in the reader's object into a copy of `s` (absent fields keep their value,

@@ -24,7 +24,7 @@ Material undamped_elastic() {
   Material m;
   m.local_damping = 0;
   auto& j = std::get<FlatJointParams>(m.joint);
-  j.tensile_strength_pa = j.cohesion_pa = 1e15;  // elastic: never breaks
+  j.bond.tensile_strength_pa = j.bond.cohesion_pa = 1e15;  // elastic: never breaks
   return m;
 }
 

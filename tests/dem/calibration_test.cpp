@@ -56,9 +56,9 @@ TEST_CASE("calibration: E follows E*, strengths follow (sigma_c, c)", "[calibrat
   const MacroProperties a = measure_macro_properties(specimen, loading(LabTest::tension), loading(LabTest::compression));
   Material stiffer = base;
   std::get<LinearContactParams>(stiffer.contact).effective_modulus_pa *= 1.5;
-  std::get<FlatJointParams>(stiffer.joint).effective_modulus_pa *= 1.5;
-  std::get<FlatJointParams>(stiffer.joint).tensile_strength_pa *= 1.5;  // same strain to failure: the time scale stays the same
-  std::get<FlatJointParams>(stiffer.joint).cohesion_pa *= 1.5;
+  std::get<FlatJointParams>(stiffer.joint).bond.effective_modulus_pa *= 1.5;
+  std::get<FlatJointParams>(stiffer.joint).bond.tensile_strength_pa *= 1.5;  // same strain to failure: the time scale stays the same
+  std::get<FlatJointParams>(stiffer.joint).bond.cohesion_pa *= 1.5;
   const MacroProperties b =
       measure_macro_properties(with_material(specimen, stiffer), loading(LabTest::tension), loading(LabTest::compression));
   CHECK_THAT(b.youngs_modulus_pa, WithinRel(1.5 * a.youngs_modulus_pa, 0.01));
@@ -91,10 +91,10 @@ namespace {
 
 CalibrationSpec reachable_spec(std::span<const SpecimenSource> sources) {
   Material hidden;
-  std::get<LinearContactParams>(hidden.contact).effective_modulus_pa = std::get<FlatJointParams>(hidden.joint).effective_modulus_pa = 80e9;
-  std::get<LinearContactParams>(hidden.contact).stiffness_ratio = std::get<FlatJointParams>(hidden.joint).stiffness_ratio = 2.5;
-  std::get<FlatJointParams>(hidden.joint).tensile_strength_pa = 150e6;
-  std::get<FlatJointParams>(hidden.joint).cohesion_pa = 180e6;
+  std::get<LinearContactParams>(hidden.contact).effective_modulus_pa = std::get<FlatJointParams>(hidden.joint).bond.effective_modulus_pa = 80e9;
+  std::get<LinearContactParams>(hidden.contact).stiffness_ratio = std::get<FlatJointParams>(hidden.joint).bond.stiffness_ratio = 2.5;
+  std::get<FlatJointParams>(hidden.joint).bond.tensile_strength_pa = 150e6;
+  std::get<FlatJointParams>(hidden.joint).bond.cohesion_pa = 180e6;
   CalibrationSpec spec;
   spec.tension = loading(LabTest::tension);
   spec.compression = loading(LabTest::compression);
@@ -186,7 +186,7 @@ TEST_CASE("calibration: evaluations serialise bit-exactly, corrupt bytes are rej
   CalibrationEvaluation e;
   e.index = 3;
   e.material.name = "x";
-  std::get<FlatJointParams>(e.material.joint).cohesion_pa = 0.1 + 0.2;  // not a short decimal
+  std::get<FlatJointParams>(e.material.joint).bond.cohesion_pa = 0.1 + 0.2;  // not a short decimal
   e.macro = {7.1e10 / 3, 0.23 / 7, 4.1e7 / 9, 3.3e8 / 11};
   e.max_relative_error = 1.0 / 3;
   e.wall_time_s = 2.0 / 3;
@@ -201,6 +201,6 @@ TEST_CASE("calibration: evaluations serialise bit-exactly, corrupt bytes are rej
   CHECK_THROWS_AS(deserialize_evaluations(std::string_view(bytes).substr(0, bytes.size() - 1)), kerf::ModelError);
   Material other = e.material;
   CHECK(same_micro_parameters(other, e.material));
-  std::get<FlatJointParams>(other.joint).cohesion_pa = std::nextafter(std::get<FlatJointParams>(other.joint).cohesion_pa, 1.0);
+  std::get<FlatJointParams>(other.joint).bond.cohesion_pa = std::nextafter(std::get<FlatJointParams>(other.joint).bond.cohesion_pa, 1.0);
   CHECK_FALSE(same_micro_parameters(other, e.material));
 }

@@ -2,11 +2,14 @@
 
 #include <catch2/catch.hpp>
 #include <cstdint>
+#include <algorithm>
 #include <cstring>
 #include <new>
 #include <variant>
 
+#include "kerf/dem/calibration.hpp"
 #include "kerf/dem/simulation.hpp"
+#include "../../dem/serial.hpp"
 #include "kerf/error.hpp"
 
 using kerf::dem::Checkpoint;
@@ -70,25 +73,170 @@ TEST_CASE("checkpoint: cut short, a byte too many, a wrapping length, another ve
   CHECK_THROWS_WITH(Checkpoint::parse("PNG....."), Catch::Matchers::Contains("not a kerf-dem checkpoint"));
 }
 
-// Regressions of the two faults fuzz_checkpoint found behind a valid checksum (docs/hardening.md).
-TEST_CASE("checkpoint: an engine state with empty arrays reads back; a law index beyond the laws is a ModelError",
-          "[checkpoint]") {
+// Regression of a fault fuzz_checkpoint found behind a valid checksum (docs/hardening.md).
+TEST_CASE("checkpoint: an engine state with empty arrays reads back", "[checkpoint]") {
   using namespace kerf::dem;
   Simulation sim(Material{}, SimulationOptions{});  // no disks, joints, walls or cracks: every array empty
   const std::string good = sim.serialize();
   CHECK(Simulation::deserialize(good).serialize() == good);  // UBSan: no memcpy from a null data()
-  // Where the stored joint law keeps its alternative's index: a variant built over a known fill byte.
-  alignas(BondLaw) unsigned char buffer[sizeof(BondLaw)];
-  std::memset(buffer, 0xAA, sizeof buffer);
-  new (buffer) BondLaw(ParallelBondParams{});
-  std::size_t index_at = sizeof buffer;
-  for (std::size_t k = std::max(sizeof(FlatJointParams), sizeof(ParallelBondParams)); k < sizeof buffer; ++k)
-    if (buffer[k] == 1) index_at = k;
-  REQUIRE(index_at < sizeof buffer);
-  // The state begins: tag, density, the contact law, the joint law (serial.hpp writes each whole).
-  const std::size_t joint_at = 8 + sizeof(double) + sizeof(ContactLaw);
-  REQUIRE(static_cast<unsigned char>(good[joint_at + index_at]) == 0);  // the default material's flat joint
-  std::string bad = good;
-  bad[joint_at + index_at] = static_cast<char>(std::variant_size_v<BondLaw>);
+}
+
+namespace {
+using namespace kerf::dem;
+/// The bond laws registered in the other order: a build whose list was reordered.
+using ReorderedBondLaw = std::variant<ParallelBondParams, FlatJointParams>;
+
+template <class V, class Law>
+V written_and_read(const Law& law) {
+  std::string bytes;
+  serial::put_law(bytes, law);
+  serial::In io{bytes};
+  V back = serial::get_law<V>(io);
+  io.expect_end("law record");
+  return back;
+}
+
+/// A material whose every law parameter differs from its default.
+Material odd_material(const BondLaw& joint) {
+  Material m;
+  m.contact = LinearContactParams::validated({91e9, 2.7, 0.41});
+  m.joint = joint;
+  return m;
+}
+FlatJointParams odd_flat_joint() {
+  FlatJointParams p;
+  p.bond = {81e9, 2.2, 123.456e6, 201e6, 0.31, 0.8};
+  p.residual_friction_coefficient = 0.33, p.n_elements = 4;
+  return FlatJointParams::validated(p);
+}
+ParallelBondParams odd_parallel_bond() {
+  ParallelBondParams p;
+  p.bond = {77e9, 1.9, 99.9e6, 150e6, 0.2, 0.6};
+  return ParallelBondParams::validated(p);
+}
+
+/// The material's two laws as records (this build) and as raw variants of 4a34e1f ("KERFDEM6", "KERFCAL3");
+/// `joint_index_at`: where in the raw bytes the joint variant keeps its index.
+struct LawBytes {
+  std::string records, raw;
+  std::size_t joint_index_at;
+};
+LawBytes law_bytes(const Material& m) {
+  LawBytes out;
+  serial::put_law(out.records, m.contact);
+  serial::put_law(out.records, m.joint);
+  const auto& c = std::get<LinearContactParams>(m.contact);
+  const legacy::ContactLaw6 contact6 = legacy::Linear6{c.effective_modulus_pa, c.stiffness_ratio, c.friction_coefficient};
+  alignas(legacy::BondLaw6) unsigned char joint6[sizeof(legacy::BondLaw6)];
+  std::memset(joint6, 0xAA, sizeof joint6);  // the padding and the index's place told apart
+  if (const auto* f = std::get_if<FlatJointParams>(&m.joint))
+    new (joint6) legacy::BondLaw6(legacy::FlatJoint6{
+        f->bond.effective_modulus_pa, f->bond.stiffness_ratio, f->bond.tensile_strength_pa, f->bond.cohesion_pa,
+        f->bond.friction_angle_rad, f->residual_friction_coefficient, f->n_elements, f->bond.radius_multiplier,
+        f->tan_friction_angle});
+  else {
+    const auto& p = std::get<ParallelBondParams>(m.joint);
+    const BondStiffnessStrength& b = p.bond;
+    new (joint6) legacy::BondLaw6(legacy::ParallelBond6{b.effective_modulus_pa, b.stiffness_ratio, b.tensile_strength_pa,
+                                                        b.cohesion_pa, b.friction_angle_rad, b.radius_multiplier,
+                                                        p.tan_friction_angle});
+  }
+  serial::put_raw(out.raw, contact6);
+  // The variant keeps its index in the first byte past its largest alternative.
+  out.joint_index_at = out.raw.size() + std::max(sizeof(legacy::FlatJoint6), sizeof(legacy::ParallelBond6));
+  REQUIRE(joint6[out.joint_index_at - out.raw.size()] == m.joint.index());
+  out.raw.append(reinterpret_cast<const char*>(joint6), sizeof joint6);
+  return out;
+}
+
+/// `now` (this build's bytes holding `m`'s law records once) with the records replaced by the raw variants of
+/// 4a34e1f and its leading tag by `old_tag`; `joint_index_at` receives the place of the joint's index.
+std::string with_raw_laws(std::string now, const Material& m, std::string_view old_tag,
+                          std::size_t* joint_index_at = nullptr) {
+  const LawBytes laws = law_bytes(m);
+  const std::size_t at = now.find(laws.records);
+  REQUIRE(at != std::string::npos);
+  now.replace(at, laws.records.size(), laws.raw);
+  now.replace(0, old_tag.size(), old_tag);
+  if (joint_index_at) *joint_index_at = at + laws.joint_index_at;
+  return now;
+}
+}  // namespace
+
+TEST_CASE("checkpoint: a law is stored by its name, and reads back the same in a reordered law list", "[checkpoint]") {
+  const FlatJointParams fj = odd_flat_joint();
+  const ParallelBondParams pb = odd_parallel_bond();
+  CHECK(written_and_read<BondLaw>(BondLaw(fj)) == BondLaw(fj));
+  CHECK(written_and_read<BondLaw>(BondLaw(pb)) == BondLaw(pb));
+  // Written by this build's list, read by a build that registers the laws in the other order, and back.
+  const ReorderedBondLaw fj_reordered = written_and_read<ReorderedBondLaw>(BondLaw(fj));
+  REQUIRE(std::holds_alternative<FlatJointParams>(fj_reordered));
+  CHECK(std::get<FlatJointParams>(fj_reordered) == fj);
+  const ReorderedBondLaw pb_reordered = written_and_read<ReorderedBondLaw>(BondLaw(pb));
+  REQUIRE(std::holds_alternative<ParallelBondParams>(pb_reordered));
+  CHECK(std::get<ParallelBondParams>(pb_reordered) == pb);
+  CHECK(written_and_read<BondLaw>(pb_reordered) == BondLaw(pb));
+  // The default law's derived member is what validated() derives (a record does not store it).
+  CHECK(FlatJointParams::validated(FlatJointParams{}) == FlatJointParams{});
+  CHECK(ParallelBondParams::validated(ParallelBondParams{}) == ParallelBondParams{});
+}
+
+TEST_CASE("checkpoint: a law record of an unknown name, a missing key or a value out of range is a ModelError",
+          "[checkpoint]") {
+  std::string bytes;
+  serial::put_law(bytes, BondLaw(odd_parallel_bond()));
+  std::string unknown = bytes;
+  unknown.replace(8, 13, "parallel_bind");  // after the name's length
+  serial::In io{unknown};
+  CHECK_THROWS_WITH(serial::get_law<BondLaw>(io), Catch::Matchers::Contains("the law 'parallel_bind': an unknown law"));
+  // A bond law's record read into the contact law list: no law of that name there.
+  std::string fj;
+  serial::put_law(fj, BondLaw(odd_flat_joint()));
+  serial::In as_contact{fj};
+  CHECK_THROWS_AS(serial::get_law<ContactLaw>(as_contact), kerf::ModelError);
+  legacy::LawRecord r = std::visit([](const auto& p) { return serial::law_record(p); }, BondLaw(odd_flat_joint()));
+  r.values.pop_back();
+  CHECK_THROWS_WITH(serial::law_from_record<BondLaw>(r), Catch::Matchers::Contains("no value for"));
+  r = serial::law_record(odd_flat_joint());
+  r.values.front().second = -1;  // a negative modulus
+  CHECK_THROWS_AS(serial::law_from_record<BondLaw>(r), kerf::ModelError);
+}
+
+TEST_CASE("checkpoint: an engine state of KERFDEM6 (the laws as raw variants) reads the same laws; another "
+          "version is refused naming it", "[checkpoint]") {
+  for (const BondLaw& joint : {BondLaw(odd_flat_joint()), BondLaw(odd_parallel_bond())}) {
+    Simulation sim(odd_material(joint), SimulationOptions{});
+    const int a = sim.add_particle(0, 0, 10e-6), b = sim.add_particle(19e-6, 0, 10e-6);
+    sim.install_bond(a, b);
+    sim.initialise();
+    sim.run(3);
+    const Simulation old = Simulation::deserialize(with_raw_laws(sim.serialize(), sim.material(), "KERFDEM6"));
+    CHECK(same_micro_parameters(old.material(), sim.material()));
+    CHECK(old.serialize() == sim.serialize());  // and written again in this build's format, byte for byte
+  }
+  const Simulation sim(odd_material(odd_parallel_bond()), SimulationOptions{});
+  std::size_t index_at = 0;
+  std::string bad = with_raw_laws(sim.serialize(), sim.material(), "KERFDEM6", &index_at);
+  bad[index_at] = static_cast<char>(std::variant_size_v<legacy::BondLaw6>);
   CHECK_THROWS_WITH(Simulation::deserialize(bad), Catch::Matchers::Contains("an unknown law"));
+  std::string older = sim.serialize();
+  older.replace(0, 8, "KERFDEM5");
+  CHECK_THROWS_WITH(Simulation::deserialize(older),
+                    Catch::Matchers::Contains("another kerf-dem version (KERFDEM5, this one reads KERFDEM7 or KERFDEM6)"));
+}
+
+TEST_CASE("checkpoint: a calibration log of KERFCAL3 (the laws as raw variants) reads the same laws", "[checkpoint]") {
+  std::vector<CalibrationEvaluation> log(2);
+  log[0].material = odd_material(odd_parallel_bond());
+  log[1].material = odd_material(odd_flat_joint());
+  log[0].macro = {70e9, 0.22, 40e6, 600e6};
+  log[1].index = 1;
+  // One evaluation at a time, so that each record is found where its raw variant goes.
+  const std::string now = serialize_evaluations(log);
+  std::string old = with_raw_laws(now, log[0].material, "\x33\x4c\x41\x43\x46\x52\x45\x4b");  // "KERFCAL3" as a u64
+  old = with_raw_laws(old, log[1].material, "\x33\x4c\x41\x43\x46\x52\x45\x4b");
+  const std::vector<CalibrationEvaluation> back = deserialize_evaluations(old);
+  REQUIRE(back.size() == 2);
+  for (std::size_t k = 0; k < 2; ++k) CHECK(same_micro_parameters(back[k].material, log[k].material));
+  CHECK(serialize_evaluations(back) == now);
 }

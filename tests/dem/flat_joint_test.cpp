@@ -87,28 +87,28 @@ TEST_CASE("flat joint: stiffness and bending closed forms", "[flat_joint]") {
 
 TEST_CASE("flat joint: tension breaks every element at sigma_c A_e", "[flat_joint]") {
   Joint j(FlatJointParams{});
-  const double g_break = j.p.tensile_strength_pa / j.geo.normal_stiffness;
+  const double g_break = j.p.bond.tensile_strength_pa / j.geo.normal_stiffness;
   auto below = j.update(0.999 * g_break, 0, 0);
   CHECK(below.n_breaking == 0);
   auto above = j.update(1.001 * g_break, 0, 0);
   CHECK(above.n_breaking == 2);
   CHECK(j.breaks[0] == BreakMode::tension);
   CHECK(j.breaks[1] == BreakMode::tension);
-  CHECK_THAT(above.normal_force_n, WithinRel(1.001 * 2 * j.p.tensile_strength_pa * j.element_area(), 1e-12));
+  CHECK_THAT(above.normal_force_n, WithinRel(1.001 * 2 * j.p.bond.tensile_strength_pa * j.element_area(), 1e-12));
   j.apply_breaks();
   // Broken and open: no force at all; closed again: compression only.
   auto open = j.update(2 * g_break, 0, 0);
   CHECK(open.normal_force_n == 0);
   CHECK(open.n_breaking == 0);
   auto closed = j.update(-g_break, 0, 0);
-  CHECK_THAT(closed.normal_force_n, WithinRel(-2 * j.p.tensile_strength_pa * j.element_area(), 1e-12));
+  CHECK_THAT(closed.normal_force_n, WithinRel(-2 * j.p.bond.tensile_strength_pa * j.element_area(), 1e-12));
 }
 
 TEST_CASE("flat joint: shear breaks on the Coulomb envelope c - sigma tan(phi)", "[flat_joint]") {
   Joint j(FlatJointParams{});
   const double sigma = -100e6;  // compression
   const double gap = sigma / j.geo.normal_stiffness;
-  const double strength = j.p.cohesion_pa - sigma * std::tan(j.p.friction_angle_rad);
+  const double strength = j.p.bond.cohesion_pa - sigma * std::tan(j.p.bond.friction_angle_rad);
   const double ds_break = strength / j.geo.shear_stiffness;  // tau = k_s * total shear displacement
   const int n = 1000;
   int broke_at = -1;
@@ -127,14 +127,14 @@ TEST_CASE("flat joint: shear breaks on the Coulomb envelope c - sigma tan(phi)",
   j.apply_breaks();
   // Residual: Coulomb friction mu |F_n| after breakage.
   auto r = j.update(gap, 0, ds_break);
-  CHECK_THAT(std::abs(r.shear_force_n), WithinRel(j.p.friction_coefficient * std::abs(r.normal_force_n), 1e-12));
+  CHECK_THAT(std::abs(r.shear_force_n), WithinRel(j.p.residual_friction_coefficient * std::abs(r.normal_force_n), 1e-12));
 }
 
 TEST_CASE("flat joint: bending breaks the opening element only (partial damage)", "[flat_joint]") {
   Joint j(FlatJointParams{});
   // theta > 0 opens the element at xi < 0: g_e = -theta xi_e.
   const double xi0 = flat_joint_element_centroid(j.geo, 2, 0);
-  const double theta_break = j.p.tensile_strength_pa / (j.geo.normal_stiffness * -xi0);
+  const double theta_break = j.p.bond.tensile_strength_pa / (j.geo.normal_stiffness * -xi0);
   auto below = j.update(0, 0.99 * theta_break, 0);
   CHECK(below.n_breaking == 0);
   auto above = j.update(0, 1.01 * theta_break, 0);
@@ -152,7 +152,7 @@ TEST_CASE("flat joint: bending breaks the opening element only (partial damage)"
 
 TEST_CASE("flat joint: load-unload-reload is elastic while bonded, compression-only once broken", "[flat_joint]") {
   Joint j(FlatJointParams{});
-  const double g_break = j.p.tensile_strength_pa / j.geo.normal_stiffness;
+  const double g_break = j.p.bond.tensile_strength_pa / j.geo.normal_stiffness;
   const double k = j.geo.normal_stiffness * 2 * j.geo.half_length_m * j.geo.thickness_m;
   for (double g : {0.5 * g_break, 0.0, -0.5 * g_break, 0.5 * g_break})
     CHECK_THAT(j.update(g, 0, 0).normal_force_n, WithinRel(k * g, 1e-12));
@@ -202,7 +202,7 @@ TEST_CASE("flat joint: parameters are validated when built", "[flat_joint]") {
   CHECK_THROWS_WITH(kerf::with_path("material", [&] { return FlatJointParams::validated(p); }),
                     "material.n_elements = 1: expected an integer in [2, 16]");
   p = FlatJointParams{};
-  p.tensile_strength_pa = -1e6;
+  p.bond.tensile_strength_pa = -1e6;
   CHECK_THROWS_AS(FlatJointParams::validated(p), kerf::InputError);
 }
 
@@ -215,10 +215,10 @@ TEST_CASE("flat joint: the two-element intact path equals the general update to 
   int n_tension = 0, n_shear = 0, n_none = 0;
   for (int k = 0; k < 20000; ++k) {
     FlatJointParams raw;
-    raw.effective_modulus_pa = 107e9 * (1 + 0.5 * unit(rng));
-    raw.stiffness_ratio = 3.1 * (1 + 0.5 * unit(rng));
-    raw.radius_multiplier = 0.75 + 0.25 * std::abs(unit(rng));
-    raw.friction_angle_rad = 0.4 * (1 + unit(rng));
+    raw.bond.effective_modulus_pa = 107e9 * (1 + 0.5 * unit(rng));
+    raw.bond.stiffness_ratio = 3.1 * (1 + 0.5 * unit(rng));
+    raw.bond.radius_multiplier = 0.75 + 0.25 * std::abs(unit(rng));
+    raw.bond.friction_angle_rad = 0.4 * (1 + unit(rng));
     Joint general(raw, 10e-6 * (1.15 + 0.15 * unit(rng)), 10e-6 * (1.15 + 0.15 * unit(rng)));
     Joint fast = general;
     const double R = general.geo.half_length_m;
@@ -254,24 +254,24 @@ TEST_CASE("flat joint: the intact path decides breaks as the stress test does, u
   int scans_crossing = 0, n_scans = 0;
   for (int k = 0; k < 600; ++k) {
     FlatJointParams raw;
-    raw.effective_modulus_pa = 107e9 * (1 + 0.5 * unit(rng));
-    raw.friction_angle_rad = 0.4 * (1 + unit(rng));
-    raw.tensile_strength_pa = 200e6 * (1 + 0.9 * unit(rng));
-    raw.cohesion_pa = 113e6 * (1 + 0.9 * unit(rng));
+    raw.bond.effective_modulus_pa = 107e9 * (1 + 0.5 * unit(rng));
+    raw.bond.friction_angle_rad = 0.4 * (1 + unit(rng));
+    raw.bond.tensile_strength_pa = 200e6 * (1 + 0.9 * unit(rng));
+    raw.bond.cohesion_pa = 113e6 * (1 + 0.9 * unit(rng));
     if (k % 5 == 1)
-      raw.cohesion_pa = raw.tensile_strength_pa * std::tan(raw.friction_angle_rad) * (1 + 1e-9 * unit(rng));
-    if (k % 5 == 2) raw.cohesion_pa = 0;
-    if (k % 5 == 3) raw.tensile_strength_pa = 0;
+      raw.bond.cohesion_pa = raw.bond.tensile_strength_pa * std::tan(raw.bond.friction_angle_rad) * (1 + 1e-9 * unit(rng));
+    if (k % 5 == 2) raw.bond.cohesion_pa = 0;
+    if (k % 5 == 3) raw.bond.tensile_strength_pa = 0;
     Joint general(raw, 10e-6 * (1.15 + 0.15 * unit(rng)), 10e-6 * (1.15 + 0.15 * unit(rng)));
     const double area = general.element_area();
     const double kn_t_le = general.geo.normal_stiffness * general.geo.thickness_m * general.geo.half_length_m;
     const bool tension_scan = k % 2 == 0;
     // Tension: g_s such that sigma = sigma_c. Shear: sigma somewhere below sigma_c, |F_s| on the envelope.
     const double sigma =
-        tension_scan ? general.p.tensile_strength_pa : general.p.tensile_strength_pa * (0.9 - 2 * std::abs(unit(rng)));
+        tension_scan ? general.p.bond.tensile_strength_pa : general.p.bond.tensile_strength_pa * (0.9 - 2 * std::abs(unit(rng)));
     const double gap0 = sigma * area / kn_t_le;
     const double shear0 =
-        std::max(0.0, general.p.cohesion_pa - sigma * general.p.tan_friction_angle) * area * (unit(rng) < 0 ? -1 : 1);
+        std::max(0.0, general.p.bond.cohesion_pa - sigma * general.p.tan_friction_angle) * area * (unit(rng) < 0 ? -1 : 1);
     bool seen_break = false, seen_intact = false;
     for (int m = -40; m <= 40; ++m) {
       Joint fast = general;

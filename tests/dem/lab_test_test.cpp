@@ -27,8 +27,8 @@ TEST_CASE("lab test: hexagonal specimen's E and nu match the lattice closed form
   const Simulation sim = make_specimen(m, spec, report);
   // Plane stress, bonds K_n = E* t, K_s = K_n / kappa: E = 2 sqrt(3) E* (1 + 1/kappa) / (3 + 1/kappa),
   // nu = (kappa - 1) / (3 kappa + 1).
-  const double kappa = std::get<FlatJointParams>(m.joint).stiffness_ratio;
-  const double e_closed = 2 * std::sqrt(3.0) * std::get<FlatJointParams>(m.joint).effective_modulus_pa * (1 + 1 / kappa) / (3 + 1 / kappa);
+  const double kappa = std::get<FlatJointParams>(m.joint).bond.stiffness_ratio;
+  const double e_closed = 2 * std::sqrt(3.0) * std::get<FlatJointParams>(m.joint).bond.effective_modulus_pa * (1 + 1 / kappa) / (3 + 1 / kappa);
   const double nu_closed = (kappa - 1) / (3 * kappa + 1);
   // The load-bearing width of the lattice is (disks per row) 2R; the test divides by the outer width,
   // which the offset rows make R wider.

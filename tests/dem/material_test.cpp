@@ -2,8 +2,13 @@
 // the contact-model registry rejecting unknown names, bundled materials found through "base".
 #include "kerf/dem/material.hpp"
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
 
 #include "kerf/dem/contact_laws.hpp"
 #include "kerf/error.hpp"
@@ -16,13 +21,13 @@ TEST_CASE("material: keys carry units, converted to SI once", "[material]") {
   const Material m = read_material(kerf::Json::parse(R"({"effective_modulus_GPa": 90, "tensile_strength_MPa": 80,
       "cohesion_MPa": 200, "friction_angle_deg": 30, "n_elements": 3, "stiffness_ratio": 2.5})"), "material");
   CHECK(std::get<LinearContactParams>(m.contact).effective_modulus_pa == 90e9);
-  CHECK(std::get<FlatJointParams>(m.joint).tensile_strength_pa == 80e6);
-  CHECK(std::get<FlatJointParams>(m.joint).cohesion_pa == 200e6);
-  CHECK_THAT(std::get<FlatJointParams>(m.joint).friction_angle_rad, WithinRel(M_PI / 6, 1e-15));
+  CHECK(std::get<FlatJointParams>(m.joint).bond.tensile_strength_pa == 80e6);
+  CHECK(std::get<FlatJointParams>(m.joint).bond.cohesion_pa == 200e6);
+  CHECK_THAT(std::get<FlatJointParams>(m.joint).bond.friction_angle_rad, WithinRel(M_PI / 6, 1e-15));
   CHECK_THAT(std::get<FlatJointParams>(m.joint).tan_friction_angle, WithinRel(std::tan(M_PI / 6), 1e-15));
   CHECK(std::get<FlatJointParams>(m.joint).n_elements == 3);
   CHECK(std::get<LinearContactParams>(m.contact).stiffness_ratio == 2.5);
-  CHECK(std::get<FlatJointParams>(m.joint).stiffness_ratio == 3.1);  // the bond's own ratio is a separate key
+  CHECK(std::get<FlatJointParams>(m.joint).bond.stiffness_ratio == 3.1);  // the bond's own ratio is a separate key
 }
 
 TEST_CASE("material: errors name the field, the value and the expectation", "[material]") {
@@ -48,7 +53,7 @@ TEST_CASE("material: a bundled material is the base that other keys override", "
   const Material m = read_material(kerf::Json::parse(R"({"base": "soda_lime_glass_fj", "local_damping": 0.5})"), "material");
   CHECK(m.name == "soda_lime_glass_fj");
   CHECK(m.local_damping == 0.5);
-  CHECK(std::get<FlatJointParams>(m.joint).cohesion_pa > std::get<FlatJointParams>(m.joint).tensile_strength_pa);  // calibrated: c / sigma_c > 1
+  CHECK(std::get<FlatJointParams>(m.joint).bond.cohesion_pa > std::get<FlatJointParams>(m.joint).bond.tensile_strength_pa);  // calibrated: c / sigma_c > 1
 }
 
 TEST_CASE("contact laws: the registry constructs laws by name", "[material]") {
@@ -89,4 +94,40 @@ TEST_CASE("material: to_json reads back to the same micro-parameters, every key 
   const std::string md = material_keys_markdown();
   for (const auto& [key, value] : j.items())
     if (key != "name") CHECK_THAT(md, Contains("`" + key + "`"));
+}
+
+namespace {
+template <class S>
+std::vector<std::string> keys_of(const kerf::FieldTable<S>& table) {
+  std::vector<std::string> keys;
+  for (const auto& field : table) std::visit([&](const auto& f) { keys.emplace_back(f.key); }, field);
+  return keys;
+}
+template <class V>
+std::vector<std::vector<std::string>> law_keys() {
+  return [&]<std::size_t... I>(std::index_sequence<I...>) {
+    return std::vector<std::vector<std::string>>{keys_of(std::variant_alternative_t<I, V>::fields())...};
+  }(std::make_index_sequence<std::variant_size_v<V>>{});
+}
+}  // namespace
+
+TEST_CASE("material: each key belongs to one law (issue 39): friction_coefficient is the contact's, "
+          "residual_friction_coefficient the flat joint's", "[material]") {
+  // No key of a contact law is a key of a bond law or of the material itself, so no key sets two things.
+  const std::vector<std::string> own = keys_of(Material::fields());
+  for (const auto& contact : law_keys<ContactLaw>())
+    for (const auto& key : contact) {
+      CHECK(std::find(own.begin(), own.end(), key) == own.end());
+      for (const auto& bond : law_keys<BondLaw>()) CHECK(std::find(bond.begin(), bond.end(), key) == bond.end());
+    }
+  const Material m = read_material(kerf::Json::parse(R"({"friction_coefficient": 0.2})"), "material");
+  CHECK(std::get<LinearContactParams>(m.contact).friction_coefficient == 0.2);
+  CHECK(std::get<FlatJointParams>(m.joint).residual_friction_coefficient == FlatJointParams{}.residual_friction_coefficient);
+  const Material r = read_material(kerf::Json::parse(R"({"residual_friction_coefficient": 0.3})"), "material");
+  CHECK(std::get<LinearContactParams>(r.contact).friction_coefficient == LinearContactParams{}.friction_coefficient);
+  CHECK(std::get<FlatJointParams>(r.joint).residual_friction_coefficient == 0.3);
+  // Both laws' block of stiffness and strength is one table: the bond laws' keys for it are the same.
+  for (const auto& bond : law_keys<BondLaw>())
+    for (const auto& key : keys_of(BondStiffnessStrength::fields()))
+      CHECK(std::find(bond.begin(), bond.end(), key) != bond.end());
 }

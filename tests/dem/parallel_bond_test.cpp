@@ -65,9 +65,9 @@ TEST_CASE("parallel bond: elastic response equals the intact flat joint's", "[pa
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> u(-1, 1);
   ParallelBondParams pp;
-  pp.tensile_strength_pa = pp.cohesion_pa = 1e30;  // elastic
+  pp.bond.tensile_strength_pa = pp.bond.cohesion_pa = 1e30;  // elastic
   FlatJointParams fp;
-  fp.tensile_strength_pa = fp.cohesion_pa = 1e30;
+  fp.bond.tensile_strength_pa = fp.bond.cohesion_pa = 1e30;
   fp = FlatJointParams::validated(fp);
   for (int k = 0; k < 200; ++k) {
     Bond b(pp);
@@ -88,17 +88,17 @@ TEST_CASE("parallel bond: breaks on its periphery stress", "[parallel_bond]") {
   const ParallelBondParams p;
   SECTION("tension: at F = 2 R t sigma_c") {
     Bond b;
-    const double g_break = p.tensile_strength_pa / b.geo.normal_stiffness;
+    const double g_break = p.bond.tensile_strength_pa / b.geo.normal_stiffness;
     b.update(g_break * (1 - 1e-9), 0, 0);
     CHECK(b.mode == BreakMode::none);
     const auto r = b.update(g_break * (1 + 1e-9), 0, 0);
     CHECK(b.mode == BreakMode::tension);
     CHECK(r.n_breaking == 1);
-    CHECK_THAT(r.normal_force_n, WithinRel(2 * 10e-6 * 1e-3 * p.tensile_strength_pa, 1e-8));
+    CHECK_THAT(r.normal_force_n, WithinRel(2 * 10e-6 * 1e-3 * p.bond.tensile_strength_pa, 1e-8));
   }
   SECTION("bending: at |M| R / I = sigma_c, twice sooner than a two-element flat joint's first element") {
     Bond b;
-    const double theta_break = p.tensile_strength_pa / (b.geo.normal_stiffness * b.geo.half_length_m);
+    const double theta_break = p.bond.tensile_strength_pa / (b.geo.normal_stiffness * b.geo.half_length_m);
     b.update(0, theta_break * (1 - 1e-9), 0);
     CHECK(b.mode == BreakMode::none);
     b.update(0, -theta_break * (1 + 1e-9), 0);  // either sense
@@ -108,7 +108,7 @@ TEST_CASE("parallel bond: breaks on its periphery stress", "[parallel_bond]") {
     for (double sigma : {0.0, -50e6}) {
       Bond b;
       const double gap = sigma / b.geo.normal_stiffness;
-      const double tau_c = p.cohesion_pa - sigma * std::tan(p.friction_angle_rad);
+      const double tau_c = p.bond.cohesion_pa - sigma * std::tan(p.bond.friction_angle_rad);
       const double ds_break = tau_c / b.geo.shear_stiffness;
       b.update(gap, 0, ds_break * (1 - 1e-9));
       CHECK(b.mode == BreakMode::none);
@@ -130,15 +130,15 @@ TEST_CASE("parallel bond: breaks on its periphery stress", "[parallel_bond]") {
 
 TEST_CASE("parallel bond: parameters are validated, errors name the key", "[parallel_bond]") {
   ParallelBondParams p;
-  p.radius_multiplier = 0;
+  p.bond.radius_multiplier = 0;
   CHECK_THROWS_WITH(ParallelBondParams::validated(p), "radius_multiplier = 0: expected a value in (0, 1]");
   p = {};
-  p.friction_angle_rad = 2.0;
+  p.bond.friction_angle_rad = 2.0;
   CHECK_THROWS_AS(ParallelBondParams::validated(p), kerf::InputError);
   const Material m = read_material(kerf::Json::parse(R"({"bond_model": "parallel_bond", "tensile_strength_MPa": 90,
       "friction_angle_deg": 30, "friction_coefficient": 0.4})"), "material");
   REQUIRE(std::holds_alternative<ParallelBondParams>(m.joint));
-  CHECK(std::get<ParallelBondParams>(m.joint).tensile_strength_pa == 90e6);
+  CHECK(std::get<ParallelBondParams>(m.joint).bond.tensile_strength_pa == 90e6);
   CHECK_THAT(std::get<ParallelBondParams>(m.joint).tan_friction_angle, WithinRel(std::tan(M_PI / 6), 1e-15));
   CHECK(std::get<LinearContactParams>(m.contact).friction_coefficient == 0.4);  // the contact's key
   // A flat joint's own key is not a parallel bond's.

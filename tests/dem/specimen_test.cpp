@@ -52,7 +52,7 @@ TEST_CASE("specimen: hexagonal lattice stress under affine strain matches the cl
   }
   sim.evaluate_forces_with_increment();
   const double t = spec.thickness_m, R = 10e-6;
-  const double kn = std::get<FlatJointParams>(m.joint).effective_modulus_pa * t, ks = kn / std::get<FlatJointParams>(m.joint).stiffness_ratio;  // K_n = k_n 2R t
+  const double kn = std::get<FlatJointParams>(m.joint).bond.effective_modulus_pa * t, ks = kn / std::get<FlatJointParams>(m.joint).bond.stiffness_ratio;  // K_n = k_n 2R t
   const double lambda = std::sqrt(3.0) / 4 * (kn - ks) / t, mu = std::sqrt(3.0) / 4 * (kn + ks) / t;
   // Stress of the interior disks (six joints each): sigma_p = -(1 / (2 A_p t)) sum f_on_j (x) (x_j - x_i),
   // A_p = 2 sqrt(3) R^2 (each joint shared by two disks).
@@ -76,7 +76,7 @@ TEST_CASE("specimen: hexagonal lattice stress under affine strain matches the cl
   CHECK_THAT(s[1], WithinRel(lambda * (exx + eyy) + 2 * mu * eyy, 1e-3));
   CHECK_THAT(s[2], WithinRel(2 * mu * exy, 1e-3));
   // Plane-stress constants of the lattice: nu = (kappa - 1) / (3 kappa + 1) (0.204 for kappa = 3.1).
-  const double kappa = std::get<FlatJointParams>(m.joint).stiffness_ratio;
+  const double kappa = std::get<FlatJointParams>(m.joint).bond.stiffness_ratio;
   CHECK_THAT(lambda / (lambda + 2 * mu), WithinRel((kappa - 1) / (3 * kappa + 1), 1e-12));
   // Interior disks are in equilibrium under a homogeneous strain.
   double worst = 0, scale = 0;
@@ -125,7 +125,7 @@ TEST_CASE("specimen: the packing is the spec's alone, the joints and the relaxat
   const SpecimenSpec spec = small_random();
   Material soft, stiff;
   std::get<LinearContactParams>(stiff.contact).effective_modulus_pa *= 3;
-  std::get<FlatJointParams>(stiff.joint).effective_modulus_pa *= 3;
+  std::get<FlatJointParams>(stiff.joint).bond.effective_modulus_pa *= 3;
   stiff.density_kg_per_m3 *= 1.5;
   stiff.local_damping = 0.3;
   const CompactedPacking packing = compact_packing(spec);

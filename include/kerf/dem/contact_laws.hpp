@@ -36,14 +36,16 @@ concept LawParams = requires(const P& p) {
   { P::validated(p) } -> std::same_as<P>;
 };
 
-/// A bonded law: per-bond state of bond_elements() elements (a shear force and a bonded flag each), the
-/// geometry fixed at installation, the force update (breaks only flagged, applied by the engine after the
+/// A bonded law: its stiffness and strength as the shared block `bond` (BondStiffnessStrength: what calibration
+/// moves), per-bond state of bond_elements() elements (a shear force and a bonded flag each), the geometry fixed
+/// at installation, the force update (breaks only flagged, applied by the engine after the
 /// loop), when a bond hands its pair to the unbonded contact, its time-step stiffness, strain energy and the
 /// place of a broken element (crack events).
 template <class P>
 concept BondLawParams = LawParams<P> && requires(const P& p, const BondGeometry& g, const BondKinematics& k,
                                                  const BondResult& r, double* shear, const std::uint8_t* bonded,
                                                  BreakMode* breaks) {
+  { p.bond } -> std::same_as<const BondStiffnessStrength&>;
   { bond_elements(p) } -> std::same_as<int>;
   { bond_keeps_contact(p) } -> std::same_as<bool>;
   { bond_retires_on_break(p) } -> std::same_as<bool>;
@@ -56,14 +58,16 @@ concept BondLawParams = LawParams<P> && requires(const P& p, const BondGeometry&
 };
 
 /// An unbonded contact law: the force from the overlap and the shear increment (shear state one double per
-/// contact), its time-step stiffness and energy, and the same law with another friction coefficient.
+/// contact), its time-step stiffness and energy, the same law with another friction coefficient, and its
+/// effective modulus E* and stiffness ratio kappa* (the genesis servo, the p-wave speed and calibration use them).
 template <class P>
 concept ContactLawParams = LawParams<P> && requires(const P& p, double& shear) {
   { contact_update(p, 1.0, 1.0, 1.0, 1.0, 1.0, shear) } -> std::same_as<ContactResult>;
   { contact_time_step_stiffness(p, 1.0, 1.0, 1.0) } -> std::same_as<TimeStepStiffness>;
   { contact_energy(p, 1.0, 1.0, 1.0, 1.0, 1.0) } -> std::same_as<double>;
   { with_friction(p, 0.5) } -> std::same_as<P>;
-  { p.effective_modulus_pa } -> std::convertible_to<double>;
+  { p.effective_modulus_pa } -> std::same_as<const double&>;
+  { p.stiffness_ratio } -> std::same_as<const double&>;
 };
 
 // The laws. The first of each list is the default.

@@ -87,6 +87,10 @@ const FieldTable<CutParams>& active_window_fields();
 /// Checks every field's range and the cross-field constraints (groove narrower than its pitch, trapezoid bottom narrower than its
 /// top, the tool's wedge angle positive ...); InputError names the dotted key, value and expectation.
 void validate_cut_params(const CutParams& params);
+/// The active window's box and the absorbing layers' thicknesses in metres (each extent in depths of cut times
+/// the depth of cut): the one place they are converted. The layers' rates need the material's wave speed and
+/// the held rows the workpiece: CutRun sets those.
+CutWindowBox window_box_m(const CutParams& params);
 
 /// Reads the "cut" object (depth_of_cut_mm, speed_m_per_s, length_mm, entry_fraction,
 /// sample_every_steps, window_mm), the optional "tool" (rake_deg, clearance_deg, edge_radius_um, edge_segments,

@@ -29,14 +29,9 @@ namespace kerf::dem {
 struct FlatJointParams {
   static constexpr std::string_view kName = "flat_joint";
   static constexpr std::string_view kDescription = "Potyondy's 2D flat joint (dem/flat_joint)";
-  double effective_modulus_pa = 107e9;  ///< Ebar*: k_n = Ebar* / (R1 + R2)
-  double stiffness_ratio = 3.1;         ///< kappabar* = k_n / k_s
-  double tensile_strength_pa = 200e6;   ///< sigma_c
-  double cohesion_pa = 113e6;           ///< c
-  double friction_angle_rad = 0.4363323129985824;  ///< phi (25 deg), bonded-element Coulomb envelope
-  double friction_coefficient = 0.577;  ///< mu of unbonded elements (residual friction)
+  BondStiffnessStrength bond;  ///< Ebar*, kappabar*, sigma_c, c, phi (bonded-element Coulomb envelope), lambda
+  double residual_friction_coefficient = 0.577;  ///< mu of unbonded elements (residual friction)
   int n_elements = 2;                   ///< N_r >= 2 (else bending never enters the strength test)
-  double radius_multiplier = 1.0;       ///< lambda: R = lambda min(R1, R2)
   double tan_friction_angle = 0.46630765815499858;  ///< tan(phi), derived by validated() (hot loop)
 
   /// The keys, units, ranges and meanings of the parameters (the material's keys for this law).
@@ -82,10 +77,10 @@ inline BondResult flat_joint_update(const FlatJointParams& p, const BondGeometry
       me = -kn_t * theta * le * le * le / 12.0;
       const double sigma = fn / area;
       const double tau = std::abs(fs) / area;
-      if (sigma > p.tensile_strength_pa) {
+      if (sigma > p.bond.tensile_strength_pa) {
         breaks[e] = BreakMode::tension;
         ++r.n_breaking;
-      } else if (tau >= p.cohesion_pa - sigma * tan_phi) {
+      } else if (tau >= p.bond.cohesion_pa - sigma * tan_phi) {
         breaks[e] = BreakMode::shear;
         ++r.n_breaking;
       }
@@ -107,7 +102,7 @@ inline BondResult flat_joint_update(const FlatJointParams& p, const BondGeometry
         const double m = 0.5 * (c + d);
         fn = kn_t * integral;
         me = kn_t * (integral * (m - xi_e) - theta * (d - c) * (d - c) * (d - c) / 12.0);
-        const double limit = p.friction_coefficient * std::abs(fn);
+        const double limit = p.residual_friction_coefficient * std::abs(fn);
         fs = std::clamp(fs, -limit, limit);  // Coulomb sliding
       } else {
         fn = me = fs = 0.0;  // open: no contact, no friction

@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cstdint>
 
+#include "kerf/field_table.hpp"
+
 namespace kerf::dem {
 
 /// Break mode of a bond element, as recorded in crack events.
@@ -20,6 +22,22 @@ struct BondGeometry {
   double shear_stiffness;   ///< k_s [Pa/m]
 };
 
+/// The stiffness and strength every bond law of kerf has (the concept BondLawParams requires it as the member
+/// `bond`), with one field table: what calibration moves and reports, by name, whatever the law. SI; the
+/// defaults are seed 000's Table 1.
+struct BondStiffnessStrength {
+  double effective_modulus_pa = 107e9;             ///< Ebar*: k_n = Ebar* / (R1 + R2)
+  double stiffness_ratio = 3.1;                    ///< kappabar* = k_n / k_s
+  double tensile_strength_pa = 200e6;              ///< sigma_c
+  double cohesion_pa = 113e6;                      ///< c
+  double friction_angle_rad = 0.4363323129985824;  ///< phi (25 deg) of the shear envelope c - sigma tan(phi)
+  double radius_multiplier = 1.0;                  ///< lambda: R = lambda min(R1, R2)
+
+  /// The keys of the block (each bond law's table embeds it: kerf::embedded_fields).
+  static const FieldTable<BondStiffnessStrength>& fields();
+  bool operator==(const BondStiffnessStrength&) const = default;
+};
+
 /// The bonded interface of both registered bond laws: k_n = Ebar* / (R1 + R2) (r2 = 0: a disk-wall bond,
 /// L = R1), k_s = k_n / kappabar*, half-length R = lambda min(R1, R2).
 inline BondGeometry interface_geometry(double effective_modulus_pa, double stiffness_ratio, double radius_multiplier,
@@ -27,6 +45,9 @@ inline BondGeometry interface_geometry(double effective_modulus_pa, double stiff
   const double r_min = r2_m > 0 ? std::min(r1_m, r2_m) : r1_m;
   const double kn = effective_modulus_pa / (r1_m + r2_m);
   return {radius_multiplier * r_min, thickness_m, kn, kn / stiffness_ratio};
+}
+inline BondGeometry interface_geometry(const BondStiffnessStrength& b, double r1_m, double r2_m, double thickness_m) {
+  return interface_geometry(b.effective_modulus_pa, b.stiffness_ratio, b.radius_multiplier, r1_m, r2_m, thickness_m);
 }
 
 /// Relative motion of a bonded interface since installation, in the contact frame (n from disk 1 to 2).

@@ -6,9 +6,9 @@
 //
 // Keys (all optional, defaults are seed 000 Table 1): the material's own (name, density_kg_per_m3,
 // local_damping), contact_model and bond_model (the laws, kerf/dem/contact_laws.hpp; defaults "linear" and
-// "flat_joint"), the keys of the two laws (their field tables; a key both laws have, such as
-// friction_coefficient, sets both), and base (name of a file data/materials/<base>.json whose values the
-// other keys override). material_keys_markdown() is the complete reference (docs/dem.md).
+// "flat_joint"), the keys of the two laws (their field tables; each key belongs to one law: friction_coefficient
+// is the unbonded contact's, residual_friction_coefficient the flat joint's), and base (name of a file
+// data/materials/<base>.json whose values the other keys override). material_keys_markdown() is the complete reference (docs/dem.md).
 #include <string>
 
 #include "kerf/dem/contact_laws.hpp"
@@ -45,8 +45,8 @@ Json material_to_json(const Material& m);
 /// Whether two materials have the same micro-parameters, every number to the bit (the name aside).
 bool same_micro_parameters(const Material& a, const Material& b);
 
-/// The micro-parameters that calibration moves, which every law of the registry has (E* and kappa of both
-/// laws, the bond strengths).
+/// The micro-parameters that calibration moves, which the law concepts require of every law of the registry
+/// (E* and kappa* of the unbonded contact; Ebar*, kappabar*, sigma_c and c of the bond's BondStiffnessStrength).
 struct CalibratedParams {
   double contact_modulus_pa, contact_stiffness_ratio;
   double bond_modulus_pa, stiffness_ratio, tensile_strength_pa, cohesion_pa;

@@ -27,12 +27,7 @@ struct ParallelBondParams {
   static constexpr std::string_view kName = "parallel_bond";
   static constexpr std::string_view kDescription =
       "Potyondy and Cundall's 2D parallel bond, beside the unbonded contact (dem/parallel_bond)";
-  double effective_modulus_pa = 107e9;  ///< Ebar*: k_n = Ebar* / (R1 + R2)
-  double stiffness_ratio = 3.1;         ///< kappabar* = k_n / k_s
-  double tensile_strength_pa = 200e6;   ///< sigma_c
-  double cohesion_pa = 113e6;           ///< c
-  double friction_angle_rad = 0.4363323129985824;  ///< phi (25 deg) of the shear envelope
-  double radius_multiplier = 1.0;       ///< lambda: R = lambda min(R1, R2)
+  BondStiffnessStrength bond;  ///< Ebar*, kappabar*, sigma_c (at the periphery), c, phi, lambda (R: the half-width)
   double tan_friction_angle = 0.46630765815499858;  ///< tan(phi), derived by validated()
 
   static const FieldTable<ParallelBondParams>& fields();
@@ -62,9 +57,9 @@ inline BondResult bond_update(const ParallelBondParams& p, const BondGeometry& g
   const double sigma_mean = res.normal_force_n / area;
   const double sigma_max = sigma_mean + std::abs(res.moment_nm) * r / inertia;
   const double tau_max = std::abs(res.shear_force_n) / area;
-  if (sigma_max > p.tensile_strength_pa)
+  if (sigma_max > p.bond.tensile_strength_pa)
     breaks[0] = BreakMode::tension;
-  else if (tau_max >= p.cohesion_pa - sigma_mean * p.tan_friction_angle)
+  else if (tau_max >= p.bond.cohesion_pa - sigma_mean * p.tan_friction_angle)
     breaks[0] = BreakMode::shear;
   res.n_breaking = breaks[0] != BreakMode::none;
   return res;

@@ -141,6 +141,10 @@ struct Scene {
 /// Reads and validates a scene (unknown keys are rejected); `scene_dir` resolves a relative specimen.file.
 Scene read_scene(const Json& doc, const std::filesystem::path& scene_dir);
 
+/// The "provenance" block of a run's summary: the run's provenance (RunOptions::provenance) with the scene as
+/// run; null when the run has none (a study's item, whose summary the study completes, or a run inside another).
+Json summary_provenance(const RunOptions& options, const Json& scene);
+
 /// Reads the scene, checks the options, creates options.out and runs it. `scene_file` is where the scene
 /// came from (specimen.file is relative to its directory). OUT/summary.json (and the outcome's summary) get a
 /// "provenance" block: version, git commit, command line, scene path and hash, overrides, the scene as run, date,

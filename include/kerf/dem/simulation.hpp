@@ -195,8 +195,10 @@ class Simulation {
   int n_touching_pairs() const;
   /// The complete state (particles, joints, contact lists with their shear springs, neighbour reference
   /// positions, walls, cracks, clock) as bytes: restoring it and running on gives bit-identical results to
-  /// an uninterrupted run. Format: "KERFDEM6", then each field as a length-prefixed raw array (native
-  /// endianness, same build).
+  /// an uninterrupted run. Format: "KERFDEM7", the material with its two laws each as a record by name (the
+  /// registry name, then every key of its field table with its SI value), then each field as a length-prefixed
+  /// raw array (native endianness, same build). "KERFDEM6" (the laws as raw variants, kerf 4a34e1f) is still
+  /// read; another version is a ModelError naming it.
   std::string serialize() const;
   static Simulation deserialize(std::string_view bytes);
   /// Bytes held by the engine's arrays (particles, joints with their elements, contact lists, incidence).
