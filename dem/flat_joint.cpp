@@ -10,16 +10,13 @@ namespace kerf::dem {
 
 const FieldTable<FlatJointParams>& FlatJointParams::fields() {
   using P = FlatJointParams;
-  static const FieldTable<P> table = [] {
-    FieldTable<P> t = embedded_fields(BondStiffnessStrength::fields(), &P::bond);
-    t.push_back(number_field("residual_friction_coefficient", units::kNone, Range::non_negative(),
-                             "friction of unbonded elements (the linear contact's is friction_coefficient)",
-                             &P::residual_friction_coefficient));
-    t.push_back(int_field("n_elements", 2, 16,
-                          "elements per interface N_r (>= 2, else bending never enters the strength test)",
-                          &P::n_elements));
-    return t;
-  }();
+  static const FieldTable<P> table = embedded_fields(
+      BondStiffnessStrength::fields(), &P::bond,
+      {number_field("residual_friction_coefficient", units::kNone, Range::non_negative(),
+                    "friction of unbonded elements (the linear contact's is friction_coefficient)",
+                    &P::residual_friction_coefficient),
+       int_field("n_elements", 2, 16, "elements per interface N_r (>= 2, else bending never enters the strength test)",
+                 &P::n_elements)});
   return table;
 }
 

@@ -174,27 +174,31 @@ ChoiceField<S> choice_field(std::string_view key, const EnumNames<E>& names, std
 
 /// The fields of a member struct (`member` of S, of type B, with its own table) as fields of S: one table
 /// written once and embedded in each struct that holds it (the bond laws' BondStiffnessStrength). Number and
-/// integer fields.
+/// integer fields; then `own`, the fields S holds itself.
 template <class S, class B>
-FieldTable<S> embedded_fields(const FieldTable<B>& table, B S::*member) {
+FieldTable<S> embedded_fields(const FieldTable<B>& table, B S::*member, const FieldTable<S>& own = {}) {
   FieldTable<S> out;
+  out.reserve(table.size() + own.size());
   for (const auto& field : table) {
     std::visit(
         [&](const auto& f) {
           using F = std::decay_t<decltype(f)>;
           if constexpr (std::is_same_v<F, NumberField<B>>)
-            out.push_back(NumberField<S>{f.key, f.unit, f.range, f.doc,
-                                         [get = f.get, member](const S& s) { return get(s.*member); },
-                                         [set = f.set, member](S& s, double v) { set(s.*member, v); }, f.required});
+            // Built in place after a reserve, nothing moved afterwards: GCC 12 flags moving a just-built field's
+            // std::function members within the vector as "may be used uninitialized" (a false positive).
+            out.emplace_back(std::in_place_type<NumberField<S>>, f.key, f.unit, f.range, f.doc,
+                             [get = f.get, member](const S& s) { return get(s.*member); },
+                             [set = f.set, member](S& s, double v) { set(s.*member, v); }, f.required);
           else if constexpr (std::is_same_v<F, IntField<B>>)
-            out.push_back(IntField<S>{f.key, f.lo, f.hi, f.doc,
-                                      [get = f.get, member](const S& s) { return get(s.*member); },
-                                      [set = f.set, member](S& s, int v) { set(s.*member, v); }});
+            out.emplace_back(std::in_place_type<IntField<S>>, f.key, f.lo, f.hi, f.doc,
+                             [get = f.get, member](const S& s) { return get(s.*member); },
+                             [set = f.set, member](S& s, int v) { set(s.*member, v); });
           else
             throw std::logic_error("embedded_fields: numbers and integers only (" + std::string(f.key) + ")");
         },
         field);
   }
+  for (const auto& field : own) out.push_back(field);
   return out;
 }
 
