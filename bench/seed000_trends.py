@@ -335,8 +335,10 @@ def report(rows, cuts, record_path):
     n_cuts = sum(len(v) for v in cuts.values())
     cpu_h = sum(r.get("cpu_time_s", 0.0) for v in cuts.values() for r in v.values()
                 if isinstance(r.get("cpu_time_s"), float)) / 3600
+    dates = [r.get("date") for v in cuts.values() for r in v.values() if isinstance(r.get("date"), str)]
+    latest = f", the latest recorded {max(dates)}" if dates else ""
     md = ["# Validation: soda-lime glass, the seed-000 trends in the steady cut", "",
-          f"From the record `{record_path}` alone ({n_cuts} cuts, {cpu_h:.1f} CPU-hours; `kerf-dem study "
+          f"From the record `{record_path}` alone ({n_cuts} cuts{latest}, {cpu_h:.1f} CPU-hours; `kerf-dem study "
           "data/studies/seed000_steady.json` adds to it, this report is `python3 bench/seed000_trends.py --report`).",
           "", "## What is compared, and why", "",
           "- **Trends, not levels.** The undamped steady cut's force per mm of width moves with the integrated "

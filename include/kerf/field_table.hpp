@@ -177,24 +177,27 @@ ChoiceField<S> choice_field(std::string_view key, const EnumNames<E>& names, std
 /// integer fields; then `own`, the fields S holds itself.
 template <class S, class B>
 FieldTable<S> embedded_fields(const FieldTable<B>& table, B S::*member, const FieldTable<S>& own = {}) {
+  // Each field is built in its place and filled there, none moved (GCC 12 flags moving a just-built field's
+  // std::function members as "may be used uninitialized", a false positive); reserved so none moves later.
   FieldTable<S> out;
   out.reserve(table.size() + own.size());
   for (const auto& field : table) {
     std::visit(
         [&](const auto& f) {
           using F = std::decay_t<decltype(f)>;
-          if constexpr (std::is_same_v<F, NumberField<B>>)
-            // Built in place after a reserve, nothing moved afterwards: GCC 12 flags moving a just-built field's
-            // std::function members within the vector as "may be used uninitialized" (a false positive).
-            out.emplace_back(std::in_place_type<NumberField<S>>, f.key, f.unit, f.range, f.doc,
-                             [get = f.get, member](const S& s) { return get(s.*member); },
-                             [set = f.set, member](S& s, double v) { set(s.*member, v); }, f.required);
-          else if constexpr (std::is_same_v<F, IntField<B>>)
-            out.emplace_back(std::in_place_type<IntField<S>>, f.key, f.lo, f.hi, f.doc,
-                             [get = f.get, member](const S& s) { return get(s.*member); },
-                             [set = f.set, member](S& s, int v) { set(s.*member, v); });
-          else
+          if constexpr (std::is_same_v<F, NumberField<B>>) {
+            auto& g = std::get<NumberField<S>>(out.emplace_back(std::in_place_type<NumberField<S>>));
+            g.key = f.key, g.unit = f.unit, g.range = f.range, g.doc = f.doc, g.required = f.required;
+            g.get = [get = f.get, member](const S& s) { return get(s.*member); };
+            g.set = [set = f.set, member](S& s, double v) { set(s.*member, v); };
+          } else if constexpr (std::is_same_v<F, IntField<B>>) {
+            auto& g = std::get<IntField<S>>(out.emplace_back(std::in_place_type<IntField<S>>));
+            g.key = f.key, g.lo = f.lo, g.hi = f.hi, g.doc = f.doc;
+            g.get = [get = f.get, member](const S& s) { return get(s.*member); };
+            g.set = [set = f.set, member](S& s, int v) { set(s.*member, v); };
+          } else {
             throw std::logic_error("embedded_fields: numbers and integers only (" + std::string(f.key) + ")");
+          }
         },
         field);
   }
