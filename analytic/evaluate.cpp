@@ -1,10 +1,7 @@
 #include "kerf/analytic/evaluate.hpp"
 
-#include "kerf/analytic/critical_depth.hpp"
-#include "kerf/analytic/predict.hpp"
+#include "kerf/analytic/registry.hpp"
 #include "kerf/error.hpp"
-#include "kerf/io.hpp"
-#include "kerf/units.hpp"
 
 namespace kerf {
 
@@ -51,7 +48,11 @@ std::vector<std::size_t> falling_points(const std::vector<std::optional<double>>
 }
 
 std::vector<std::string> scene_column_names(const Json& document, MaterialCache* cache) {
-  const Columns columns = scene_columns(*parse_scene(document, cache));
+  return scene_column_names(*parse_scene(document, cache));
+}
+
+std::vector<std::string> scene_column_names(const AnalyticCase& scene) {
+  const Columns columns = scene_columns(scene);
   std::vector<std::string> names;
   for (const auto& column : columns) names.push_back(column.first);
   return names;

@@ -111,10 +111,8 @@ const AnalyticModelInfo* registered_line(const std::vector<AnalyticModelInfo>& r
 
 std::optional<int> registered_id(const std::vector<AnalyticModelInfo>& registry, std::string_view kind,
                                  std::string_view name) {
-  for (const auto& m : registry) {
-    if (m.kind == kind && m.name == name) return m.id >= 0 ? std::optional<int>(m.id) : std::nullopt;
-  }
-  return std::nullopt;
+  const AnalyticModelInfo* m = registered_line(registry, kind, name);
+  return m && m->id >= 0 ? std::optional<int>(m->id) : std::nullopt;
 }
 
 }  // namespace kerf

@@ -9,6 +9,8 @@
 #include <memory>
 
 #include "kerf/analytic/evaluate.hpp"
+#include "kerf/analytic/trepanning.hpp"
+#include "kerf/analytic/trepanning_scene.hpp"
 #include "kerf/comparison_config.hpp"
 #include "kerf/csv_table.hpp"
 #include "kerf/error.hpp"
@@ -145,7 +147,7 @@ SceneComparison compare_scene(const Json& scene_document, const std::filesystem:
   // Forces that scale with a width (orthogonal cutting's; not trepanning's axial force and torque).
   const std::optional<double> force_width_m = kind->force_width_m();
   const bool per_width = force_width_m.has_value();
-  const auto predicted_names = scene_column_names(scene_document, &materials);
+  const auto predicted_names = scene_column_names(*kind);
   const auto has_prediction = [&](const std::string& name) {
     return std::find(predicted_names.begin(), predicted_names.end(), name) != predicted_names.end();
   };
@@ -263,7 +265,7 @@ SceneComparison compare_scene(const Json& scene_document, const std::filesystem:
     if (!kind->fits_lumped_groups()) {
       throw InputError("--fit", "(given)", "a trepanning scene: the fit calibrates its two lumped groups");
     }
-    const TrepanningScene scene = parse_trepanning_scene(document);
+    const TrepanningScene scene = parse_trepanning_scene(document, &materials);
     std::vector<TrepanningObservation> observations;
     const auto axial = std::find_if(quantities.begin(), quantities.end(),
                                     [](const auto& q) { return q.prediction_column == "axial_force_N"; });
@@ -280,7 +282,7 @@ SceneComparison compare_scene(const Json& scene_document, const std::filesystem:
       for (std::size_t i = 0; i < conditions.size(); ++i) {
         set_path(row_document, conditions[i].scene_path, row.conditions[i].si.value_or(0.0) / spec.conditions[i].unit.si);
       }
-      const TrepanningScene row_scene = parse_trepanning_scene(row_document);
+      const TrepanningScene row_scene = parse_trepanning_scene(row_document, &materials);
       observations.push_back({row_scene.cut, row.values[axial_index], row.values[torque_index]});
     }
     out.calibration = calibrate_trepanning(scene.tool, observations);

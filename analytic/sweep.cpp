@@ -225,16 +225,10 @@ std::string SweepGrid::csv_text(const std::vector<SweepRow>& rows) const {
   std::size_t bytes = text.size();
   for (const auto& row : rows) bytes += row.cells.size() + row.error.size() + 16 * axes_.size() + 2;
   text.reserve(bytes + bytes / 16);
-  std::vector<std::size_t> at(axes_.size());
   for (std::size_t i = 0; i < rows.size(); ++i) {
-    std::size_t index = i;
-    for (std::size_t a = axes_.size(); a-- > 0;) {
-      at[a] = index % axes_[a].values.size();
-      index /= axes_[a].values.size();
-    }
     for (std::size_t a = 0; a < axes_.size(); ++a) {
       if (a > 0) text += ',';
-      text += coordinates[a][at[a]];
+      text += coordinates[a][value_index(i, a)];
     }
     if (!axes_.empty() && !names_.empty()) text += ',';
     text += rows[i].error.empty() ? rows[i].cells : empty_cells;

@@ -31,17 +31,12 @@ void plot_sweep(const SweepGrid& grid, const std::vector<SweepRow>& rows, const 
                 const std::string& scene_path) {
   const Json& base = grid.base();
   MaterialCache& materials = grid.materials();
-  const auto& names = grid.column_names();
   const std::size_t n_points = grid.size();
   const bool x_log = grid.axes()[0].log_spacing;
   std::vector<std::string> axis_paths;
   std::vector<std::vector<double>> axis_values;
   for (const auto& axis : grid.axes()) axis_paths.push_back(axis.key), axis_values.push_back(axis.numbers);
-  const auto coordinates = [&](std::size_t i) {
-    std::vector<double> x(axis_values.size());
-    for (std::size_t a = 0; a < x.size(); ++a) x[a] = axis_values[a][grid.value_index(i, a)];
-    return x;
-  };
+  const auto coordinate = [&](std::size_t i, std::size_t a) { return axis_values[a][grid.value_index(i, a)]; };
   // The two force columns' numbers, read once.
   std::vector<std::vector<std::optional<double>>> force_numbers;
   for (const char* force : {"cutting_force_N", "thrust_force_N"}) force_numbers.push_back(column_numbers(grid, rows, force));
@@ -70,31 +65,26 @@ void plot_sweep(const SweepGrid& grid, const std::vector<SweepRow>& rows, const 
   } else {
     fig.y_label = "force for the cut's engaged width (N)";
   }
-  const auto column = [&](const std::string& name) {
-    return static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
-  };
   // Colours 0-4 and 6: grey (5) is the line-style key's.
   constexpr std::array<int, 6> kColors = {0, 1, 2, 3, 4, 6};
   const std::size_t n_second = axis_values.size() > 1 ? std::min<std::size_t>(kColors.size(), axis_values[1].size()) : 1;
   std::vector<PlotSeries> keys;
   for (std::size_t k = 0; k < n_second; ++k) {
     bool drawn = false;
-    for (const auto& [name, dashed] : {std::pair{std::string("cutting_force_N"), false}, std::pair{std::string("thrust_force_N"), true}}) {
-      const std::size_t c = column(name);
-      if (c == names.size()) continue;
+    for (const bool dashed : {false, true}) {  // the cutting force, then the thrust (a column the scene lacks: no values)
       PlotSeries series;
       series.style = dashed ? SeriesStyle::dashed_line : SeriesStyle::line;
       series.color = kColors[k];
       for (std::size_t i = 0; i < n_points; ++i) {
-        const auto x = coordinates(i);
-        if (axis_values.size() > 1 && x[1] != axis_values[1][k]) continue;
+        if (axis_values.size() > 1 && coordinate(i, 1) != axis_values[1][k]) continue;
         bool first_of_the_rest = true;  // further axes: their first value
-        for (std::size_t a = 2; a < axis_values.size(); ++a) first_of_the_rest = first_of_the_rest && x[a] == axis_values[a][0];
+        for (std::size_t a = 2; a < axis_values.size(); ++a)
+          first_of_the_rest = first_of_the_rest && coordinate(i, a) == axis_values[a][0];
         if (!first_of_the_rest) continue;
         const auto& value = force_numbers[dashed ? 1 : 0][i];
-        if (!value) continue;  // refused
-        series.x.push_back(x[0]);
-        series.y.push_back(*value / (per_mm ? x[width_axis] : 1.0));
+        if (!value) continue;  // refused, or no such column
+        series.x.push_back(coordinate(i, 0));
+        series.y.push_back(*value / (per_mm ? coordinate(i, width_axis) : 1.0));
       }
       if (series.x.empty()) continue;
       drawn = true;
@@ -131,13 +121,11 @@ void plot_sweep(const SweepGrid& grid, const std::vector<SweepRow>& rows, const 
 std::vector<std::string> falling_force_warnings(const SweepGrid& grid, const std::vector<SweepRow>& rows) {
   std::vector<std::string> out;
   const auto& axes = grid.axes();
-  const auto& names = grid.column_names();
   for (std::size_t a = 0; a < axes.size(); ++a) {
     if (axes[a].key != "cut.uncut_chip_thickness_um") continue;
     const std::size_t stride = grid.stride(a);
     const std::size_t n_h = axes[a].values.size();
     for (const char* force : {"cutting_force_N", "thrust_force_N"}) {
-      if (std::find(names.begin(), names.end(), force) == names.end()) continue;
       const std::vector<std::optional<double>> values = column_numbers(grid, rows, force);
       const std::vector<std::size_t> falls = falling_points(values, stride, n_h);
       if (falls.empty()) continue;

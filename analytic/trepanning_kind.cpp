@@ -3,64 +3,63 @@
 // row and report.
 #include <fmt/format.h>
 
+#include <optional>
+#include <utility>
+
 #include "kerf/analytic/critical_depth.hpp"
 #include "kerf/analytic/evaluate.hpp"
-#include "kerf/io.hpp"
+#include "kerf/analytic/trepanning.hpp"
+#include "kerf/analytic/trepanning_scene.hpp"
 #include "kerf/units.hpp"
 
 namespace kerf {
 
-Columns trepanning_columns(const TrepanningScene& scene, const TrepanningForces& forces) {
-  Columns row;
-  const auto add = [&](std::string name, double value) { row.emplace_back(std::move(name), csv_number(value)); };
-  row.emplace_back("force_model", "trepanning");
-  add("outer_diameter_mm", units::m_to_mm(scene.tool.outer_diameter_m));
-  add("inner_diameter_mm", units::m_to_mm(scene.tool.inner_diameter_m));
-  add("feed_rate_um_per_s", units::m_to_um(scene.cut.feed_rate_m_per_s));
-  add("spindle_speed_rpm", scene.cut.spindle_speed_rev_per_s * 60.0);
-  add("feed_per_rev_um", units::m_to_um(forces.feed_per_rev_m));
-  add("axial_force_N", forces.axial_force_N);
-  add("torque_N_m", forces.torque_N_m);
-  add("axial_group_MPa", units::pa_to_mpa(scene.groups.axial_group_Pa));
-  add("torque_group_MPa", units::pa_to_mpa(scene.groups.torque_group_Pa));
-  if (scene.grits) {
-    // Column names need no prediction: diagnostics only when the forces were computed (feed per rev > 0).
-    const bool computed = forces.feed_per_rev_m > 0.0;
-    const auto d = computed ? trepanning_grit_diagnostics(scene.tool, scene.cut, scene.groups, *scene.grits)
-                            : TrepanningGritDiagnostics{};
-    const auto optional_number = [&](std::string name, double value) {
-      row.emplace_back(std::move(name), computed ? csv_number(value) : std::string());
-    };
-    optional_number("grit_count", d.grit_count);
-    optional_number("cutting_edges", d.cutting_edges);
-    optional_number("feed_per_edge_um", units::m_to_um(d.feed_per_edge_m));
-    optional_number("grit_depth_um", units::m_to_um(d.grit_depth_m));
-    optional_number("grit_normal_force_N", d.grit_normal_force_N);
-    optional_number("grit_tangential_force_N", d.grit_tangential_force_N);
-    // Each grit's depth against the ductile-brittle critical depth (Bifano), when the material has the data.
-    std::string critical_nm, regime;
-    if (const Json* brittle = scene.material.group("brittle");
-        computed && brittle && brittle->contains("fracture_toughness_MPa_sqrt_m")) {
-      const double critical = critical_depth_m(brittle_properties(scene.material, "material"));
-      critical_nm = csv_number(units::m_to_nm(critical));
-      regime = std::string(cutting_regime_name(classify_regime(d.grit_depth_m, critical)));
-    }
-    row.emplace_back("critical_depth_nm", critical_nm);
-    row.emplace_back("grit_regime", regime);
-  }
-  return row;
+namespace {
+
+/// Each grit's depth against the ductile-brittle critical depth (Bifano): {critical depth, regime} when the
+/// material has the data.
+std::optional<std::pair<double, CuttingRegime>> grit_regime(const TrepanningScene& scene, double grit_depth_m) {
+  const Json* brittle = scene.material.group("brittle");
+  if (!brittle || !brittle->contains("fracture_toughness_MPa_sqrt_m")) return std::nullopt;
+  const double critical = critical_depth_m(brittle_properties(scene.material, "material"));
+  return std::pair{critical, classify_regime(grit_depth_m, critical)};
 }
 
-namespace {
+void write_trepanning_cells(const TrepanningScene& scene, const TrepanningForces& forces, CellWriter& w) {
+  w.text("force_model", "trepanning");
+  w.number("outer_diameter_mm", units::m_to_mm(scene.tool.outer_diameter_m));
+  w.number("inner_diameter_mm", units::m_to_mm(scene.tool.inner_diameter_m));
+  w.number("feed_rate_um_per_s", units::m_to_um(scene.cut.feed_rate_m_per_s));
+  w.number("spindle_speed_rpm", scene.cut.spindle_speed_rev_per_s * 60.0);
+  w.number("feed_per_rev_um", units::m_to_um(forces.feed_per_rev_m));
+  w.number("axial_force_N", forces.axial_force_N);
+  w.number("torque_N_m", forces.torque_N_m);
+  w.number("axial_group_MPa", units::pa_to_mpa(scene.groups.axial_group_Pa));
+  w.number("torque_group_MPa", units::pa_to_mpa(scene.groups.torque_group_Pa));
+  if (!scene.grits) return;
+  // Column names need no prediction: diagnostics only when the forces were computed (feed per rev > 0).
+  const bool computed = forces.feed_per_rev_m > 0.0;
+  const auto d = computed ? trepanning_grit_diagnostics(scene.tool, scene.cut, scene.groups, *scene.grits)
+                          : TrepanningGritDiagnostics{};
+  w.optional_number("grit_count", computed, d.grit_count);
+  w.optional_number("cutting_edges", computed, d.cutting_edges);
+  w.optional_number("feed_per_edge_um", computed, units::m_to_um(d.feed_per_edge_m));
+  w.optional_number("grit_depth_um", computed, units::m_to_um(d.grit_depth_m));
+  w.optional_number("grit_normal_force_N", computed, d.grit_normal_force_N);
+  w.optional_number("grit_tangential_force_N", computed, d.grit_tangential_force_N);
+  const auto regime = computed ? grit_regime(scene, d.grit_depth_m) : std::nullopt;
+  w.optional_number("critical_depth_nm", regime.has_value(), regime ? units::m_to_nm(regime->first) : 0.0);
+  w.text("grit_regime", regime ? cutting_regime_name(regime->second) : std::string_view());
+}
 
 class TrepanningCase final : public AnalyticCase {
  public:
-  explicit TrepanningCase(const Json& document) : scene_(parse_trepanning_scene(document)) {}
+  TrepanningCase(const Json& document, MaterialCache* cache) : scene_(parse_trepanning_scene(document, cache)) {}
 
   void predict() override { forces_ = trepanning_forces(scene_.tool, scene_.cut, scene_.groups); }
 
   void write_cells(CellWriter& out) const override {
-    for (const auto& [name, text] : trepanning_columns(scene_, forces_.value_or(TrepanningForces{}))) out.cell(name, text);
+    write_trepanning_cells(scene_, forces_.value_or(TrepanningForces{}), out);
   }
 
   void print(std::FILE* text, const std::string& scene_path) const override {
@@ -86,10 +85,8 @@ class TrepanningCase final : public AnalyticCase {
                "{:.4g} mN (Eqs. 1-20)\n",
                d.grit_count, d.cutting_edges, units::m_to_nm(d.grit_depth_m), 1e3 * d.grit_normal_force_N,
                1e3 * d.grit_tangential_force_N);
-    for (const auto& [name, value] : trepanning_columns(scene_, forces)) {
-      if (name == "grit_regime" && !value.empty())
-        fmt::print(text, "grit regime       {} (each grit's depth against d_c)\n", value);
-    }
+    if (const auto regime = grit_regime(scene_, d.grit_depth_m))
+      fmt::print(text, "grit regime       {} (each grit's depth against d_c)\n", cutting_regime_name(regime->second));
   }
 
   std::string_view comparison_title() const override { return "Trepanning model"; }
@@ -107,8 +104,8 @@ class TrepanningCase final : public AnalyticCase {
 
 }  // namespace
 
-std::unique_ptr<AnalyticCase> build_trepanning_scene(const Json& document, MaterialCache*) {
-  return std::make_unique<TrepanningCase>(document);
+std::unique_ptr<AnalyticCase> build_trepanning_scene(const Json& document, MaterialCache* cache) {
+  return std::make_unique<TrepanningCase>(document, cache);
 }
 
 }  // namespace kerf

@@ -6,12 +6,13 @@
 
 namespace kerf {
 
-TrepanningScene parse_trepanning_scene(const Json& document) {
+TrepanningScene parse_trepanning_scene(const Json& document, MaterialCache* cache) {
   refuse_dem_scene(document);
   ObjectReader root(document, "");
   root.ignore("description");
   TrepanningScene scene;
-  scene.material = load_material(root.get("material"), "material");
+  // A sweep's or a fit's points share one record: the file is read once.
+  scene.material = cache ? cache->get(root.get("material"), "material") : load_material(root.get("material"), "material");
 
   ObjectReader tool = root.get_object("tool");
   scene.tool.outer_diameter_m = tool.get_si("outer_diameter_mm", Range::positive(), "mm", units::mm_to_m);

@@ -24,7 +24,6 @@
 #include <vector>
 
 #include "kerf/analytic/evaluate.hpp"
-#include "kerf/analytic/predict.hpp"
 #include "kerf/analytic/scene.hpp"
 #include "kerf/analytic/registry.hpp"
 #include "kerf/analytic/scene_compare.hpp"

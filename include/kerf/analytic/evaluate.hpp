@@ -17,10 +17,7 @@
 #include <vector>
 
 #include "kerf/analytic/cells.hpp"
-#include "kerf/analytic/registry.hpp"
 #include "kerf/analytic/scene.hpp"
-#include "kerf/analytic/trepanning.hpp"
-#include "kerf/analytic/trepanning_scene.hpp"
 #include "kerf/json_reader.hpp"
 
 namespace kerf {
@@ -61,9 +58,6 @@ std::unique_ptr<AnalyticCase> build_trepanning_scene(const Json& document, Mater
 /// The case's CSV row as (name, text) pairs.
 Columns scene_columns(const AnalyticCase& scene);
 
-/// The CSV row of a trepanning prediction (pass default forces for the column names alone).
-Columns trepanning_columns(const TrepanningScene& scene, const TrepanningForces& forces);
-
 /// Parses, predicts and formats one scene of any kind. Throws InputError / ModelError like the models.
 Columns evaluate_scene_columns(const Json& document, MaterialCache* cache);
 
@@ -77,6 +71,8 @@ std::vector<std::size_t> falling_points(const std::vector<std::optional<double>>
 
 /// The column names a scene's rows will have (its models fix them), without predicting.
 std::vector<std::string> scene_column_names(const Json& document, MaterialCache* cache);
+/// The same for a scene already parsed (not predicted).
+std::vector<std::string> scene_column_names(const AnalyticCase& scene);
 
 /// Refuses a varied key that the scene does not read (a sweep's --vary, Python's `vary`), before any point is
 /// evaluated: applies `assignment` (key.path=value, the axis's first value) to a copy of the document and parses

@@ -25,6 +25,8 @@
 
 namespace kerf {
 
+class MaterialCache;  // kerf/analytic/scene.hpp
+
 struct TrepanningScene {
   MaterialRecord material;
   TrepanningTool tool;
@@ -38,6 +40,6 @@ struct TrepanningScene {
 };
 
 /// Validates a scene document; InputError names the first bad field by its dotted path.
-TrepanningScene parse_trepanning_scene(const Json& document);
+TrepanningScene parse_trepanning_scene(const Json& document, MaterialCache* cache = nullptr);
 
 }  // namespace kerf
