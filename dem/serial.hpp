@@ -3,7 +3,10 @@
 // values and vectors with a length prefix, native endianness (a checkpoint is read back by the same build), and
 // the contact laws as records by name (a law list may be reordered or grow without misreading a checkpoint).
 // Internal to dem/.
+#include <fmt/format.h>
+
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <initializer_list>
@@ -154,10 +157,8 @@ inline In open_tagged(std::string_view bytes, std::initializer_list<std::string_
     ++k;
   }
   if (head.size() == newest.size() && head.substr(0, newest.size() - 1) == newest.substr(0, newest.size() - 1)) {
-    std::string known;
-    for (const std::string_view tag : tags) known += (known.empty() ? "" : " or ") + std::string(tag);
-    throw ModelError("dem", "a " + what + " of another kerf-dem version (" + std::string(head) + ", this one reads " +
-                                known + "): start the run again");
+    throw ModelError("dem", fmt::format("a {} of another kerf-dem version ({}, this one reads {}): start the run again",
+                                        what, head, fmt::join(tags, " or ")));
   }
   throw ModelError("dem", "not a kerf-dem " + what);
 }
@@ -196,14 +197,11 @@ V law_from_record(const LawRecord& r) {
   auto corrupt = [&](const std::string& why) -> ModelError {
     return ModelError("dem", "corrupt checkpoint (the law '" + r.name + "': " + why + ")");
   };
-  std::optional<V> law;
-  [&]<std::size_t... I>(std::index_sequence<I...>) {
-    ((std::variant_alternative_t<I, V>::kName == r.name ? (void)law.emplace(std::in_place_index<I>) : (void)0), ...);
-  }(std::make_index_sequence<std::variant_size_v<V>>{});
-  if (!law) {
-    std::string known;
-    for (const std::string& name : law_names<V>()) known += (known.empty() ? "" : ", ") + name;
-    throw corrupt("an unknown law; this build has " + known);
+  V law;
+  try {
+    law = law_by_name<V>(r.name, "law");
+  } catch (const InputError&) {
+    throw corrupt(fmt::format("an unknown law; this build has {}", fmt::join(law_names<V>(), ", ")));
   }
   std::visit(
       [&](auto& p) {
@@ -219,8 +217,13 @@ V law_from_record(const LawRecord& r) {
                 ++used;
                 if constexpr (std::is_same_v<F, NumberField<P>>)
                   f.set(p, it->second);
-                else if constexpr (std::is_same_v<F, IntField<P>>)
+                else if constexpr (std::is_same_v<F, IntField<P>>) {
+                  // Range and integrality before the conversion: a corrupt value would make it undefined.
+                  if (!(it->second >= f.lo && it->second <= f.hi) || it->second != std::trunc(it->second))
+                    throw corrupt(std::string(f.key) + " is not an integer in [" + std::to_string(f.lo) + ", " +
+                                  std::to_string(f.hi) + "]");
                   f.set(p, static_cast<int>(it->second));
+                }
                 else if constexpr (std::is_same_v<F, BoolField<P>>)
                   f.set(p, it->second != 0);
               },
@@ -233,8 +236,8 @@ V law_from_record(const LawRecord& r) {
           throw corrupt(e.what());
         }
       },
-      *law);
-  return *law;
+      law);
+  return law;
 }
 
 template <class V>

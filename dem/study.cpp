@@ -58,7 +58,6 @@ void check_key_path(const std::string& key, const std::string& where) {
   if (bad) throw InputError(where, key, "a dotted scene key path, e.g. cut.depth_of_cut_mm");
 }
 
-
 /// A condition's value or tag: a number, a text or true/false (InputError naming `where`).
 const Json& scalar(const Json& v, const std::string& where) {
   if (v.is_array() || v.is_object() || v.is_null())
@@ -170,11 +169,13 @@ StudySpec read_study(const Json& doc, const fs::path& study_file) {
         if (!values.is_array() || values.empty())
           throw InputError("conditions.grid." + key, json_value_text(values), "a non-empty list of values");
         s.varied_keys.push_back(key);
+        std::vector<Json> checked;  // each value once, not once per condition it multiplies
+        for (const Json& v : values) checked.push_back(scalar(v, "conditions.grid." + key));
         std::vector<StudyCondition> next;
         for (const StudyCondition& c : s.conditions)
-          for (const Json& v : values) {
+          for (const Json& v : checked) {
             StudyCondition more = c;
-            more.values.emplace_back(key, scalar(v, "conditions.grid." + key));
+            more.values.emplace_back(key, v);
             next.push_back(std::move(more));
           }
         s.conditions = std::move(next);
@@ -198,10 +199,9 @@ StudySpec read_study(const Json& doc, const fs::path& study_file) {
             continue;
           }
           check_key_path(key, where);
-          if (v.is_array() || v.is_object() || v.is_null())
-            throw InputError(where + "." + key, json_value_text(v), "a number, text or true/false");
+          const Json value = scalar(v, where + "." + key);
           if (std::find(s.varied_keys.begin(), s.varied_keys.end(), key) == s.varied_keys.end()) s.varied_keys.push_back(key);
-          c.values.emplace_back(key, v);
+          c.values.emplace_back(key, value);
         }
         s.conditions.push_back(std::move(c));
       }
@@ -629,7 +629,6 @@ ResultStats stats_of(const std::vector<double>& v) {
   }
   return r;
 }
-
 
 /// A file name part from a key ("cut.depth_of_cut_mm" -> "cut_depth_of_cut_mm").
 std::string file_part(const std::string& key) {

@@ -621,16 +621,16 @@ std::string within_cuts_report(const Spec& spec, const std::map<std::string, Con
 
   Json checks = Json::array();
   if (spec.trends) {
-    md +=
+    md += fmt::format(
         "\n### Trends\n\n"
         "Each trend is a ratio of two condition means, its standard error propagated to first order (delta method: "
-        "ratio × hypot of the two relative standard errors), its 95 % interval value ± q standard errors: q = 1.96 "
+        "ratio × hypot of the two relative standard errors), its 95 % interval value ± q standard errors: q = {:g} "
         "for the cuts' own errors, Student's t quantile where a between-packing error enters, with Welch-"
         "Satterthwaite's degrees of freedom (given as df). Beside "
         "it the same ratio of the experiments' means (Table 6; a ratio of two forces on the same 25.4 mm width does "
         "not depend on the width) and of the paper's DEM (Table 4). AGREES: the experiment's value inside the 95 % "
         "interval; DISAGREES: outside it, a resolved disagreement, by the number of standard errors given; REPORTED: "
-        "no experiment to compare.\n\n";
+        "no experiment to compare.\n\n", kZ95);
     const auto trend = [&](const std::string& id, const std::string& what, const Estimate& num_est,
                            const Estimate& den_est, const Estimate& num_between, const Estimate& den_between,
                            std::optional<double> experiment, std::optional<double> paper_dem) {

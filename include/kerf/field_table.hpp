@@ -173,8 +173,8 @@ ChoiceField<S> choice_field(std::string_view key, const EnumNames<E>& names, std
 }
 
 /// The fields of a member struct (`member` of S, of type B, with its own table) as fields of S: one table
-/// written once and embedded in each struct that holds it (the bond laws' BondStiffnessStrength). Number and
-/// integer fields; then `own`, the fields S holds itself.
+/// written once and embedded in each struct that holds it (the bond laws' BondStiffnessStrength). Number
+/// fields; then `own`, the fields S holds itself.
 template <class S, class B>
 FieldTable<S> embedded_fields(const FieldTable<B>& table, B S::*member, const FieldTable<S>& own = {}) {
   // Each field is built in its place and filled there, none moved (GCC 12 flags moving a just-built field's
@@ -190,13 +190,8 @@ FieldTable<S> embedded_fields(const FieldTable<B>& table, B S::*member, const Fi
             g.key = f.key, g.unit = f.unit, g.range = f.range, g.doc = f.doc, g.required = f.required;
             g.get = [get = f.get, member](const S& s) { return get(s.*member); };
             g.set = [set = f.set, member](S& s, double v) { set(s.*member, v); };
-          } else if constexpr (std::is_same_v<F, IntField<B>>) {
-            auto& g = std::get<IntField<S>>(out.emplace_back(std::in_place_type<IntField<S>>));
-            g.key = f.key, g.lo = f.lo, g.hi = f.hi, g.doc = f.doc;
-            g.get = [get = f.get, member](const S& s) { return get(s.*member); };
-            g.set = [set = f.set, member](S& s, int v) { set(s.*member, v); };
           } else {
-            throw std::logic_error("embedded_fields: numbers and integers only (" + std::string(f.key) + ")");
+            throw std::logic_error("embedded_fields: number fields only (" + std::string(f.key) + ")");
           }
         },
         field);
