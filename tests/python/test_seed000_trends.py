@@ -162,3 +162,10 @@ def test_report_is_not_resolved_with_one_packing_or_a_missing_domain(tmp_path):
     write_record(tmp_path / "record.csv", means, n=8)
     assert st.main(args) == 1
     assert "(kerf large): no cuts" in (tmp_path / "out" / "report.md").read_text()
+
+
+def test_t_quantile_beyond_the_table_falls_towards_the_normal():
+    # Tabulated 2.042 at 30 degrees of freedom; 2.0211 at 40, 2.0003 at 60, 1.9799 at 120 (standard tables).
+    assert st.t(30) > st.t(31) > st.t(40) > 1.96
+    for dof, want in ((40, 2.0211), (60, 2.0003), (120, 1.9799)):
+        assert math.isclose(st.t(dof), want, abs_tol=2e-4)
