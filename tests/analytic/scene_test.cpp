@@ -557,3 +557,41 @@ TEST_CASE("Ploughing: a friction factor outside [0, 1) names its key; a given on
   CHECK(std::stod(cells["ploughing_thrust_force_N"]) > 0.0);
   CHECK(cells["ploughing_model"] == "wave");
 }
+
+TEST_CASE("The key reference comes from the tables the scenes are read with", "[scene][keys]") {
+  const std::string all = kerf::analytic_scene_keys_markdown();
+  for (const auto& section : kerf::analytic_scene_sections()) {
+    CHECK_THAT(all, Contains("#### `" + section + "` ("));
+    CHECK(kerf::analytic_scene_keys_markdown(section).rfind("#### `" + section + "`", 0) == 0);
+  }
+  CHECK_THROWS_WITH(kerf::analytic_scene_keys_markdown("modles"), Contains("SECTION = modles") && Contains("'models'"));
+  // Defaults as printed are the ones a scene gets (the member initialisers, written once).
+  CHECK_THAT(all, Contains("| `clearance_deg` | deg | a value in (0, 90) | 7 |"));
+  CHECK_THAT(all, Contains("| `force` | - | `auto`, `merchant`, `liu_li`, `oxley`, `trepanning` | `auto` |"));
+  auto doc = orthogonal_scene();
+  doc["models"].erase("force");
+  const auto scene = kerf::parse_analytic_scene(doc);
+  CHECK(scene.force_auto);
+  CHECK(scene.clearance_rad == kerf::units::deg_to_rad(7.0));
+  CHECK(scene.liu_li.lower_limit_margin_rad == kerf::units::deg_to_rad(1.0));
+  CHECK(scene.contact_shear_angle == kerf::ShearAngleModel::merchant);
+  // Registry names become the enums their lines construct; the order of contact-length names is kept.
+  doc = orthogonal_scene();
+  doc["models"]["shear_angle"] = "lee_shaffer";
+  doc["models"]["friction_closure"] = "constant";
+  doc["models"]["contact_length"] = Json::array({"vinogradov_mssp", "altintas"});
+  doc["models"]["contact_shear_angle"] = "mssp";
+  const auto named = kerf::parse_analytic_scene(doc);
+  CHECK(named.shear_angle == kerf::ShearAngleSource::lee_shaffer);
+  CHECK(named.liu_li.closure == kerf::FrictionClosure::constant);
+  REQUIRE(named.contact_lengths.size() == 2);
+  CHECK(named.contact_lengths[0].column == "contact_length_vinogradov_mssp_mm");
+  CHECK(named.contact_lengths[1].model == kerf::ContactLengthModel::altintas);
+  CHECK(named.contact_lengths[1].shear_angle == kerf::ShearAngleModel::lee_shaffer);
+  doc["models"]["contact_length"] = Json::array({"altintas_mep", "vinogradov", "altintas_mep"});
+  CHECK_THROWS_WITH(kerf::parse_analytic_scene(doc), "models.contact_length = altintas_mep: expected each "
+                                                     "contact-length model named once");
+  doc = orthogonal_scene();
+  doc["models"]["force"] = "trepanning";
+  CHECK_THROWS_WITH(kerf::parse_analytic_scene(doc), Contains("models.force = trepanning: expected an orthogonal-cut"));
+}
