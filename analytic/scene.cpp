@@ -338,7 +338,7 @@ void parse_friction(const CutKeys& keys, ObjectReader& cut, ObjectReader& root, 
     scene.friction_origin = "cut.friction_coefficient";
   }
   if (measured) {
-    const MeasuredForces forces = read_fields(*measured, measured_fields(), MeasuredForces{});
+    const MeasuredForces forces = read_fields(*measured, measured_fields(), MeasuredForces{}, SiCheck::on);
     measured->finish();
     if (scene.friction_angle_rad) {
       throw InputError("measured", "(given)", "measured forces or a friction value in cut, not both");
@@ -351,7 +351,8 @@ void parse_friction(const CutKeys& keys, ObjectReader& cut, ObjectReader& root, 
 
 const std::vector<SceneKeySection>& key_sections() {
   static const std::vector<SceneKeySection> list = [] {
-    std::vector<SceneKeySection> out{
+    std::vector<SceneKeySection> out = material_key_sections();
+    out.insert(out.end(), {
         {"tool", "the cutting tool", [] { return fields_markdown(tool_fields()); }},
         {"cut", "an orthogonal cut (`uncut_chip_thickness_um`, `width_mm`) or a turning cut (`turning`)",
          [] { return fields_markdown(cut_fields()); }},
@@ -367,7 +368,7 @@ const std::vector<SceneKeySection>& key_sections() {
          [] { return fields_markdown(models_fields()); }},
         {"models.quadrature", "optional: the Liu-Li integration", [] { return fields_markdown(quadrature_fields()); }},
         {"models.flow_stress_policy", "optional: the Johnson-Cook law outside its domain",
-         [] { return fields_markdown(flow_stress_policy_fields()); }}};
+         [] { return fields_markdown(flow_stress_policy_fields()); }}});
     for (const auto& s : trepanning_key_sections()) out.push_back(s);
     return out;
   }();
@@ -415,7 +416,7 @@ AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
   // Tool
   {
     auto tool = root.get_object("tool");
-    read_fields_into(tool, tool_fields(), scene);
+    read_fields_into(tool, tool_fields(), scene, SiCheck::on);
     tool.finish();
   }
 
@@ -423,7 +424,7 @@ AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
   auto cut = root.get_object("cut");
   if (auto turning = cut.find_object("turning")) {
     TurningScene t;
-    read_fields_into(*turning, turning_fields(), t);
+    read_fields_into(*turning, turning_fields(), t, SiCheck::on);
     turning->finish();
     t.geometry.validate(cut.key_path("turning"));
     for (const char* key : {"uncut_chip_thickness_um", "width_mm"}) {
@@ -437,7 +438,7 @@ AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
   } else {
     for (const char* key : {"uncut_chip_thickness_um", "width_mm"}) cut.get(key);  // required: missing is an error
   }
-  const CutKeys keys = read_fields(cut, cut_fields(), CutKeys{});
+  const CutKeys keys = read_fields(cut, cut_fields(), CutKeys{}, SiCheck::on);
   if (!scene.turning) {
     scene.uncut_chip_thickness_m = *keys.uncut_chip_thickness_m;
     scene.width_m = *keys.width_m;
@@ -450,13 +451,13 @@ AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
   // Models (shear_angle defaults to chip_ratio when the cut gives one)
   auto models = root.get_object("models");
   if (scene.chip_ratio) scene.shear_angle = ShearAngleSource::chip_ratio;
-  read_fields_into(models, models_fields(), scene);
+  read_fields_into(models, models_fields(), scene, SiCheck::on);
   if (auto quadrature = models.find_object("quadrature")) {
-    read_fields_into(*quadrature, quadrature_fields(), scene.liu_li.quadrature);
+    read_fields_into(*quadrature, quadrature_fields(), scene.liu_li.quadrature, SiCheck::on);
     quadrature->finish();
   }
   if (auto policy = models.find_object("flow_stress_policy")) {
-    read_fields_into(*policy, flow_stress_policy_fields(), scene.flow_stress.policy);
+    read_fields_into(*policy, flow_stress_policy_fields(), scene.flow_stress.policy, SiCheck::on);
     policy->finish();
   }
   models.finish();

@@ -109,33 +109,33 @@ TrepanningScene parse_trepanning_scene(const Json& document, MaterialCache* cach
   scene.material = cache ? cache->get(root.get("material"), "material") : load_material(root.get("material"), "material");
 
   ObjectReader tool = root.get_object("tool");
-  read_fields_into(tool, tool_fields(), scene.tool);
+  read_fields_into(tool, tool_fields(), scene.tool, SiCheck::on);
   tool.finish();
   scene.tool.validate("tool");
 
   ObjectReader cut = root.get_object("cut");
-  read_fields_into(cut, cut_fields(), scene.cut);
+  read_fields_into(cut, cut_fields(), scene.cut, SiCheck::on);
   cut.finish();
   scene.cut.validate("cut");
   check_feed_plausible(scene.tool, scene.cut);
 
   ObjectReader models = root.get_object("models");
   models.get("force");  // required (an error naming it when missing); read with its table
-  read_fields(models, models_fields(), TrepanningModels{});
+  read_fields(models, models_fields(), TrepanningModels{}, SiCheck::on);
   ObjectReader params = models.get_object("trepanning");
   if (auto grits = params.find_object("grits")) {
-    TrepanningGritParams g = read_fields(*grits, grit_fields(), TrepanningGritParams{});
+    TrepanningGritParams g = read_fields(*grits, grit_fields(), TrepanningGritParams{}, SiCheck::on);
     grits->finish();
     g.validate("models.trepanning.grits");
     scene.grits = g;
   }
   params.ignore("origin");
   if (params.has("axial_group_MPa") || params.has("torque_group_MPa")) {
-    read_fields_into(params, groups_fields(), scene.groups);
+    read_fields_into(params, groups_fields(), scene.groups, SiCheck::on);
     scene.groups_origin = "models.trepanning.axial_group_MPa and torque_group_MPa";
     params.finish();
   } else {
-    TrepanningMaterial m = read_fields(params, material_fields(), TrepanningMaterial{});
+    TrepanningMaterial m = read_fields(params, material_fields(), TrepanningMaterial{}, SiCheck::on);
     if (!params.has("hardness_GPa")) {
       const Json& brittle = scene.material.require_group("brittle", "material", "the trepanning model's hardness");
       if (!brittle.contains("hardness_GPa")) {

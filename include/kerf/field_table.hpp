@@ -232,20 +232,29 @@ FieldTable<S> embedded_fields(const FieldTable<B>& table, B S::*member, const Fi
   return out;
 }
 
+/// Whether read_fields refuses a number that its conversion to SI takes to 0, a subnormal or infinity, naming
+/// the key (ObjectReader::get_si): the analytic scenes ask for it; the DEM's tables read the plain conversion
+/// (their own checks judge the value then).
+enum class SiCheck { off, on };
+
 /// Reads every field present in the reader's object into `s` (absent fields keep their value, the default
-/// when `s` is S{}); values are range-checked in the key's unit, and a number whose conversion to SI leaves
-/// a finite, normal value is refused (ObjectReader::get_si); errors name the dotted path. The reader's
+/// when `s` is S{}); values are range-checked in the key's unit; errors name the dotted path. The reader's
 /// finish() (unknown keys) is the caller's: a scene object may hold several tables.
 template <class S>
-void read_fields_into(ObjectReader& reader, const FieldTable<S>& table, S& s) {
+void read_fields_into(ObjectReader& reader, const FieldTable<S>& table, S& s, SiCheck si_check = SiCheck::off) {
   for (const auto& field : table) {
     std::visit(
         [&](const auto& f) {
           using F = std::decay_t<decltype(f)>;
           const std::string key(f.key);
           if constexpr (std::is_same_v<F, NumberField<S>>) {
-            if (f.required) f.set(s, reader.get_si(key, f.range, f.unit.symbol, f.unit.to_si));
-            else if (const auto v = reader.get_optional_si(key, f.range, f.unit.symbol, f.unit.to_si)) f.set(s, *v);
+            if (si_check == SiCheck::on) {
+              if (f.required) f.set(s, reader.get_si(key, f.range, f.unit.symbol, f.unit.to_si));
+              else if (const auto v = reader.get_optional_si(key, f.range, f.unit.symbol, f.unit.to_si)) f.set(s, *v);
+            } else {
+              if (f.required) f.set(s, f.unit.to_si(reader.get_number(key, f.range, f.unit.symbol)));
+              else if (const auto v = reader.get_optional_number(key, f.range, f.unit.symbol)) f.set(s, f.unit.to_si(*v));
+            }
           } else if constexpr (std::is_same_v<F, IntField<S>>) {
             f.set(s, reader.get_int_or(key, f.get(s), f.lo, f.hi));
           } else if constexpr (std::is_same_v<F, BoolField<S>>) {
@@ -300,8 +309,8 @@ void read_fields_into(ObjectReader& reader, const FieldTable<S>& table, S& s) {
 
 /// read_fields_into a copy of `s`.
 template <class S>
-S read_fields(ObjectReader& reader, const FieldTable<S>& table, S s) {
-  read_fields_into(reader, table, s);
+S read_fields(ObjectReader& reader, const FieldTable<S>& table, S s, SiCheck si_check = SiCheck::off) {
+  read_fields_into(reader, table, s, si_check);
   return s;
 }
 

@@ -1,11 +1,13 @@
 #include "kerf/analytic/scene.hpp"
 
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
 #include <numbers>
 
+#include "kerf/analytic/material_models.hpp"
 #include "kerf/analytic/predict.hpp"
 #include "kerf/error.hpp"
 #include "kerf/io.hpp"
@@ -594,4 +596,40 @@ TEST_CASE("The key reference comes from the tables the scenes are read with", "[
   doc = orthogonal_scene();
   doc["models"]["force"] = "trepanning";
   CHECK_THROWS_WITH(kerf::parse_analytic_scene(doc), Contains("models.force = trepanning: expected an orthogonal-cut"));
+}
+
+namespace kerf {
+// src/material.cpp, outside the public headers: the keys the material loader accepts in each group.
+const std::vector<std::string>& material_group_keys(const std::string& group_name);
+}  // namespace kerf
+
+TEST_CASE("The material groups' key tables hold the keys the material loader accepts", "[scene][keys][material]") {
+  // The loader (src/material.cpp) refuses a key of no group before any model reads it; the tables are what the
+  // models read with: the two lists must be the same keys.
+  for (const auto& section : kerf::material_key_sections()) {
+    const std::string group(section.name.substr(std::string_view("material.").size()));
+    std::vector<std::string> table_keys;
+    const std::string md = section.markdown();
+    for (std::size_t at = md.find("\n| `"); at != std::string::npos; at = md.find("\n| `", at + 1)) {
+      const std::size_t start = at + 4;
+      table_keys.push_back(md.substr(start, md.find('`', start) - start));
+    }
+    auto loader_keys = kerf::material_group_keys(group);
+    std::sort(table_keys.begin(), table_keys.end());
+    std::sort(loader_keys.begin(), loader_keys.end());
+    INFO(group);
+    CHECK(table_keys == loader_keys);
+  }
+  // A default the table prints is the one the model gets (psic's microstructure leaves the Taylor factor out).
+  const auto psic = kerf::load_material(Json("psic"), "material");
+  Json inline_material = {{"elastic", *psic.group("elastic")}, {"microstructure", *psic.group("microstructure")}};
+  inline_material["microstructure"].erase("taylor_factor");
+  inline_material["microstructure"].erase("boundary_spacing_um");
+  const auto record = kerf::load_material(inline_material, "material");
+  CHECK_THAT(kerf::analytic_scene_keys_markdown("material.microstructure"),
+             Contains("| `taylor_factor` | - | a positive value | 3.06 |"));
+  const auto micro = kerf::microstructure_from_material(record, "material");
+  CHECK(micro.hall_petch.taylor_factor == 3.06);
+  CHECK(micro.dislocation.taylor_factor == 3.06);
+  CHECK_THAT(micro.dislocation.boundary_spacing_m, WithinRel(micro.hall_petch.grain_size_m, 1e-12));  // default: D
 }

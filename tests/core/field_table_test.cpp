@@ -170,10 +170,10 @@ const kerf::FieldTable<Lists>& lists_table() {
                            [](Lists& l, const std::vector<std::string>& v) { l.order = v; }}};
   return t;
 }
-Lists read_lists(const kerf::Json& j) {
+Lists read_lists(const kerf::Json& j, kerf::SiCheck si_check = kerf::SiCheck::on) {
   kerf::ObjectReader r(j, "models");
   Lists l;
-  kerf::read_fields_into(r, lists_table(), l);
+  kerf::read_fields_into(r, lists_table(), l, si_check);
   r.finish();
   return l;
 }
@@ -192,9 +192,11 @@ TEST_CASE("field table: optional numbers, ordered name lists, values that leave 
   CHECK_THROWS_WITH(read_lists({{"order", {"a", "d"}}}), Catch::Matchers::Contains("models.order = d: expected one of"));
   CHECK_THROWS_WITH(read_lists({{"order", {1}}}), Catch::Matchers::Contains("models.order = 1: expected one of"));
   CHECK_THROWS_WITH(read_lists({{"order", 3}}), "models.order = 3: expected a list of names");
-  // A value whose SI conversion underflows is refused, naming the key (as ObjectReader::get_si does).
+  // With SiCheck::on (the analytic scenes) a value whose SI conversion underflows is refused, naming the key (as
+  // ObjectReader::get_si does); off (the DEM's tables, the default) reads the plain conversion.
   CHECK_THROWS_WITH(read_lists({{"speed_mm", 1e-320}}), Catch::Matchers::Contains("models.speed_mm = ") &&
                                                             Catch::Matchers::Contains("stays a finite, non-zero number"));
+  CHECK(read_lists({{"speed_mm", 1e-320}}, kerf::SiCheck::off).speed_m_per_s == kerf::units::mm_to_m(1e-320));
   CHECK(read_lists({{"speed_mm", 0}}).speed_m_per_s == 0.0);
   // Absent optional values: not checked, not written, documented by their text.
   CHECK_NOTHROW(kerf::check_fields(lists_table(), none));

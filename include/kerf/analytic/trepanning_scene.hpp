@@ -16,11 +16,11 @@
 //
 //   kerf::TrepanningScene s = kerf::parse_trepanning_scene(kerf::read_json_file("validation/k9_trepanning/scene.json"));
 //   kerf::TrepanningForces f = kerf::trepanning_forces(s.tool, s.cut, s.groups);
-#include <functional>
 #include <optional>
 #include <string>
-#include <string_view>
 #include <vector>
+
+#include "kerf/analytic/key_sections.hpp"
 
 #include "kerf/analytic/trepanning.hpp"
 #include "kerf/json_reader.hpp"
@@ -45,11 +45,6 @@ struct TrepanningScene {
 /// Validates a scene document; InputError names the first bad field by its dotted path.
 TrepanningScene parse_trepanning_scene(const Json& document, MaterialCache* cache = nullptr);
 
-/// One section of the scenes' key reference: its name ("models.trepanning"), where it applies, its Markdown table.
-struct SceneKeySection {
-  std::string_view name, about;
-  std::function<std::string()> markdown;
-};
 /// The trepanning scene's sections, read through the field tables they print (analytic_scene_keys_markdown).
 const std::vector<SceneKeySection>& trepanning_key_sections();
 
