@@ -27,6 +27,7 @@ validation/soda_lime_cutting_steady/ (exit 1 while a verdict is not resolved).
 """
 import argparse
 import csv
+import json
 import math
 import pathlib
 import statistics
@@ -37,6 +38,7 @@ from compare_steady_cuts import t975  # noqa: E402  (Student's t table, shared)
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 RECORD = ROOT / "data/studies/results/seed000_steady.csv"
+STUDY = ROOT / "data/studies/seed000_steady.json"
 EXPERIMENTS = ROOT / "data/experiments/soda_lime_orthogonal_cutting.csv"
 DOMAINS = ("default", "large")
 GROOVED = ("rectangular", "trapezoidal")
@@ -152,8 +154,16 @@ def read_experiments(path):
 class Sources:
     """Per condition means of kerf (by domain) and of the references (experiment, paper_dem)."""
 
-    def __init__(self, cuts, experiments):
-        self.cuts, self.experiments = cuts, experiments
+    def __init__(self, cuts, experiments, planned=None):
+        """planned: the (domain, surface, depth_mm) conditions the study runs (None: every domain runs every
+        condition); a trend is expected in a domain only where the study runs all its conditions."""
+        self.cuts, self.experiments, self.planned = cuts, experiments, planned
+        self.needs = {}  # trend name -> the domains expected to give it (filled by trends())
+
+    def domains_for(self, conditions):
+        if self.planned is None:
+            return DOMAINS
+        return tuple(d for d in DOMAINS if all((d, s, h) in self.planned for s, h in conditions))
 
     def kerf(self, domain, surface, depth, quantity):
         rows = self.cuts.get((domain, surface, depth), {}).values()
@@ -172,7 +182,8 @@ def trends(src):
     'paper DEM'; ratios of condition means (levels: the means themselves)."""
     out = []
 
-    def add(name, group, make_kerf, make_ref):
+    def add(name, group, conditions, make_kerf, make_ref):
+        src.needs[name] = src.domains_for(conditions)
         values = {}
         for domain in DOMAINS:
             e = make_kerf(domain)
@@ -192,30 +203,80 @@ def trends(src):
     for q in ("main", "thrust"):
         for surface in ("regular",) + GROOVED:
             for depth in (0.1, 0.2):
-                add(f"{q} force per mm, {surface} {depth} mm (N/mm)", "level",
+                add(f"{q} force per mm, {surface} {depth} mm (N/mm)", "level", [(surface, depth)],
                     lambda dom, s=surface, d=depth, q=q: src.kerf(dom, s, d, q),
                     lambda source, s=surface, d=depth, q=q: src.reference(source, s, d, q))
     for q in ("main", "thrust"):
         for surface in ("regular",) + GROOVED:
-            add(f"depth effect {q}, {surface} (0.2 / 0.1 mm)", "ratio",
+            add(f"depth effect {q}, {surface} (0.2 / 0.1 mm)", "ratio", [(surface, 0.2), (surface, 0.1)],
                 lambda dom, s=surface, q=q: ratio(src.kerf(dom, s, 0.2, q), src.kerf(dom, s, 0.1, q)),
                 lambda source, s=surface, q=q: ref_ratio(source, (s, 0.2), (s, 0.1), q))
     for q in ("main", "thrust"):
         for surface in GROOVED:
             for depth in (0.1, 0.2):
                 add(f"groove effect {q}, {surface} / regular at {depth} mm", "ratio",
+                    [(surface, depth), ("regular", depth)],
                     lambda dom, s=surface, d=depth, q=q: ratio(src.kerf(dom, s, d, q), src.kerf(dom, "regular", d, q)),
                     lambda source, s=surface, d=depth, q=q: ref_ratio(source, (s, d), ("regular", d), q))
     for depth in (0.1, 0.2):
         add(f"trapezoidal / rectangular thrust at {depth} mm", "ratio",
+            [("trapezoidal", depth), ("rectangular", depth)],
             lambda dom, d=depth: ratio(src.kerf(dom, "trapezoidal", d, "thrust"),
                                        src.kerf(dom, "rectangular", d, "thrust")), None)
+        # The damage as the subsurface cracks under the steady cut: their depth is censored in both domains
+        # (damage_floors), their number within the domain is not.
         for surface in GROOVED:
-            add(f"damage depth, {surface} / regular at {depth} mm", "ratio",
-                lambda dom, s=surface, d=depth: ratio(src.kerf(dom, s, d, "subsurface_damage_depth_steady_um"),
-                                                     src.kerf(dom, "regular", d, "subsurface_damage_depth_steady_um")),
+            add(f"subsurface cracks under the steady cut, {surface} / regular at {depth} mm", "ratio",
+                [(surface, depth), ("regular", depth)],
+                lambda dom, s=surface, d=depth: ratio(src.kerf(dom, s, d, "cracks_subsurface_steady"),
+                                                     src.kerf(dom, "regular", d, "cracks_subsurface_steady")),
                 None)
     return out
+
+
+def damage_floors(study_path):
+    """{(domain, surface, depth_mm): (floor_um, largest disk diameter_um)} from the study and its scene: how deep
+    below the cut line a crack can be seen, the nearer of the window's floor (below_depths depths of cut) and the
+    workpiece's bottom (its height less the depth of cut). {} when the study file is absent."""
+    study_path = pathlib.Path(study_path)
+    if not study_path.is_file():
+        return {}
+    study = json.loads(study_path.read_text())
+    scene = json.loads((study_path.parent / study["scene"]).read_text())
+    height_mm, diameter_um = scene["specimen"]["height_mm"], 2 * scene["specimen"]["radius_max_um"]
+    floors = {}
+    for c in study["conditions"]["list"]:
+        tags, depth = c["tags"], c["cut.depth_of_cut_mm"]
+        below = c.get("active_window.below_depths", scene.get("active_window", {}).get("below_depths", math.inf))
+        floor_mm = min(below * depth, height_mm - depth)
+        floors[(tags["domain"], tags["surface"], round(float(tags["depth_of_cut_mm"]), 6))] = (1000 * floor_mm,
+                                                                                             diameter_um)
+    return floors
+
+
+def damage_section(cuts, floors):
+    """report.md's lines on the damage depth under the steady cut: each condition's deepest crack against the
+    depth at which the domain stops seeing cracks; a depth within a disk diameter of it is censored (a lower
+    bound), which the crack-count trends above avoid."""
+    md = ["## Damage depth under the steady cut (reported)", "",
+          "| domain | surface | depth of cut (mm) | packings | deepest crack below the cut line (um) | floor (um) | "
+          "censored |", "|---|---|---:|---:|---:|---:|---:|"]
+    censored_all = True
+    for key in sorted(cuts):
+        depths = [r.get("subsurface_damage_depth_steady_um", math.nan) for r in cuts[key].values()]
+        depths = [d for d in depths if isinstance(d, float) and math.isfinite(d)]
+        if not depths or key not in floors:
+            continue
+        floor, diameter = floors[key]
+        censored = sum(d >= floor - diameter for d in depths)
+        censored_all = censored_all and censored == len(depths)
+        md.append(f"| {key[0]} | {key[1]} | {key[2]:g} | {len(depths)} | {min(depths):.0f}-{max(depths):.0f} | "
+                  f"{floor:.0f} | {censored} of {len(depths)} |")
+    md += ["", "The floor is the nearer of the window's floor and the workpiece's bottom (the large window reaches "
+           "below the 1 mm workpiece). " + ("Every cut's damage reaches it: the depths are lower bounds, and the "
+                                           "damage trend is the crack count above." if censored_all else
+                                           "A censored depth is a lower bound."), ""]
+    return md
 
 
 def rows_of(all_trends):
@@ -306,10 +367,10 @@ def fmt_interval(value, low, high):
     return f"{value:.3g} [{low:.3g}, {high:.3g}]"
 
 
-def acceptance(rows):
+def acceptance(rows, needs=None):
     """The steady case's acceptance (validation/soda_lime_cutting_steady/README.md): every trend compared with the
-    experiments has a resolved verdict in each domain (agrees or differs), and so has its domain robustness.
-    Returns (resolved, [what is not])."""
+    experiments has a resolved verdict in each domain the study runs it in (needs: trend -> domains; default
+    both), agrees or differs, and so has its domain robustness. Returns (resolved, [what is not])."""
     missing = []
     for r in rows:
         if r["group"] != "ratio":
@@ -321,13 +382,13 @@ def acceptance(rows):
     ratios_with_experiment = {r["trend"] for r in rows if r["group"] == "ratio" and r["source"] == "experiment"}
     for trend in sorted(ratios_with_experiment):
         sources = {r["source"] for r in rows if r["trend"] == trend}
-        for domain in DOMAINS:
+        for domain in (needs or {}).get(trend, DOMAINS):
             if f"kerf {domain}" not in sources:
                 missing.append(f"{trend} (kerf {domain}): no cuts")
     return not missing, missing
 
 
-def report(rows, cuts, record_path):
+def report(rows, cuts, record_path, floors=None, needs=None):
     """The steady case's report.md: what is compared and why, the trends with their verdicts, the levels, and
     the acceptance line. Every verdict is the one rows_of drew from the intervals."""
     record = pathlib.Path(record_path).resolve()
@@ -389,7 +450,8 @@ def report(rows, cuts, record_path):
     moved = [r["trend"] for r in ratio_rows if r.get("domain_robust") == "differs"]
     md.append(f"- Moved by the domain (resolved): {'; '.join(moved) or 'none'}.")
     md += ["", "## Levels, per mm of width (reported, not acceptance)", ""] + table(level_rows, False) + [""]
-    resolved, missing = acceptance(rows)
+    md += damage_section(cuts, floors or {})
+    resolved, missing = acceptance(rows, needs)
     md.append("**RESOLVED**: every verdict above is resolved." if resolved else
               "**NOT RESOLVED**: " + "; ".join(missing) + ".")
     return "\n".join(md) + "\n", resolved
@@ -399,13 +461,16 @@ def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("record", nargs="?", default=str(RECORD))
     parser.add_argument("--experiments", default=str(EXPERIMENTS))
+    parser.add_argument("--study", default=str(STUDY), help="the study of the record (the damage floors)")
     parser.add_argument("--out", default="out/seed000_trends")
     parser.add_argument("--report", action="store_true",
                         help="also write DIR/report.md, the steady validation case's report, and exit 1 while a "
                              "verdict is not resolved")
     args = parser.parse_args(argv)
     cuts = read_record(args.record)
-    all_trends = trends(Sources(cuts, read_experiments(args.experiments)))
+    floors = damage_floors(args.study)
+    src = Sources(cuts, read_experiments(args.experiments), planned=set(floors) or None)
+    all_trends = trends(src)
     rows = rows_of(all_trends)
     out = pathlib.Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
@@ -419,7 +484,7 @@ def main(argv=None):
               f"{extra}")
     print(f"wrote {out / 'trends.csv'}, {out / 'trends.png'}")
     if args.report:
-        text, resolved = report(rows, cuts, args.record)
+        text, resolved = report(rows, cuts, args.record, floors, src.needs)
         tmp = out / "report.md.tmp"
         tmp.write_text(text)
         tmp.replace(out / "report.md")

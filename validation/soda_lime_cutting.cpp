@@ -1,10 +1,8 @@
 // Seed 000's orthogonal cutting of soda-lime glass (validation/soda_lime_cutting/): runs every condition of
 // validation.json with kerf-dem (replicates on different packings), collects the forces, compares them through
 // the report layer with the experiments (Table 6, 25.4 mm wide) and the paper's DEM (Table 4, 1 mm), and checks
-// the acceptance bands. See validation/soda_lime_cutting/README.md. With "statistics": "within_cuts" (the
-// steady-state case, validation/soda_lime_cutting_steady/) each condition's standard error comes from its cuts'
-// own force signals instead of the spread between packings, and the acceptance checks trends against the
-// experiments' with 95 % intervals (see validation/soda_lime_cutting_steady/README.md).
+// the acceptance bands where validation.json gives them. See validation/soda_lime_cutting/README.md. (The
+// steady-state case's acceptance is the seed-000 study's record, bench/seed000_trends.py.)
 #include "soda_lime_cutting.hpp"
 
 #include <fmt/format.h>
@@ -39,60 +37,25 @@ struct Condition {
   double depth_of_cut_mm = 0;
 };
 
-/// Packings per condition, in validation.json or from --replicates: at least two for a sample standard deviation
-/// (statistics "replicates"); one long steady cut has its own standard error (statistics "within_cuts").
-constexpr int kMinReplicates = 2, kMinReplicatesWithinCuts = 1, kMaxReplicates = 100;
-
-/// Where a condition's standard error comes from: the spread between its packings (sample std / sqrt(n)), or
-/// each cut's own batch-means standard error of its steady mean, sqrt(sum sem_k^2) / n.
-enum class Statistics { replicates, within_cuts };
+/// Packings per condition, in validation.json or from --replicates: at least two for a sample standard deviation.
+constexpr int kMinReplicates = 2, kMaxReplicates = 100;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-/// validation.json's "replicates" as an object (statistics "within_cuts" only): as many packings per condition as
-/// its mean needs, the study's adaptive policy (kerf/dem/study.hpp): the smallest n in [min_count, max_count] at
-/// which the between-packing relative standard error of every named force is at most the acceptance's
-/// max_relative_sem_percent.
-struct AdaptivePackings {
-  int min_count = 8, max_count = 30;
-  std::vector<std::string> results{"main_force_N", "thrust_force_N"};
-};
-
-/// The adaptive packings as the study's "replicates" section, without its target (the acceptance's).
-Json adaptive_json(const AdaptivePackings& p) {
-  return Json{{"policy", "adaptive"}, {"min_count", p.min_count}, {"max_count", p.max_count}, {"results", p.results}};
-}
 
 struct Spec {
   fs::path scene, experiments;
   std::string note;  ///< printed under the report's title (e.g. what a fitted material was fitted to)
-  int replicates = 3;  ///< fixed packings per condition (adaptive: max_count)
-  std::optional<AdaptivePackings> adaptive;
-  /// within_cuts: from this many packings of a condition on, its standard error is the spread between its
-  /// packings (sample std / sqrt(n), Student-t intervals) instead of the cuts' own; 0: never.
-  int between_packings_from_replicates = 0;
-  Statistics statistics = Statistics::replicates;
-  int min_replicates() const { return statistics == Statistics::within_cuts ? kMinReplicatesWithinCuts : kMinReplicates; }
+  int replicates = 3;  ///< packings per condition
   std::vector<Condition> conditions;
-  /// Replicates statistics: whether validation.json gives pass/fail bands (the fitted case's); without them the
-  /// case is a reproduction of the paper's method, reported without a verdict of its own.
+  /// Whether validation.json gives pass/fail bands (the fitted case's); without them the case is a reproduction
+  /// of the paper's method, reported without a verdict of its own.
   bool bands = false;
   double regular_max_error_percent = 20, grooved_ratio_max = 1.0 / 3;
   /// The regular-workpiece force the material was fitted to (depth 0: none): its check is reported as
   /// FITTED, neither passed nor failed, since meeting it shows the fit, not the model.
   double fitted_depth_of_cut_mm = 0;
   std::string fitted_force;  ///< "main" or "thrust"
-  /// within_cuts acceptance: every condition's mean main and thrust force resolved to this relative standard
-  /// error (else the validation fails), and whether the trends against the experiments are reported.
-  double max_relative_sem_percent = 5;
-  bool trends = true;
 };
-
-/// The acceptance keys of each statistics mode: a key of the other mode is an error that says so.
-const std::vector<std::string> kBandKeys{"regular_force_max_abs_error_vs_paper_dem_percent",
-                                         "grooved_to_regular_main_force_ratio_max", "fitted"};
-const std::vector<std::string> kWithinCutsKeys{"max_relative_sem_percent", "trends",
-                                              "between_packings_from_replicates"};
 
 Spec read_spec(const fs::path& case_dir) {
   const Json doc = read_json_file(case_dir / "validation.json");
@@ -101,43 +64,7 @@ Spec read_spec(const fs::path& case_dir) {
   s.scene = case_dir / r.get_string("scene");
   s.experiments = case_dir / r.get_string("experiments");
   s.note = r.get_string_or("note", "");
-  s.statistics = r.get_choice_or("statistics", "replicates", {"replicates", "within_cuts"}) == "within_cuts"
-                     ? Statistics::within_cuts
-                     : Statistics::replicates;
-  if (const Json* n = r.find("replicates");
-      n && n->is_number_integer() && n->get<long long>() == 1 && s.statistics == Statistics::replicates)
-    throw InputError("validation.replicates", "1",
-                     fmt::format("an integer in [{}, {}] (one packing per condition needs \"statistics\": "
-                                 "\"within_cuts\", the cuts' own standard errors)",
-                                 kMinReplicates, kMaxReplicates));
-  if (const Json* rep = r.find("replicates"); rep && rep->is_object()) {
-    ObjectReader a(*rep, "validation.replicates");
-    if (s.statistics != Statistics::within_cuts)
-      throw InputError("validation.replicates", rep->dump(),
-                       "an integer (packings by the error reached need \"statistics\": \"within_cuts\")");
-    AdaptivePackings p;
-    a.get_choice("policy", {"adaptive"});
-    // At least two packings: the rule is the spread between them.
-    p.min_count = a.get_int_or("min_count", p.min_count, 2, kMaxReplicates);
-    p.max_count = a.get_int_or("max_count", std::max(p.max_count, p.min_count), p.min_count, kMaxReplicates);
-    if (const Json* names = a.find("results")) {
-      const auto bad = [&] {
-        return InputError(a.key_path("results"), names->dump(),
-                          "a non-empty list of \"main_force_N\" and \"thrust_force_N\"");
-      };
-      if (!names->is_array() || names->empty()) throw bad();
-      p.results.clear();
-      for (const Json& name : *names) {
-        if (!name.is_string() || (name != "main_force_N" && name != "thrust_force_N")) throw bad();
-        p.results.push_back(name.get<std::string>());
-      }
-    }
-    a.finish();
-    s.adaptive = p;
-    s.replicates = p.max_count;
-  } else {
-    s.replicates = r.get_int_or("replicates", 3, s.min_replicates(), kMaxReplicates);
-  }
+  s.replicates = r.get_int_or("replicates", 3, kMinReplicates, kMaxReplicates);
   const Json& list = r.get("conditions");
   if (!list.is_array() || list.empty())
     throw InputError("validation.conditions", list.dump(), "a non-empty list of conditions");
@@ -150,24 +77,8 @@ Spec read_spec(const fs::path& case_dir) {
     s.conditions.push_back(cond);
   }
   ObjectReader a = r.get_object("acceptance");
-  const bool within_cuts = s.statistics == Statistics::within_cuts;
-  for (const auto& key : within_cuts ? kBandKeys : kWithinCutsKeys)
-    if (const Json* value = a.find(key))
-      throw InputError(a.key_path(key), value->dump(),
-                       within_cuts ? "no band under \"statistics\": \"within_cuts\" (its acceptance: "
-                                     "max_relative_sem_percent and trends)"
-                                   : "a key of \"statistics\": \"within_cuts\" only (the replicates acceptance: "
-                                     "regular_force_max_abs_error_vs_paper_dem_percent, "
-                                     "grooved_to_regular_main_force_ratio_max, fitted)");
-  if (within_cuts) {
-    s.max_relative_sem_percent = a.get_number("max_relative_sem_percent", Range::positive(), "%");
-    s.trends = a.get_bool_or("trends", true);
-    s.between_packings_from_replicates = a.get_int_or("between_packings_from_replicates", 0, 2, kMaxReplicates);
-    if (s.adaptive && s.max_relative_sem_percent > 100)  // it is the adaptive packings' target too
-      throw InputError(a.key_path("max_relative_sem_percent"), fmt::format("{:g}", s.max_relative_sem_percent),
-                       "a percentage in (0, 100] with adaptive packings (\"replicates\": {\"policy\": \"adaptive\"})");
-  } else if (a.has("regular_force_max_abs_error_vs_paper_dem_percent") ||
-             a.has("grooved_to_regular_main_force_ratio_max") || a.has("fitted")) {
+  if (a.has("regular_force_max_abs_error_vs_paper_dem_percent") || a.has("grooved_to_regular_main_force_ratio_max") ||
+      a.has("fitted")) {
     s.bands = true;
     s.regular_max_error_percent = a.get_number("regular_force_max_abs_error_vs_paper_dem_percent", Range::positive(), "%");
     s.grooved_ratio_max = a.get_number("grooved_to_regular_main_force_ratio_max", Range::positive(), "");
@@ -188,8 +99,8 @@ std::string quoted(const fs::path& p) {
   return out + "'";
 }
 
-/// A mean with its standard error and the degrees of freedom of that error: n - 1 for the spread between n
-/// packings, infinite for a cut's own batch-means error (a long signal's; the normal quantile).
+/// A mean with its standard error and the degrees of freedom of that error (n - 1 for the spread between n
+/// packings; infinite for a reference without one).
 struct Estimate {
   double value = 0, standard_error = 0;
   double degrees_of_freedom = std::numeric_limits<double>::infinity();
@@ -221,44 +132,16 @@ const std::vector<std::string> kReplicateColumns{"width_mm",
                                                  "subsurface_damage_depth_steady_um",
                                                  "wall_time_s"};
 
-/// The columns that statistics "within_cuts" appends to kerf_dem_replicates.csv: the cut's own standard errors
-/// of its steady means (batch means of its force signal; empty when the signal is too short for them), the
-/// depth below the cut line to which an active window sees cracks, and whether the steady damage depth reaches
-/// it (1: censored, the damage may go deeper).
-const std::vector<std::string> kWithinCutColumns{"main_force_sem_N", "thrust_force_sem_N", "damage_depth_limit_um",
-                                                 "subsurface_damage_depth_steady_censored"};
-
-/// A csv field of a result that may be null (empty) or a boolean (1 / 0).
-std::string csv_field(const Json& value) {
-  if (value.is_boolean()) return value.get<bool>() ? "1" : "0";
-  return value.is_number() ? csv_number(value.get<double>()) : std::string();
-}
-
 /// Replicate results of one condition, from its study items' summaries.
 struct ConditionResult {
   Condition condition;
-  Json replicates;  ///< one row per replicate: replicate, seed and kReplicateColumns (within_cuts: kWithinCutColumns too)
+  Json replicates;  ///< one row per replicate: replicate, seed and kReplicateColumns
   double main_n = 0, thrust_n = 0, main_std_n = 0, thrust_std_n = 0, width_mm = 1;
-  bool within_cuts = false;  ///< main() and thrust() carry the within-cut standard errors...
-  int between_from = 0;      ///< ...but from this many packings on (0: never) the between-packing ones
-  /// sqrt(sum sem_k^2) / n of the cuts' own standard errors (NaN when a cut has none, or not within_cuts).
-  double main_sem_within_n = kNaN, thrust_sem_within_n = kNaN;
   /// The mean forces with their standard errors over the replicates (packings are independent samples): sample
-  /// std / sqrt(n), NaN for one packing.
+  /// std / sqrt(n), n - 1 degrees of freedom.
   int n() const { return static_cast<int>(replicates.size()); }
-  Estimate main_between() const { return {main_n, main_std_n / std::sqrt(n()), n() - 1.0}; }
-  Estimate thrust_between() const { return {thrust_n, thrust_std_n / std::sqrt(n()), n() - 1.0}; }
-  /// Whether the acceptance uses the between-packing standard errors: the replicates mode always, within_cuts
-  /// from between_from packings on.
-  bool uses_between() const { return !within_cuts || (between_from > 0 && n() >= between_from); }
-  /// The mean forces with the standard errors the acceptance uses.
-  Estimate main() const { return uses_between() ? main_between() : Estimate{main_n, main_sem_within_n}; }
-  Estimate thrust() const { return uses_between() ? thrust_between() : Estimate{thrust_n, thrust_sem_within_n}; }
-  /// The active window's depth limit of the crack search (NaN: no window), and how many replicates' steady
-  /// damage depth reaches it (censored).
-  double damage_depth_limit_um = kNaN;
-  int damage_censored_replicates = 0;
-  double cracks_subsurface_steady_std = kNaN, subsurface_steady_depth_std_um = kNaN;  ///< over the replicates
+  Estimate main() const { return {main_n, main_std_n / std::sqrt(n()), n() - 1.0}; }
+  Estimate thrust() const { return {thrust_n, thrust_std_n / std::sqrt(n()), n() - 1.0}; }
   double cracks_tensile = 0, cracks_shear = 0, cracks_chip = 0, cracks_subsurface = 0, subsurface_depth_um = 0;
   /// Under the surface machined during the steady part (kerf-dem's *_steady results): the cut's own damage.
   double cracks_subsurface_steady = 0, subsurface_steady_depth_um = 0;
@@ -266,13 +149,11 @@ struct ConditionResult {
   std::vector<fs::path> directories;  ///< each replicate's run, relative to the validation's output directory
 };
 
-ConditionResult collect(const Condition& c, const std::vector<Json>& items, bool within_cuts, int between_from) {
+ConditionResult collect(const Condition& c, const std::vector<Json>& items) {
   ConditionResult r;
   r.condition = c;
-  r.within_cuts = within_cuts;
-  r.between_from = between_from;
   r.replicates = Json::array();
-  std::vector<double> main, thrust, main_sems, thrust_sems, steady_cracks, steady_depths;
+  std::vector<double> main, thrust;
   const double n = static_cast<double>(items.size());
   for (std::size_t k = 0; k < items.size(); ++k) {
     const Json& res = items[k].at("results");
@@ -280,27 +161,6 @@ ConditionResult collect(const Condition& c, const std::vector<Json>& items, bool
     Json row{{"replicate", k + 1}, {"seed", item.at("seed")}};
     for (const auto& column : kReplicateColumns)
       row[column] = column == "wall_time_s" ? items[k].at("wall_time_s") : res.at(column);
-    if (within_cuts) {
-      // A null standard error (a signal too short for batch means) makes the condition's NaN: not resolved.
-      for (const char* sem : {"main_force_sem_N", "thrust_force_sem_N"}) row[sem] = res.value(sem, Json());
-      main_sems.push_back(row["main_force_sem_N"].is_number() ? row["main_force_sem_N"].get<double>() : kNaN);
-      thrust_sems.push_back(row["thrust_force_sem_N"].is_number() ? row["thrust_force_sem_N"].get<double>() : kNaN);
-      // Cracks exist only inside an active window: a steady damage depth within a largest disk diameter of its
-      // floor is censored by it (dem/kinds/cut.cpp, active_window.damage_depth_limit_um).
-      const Json window = items[k].value("active_window", Json::object());
-      row["damage_depth_limit_um"] = window.value("damage_depth_limit_um", Json());
-      bool censored = false;
-      if (row["damage_depth_limit_um"].is_number()) {
-        const double limit = row["damage_depth_limit_um"].get<double>();
-        const double diameter = 2 * items[k].value("specimen", Json::object()).value("radius_max_um", 0.0);
-        censored = row.at("subsurface_damage_depth_steady_um").get<double>() >= limit - diameter;
-        r.damage_depth_limit_um = limit;
-      }
-      row["subsurface_damage_depth_steady_censored"] = censored;
-      r.damage_censored_replicates += censored ? 1 : 0;
-      steady_cracks.push_back(row.at("cracks_subsurface_steady").get<double>());
-      steady_depths.push_back(row.at("subsurface_damage_depth_steady_um").get<double>());
-    }
     main.push_back(row.at("main_force_N").get<double>());
     thrust.push_back(row.at("thrust_force_N").get<double>());
     r.cracks_tensile += row.at("cracks_tensile").get<double>() / n;
@@ -317,12 +177,6 @@ ConditionResult collect(const Condition& c, const std::vector<Json>& items, bool
   r.main_n = m.mean, r.main_std_n = m.standard_deviation;
   r.thrust_n = t.mean, r.thrust_std_n = t.standard_deviation;
   r.width_mm = r.replicates.at(0).at("width_mm").get<double>();
-  if (within_cuts) {
-    r.main_sem_within_n = standard_error_of_mean(main_sems);
-    r.thrust_sem_within_n = standard_error_of_mean(thrust_sems);
-    r.cracks_subsurface_steady_std = sample_statistics(steady_cracks).standard_deviation;
-    r.subsurface_steady_depth_std_um = sample_statistics(steady_depths).standard_deviation;
-  }
   return r;
 }
 
@@ -405,16 +259,15 @@ std::string num(double x, int digits = 3) { return std::isfinite(x) ? fmt::forma
 
 /// One trend, a ratio of two condition means, against the experiments' same ratio: summary.json's row and the
 /// report's line. The ratio's standard error to first order (ratio_of), its 95 % interval value +- q standard
-/// errors (q: Student's t at the Welch-Satterthwaite degrees of freedom, 1.96 for the cuts' own errors). AGREES:
-/// the experiment's ratio inside the interval; DISAGREES: outside it (resolved); UNRESOLVED: no standard error;
-/// REPORTED: no experiment to compare. `*_between`: the same ratio with the between-packing errors, shown beside.
+/// errors (q: Student's t at the Welch-Satterthwaite degrees of freedom). AGREES: the experiment's ratio inside
+/// the interval; DISAGREES: outside it (resolved); UNRESOLVED: no standard error; REPORTED: no experiment to
+/// compare.
 struct TrendCheck {
   Json row;
   std::string line, verdict;
 };
 TrendCheck trend_check(const std::string& id, const std::string& what, const Estimate& num_est,
-                       const Estimate& den_est, const Estimate& num_between, const Estimate& den_between,
-                       std::optional<double> experiment, std::optional<double> paper_dem) {
+                       const Estimate& den_est, std::optional<double> experiment, std::optional<double> paper_dem) {
   const Estimate e = ratio_of(num_est, den_est);
   const double q = quantile95(e.degrees_of_freedom);
   const double lo = e.value - q * e.standard_error, hi = e.value + q * e.standard_error;
@@ -432,12 +285,10 @@ TrendCheck trend_check(const std::string& id, const std::string& what, const Est
       detail = fmt::format("; the experiment {:.2f} standard errors away", sigmas);
     }
   }
-  const double between_se = ratio_of(num_between, den_between).standard_error;
   Json row{{"id", id},
            {"check", what},
            {"value", e.value},
            {"standard_error", finite_or_null(e.standard_error)},
-           {"standard_error_between_packings", finite_or_null(between_se)},
            {"degrees_of_freedom", finite_or_null(e.degrees_of_freedom)},
            {"ci95_quantile", q},
            {"ci95_low", finite_or_null(lo)},
@@ -447,25 +298,23 @@ TrendCheck trend_check(const std::string& id, const std::string& what, const Est
            {"standard_errors_from_experiment", away},
            {"verdict", verdict}};
   std::string line =
-      fmt::format("- {} **{}**: {:.3f} ± {} (95 % interval {} to {}{}{}); experiment {}, paper's DEM {}{}\n", verdict,
+      fmt::format("- {} **{}**: {:.3f} ± {} (95 % interval {} to {}{}); experiment {}, paper's DEM {}{}\n", verdict,
                   what, e.value, num(e.standard_error, 2), num(lo), num(hi),
                   std::isfinite(e.degrees_of_freedom) ? fmt::format(", df {:.1f}", e.degrees_of_freedom) : "",
-                  std::isfinite(between_se) ? fmt::format("; between packings ± {}", num(between_se, 2)) : "",
                   experiment ? fmt::format("{:.3f}", *experiment) : "—", paper_dem ? fmt::format("{:.3f}", *paper_dem) : "—",
                   detail);
   return {row, line, verdict};
 }
 
 /// Seed 000's trends, each a ratio of two condition means passed to `trend(id, what, numerator, denominator,
-/// numerator between packings, denominator between packings, experiment's ratio, paper DEM's ratio)`: the depth
+/// experiment's ratio, paper DEM's ratio)`: the depth
 /// effect of the regular cut, grooved (rectangular) / regular at each depth (main and thrust), trapezoidal /
 /// rectangular thrust (beyond the paper); those whose conditions the case runs.
 template <class Trend>
 void seed000_trends(const std::map<std::string, ConditionResult>& results, const Comparison& vs_experiment,
                     const Comparison& vs_dem, Trend&& trend) {
   const std::vector<std::string> forces{"main", "thrust"};
-  const auto force_of = [](const ConditionResult& r, const std::string& force, bool between) {
-    if (between) return force == "main" ? r.main_between() : r.thrust_between();
+  const auto force_of = [](const ConditionResult& r, const std::string& force) {
     return force == "main" ? r.main() : r.thrust();
   };
   const auto reference_ratio = [&](const Comparison& comparison, const std::string& force, const std::string& num_surface,
@@ -476,8 +325,8 @@ void seed000_trends(const std::map<std::string, ConditionResult>& results, const
   if (const auto *a = find_condition(results, "none", 0.1), *b = find_condition(results, "none", 0.2); a && b)
     for (const auto& force : forces)
       trend(fmt::format("depth_effect_regular_{}_force", force),
-            fmt::format("depth effect: regular {} force, 0.2 mm / 0.1 mm", force), force_of(*b, force, false),
-            force_of(*a, force, false), force_of(*b, force, true), force_of(*a, force, true),
+            fmt::format("depth effect: regular {} force, 0.2 mm / 0.1 mm", force), force_of(*b, force),
+            force_of(*a, force),
             reference_ratio(vs_experiment, force, "regular", 0.2, "regular", 0.1),
             reference_ratio(vs_dem, force, "regular", 0.2, "regular", 0.1));
   for (double depth : {0.1, 0.2}) {
@@ -486,8 +335,8 @@ void seed000_trends(const std::map<std::string, ConditionResult>& results, const
     if (!regular || !rect) continue;
     for (const auto& force : forces)
       trend(fmt::format("grooved_to_regular_{}_force_{}", force, depth),
-            fmt::format("grooved (rectangular) / regular {} force at {} mm", force, depth), force_of(*rect, force, false),
-            force_of(*regular, force, false), force_of(*rect, force, true), force_of(*regular, force, true),
+            fmt::format("grooved (rectangular) / regular {} force at {} mm", force, depth), force_of(*rect, force),
+            force_of(*regular, force),
             reference_ratio(vs_experiment, force, rect->condition.surface, depth, "regular", depth),
             reference_ratio(vs_dem, force, rect->condition.surface, depth, "regular", depth));
   }
@@ -497,198 +346,8 @@ void seed000_trends(const std::map<std::string, ConditionResult>& results, const
     if (rect && trap)
       trend(fmt::format("trapezoidal_to_rectangular_thrust_force_{}", depth),
             fmt::format("trapezoidal / rectangular grooves, thrust force at {} mm (beyond the paper)", depth),
-            trap->thrust(), rect->thrust(), trap->thrust_between(), rect->thrust_between(), std::nullopt, std::nullopt);
+            trap->thrust(), rect->thrust(), std::nullopt, std::nullopt);
   }
-}
-
-/// Statistics "within_cuts" (validation/soda_lime_cutting_steady/README.md): the condition table with both
-/// standard errors, each mean's resolution (the acceptance: relative standard error at most
-/// spec.max_relative_sem_percent, else a failure), the trends against the experiments' and the paper's DEM's with
-/// their 95 % intervals (reported, not failures), and the damage under the steady cut (reported). Returns the
-/// report's body (after the title) and fills `summary` and `failures`.
-std::string within_cuts_report(const Spec& spec, const std::map<std::string, ConditionResult>& results,
-                               const Comparison& vs_experiment, const Comparison& vs_dem,
-                               std::vector<std::string>& failures, Json& summary) {
-  const int n = spec.replicates, from = spec.between_packings_from_replicates;
-  const std::string packings =
-      spec.adaptive
-          ? fmt::format("as many packings per condition as its mean needs: the smallest n from {} to {} at which the "
-                        "between-packing relative standard error of the {} is at most {:g} %, packing seeds 1..n",
-                        spec.adaptive->min_count, spec.adaptive->max_count,
-                        spec.adaptive->results.size() == 2 ? "main and thrust forces"
-                        : spec.adaptive->results.front() == "main_force_N" ? "main force"
-                                                                            : "thrust force",
-                        spec.max_relative_sem_percent)
-          : fmt::format("{} packing{} per condition, packing seed{} 1{}", n, n == 1 ? "" : "s", n == 1 ? "" : "s",
-                        n == 1 ? "" : fmt::format("..{}", n));
-  std::string md = fmt::format(
-      "kerf-dem, scene `{}` ({}); steady-state cuts: each cut's means are "
-      "over its steady part (after the entry), with their standard errors from the batch means of its own force "
-      "signal; a condition's mean is the mean over its packings of its cuts' steady means, and its standard error "
-      "sqrt(sum sem_k^2) / n from the cuts' own (`main_force_sem_N`, `thrust_force_sem_N`){}{}. Forces per **1 mm** "
-      "width (the DEM's out-of-plane thickness) unless stated. Experiments: seed 000 Table 6, **25.4 mm** wide; the "
-      "paper's DEM: Table 4, 1 mm.\n\n",
-      spec.scene.filename().string(), packings,
-      n >= 2 ? "; beside it the between-packing standard error, sample std / sqrt(n)" : "",
-      from > 0 ? fmt::format("; from {} packings on, the acceptance and the trends use the between-packing one "
-                             "(marked *)",
-                             from)
-               : "");
-  if (!spec.note.empty()) md += spec.note + "\n\n";
-  md +=
-      "| condition | kerf-dem main (N) | kerf-dem thrust (N) | between packings: main / thrust (N) | paper DEM main / "
-      "thrust (N, 1 mm) | experiment main / thrust (N, 25.4 mm) | experiment per 1 mm (N) | under the steady cut: "
-      "subsurface cracks, depth (um) | cut time, sum over packings (s) |\n"
-      "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
-  Json conditions = Json::array(), damage = Json::array();
-  std::string resolution;
-  const double max_rel = spec.max_relative_sem_percent;
-  for (const auto& c : spec.conditions) {
-    const ConditionResult& r = results.at(c.name);
-    const auto [paper, experiment, per_mm] = reference_cells(c, vs_experiment, vs_dem);
-    const Estimate main = r.main(), thrust = r.thrust();
-    const double main_rel = 100 * main.standard_error / std::abs(main.value);
-    const double thrust_rel = 100 * thrust.standard_error / std::abs(thrust.value);
-    const std::string mark = r.uses_between() ? "*" : "";
-    const auto cell = [&](const Estimate& e, double rel) {
-      return fmt::format("{:.2f} ± {}{} ({} %)", e.value, num(e.standard_error, 2), mark, num(rel, 2));
-    };
-    const bool censored = r.damage_censored_replicates > 0;
-    md += fmt::format("| {} (n = {}) | {} | {} | {} / {} | {} | {} | {} | {:.0f}, {:.0f}{} | {:.0f} |\n", c.name, r.n(),
-                      cell(main, main_rel), cell(thrust, thrust_rel), num(r.main_between().standard_error, 2),
-                      num(r.thrust_between().standard_error, 2), paper, experiment, per_mm, r.cracks_subsurface_steady,
-                      r.subsurface_steady_depth_um, censored ? " (censored)" : "", r.wall_time_s);
-    // Resolved: both means to max_relative_sem_percent (a NaN standard error, a cut without one, is not).
-    std::vector<std::string> unresolved;
-    for (const auto& [force, rel] : {std::pair<std::string, double>{"main", main_rel}, {"thrust", thrust_rel}})
-      if (!(rel <= max_rel))
-        unresolved.push_back(std::isfinite(rel) ? fmt::format("{} force relative standard error {:.1f} % > {:g} %", force,
-                                                              rel, max_rel)
-                                                : fmt::format("{} force without a standard error (a cut's signal too "
-                                                              "short for batch means)", force));
-    const bool resolved = unresolved.empty();
-    std::string why;
-    for (const auto& u : unresolved) why += (why.empty() ? "" : ", ") + u;
-    const std::string source = fmt::format("{} packing{}, {}", r.n(), r.n() == 1 ? "" : "s",
-                                           r.uses_between() ? "between-packing errors" : "the cuts' own errors");
-    resolution += fmt::format("- {} **{}**: main {:.3g} ± {} N ({} %), thrust {:.3g} ± {} N ({} %); {}{}\n",
-                              resolved ? "RESOLVED" : "NOT RESOLVED", c.name, main.value, num(main.standard_error, 2),
-                              num(main_rel, 2), thrust.value, num(thrust.standard_error, 2), num(thrust_rel, 2), source,
-                              resolved ? "" : ": " + why);
-    if (!resolved) failures.push_back(fmt::format("{} NOT RESOLVED: {}", c.name, why));
-    conditions.push_back(Json{{"condition", c.name},
-                              {"surface", c.surface},
-                              {"groove_shape", c.groove_shape},
-                              {"depth_of_cut_mm", c.depth_of_cut_mm},
-                              {"replicates", r.n()},
-                              {"standard_error_from", r.uses_between() ? "between_packings" : "within_cuts"},
-                              {"main_force_N", main.value},
-                              {"main_force_sem_N", finite_or_null(main.standard_error)},
-                              {"main_force_between_packings_sem_N", finite_or_null(r.main_between().standard_error)},
-                              {"main_force_relative_sem_percent", finite_or_null(main_rel)},
-                              {"thrust_force_N", thrust.value},
-                              {"thrust_force_sem_N", finite_or_null(thrust.standard_error)},
-                              {"thrust_force_between_packings_sem_N", finite_or_null(r.thrust_between().standard_error)},
-                              {"thrust_force_relative_sem_percent", finite_or_null(thrust_rel)},
-                              {"resolved", resolved}});
-    damage.push_back(Json{{"condition", c.name},
-                          {"cracks_subsurface_steady", r.cracks_subsurface_steady},
-                          {"subsurface_damage_depth_steady_um", r.subsurface_steady_depth_um},
-                          {"damage_depth_limit_um", finite_or_null(r.damage_depth_limit_um)},
-                          {"censored_replicates", r.damage_censored_replicates},
-                          {"censored", censored}});
-  }
-  md += fmt::format(
-      "\n± is the standard error of the mean from the cuts' own force signals (in brackets: relative to the mean), "
-      "or, marked *, from the spread between the packings; "
-      "between packings: sample std / sqrt(n) over the packings (— for one packing). Under the steady cut: the "
-      "subsurface cracks below the surface machined during the steady part of the travel and the deepest of them; "
-      "(censored): an active window sees cracks only down to its floor, and the deepest crack is within a disk "
-      "diameter of it, so the damage may go deeper.\n\n"
-      "## Acceptance\n\n"
-      "Acceptance is statistical: each trend either agrees with the experiments' within its 95 % interval, or the "
-      "report shows, resolved, that it does not. What fails the validation is a mean that is not resolved: every "
-      "condition's mean main and thrust force must have a relative standard error of at most {:g} % (else run more "
-      "travel or `--replicates N` packings){}. Whether the trends agree with the experiments is the finding, reported "
-      "below and in summary.json, not the exit status.\n\n",
-      max_rel,
-      from > 0 ? fmt::format("; the standard error is the cuts' own below {} packings and the spread between "
-                             "the packings from {} on (`acceptance.between_packings_from_replicates`: the batch-means "
-                             "error of one cut is conservative for the main force, docs/performance.md)",
-                             from, from)
-               : "");
-  md += "### Resolution of the means\n\n" + resolution;
-
-  Json checks = Json::array();
-  if (spec.trends) {
-    md += fmt::format(
-        "\n### Trends\n\n"
-        "Each trend is a ratio of two condition means, its standard error propagated to first order (delta method: "
-        "ratio × hypot of the two relative standard errors), its 95 % interval value ± q standard errors: q = {:g} "
-        "for the cuts' own errors, Student's t quantile where a between-packing error enters, with Welch-"
-        "Satterthwaite's degrees of freedom (given as df). Beside "
-        "it the same ratio of the experiments' means (Table 6; a ratio of two forces on the same 25.4 mm width does "
-        "not depend on the width) and of the paper's DEM (Table 4). AGREES: the experiment's value inside the 95 % "
-        "interval; DISAGREES: outside it, a resolved disagreement, by the number of standard errors given; REPORTED: "
-        "no experiment to compare.\n\n", kZ95);
-    const auto trend = [&](const std::string& id, const std::string& what, const Estimate& num_est,
-                           const Estimate& den_est, const Estimate& num_between, const Estimate& den_between,
-                           std::optional<double> experiment, std::optional<double> paper_dem) {
-      TrendCheck t = trend_check(id, what, num_est, den_est, num_between, den_between, experiment, paper_dem);
-      checks.push_back(t.row);
-      md += t.line;
-    };
-    seed000_trends(results, vs_experiment, vs_dem, trend);
-  }
-
-  // The damage under the steady cut: reported, no experiment to compare (the paper describes it, Table 6 does
-  // not measure it). Differences grooved - regular, with the between-packing standard error where there is one.
-  md += "\n## Subsurface damage under the steady cut (reported)\n\n";
-  Json damage_trends = Json::array();
-  bool any_censored = false;
-  for (const auto& c : spec.conditions) any_censored = any_censored || results.at(c.name).damage_censored_replicates > 0;
-  for (const std::string shape : {"rectangular", "trapezoidal"})
-    for (double depth : {0.1, 0.2}) {
-      const ConditionResult *regular = find_condition(results, "none", depth), *grooved = find_condition(results, shape, depth);
-      if (!regular || !grooved) continue;
-      const double ng = std::sqrt(grooved->n()), nr = std::sqrt(regular->n());
-      const double depth_change = grooved->subsurface_steady_depth_um - regular->subsurface_steady_depth_um;
-      const double depth_se =
-          std::hypot(grooved->subsurface_steady_depth_std_um / ng, regular->subsurface_steady_depth_std_um / nr);
-      const double cracks_change = grooved->cracks_subsurface_steady - regular->cracks_subsurface_steady;
-      const double cracks_se =
-          std::hypot(grooved->cracks_subsurface_steady_std / ng, regular->cracks_subsurface_steady_std / nr);
-      const bool censored = grooved->damage_censored_replicates > 0 || regular->damage_censored_replicates > 0;
-      md += fmt::format(
-          "- {} mm, {} grooves vs regular: {:.0f} vs {:.0f} subsurface cracks ({:+.0f}{}), deepest {:.0f} vs {:.0f} um "
-          "({:+.0f} um{}){}.\n",
-          depth, shape, grooved->cracks_subsurface_steady, regular->cracks_subsurface_steady, cracks_change,
-          std::isfinite(cracks_se) ? fmt::format(" ± {:.0f}", cracks_se) : "", grooved->subsurface_steady_depth_um,
-          regular->subsurface_steady_depth_um, depth_change,
-          std::isfinite(depth_se) ? fmt::format(" ± {:.0f}", depth_se) : "",
-          censored ? "; censored by the active window: the depths are lower bounds and their difference is not a finding"
-                   : "");
-      damage_trends.push_back(Json{{"depth_of_cut_mm", depth},
-                                   {"groove_shape", shape},
-                                   {"cracks_subsurface_steady_change", cracks_change},
-                                   {"cracks_subsurface_steady_change_standard_error", finite_or_null(cracks_se)},
-                                   {"subsurface_damage_depth_steady_change_um", depth_change},
-                                   {"subsurface_damage_depth_steady_change_standard_error_um", finite_or_null(depth_se)},
-                                   {"censored", censored}});
-    }
-  if (any_censored)
-    md += "\nThe steady damage depth of at least one condition reaches the active window's floor "
-          "(`active_window.damage_depth_limit_um` in the cut's summary.json; `damage_depth_limit_um` and "
-          "`subsurface_damage_depth_steady_censored` in kerf_dem_replicates.csv): it is censored, a lower bound. A "
-          "window as deep as the damage (`active_window.below_depths`) measures it.\n";
-  summary = Json{{"statistics", "within_cuts"},
-                 {"replicates", spec.adaptive ? adaptive_json(*spec.adaptive) : Json(n)},
-                 {"between_packings_from_replicates", from > 0 ? Json(from) : Json()},
-                 {"max_relative_sem_percent", max_rel},
-                 {"conditions", conditions},
-                 {"checks", checks},
-                 {"damage", Json{{"conditions", damage}, {"grooved_vs_regular", damage_trends}, {"censored", any_censored}}}};
-  return md;
 }
 
 /// The seed case's statistics (validation/soda_lime_cutting/README.md), a reproduction of the paper's method: what
@@ -774,9 +433,8 @@ std::string replicates_report(const Spec& spec, const std::map<std::string, Cond
   std::map<std::string, std::vector<std::string>> by_verdict;
   seed000_trends(results, vs_experiment, vs_dem,
                  [&](const std::string& id, const std::string& what, const Estimate& a, const Estimate& b,
-                     const Estimate& a_between, const Estimate& b_between, std::optional<double> experiment,
-                     std::optional<double> paper_dem) {
-                   TrendCheck t = trend_check(id, what, a, b, a_between, b_between, experiment, paper_dem);
+                     std::optional<double> experiment, std::optional<double> paper_dem) {
+                   TrendCheck t = trend_check(id, what, a, b, experiment, paper_dem);
                    trends.push_back(t.row);
                    md += t.line;
                    by_verdict[t.verdict].push_back(what);
@@ -909,9 +567,9 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
   const fs::path case_dir = data_directory().parent_path() / "validation" / case_name;
   Spec spec = read_spec(case_dir);
   if (replicates != 0) {
-    if (replicates < spec.min_replicates() || replicates > kMaxReplicates)
+    if (replicates < kMinReplicates || replicates > kMaxReplicates)
       throw InputError("--replicates", std::to_string(replicates),
-                       fmt::format("a number of packings from {} to {}", spec.min_replicates(), kMaxReplicates));
+                       fmt::format("a number of packings from {} to {}", kMinReplicates, kMaxReplicates));
     spec.replicates = replicates;
   }
   CuttingValidation v;
@@ -922,17 +580,12 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
   Json conditions = Json::array();
   for (const auto& c : spec.conditions)
     conditions.push_back(Json{{"cut.depth_of_cut_mm", c.depth_of_cut_mm}, {"grooves.shape", c.groove_shape}});
-  Json study_replicates{{"policy", "fixed"}, {"count", spec.replicates}};
-  if (spec.adaptive) {
-    study_replicates = adaptive_json(*spec.adaptive);
-    study_replicates["target_relative_sem_percent"] = spec.max_relative_sem_percent;
-  }
   const Json study_doc{
-      {"description", fmt::format("The {} validation's cuts: each condition of validation.json on {}{} packings",
-                                  case_name, spec.adaptive ? "up to " : "", spec.replicates)},
+      {"description", fmt::format("The {} validation's cuts: each condition of validation.json on {} packings",
+                                  case_name, spec.replicates)},
       {"scene", fs::absolute(spec.scene).string()},
       {"conditions", {{"list", conditions}}},
-      {"replicates", study_replicates}};
+      {"replicates", {{"policy", "fixed"}, {"count", spec.replicates}}}};
   const fs::path study_dir = out_dir / "study";
   const dem::StudySpec study = dem::read_study(study_doc, study_dir / "study.json");
   fs::create_directories(study_dir);
@@ -949,39 +602,26 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
   for (std::size_t ci = 0; ci < spec.conditions.size(); ++ci) {
     std::vector<Json> items;
     std::vector<fs::path> directories;
-    // The condition's packings: fixed, or as many as the adaptive rule decided.
     const int count = outcome.summary.at("conditions").at(ci).at("count").get<int>();
     for (int k = 0; k < count; ++k) {
       const dem::StudyItem item = dem::study_item(study, static_cast<int>(ci), k);
       items.push_back(dem::read_study_item_summary(study_dir, item));
       directories.push_back(fs::path("study") / "items" / dem::study_item_name(item));
     }
-    ConditionResult& r = results[spec.conditions[ci].name] =
-        collect(spec.conditions[ci], items, spec.statistics == Statistics::within_cuts,
-                spec.between_packings_from_replicates);
+    ConditionResult& r = results[spec.conditions[ci].name] = collect(spec.conditions[ci], items);
     r.directories = std::move(directories);
   }
 
   // 2. The kerf-dem table: one row per replicate, and the means that the report layer compares. Trapezoidal
-  // grooves go beyond the paper (no measured counterpart): their rows carry their own source. within_cuts
-  // appends the cuts' own standard errors (and the window's censoring of the damage depth) to both tables.
-  const bool within_cuts = spec.statistics == Statistics::within_cuts;
+  // grooves go beyond the paper (no measured counterpart): their rows carry their own source.
   std::vector<std::string> header{"source", "surface", "groove_shape", "depth_of_cut_mm", "replicate", "seed"};
   header.insert(header.end(), kReplicateColumns.begin(), kReplicateColumns.end());
-  if (within_cuts) header.insert(header.end(), kWithinCutColumns.begin(), kWithinCutColumns.end());
   std::string rows = csv_line(header);
-  std::vector<std::string> means_header{
-      "source", "surface", "groove_shape", "depth_of_cut_mm", "width_mm", "main_force_N",
-      "main_force_replicate_std_N", "thrust_force_N", "thrust_force_replicate_std_N", "cracks_tensile",
-      "cracks_shear", "cracks_chip", "cracks_subsurface", "subsurface_damage_depth_um",
-      "cracks_subsurface_steady", "subsurface_damage_depth_steady_um"};
-  if (within_cuts)
-    // main_force_sem_N: sqrt(sum sem_k^2) / n of the cuts' own; *_between_packings_sem_N: std / sqrt(n) (n >= 2).
-    means_header.insert(means_header.end(),
-                        {"main_force_sem_N", "thrust_force_sem_N", "main_force_between_packings_sem_N",
-                         "thrust_force_between_packings_sem_N", "damage_depth_limit_um",
-                         "subsurface_damage_depth_steady_censored_replicates"});
-  std::string means = csv_line(means_header);
+  std::string means = csv_line({"source", "surface", "groove_shape", "depth_of_cut_mm", "width_mm", "main_force_N",
+                                "main_force_replicate_std_N", "thrust_force_N", "thrust_force_replicate_std_N",
+                                "cracks_tensile", "cracks_shear", "cracks_chip", "cracks_subsurface",
+                                "subsurface_damage_depth_um", "cracks_subsurface_steady",
+                                "subsurface_damage_depth_steady_um"});
   for (const auto& c : spec.conditions) {
     const ConditionResult& r = results.at(c.name);
     const std::string source = c.groove_shape == "trapezoidal" ? "kerf_dem_trapezoidal" : "kerf_dem";
@@ -993,22 +633,13 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
                                       std::to_string(row.at("replicate").get<int>()),
                                       std::to_string(row.at("seed").get<long long>())};
       for (const auto& column : kReplicateColumns) fields.push_back(csv_number(row.at(column)));
-      if (within_cuts)
-        for (const auto& column : kWithinCutColumns) fields.push_back(csv_field(row.at(column)));
       rows += csv_line(fields);
     }
-    std::vector<std::string> mean_fields{
-        source, c.surface, c.groove_shape, csv_number(c.depth_of_cut_mm), csv_number(r.width_mm),
-        csv_number(r.main_n), csv_number(r.main_std_n), csv_number(r.thrust_n),
-        csv_number(r.thrust_std_n), csv_number(r.cracks_tensile), csv_number(r.cracks_shear),
-        csv_number(r.cracks_chip), csv_number(r.cracks_subsurface), csv_number(r.subsurface_depth_um),
-        csv_number(r.cracks_subsurface_steady), csv_number(r.subsurface_steady_depth_um)};
-    if (within_cuts)
-      mean_fields.insert(mean_fields.end(),
-                         {csv_number(r.main_sem_within_n), csv_number(r.thrust_sem_within_n),
-                          csv_number(r.main_between().standard_error), csv_number(r.thrust_between().standard_error),
-                          csv_number(r.damage_depth_limit_um), std::to_string(r.damage_censored_replicates)});
-    means += csv_line(mean_fields);
+    means += csv_line({source, c.surface, c.groove_shape, csv_number(c.depth_of_cut_mm), csv_number(r.width_mm),
+                       csv_number(r.main_n), csv_number(r.main_std_n), csv_number(r.thrust_n),
+                       csv_number(r.thrust_std_n), csv_number(r.cracks_tensile), csv_number(r.cracks_shear),
+                       csv_number(r.cracks_chip), csv_number(r.cracks_subsurface), csv_number(r.subsurface_depth_um),
+                       csv_number(r.cracks_subsurface_steady), csv_number(r.subsurface_steady_depth_um)});
   }
   write_file_atomically(out_dir / "kerf_dem_replicates.csv", rows);
   write_file_atomically(out_dir / "kerf_dem_means.csv", means);
@@ -1031,17 +662,10 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
   const Comparison& vs_experiment = comparisons.at("vs_experiment");
   const Comparison& vs_dem = comparisons.at("vs_paper_dem");
 
-  // 4. Acceptance and the expected physics.
-  // within_cuts: the conditions' resolution and the trends (within_cuts_report); otherwise the bands.
-  std::string md;
+  // 4. The trends, the bands where there are, and the expected physics.
   Json summary_doc;
-  if (within_cuts) {
-    md = "# Validation: soda-lime glass, orthogonal cutting, steady state (seed 000)\n\n";
-    md += within_cuts_report(spec, results, vs_experiment, vs_dem, v.failures, summary_doc);
-  } else {
-    md = "# Validation: soda-lime glass, orthogonal cutting (seed 000)\n\n";
-    md += replicates_report(spec, results, vs_experiment, vs_dem, v.failures, summary_doc);
-  }
+  std::string md = "# Validation: soda-lime glass, orthogonal cutting (seed 000)\n\n" +
+                   replicates_report(spec, results, vs_experiment, vs_dem, v.failures, summary_doc);
   md += "\nReports through the report layer: [vs_experiment/report.md](vs_experiment/report.md) (the paper's direct "
         "comparison and the per-unit-width one), [vs_paper_dem/report.md](vs_paper_dem/report.md). Per-replicate "
         "results: `kerf_dem_replicates.csv`; each run's forces, cracks and picture: "
@@ -1055,7 +679,7 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
     fs::copy_file(picture, out_dir / fmt::format("snapshot_{}.png", name), fs::copy_options::overwrite_existing);
     md += fmt::format("\n![{}, replicate 1](snapshot_{}.png)\n", name, name);
   }
-  v.judged = within_cuts || spec.bands;
+  v.judged = spec.bands;
   md += v.judged ? fmt::format("\n**{}**\n", v.failures.empty() ? "PASSED" : "FAILED")
                  : std::string("\n**REPORTED** (a reproduction: no pass or fail)\n");
   write_file_atomically(out_dir / "report.md", md);

@@ -10,7 +10,7 @@
 namespace kerf {
 
 struct CuttingValidation {
-  std::vector<std::string> failures;         ///< one line per missed band (within_cuts: unresolved mean); empty when passed
+  std::vector<std::string> failures;         ///< one line per missed band; empty when passed
   std::vector<std::filesystem::path> files;  ///< the files written
   /// false: a reproduction of the paper's method (validation.json without bands), reported without pass or fail.
   bool judged = true;
@@ -19,11 +19,9 @@ struct CuttingValidation {
 
 /// Runs every condition of validation/<case_name>/validation.json with the DEM library (kerf/dem/scene.hpp,
 /// as kerf-dem run --replicates does; finished replicates are reused), then writes the tables, the two comparison reports and report.md/summary.json
-/// into `out_dir`. Cases: soda_lime_cutting (the Table-2-calibrated glass), soda_lime_cutting_cut_fitted
-/// (the glass whose bond strengths were fitted to one cut by kerf-dem calibrate_cut) and soda_lime_cutting_steady
-/// (validation.json "statistics": "within_cuts": one long steady cut per condition, standard errors from the
-/// cuts' own force signals, trends against the experiments; a failure is a condition mean not resolved).
-/// `replicates` (2-100; 1-100 under within_cuts) overrides validation.json's packings per condition; 0 keeps it.
+/// into `out_dir`. Cases: soda_lime_cutting (the Table-2-calibrated glass, a reproduction) and
+/// soda_lime_cutting_cut_fitted (the glass whose bond strengths were fitted to one cut by kerf-dem calibrate_cut,
+/// with bands). `replicates` (2-100) overrides validation.json's packings per condition; 0 keeps it.
 CuttingValidation run_soda_lime_cutting_validation(const std::filesystem::path& out_dir,
                                                    const std::string& case_name = "soda_lime_cutting",
                                                    int replicates = 0);

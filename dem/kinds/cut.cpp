@@ -118,8 +118,11 @@ Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& d
                                     {"chip_particles_removed", res.window.chips.particles},
                                     {"chip_mass_removed_kg", res.window.chips.mass_kg},
                                     {"chip_cracks_removed", res.window.chips.cracks},
-                                    // Cracks are found only inside the window: a damage depth near this is censored.
-                                    {"damage_depth_limit_um", units::m_to_um(window_box_m(cut).below_m)}};
+                                    // Cracks are found only inside the window and above the workpiece's bottom
+                                    // (a window may reach below it): a damage depth near this is censored.
+                                    {"damage_depth_limit_um",
+                                     units::m_to_um(std::min(window_box_m(cut).below_m,
+                                                             res.y_cut_m - res.workpiece_box_m[2]))}};
   }
   write_file_atomically(out / "forces.csv", cut_forces_csv(res));
   write_file_atomically(out / "cracks.csv", cracks_csv(run.cracks(), res.y_cut_m));

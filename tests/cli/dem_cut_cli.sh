@@ -35,7 +35,7 @@ for f in summary.json forces.csv cracks.csv result.pvd frame_0000.vtp cracks_000
 done
 # The bundled steady-state scene, shrunk: its active window runs and is reported.
 "$bin" run "$src/data/scenes/dem_cut_steady.json" "${small[@]}" --set specimen.width_mm=0.8 --set cut.length_mm=0.3 \
-    --set cut.window_mm=0.1 --set cut.entry_fraction=0.25 --out "$work/steady" --threads 1 >/dev/null 2>"$work/err" ||
+    --set cut.window_mm=0.1 --set cut.entry_fraction=0.25 --set active_window.below_depths=6 --out "$work/steady" --threads 1 >/dev/null 2>"$work/err" ||
   fail "steady scene: $(cat "$work/err")"
 python3 - "$work/steady/summary.json" <<'PY' || fail "steady scene: no active window in the summary"
 import json, sys
@@ -43,6 +43,13 @@ s = json.load(open(sys.argv[1]))
 w = s["active_window"]
 assert s["cut"]["active_window"]["enabled"] is True
 assert w["rebuilds"] >= 20 and 0 < w["mean_window_particles"] < s["n_particles"], w
+# The window reaches below this 0.25 mm workpiece (6 depths of 0.05 mm under a cut line 0.2 mm up): the damage is
+# censored by the workpiece's bottom, not by the window's floor, and the limit says so.
+r, cut_line_um = s["results"], 1000 * s["results"]["cut_line_y_mm"]
+floor_um = 1000 * s["cut"]["active_window"]["below_depths"] * s["cut"]["cut"]["depth_of_cut_mm"]
+assert cut_line_um < floor_um, (cut_line_um, floor_um)
+assert abs(w["damage_depth_limit_um"] - cut_line_um) <= s["specimen"]["radius_max_um"], w
+assert r["subsurface_damage_depth_um"] <= w["damage_depth_limit_um"], (r, w)
 PY
 head -1 "$work/c1/forces.csv" | grep -qx "tool_travel_mm,time_s,main_force_N,thrust_force_N" || fail "forces.csv header"
 head -1 "$work/c1/cracks.csv" | grep -qx "time_s,x_mm,y_mm,orientation_deg,length_um,mode,bond,element,place" || fail "cracks.csv header"

@@ -53,11 +53,12 @@ def write_record(path, means, n=8, spread=0.02, seed=3):
     with open(path, "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(["condition", "domain", "surface", "depth_of_cut_mm", "seed", "main_force_N", "thrust_force_N",
-                    "width_mm", "subsurface_damage_depth_steady_um", "scene_fnv1a64"])
+                    "width_mm", "subsurface_damage_depth_steady_um", "cracks_subsurface_steady", "scene_fnv1a64"])
         for c, ((domain, surface, depth), m) in enumerate(means.items()):
             for k in range(n):
                 v = m * (1 + rng.gauss(0, spread))
-                w.writerow([c + 1, domain, surface, depth, k + 1, v, 0.8 * v, 1, 100 * v, f"{c:08x}{k:08x}"])
+                w.writerow([c + 1, domain, surface, depth, k + 1, v, 0.8 * v, 1, 100 * v, 10000 * v,
+                            f"{c:08x}{k:08x}"])
 
 
 def write_experiments(path, regular, grooved):
@@ -121,7 +122,7 @@ def test_domain_robustness_detects_a_domain_that_moves_a_trend(tmp_path):
     assert math.isclose(level["value"], 0.65, rel_tol=1e-9)  # per mm of the experiments' 25.4 mm width
 
 
-def full_record(tmp_path, kerf_grooved, n):
+def full_record(tmp_path, kerf_grooved, n=8):
     """Every condition the acceptance needs, in both domains, with n packings each."""
     means = {}
     for domain in st.DOMAINS:
@@ -164,8 +165,48 @@ def test_report_is_not_resolved_with_one_packing_or_a_missing_domain(tmp_path):
     assert "(kerf large): no cuts" in (tmp_path / "out" / "report.md").read_text()
 
 
+def test_acceptance_asks_a_domain_only_for_the_trends_the_study_runs_there(tmp_path):
+    # The study runs trapezoidal grooves in the default window only: a record of its ten conditions resolves.
+    full_record(tmp_path, 0.15)
+    rows = list(csv.DictReader(open(tmp_path / "record.csv")))
+    with open(tmp_path / "record.csv", "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(rows[0]))
+        w.writeheader()
+        w.writerows(r for r in rows if not (r["domain"] == "large" and r["surface"] == "trapezoidal"))
+    args = [str(tmp_path / "record.csv"), "--experiments", str(tmp_path / "experiments.csv"),
+            "--out", str(tmp_path / "out"), "--report"]
+    assert st.main(args) == 0
+    # Without the study (every domain expected everywhere) the large window's trapezoidal trends are missing.
+    assert st.main(args + ["--study", str(tmp_path / "no-study.json")]) == 1
+    assert "trapezoidal / regular at 0.1 mm (kerf large): no cuts" in (tmp_path / "out" / "report.md").read_text()
+
+
 def test_t_quantile_beyond_the_table_falls_towards_the_normal():
     # Tabulated 2.042 at 30 degrees of freedom; 2.0211 at 40, 2.0003 at 60, 1.9799 at 120 (standard tables).
     assert st.t(30) > st.t(31) > st.t(40) > 1.96
     for dof, want in ((40, 2.0211), (60, 2.0003), (120, 1.9799)):
         assert math.isclose(st.t(dof), want, abs_tol=2e-4)
+
+
+def test_damage_floors_are_the_nearer_of_the_window_floor_and_the_workpiece_bottom():
+    # The study's scene is 1 mm high; the default window sees 4 depths of cut below the cut line, the large one
+    # 10 (0.1 mm) or 5 (0.2 mm) depths, which reach below the workpiece: its bottom is 1 mm - depth below.
+    floors = st.damage_floors(st.STUDY)
+    assert math.isclose(floors[("default", "regular", 0.1)][0], 400)
+    assert math.isclose(floors[("default", "rectangular", 0.2)][0], 800)
+    assert math.isclose(floors[("large", "regular", 0.1)][0], 900)
+    assert math.isclose(floors[("large", "rectangular", 0.2)][0], 800)
+    assert all(math.isclose(d, 26) for _, d in floors.values())
+    assert st.damage_floors(pathlib.Path("no/such/study.json")) == {}
+
+
+def test_report_marks_a_damage_depth_at_the_floor_censored():
+    cuts = {("large", "regular", 0.1): {1: {"subsurface_damage_depth_steady_um": 885.0},
+                                          2: {"subsurface_damage_depth_steady_um": 500.0}}}
+    lines = st.damage_section(cuts, {("large", "regular", 0.1): (900.0, 26.0)})
+    row = next(line for line in lines if line.startswith("| large | regular"))
+    assert row.endswith("| 900 | 1 of 2 |")
+    assert not any("Every cut's damage reaches it" in line for line in lines)
+    cuts[("large", "regular", 0.1)][2]["subsurface_damage_depth_steady_um"] = 880.0
+    assert any("Every cut's damage reaches it" in line for line in st.damage_section(
+        cuts, {("large", "regular", 0.1): (900.0, 26.0)}))
