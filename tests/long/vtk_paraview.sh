@@ -19,11 +19,23 @@ small=(--set specimen.width_mm=0.4 --set specimen.height_mm=0.25 --set specimen.
        --set output.frame_every_samples=40 --set cut.speed_m_per_s=2)
 "$bin" run "$scene" "${small[@]}" --threads "${KERF_LONG_THREADS:-1}" --out "$work/c" >/dev/null 2>"$work/err" ||
   fail "cut run: $(cat "$work/err")"
-xvfb-run -a -s "-screen 0 1920x1080x24" pvpython "$src/tools/paraview/render_frames.py" "$work/c" "$work/frames.png" >"$work/pv.out" 2>&1 ||
-  fail "pvpython: $(tail -20 "$work/pv.out")"
+# A 24-bit screen (the default 8 bits has no OpenGL visual). On a loaded machine pvpython sometimes meets a
+# virtual X server not ready yet ("bad X server connection"): that alone is tried again, twice.
+for attempt in 1 2 3; do
+  xvfb-run -a -s "-screen 0 1920x1080x24" pvpython "$src/tools/paraview/render_frames.py" "$work/c" "$work/frames.png" \
+    >"$work/pv.out" 2>&1 && break
+  grep -q "bad X server connection" "$work/pv.out" && [ $attempt -lt 3 ] ||
+    fail "pvpython: $(grep -v '^ *[0-9]* *0x' "$work/pv.out" | tail -20)"
+  echo "pvpython could not connect to the virtual X server (attempt $attempt): again" >&2
+done
 [ -s "$work/frames.png" ] || fail "pvpython wrote no picture: $(tail -20 "$work/pv.out")"
 [ -z "${KERF_PARAVIEW_PNG:-}" ] || cp "$work/frames.png" "$KERF_PARAVIEW_PNG"
-python3 - "$work/frames.png" <<'PY' || fail "the ParaView picture is blank or flat (above)"
+python=""
+for candidate in python3 /usr/bin/python3; do
+  "$candidate" -c "import numpy, matplotlib" 2>/dev/null && { python="$candidate"; break; }
+done
+[ -n "$python" ] || fail "no Python 3 with numpy and matplotlib (Debian: python3-numpy python3-matplotlib)"
+"$python" - "$work/frames.png" <<'PY' || fail "the ParaView picture is blank or flat (above)"
 import sys
 import numpy as np
 import matplotlib.image
