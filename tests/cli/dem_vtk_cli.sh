@@ -4,7 +4,7 @@
 # own part (walls_NNNN.vtp); the crack events as points equal to cracks.csv; result.pvd listing the three
 # parts of every frame by name; positions in mm like the CSVs (issue 40 item 9:) each disk's displacement_m since
 # the first frame and its broken_joints, each crack's place as in cracks.csv, a PNG per frame with
-# output.frame_png.
+# output.frame_png; in a windowed cut, id the workpiece index and displacements that follow each disk across frames.
 # Usage: dem_vtk_cli.sh <dir of built programs> <source dir>
 source "$(dirname "$0")/lib/dem_common.sh" "$@"
 
@@ -128,5 +128,44 @@ for d in sets:
         png = f"{out}/{d.get('file')[:-4]}.png"
         assert open(png, "rb").read(8) == b"\x89PNG\r\n\x1a\n", png
 print("vtk frames: ok")
+PY
+# A windowed cut (active window, rebuilt as the tool travels): each frame's disks are the running window's,
+# `id` their index in the workpiece; displacements follow each disk across frames (also one that entered the
+# window after the first frame: the workpiece's reference holds every disk).
+"$bin" run "$scene" "${small[@]/specimen.width_mm=0.4/specimen.width_mm=0.8}" --set cut.length_mm=0.15 \
+    --set active_window.enabled=true --set output.frame_png=false --threads 1 --out "$work/w" >/dev/null 2>"$work/err" ||
+  fail "windowed cut run: $(cat "$work/err")"
+"$python" - "$work/w" <<'PY' || fail "the windowed cut's frames (above)"
+import json, sys, xml.etree.ElementTree as ET
+import numpy as np
+import vtk
+from vtk.util.numpy_support import vtk_to_numpy as np_of
+
+out = sys.argv[1]
+assert json.load(open(f"{out}/summary.json"))["active_window"]["rebuilds"] >= 2
+files = sorted(d.get("file") for d in ET.parse(f"{out}/result.pvd").getroot().findall("./Collection/DataSet")
+               if d.get("part") == "0")
+frames = []
+for name in files:
+    r = vtk.vtkXMLPolyDataReader()
+    r.SetFileName(f"{out}/{name}")
+    r.Update()
+    pd = r.GetOutput().GetPointData()
+    ids = np_of(pd.GetArray("id"))
+    assert len(np.unique(ids)) == len(ids), name
+    frames.append({int(i): (xy, d) for i, xy, d in zip(ids, np_of(r.GetOutput().GetPoints().GetData()),
+                                                       np_of(pd.GetArray("displacement_m")))})
+assert all((d == 0).all() for _, d in frames[0].values())
+entered = 0
+for k, frame in enumerate(frames[1:], 1):
+    for i, (xy, d) in frame.items():
+        assert np.isfinite(d).all(), (files[k], i)
+        for j in (0, k - 1):  # against the first frame and the one before
+            if i in frames[j]:
+                xy_j, d_j = frames[j][i]
+                assert np.abs((d - d_j) - (xy - xy_j) / 1000).max() <= 1e-15, (files[k], i, j)
+        entered += i not in frames[0]
+assert entered > 0, "no disk entered the window after the first frame"
+print("windowed frames: ok")
 PY
 echo "dem vtk: ok"
