@@ -24,7 +24,7 @@ namespace kerf::dem {
 /// What a particle frame shows beside the simulation's own state, one entry per disk of `sim` (both empty: the
 /// disk's index in `sim` and no displacement array).
 struct FrameDiskArrays {
-  std::vector<std::int64_t> id;          ///< the disk's index in the run's workpiece (a windowed cut's window)
+  std::vector<std::int64_t> id;          ///< the disk's index in the run's workpiece (a windowed cut: not in its window)
   std::vector<double> displacement_m;    ///< x, y per disk: since the run's first frame (NaN: not known)
 };
 /// Disks (point data: id, the disk's index, the same in every frame of a run; radius_mm, velocity_m_per_s,
