@@ -3,10 +3,16 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <map>
+#include <mutex>
+#include <span>
+#include <tuple>
 
 #include "kerf/analytic/critical_depth.hpp"
 #include "kerf/analytic/registry.hpp"
+#include "kerf/analytic/trepanning_scene.hpp"
 #include "kerf/error.hpp"
+#include "kerf/field_table.hpp"
 #include "kerf/units.hpp"
 
 namespace kerf {
@@ -33,87 +39,358 @@ std::shared_ptr<const MaterialRecord> MaterialCache::share(const Json& spec, con
 
 namespace {
 
-std::vector<std::string> read_name_list(ObjectReader& reader, const std::string& key,
-                                        const std::vector<std::string>& valid, std::vector<std::string> fallback) {
-  const Json* value = reader.find(key);
-  if (!value) return fallback;
-  const std::string path = reader.key_path(key);
-  if (value->is_string()) return {value->get<std::string>()};
-  if (!value->is_array()) throw InputError(path, json_value_text(*value), "a list of names");
-  std::vector<std::string> names;
-  for (const auto& item : *value) {
-    const std::string text = item.is_string() ? item.get<std::string>() : json_value_text(item);
-    if (!item.is_string()) throw InputError(path, text, describe_choices(text, valid));
-    names.push_back(text);
+/// A number field whose SI value is reached through `at` (a member of a member): `[](auto& s) -> auto& {...}`.
+template <class S, class At>
+NumberField<S> number_at(std::string_view key, FieldUnit unit, Range range, std::string_view doc, At at,
+                         bool required = false) {
+  return {key, unit, range, doc, [at](const S& s) { return at(s); }, [at](S& s, double v) { at(s) = v; }, required, {}, {}};
+}
+
+/// A choice whose names map to an enum through `parse` (nullopt: a name the field handles by itself), the enum
+/// reached through `at`: the registry's names, the quadrature rules. The order of the names changes nothing.
+template <class S, class E, class At>
+ChoiceField<S> mapped_choice(std::string_view key, std::span<const std::string_view> names, std::string_view doc, At at,
+                             std::optional<E> (*parse)(std::string_view)) {
+  return {key, names, doc,
+          [=](const S& s) {
+            for (std::size_t k = 0; k < names.size(); ++k)
+              if (parse(names[k]) == at(s)) return static_cast<int>(k);
+            return 0;
+          },
+          [=](S& s, int k) { at(s) = *parse(names[static_cast<std::size_t>(k)]); }};
+}
+
+/// The names a registry kind holds, as the field tables keep them (views of the registry's lines).
+std::span<const std::string_view> registry_names(std::string_view kind) {
+  static std::mutex mutex;
+  static std::map<std::string, std::vector<std::string_view>, std::less<>> by_kind;
+  std::lock_guard lock(mutex);
+  auto it = by_kind.find(kind);
+  if (it == by_kind.end()) {
+    std::vector<std::string_view> names;
+    for (const auto& m : analytic_models())
+      if (m.kind == kind) names.push_back(m.name);
+    it = by_kind.emplace(std::string(kind), std::move(names)).first;
   }
+  return it->second;
+}
+
+/// The enum value a registry line of `Kind` constructs.
+template <class E>
+std::optional<E> registered(std::string_view kind, std::string_view name) {
+  const auto id = registered_id(analytic_models(), kind, name);
+  return id ? std::optional<E>(static_cast<E>(*id)) : std::nullopt;
+}
+
+template <class E, const char* Kind>
+std::optional<E> registered_as(std::string_view name) {
+  return registered<E>(Kind, name);
+}
+
+constexpr char kDeformation[] = "deformation", kShearAngle[] = "shear_angle", kClosure[] = "friction_closure",
+               kLowerLimit[] = "lower_limit", kPloughing[] = "ploughing";
+
+template <class E, const char* Kind, class At>
+ChoiceField<AnalyticScene> model_choice(std::string_view doc, At at) {
+  return mapped_choice<AnalyticScene, E>(Kind, registry_names(Kind), doc, at, &registered_as<E, Kind>);
+}
+
+std::optional<QuadratureRule> quadrature_rule(std::string_view name) { return quadrature_rule_from_name(name); }
+
+std::span<const std::string_view> quadrature_names() {
+  static const std::vector<std::string_view> names(quadrature_rule_names().begin(), quadrature_rule_names().end());
   return names;
 }
 
-std::vector<ContactLengthRequest> parse_contact_lengths(ObjectReader& models) {
-  const auto base = analytic_model_names("contact_length");
-  std::vector<std::string> valid;
-  for (const auto& b : base) {
-    valid.push_back(b);
-    valid.push_back(b + "_mep");
-    valid.push_back(b + "_mssp");
-  }
-  const std::string default_angle = models.get_choice_or("contact_shear_angle", "mep", {"mep", "mssp"});
-  std::vector<ContactLengthRequest> out;
-  for (const auto& name : read_name_list(models, "contact_length", valid, {})) {
-    if (std::find(valid.begin(), valid.end(), name) == valid.end()) {
-      throw InputError(models.key_path("contact_length"), name, describe_choices(name, valid));
-    }
-    ContactLengthRequest request;
-    std::string model_name = name, angle = default_angle;
-    for (const char* suffix : {"_mep", "_mssp"}) {
-      const std::string s = suffix;
-      if (name.size() > s.size() && name.ends_with(s)) {
-        model_name = name.substr(0, name.size() - s.size());
-        angle = s.substr(1);
-      }
-    }
-    request.model = registered_model<ContactLengthModel>("contact_length", model_name);
-    request.shear_angle = angle == "mep" ? ShearAngleModel::merchant : ShearAngleModel::lee_shaffer;
-    request.column = fmt::format("contact_length_{}_mm", name);
-    for (const auto& existing : out) {
-      if (existing.column == request.column) {
-        throw InputError(models.key_path("contact_length"), name, "each contact-length model named once");
-      }
-    }
-    out.push_back(request);
-  }
-  return out;
+const FieldUnit kUmPerRev{"um/rev", units::um_to_m, units::m_to_um};
+const FieldUnit kMPerMin{"m/min", units::m_per_min_to_m_per_s, units::m_per_s_to_m_per_min};
+
+// ---- tool
+const FieldTable<AnalyticScene>& tool_fields() {
+  static const FieldTable<AnalyticScene> table{
+      required_number_field("rake_deg", units::kDeg, Range::open(-90.0, 90.0), "nominal rake angle", &AnalyticScene::rake_rad),
+      number_field("edge_radius_um", units::kUm, Range::non_negative(), "cutting-edge radius r (0: sharp)",
+                   &AnalyticScene::edge_radius_m),
+      number_field("clearance_deg", units::kDeg, Range::open(0.0, 90.0),
+                   "clearance (relief) angle; recorded, not used by the ductile models", &AnalyticScene::clearance_rad)};
+  return table;
 }
 
-void parse_friction(ObjectReader& cut, ObjectReader& root, AnalyticScene& scene) {
-  const auto angle = cut.get_optional_number("friction_angle_deg", Range::open(-90.0, 90.0), "deg");
-  const auto coefficient = cut.get_optional_number("friction_coefficient", Range::non_negative(), "");
+// ---- cut: the keys as given (friction, deformation state and workpiece temperature are resolved from them)
+struct CutKeys {
+  std::optional<double> uncut_chip_thickness_m, width_m;  ///< required without cut.turning
+  double speed_m_per_s = 0.0;
+  std::optional<double> chip_ratio, friction_factor, friction_angle_rad, friction_coefficient;
+  std::optional<double> strain, strain_rate_per_s, temperature_K, workpiece_temperature_K;
+};
+
+const FieldTable<CutKeys>& cut_fields() {
+  static const FieldTable<CutKeys> table{
+      optional_number_field("uncut_chip_thickness_um", units::kUm, Range::positive(), "uncut chip thickness t0 (orthogonal cut)",
+                            &CutKeys::uncut_chip_thickness_m, "required without `turning`"),
+      optional_number_field("width_mm", units::kMm, Range::positive(), "width of cut; forces are for this width",
+                            &CutKeys::width_m, "required without `turning`"),
+      required_number_field("speed_m_per_min", kMPerMin, Range::positive(), "cutting speed", &CutKeys::speed_m_per_s),
+      optional_number_field("chip_ratio", units::kNone, Range::positive(),
+                            "measured chip ratio r_c = t0 / t_chip (for `models.shear_angle = chip_ratio`)",
+                            &CutKeys::chip_ratio),
+      optional_number_field("friction_factor", units::kSi("(tau/k)"), Range{0.0, 1.0, false, true},
+                            "f = tau / k on the edge, for `models.ploughing = wave`", &CutKeys::friction_factor,
+                            "sin(2 beta) (docs/models.md)"),
+      optional_number_field("friction_angle_deg", units::kDeg, Range::open(-90.0, 90.0),
+                            "mean tool-chip friction angle beta", &CutKeys::friction_angle_rad),
+      optional_number_field("friction_coefficient", units::kNone, Range::non_negative(),
+                            "mu; beta = atan(mu) (give this or the angle, not both)", &CutKeys::friction_coefficient),
+      optional_number_field("strain", units::kNone, Range::non_negative(), "for `models.deformation = given`",
+                            &CutKeys::strain),
+      optional_number_field("strain_rate_per_s", units::kSi("1/s"), Range::non_negative(),
+                            "for `models.deformation = given` (alone, it also feeds `room_temperature`)",
+                            &CutKeys::strain_rate_per_s),
+      optional_number_field("temperature_K", units::kSi("K"), Range::positive(), "for `models.deformation = given`",
+                            &CutKeys::temperature_K),
+      optional_number_field("workpiece_temperature_K", units::kSi("K"), Range::positive(), "workpiece temperature",
+                            &CutKeys::workpiece_temperature_K, "the Johnson-Cook room temperature")};
+  return table;
+}
+
+constexpr std::string_view kTurningThicknessNamesText[] = {"equivalent", "maximum"};
+constexpr EnumNames<TurningThickness> kTurningThicknessNames{kTurningThicknessNamesText};
+
+const FieldTable<TurningScene>& turning_fields() {
+  static const FieldTable<TurningScene> table{
+      number_at<TurningScene>("feed_um_per_rev", kUmPerRev, Range::positive(), "feed per revolution",
+                              [](auto& t) -> auto& { return t.geometry.feed_m_per_rev; }, true),
+      number_at<TurningScene>("nose_radius_mm", units::kMm, Range::positive(), "tool nose radius",
+                              [](auto& t) -> auto& { return t.geometry.nose_radius_m; }, true),
+      number_at<TurningScene>("depth_of_cut_um", units::kUm, Range::positive(), "depth of cut (up to the nose radius)",
+                              [](auto& t) -> auto& { return t.geometry.depth_of_cut_m; }, true),
+      choice_field("chip_thickness", kTurningThicknessNames,
+                   "the chip thickness the models use: area / engaged edge (`equivalent`) or the largest",
+                   &TurningScene::thickness)};
+  return table;
+}
+
+struct MeasuredForces {
+  double cutting_force_N = 0.0, thrust_force_N = 0.0;
+};
+
+const FieldTable<MeasuredForces>& measured_fields() {
+  static const FieldTable<MeasuredForces> table{
+      required_number_field("cutting_force_N", units::kSi("N"), Range::positive(), "measured cutting force",
+                            &MeasuredForces::cutting_force_N),
+      required_number_field("thrust_force_N", units::kSi("N"), Range::any(), "measured thrust force",
+                            &MeasuredForces::thrust_force_N)};
+  return table;
+}
+
+// ---- models
+/// models.force: a registered model, or "auto" (the cheapest valid one, chosen once the scene is read).
+ChoiceField<AnalyticScene> force_field() {
+  const auto names = registry_names("force");
+  return {"force", names,
+          "the force model; `auto` picks the cheapest valid one: `oxley` without friction data, `merchant` when "
+          "r < 5 % of t0, else `liu_li` (the choice and its reason are printed)",
+          [names](const AnalyticScene& s) {
+            for (std::size_t k = 0; k < names.size(); ++k)
+              if (s.force_auto ? names[k] == "auto" : registered<ForceModel>("force", names[k]) == s.force)
+                return static_cast<int>(k);
+            return 0;
+          },
+          [names](AnalyticScene& s, int k) {
+            const std::string_view name = names[static_cast<std::size_t>(k)];
+            s.force_auto = name == "auto";
+            if (s.force_auto) return;
+            const auto model = registered<ForceModel>("force", name);
+            if (!model)
+              throw InputError("models.force", std::string(name),
+                               "an orthogonal-cut model here (trepanning scenes are read by parse_trepanning_scene)");
+            s.force = *model;
+          }};
+}
+
+constexpr std::string_view kContactShearAngleNamesText[] = {"mep", "mssp"};
+constexpr EnumNames<ShearAngleModel> kContactShearAngleNames{kContactShearAngleNamesText};
+
+/// Each contact-length model, alone or suffixed with the shear angle it uses.
+std::span<const std::string_view> contact_length_names() {
+  static const auto names = [] {
+    std::vector<std::string> text;
+    for (const auto& base : registry_names("contact_length"))
+      for (const char* suffix : {"", "_mep", "_mssp"}) text.push_back(std::string(base) + suffix);
+    return text;
+  }();
+  static const std::vector<std::string_view> views(names.begin(), names.end());
+  return views;
+}
+
+NameListField<AnalyticScene> contact_length_field() {
+  return {"contact_length", contact_length_names(),
+          "contact-length columns `contact_length_<name>_mm` (seed 003); a name without a suffix uses "
+          "`contact_shear_angle`",
+          [](const AnalyticScene& s) {
+            std::vector<std::string> names;
+            for (const auto& r : s.contact_lengths) names.push_back(r.column.substr(15, r.column.size() - 18));
+            return names;
+          },
+          [](AnalyticScene& s, const std::vector<std::string>& names) {
+            s.contact_lengths.clear();
+            for (const auto& name : names) {
+              ContactLengthRequest request;
+              std::string model_name = name;
+              request.shear_angle = s.contact_shear_angle;
+              for (const auto& [suffix, angle] : {std::pair{std::string_view("_mep"), ShearAngleModel::merchant},
+                                                  std::pair{std::string_view("_mssp"), ShearAngleModel::lee_shaffer}}) {
+                if (name.size() > suffix.size() && name.ends_with(suffix)) {
+                  model_name = name.substr(0, name.size() - suffix.size());
+                  request.shear_angle = angle;
+                }
+              }
+              request.model = registered_model<ContactLengthModel>("contact_length", model_name);
+              request.column = fmt::format("contact_length_{}_mm", name);
+              for (const auto& existing : s.contact_lengths)
+                if (existing.column == request.column)
+                  throw InputError("models.contact_length", name, "each contact-length model named once");
+              s.contact_lengths.push_back(request);
+            }
+          }};
+}
+
+const FieldTable<AnalyticScene>& models_fields() {
+  static const FieldTable<AnalyticScene> table{
+      force_field(),
+      NameListField<AnalyticScene>{"flow_stress", registry_names("flow_stress"), "the terms of seed 001 Eq. 8 to add",
+                                   [](const AnalyticScene& s) { return s.flow_stress_terms; },
+                                   [](AnalyticScene& s, const std::vector<std::string>& terms) { s.flow_stress_terms = terms; }},
+      model_choice<DeformationModel, kDeformation>(
+          "where the flow stress is evaluated: workpiece temperature with the shear-plane strain and Oxley's "
+          "strain-rate estimate (C0 = 5); the `cut` values; or zone AB of an extended-Oxley solve",
+          [](auto& s) -> auto& { return s.deformation; }),
+      model_choice<ShearAngleSource, kShearAngle>(
+          "nominal shear angle: MEP, MSSP or from `cut.chip_ratio` (the default when it is given); gives the chip "
+          "ratio for Liu-Li",
+          [](auto& s) -> auto& { return s.shear_angle; }),
+      model_choice<FrictionClosure, kClosure>(
+          "beta_k along the edge (Liu-Li); its value at the nominal rake is the prediction's one friction angle "
+          "(Merchant and Liu-Li: forces, stagnation angle, contact lengths, printed value); `constant` keeps the "
+          "scene's. With the chip ratio and a closure other than `constant`, no friction input is needed",
+          [](auto& s) -> auto& { return s.liu_li.closure; }),
+      model_choice<LowerLimitRule, kLowerLimit>(
+          "start of the edge integral (Liu-Li): the stagnation point -(pi/4 + beta/2), kept a margin above any "
+          "pole; or just above the pole (or -pi/2)",
+          [](auto& s) -> auto& { return s.liu_li.lower_limit; }),
+      model_choice<PloughingModel, kPloughing>(
+          "the force under the edge below the stagnation point (Liu-Li with an edge radius): the Challen-Oxley wave "
+          "model on the chord of the engaged arc, added to the chip term; `none`: no such force (0 N inside the "
+          "ploughed layer)",
+          [](auto& s) -> auto& { return s.ploughing; }),
+      number_at<AnalyticScene>("lower_limit_margin_deg", units::kDeg, Range::open(0.0, 45.0),
+                               "margin above the pole (and above -pi/2 for the Merchant closure, whose thrust diverges "
+                               "there)",
+                               [](auto& s) -> auto& { return s.liu_li.lower_limit_margin_rad; }),
+      number_at<AnalyticScene>("oxley_tolerance", units::kSi("(relative)"), Range::closed(1e-15, 1e-2),
+                               "relative tolerance of the extended-Oxley solver",
+                               [](auto& s) -> auto& { return s.oxley_options.tolerance; }),
+      choice_field("contact_shear_angle", kContactShearAngleNames,
+                   "shear angle (MEP or MSSP) of the contact-length names without a suffix",
+                   &AnalyticScene::contact_shear_angle),
+      contact_length_field()};
+  return table;
+}
+
+const FieldTable<QuadratureSettings>& quadrature_fields() {
+  static const FieldTable<QuadratureSettings> table{
+      mapped_choice<QuadratureSettings, QuadratureRule>("rule", quadrature_names(),
+                                                        "the rule (docs/performance.md: the cost and error of each)",
+                                                        [](auto& q) -> auto& { return q.rule; }, &quadrature_rule),
+      number_field("tolerance", units::kSi("(relative)"), Range::open(0.0, 1.0), "relative tolerance",
+                   &QuadratureSettings::relative_tolerance),
+      int_field("max_depth", 1, 20, "adaptive bisection depth (Boost) or 2^max_depth intervals (GSL)",
+                &QuadratureSettings::max_depth)};
+  return table;
+}
+
+constexpr std::string_view kStrainRatePolicyNamesText[] = {"clamp", "power_law"};
+constexpr EnumNames<StrainRatePolicy> kStrainRatePolicyNames{kStrainRatePolicyNamesText};
+constexpr std::string_view kColdPolicyNamesText[] = {"clamp", "error"};
+constexpr EnumNames<ColdPolicy> kColdPolicyNames{kColdPolicyNamesText};
+
+const FieldTable<JohnsonCookPolicy>& flow_stress_policy_fields() {
+  static const FieldTable<JohnsonCookPolicy> table{
+      choice_field("strain_rate", kStrainRatePolicyNames,
+                   "below the reference strain rate: no rate effect (`clamp`) or (1 + rate/rate0)^C",
+                   &JohnsonCookPolicy::strain_rate),
+      choice_field("cold", kColdPolicyNames, "below room temperature: T* = 0 (`clamp`) or an error",
+                   &JohnsonCookPolicy::cold)};
+  return table;
+}
+
+void parse_friction(const CutKeys& keys, ObjectReader& cut, ObjectReader& root, AnalyticScene& scene) {
   auto measured = root.find_object("measured");
-  if (angle && coefficient) {
-    throw InputError(cut.key_path("friction_coefficient"), format_value(*coefficient),
+  if (keys.friction_angle_rad && keys.friction_coefficient) {
+    throw InputError(cut.key_path("friction_coefficient"), format_value(*keys.friction_coefficient),
                      "either cut.friction_angle_deg or cut.friction_coefficient, not both");
   }
-  if (angle) {
-    scene.friction_angle_rad = units::deg_to_rad(*angle);
+  if (keys.friction_angle_rad) {
+    scene.friction_angle_rad = keys.friction_angle_rad;
     scene.friction_origin = "cut.friction_angle_deg";
-  } else if (coefficient) {
-    scene.friction_angle_rad = std::atan(*coefficient);
+  } else if (keys.friction_coefficient) {
+    scene.friction_angle_rad = std::atan(*keys.friction_coefficient);
     scene.friction_origin = "cut.friction_coefficient";
   }
   if (measured) {
-    const double fc = measured->get_number("cutting_force_N", Range::positive(), "N");
-    const double ft = measured->get_number("thrust_force_N", Range::any(), "N");
+    const MeasuredForces forces = read_fields(*measured, measured_fields(), MeasuredForces{}, SiCheck::on);
     measured->finish();
     if (scene.friction_angle_rad) {
       throw InputError("measured", "(given)", "measured forces or a friction value in cut, not both");
     }
     // seed 003, Section 2: beta = atan(F_z / F_x) + rake
-    scene.friction_angle_rad = std::atan2(ft, fc) + scene.rake_rad;
+    scene.friction_angle_rad = std::atan2(forces.thrust_force_N, forces.cutting_force_N) + scene.rake_rad;
     scene.friction_origin = "measured forces";
   }
 }
 
+const std::vector<SceneKeySection>& key_sections() {
+  static const std::vector<SceneKeySection> list = [] {
+    std::vector<SceneKeySection> out = material_key_sections();
+    out.insert(out.end(), {
+        {"tool", "the cutting tool", [] { return fields_markdown(tool_fields()); }},
+        {"cut", "an orthogonal cut (`uncut_chip_thickness_um`, `width_mm`) or a turning cut (`turning`)",
+         [] { return fields_markdown(cut_fields()); }},
+        {"cut.turning",
+         "optional, instead of `cut.uncut_chip_thickness_um` and `width_mm`: a round-nose turning cut, whose width "
+         "is chip area / thickness",
+         [] { return fields_markdown(turning_fields()); }},
+        {"measured",
+         "optional, top level: the friction angle is then beta = atan(F_thrust / F_cutting) + rake (seed 003), in "
+         "place of a friction value in `cut`",
+         [] { return fields_markdown(measured_fields()); }},
+        {"models", "the models to run; besides these, the objects `quadrature` and `flow_stress_policy`",
+         [] { return fields_markdown(models_fields()); }},
+        {"models.quadrature", "optional: the Liu-Li integration", [] { return fields_markdown(quadrature_fields()); }},
+        {"models.flow_stress_policy", "optional: the Johnson-Cook law outside its domain",
+         [] { return fields_markdown(flow_stress_policy_fields()); }}});
+    for (const auto& s : trepanning_key_sections()) out.push_back(s);
+    return out;
+  }();
+  return list;
+}
 }  // namespace
+
+std::vector<std::string> analytic_scene_sections() {
+  std::vector<std::string> names;
+  for (const auto& s : key_sections())
+    if (std::find(names.begin(), names.end(), s.name) == names.end()) names.emplace_back(s.name);
+  return names;
+}
+
+std::string analytic_scene_keys_markdown(const std::string& section) {
+  std::string md;
+  for (const auto& s : key_sections())
+    if (section.empty() || s.name == section)
+      md += fmt::format("{}#### `{}` ({})\n\n{}", md.empty() ? "" : "\n", s.name, s.about, s.markdown());
+  if (md.empty()) throw InputError("SECTION", section, describe_choices(section, analytic_scene_sections()));
+  return md;
+}
 
 void refuse_dem_scene(const Json& document) {
   if (!document.is_object() || !document.contains("kind")) return;
@@ -139,22 +416,15 @@ AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
   // Tool
   {
     auto tool = root.get_object("tool");
-    scene.rake_rad = units::deg_to_rad(tool.get_number("rake_deg", Range::open(-90.0, 90.0), "deg"));
-    scene.edge_radius_m = tool.get_si_or("edge_radius_um", 0.0, Range::non_negative(), "um", units::um_to_m);
-    scene.clearance_rad = units::deg_to_rad(tool.get_number_or("clearance_deg", kDefaultClearance_deg, Range::open(0.0, 90.0), "deg"));
+    read_fields_into(tool, tool_fields(), scene, SiCheck::on);
     tool.finish();
   }
 
-  // Cut
+  // Cut (for turning, thickness and width follow from the round-nose chip)
   auto cut = root.get_object("cut");
   if (auto turning = cut.find_object("turning")) {
     TurningScene t;
-    t.geometry.feed_m_per_rev = turning->get_si("feed_um_per_rev", Range::positive(), "um/rev", units::um_to_m);
-    t.geometry.nose_radius_m = turning->get_si("nose_radius_mm", Range::positive(), "mm", units::mm_to_m);
-    t.geometry.depth_of_cut_m = turning->get_si("depth_of_cut_um", Range::positive(), "um", units::um_to_m);
-    t.thickness = turning->get_choice_or("chip_thickness", "equivalent", {"equivalent", "maximum"}) == "maximum"
-                      ? TurningThickness::maximum
-                      : TurningThickness::equivalent;
+    read_fields_into(*turning, turning_fields(), t, SiCheck::on);
     turning->finish();
     t.geometry.validate(cut.key_path("turning"));
     for (const char* key : {"uncut_chip_thickness_um", "width_mm"}) {
@@ -166,63 +436,31 @@ AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
     }
     scene.turning = t;
   } else {
-    scene.uncut_chip_thickness_m =
-        cut.get_si("uncut_chip_thickness_um", Range::positive(), "um", units::um_to_m);
-    scene.width_m = cut.get_si("width_mm", Range::positive(), "mm", units::mm_to_m);
+    for (const char* key : {"uncut_chip_thickness_um", "width_mm"}) cut.get(key);  // required: missing is an error
   }
-  scene.speed_m_per_s =
-      cut.get_si("speed_m_per_min", Range::positive(), "m/min", units::m_per_min_to_m_per_s);
-  scene.chip_ratio = cut.get_optional_number("chip_ratio", Range::positive(), "");
-  scene.friction_factor = cut.get_optional_number("friction_factor", Range{0.0, 1.0, false, true}, "(tau/k)");
-  parse_friction(cut, root, scene);
-  const auto strain = cut.get_optional_number("strain", Range::non_negative(), "");
-  const auto strain_rate = cut.get_optional_number("strain_rate_per_s", Range::non_negative(), "1/s");
-  const auto temperature = cut.get_optional_number("temperature_K", Range::positive(), "K");
-  const auto workpiece_temperature = cut.get_optional_number("workpiece_temperature_K", Range::positive(), "K");
+  const CutKeys keys = read_fields(cut, cut_fields(), CutKeys{}, SiCheck::on);
+  if (!scene.turning) {
+    scene.uncut_chip_thickness_m = *keys.uncut_chip_thickness_m;
+    scene.width_m = *keys.width_m;
+  }
+  scene.speed_m_per_s = keys.speed_m_per_s;
+  scene.chip_ratio = keys.chip_ratio;
+  scene.friction_factor = keys.friction_factor;
+  parse_friction(keys, cut, root, scene);
 
-  // Models
+  // Models (shear_angle defaults to chip_ratio when the cut gives one)
   auto models = root.get_object("models");
-  const std::string force_name = models.get_choice_or("force", "auto", analytic_model_names("force"));
-  if (force_name == "trepanning") {
-    throw InputError("models.force", force_name,
-                     "an orthogonal-cut model here (trepanning scenes are read by parse_trepanning_scene)");
-  }
-  const auto terms = read_name_list(models, "flow_stress", analytic_model_names("flow_stress"), {"johnson_cook"});
-  const std::string deformation_name =
-      models.get_choice_or("deformation", "room_temperature", analytic_model_names("deformation"));
-  const std::string shear_name = models.get_choice_or(
-      "shear_angle", scene.chip_ratio ? "chip_ratio" : "merchant", analytic_model_names("shear_angle"));
-  const std::string closure_name = models.get_choice_or("friction_closure", "merchant", analytic_model_names("friction_closure"));
-  const std::string lower_name = models.get_choice_or("lower_limit", "stagnation", analytic_model_names("lower_limit"));
-  const std::string ploughing_name = models.get_choice_or("ploughing", "wave", analytic_model_names("ploughing"));
-  scene.liu_li.lower_limit_margin_rad =
-      units::deg_to_rad(models.get_number_or("lower_limit_margin_deg", 1.0, Range::open(0.0, 45.0), "deg"));
+  if (scene.chip_ratio) scene.shear_angle = ShearAngleSource::chip_ratio;
+  read_fields_into(models, models_fields(), scene, SiCheck::on);
   if (auto quadrature = models.find_object("quadrature")) {
-    scene.liu_li.quadrature.rule =
-        *quadrature_rule_from_name(quadrature->get_choice_or("rule", "gauss_kronrod", quadrature_rule_names()));
-    scene.liu_li.quadrature.relative_tolerance =
-        quadrature->get_number_or("tolerance", 1e-8, Range::open(0.0, 1.0), "(relative)");
-    scene.liu_li.quadrature.max_depth = quadrature->get_int_or("max_depth", 15, 1, 20);
+    read_fields_into(*quadrature, quadrature_fields(), scene.liu_li.quadrature, SiCheck::on);
     quadrature->finish();
   }
-  scene.oxley_options.tolerance =
-      models.get_number_or("oxley_tolerance", scene.oxley_options.tolerance, Range::closed(1e-15, 1e-2), "(relative)");
-  scene.contact_lengths = parse_contact_lengths(models);
   if (auto policy = models.find_object("flow_stress_policy")) {
-    scene.flow_stress.policy.strain_rate =
-        policy->get_choice_or("strain_rate", "clamp", {"clamp", "power_law"}) == "clamp" ? StrainRatePolicy::clamp
-                                                                                          : StrainRatePolicy::power_law;
-    scene.flow_stress.policy.cold =
-        policy->get_choice_or("cold", "clamp", {"clamp", "error"}) == "clamp" ? ColdPolicy::clamp : ColdPolicy::error;
+    read_fields_into(*policy, flow_stress_policy_fields(), scene.flow_stress.policy, SiCheck::on);
     policy->finish();
   }
   models.finish();
-
-  scene.shear_angle = registered_model<ShearAngleSource>("shear_angle", shear_name);
-  scene.liu_li.closure = registered_model<FrictionClosure>("friction_closure", closure_name);
-  scene.liu_li.lower_limit = registered_model<LowerLimitRule>("lower_limit", lower_name);
-  scene.ploughing = registered_model<PloughingModel>("ploughing", ploughing_name);
-  scene.deformation = registered_model<DeformationModel>("deformation", deformation_name);
 
   // The round-nose chip gives thickness and width (width = chip area / thickness).
   if (scene.turning) {
@@ -234,7 +472,6 @@ AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
   }
 
   // models.force = "auto": the cheapest valid model.
-  scene.force_auto = force_name == "auto";
   if (scene.force_auto) {
     if (!scene.friction_angle_rad && scene.shear_angle != ShearAngleSource::chip_ratio) {
       scene.force = ForceModel::oxley;
@@ -246,8 +483,6 @@ AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
       scene.force = ForceModel::liu_li;
       scene.force_choice_reason = "edge radius at least 5 % of the uncut chip thickness: edge-radius model";
     }
-  } else {
-    scene.force = registered_model<ForceModel>("force", force_name);
   }
 
   // Friction is needed by every model except oxley, unless the chip ratio gives the shear angle and a closure
@@ -266,13 +501,7 @@ AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
   scene.liu_li.friction_angle_rad = scene.friction_angle_rad.value_or(0.0);
 
   // Flow stress: only the terms named.
-  for (const auto& term : terms) {
-    const auto valid = analytic_model_names("flow_stress");
-    if (std::find(valid.begin(), valid.end(), term) == valid.end()) {
-      throw InputError("models.flow_stress", term, describe_choices(term, valid));
-    }
-  }
-  scene.flow_stress_terms = terms;
+  const auto& terms = scene.flow_stress_terms;
   const auto has_term = [&](const char* t) { return std::find(terms.begin(), terms.end(), t) != terms.end(); };
   // Oxley needs the Johnson-Cook law even when the flow stress of the force model does not add it.
   const bool uses_oxley = scene.force == ForceModel::oxley || scene.deformation == DeformationModel::oxley;
@@ -284,9 +513,9 @@ AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
     if (has_term("hall_petch")) scene.flow_stress.hall_petch = micro.hall_petch;
     if (has_term("dislocation")) scene.flow_stress.dislocation = micro.dislocation;
   }
-  const double room_K =
-      johnson_cook ? johnson_cook->room_temperature_K : 293.15;
-  scene.workpiece_temperature_K = workpiece_temperature.value_or(room_K);
+  // Default: the Johnson-Cook room temperature, else the member's own.
+  if (johnson_cook) scene.workpiece_temperature_K = johnson_cook->room_temperature_K;
+  if (keys.workpiece_temperature_K) scene.workpiece_temperature_K = *keys.workpiece_temperature_K;
   if (const Json* jc_group = record.group("johnson_cook"); jc_group && jc_group->contains("melting_temperature_K")) {
     scene.flow_stress.melting_temperature_K = jc_group->at("melting_temperature_K").get<double>();
     // The microstructural terms soften with the material's Johnson-Cook thermal factor (flow_stress.hpp).
@@ -297,6 +526,7 @@ AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
   scene.flow_stress.validate("models.flow_stress");
 
   // Deformation state
+  const auto& [strain, strain_rate, temperature] = std::tie(keys.strain, keys.strain_rate_per_s, keys.temperature_K);
   if (scene.deformation == DeformationModel::given) {
     if (!strain || !strain_rate || !temperature) {
       throw InputError(!strain ? "cut.strain" : !strain_rate ? "cut.strain_rate_per_s" : "cut.temperature_K",

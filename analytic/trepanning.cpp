@@ -35,7 +35,7 @@ void TrepanningTool::validate(const std::string& path) const {
 }
 
 TrepanningCut TrepanningCut::from_user_units(double feed_rate_um_per_s, double spindle_speed_rpm) {
-  return {units::um_to_m(feed_rate_um_per_s), spindle_speed_rpm / 60.0};
+  return {units::um_to_m(feed_rate_um_per_s), units::rpm_to_rev_per_s(spindle_speed_rpm)};
 }
 
 void TrepanningCut::validate(const std::string& path) const {

@@ -85,22 +85,35 @@ void points_mm(VtpFile& f, std::size_t n, X x, Y y) {
 
 }  // namespace
 
-void write_vtp_frame(const std::filesystem::path& path, const Simulation& sim) {
+void write_vtp_frame(const std::filesystem::path& path, const Simulation& sim, const FrameDiskArrays& extra) {
   const auto& p = sim.particles();
   const auto& b = sim.bonds();
   std::vector<std::size_t> lines;
+  std::vector<std::int32_t> broken(p.size(), 0);  // per disk: its joints that are broken (retired)
   for (std::size_t k = 0; k < b.size(); ++k)
-    if (b.active[k]) lines.push_back(k);
+    if (b.active[k]) {
+      lines.push_back(k);
+    } else {
+      ++broken[static_cast<std::size_t>(b.i[k])];
+      ++broken[static_cast<std::size_t>(b.j[k])];
+    }
   const std::size_t n = p.size(), nl = lines.size();
   VtpFile f(n, n, nl);
   points_mm(f, n, [&](std::size_t i) { return p.x[i]; }, [&](std::size_t i) { return p.y[i]; });
   f.tag("<PointData Scalars=\"radius_mm\">");
-  f.array<std::int64_t>("id", 1, n, [](std::size_t i, int) { return i; });
+  if (extra.id.empty())
+    f.array<std::int64_t>("id", 1, n, [](std::size_t i, int) { return i; });
+  else
+    f.array<std::int64_t>("id", 1, n, [&](std::size_t i, int) { return extra.id[i]; });
   f.array<double>("radius_mm", 1, n, [&](std::size_t i, int) { return units::m_to_mm(p.radius[i]); });
   f.array<double>("velocity_m_per_s", 3, n, [&](std::size_t i, int c) { return c == 0 ? p.vx[i] : c == 1 ? p.vy[i] : 0.0; });
   f.array<double>("spin_rad_per_s", 1, n, [&](std::size_t i, int) { return p.omega[i]; });
   f.array<std::int32_t>("group", 1, n, [&](std::size_t i, int) { return p.group[i]; });
   f.array<std::uint8_t>("held", 1, n, [&](std::size_t i, int) { return p.group[i] > 0 ? 1 : 0; });
+  if (!extra.displacement_m.empty())
+    f.array<double>("displacement_m", 3, n,
+                    [&](std::size_t i, int c) { return c < 2 ? extra.displacement_m[2 * i + static_cast<std::size_t>(c)] : 0.0; });
+  f.array<std::int32_t>("broken_joints", 1, n, [&](std::size_t i, int) { return broken[i]; });
   f.tag("</PointData>\n<CellData Scalars=\"intact_elements\">");
   f.array<std::int32_t>("intact_elements", 1, n + nl,
                         [&](std::size_t c, int) { return c < n ? -1 : b.n_bonded_elements(lines[c - n]); });
@@ -130,7 +143,8 @@ void write_walls_vtp(const std::filesystem::path& path, const std::vector<Wall>&
   f.write(path);
 }
 
-void write_cracks_vtp(const std::filesystem::path& path, const std::vector<CrackEvent>& cracks) {
+void write_cracks_vtp(const std::filesystem::path& path, const std::vector<CrackEvent>& cracks,
+                      std::optional<double> y_cut_m) {
   const std::size_t n = cracks.size();
   VtpFile f(n, n, 0);
   points_mm(f, n, [&](std::size_t i) { return cracks[i].x_m; }, [&](std::size_t i) { return cracks[i].y_m; });
@@ -141,6 +155,10 @@ void write_cracks_vtp(const std::filesystem::path& path, const std::vector<Crack
   f.array<double>("length_um", 1, n, [&](std::size_t i, int) { return units::m_to_um(cracks[i].length_m); });
   f.array<std::int64_t>("bond", 1, n, [&](std::size_t i, int) { return cracks[i].bond; });
   f.array<std::int32_t>("element", 1, n, [&](std::size_t i, int) { return cracks[i].element; });
+  if (y_cut_m)  // cracks.csv's place (crack_place) as a number ParaView can colour and threshold by
+    f.array<std::int32_t>("place", 1, n, [&](std::size_t i, int) {
+      return is_chip_crack(cracks[i].y_m, *y_cut_m) ? kCrackPlaceChip : kCrackPlaceSubsurface;
+    });
   f.tag("</PointData>");
   f.verts(n);
   f.write(path);

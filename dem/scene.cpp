@@ -13,7 +13,9 @@ const FieldTable<OutputSpec>& output_fields() {
   static const FieldTable<OutputSpec> table{
       int_field("frame_every_samples", 0, 100000000,
                 "VTK frames (particles, joints, walls, cracks) every N samples and of the final state; 0: none",
-                &OutputSpec::frame_every_samples)};
+                &OutputSpec::frame_every_samples),
+      bool_field("frame_png", "also a picture with each VTK frame, as specimen.png: frame_K.png (and its PDF)",
+                 &OutputSpec::frame_png)};
   return table;
 }
 

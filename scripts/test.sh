@@ -5,12 +5,13 @@
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 select=(--label-exclude long)
+deps=()
 case "${1:-}" in
   "") ;;
-  --long) select=() ;;
+  --long) select=() deps=(--long) ;;  # the long checks' packages too (ParaView: tests/long/vtk_paraview.sh)
   *) echo "scripts/test.sh: error: option = $1: expected none (the quick suite) or --long (the whole suite)" >&2
      exit 2 ;;
 esac
-bash "$root/scripts/install-deps.sh"
+bash "$root/scripts/install-deps.sh" "${deps[@]}"
 bash "$root/scripts/build.sh"
 ctest --test-dir "${KERF_BUILD_DIR:-$root/build}" --output-on-failure --parallel "$(nproc)" "${select[@]}"

@@ -191,6 +191,13 @@ double ObjectReader::get_si_or(std::string_view key, double fallback, const Rang
   return value ? checked_si(*value, to_si, *this, key, unit) : to_si(fallback);
 }
 
+std::optional<double> ObjectReader::get_optional_si(std::string_view key, const Range& range, std::string_view unit,
+                                                   double (*to_si)(double)) {
+  const auto value = get_optional_number(key, range, unit);
+  if (!value) return std::nullopt;
+  return checked_si(*value, to_si, *this, key, unit);
+}
+
 int ObjectReader::get_int_or(std::string_view key, int fallback, int lo, int hi) {
   const Json* value = find(key);
   if (!value) return fallback;

@@ -7,11 +7,13 @@
 //   kerf-forces regime SCENE.json (the ductile-brittle critical depth and the regime of the scene's cut)
 //   kerf-forces models            (the registered models)
 //   kerf-forces materials         (the bundled material library)
+//   kerf-forces keys [SECTION]    (the Markdown key table of every scene section, docs/scenes.md, or of one)
 //
 // Exit status: 0 success, 2 usage or input error (the message names the field, value and what was
 // expected), 3 a model failed on valid input or a result would not be finite, 4 an output cannot be written
 // (checked before any work), 1 anything else.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <omp.h>
 
 #include <CLI/CLI.hpp>
@@ -22,6 +24,7 @@
 
 #include "kerf/analytic/evaluate.hpp"
 #include "kerf/analytic/registry.hpp"
+#include "kerf/analytic/scene.hpp"
 #include "kerf/analytic/scene_compare.hpp"
 #include "kerf/analytic/sweep.hpp"
 #include "kerf/comparison_config.hpp"
@@ -208,6 +211,10 @@ int main(int argc, char** argv) {
 
   auto* models = app.add_subcommand("models", "list the registered models");
   auto* materials = app.add_subcommand("materials", "list the bundled material library");
+  std::string section;
+  auto* keys = app.add_subcommand("keys", "print the Markdown key table of the scene sections (docs/scenes.md)");
+  keys->add_option("section", section,
+                   "one section (" + fmt::format("{}", fmt::join(kerf::analytic_scene_sections(), ", ")) + ")");
 
   const auto error = [](const std::string& what, int status) {
     fmt::print(stderr, "kerf-forces: error: {}\n", kerf::printable(what));
@@ -238,6 +245,10 @@ int main(int argc, char** argv) {
     if (*report) return run_report(config_path, out_dir);
     if (*models) return list_models();
     if (*materials) return list_materials();
+    if (*keys) {
+      fmt::print("{}", kerf::analytic_scene_keys_markdown(section));
+      return 0;
+    }
   } catch (const std::exception&) {
     return kerf::report_error("kerf-forces");
   }

@@ -5,10 +5,16 @@
 #include <omp.h>
 
 #include <chrono>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <iostream>
+#include <iterator>
 #include <mutex>
 #include <optional>
 
 #include "kerf/dem/output.hpp"
+#include "kerf/dem/png.hpp"
 #include "kerf/error.hpp"
 #include "kerf/io.hpp"
 #include "kerf/material.hpp"
@@ -179,13 +185,80 @@ void write_summary(const RunOptions& options, const Json& scene, Json summary) {
   write_file_atomically(options.out / "summary.json", summary.dump(2) + "\n");
 }
 
-void write_frame_files(const fs::path& out, const Simulation& sim, RunProgress& progress) {
-  const std::string name = fmt::format("frame_{:04d}.vtp", progress.frames.size());
-  const std::string walls = fmt::format("walls_{:04d}.vtp", progress.frames.size());
-  const std::string cracks = fmt::format("cracks_{:04d}.vtp", progress.frames.size());
-  write_vtp_frame(out / name, sim);
+namespace {
+/// OUT/frame_reference.bin: "KERFREF1", the count of values (UInt64), the values (x, y per disk, metres, Float64
+/// in the machine's byte order: a resumed run on the same machine reads them back bit for bit).
+constexpr std::string_view kReferenceMagic = "KERFREF1";
+constexpr const char* kReferenceFile = "frame_reference.bin";
+
+void write_frame_reference(const fs::path& out, const std::vector<double>& reference_m) {
+  std::string bytes(kReferenceMagic);
+  const std::uint64_t n = reference_m.size();
+  bytes.append(reinterpret_cast<const char*>(&n), sizeof n);
+  bytes.append(reinterpret_cast<const char*>(reference_m.data()), n * sizeof(double));
+  write_file_atomically(out / kReferenceFile, bytes);
+}
+
+/// The reference a run wrote with its first frame; empty when there is none to read (a run begun by a kerf
+/// before the displacements: its frames get NaN displacements).
+std::vector<double> read_frame_reference(const fs::path& out) {
+  std::ifstream in(out / kReferenceFile, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t head = kReferenceMagic.size() + sizeof(std::uint64_t);
+  std::uint64_t n = 0;
+  if (bytes.size() >= head) std::memcpy(&n, bytes.data() + kReferenceMagic.size(), sizeof n);
+  if (bytes.size() < head || bytes.compare(0, kReferenceMagic.size(), kReferenceMagic) != 0 ||
+      bytes.size() != head + n * sizeof(double))
+    return {};
+  std::vector<double> reference(n);
+  std::memcpy(reference.data(), bytes.data() + head, n * sizeof(double));
+  return reference;
+}
+}  // namespace
+
+void write_frame_files(const fs::path& out, const FrameSource& frame, const OutputSpec& output, RunProgress& progress) {
+  const Simulation& sim = frame.sim;
+  const std::size_t k = progress.frames.size();
+  if (progress.frame_reference_m.empty()) {
+    if (k == 0) {
+      // The first frame: every disk of the workpiece where it is now (a windowed cut's reservoir: the disks
+      // outside the first window have not moved either).
+      const Particles& p = frame.window ? frame.window->workpiece().particles() : sim.particles();
+      progress.frame_reference_m.resize(2 * p.size());
+      for (std::size_t i = 0; i < p.size(); ++i) {
+        progress.frame_reference_m[2 * i] = p.x[i];
+        progress.frame_reference_m[2 * i + 1] = p.y[i];
+      }
+      write_frame_reference(out, progress.frame_reference_m);
+    } else {
+      progress.frame_reference_m = read_frame_reference(out);
+      if (progress.frame_reference_m.empty())
+        std::cerr << fmt::format("kerf-dem: no {} in {} (a run begun by an earlier kerf): the frames' "
+                                 "displacement_m is NaN\n", kReferenceFile, out.string());
+    }
+  }
+  const Particles& p = sim.particles();
+  FrameDiskArrays extra;
+  extra.id.resize(p.size());
+  extra.displacement_m.resize(2 * p.size());
+  const std::vector<double>& ref = progress.frame_reference_m;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const std::int64_t id = frame.window ? frame.window->workpiece_index(i) : static_cast<std::int64_t>(i);
+    extra.id[i] = id;
+    const auto at = 2 * static_cast<std::size_t>(id);
+    const bool known = at + 1 < ref.size();
+    extra.displacement_m[2 * i] = known ? p.x[i] - ref[at] : std::nan("");
+    extra.displacement_m[2 * i + 1] = known ? p.y[i] - ref[at + 1] : std::nan("");
+  }
+  const std::string name = fmt::format("frame_{:04d}.vtp", k);
+  const std::string walls = fmt::format("walls_{:04d}.vtp", k);
+  const std::string cracks = fmt::format("cracks_{:04d}.vtp", k);
+  write_vtp_frame(out / name, sim, extra);
   write_walls_vtp(out / walls, sim.walls());
-  write_cracks_vtp(out / cracks, sim.cracks());
+  write_cracks_vtp(out / cracks, sim.cracks(), frame.y_cut_m);
+  if (output.frame_png)
+    write_specimen_png(out / fmt::format("frame_{:04d}.png", k), sim, fmt::format("{}, frame {}", frame.title, k),
+                       frame.view_m);
   progress.frames.push_back({sim.time(), {name, walls, cracks}});
 }
 

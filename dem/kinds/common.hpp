@@ -1,6 +1,7 @@
 #pragma once
 // What the scene kinds share (internal to dem/kinds/): the specimen (genesis or file), the summary's head,
 // VTK frames, the material a calibration writes, and the factories the kind registry calls.
+#include <array>
 #include <chrono>
 #include <filesystem>
 #include <optional>
@@ -8,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "kerf/dem/cut_window.hpp"
 #include "kerf/dem/cutting.hpp"
 #include "kerf/dem/scene.hpp"
 #include "kerf/dem/simulation.hpp"
@@ -99,11 +101,27 @@ struct RunProgress {
   int sample_index = 0;
   std::string scene_dir;
   ProgressTarget progress;
+  /// The disks' positions at the run's first frame [m], x and y per disk of the workpiece (empty until the
+  /// first frame is written or, on a resume, read back from OUT/frame_reference.bin).
+  std::vector<double> frame_reference_m;
+};
+
+/// What a frame shows: the running simulation, and for a cut its window (null without one: the disks'
+/// workpiece indices and the whole workpiece at the first frame), its cut line (the cracks' place) and the
+/// region of its PNG pictures.
+struct FrameSource {
+  const Simulation& sim;
+  const CutWindow* window = nullptr;
+  std::optional<double> y_cut_m;
+  std::optional<std::array<double, 4>> view_m;
+  std::string title;  ///< the PNG's title before ", t = ..."
 };
 
 /// Writes the next VTK frame (particles and joints, walls, cracks: parts 0, 1, 2) and records it for the .pvd
-/// series.
-void write_frame_files(const fs::path& out, const Simulation& sim, RunProgress& progress);
+/// series; with output.frame_png, frame_K.png too. The first frame also writes OUT/frame_reference.bin (the
+/// disks' positions in metres, bit for bit: the displacements' reference, read back by a resumed run, so that
+/// its frames are those of an uninterrupted one).
+void write_frame_files(const fs::path& out, const FrameSource& frame, const OutputSpec& output, RunProgress& progress);
 
 /// calibration.material_name (a file name) and calibration.install_material of calibrate and calibrate_cut.
 struct MaterialOutput {

@@ -46,7 +46,13 @@ Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& d
   const fs::path& out = options.out;
   CheckpointSchedule checkpoints(options);
   const int frame_every = common.output.frame_every_samples;
-  const auto write_frame = [&](const Simulation& sim) { write_frame_files(out, sim, tp); };
+  // Every picture shows the workpiece's region with room for the tool on the right and the chip above.
+  const auto& box = run.result().workpiece_box_m;
+  const double margin = 2 * cut.depth_of_cut_m;
+  const std::array<double, 4> view_m{box[0], box[1] + margin, box[2], box[3] + margin};
+  const auto write_frame = [&](const Simulation& sim) {
+    write_frame_files(out, {sim, run.window(), run.result().y_cut_m, view_m, "cut"}, common.output, tp);
+  };
   if (frame_every > 0 && tp.sample_index == 0) write_frame(run.simulation());
   const double n = static_cast<double>(run.simulation().particles().size());  // a window's: about the same all along
   const double steps = cut.length_m / (cut.speed_m_per_s * run.result().time_step_s);
@@ -127,11 +133,7 @@ Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& d
   write_file_atomically(out / "forces.csv", cut_forces_csv(res));
   write_file_atomically(out / "cracks.csv", cracks_csv(run.cracks(), res.y_cut_m));
   if (frame_every > 0) write_pvd(out / "result.pvd", tp.frames);
-  // The workpiece with room for the tool on the right and the chip above.
-  const auto& box = res.workpiece_box_m;
-  const double margin = 2 * cut.depth_of_cut_m;
-  write_specimen_png(out / "specimen.png", run.workpiece(), "cut, final state",
-                     std::array<double, 4>{box[0], box[1] + margin, box[2], box[3] + margin});
+  write_specimen_png(out / "specimen.png", run.workpiece(), "cut, final state", view_m);
   write_cut_forces_png(out / "forces.png", res);
   write_summary(options, doc, summary);
   remove_checkpoint(out);  // finished: nothing to resume
@@ -174,14 +176,14 @@ class CutKind final : public SceneKind {
     }
     return {0,
             continue_cut(common, cut_, run.doc, std::move(summary), o, std::move(cut),
-                         {{}, 0, run.scene_dir, progress_target(o)}),
+                         {{}, 0, run.scene_dir, progress_target(o), {}}),
             {}};
   }
 
   SceneOutcome resume(const SceneCommon& common, const SceneRun& run, const Checkpoint& c) override {
     return {0,
             continue_cut(common, cut_, c.scene, c.summary, run.options, CutRun::deserialize(c.run),
-                         {c.frames, c.sample_index, c.scene_dir, progress_target(run.options)}),
+                         {c.frames, c.sample_index, c.scene_dir, progress_target(run.options), {}}),
             {}};
   }
 

@@ -68,13 +68,13 @@ class LabTestKind final : public SceneKind {
     const Simulation& specimen = started.specimen;
     Json& summary = started.summary;
     return continue_test(common, run, specimen, std::move(summary), LabTestRun(specimen, loading_),
-                         {{}, 0, run.scene_dir, progress_target(run.options)});
+                         {{}, 0, run.scene_dir, progress_target(run.options), {}});
   }
 
   SceneOutcome resume(const SceneCommon& common, const SceneRun& run, const Checkpoint& c) override {
     const Simulation specimen = Simulation::deserialize(c.specimen);
     return continue_test(common, run, specimen, c.summary, LabTestRun::deserialize(c.run),
-                         {c.frames, c.sample_index, c.scene_dir, progress_target(run.options)});
+                         {c.frames, c.sample_index, c.scene_dir, progress_target(run.options), {}});
   }
 
  private:
@@ -90,7 +90,9 @@ class LabTestKind final : public SceneKind {
     CheckpointSchedule checkpoints(scene_run.options);
     const int frame_every = common.output.frame_every_samples;
     // Frames: every frame_every_samples samples, plus the final state.
-    const auto write_frame = [&](const Simulation& sim) { write_frame_files(out, sim, tp); };
+    const auto write_frame = [&](const Simulation& sim) {
+      write_frame_files(out, {sim, nullptr, std::nullopt, std::nullopt, name()}, common.output, tp);
+    };
     if (frame_every > 0 && tp.sample_index == 0) write_frame(specimen);
     const double n = static_cast<double>(specimen.particles().size());
     const double steps =

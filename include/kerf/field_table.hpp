@@ -23,6 +23,7 @@
 #include <cmath>
 #include <type_traits>
 #include <functional>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -67,6 +68,10 @@ struct NumberField {
   std::function<double(const S&)> get;  ///< SI
   std::function<void(S&, double)> set;  ///< SI
   bool required = false;                ///< a key without a default: read_fields throws when it is absent
+  /// A key that may hold no value (an optional number, a default that depends on other keys): `has` tells
+  /// whether the struct holds one (empty: always), `absent` is what the key reference says when it does not.
+  std::function<bool(const S&)> has;
+  std::string_view absent;
 };
 
 /// An integer parameter in [lo, hi].
@@ -109,6 +114,16 @@ struct TextField {
   std::function<std::string(const std::string&)> check;
 };
 
+/// An ordered list of names out of `names` (JSON: an array of names, or one name), kept in the order given.
+template <class S>
+struct NameListField {
+  std::string_view key;
+  std::span<const std::string_view> names;
+  std::string_view doc;
+  std::function<std::vector<std::string>(const S&)> get;
+  std::function<void(S&, const std::vector<std::string>&)> set;
+};
+
 /// A set of names out of a list (JSON: an array of names), stored as flags (bit k: names[k] chosen).
 template <class S>
 struct FlagsField {
@@ -120,7 +135,8 @@ struct FlagsField {
 };
 
 template <class S>
-using Field = std::variant<NumberField<S>, IntField<S>, BoolField<S>, ChoiceField<S>, TextField<S>, FlagsField<S>>;
+using Field = std::variant<NumberField<S>, IntField<S>, BoolField<S>, ChoiceField<S>, TextField<S>, FlagsField<S>,
+                           NameListField<S>>;
 
 template <class S>
 using FieldTable = std::vector<Field<S>>;
@@ -128,7 +144,22 @@ using FieldTable = std::vector<Field<S>>;
 /// A number stored in SI in `member`.
 template <class S>
 NumberField<S> number_field(std::string_view key, FieldUnit unit, Range range, std::string_view doc, double S::*member) {
-  return {key, unit, range, doc, [member](const S& s) { return s.*member; }, [member](S& s, double v) { s.*member = v; }, false};
+  return {key, unit, range, doc, [member](const S& s) { return s.*member; }, [member](S& s, double v) { s.*member = v; },
+          false, {}, {}};
+}
+/// A number the user may leave out (no default): `absent` is what the key reference says then ("none").
+template <class S>
+NumberField<S> optional_number_field(std::string_view key, FieldUnit unit, Range range, std::string_view doc,
+                                     std::optional<double> S::*member, std::string_view absent = "none") {
+  return {key,
+          unit,
+          range,
+          doc,
+          [member](const S& s) { return (s.*member).value_or(0.0); },
+          [member](S& s, double v) { s.*member = v; },
+          false,
+          [member](const S& s) { return (s.*member).has_value(); },
+          absent};
 }
 /// A number the user must give (no default).
 template <class S>
@@ -187,7 +218,8 @@ FieldTable<S> embedded_fields(const FieldTable<B>& table, B S::*member, const Fi
           using F = std::decay_t<decltype(f)>;
           if constexpr (std::is_same_v<F, NumberField<B>>) {
             auto& g = std::get<NumberField<S>>(out.emplace_back(std::in_place_type<NumberField<S>>));
-            g.key = f.key, g.unit = f.unit, g.range = f.range, g.doc = f.doc, g.required = f.required;
+            g.key = f.key, g.unit = f.unit, g.range = f.range, g.doc = f.doc, g.required = f.required, g.absent = f.absent;
+            if (f.has) g.has = [has = f.has, member](const S& s) { return has(s.*member); };
             g.get = [get = f.get, member](const S& s) { return get(s.*member); };
             g.set = [set = f.set, member](S& s, double v) { set(s.*member, v); };
           } else {
@@ -200,33 +232,62 @@ FieldTable<S> embedded_fields(const FieldTable<B>& table, B S::*member, const Fi
   return out;
 }
 
-/// Reads every field present in the reader's object into a copy of `s` (absent fields keep their value,
-/// the default when `s` is S{}); values are range-checked in the key's unit, errors name the dotted path.
-/// The reader's finish() (unknown keys) is the caller's: a scene object may hold several tables.
+/// Whether read_fields refuses a number that its conversion to SI takes to 0, a subnormal or infinity, naming
+/// the key (ObjectReader::get_si): the analytic scenes ask for it; the DEM's tables read the plain conversion
+/// (their own checks judge the value then).
+enum class SiCheck { off, on };
+
+/// Reads every field present in the reader's object into `s` (absent fields keep their value, the default
+/// when `s` is S{}); values are range-checked in the key's unit; errors name the dotted path. The reader's
+/// finish() (unknown keys) is the caller's: a scene object may hold several tables.
 template <class S>
-S read_fields(ObjectReader& reader, const FieldTable<S>& table, S s) {
+void read_fields_into(ObjectReader& reader, const FieldTable<S>& table, S& s, SiCheck si_check = SiCheck::off) {
   for (const auto& field : table) {
     std::visit(
         [&](const auto& f) {
           using F = std::decay_t<decltype(f)>;
           const std::string key(f.key);
           if constexpr (std::is_same_v<F, NumberField<S>>) {
-            if (f.required) f.set(s, f.unit.to_si(reader.get_number(key, f.range, f.unit.symbol)));
-            else if (const auto v = reader.get_optional_number(key, f.range, f.unit.symbol)) f.set(s, f.unit.to_si(*v));
+            if (si_check == SiCheck::on) {
+              if (f.required) f.set(s, reader.get_si(key, f.range, f.unit.symbol, f.unit.to_si));
+              else if (const auto v = reader.get_optional_si(key, f.range, f.unit.symbol, f.unit.to_si)) f.set(s, *v);
+            } else {
+              if (f.required) f.set(s, f.unit.to_si(reader.get_number(key, f.range, f.unit.symbol)));
+              else if (const auto v = reader.get_optional_number(key, f.range, f.unit.symbol)) f.set(s, f.unit.to_si(*v));
+            }
           } else if constexpr (std::is_same_v<F, IntField<S>>) {
             f.set(s, reader.get_int_or(key, f.get(s), f.lo, f.hi));
           } else if constexpr (std::is_same_v<F, BoolField<S>>) {
             f.set(s, reader.get_bool_or(key, f.get(s)));
           } else if constexpr (std::is_same_v<F, ChoiceField<S>>) {
-            const std::vector<std::string> names(f.names.begin(), f.names.end());
-            const std::string text = reader.get_choice_or(key, names[static_cast<std::size_t>(f.get(s))], names);
-            f.set(s, static_cast<int>(std::find(names.begin(), names.end(), text) - names.begin()));
+            if (!reader.has(key)) return;  // s keeps its choice (as ObjectReader::get_choice_or, no copy of the names)
+            const Json& value = reader.get(key);
+            const std::string text = value.is_string() ? value.get<std::string>() : json_value_text(value);
+            const auto it = value.is_string() ? std::find(f.names.begin(), f.names.end(), text) : f.names.end();
+            if (it == f.names.end())
+              throw InputError(reader.key_path(key), text,
+                               describe_choices(text, std::vector<std::string>(f.names.begin(), f.names.end())));
+            f.set(s, static_cast<int>(it - f.names.begin()));
           } else if constexpr (std::is_same_v<F, TextField<S>>) {
             const std::string text = reader.get_string_or(key, f.get(s));
             if (f.check)
               if (const std::string expected = f.check(text); !expected.empty())
                 throw InputError(reader.key_path(key), text, expected);
             f.set(s, text);
+          } else if constexpr (std::is_same_v<F, NameListField<S>>) {
+            const Json* value = reader.find(key);
+            if (!value) return;
+            const std::vector<std::string> names(f.names.begin(), f.names.end());
+            if (!value->is_string() && !value->is_array())
+              throw InputError(reader.key_path(key), json_value_text(*value), "a list of names");
+            std::vector<std::string> list;
+            for (const auto& item : value->is_string() ? Json::array({*value}) : *value) {
+              const std::string name = item.is_string() ? item.get<std::string>() : json_value_text(item);
+              if (!item.is_string() || std::find(names.begin(), names.end(), name) == names.end())
+                throw InputError(reader.key_path(key), name, describe_choices(name, names));
+              list.push_back(name);
+            }
+            f.set(s, list);
           } else {
             const Json* list = reader.find(key);
             if (!list) return;
@@ -244,6 +305,12 @@ S read_fields(ObjectReader& reader, const FieldTable<S>& table, S s) {
         },
         field);
   }
+}
+
+/// read_fields_into a copy of `s`.
+template <class S>
+S read_fields(ObjectReader& reader, const FieldTable<S>& table, S s, SiCheck si_check = SiCheck::off) {
+  read_fields_into(reader, table, s, si_check);
   return s;
 }
 
@@ -255,6 +322,7 @@ void check_fields(const FieldTable<S>& table, const S& s) {
         [&](const auto& f) {
           using F = std::decay_t<decltype(f)>;
           if constexpr (std::is_same_v<F, NumberField<S>>) {
+            if (f.has && !f.has(s)) return;
             const double v = f.unit.from_si(f.get(s));
             if (!f.range.contains(v)) throw InputError(std::string(f.key), format_value(v), f.range.describe(f.unit.symbol));
           } else if constexpr (std::is_same_v<F, IntField<S>>) {
@@ -285,7 +353,7 @@ Json fields_to_json(const FieldTable<S>& table, const S& s) {
           using F = std::decay_t<decltype(f)>;
           const std::string key(f.key);
           if constexpr (std::is_same_v<F, NumberField<S>>) {
-            j[key] = f.unit.from_si(f.get(s));
+            if (!f.has || f.has(s)) j[key] = f.unit.from_si(f.get(s));
           } else if constexpr (std::is_same_v<F, ChoiceField<S>>) {
             j[key] = std::string(f.names[static_cast<std::size_t>(f.get(s))]);
           } else if constexpr (std::is_same_v<F, FlagsField<S>>) {
@@ -315,7 +383,9 @@ std::string fields_markdown(const FieldTable<S>& table, const S& defaults = S{},
           if constexpr (std::is_same_v<F, NumberField<S>>) {
             if (!f.unit.symbol.empty()) unit = std::string(f.unit.symbol);
             valid = f.range.describe("");
-            value = f.required ? "required" : format_value(f.unit.from_si(f.get(defaults)));
+            value = f.required                      ? "required"
+                    : f.has && !f.has(defaults) ? std::string(f.absent)
+                                                : format_value(f.unit.from_si(f.get(defaults)));
           } else if constexpr (std::is_same_v<F, IntField<S>>) {
             valid = fmt::format("an integer in [{}, {}]", f.lo, f.hi);
             value = std::to_string(f.get(defaults));
@@ -329,6 +399,11 @@ std::string fields_markdown(const FieldTable<S>& table, const S& defaults = S{},
             valid = f.check ? std::string(f.check("")) : "text";
             if (valid.empty()) valid = "text";
             value = f.get(defaults).empty() ? "empty" : fmt::format("`{}`", f.get(defaults));
+          } else if constexpr (std::is_same_v<F, NameListField<S>>) {
+            valid = "a list of ";
+            for (std::size_t k = 0; k < f.names.size(); ++k) valid += fmt::format("{}`{}`", k ? ", " : "", f.names[k]);
+            for (const auto& name : f.get(defaults)) value += fmt::format("{}`{}`", value.empty() ? "" : ", ", name);
+            if (value.empty()) value = "none";
           } else {
             valid = "a list of ";
             for (std::size_t k = 0; k < f.names.size(); ++k) {

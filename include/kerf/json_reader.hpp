@@ -75,6 +75,9 @@ class ObjectReader {
   double get_si(std::string_view key, const Range& range, std::string_view unit, double (*to_si)(double));
   double get_si_or(std::string_view key, double fallback, const Range& range, std::string_view unit,
                    double (*to_si)(double));
+  /// get_si of a key that may be absent (or null): nullopt then.
+  std::optional<double> get_optional_si(std::string_view key, const Range& range, std::string_view unit,
+                                        double (*to_si)(double));
   int get_int_or(std::string_view key, int fallback, int lo, int hi);
   bool get_bool_or(std::string_view key, bool fallback);
   std::string get_string(std::string_view key);

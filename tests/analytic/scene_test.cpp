@@ -1,11 +1,13 @@
 #include "kerf/analytic/scene.hpp"
 
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
 #include <numbers>
 
+#include "kerf/analytic/material_models.hpp"
 #include "kerf/analytic/predict.hpp"
 #include "kerf/error.hpp"
 #include "kerf/io.hpp"
@@ -556,4 +558,78 @@ TEST_CASE("Ploughing: a friction factor outside [0, 1) names its key; a given on
   CHECK(cells["friction_factor"] == "0.25");
   CHECK(std::stod(cells["ploughing_thrust_force_N"]) > 0.0);
   CHECK(cells["ploughing_model"] == "wave");
+}
+
+TEST_CASE("The key reference comes from the tables the scenes are read with", "[scene][keys]") {
+  const std::string all = kerf::analytic_scene_keys_markdown();
+  for (const auto& section : kerf::analytic_scene_sections()) {
+    CHECK_THAT(all, Contains("#### `" + section + "` ("));
+    CHECK(kerf::analytic_scene_keys_markdown(section).rfind("#### `" + section + "`", 0) == 0);
+  }
+  CHECK_THROWS_WITH(kerf::analytic_scene_keys_markdown("modles"), Contains("SECTION = modles") && Contains("'models'"));
+  // Defaults as printed are the ones a scene gets (the member initialisers, written once).
+  CHECK_THAT(all, Contains("| `clearance_deg` | deg | a value in (0, 90) | 7 |"));
+  CHECK_THAT(all, Contains("| `force` | - | `auto`, `merchant`, `liu_li`, `oxley`, `trepanning` | `auto` |"));
+  auto doc = orthogonal_scene();
+  doc["models"].erase("force");
+  const auto scene = kerf::parse_analytic_scene(doc);
+  CHECK(scene.force_auto);
+  CHECK(scene.clearance_rad == kerf::units::deg_to_rad(7.0));
+  CHECK(scene.liu_li.lower_limit_margin_rad == kerf::units::deg_to_rad(1.0));
+  CHECK(scene.contact_shear_angle == kerf::ShearAngleModel::merchant);
+  // Registry names become the enums their lines construct; the order of contact-length names is kept.
+  doc = orthogonal_scene();
+  doc["models"]["shear_angle"] = "lee_shaffer";
+  doc["models"]["friction_closure"] = "constant";
+  doc["models"]["contact_length"] = Json::array({"vinogradov_mssp", "altintas"});
+  doc["models"]["contact_shear_angle"] = "mssp";
+  const auto named = kerf::parse_analytic_scene(doc);
+  CHECK(named.shear_angle == kerf::ShearAngleSource::lee_shaffer);
+  CHECK(named.liu_li.closure == kerf::FrictionClosure::constant);
+  REQUIRE(named.contact_lengths.size() == 2);
+  CHECK(named.contact_lengths[0].column == "contact_length_vinogradov_mssp_mm");
+  CHECK(named.contact_lengths[1].model == kerf::ContactLengthModel::altintas);
+  CHECK(named.contact_lengths[1].shear_angle == kerf::ShearAngleModel::lee_shaffer);
+  doc["models"]["contact_length"] = Json::array({"altintas_mep", "vinogradov", "altintas_mep"});
+  CHECK_THROWS_WITH(kerf::parse_analytic_scene(doc), "models.contact_length = altintas_mep: expected each "
+                                                     "contact-length model named once");
+  doc = orthogonal_scene();
+  doc["models"]["force"] = "trepanning";
+  CHECK_THROWS_WITH(kerf::parse_analytic_scene(doc), Contains("models.force = trepanning: expected an orthogonal-cut"));
+}
+
+namespace kerf {
+// src/material.cpp, outside the public headers: the keys the material loader accepts in each group.
+const std::vector<std::string>& material_group_keys(const std::string& group_name);
+}  // namespace kerf
+
+TEST_CASE("The material groups' key tables hold the keys the material loader accepts", "[scene][keys][material]") {
+  // The loader (src/material.cpp) refuses a key of no group before any model reads it; the tables are what the
+  // models read with: the two lists must be the same keys.
+  for (const auto& section : kerf::material_key_sections()) {
+    const std::string group(section.name.substr(std::string_view("material.").size()));
+    std::vector<std::string> table_keys;
+    const std::string md = section.markdown();
+    for (std::size_t at = md.find("\n| `"); at != std::string::npos; at = md.find("\n| `", at + 1)) {
+      const std::size_t start = at + 4;
+      table_keys.push_back(md.substr(start, md.find('`', start) - start));
+    }
+    auto loader_keys = kerf::material_group_keys(group);
+    std::sort(table_keys.begin(), table_keys.end());
+    std::sort(loader_keys.begin(), loader_keys.end());
+    INFO(group);
+    CHECK(table_keys == loader_keys);
+  }
+  // A default the table prints is the one the model gets (psic's microstructure leaves the Taylor factor out).
+  const auto psic = kerf::load_material(Json("psic"), "material");
+  Json inline_material = {{"elastic", *psic.group("elastic")}, {"microstructure", *psic.group("microstructure")}};
+  inline_material["microstructure"].erase("taylor_factor");
+  inline_material["microstructure"].erase("boundary_spacing_um");
+  const auto record = kerf::load_material(inline_material, "material");
+  CHECK_THAT(kerf::analytic_scene_keys_markdown("material.microstructure"),
+             Contains("| `taylor_factor` | - | a positive value | 3.06 |"));
+  const auto micro = kerf::microstructure_from_material(record, "material");
+  CHECK(micro.hall_petch.taylor_factor == 3.06);
+  CHECK(micro.dislocation.taylor_factor == 3.06);
+  CHECK_THAT(micro.dislocation.boundary_spacing_m, WithinRel(micro.hall_petch.grain_size_m, 1e-12));  // default: D
 }

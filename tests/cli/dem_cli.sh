@@ -36,12 +36,13 @@ OMP_WAIT_POLICY=passive "$bin" run "$scene" "${small[@]}" --set engine.min_paral
 cmp -s "$work/t1/curve.csv" "$work/t2/curve.csv" || fail "1 and 2 threads differ"
 cmp -s "$work/t1/cracks.csv" "$work/t2/cracks.csv" || fail "crack tables differ between 1 and 2 threads"
 
-# Killed and resumed equals uninterrupted (curve, crack table, frame list).
+# Killed and resumed equals uninterrupted (curve, crack table, frame list, frames with their displacements).
 ck=(--set specimen.width_mm=0.2 --set specimen.height_mm=0.4 --set specimen.growth_steps=2000 --set specimen.relax_steps=500
     --set loading.quasi_static_check=false --set loading.speed_m_per_s=0.1 --set output.frame_every_samples=20)
 comp="$src/data/scenes/dem_compression.json"
 "$bin" run "$comp" "${ck[@]}" --out "$work/c_full" --threads 1 >/dev/null 2>&1 || fail "uninterrupted compression"
-expect_kill_resume_equal "$work/c_full" "$work/c_kill" "curve.csv cracks.csv result.pvd" \
+expect_kill_resume_equal "$work/c_full" "$work/c_kill" \
+  "curve.csv cracks.csv result.pvd $(cd "$work/c_full" && echo frame_*.vtp cracks_*.vtp)" \
   run "$comp" "${ck[@]}" --threads 1 --checkpoint-every 3
 expect_input_error "DIR = $work/nowhere" resume "$work/nowhere"
 expect_input_error "calibration.free = stiffness" run "$src/data/scenes/dem_calibrate.json" --set 'calibration.free=["stiffness"]' --out "$work/x"

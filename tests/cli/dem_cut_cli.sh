@@ -73,11 +73,15 @@ in_range "$(result "$work/g1" particles_removed_by_grooves)" 0 1e9 || fail "groo
 awk -v a="$(value "$work/g1" n_particles)" -v b="$(value "$work/c1" n_particles)" 'BEGIN { exit !(a < b) }' ||
   fail "grooved workpiece has no fewer disks"
 # A rerun (other frame spacing) gives identical forces; killed and resumed equals uninterrupted (forces,
-# crack table, frame list).
+# crack table, frame list, frames).
 "$bin" run "$scene" "${small[@]}" --set output.frame_every_samples=200 --out "$work/k_full" --threads 1 >/dev/null 2>&1 ||
   fail "uninterrupted cut"
 cmp -s "$work/c1/forces.csv" "$work/k_full/forces.csv" || fail "a rerun gave different forces"
-expect_kill_resume_equal "$work/k_full" "$work/k_kill" "forces.csv cracks.csv result.pvd" \
+# The frames too (displacements since the first frame: their reference read back by the resumed run).
+[ "$(ls "$work/k_full"/frame_*.vtp | wc -l)" -ge 3 ] || fail "fewer than 3 frames in the kill/resume cut"
+! ls "$work/k_full"/frame_*.png >/dev/null 2>&1 || fail "frame PNGs without output.frame_png"
+expect_kill_resume_equal "$work/k_full" "$work/k_kill" \
+  "forces.csv cracks.csv result.pvd $(cd "$work/k_full" && echo frame_*.vtp cracks_*.vtp)" \
   run "$scene" "${small[@]}" --set output.frame_every_samples=200 --threads 1 --checkpoint-every 40
 
 # Replicates: a study of one condition in OUT/replicates (one item directory per packing seed, the study

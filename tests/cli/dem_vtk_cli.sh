@@ -2,7 +2,9 @@
 # kerf-dem's VTK frames (issue 23 item 5) read back with the VTK library (python3-vtk9): binary (appended
 # raw) PolyData; the disks with id, radius_mm, group and held; the joints as lines; the tool's faces as their
 # own part (walls_NNNN.vtp); the crack events as points equal to cracks.csv; result.pvd listing the three
-# parts of every frame by name; positions in mm like the CSVs.
+# parts of every frame by name; positions in mm like the CSVs (issue 40 item 9:) each disk's displacement_m since
+# the first frame and its broken_joints, each crack's place as in cracks.csv, a PNG per frame with
+# output.frame_png; in a windowed cut, id the workpiece index and displacements that follow each disk across frames.
 # Usage: dem_vtk_cli.sh <dir of built programs> <source dir>
 source "$(dirname "$0")/lib/dem_common.sh" "$@"
 
@@ -15,11 +17,12 @@ done
 scene="$src/data/scenes/dem_cut.json"
 small=(--set specimen.width_mm=0.4 --set specimen.height_mm=0.25 --set specimen.growth_steps=2000
        --set specimen.relax_steps=500 --set cut.depth_of_cut_mm=0.05 --set cut.length_mm=0.08
-       --set output.frame_every_samples=40 --set cut.speed_m_per_s=2)
+       --set output.frame_every_samples=40 --set cut.speed_m_per_s=2 --set output.frame_png=true)
 "$bin" run "$scene" "${small[@]}" --threads 1 --out "$work/c" >/dev/null 2>"$work/err" || fail "cut run: $(cat "$work/err")"
 ! grep -q 'format="ascii"' "$work/c"/*.vtp || fail "an ASCII array in a frame"
 "$python" - "$work/c" <<'PY' || fail "the frames read back with VTK differ from the run"
 import csv, json, sys, xml.etree.ElementTree as ET
+import numpy as np
 import vtk
 from vtk.util.numpy_support import vtk_to_numpy as np_of
 
@@ -34,6 +37,14 @@ for d in sets:  # every frame: part 0 the disks, 1 the walls, 2 the cracks
     assert (part, name) in {(0, "particles"), (1, "walls"), (2, "cracks")}, (part, name)
     assert file.startswith({0: "frame_", 1: "walls_", 2: "cracks_"}[part]), file
 last = {int(d.get("part")): d.get("file") for d in sets if d.get("timestep") == frames[-1]}
+
+def place_ok(cracks, rows):
+    """The crack frame's place codes (1 chip, 2 subsurface) row by row as cracks.csv's place column."""
+    place = np_of(cracks.GetPointData().GetArray("place"))
+    codes = [{"chip": 1, "subsurface": 2}[row["place"]] for row in rows]
+    assert list(place) == codes, (list(place)[:10], codes[:10])
+    assert {1, 2} <= set(codes), "a cut with cracks in the chip and below the cut line expected"
+    return True
 
 def read(name):
     r = vtk.vtkXMLPolyDataReader()
@@ -79,6 +90,82 @@ for k, row in enumerate(rows):
     assert abs(cxy[k, 1] - float(row["y_mm"])) <= 1e-12 * max(1, abs(cxy[k, 1])), (k, cxy[k], row)
     assert mode[k] == {"tension": 1, "shear": 2}[row["mode"]], (k, mode[k], row["mode"])
     assert abs(length[k] - float(row["length_um"])) <= 1e-9 * length[k], (k, length[k], row)
+assert place_ok(cracks, rows)
+
+# Every frame: the same disks (id), displacement_m = position - position at the first frame (z = 0; zero in
+# the first frame), broken_joints per disk up by as many as the disk's joints (lines) went down.
+def lines_per_disk(frame):
+    cells = np_of(frame.GetLines().GetData()).reshape(-1, 3)  # (2, i, j) per line
+    return np.bincount(cells[:, 1:].ravel(), minlength=frame.GetNumberOfPoints())
+
+first = read(sorted(d.get("file") for d in sets if d.get("part") == "0")[0])
+xy0 = np_of(first.GetPoints().GetData())
+lines0, broken0 = lines_per_disk(first), np_of(first.GetPointData().GetArray("broken_joints"))
+moved = False
+for d in sets:
+    if d.get("part") != "0":
+        continue
+    frame = read(d.get("file"))
+    fd = frame.GetPointData()
+    assert (np_of(fd.GetArray("id")) == np.arange(n)).all(), d.get("file")
+    disp = np_of(fd.GetArray("displacement_m"))
+    assert disp.shape == (n, 3) and (disp[:, 2] == 0).all(), disp.shape
+    expected = (np_of(frame.GetPoints().GetData()) - xy0) / 1000  # mm -> m
+    assert np.abs(disp - expected).max() <= 1e-15, (d.get("file"), np.abs(disp - expected).max())
+    if frame.GetPointData().GetArray("broken_joints") is None:
+        raise AssertionError("no broken_joints")
+    broken = np_of(fd.GetArray("broken_joints"))
+    assert ((broken - broken0) == (lines0 - lines_per_disk(frame))).all(), d.get("file")
+    assert broken.sum() % 2 == 0
+    moved = moved or np.abs(disp).max() > 1e-7
+assert (np_of(first.GetPointData().GetArray("displacement_m")) == 0).all()
+assert moved, "no disk moved 0.1 um in the whole cut"
+assert broken.sum() > broken0.sum(), "no joint broke in the cut"
+
+# A PNG per frame (output.frame_png).
+for d in sets:
+    if d.get("part") == "0":
+        png = f"{out}/{d.get('file')[:-4]}.png"
+        assert open(png, "rb").read(8) == b"\x89PNG\r\n\x1a\n", png
 print("vtk frames: ok")
+PY
+# A windowed cut (active window, rebuilt as the tool travels): each frame's disks are the running window's,
+# `id` their index in the workpiece; displacements follow each disk across frames (also one that entered the
+# window after the first frame: the workpiece's reference holds every disk).
+"$bin" run "$scene" "${small[@]/specimen.width_mm=0.4/specimen.width_mm=0.8}" --set cut.length_mm=0.15 \
+    --set active_window.enabled=true --set output.frame_png=false --threads 1 --out "$work/w" >/dev/null 2>"$work/err" ||
+  fail "windowed cut run: $(cat "$work/err")"
+"$python" - "$work/w" <<'PY' || fail "the windowed cut's frames (above)"
+import json, sys, xml.etree.ElementTree as ET
+import numpy as np
+import vtk
+from vtk.util.numpy_support import vtk_to_numpy as np_of
+
+out = sys.argv[1]
+assert json.load(open(f"{out}/summary.json"))["active_window"]["rebuilds"] >= 2
+files = sorted(d.get("file") for d in ET.parse(f"{out}/result.pvd").getroot().findall("./Collection/DataSet")
+               if d.get("part") == "0")
+frames = []
+for name in files:
+    r = vtk.vtkXMLPolyDataReader()
+    r.SetFileName(f"{out}/{name}")
+    r.Update()
+    pd = r.GetOutput().GetPointData()
+    ids = np_of(pd.GetArray("id"))
+    assert len(np.unique(ids)) == len(ids), name
+    frames.append({int(i): (xy, d) for i, xy, d in zip(ids, np_of(r.GetOutput().GetPoints().GetData()),
+                                                       np_of(pd.GetArray("displacement_m")))})
+assert all((d == 0).all() for _, d in frames[0].values())
+entered = 0
+for k, frame in enumerate(frames[1:], 1):
+    for i, (xy, d) in frame.items():
+        assert np.isfinite(d).all(), (files[k], i)
+        for j in (0, k - 1):  # against the first frame and the one before
+            if i in frames[j]:
+                xy_j, d_j = frames[j][i]
+                assert np.abs((d - d_j) - (xy - xy_j) / 1000).max() <= 1e-15, (files[k], i, j)
+        entered += i not in frames[0]
+assert entered > 0, "no disk entered the window after the first frame"
+print("windowed frames: ok")
 PY
 echo "dem vtk: ok"

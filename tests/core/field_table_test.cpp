@@ -4,6 +4,9 @@
 
 #include <catch2/catch.hpp>
 #include <numbers>
+#include <optional>
+#include <string>
+#include <vector>
 
 namespace {
 
@@ -149,4 +152,57 @@ TEST_CASE("field table: texts with their check, and sets of names as flags") {
   CHECK_THAT(md, Catch::Matchers::Contains("| `name` | - | a file name | `calibrated` | a file name |"));
   CHECK_THAT(md, Catch::Matchers::Contains("| `free` | - | a list of `modulus`, `ratio`, `strength` | `modulus`, `strength` |"));
   CHECK(kerf::fields_markdown(output_table(), Output{}, false).rfind("| `name`", 0) == 0);  // rows only
+}
+
+namespace {
+struct Lists {
+  std::optional<double> ratio;       // optional, no default
+  double speed_m_per_s = 0.0;        // must convert to a normal SI value
+  std::vector<std::string> order = {"b"};
+};
+constexpr std::string_view kListNames[] = {"a", "b", "c"};
+const kerf::FieldTable<Lists>& lists_table() {
+  using namespace kerf;
+  static const FieldTable<Lists> t{
+      optional_number_field("ratio", units::kNone, Range::positive(), "a ratio", &Lists::ratio, "the other one's"),
+      number_field("speed_mm", units::kMm, Range::non_negative(), "a length", &Lists::speed_m_per_s),
+      NameListField<Lists>{"order", kListNames, "names in order", [](const Lists& l) { return l.order; },
+                           [](Lists& l, const std::vector<std::string>& v) { l.order = v; }}};
+  return t;
+}
+Lists read_lists(const kerf::Json& j, kerf::SiCheck si_check = kerf::SiCheck::on) {
+  kerf::ObjectReader r(j, "models");
+  Lists l;
+  kerf::read_fields_into(r, lists_table(), l, si_check);
+  r.finish();
+  return l;
+}
+}  // namespace
+
+TEST_CASE("field table: optional numbers, ordered name lists, values that leave SI") {
+  const Lists none = read_lists(kerf::Json::object());
+  CHECK(!none.ratio);
+  CHECK(none.order == std::vector<std::string>{"b"});
+  CHECK(read_lists({{"ratio", 0.5}}).ratio == 0.5);
+  CHECK(read_lists({{"ratio", nullptr}}).ratio == std::nullopt);
+  CHECK_THROWS_WITH(read_lists({{"ratio", 0}}), "models.ratio = 0: expected a positive value");
+  // The order given is kept (a CSV's columns follow it); one name alone is a list of one.
+  CHECK(read_lists({{"order", {"c", "a"}}}).order == std::vector<std::string>{"c", "a"});
+  CHECK(read_lists({{"order", "c"}}).order == std::vector<std::string>{"c"});
+  CHECK_THROWS_WITH(read_lists({{"order", {"a", "d"}}}), Catch::Matchers::Contains("models.order = d: expected one of"));
+  CHECK_THROWS_WITH(read_lists({{"order", {1}}}), Catch::Matchers::Contains("models.order = 1: expected one of"));
+  CHECK_THROWS_WITH(read_lists({{"order", 3}}), "models.order = 3: expected a list of names");
+  // With SiCheck::on (the analytic scenes) a value whose SI conversion underflows is refused, naming the key (as
+  // ObjectReader::get_si does); off (the DEM's tables, the default) reads the plain conversion.
+  CHECK_THROWS_WITH(read_lists({{"speed_mm", 1e-320}}), Catch::Matchers::Contains("models.speed_mm = ") &&
+                                                            Catch::Matchers::Contains("stays a finite, non-zero number"));
+  CHECK(read_lists({{"speed_mm", 1e-320}}, kerf::SiCheck::off).speed_m_per_s == kerf::units::mm_to_m(1e-320));
+  CHECK(read_lists({{"speed_mm", 0}}).speed_m_per_s == 0.0);
+  // Absent optional values: not checked, not written, documented by their text.
+  CHECK_NOTHROW(kerf::check_fields(lists_table(), none));
+  CHECK(!kerf::fields_to_json(lists_table(), none).contains("ratio"));
+  CHECK(kerf::fields_to_json(lists_table(), read_lists({{"ratio", 2}})).at("ratio") == 2.0);
+  const std::string md = kerf::fields_markdown(lists_table());
+  CHECK_THAT(md, Catch::Matchers::Contains("| `ratio` | - | a positive value | the other one's | a ratio |"));
+  CHECK_THAT(md, Catch::Matchers::Contains("| `order` | - | a list of `a`, `b`, `c` | `b` | names in order |"));
 }

@@ -1,14 +1,17 @@
 #pragma once
 // Builds the analytic models' parameter structs from a material record, validating each group once and
-// rejecting unknown keys (errors name the path, e.g. "material.johnson_cook.A_MPa").
+// rejecting unknown keys (errors name the path, e.g. "material.johnson_cook.A_MPa"). Each group is read through
+// a field table (analytic/material_models.cpp), whose key reference is material_key_sections().
 //
 //   auto record = kerf::load_material(kerf::Json("aisi_1045"), "material");
 //   kerf::JohnsonCookParams jc = kerf::johnson_cook_from_material(record, "material");
 #include <string>
+#include <vector>
 
 #include "kerf/analytic/dislocation.hpp"
 #include "kerf/analytic/hall_petch.hpp"
 #include "kerf/analytic/johnson_cook.hpp"
+#include "kerf/analytic/key_sections.hpp"
 #include "kerf/analytic/oxley.hpp"
 #include "kerf/analytic/thermal.hpp"
 #include "kerf/material.hpp"
@@ -36,6 +39,9 @@ JohnsonCookParams johnson_cook_from_material(const MaterialRecord& material, con
 ThermalProperties thermal_from_material(const MaterialRecord& material, const std::string& path);
 MicrostructureModels microstructure_from_material(const MaterialRecord& material, const std::string& path);
 OxleyHeatFactors oxley_factors_from_material(const MaterialRecord& material, const std::string& path);
+/// The key tables of the groups read above ("material.elastic", ...), for `kerf-forces keys` and docs/scenes.md.
+const std::vector<SceneKeySection>& material_key_sections();
+
 /// The extended-Oxley material side: Johnson-Cook, thermal properties and eta/psi, validated.
 OxleyParams oxley_params_from_material(const MaterialRecord& material, const std::string& path,
                                        const JohnsonCookPolicy& policy = {});

@@ -1,6 +1,8 @@
 #pragma once
-// An analytic scene: the JSON file a user writes (documented key by key in docs/scenes.md), validated into
-// SI parameter structs. Only the models the scene names are built.
+// An analytic scene: the JSON file a user writes, validated into SI parameter structs. Only the models the scene
+// names are built. Each section is read through a field table (kerf/field_table.hpp) in analytic/scene.cpp: the
+// defaults are the member initialisers below, and docs/scenes.md's key tables are the tables' output
+// (`kerf-forces keys`, analytic_scene_keys_markdown).
 //
 //   kerf::Json doc = kerf::read_json_file("data/scenes/psic_liu_li.json");
 //   kerf::apply_override(doc, "tool.edge_radius_um=0.2");
@@ -33,8 +35,6 @@ enum class ForceModel { merchant, liu_li, oxley };
 /// r / t0 below which the edge changes the force by only a few percent: models.force = auto takes the
 /// sharp-tool model there, and the sharp-tool models warn above it.
 inline constexpr double kSharpEdgeRatio = 0.05;
-/// tool.clearance_deg when the scene gives none (recorded, not used by the ductile models).
-inline constexpr double kDefaultClearance_deg = 7.0;
 enum class DeformationModel { room_temperature, given, oxley };
 enum class ShearAngleSource { merchant, lee_shaffer, chip_ratio };
 enum class TurningThickness { equivalent, maximum };
@@ -60,13 +60,13 @@ struct AnalyticScene {
   // Tool
   double rake_rad = 0.0;
   double edge_radius_m = 0.0;
-  double clearance_rad = units::deg_to_rad(kDefaultClearance_deg);  ///< tool.clearance_deg
+  double clearance_rad = units::deg_to_rad(7.0);  ///< tool.clearance_deg (recorded, not used by the ductile models)
 
   // Cut (for turning, thickness and width come from the round-nose chip)
   double uncut_chip_thickness_m = 0.0;
   double width_m = 0.0;
   double speed_m_per_s = 0.0;
-  double workpiece_temperature_K = 293.15;
+  double workpiece_temperature_K = 293.15;  ///< default: the Johnson-Cook room temperature, else this
   std::optional<TurningScene> turning;
   std::optional<double> friction_angle_rad;  ///< given, from a friction coefficient, or from measured forces
   std::string friction_origin;               ///< "friction_angle_deg", "friction_coefficient", "measured forces"
@@ -76,15 +76,16 @@ struct AnalyticScene {
   std::optional<double> given_strain_rate_per_s;  ///< for the room_temperature deformation model
 
   // Models
-  ForceModel force = ForceModel::liu_li;
-  bool force_auto = false;          ///< the scene asked for 'auto' (CSV columns then cover every choice)
+  ForceModel force = ForceModel::liu_li;  ///< the model named, or the one 'auto' chose
+  bool force_auto = true;           ///< the scene asked for 'auto' (CSV columns then cover every choice)
   std::string force_choice_reason;  ///< why 'auto' chose the force model (empty when named)
   FlowStressModel flow_stress;
-  std::vector<std::string> flow_stress_terms;
+  std::vector<std::string> flow_stress_terms = {"johnson_cook"};
   DeformationModel deformation = DeformationModel::room_temperature;
   ShearAngleSource shear_angle = ShearAngleSource::merchant;
   LiuLiParams liu_li;  ///< closure, lower limit, margin, quadrature (geometry filled at prediction)
   PloughingModel ploughing = PloughingModel::wave;  ///< the force under the edge below the stagnation point
+  ShearAngleModel contact_shear_angle = ShearAngleModel::merchant;  ///< of contact-length names without a suffix
   std::vector<ContactLengthRequest> contact_lengths;
 
   /// Bifano's ductile-brittle critical depth, when the material has E, hardness and toughness.
@@ -129,5 +130,14 @@ void refuse_dem_scene(const Json& document);
 
 /// Validates a scene document. Throws InputError naming the first bad field.
 AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache = nullptr);
+
+/// The sections of the analytic scenes' key reference ("tool", "cut", "cut.turning", ..., "models.trepanning"), in
+/// the order analytic_scene_keys_markdown prints them (a name may stand for two tables: the orthogonal and the
+/// trepanning scene's `tool`).
+std::vector<std::string> analytic_scene_sections();
+/// The key reference of one section ("" for all) as Markdown, from the field tables the parsers read with
+/// (`kerf-forces keys`, docs/scenes.md): "#### `tool` (about)" and a table per section. An unknown section is an
+/// InputError on SECTION listing the valid ones.
+std::string analytic_scene_keys_markdown(const std::string& section = "");
 
 }  // namespace kerf

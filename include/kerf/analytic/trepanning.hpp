@@ -41,6 +41,11 @@ struct TrepanningTool {
   double mean_radius_m() const { return (outer_diameter_m + inner_diameter_m) / 4.0; }  ///< r of Eq. 22
 };
 
+namespace units {
+constexpr double rpm_to_rev_per_s(double rpm) { return rpm / 60.0; }
+constexpr double rev_per_s_to_rpm(double rev_per_s) { return rev_per_s * 60.0; }
+}  // namespace units
+
 /// Feed rate and spindle speed. Scene keys cut.feed_rate_um_per_s, cut.spindle_speed_rpm.
 struct TrepanningCut {
   double feed_rate_m_per_s = 0.0;        ///< v_f > 0

@@ -18,6 +18,9 @@
 //   kerf::TrepanningForces f = kerf::trepanning_forces(s.tool, s.cut, s.groups);
 #include <optional>
 #include <string>
+#include <vector>
+
+#include "kerf/analytic/key_sections.hpp"
 
 #include "kerf/analytic/trepanning.hpp"
 #include "kerf/json_reader.hpp"
@@ -41,5 +44,8 @@ struct TrepanningScene {
 
 /// Validates a scene document; InputError names the first bad field by its dotted path.
 TrepanningScene parse_trepanning_scene(const Json& document, MaterialCache* cache = nullptr);
+
+/// The trepanning scene's sections, read through the field tables they print (analytic_scene_keys_markdown).
+const std::vector<SceneKeySection>& trepanning_key_sections();
 
 }  // namespace kerf

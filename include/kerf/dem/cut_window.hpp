@@ -89,6 +89,8 @@ class CutWindow {
 
   /// The whole workpiece as of the last sync.
   const Simulation& workpiece() const { return full_; }
+  /// The workpiece's index of the running window's disk `u` (the window built last).
+  std::int32_t workpiece_index(std::size_t u) const { return global_of_[u]; }
   /// Every crack of the cut so far (joint indices of the whole workpiece), as of the last sync.
   const std::vector<CrackEvent>& cracks() const { return full_.cracks(); }
   /// The workpiece as the cut left it, without the removed chips (for pictures).

@@ -9,7 +9,9 @@
 //   write_walls_vtp(dir / "walls_0003.vtp", sim.walls());
 //   write_cracks_vtp(dir / "cracks_0003.vtp", sim.cracks());
 //   write_pvd(dir / "result.pvd", {{time_s, {"frame_0003.vtp", "walls_0003.vtp", "cracks_0003.vtp"}}});
+#include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -19,16 +21,26 @@
 
 namespace kerf::dem {
 
+/// What a particle frame shows beside the simulation's own state, one entry per disk of `sim` (both empty: the
+/// disk's index in `sim` and no displacement array).
+struct FrameDiskArrays {
+  std::vector<std::int64_t> id;          ///< the disk's index in the run's workpiece (a windowed cut: not in its window)
+  std::vector<double> displacement_m;    ///< x, y per disk: since the run's first frame (NaN: not known)
+};
 /// Disks (point data: id, the disk's index, the same in every frame of a run; radius_mm, velocity_m_per_s,
-/// spin_rad_per_s, group: 0 free, 1 and 2 velocity prescribed; held: 1 when group > 0) and active joints
-/// (cell data: intact_elements, bond; -1 for the disks' vertex cells).
-void write_vtp_frame(const std::filesystem::path& path, const Simulation& sim);
+/// spin_rad_per_s, group: 0 free, 1 and 2 velocity prescribed; held: 1 when group > 0; displacement_m, a
+/// 3-vector with z = 0, when `extra` has it; broken_joints, the disk's joints that are broken, inactive)
+/// and active joints (cell data: intact_elements, bond; -1 for the disks' vertex cells).
+void write_vtp_frame(const std::filesystem::path& path, const Simulation& sim, const FrameDiskArrays& extra = {});
 /// The enabled walls (platens, the tool's faces) as lines (cell data: wall, the index; force_N, the force of
 /// the disks on it; velocity_m_per_s).
 void write_walls_vtp(const std::filesystem::path& path, const std::vector<Wall>& walls);
 /// Crack events as points (point data: mode 1 = tension 2 = shear, time_s, orientation_deg, length_um, bond,
-/// element).
-void write_cracks_vtp(const std::filesystem::path& path, const std::vector<CrackEvent>& cracks);
+/// element; with a cut line `y_cut_m`, place: kCrackPlaceChip or kCrackPlaceSubsurface, as crack_place).
+void write_cracks_vtp(const std::filesystem::path& path, const std::vector<CrackEvent>& cracks,
+                      std::optional<double> y_cut_m = std::nullopt);
+/// The crack frames' `place` codes (cracks.csv's place column: chip, subsurface).
+inline constexpr std::int32_t kCrackPlaceChip = 1, kCrackPlaceSubsurface = 2;
 /// A collection listing, per time, the files of that frame as parts 0, 1, ... each named by its file's
 /// prefix (frame_: "particles", walls_, cracks_).
 void write_pvd(const std::filesystem::path& path, const std::vector<std::pair<double, std::vector<std::string>>>& frames);

@@ -33,6 +33,7 @@ namespace kerf::dem {
 /// The scene's "output" section.
 struct OutputSpec {
   int frame_every_samples = 100;  ///< VTK frames every N samples (and the final state); 0: none
+  bool frame_png = false;         ///< a PNG picture (frame_K.png) with each VTK frame
 };
 const FieldTable<OutputSpec>& output_fields();
 
