@@ -33,25 +33,25 @@ def block(name):
     return ExtractBlock(Input=series, Selectors=[f"/Root/{name}"])
 
 
+def filled_circles(source, scale_array, scale_factor):
+    """A filled circle at every point, its diameter scale_factor times scale_array (or scale_factor alone)."""
+    glyphs = Glyph(Input=source, GlyphType="2D Glyph")
+    glyphs.GlyphType.GlyphType = "Circle"
+    glyphs.GlyphType.Filled = 1
+    glyphs.OrientationArray = ["POINTS", "No orientation array"]
+    glyphs.ScaleArray = ["POINTS", scale_array]
+    glyphs.ScaleFactor = scale_factor
+    glyphs.GlyphMode = "All Points"
+    return glyphs
+
+
 particles, walls, cracks = block("particles"), block("walls"), block("cracks")
 # 2. Disks: filled circles, diameter 2 * radius_mm; joints: the particle block's lines.
-disks = Glyph(Input=particles, GlyphType="2D Glyph")
-disks.GlyphType.GlyphType = "Circle"
-disks.GlyphType.Filled = 1
-disks.OrientationArray = ["POINTS", "No orientation array"]
-disks.ScaleArray = ["POINTS", "radius_mm"]
-disks.ScaleFactor = 2.0
-disks.GlyphMode = "All Points"
+disks = filled_circles(particles, "radius_mm", 2.0)
 joints = ExtractCellsByType(Input=particles)
 joints.CellTypes = ["Line"]
 # 4. Cracks: small circles of a fixed size.
-crack_marks = Glyph(Input=cracks, GlyphType="2D Glyph")
-crack_marks.GlyphType.GlyphType = "Circle"
-crack_marks.GlyphType.Filled = 1
-crack_marks.OrientationArray = ["POINTS", "No orientation array"]
-crack_marks.ScaleArray = ["POINTS", "No scale array"]
-crack_marks.ScaleFactor = 0.008
-crack_marks.GlyphMode = "All Points"
+crack_marks = filled_circles(cracks, "No scale array", 0.008)
 
 layout = CreateLayout("kerf-dem frames")
 layout.SplitHorizontal(0, 0.5)  # cells 1 (left) and 2 (right)
