@@ -181,6 +181,15 @@ def test_acceptance_asks_a_domain_only_for_the_trends_the_study_runs_there(tmp_p
     assert "trapezoidal / regular at 0.1 mm (kerf large): no cuts" in (tmp_path / "out" / "report.md").read_text()
 
 
+def test_t_quantile_at_fractional_dof_lies_between_its_integers():
+    # Welch's dof are fractional: t falls from t(1) = 12.706 to t(2) = 4.303 without a jump, and at an integer it
+    # is the table's. At 1.97 dof the exact quantile is about 4.37; interpolating in 1 / dof gives a little more.
+    assert math.isclose(st.t(1.0), 12.706, abs_tol=1e-3) and math.isclose(st.t(2.0), 4.303, abs_tol=1e-3)
+    assert st.t(1.0) > st.t(1.5) > st.t(1.97) > st.t(2.0)
+    assert 4.37 <= st.t(1.97) < 4.5
+    assert st.t(0.5) == st.t(1.0) and math.isclose(st.t(math.inf), 1.96, abs_tol=1e-3)
+
+
 def test_t_quantile_beyond_the_table_falls_towards_the_normal():
     # Tabulated 2.042 at 30 degrees of freedom; 2.0211 at 40, 2.0003 at 60, 1.9799 at 120 (standard tables).
     assert st.t(30) > st.t(31) > st.t(40) > 1.96
