@@ -207,8 +207,9 @@ std::vector<double> read_frame_reference(const fs::path& out) {
   const std::size_t head = kReferenceMagic.size() + sizeof(std::uint64_t);
   std::uint64_t n = 0;
   if (bytes.size() >= head) std::memcpy(&n, bytes.data() + kReferenceMagic.size(), sizeof n);
+  // The count read against the bytes that follow (not head + n * 8, which a corrupt count could wrap).
   if (bytes.size() < head || bytes.compare(0, kReferenceMagic.size(), kReferenceMagic) != 0 ||
-      bytes.size() != head + n * sizeof(double))
+      (bytes.size() - head) % sizeof(double) != 0 || n != (bytes.size() - head) / sizeof(double))
     return {};
   std::vector<double> reference(n);
   std::memcpy(reference.data(), bytes.data() + head, n * sizeof(double));
