@@ -376,20 +376,10 @@ const std::vector<SceneKeySection>& key_sections() {
 }
 }  // namespace
 
-std::vector<std::string> analytic_scene_sections() {
-  std::vector<std::string> names;
-  for (const auto& s : key_sections())
-    if (std::find(names.begin(), names.end(), s.name) == names.end()) names.emplace_back(s.name);
-  return names;
-}
+std::vector<std::string> analytic_scene_sections() { return key_section_names(key_sections()); }
 
 std::string analytic_scene_keys_markdown(const std::string& section) {
-  std::string md;
-  for (const auto& s : key_sections())
-    if (section.empty() || s.name == section)
-      md += fmt::format("{}#### `{}` ({})\n\n{}", md.empty() ? "" : "\n", s.name, s.about, s.markdown());
-  if (md.empty()) throw InputError("SECTION", section, describe_choices(section, analytic_scene_sections()));
-  return md;
+  return key_sections_markdown(key_sections(), section);
 }
 
 void refuse_dem_scene(const Json& document) {

@@ -10,18 +10,14 @@
 #include "kerf/dem/study.hpp"
 #include "kerf/dem/toughness.hpp"
 #include "kerf/error.hpp"
+#include "kerf/key_sections.hpp"
 
 namespace kerf::dem {
 
 namespace {
 
-struct SectionKeys {
-  std::string_view name, about;
-  std::function<std::string()> markdown;
-};
-
-const std::vector<SectionKeys>& sections() {
-  static const std::vector<SectionKeys> list{
+const std::vector<SceneKeySection>& sections() {
+  static const std::vector<SceneKeySection> list{
       {"material", "every kind; or `{\"base\": \"NAME\"}` and overrides: a library material of data/materials/",
        material_keys_markdown},
       {"specimen", "every kind; or `{\"file\": \"specimen.json\"}`, a specimen saved by kind `specimen`",
@@ -45,20 +41,8 @@ const std::vector<SectionKeys>& sections() {
 
 }  // namespace
 
-std::vector<std::string> scene_sections() {
-  std::vector<std::string> names;
-  for (const auto& s : sections())
-    if (names.empty() || names.back() != s.name) names.emplace_back(s.name);
-  return names;
-}
+std::vector<std::string> scene_sections() { return key_section_names(sections()); }
 
-std::string scene_keys_markdown(const std::string& section) {
-  std::string md;
-  for (const auto& s : sections())
-    if (section.empty() || s.name == section)
-      md += fmt::format("{}#### `{}` ({})\n\n{}", md.empty() ? "" : "\n", s.name, s.about, s.markdown());
-  if (md.empty()) throw InputError("SECTION", section, describe_choices(section, scene_sections()));
-  return md;
-}
+std::string scene_keys_markdown(const std::string& section) { return key_sections_markdown(sections(), section); }
 
 }  // namespace kerf::dem
