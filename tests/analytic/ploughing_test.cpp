@@ -184,7 +184,7 @@ TEST_CASE("Wave model: beyond alpha = eta the field is capped, reported, finite 
   CHECK_THAT(nearly.thrust, WithinRel(1.0, 1e-5));
 }
 
-TEST_CASE("Wave model: a friction factor outside [0, 1] or a negative angle is refused", "[ploughing]") {
+TEST_CASE("Wave model: a friction factor outside 0 <= f <= 1 or a negative angle is refused", "[ploughing]") {
   CHECK_THROWS_AS(kerf::wave_model_force_factors(-0.1, 0.1, nullptr), kerf::InputError);
   CHECK_THROWS_AS(kerf::wave_model_force_factors(1.1, 0.1, nullptr), kerf::InputError);
   CHECK_THROWS_AS(kerf::wave_model_force_factors(std::nan(""), 0.1, nullptr), kerf::InputError);

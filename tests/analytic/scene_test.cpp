@@ -536,7 +536,7 @@ TEST_CASE("Ploughing: grows with the edge radius at a fixed thickness, vanishes 
   CHECK(predict_ploughing(0.1, 0.0).cutting_force_N == predict_ploughing(0.1, 0.0, "none").cutting_force_N);
 }
 
-TEST_CASE("Ploughing: a friction factor outside [0, 1) names its key; a given one is used", "[scene][ploughing]") {
+TEST_CASE("Ploughing: a friction factor outside 0 <= f < 1 names its key, and a given one is used", "[scene][ploughing]") {
   for (double f : {-0.1, 1.0, 1.5}) {
     CAPTURE(f);
     Json doc = orthogonal_scene();

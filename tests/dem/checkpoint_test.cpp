@@ -202,7 +202,7 @@ TEST_CASE("checkpoint: a law record of an unknown name, a missing key or a value
   CHECK_THROWS_AS(serial::law_from_record<BondLaw>(r), kerf::ModelError);
 }
 
-TEST_CASE("checkpoint: an engine state of KERFDEM6 (the laws as raw variants) reads the same laws; another "
+TEST_CASE("checkpoint: an engine state of KERFDEM6 (the laws as raw variants) reads the same laws, and another "
           "version is refused naming it", "[checkpoint]") {
   for (const BondLaw& joint : {BondLaw(odd_flat_joint()), BondLaw(odd_parallel_bond())}) {
     Simulation sim(odd_material(joint), SimulationOptions{});

@@ -51,7 +51,7 @@ TEST_CASE("cut window: a window covering the whole workpiece is the full cut to 
   CHECK(a.result().main_force_n == b.result().main_force_n);
 }
 
-TEST_CASE("cut window: the window's size does not grow with the workpiece; chips, frozen and untouched disks",
+TEST_CASE("cut window: the window's size does not grow with the workpiece: chips, frozen and untouched disks",
           "[cut_window]") {
   // The same cut (depth, travel) on workpieces 0.6 and 1.2 mm long: twice the disks, the same window.
   CutParams p = windowed(3, 1, 2, 2);

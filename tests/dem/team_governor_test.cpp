@@ -35,7 +35,7 @@ double share(const std::vector<int>& v, int x) {
 
 }  // namespace
 
-TEST_CASE("team governor: all threads stay where they are faster; one probe window every 17", "[team_governor]") {
+TEST_CASE("team governor: all threads stay where they are faster, one probe window every 17", "[team_governor]") {
   TeamGovernor g;
   double now = 0;
   g.observe(0, now);  // the engine's first report starts the first window
@@ -65,7 +65,7 @@ TEST_CASE("team governor: one thread when it is faster, and all again when the c
   CHECK(g.switches() == 2);
 }
 
-TEST_CASE("team governor: a rate within the margin does not switch; one thread allowed is one", "[team_governor]") {
+TEST_CASE("team governor: a rate within the margin does not switch, and one thread allowed is one", "[team_governor]") {
   TeamGovernor g;
   double now = 0;
   g.observe(0, now);
