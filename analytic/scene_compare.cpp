@@ -1,6 +1,7 @@
 #include "kerf/analytic/scene_compare.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cctype>
@@ -322,6 +323,23 @@ SceneComparison compare_scene(const Json& scene_document, const std::filesystem:
     }
     return evaluate_scene_columns(d, cache.get());
   };
+  // What predict prints beside the forces: the regime against the critical depth and the guards that fired.
+  const auto diagnostics_at = [document, conditions, spec, cache](std::size_t line,
+                                                                   const std::vector<ConditionValue>& at) {
+    Json d = document;
+    for (std::size_t i = 0; i < conditions.size(); ++i) {
+      set_path(d, conditions[i].scene_path, at[i].si.value_or(0.0) / spec.conditions[i].unit.si);
+    }
+    const auto scene = parse_scene(d, cache.get());
+    scene->predict();
+    RowDiagnostics diagnostics{line, "", scene->guard_names(), scene->warnings()};
+    for (const auto& [name, value] : scene_columns(*scene)) {
+      if (name == "regime" || name == "grit_regime") {
+        diagnostics.regime = value.size() >= 2 && value.front() == '"' ? value.substr(1, value.size() - 2) : value;
+      }
+    }
+    return diagnostics;
+  };
   const auto predict_at = [columns_at, quantities, spec](const std::vector<ConditionValue>& at) {
     const Columns columns = columns_at(at);
     std::vector<double> values;
@@ -341,15 +359,7 @@ SceneComparison compare_scene(const Json& scene_document, const std::filesystem:
     p.conditions = row.conditions;
     p.values = predict_at(row.conditions);
     predicted.rows.push_back(std::move(p));
-    // What predict prints beside the forces: the regime against the critical depth and the guards that fired.
-    RowDiagnostics diagnostics{row.line, "", "", ""};
-    for (const auto& [name, value] : columns_at(row.conditions)) {
-      const std::string text = value.size() >= 2 && value.front() == '"' ? value.substr(1, value.size() - 2) : value;
-      if (name == "regime" || name == "grit_regime") diagnostics.regime = text;
-      if (name == "guards") diagnostics.guards = text;
-      if (name == "warnings") diagnostics.warnings = text;
-    }
-    out.rows.push_back(std::move(diagnostics));
+    out.rows.push_back(diagnostics_at(row.line, row.conditions));
   }
   out.comparison = compare(spec, measured, {PredictedSet{predicted, predict_at}});
   std::string notes = "\n## How the columns were matched\n\n";
@@ -359,7 +369,8 @@ SceneComparison compare_scene(const Json& scene_document, const std::filesystem:
            "not the model's own).\n\n| CSV line | regime | guards | warnings |\n|---|---|---|---|\n";
   for (const auto& r : out.rows) {
     notes += fmt::format("| {} | {} | {} | {} |\n", r.line, r.regime.empty() ? "-" : r.regime,
-                         r.guards.empty() ? "none" : r.guards, r.warnings.empty() ? "-" : r.warnings);
+                         r.guards.empty() ? "none" : fmt::format("{}", fmt::join(r.guards, ";")),
+                         r.warnings.empty() ? "-" : fmt::format("{}", fmt::join(r.warnings, "; ")));
   }
   out.report.extra_markdown += notes;
   return out;

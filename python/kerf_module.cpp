@@ -343,15 +343,8 @@ py::dict compare(const py::object& scene, const py::object& experiments, const p
     py::dict row;
     row["line"] = r.line;
     row["regime"] = r.regime.empty() ? py::object(py::none()) : py::object(py::str(r.regime));
-    std::vector<std::string> guards;
-    for (std::size_t start = 0; start < r.guards.size();) {  // guard names hold no ';'
-      const std::size_t end = std::min(r.guards.find(';', start), r.guards.size());
-      guards.push_back(r.guards.substr(start, end - start));
-      start = end + 1;
-    }
-    row["guards"] = string_list(guards);
-    // The row's warnings as one text (a warning may itself hold "; "): a list of one, empty when none.
-    row["warnings"] = string_list(r.warnings.empty() ? std::vector<std::string>{} : std::vector<std::string>{r.warnings});
+    row["guards"] = string_list(r.guards);
+    row["warnings"] = string_list(r.warnings);
     rows.append(row);
   }
   answer["rows"] = rows;

@@ -100,7 +100,7 @@ int run_compare(const std::string& scene_path, const std::vector<std::string>& o
   for (const auto& row : result.rows) {
     if (row.guards.empty() && (row.regime.empty() || row.regime == "ductile")) continue;
     fmt::print("line {:<12} regime {}, guards {}\n", row.line, row.regime.empty() ? "-" : row.regime,
-               row.guards.empty() ? "none" : row.guards);
+               row.guards.empty() ? "none" : fmt::format("{}", fmt::join(row.guards, ";")));
   }
   fmt::print("report            {} ({} files)\n", out_dir, files.size());
   return 0;

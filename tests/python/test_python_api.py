@@ -129,3 +129,17 @@ def test_dem_run_progress_counts_are_ints_and_tables_always_present(tmp_path):
     assert (particles["id"] == np.arange(n)).all()
     with pytest.raises(kerf.InputError, match="pvd"):
         kerf.dem.read_frames(tmp_path)
+
+
+def test_compare_rows_hold_each_rows_prediction_lists(tmp_path):
+    # The rows' guards and warnings are the prediction's own lists at each row's condition (not the CSV's joined
+    # text): the same lists kerf.predict gives at that edge radius.
+    csv_path = tmp_path / "edges.csv"
+    csv_path.write_text("edge_radius_um,cutting_force_N\n0.1,1.0\n5,2.0\n")
+    result = kerf.compare(ORTHOGONAL, csv_path, map={"tool.edge_radius_um": "edge_radius_um"})
+    assert len(result["rows"]) == 2
+    for row, edge in zip(result["rows"], (0.1, 5)):
+        alone = kerf.predict(ORTHOGONAL, tool__edge_radius_um=edge)
+        assert row["guards"] == alone["guards"] and row["warnings"] == alone["warnings"]
+        assert all(isinstance(w, str) for w in row["warnings"])
+    assert result["rows"][1]["guards"] or result["rows"][1]["warnings"]

@@ -42,8 +42,8 @@ struct SceneComparisonOptions {
 struct RowDiagnostics {
   std::size_t line = 0;  ///< the row's line in the CSV
   std::string regime;    ///< "ductile", "transition", "brittle" (a grit's, for trepanning); empty without a critical depth
-  std::string guards;    ///< the guards that fired, ';'-separated; empty when none
-  std::string warnings;  ///< '; '-separated
+  std::vector<std::string> guards;    ///< the names of the guards that fired; empty when none
+  std::vector<std::string> warnings;  ///< the prediction's validity warnings, one text each
 };
 
 struct SceneComparison {
