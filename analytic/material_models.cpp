@@ -141,6 +141,23 @@ const FieldTable<OxleyHeatFactors>& oxley_fields() {
   return table;
 }
 
+const FieldUnit kMPaSqrtM{"MPa m^0.5", units::mpa_to_pa, units::pa_to_mpa};
+
+const FieldTable<BrittleGroup>& brittle_fields() {
+  static const FieldTable<BrittleGroup> table{
+      optional_number_field("hardness_GPa", units::kGPa, Range::positive(), "hardness H",
+                            &BrittleGroup::hardness_Pa, "none"),
+      optional_number_field("fracture_toughness_MPa_sqrt_m", kMPaSqrtM, Range::positive(), "fracture toughness K_c",
+                            &BrittleGroup::fracture_toughness_Pa_sqrt_m, "none"),
+      optional_number_field("tensile_strength_MPa", units::kMPa, Range::positive(),
+                            "tensile strength (recorded: no analytic model reads it)", &BrittleGroup::tensile_strength_Pa,
+                            "none"),
+      optional_number_field("compressive_strength_MPa", units::kMPa, Range::positive(),
+                            "unconfined compressive strength (recorded: no analytic model reads it)",
+                            &BrittleGroup::compressive_strength_Pa, "none")};
+  return table;
+}
+
 }  // namespace
 
 const std::vector<SceneKeySection>& material_key_sections() {
@@ -152,7 +169,10 @@ const std::vector<SceneKeySection>& material_key_sections() {
       {"material.microstructure", "used by hall_petch and dislocation (with the elastic group)",
        [] { return fields_markdown(microstructure_fields()); }},
       {"material.oxley", "optional, used by oxley: the heat partition factors",
-       [] { return fields_markdown(oxley_fields()); }}};
+       [] { return fields_markdown(oxley_fields()); }},
+      {"material.brittle", "optional: hardness and toughness give the regime check's critical depth (with "
+                           "elastic.youngs_modulus_GPa); the hardness is the trepanning model's default",
+       [] { return fields_markdown(brittle_fields()); }}};
   return list;
 }
 
@@ -202,6 +222,15 @@ MicrostructureModels microstructure_from_material(const MaterialRecord& material
   hp.validate(group_path);
   d.validate(group_path);
   return m;
+}
+
+BrittleGroup brittle_group_from_material(const MaterialRecord& material, const std::string& path) {
+  const Json* group = material.group("brittle");
+  if (!group) return BrittleGroup{};
+  ObjectReader reader(*group, path + ".brittle");
+  const BrittleGroup b = read_fields(reader, brittle_fields(), BrittleGroup{});
+  reader.finish();
+  return b;
 }
 
 OxleyHeatFactors oxley_factors_from_material(const MaterialRecord& material, const std::string& path) {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "kerf/analytic/material_models.hpp"
 #include "kerf/csv_table.hpp"
 #include "kerf/error.hpp"
 #include "kerf/report.hpp"
@@ -103,8 +104,8 @@ TrepanningValidation run_trepanning_validation(const std::filesystem::path& case
   }
   v.paper_axial = error_metrics(t_axial, m_axial);
   v.paper_torque = error_metrics(t_torque, m_torque);
-  const Json& brittle = v.scene.material.require_group("brittle", "material", "the implied half angle and friction");
-  const double hardness_Pa = units::gpa_to_pa(brittle.at("hardness_GPa").get<double>());
+  v.scene.material.require_group("brittle", "material", "the implied half angle and friction");
+  const double hardness_Pa = brittle_group_from_material(v.scene.material, "material").hardness_Pa.value();
   v.implied_measured = implied_trepanning_material(v.measured_fit.groups, hardness_Pa);
   v.implied_theory = implied_trepanning_material(v.theory_fit.groups, hardness_Pa);
 
