@@ -368,6 +368,8 @@ Prediction predict(const AnalyticScene& scene) {
   return p;
 }
 
+// Long (~85 lines) for a reason: the CSV's column list, in column order, one cell a line; split, the order would be
+// spread over functions.
 void write_prediction_cells(const AnalyticScene& scene, const Prediction& p, CellWriter& w) {
   const double width_mm = units::m_to_mm(p.width_m);
 

@@ -391,27 +391,11 @@ void refuse_dem_scene(const Json& document) {
                                json_value_text(kind)));
 }
 
-AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
-  refuse_dem_scene(document);
-  ObjectReader root(document, "");
-  root.ignore("description");
-  AnalyticScene scene;
+namespace {
 
-  const Json& material_spec = root.get("material");
-  MaterialCache local_cache;
-  MaterialCache& materials = cache ? *cache : local_cache;
-  scene.material = materials.share(material_spec, "material");
-  const MaterialRecord& record = *scene.material;
-
-  // Tool
-  {
-    auto tool = root.get_object("tool");
-    read_fields_into(tool, tool_fields(), scene, SiCheck::on);
-    tool.finish();
-  }
-
-  // Cut (for turning, thickness and width follow from the round-nose chip)
-  auto cut = root.get_object("cut");
+/// The cut section (a turning cut gives thickness and width later, from its round-nose chip): the keys as given,
+/// with thickness, width, speed, chip ratio and friction set in `scene`.
+CutKeys read_cut(ObjectReader& root, ObjectReader& cut, AnalyticScene& scene) {
   if (auto turning = cut.find_object("turning")) {
     TurningScene t;
     read_fields_into(*turning, turning_fields(), t, SiCheck::on);
@@ -437,10 +421,13 @@ AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
   scene.chip_ratio = keys.chip_ratio;
   scene.friction_factor = keys.friction_factor;
   parse_friction(keys, cut, root, scene);
+  return keys;
+}
 
-  // Models (shear_angle defaults to chip_ratio when the cut gives one)
-  auto models = root.get_object("models");
+/// The models section (shear_angle defaults to chip_ratio when the cut gives one).
+void read_models(ObjectReader& root, AnalyticScene& scene) {
   if (scene.chip_ratio) scene.shear_angle = ShearAngleSource::chip_ratio;
+  auto models = root.get_object("models");
   if (models.has("force") && models.get("force").is_string()) {  // a force line of another kind (trepanning)
     const std::string name = models.get("force").get<std::string>();
     if (const auto* line = registered_line(analytic_models(), "force", name); line && !line->orthogonal) {
@@ -458,7 +445,11 @@ AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
     policy->finish();
   }
   models.finish();
+}
 
+/// A turning cut's thickness and width from its round-nose chip; the force model: the named one, or the one
+/// `auto` chooses for the scene as read; then the friction and chip ratio the chosen models need.
+void resolve_force_model(AnalyticScene& scene) {
   // The round-nose chip gives thickness and width (width = chip area / thickness).
   if (scene.turning) {
     scene.turning->chip = round_nose_chip(scene.turning->geometry, nullptr);
@@ -490,7 +481,13 @@ AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
     throw InputError("cut.chip_ratio", "(missing)", "a chip ratio t0/t_chip for models.shear_angle = chip_ratio");
   }
   scene.liu_li.friction_angle_rad = scene.friction_angle_rad.value_or(0.0);
+}
 
+/// The flow-stress terms named (and the Johnson-Cook law Oxley needs), from the material; the workpiece
+/// temperature's default.
+void resolve_flow_stress(const MaterialRecord& record, MaterialCache& materials, const CutKeys& keys,
+                         AnalyticScene& scene) {
+  const bool solves_oxley = scene.force_model().solves_oxley;
   // Flow stress: only the terms named.
   const auto& terms = scene.flow_stress_terms;
   const auto has_term = [&](const char* t) { return std::find(terms.begin(), terms.end(), t) != terms.end(); };
@@ -515,7 +512,12 @@ AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
     }
   }
   scene.flow_stress.validate("models.flow_stress");
+}
 
+/// The deformation state given in the cut (models.deformation = given) and the Oxley parameters.
+void resolve_deformation(const MaterialRecord& record, const CutKeys& keys, AnalyticScene& scene) {
+  const bool solves_oxley = scene.force_model().solves_oxley;
+  const bool uses_oxley = solves_oxley || scene.deformation == DeformationModel::oxley;
   // Deformation state
   const auto& [strain, strain_rate, temperature] = std::tie(keys.strain, keys.strain_rate_per_s, keys.temperature_K);
   if (scene.deformation == DeformationModel::given) {
@@ -535,6 +537,34 @@ AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
                      "use force merchant or liu_li with deformation oxley to add microstructure terms)");
   }
   if (uses_oxley) scene.oxley = oxley_params_from_material(record, "material", scene.flow_stress.policy);
+}
+
+}  // namespace
+
+AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
+  refuse_dem_scene(document);
+  ObjectReader root(document, "");
+  root.ignore("description");
+  AnalyticScene scene;
+
+  const Json& material_spec = root.get("material");
+  MaterialCache local_cache;
+  MaterialCache& materials = cache ? *cache : local_cache;
+  scene.material = materials.share(material_spec, "material");
+  const MaterialRecord& record = *scene.material;
+
+  // Tool
+  {
+    auto tool = root.get_object("tool");
+    read_fields_into(tool, tool_fields(), scene, SiCheck::on);
+    tool.finish();
+  }
+  auto cut = root.get_object("cut");
+  const CutKeys keys = read_cut(root, cut, scene);
+  read_models(root, scene);
+  resolve_force_model(scene);
+  resolve_flow_stress(record, materials, keys, scene);
+  resolve_deformation(record, keys, scene);
 
   // The regime check needs E, H and K_c; metals carry no brittle group and get none.
   if (const Json* brittle = record.group("brittle");
