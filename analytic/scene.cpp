@@ -428,9 +428,13 @@ CutKeys read_cut(ObjectReader& root, ObjectReader& cut, AnalyticScene& scene) {
 void read_models(ObjectReader& root, AnalyticScene& scene) {
   if (scene.chip_ratio) scene.shear_angle = ShearAngleSource::chip_ratio;
   auto models = root.get_object("models");
-  if (models.has("force") && models.get("force").is_string()) {  // a force line of another kind (trepanning)
+  // models.force names the scene's kind too: an unknown name is refused against every value the key takes
+  // (trepanning included), a line of another kind (trepanning) names a scene this parser does not read.
+  if (models.has("force") && models.get("force").is_string()) {
     const std::string name = models.get("force").get<std::string>();
-    if (const auto* line = registered_line(analytic_models(), "force", name); line && !line->orthogonal) {
+    const auto* line = registered_line(analytic_models(), "force", name);
+    if (!line) throw InputError(models.key_path("force"), name, describe_choices(name, analytic_model_names("force")));
+    if (!line->orthogonal) {
       throw InputError("models.force", name,
                        "an orthogonal-cut model here (" + name + " is a scene kind of its own, read by parse_scene)");
     }
