@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "kerf/analytic/material_models.hpp"
 #include "kerf/error.hpp"
 #include "kerf/json_reader.hpp"
 #include "kerf/units.hpp"
@@ -16,25 +17,33 @@ void BrittleProperties::validate(const std::string& path) const {
 }
 
 namespace {
-double require_number(const MaterialRecord& material, const std::string& path, const std::string& group_name,
-                      const std::string& key) {
-  const Json& group = material.require_group(group_name, path, "the ductile-brittle critical depth");
-  const auto it = group.find(key);
-  if (it == group.end() || !it->is_number()) {
-    throw InputError(fmt::format("{}.{}.{}", path, group_name, key),
-                     it == group.end() ? fmt::format("(missing in material '{}')", material.name) : json_value_text(*it),
+/// A key the critical depth needs: InputError naming it and the material when it is absent.
+double required(const std::optional<double>& value, const MaterialRecord& material, const std::string& key_path) {
+  if (!value) {
+    throw InputError(key_path, fmt::format("(missing in material '{}')", material.name),
                      "a number: the ductile-brittle critical depth needs it");
   }
-  return it->get<double>();
+  return *value;
 }
 }  // namespace
 
 BrittleProperties brittle_properties(const MaterialRecord& material, const std::string& path) {
+  const std::string purpose = "the ductile-brittle critical depth";
   BrittleProperties p;
-  p.youngs_modulus_Pa = units::gpa_to_pa(require_number(material, path, "elastic", "youngs_modulus_GPa"));
-  p.hardness_Pa = units::gpa_to_pa(require_number(material, path, "brittle", "hardness_GPa"));
+  // E is the elastic group's one key the regime check reads (the elastic table also requires Poisson's ratio).
+  const Json& elastic = material.require_group("elastic", path, purpose);
+  const auto e = elastic.find("youngs_modulus_GPa");
+  if (e == elastic.end() || !e->is_number()) {
+    throw InputError(path + ".elastic.youngs_modulus_GPa",
+                     e == elastic.end() ? fmt::format("(missing in material '{}')", material.name) : json_value_text(*e),
+                     "a number: " + purpose + " needs it");
+  }
+  p.youngs_modulus_Pa = units::gpa_to_pa(e->get<double>());
+  material.require_group("brittle", path, purpose);
+  const BrittleGroup brittle = brittle_group_from_material(material, path);
+  p.hardness_Pa = required(brittle.hardness_Pa, material, path + ".brittle.hardness_GPa");
   p.fracture_toughness_Pa_sqrt_m =
-      units::mpa_to_pa(require_number(material, path, "brittle", "fracture_toughness_MPa_sqrt_m"));
+      required(brittle.fracture_toughness_Pa_sqrt_m, material, path + ".brittle.fracture_toughness_MPa_sqrt_m");
   p.validate(path);
   return p;
 }

@@ -82,6 +82,18 @@ struct MicrostructureKeys {
   std::optional<double> boundary_spacing_m;  ///< default: the grain size
 };
 
+/// A key that sets the same quantity in both terms (the table prints the Hall-Petch one).
+NumberField<MicrostructureKeys> both_terms_field(std::string_view key, FieldUnit unit, Range range,
+                                                 std::string_view doc, double HallPetchParams::*hall_petch,
+                                                 double DislocationParams::*dislocation, bool required = false) {
+  return {key, unit, range, doc,
+          [hall_petch](const MicrostructureKeys& k) { return k.models.hall_petch.*hall_petch; },
+          [hall_petch, dislocation](MicrostructureKeys& k, double v) {
+            k.models.hall_petch.*hall_petch = k.models.dislocation.*dislocation = v;
+          },
+          required, {}, {}};
+}
+
 template <class At>
 NumberField<MicrostructureKeys> micro_field(std::string_view key, FieldUnit unit, Range range, std::string_view doc,
                                             At at, bool required = false) {
@@ -90,23 +102,15 @@ NumberField<MicrostructureKeys> micro_field(std::string_view key, FieldUnit unit
 
 const FieldTable<MicrostructureKeys>& microstructure_fields() {
   static const FieldTable<MicrostructureKeys> table{
-      NumberField<MicrostructureKeys>{
-          "taylor_factor", units::kNone, Range::positive(), "Taylor factor M",
-          [](const MicrostructureKeys& k) { return k.models.hall_petch.taylor_factor; },
-          [](MicrostructureKeys& k, double v) { k.models.hall_petch.taylor_factor = k.models.dislocation.taylor_factor = v; },
-          false, {}, {}},
-      NumberField<MicrostructureKeys>{
-          "burgers_vector_nm", kNm, Range::positive(), "Burgers vector b",
-          [](const MicrostructureKeys& k) { return k.models.hall_petch.burgers_vector_m; },
-          [](MicrostructureKeys& k, double v) { k.models.hall_petch.burgers_vector_m = k.models.dislocation.burgers_vector_m = v; },
-          true, {}, {}},
+      both_terms_field("taylor_factor", units::kNone, Range::positive(), "Taylor factor M",
+                       &HallPetchParams::taylor_factor, &DislocationParams::taylor_factor),
+      both_terms_field("burgers_vector_nm", kNm, Range::positive(), "Burgers vector b",
+                       &HallPetchParams::burgers_vector_m, &DislocationParams::burgers_vector_m, true),
       micro_field("grain_size_um", units::kUm, Range::positive(), "grain size D",
                   [](auto& k) -> auto& { return k.models.hall_petch.grain_size_m; }, true),
-      NumberField<MicrostructureKeys>{
-          "critical_grain_size_nm", kNm, Range::non_negative(), "grain size (and boundary spacing) below which the terms are capped",
-          [](const MicrostructureKeys& k) { return k.models.hall_petch.critical_grain_size_m; },
-          [](MicrostructureKeys& k, double v) { k.models.hall_petch.critical_grain_size_m = k.models.dislocation.critical_spacing_m = v; },
-          false, {}, {}},
+      both_terms_field("critical_grain_size_nm", kNm, Range::non_negative(),
+                       "grain size (and boundary spacing) below which the terms are capped",
+                       &HallPetchParams::critical_grain_size_m, &DislocationParams::critical_spacing_m),
       micro_field("grain_boundary_stress_ratio", units::kNone, Range::positive(), "tau_b / G (seed 001 Eq. 11)",
                   [](auto& k) -> auto& { return k.models.hall_petch.grain_boundary_stress_ratio; }),
       NumberField<MicrostructureKeys>{
@@ -141,6 +145,23 @@ const FieldTable<OxleyHeatFactors>& oxley_fields() {
   return table;
 }
 
+const FieldUnit kMPaSqrtM{"MPa m^0.5", units::mpa_to_pa, units::pa_to_mpa};
+
+const FieldTable<BrittleGroup>& brittle_fields() {
+  static const FieldTable<BrittleGroup> table{
+      optional_number_field("hardness_GPa", units::kGPa, Range::positive(), "hardness H",
+                            &BrittleGroup::hardness_Pa, "none"),
+      optional_number_field("fracture_toughness_MPa_sqrt_m", kMPaSqrtM, Range::positive(), "fracture toughness K_c",
+                            &BrittleGroup::fracture_toughness_Pa_sqrt_m, "none"),
+      optional_number_field("tensile_strength_MPa", units::kMPa, Range::positive(),
+                            "tensile strength (recorded: no analytic model reads it)", &BrittleGroup::tensile_strength_Pa,
+                            "none"),
+      optional_number_field("compressive_strength_MPa", units::kMPa, Range::positive(),
+                            "unconfined compressive strength (recorded: no analytic model reads it)",
+                            &BrittleGroup::compressive_strength_Pa, "none")};
+  return table;
+}
+
 }  // namespace
 
 const std::vector<SceneKeySection>& material_key_sections() {
@@ -152,7 +173,10 @@ const std::vector<SceneKeySection>& material_key_sections() {
       {"material.microstructure", "used by hall_petch and dislocation (with the elastic group)",
        [] { return fields_markdown(microstructure_fields()); }},
       {"material.oxley", "optional, used by oxley: the heat partition factors",
-       [] { return fields_markdown(oxley_fields()); }}};
+       [] { return fields_markdown(oxley_fields()); }},
+      {"material.brittle", "optional: hardness and toughness give the regime check's critical depth (with "
+                           "elastic.youngs_modulus_GPa); the hardness is the trepanning model's default",
+       [] { return fields_markdown(brittle_fields()); }}};
   return list;
 }
 
@@ -204,13 +228,26 @@ MicrostructureModels microstructure_from_material(const MaterialRecord& material
   return m;
 }
 
-OxleyHeatFactors oxley_factors_from_material(const MaterialRecord& material, const std::string& path) {
-  const Json* group = material.group("oxley");
-  if (!group) return OxleyHeatFactors{};
-  ObjectReader reader(*group, path + ".oxley");
-  const OxleyHeatFactors f = read_fields(reader, oxley_fields(), OxleyHeatFactors{});
+namespace {
+/// A group the material may leave out, read through its table: T's defaults without it.
+template <class T>
+T optional_group(const MaterialRecord& material, const std::string& path, const std::string& group_name,
+                 const FieldTable<T>& table) {
+  const Json* group = material.group(group_name);
+  if (!group) return T{};
+  ObjectReader reader(*group, path + "." + group_name);
+  const T values = read_fields(reader, table, T{});
   reader.finish();
-  return f;
+  return values;
+}
+}  // namespace
+
+BrittleGroup brittle_group_from_material(const MaterialRecord& material, const std::string& path) {
+  return optional_group(material, path, "brittle", brittle_fields());
+}
+
+OxleyHeatFactors oxley_factors_from_material(const MaterialRecord& material, const std::string& path) {
+  return optional_group(material, path, "oxley", oxley_fields());
 }
 
 OxleyParams oxley_params_from_material(const MaterialRecord& material, const std::string& path,

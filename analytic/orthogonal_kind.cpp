@@ -21,7 +21,7 @@ void print_prediction(std::FILE* text, const std::string& scene_path, const Anal
   const double width_mm = m_to_mm(p.width_m);
   fmt::print(text, "scene             {}\n", scene_path);
   fmt::print(text, "material          {} ({})\n", scene.material->name, scene.material->title);
-  fmt::print(text, "force model       {}{}\n", force_model_name(p.force_model),
+  fmt::print(text, "force model       {}{}\n", p.force_model,
              scene.force_choice_reason.empty() ? "" : " (auto: " + scene.force_choice_reason + ")");
   fmt::print(text, "cut               t0 = {:.6g} um, width = {:.6g} mm, speed = {:.6g} m/min\n",
              m_to_um(p.uncut_chip_thickness_m), width_mm, units::m_per_s_to_m_per_min(scene.speed_m_per_s));
@@ -31,10 +31,11 @@ void print_prediction(std::FILE* text, const std::string& scene_path, const Anal
   fmt::print(text, "thrust force      {:.6g} N  ({:.6g} N/mm)\n", p.thrust_force_N, p.thrust_force_N / width_mm);
   fmt::print(text, "shear angle       {:.4g} deg\n", rad_to_deg(p.shear_angle_rad));
   if (p.has_friction) {
-    const bool from_scene = scene.friction_angle_rad && p.force_model != ForceModel::oxley &&
+    const bool own_friction = scene.force_model().solves_oxley;
+    const bool from_scene = scene.friction_angle_rad && !own_friction &&
                             std::fabs(*scene.friction_angle_rad - p.friction_angle_rad) <= 1e-9;
     fmt::print(text, "friction angle    {:.4g} deg (from {})\n", rad_to_deg(p.friction_angle_rad),
-               p.force_model == ForceModel::oxley ? "the extended-Oxley solution"
+               own_friction ? "the extended-Oxley solution"
                : from_scene                             ? scene.friction_origin
                                                         : fmt::format("the {} friction closure at the nominal rake",
                                                                       friction_closure_name(scene.liu_li.closure)));

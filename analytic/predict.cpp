@@ -165,7 +165,8 @@ void refuse_unphysical_oxley(const OxleyResult& r, const OxleyParams& params, co
 
 /// models.force = oxley: forces, shear angle and friction angle are Oxley's own; the flow stress reported is
 /// the Johnson-Cook stress in zone AB.
-Prediction predict_oxley_forces(const AnalyticScene& scene, const OxleyResult& oxley, Prediction p) {
+void predict_oxley_forces(const AnalyticScene& scene, const OxleyResult* solved, Prediction& p) {
+  const OxleyResult& oxley = *solved;  // the scene solves Oxley for this model (oxley_force_model.solves_oxley)
   p.cutting_force_N = oxley.cutting_force_N;
   p.thrust_force_N = oxley.thrust_force_N;
   p.shear_angle_rad = oxley.shear_angle_rad;
@@ -185,58 +186,62 @@ Prediction predict_oxley_forces(const AnalyticScene& scene, const OxleyResult& o
                                      units::rad_to_deg(*scene.friction_angle_rad), scene.friction_origin));
   }
   add_contact_lengths(scene, p.friction_angle_rad, p);
-  return p;
 }
 
-}  // namespace
-
-namespace {
-Prediction predict_forces(const AnalyticScene& scene) {
-  Prediction p;
-  p.force_model = scene.force;
-  p.width_m = scene.width_m;
-  p.uncut_chip_thickness_m = scene.uncut_chip_thickness_m;
-  p.has_friction = scene.friction_angle_rad.has_value();
-  p.friction_angle_rad = scene.friction_angle_rad.value_or(0.0);
-  const double t0 = scene.uncut_chip_thickness_m;
-  if (scene.turning) round_nose_chip(scene.turning->geometry, &p.guards);  // records the turning guard
-  add_regime(scene, p);
-
-  // The extended-Oxley solve (sharp tool at t0), when the scene's force or deformation model needs it.
-  std::optional<OxleyResult> oxley;
-  if (scene.oxley) {
-    const OxleyCut cut{.rake_rad = scene.rake_rad,
-                       .uncut_chip_thickness_m = t0,
-                       .width_m = scene.width_m,
-                       .speed_m_per_s = scene.speed_m_per_s,
-                       .workpiece_temperature_K = scene.workpiece_temperature_K};
-    oxley = solve_oxley(*scene.oxley, cut, scene.oxley_options);
-    refuse_unphysical_oxley(*oxley, *scene.oxley, scene.oxley_options);
-    p.guards.merge(oxley->guards);
-    p.oxley = OxleyDetails{oxley->strain_rate_constant_C0, oxley->delta, oxley->interface_temperature_K,
-                           oxley->contact_length_m, std::max(oxley->residual_shear, oxley->residual_normal),
-                           oxley->shear_angle_roots};
-    if (oxley->shear_angle_roots > 1) {
-      p.warnings.push_back(fmt::format("extended Oxley: {} solutions in the shear angle; the minimum-force branch "
-                                       "(phi = {:.4g} deg) is reported",
-                                       oxley->shear_angle_roots, units::rad_to_deg(oxley->shear_angle_rad)));
-    }
+/// The extended-Oxley solve (sharp tool at t0) when the scene's force or deformation model needs it: its
+/// details, guards and a warning for several branches go into `p`; nullopt when the scene asked for none.
+std::optional<OxleyResult> solve_scene_oxley(const AnalyticScene& scene, Prediction& p) {
+  if (!scene.oxley) return std::nullopt;
+  const OxleyCut cut{.rake_rad = scene.rake_rad,
+                     .uncut_chip_thickness_m = scene.uncut_chip_thickness_m,
+                     .width_m = scene.width_m,
+                     .speed_m_per_s = scene.speed_m_per_s,
+                     .workpiece_temperature_K = scene.workpiece_temperature_K};
+  OxleyResult oxley = solve_oxley(*scene.oxley, cut, scene.oxley_options);
+  refuse_unphysical_oxley(oxley, *scene.oxley, scene.oxley_options);
+  p.guards.merge(oxley.guards);
+  p.oxley = OxleyDetails{oxley.strain_rate_constant_C0, oxley.delta, oxley.interface_temperature_K,
+                         oxley.contact_length_m, std::max(oxley.residual_shear, oxley.residual_normal),
+                         oxley.shear_angle_roots};
+  if (oxley.shear_angle_roots > 1) {
+    p.warnings.push_back(fmt::format("extended Oxley: {} solutions in the shear angle; the minimum-force branch "
+                                     "(phi = {:.4g} deg) is reported",
+                                     oxley.shear_angle_roots, units::rad_to_deg(oxley.shear_angle_rad)));
   }
-  if (scene.force == ForceModel::oxley) return predict_oxley_forces(scene, *oxley, std::move(p));
+  return oxley;
+}
 
-  // Nominal shear angle and chip ratio.
-  const double scene_beta = scene.friction_angle_rad.value_or(0.0);
+/// The nominal shear angle and chip ratio of a Merchant or Liu-Li prediction (from the chip ratio, or the
+/// scene's shear-angle rule), checked, with the chip thickness.
+void nominal_shear_angle(const AnalyticScene& scene, Prediction& p) {
   if (scene.shear_angle == ShearAngleSource::chip_ratio) {
     p.chip_ratio = *scene.chip_ratio;
     p.shear_angle_rad = shear_angle_from_chip_ratio(p.chip_ratio, scene.rake_rad);
   } else {
     const auto model =
         scene.shear_angle == ShearAngleSource::merchant ? ShearAngleModel::merchant : ShearAngleModel::lee_shaffer;
-    p.shear_angle_rad = shear_angle(model, scene.rake_rad, scene_beta);
+    p.shear_angle_rad = shear_angle(model, scene.rake_rad, scene.friction_angle_rad.value_or(0.0));
     p.chip_ratio = chip_ratio_from_shear_angle(p.shear_angle_rad, scene.rake_rad);
   }
   check_shear_angle(p.shear_angle_rad, scene);
-  p.chip_thickness_m = t0 / p.chip_ratio;
+  p.chip_thickness_m = scene.uncut_chip_thickness_m / p.chip_ratio;
+}
+
+/// The deformation state the flow stress is evaluated at, by models.deformation.
+DeformationState deformation_state(const AnalyticScene& scene, const OxleyResult* oxley, double shear_angle_rad) {
+  switch (scene.deformation) {
+    case DeformationModel::given: return *scene.given_state;
+    case DeformationModel::room_temperature: return shear_plane_state(scene, shear_angle_rad);
+    case DeformationModel::oxley: return shear_plane_state_of(*oxley);
+  }
+  return {};
+}
+
+/// Merchant and Liu-Li: the chip term of the Liu-Li integral (Merchant is its r = 0 limit, without the edge
+/// details), plus the wave model's ploughing term under a rounded edge.
+void predict_chip_forces(const AnalyticScene& scene, const OxleyResult* oxley, bool sharp, Prediction& p) {
+  const double t0 = scene.uncut_chip_thickness_m;
+  nominal_shear_angle(scene, p);
 
   // One friction angle for the whole prediction: the closure's value at the nominal rake (the scene's beta for
   // the constant closure). It sets the rake-face force, the stagnation angle, the contact lengths and the
@@ -245,21 +250,17 @@ Prediction predict_forces(const AnalyticScene& scene) {
   p.friction_angle_rad = beta;
   p.has_friction = true;
 
-  switch (scene.deformation) {
-    case DeformationModel::given: p.state = *scene.given_state; break;
-    case DeformationModel::room_temperature: p.state = shear_plane_state(scene, p.shear_angle_rad); break;
-    case DeformationModel::oxley: p.state = shear_plane_state_of(*oxley); break;
-  }
+  p.state = deformation_state(scene, oxley, p.shear_angle_rad);
   p.flow = flow_stress(scene.flow_stress, p.state, &p.guards);
   const double k_s = p.flow.shear_Pa;
 
   LiuLiParams params = scene.liu_li;
   params.rake_rad = scene.rake_rad;
-  params.edge_radius_m = scene.force == ForceModel::merchant ? 0.0 : scene.edge_radius_m;  // Merchant: r = 0
+  params.edge_radius_m = sharp ? 0.0 : scene.edge_radius_m;  // Merchant: r = 0
   params.chip_ratio = p.chip_ratio;
   params.friction_angle_rad = beta;
   const LiuLiResult liu_li = liu_li_force_per_width(params, k_s, t0, &p.guards);
-  if (scene.force == ForceModel::merchant) {
+  if (sharp) {
     warn_if_edge_ignored(scene, "the sharp-tool model ignores it (use models.force = liu_li)", p);
   } else {
     p.liu_li = liu_li;
@@ -291,6 +292,43 @@ Prediction predict_forces(const AnalyticScene& scene) {
         units::rad_to_deg(*scene.friction_angle_rad), scene.friction_origin));
   }
   add_contact_lengths(scene, beta, p);
+}
+
+void predict_merchant_forces(const AnalyticScene& scene, const OxleyResult* oxley, Prediction& p) {
+  predict_chip_forces(scene, oxley, true, p);
+}
+
+void predict_liu_li_forces(const AnalyticScene& scene, const OxleyResult* oxley, Prediction& p) {
+  predict_chip_forces(scene, oxley, false, p);
+}
+
+/// models.force = auto: the cheapest valid model for the scene as read.
+std::string_view choose_force_model(const AnalyticScene& scene, std::string* reason) {
+  if (!scene.friction_angle_rad && scene.shear_angle != ShearAngleSource::chip_ratio) {
+    *reason = "no friction data: only oxley predicts without it";
+    return "oxley";
+  }
+  if (scene.edge_radius_m < kSharpEdgeRatio * scene.uncut_chip_thickness_m) {
+    *reason = "edge radius below 5 % of the uncut chip thickness: sharp-tool model";
+    return "merchant";
+  }
+  *reason = "edge radius at least 5 % of the uncut chip thickness: edge-radius model";
+  return "liu_li";
+}
+
+/// The parts every force model shares (width, thickness, the turning guard, the regime, the Oxley solve the
+/// scene asked for), then the model of the scene's registry line.
+Prediction predict_forces(const AnalyticScene& scene) {
+  Prediction p;
+  p.force_model = scene.force->name;
+  p.width_m = scene.width_m;
+  p.uncut_chip_thickness_m = scene.uncut_chip_thickness_m;
+  p.has_friction = scene.friction_angle_rad.has_value();
+  p.friction_angle_rad = scene.friction_angle_rad.value_or(0.0);
+  if (scene.turning) round_nose_chip(scene.turning->geometry, &p.guards);  // records the turning guard
+  add_regime(scene, p);
+  const std::optional<OxleyResult> oxley = solve_scene_oxley(scene, p);
+  scene.force_model().predict(scene, oxley ? &*oxley : nullptr, p);
   return p;
 }
 
@@ -318,17 +356,25 @@ void require_finite(const AnalyticScene& scene, const Prediction& p) {
 }
 }  // namespace
 
+// The built-in force models, as their registry lines (analytic/registry.cpp) carry them.
+const OrthogonalForceModel merchant_force_model{.predict = &predict_merchant_forces};
+const OrthogonalForceModel liu_li_force_model{.predict = &predict_liu_li_forces, .edge_columns = true};
+const OrthogonalForceModel oxley_force_model{.predict = &predict_oxley_forces, .solves_oxley = true};
+const OrthogonalForceModel auto_force_model{.choose = &choose_force_model};
+
 Prediction predict(const AnalyticScene& scene) {
   Prediction p = predict_forces(scene);
   require_finite(scene, p);
   return p;
 }
 
+// Long (~85 lines) for a reason: the CSV's column list, in column order, one cell a line; split, the order would be
+// spread over functions.
 void write_prediction_cells(const AnalyticScene& scene, const Prediction& p, CellWriter& w) {
   const double width_mm = units::m_to_mm(p.width_m);
 
   // The inputs, converted back from SI (CellWriter::input rounds them to 15 significant digits).
-  w.text("force_model", force_model_name(p.force_model));
+  w.text("force_model", p.force_model);
   w.text("material", scene.material->name);
   w.input("rake_deg", units::rad_to_deg(scene.rake_rad));
   w.input("edge_radius_um", units::m_to_um(scene.edge_radius_m));
@@ -342,7 +388,7 @@ void write_prediction_cells(const AnalyticScene& scene, const Prediction& p, Cel
   w.number("cutting_force_N", p.cutting_force_N);
   w.number("thrust_force_N", p.thrust_force_N);
   // The ploughing part of the totals (zero where the model adds none; empty for Oxley, which ignores the edge).
-  const bool chip_model = p.force_model != ForceModel::oxley;
+  const bool chip_model = !scene.force_model().solves_oxley;
   const ForcePerWidth plough = p.ploughing ? p.ploughing->force : ForcePerWidth{};
   w.optional_number("ploughing_cutting_force_N", chip_model, plough.cutting_N_per_m * p.width_m);
   w.optional_number("ploughing_thrust_force_N", chip_model, plough.thrust_N_per_m * p.width_m);
@@ -366,7 +412,7 @@ void write_prediction_cells(const AnalyticScene& scene, const Prediction& p, Cel
                       has ? units::m_to_mm(*p.contact_lengths_m[i].second) : 0.0);
   }
   // The columns follow the models the scene asked for ('auto' may choose differently point by point).
-  if (scene.force == ForceModel::liu_li || scene.force_auto) {
+  if (scene.force_model().edge_columns || scene.force_auto) {
     const bool has = p.liu_li.has_value();
     const LiuLiResult l = p.liu_li.value_or(LiuLiResult{});
     w.text("friction_closure", friction_closure_name(scene.liu_li.closure));

@@ -18,15 +18,16 @@ namespace {
 std::vector<AnalyticModelInfo>& registry() {
   static std::vector<AnalyticModelInfo> models = {
       // kind, name, summary, needs, the enum value the name constructs (none: handled by name); force lines:
-      // the scene kind that runs the model
+      // the scene kind that runs the model and, for the orthogonal kind, the force model it runs
       {"force", "auto", "the cheapest valid force model: oxley without friction data, merchant for a sharp edge "
-                        "(r < 5 % of t0), else liu_li", "as the chosen model", -1, &build_orthogonal_scene},
-      {"force", "merchant", "sharp-tool Merchant force circle", "flow stress, friction, shear angle", id(ForceModel::merchant),
-       &build_orthogonal_scene},
+                        "(r < 5 % of t0), else liu_li", "as the chosen model", -1, &build_orthogonal_scene,
+       &auto_force_model},
+      {"force", "merchant", "sharp-tool Merchant force circle", "flow stress, friction, shear angle", -1,
+       &build_orthogonal_scene, &merchant_force_model},
       {"force", "liu_li", "Liu-Li edge-radius model, seed 001 Eqs. 1-3", "flow stress, friction, shear angle or chip ratio",
-       id(ForceModel::liu_li), &build_orthogonal_scene},
+       -1, &build_orthogonal_scene, &liu_li_force_model},
       {"force", "oxley", "extended Oxley theory with Johnson-Cook (Lalwani et al. 2009), sharp tool",
-       "material johnson_cook, thermal and oxley groups", id(ForceModel::oxley), &build_orthogonal_scene},
+       "material johnson_cook, thermal and oxley groups", -1, &build_orthogonal_scene, &oxley_force_model},
       {"force", "trepanning", "fixed-abrasive trepanning drill, axial force and torque (seed 002 Eqs. 21-22; brittle "
                               "regime)", "tool outer/inner diameter, cut feed rate and spindle speed, the two lumped "
                               "groups or hardness, half angle and friction", -1, &build_trepanning_scene},

@@ -17,14 +17,7 @@
 
 namespace kerf {
 
-std::string_view force_model_name(ForceModel model) {
-  switch (model) {
-    case ForceModel::merchant: return "merchant";
-    case ForceModel::liu_li: return "liu_li";
-    case ForceModel::oxley: return "oxley";
-  }
-  return "";
-}
+const OrthogonalForceModel& AnalyticScene::force_model() const { return *force->orthogonal; }
 
 std::shared_ptr<const MaterialRecord> MaterialCache::share(const Json& spec, const std::string& path) {
   const std::string key = spec.dump();
@@ -184,27 +177,34 @@ const FieldTable<MeasuredForces>& measured_fields() {
 }
 
 // ---- models
+/// The force lines that carry a model of this kind (their `orthogonal` member), in registry order: `auto`,
+/// `merchant`, `liu_li`, `oxley` and any registered later (before the first scene is read). `trepanning` is not
+/// one: it is a scene kind of its own that the same key chooses (parse_scene).
+std::span<const std::string_view> orthogonal_force_names() {
+  static const std::vector<std::string_view> names = [] {
+    std::vector<std::string_view> list;
+    for (const auto& m : analytic_models())
+      if (m.kind == "force" && m.orthogonal) list.push_back(m.name);
+    return list;
+  }();
+  return names;
+}
+
 /// models.force: a registered model, or "auto" (the cheapest valid one, chosen once the scene is read).
 ChoiceField<AnalyticScene> force_field() {
-  const auto names = registry_names("force");
+  const auto names = orthogonal_force_names();
   return {"force", names,
           "the force model; `auto` picks the cheapest valid one: `oxley` without friction data, `merchant` when "
-          "r < 5 % of t0, else `liu_li` (the choice and its reason are printed)",
+          "r < 5 % of t0, else `liu_li` (the choice and its reason are printed). `trepanning` is not a model of this "
+          "scene: it makes the scene a trepanning scene (below)",
           [names](const AnalyticScene& s) {
             for (std::size_t k = 0; k < names.size(); ++k)
-              if (s.force_auto ? names[k] == "auto" : registered<ForceModel>("force", names[k]) == s.force)
-                return static_cast<int>(k);
+              if (s.force_auto ? names[k] == "auto" : s.force && names[k] == s.force->name) return static_cast<int>(k);
             return 0;
           },
           [names](AnalyticScene& s, int k) {
-            const std::string_view name = names[static_cast<std::size_t>(k)];
-            s.force_auto = name == "auto";
-            if (s.force_auto) return;
-            const auto model = registered<ForceModel>("force", name);
-            if (!model)
-              throw InputError("models.force", std::string(name),
-                               "an orthogonal-cut model here (trepanning scenes are read by parse_trepanning_scene)");
-            s.force = *model;
+            s.force = registered_line(analytic_models(), "force", names[static_cast<std::size_t>(k)]);
+            s.force_auto = s.force->orthogonal->choose != nullptr;
           }};
 }
 
@@ -391,27 +391,11 @@ void refuse_dem_scene(const Json& document) {
                                json_value_text(kind)));
 }
 
-AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
-  refuse_dem_scene(document);
-  ObjectReader root(document, "");
-  root.ignore("description");
-  AnalyticScene scene;
+namespace {
 
-  const Json& material_spec = root.get("material");
-  MaterialCache local_cache;
-  MaterialCache& materials = cache ? *cache : local_cache;
-  scene.material = materials.share(material_spec, "material");
-  const MaterialRecord& record = *scene.material;
-
-  // Tool
-  {
-    auto tool = root.get_object("tool");
-    read_fields_into(tool, tool_fields(), scene, SiCheck::on);
-    tool.finish();
-  }
-
-  // Cut (for turning, thickness and width follow from the round-nose chip)
-  auto cut = root.get_object("cut");
+/// The cut section (a turning cut gives thickness and width later, from its round-nose chip): the keys as given,
+/// with thickness, width, speed, chip ratio and friction set in `scene`.
+CutKeys read_cut(ObjectReader& root, ObjectReader& cut, AnalyticScene& scene) {
   if (auto turning = cut.find_object("turning")) {
     TurningScene t;
     read_fields_into(*turning, turning_fields(), t, SiCheck::on);
@@ -437,10 +421,24 @@ AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
   scene.chip_ratio = keys.chip_ratio;
   scene.friction_factor = keys.friction_factor;
   parse_friction(keys, cut, root, scene);
+  return keys;
+}
 
-  // Models (shear_angle defaults to chip_ratio when the cut gives one)
-  auto models = root.get_object("models");
+/// The models section (shear_angle defaults to chip_ratio when the cut gives one).
+void read_models(ObjectReader& root, AnalyticScene& scene) {
   if (scene.chip_ratio) scene.shear_angle = ShearAngleSource::chip_ratio;
+  auto models = root.get_object("models");
+  // models.force names the scene's kind too: an unknown name is refused against every value the key takes
+  // (trepanning included), a line of another kind (trepanning) names a scene this parser does not read.
+  if (models.has("force") && models.get("force").is_string()) {
+    const std::string name = models.get("force").get<std::string>();
+    const auto* line = registered_line(analytic_models(), "force", name);
+    if (!line) throw InputError(models.key_path("force"), name, describe_choices(name, analytic_model_names("force")));
+    if (!line->orthogonal) {
+      throw InputError("models.force", name,
+                       "an orthogonal-cut model here (" + name + " is a scene kind of its own, read by parse_scene)");
+    }
+  }
   read_fields_into(models, models_fields(), scene, SiCheck::on);
   if (auto quadrature = models.find_object("quadrature")) {
     read_fields_into(*quadrature, quadrature_fields(), scene.liu_li.quadrature, SiCheck::on);
@@ -451,7 +449,11 @@ AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
     policy->finish();
   }
   models.finish();
+}
 
+/// A turning cut's thickness and width from its round-nose chip; the force model: the named one, or the one
+/// `auto` chooses for the scene as read; then the friction and chip ratio the chosen models need.
+void resolve_force_model(AnalyticScene& scene) {
   // The round-nose chip gives thickness and width (width = chip area / thickness).
   if (scene.turning) {
     scene.turning->chip = round_nose_chip(scene.turning->geometry, nullptr);
@@ -461,24 +463,18 @@ AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
     scene.width_m = chip.area_m2 / scene.uncut_chip_thickness_m;
   }
 
-  // models.force = "auto": the cheapest valid model.
+  // models.force = "auto" (also when the scene names none): its line chooses the model.
   if (scene.force_auto) {
-    if (!scene.friction_angle_rad && scene.shear_angle != ShearAngleSource::chip_ratio) {
-      scene.force = ForceModel::oxley;
-      scene.force_choice_reason = "no friction data: only oxley predicts without it";
-    } else if (scene.edge_radius_m < kSharpEdgeRatio * scene.uncut_chip_thickness_m) {
-      scene.force = ForceModel::merchant;
-      scene.force_choice_reason = "edge radius below 5 % of the uncut chip thickness: sharp-tool model";
-    } else {
-      scene.force = ForceModel::liu_li;
-      scene.force_choice_reason = "edge radius at least 5 % of the uncut chip thickness: edge-radius model";
-    }
+    const AnalyticModelInfo* chooser = scene.force ? scene.force : registered_line(analytic_models(), "force", "auto");
+    scene.force = registered_line(analytic_models(), "force",
+                                  chooser->orthogonal->choose(scene, &scene.force_choice_reason));
   }
+  const bool solves_oxley = scene.force_model().solves_oxley;
 
   // Friction is needed by every model except oxley, unless the chip ratio gives the shear angle and a closure
   // other than the constant one gives beta (which then also sets the stagnation angle and contact lengths).
   const bool needs_friction =
-      scene.force != ForceModel::oxley &&
+      !solves_oxley &&
       (scene.shear_angle != ShearAngleSource::chip_ratio || scene.liu_li.closure == FrictionClosure::constant);
   if (needs_friction && !scene.friction_angle_rad) {
     throw InputError("cut.friction_angle_deg", "(missing)",
@@ -489,15 +485,21 @@ AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
     throw InputError("cut.chip_ratio", "(missing)", "a chip ratio t0/t_chip for models.shear_angle = chip_ratio");
   }
   scene.liu_li.friction_angle_rad = scene.friction_angle_rad.value_or(0.0);
+}
 
+/// The flow-stress terms named (and the Johnson-Cook law Oxley needs), from the material; the workpiece
+/// temperature's default.
+void resolve_flow_stress(const MaterialRecord& record, MaterialCache& materials, const CutKeys& keys,
+                         AnalyticScene& scene) {
+  const bool solves_oxley = scene.force_model().solves_oxley;
   // Flow stress: only the terms named.
   const auto& terms = scene.flow_stress_terms;
   const auto has_term = [&](const char* t) { return std::find(terms.begin(), terms.end(), t) != terms.end(); };
   // Oxley needs the Johnson-Cook law even when the flow stress of the force model does not add it.
-  const bool uses_oxley = scene.force == ForceModel::oxley || scene.deformation == DeformationModel::oxley;
+  const bool uses_oxley = solves_oxley || scene.deformation == DeformationModel::oxley;
   std::optional<JohnsonCookParams> johnson_cook;
   if (has_term("johnson_cook") || uses_oxley) johnson_cook = materials.derived(record, &johnson_cook_from_material);
-  if (has_term("johnson_cook") || scene.force == ForceModel::oxley) scene.flow_stress.johnson_cook = johnson_cook;
+  if (has_term("johnson_cook") || solves_oxley) scene.flow_stress.johnson_cook = johnson_cook;
   if (has_term("hall_petch") || has_term("dislocation")) {
     const auto micro = materials.derived(record, &microstructure_from_material);
     if (has_term("hall_petch")) scene.flow_stress.hall_petch = micro.hall_petch;
@@ -514,7 +516,12 @@ AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
     }
   }
   scene.flow_stress.validate("models.flow_stress");
+}
 
+/// The deformation state given in the cut (models.deformation = given) and the Oxley parameters.
+void resolve_deformation(const MaterialRecord& record, const CutKeys& keys, AnalyticScene& scene) {
+  const bool solves_oxley = scene.force_model().solves_oxley;
+  const bool uses_oxley = solves_oxley || scene.deformation == DeformationModel::oxley;
   // Deformation state
   const auto& [strain, strain_rate, temperature] = std::tie(keys.strain, keys.strain_rate_per_s, keys.temperature_K);
   if (scene.deformation == DeformationModel::given) {
@@ -528,12 +535,40 @@ AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
                      "no value unless models.deformation = given (use cut.workpiece_temperature_K for the workpiece)");
   }
   scene.given_strain_rate_per_s = strain_rate;
-  if (scene.force == ForceModel::oxley && (scene.flow_stress.hall_petch || scene.flow_stress.dislocation)) {
+  if (solves_oxley && (scene.flow_stress.hall_petch || scene.flow_stress.dislocation)) {
     throw InputError("models.flow_stress", "(microstructure terms)",
                      "johnson_cook alone with models.force = oxley (Oxley's solution uses the Johnson-Cook law; "
                      "use force merchant or liu_li with deformation oxley to add microstructure terms)");
   }
   if (uses_oxley) scene.oxley = oxley_params_from_material(record, "material", scene.flow_stress.policy);
+}
+
+}  // namespace
+
+AnalyticScene parse_analytic_scene(const Json& document, MaterialCache* cache) {
+  refuse_dem_scene(document);
+  ObjectReader root(document, "");
+  root.ignore("description");
+  AnalyticScene scene;
+
+  const Json& material_spec = root.get("material");
+  MaterialCache local_cache;
+  MaterialCache& materials = cache ? *cache : local_cache;
+  scene.material = materials.share(material_spec, "material");
+  const MaterialRecord& record = *scene.material;
+
+  // Tool
+  {
+    auto tool = root.get_object("tool");
+    read_fields_into(tool, tool_fields(), scene, SiCheck::on);
+    tool.finish();
+  }
+  auto cut = root.get_object("cut");
+  const CutKeys keys = read_cut(root, cut, scene);
+  read_models(root, scene);
+  resolve_force_model(scene);
+  resolve_flow_stress(record, materials, keys, scene);
+  resolve_deformation(record, keys, scene);
 
   // The regime check needs E, H and K_c; metals carry no brittle group and get none.
   if (const Json* brittle = record.group("brittle");

@@ -139,21 +139,22 @@ double column_value(const Columns& columns, const std::string& name) {
 
 }  // namespace
 
-SceneComparison compare_scene(const Json& scene_document, const std::filesystem::path& experiments_csv,
-                              const SceneComparisonOptions& options) {
-  SceneComparison out;
-  const CsvTable table = read_csv_file(experiments_csv);
-  MaterialCache materials;
-  const auto kind = parse_scene(scene_document, &materials);
-  // Forces that scale with a width (orthogonal cutting's; not trepanning's axial force and torque).
-  const std::optional<double> force_width_m = kind->force_width_m();
-  const bool per_width = force_width_m.has_value();
-  const auto predicted_names = scene_column_names(*kind);
+namespace {
+
+/// The CSV's columns bound to scene conditions and predicted quantities.
+struct Bindings {
+  std::vector<ConditionBinding> conditions;
+  std::vector<QuantityBinding> quantities;
+};
+
+/// Explicit mappings first, then columns matched by name; the columns left unused go to out.unused_columns and a
+/// note. No quantity, or no condition without --pool, is an InputError.
+Bindings bind_columns(const CsvTable& table, const Json& scene_document, const std::filesystem::path& experiments_csv,
+                      const SceneComparisonOptions& options, const std::vector<std::string>& predicted_names,
+                      SceneComparison& out) {
   const auto has_prediction = [&](const std::string& name) {
     return std::find(predicted_names.begin(), predicted_names.end(), name) != predicted_names.end();
   };
-
-  // Bindings: explicit mappings first, then columns matched by name.
   std::vector<ConditionBinding> conditions;
   std::vector<QuantityBinding> quantities;
   std::vector<std::string> bound_columns;
@@ -218,10 +219,19 @@ SceneComparison compare_scene(const Json& scene_document, const std::filesystem:
                     out.unused_columns.empty() ? std::string("the CSV has no other column")
                                                : fmt::format("unused: {}", fmt::join(out.unused_columns, ", "))));
   }
+  return {std::move(conditions), std::move(quantities)};
+}
 
-  // The comparison: conditions and quantities in their units; width bases explicit.
+/// The comparison's conditions and quantities in their units (into out.comparison.spec) and the measured rows,
+/// with their width bases explicit (both views where the measured and the scene's widths differ).
+DataSet measured_data(const CsvTable& table, const Bindings& bindings, const std::filesystem::path& experiments_csv,
+                      const SceneComparisonOptions& options, const AnalyticCase& kind, SceneComparison& out) {
+  const auto& [conditions, quantities] = bindings;
+  // Forces that scale with a width (orthogonal cutting's; not trepanning's axial force and torque).
+  const std::optional<double> force_width_m = kind.force_width_m();
+  const bool per_width = force_width_m.has_value();
   ComparisonSpec& spec = out.comparison.spec;
-  spec.title = fmt::format("{} against {}", kind->comparison_title(),
+  spec.title = fmt::format("{} against {}", kind.comparison_title(),
                            experiments_csv.filename().string());
   CsvBinding measured_binding;
   measured_binding.name = experiments_csv.filename().string();
@@ -254,66 +264,74 @@ SceneComparison compare_scene(const Json& scene_document, const std::filesystem:
     measured_binding.bases.push_back(force ? measured_basis : WidthBasis::none());
     out.notes.push_back(fmt::format("quantity {} <- CSV column {}", q.prediction_column, q.column));
   }
-  const DataSet measured = dataset_from_csv(table, spec, measured_binding);
+  DataSet measured = dataset_from_csv(table, spec, measured_binding);
   const bool widths_differ =
       per_width && (!measured_binding.width_column_mm.empty() ||
                       std::abs(measured_basis.width_m - scene_width_m) > 1e-12 * scene_width_m);
   if (widths_differ) spec.views = {WidthView::as_published, WidthView::per_unit_width};
+  return measured;
+}
 
-  // With --fit, a trepanning scene's groups are fitted to the measured rows.
-  Json document = scene_document;
-  if (options.fit) {
-    if (!kind->fits_lumped_groups()) {
-      throw InputError("--fit", "(given)", "a trepanning scene: the fit calibrates its two lumped groups");
-    }
-    const TrepanningScene scene = parse_trepanning_scene(document, &materials);
-    std::vector<TrepanningObservation> observations;
-    const auto axial = std::find_if(quantities.begin(), quantities.end(),
-                                    [](const auto& q) { return q.prediction_column == "axial_force_N"; });
-    const auto torque = std::find_if(quantities.begin(), quantities.end(),
-                                     [](const auto& q) { return q.prediction_column == "torque_N_m"; });
-    if (axial == quantities.end() || torque == quantities.end()) {
-      throw InputError("--fit", experiments_csv.string(), "measured axial_force_N and torque_N_m columns to fit");
-    }
-    // The measured rows hold SI values (each column converted from its unit): back to the scene keys' units.
-    const auto axial_index = static_cast<std::size_t>(axial - quantities.begin());
-    const auto torque_index = static_cast<std::size_t>(torque - quantities.begin());
-    for (const auto& row : measured.rows) {
-      Json row_document = document;
-      for (std::size_t i = 0; i < conditions.size(); ++i) {
-        set_path(row_document, conditions[i].scene_path, row.conditions[i].si.value_or(0.0) / spec.conditions[i].unit.si);
-      }
-      const TrepanningScene row_scene = parse_trepanning_scene(row_document, &materials);
-      observations.push_back({row_scene.cut, row.values[axial_index], row.values[torque_index]});
-    }
-    out.calibration = calibrate_trepanning(scene.tool, observations);
-    const auto& fit = *out.calibration;
-    document["models"]["trepanning"] = {{"axial_group_MPa", units::pa_to_mpa(fit.groups.axial_group_Pa)},
-                                        {"torque_group_MPa", units::pa_to_mpa(fit.groups.torque_group_Pa)}};
-    out.report.extra_markdown = fmt::format(
-        "## Calibration (--fit)\n\nRelative least squares (GSL) of the two lumped groups on {} rows:\n\n"
-        "| group | value (MPa) | std. error (MPa) | mean abs error % | max abs error % | bias % | "
-        "leave-one-out mean abs % | leave-one-out max abs % |\n|---|---|---|---|---|---|---|---|\n"
-        "| K_F = H tan(phi) | {:.1f} | {:.1f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} |\n"
-        "| K_M = H (1 + pi tan(phi) mu / 2) | {:.1f} | {:.1f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} |\n",
-        observations.size(), units::pa_to_mpa(fit.axial.value_Pa), units::pa_to_mpa(fit.axial.standard_error_Pa),
-        fit.axial.fit.mean_abs_error_percent, fit.axial.fit.max_abs_error_percent, fit.axial.fit.bias_percent,
-        fit.axial.loo.mean_abs_error_percent, fit.axial.loo.max_abs_error_percent, units::pa_to_mpa(fit.torque.value_Pa),
-        units::pa_to_mpa(fit.torque.standard_error_Pa), fit.torque.fit.mean_abs_error_percent,
-        fit.torque.fit.max_abs_error_percent, fit.torque.fit.bias_percent, fit.torque.loo.mean_abs_error_percent,
-        fit.torque.loo.max_abs_error_percent);
-    out.report.extra_summary["fit"] = {
-        {"axial_group_MPa", units::pa_to_mpa(fit.axial.value_Pa)},
-        {"torque_group_MPa", units::pa_to_mpa(fit.torque.value_Pa)},
-        {"axial_force", {{"mean_abs_error_percent", fit.axial.fit.mean_abs_error_percent},
-                         {"loo_mean_abs_error_percent", fit.axial.loo.mean_abs_error_percent},
-                         {"loo_max_abs_error_percent", fit.axial.loo.max_abs_error_percent}}},
-        {"torque", {{"mean_abs_error_percent", fit.torque.fit.mean_abs_error_percent},
-                    {"loo_mean_abs_error_percent", fit.torque.loo.mean_abs_error_percent},
-                    {"loo_max_abs_error_percent", fit.torque.loo.max_abs_error_percent}}}};
+/// --fit: a trepanning scene's two lumped groups fitted to the measured rows (out.calibration, the report's
+/// calibration section and summary); the groups are written into `document`.
+void fit_lumped_groups(Json& document, const Bindings& bindings, const DataSet& measured,
+                       const std::filesystem::path& experiments_csv, MaterialCache& materials, SceneComparison& out) {
+  const auto& [conditions, quantities] = bindings;
+  const ComparisonSpec& spec = out.comparison.spec;
+  const TrepanningScene scene = parse_trepanning_scene(document, &materials);
+  std::vector<TrepanningObservation> observations;
+  const auto axial = std::find_if(quantities.begin(), quantities.end(),
+                                  [](const auto& q) { return q.prediction_column == "axial_force_N"; });
+  const auto torque = std::find_if(quantities.begin(), quantities.end(),
+                                   [](const auto& q) { return q.prediction_column == "torque_N_m"; });
+  if (axial == quantities.end() || torque == quantities.end()) {
+    throw InputError("--fit", experiments_csv.string(), "measured axial_force_N and torque_N_m columns to fit");
   }
+  // The measured rows hold SI values (each column converted from its unit): back to the scene keys' units.
+  const auto axial_index = static_cast<std::size_t>(axial - quantities.begin());
+  const auto torque_index = static_cast<std::size_t>(torque - quantities.begin());
+  for (const auto& row : measured.rows) {
+    Json row_document = document;
+    for (std::size_t i = 0; i < conditions.size(); ++i) {
+      set_path(row_document, conditions[i].scene_path, row.conditions[i].si.value_or(0.0) / spec.conditions[i].unit.si);
+    }
+    const TrepanningScene row_scene = parse_trepanning_scene(row_document, &materials);
+    observations.push_back({row_scene.cut, row.values[axial_index], row.values[torque_index]});
+  }
+  out.calibration = calibrate_trepanning(scene.tool, observations);
+  const auto& fit = *out.calibration;
+  document["models"]["trepanning"] = {{"axial_group_MPa", units::pa_to_mpa(fit.groups.axial_group_Pa)},
+                                      {"torque_group_MPa", units::pa_to_mpa(fit.groups.torque_group_Pa)}};
+  out.report.extra_markdown = fmt::format(
+      "## Calibration (--fit)\n\nRelative least squares (GSL) of the two lumped groups on {} rows:\n\n"
+      "| group | value (MPa) | std. error (MPa) | mean abs error % | max abs error % | bias % | "
+      "leave-one-out mean abs % | leave-one-out max abs % |\n|---|---|---|---|---|---|---|---|\n"
+      "| K_F = H tan(phi) | {:.1f} | {:.1f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} |\n"
+      "| K_M = H (1 + pi tan(phi) mu / 2) | {:.1f} | {:.1f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} | {:.2f} |\n",
+      observations.size(), units::pa_to_mpa(fit.axial.value_Pa), units::pa_to_mpa(fit.axial.standard_error_Pa),
+      fit.axial.fit.mean_abs_error_percent, fit.axial.fit.max_abs_error_percent, fit.axial.fit.bias_percent,
+      fit.axial.loo.mean_abs_error_percent, fit.axial.loo.max_abs_error_percent, units::pa_to_mpa(fit.torque.value_Pa),
+      units::pa_to_mpa(fit.torque.standard_error_Pa), fit.torque.fit.mean_abs_error_percent,
+      fit.torque.fit.max_abs_error_percent, fit.torque.fit.bias_percent, fit.torque.loo.mean_abs_error_percent,
+      fit.torque.loo.max_abs_error_percent);
+  out.report.extra_summary["fit"] = {
+      {"axial_group_MPa", units::pa_to_mpa(fit.axial.value_Pa)},
+      {"torque_group_MPa", units::pa_to_mpa(fit.torque.value_Pa)},
+      {"axial_force", {{"mean_abs_error_percent", fit.axial.fit.mean_abs_error_percent},
+                       {"loo_mean_abs_error_percent", fit.axial.loo.mean_abs_error_percent},
+                       {"loo_max_abs_error_percent", fit.axial.loo.max_abs_error_percent}}},
+      {"torque", {{"mean_abs_error_percent", fit.torque.fit.mean_abs_error_percent},
+                  {"loo_mean_abs_error_percent", fit.torque.loo.mean_abs_error_percent},
+                  {"loo_max_abs_error_percent", fit.torque.loo.max_abs_error_percent}}}};
+}
 
-  // Predictions at each measured row's conditions, and a model curve for the plots.
+/// The model's predictions at each measured row's conditions (with each row's diagnostics into out.rows) and
+/// the model curve for the plots.
+PredictedSet predictions(const Json& document, const Bindings& bindings, const DataSet& measured, bool per_width,
+                         double scene_width_m, const SceneComparisonOptions& options, SceneComparison& out) {
+  const auto& conditions = bindings.conditions;
+  const auto& quantities = bindings.quantities;
+  const ComparisonSpec& spec = out.comparison.spec;
   // The curve is evaluated at many points for the plots: one material cache serves them all.
   auto cache = std::make_shared<MaterialCache>();
   const auto columns_at = [document, conditions, spec, cache](const std::vector<ConditionValue>& at) {
@@ -361,7 +379,11 @@ SceneComparison compare_scene(const Json& scene_document, const std::filesystem:
     predicted.rows.push_back(std::move(p));
     out.rows.push_back(diagnostics_at(row.line, row.conditions));
   }
-  out.comparison = compare(spec, measured, {PredictedSet{predicted, predict_at}});
+  return PredictedSet{predicted, predict_at};
+}
+
+/// The report's notes: how the columns were matched, and each row's regime, guards and warnings.
+std::string matching_notes(const SceneComparison& out) {
   std::string notes = "\n## How the columns were matched\n\n";
   for (const auto& n : out.notes) notes += "- " + n + "\n";
   notes += "\n## Regime and guards per row\n\nThe regime of each row's prediction against the ductile-brittle critical "
@@ -372,7 +394,31 @@ SceneComparison compare_scene(const Json& scene_document, const std::filesystem:
                          r.guards.empty() ? "none" : fmt::format("{}", fmt::join(r.guards, ";")),
                          r.warnings.empty() ? "-" : fmt::format("{}", fmt::join(r.warnings, "; ")));
   }
-  out.report.extra_markdown += notes;
+  return notes;
+}
+
+}  // namespace
+
+SceneComparison compare_scene(const Json& scene_document, const std::filesystem::path& experiments_csv,
+                              const SceneComparisonOptions& options) {
+  SceneComparison out;
+  const CsvTable table = read_csv_file(experiments_csv);
+  MaterialCache materials;
+  const auto kind = parse_scene(scene_document, &materials);
+  const Bindings bindings = bind_columns(table, scene_document, experiments_csv, options, scene_column_names(*kind), out);
+  const DataSet measured = measured_data(table, bindings, experiments_csv, options, *kind, out);
+  Json document = scene_document;
+  if (options.fit) {
+    if (!kind->fits_lumped_groups()) {
+      throw InputError("--fit", "(given)", "a trepanning scene: the fit calibrates its two lumped groups");
+    }
+    fit_lumped_groups(document, bindings, measured, experiments_csv, materials, out);
+  }
+  const std::optional<double> force_width_m = kind->force_width_m();
+  const PredictedSet predicted =
+      predictions(document, bindings, measured, force_width_m.has_value(), force_width_m.value_or(0.0), options, out);
+  out.comparison = compare(out.comparison.spec, measured, {predicted});
+  out.report.extra_markdown += matching_notes(out);
   return out;
 }
 

@@ -27,6 +27,8 @@ std::vector<std::optional<double>> column_numbers(const SweepGrid& grid, const s
   return values;
 }
 
+// Long (~90 lines) for a reason: one figure assembled in the order it is drawn (axes, title and width, one series
+// per force and second-axis value, the line-style key); the parts share the figure under construction.
 void plot_sweep(const SweepGrid& grid, const std::vector<SweepRow>& rows, const std::string& path,
                 const std::string& scene_path) {
   const Json& base = grid.base();

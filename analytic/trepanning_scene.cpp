@@ -1,5 +1,6 @@
 #include "kerf/analytic/trepanning_scene.hpp"
 
+#include "kerf/analytic/material_models.hpp"
 #include "kerf/analytic/scene.hpp"
 #include "kerf/error.hpp"
 #include "kerf/field_table.hpp"
@@ -137,12 +138,13 @@ TrepanningScene parse_trepanning_scene(const Json& document, MaterialCache* cach
   } else {
     TrepanningMaterial m = read_fields(params, material_fields(), TrepanningMaterial{}, SiCheck::on);
     if (!params.has("hardness_GPa")) {
-      const Json& brittle = scene.material.require_group("brittle", "material", "the trepanning model's hardness");
-      if (!brittle.contains("hardness_GPa")) {
+      scene.material.require_group("brittle", "material", "the trepanning model's hardness");
+      const auto hardness_Pa = brittle_group_from_material(scene.material, "material").hardness_Pa;
+      if (!hardness_Pa) {
         throw InputError("models.trepanning.hardness_GPa", "(missing, and not in the material)",
                          "a hardness in GPa here or in the material's brittle.hardness_GPa");
       }
-      m.hardness_Pa = units::gpa_to_pa(brittle.at("hardness_GPa").get<double>());
+      m.hardness_Pa = *hardness_Pa;
     }
     params.finish({"axial_group_MPa", "torque_group_MPa"});
     m.validate("models.trepanning");

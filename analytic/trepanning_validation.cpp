@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "kerf/analytic/material_models.hpp"
 #include "kerf/csv_table.hpp"
 #include "kerf/error.hpp"
 #include "kerf/report.hpp"
@@ -51,24 +52,33 @@ TrepanningValidation run_k9_trepanning_validation(const std::filesystem::path& o
   return run_trepanning_validation(k9_trepanning_case_directory(), out_dir);
 }
 
-TrepanningValidation run_trepanning_validation(const std::filesystem::path& case_dir,
-                                               const std::filesystem::path& out_dir) {
-  TrepanningValidation v;
+namespace {
+
+/// validation.json: the scene (into v.scene), the acceptance bands (into v.acceptance), the experiment table,
+/// its columns and the residual weighting.
+struct CaseInputs {
+  CsvTable table;
+  std::string speed_col, feed_col, axial_col, torque_col, axial_theory_col, torque_theory_col;
+  std::string weighting_name;
+  ResidualWeighting weighting = ResidualWeighting::relative;
+};
+
+CaseInputs read_case(const std::filesystem::path& case_dir, TrepanningValidation& v) {
+  CaseInputs in;
   const Json config = read_json_file((case_dir / "validation.json").string());
   ObjectReader reader(config, "validation");
   v.scene = parse_trepanning_scene(read_json_file((case_dir / reader.get_string("scene")).string()));
-  const CsvTable table = read_csv_file(case_dir / reader.get_string("experiment"));
+  in.table = read_csv_file(case_dir / reader.get_string("experiment"));
   ObjectReader columns = reader.get_object("columns");
-  const std::string speed_col = columns.get_string("spindle_speed_rpm");
-  const std::string feed_col = columns.get_string("feed_rate_um_per_s");
-  const std::string axial_col = columns.get_string("axial_force_measured_N");
-  const std::string torque_col = columns.get_string("torque_measured_N_m");
-  const std::string axial_theory_col = columns.get_string("axial_force_theory_N");
-  const std::string torque_theory_col = columns.get_string("torque_theory_N_m");
+  in.speed_col = columns.get_string("spindle_speed_rpm");
+  in.feed_col = columns.get_string("feed_rate_um_per_s");
+  in.axial_col = columns.get_string("axial_force_measured_N");
+  in.torque_col = columns.get_string("torque_measured_N_m");
+  in.axial_theory_col = columns.get_string("axial_force_theory_N");
+  in.torque_theory_col = columns.get_string("torque_theory_N_m");
   columns.finish();
-  const std::string weighting_name = reader.get_choice_or("weighting", "relative", {"relative", "absolute"});
-  const ResidualWeighting weighting =
-      weighting_name == "relative" ? ResidualWeighting::relative : ResidualWeighting::absolute;
+  in.weighting_name = reader.get_choice_or("weighting", "relative", {"relative", "absolute"});
+  in.weighting = in.weighting_name == "relative" ? ResidualWeighting::relative : ResidualWeighting::absolute;
   ObjectReader acceptance = reader.get_object("acceptance");
   v.acceptance.theory_column_max_abs_error_percent =
       acceptance.get_number("theory_column_max_abs_error_percent", Range::positive(), "%");
@@ -78,37 +88,11 @@ TrepanningValidation run_trepanning_validation(const std::filesystem::path& case
   fitted.finish();
   acceptance.finish();
   reader.finish();
+  return in;
+}
 
-  // The rows, measured and the paper's theory.
-  const TrepanningTool& tool = v.scene.tool;
-  std::vector<TrepanningObservation> measured_rows, theory_rows;
-  const std::size_t c_speed = table.column_index(speed_col), c_feed = table.column_index(feed_col),
-                    c_axial = table.column_index(axial_col), c_torque = table.column_index(torque_col),
-                    c_axial_theory = table.column_index(axial_theory_col),
-                    c_torque_theory = table.column_index(torque_theory_col);
-  for (std::size_t r = 0; r < table.rows.size(); ++r) {
-    const auto cut = TrepanningCut::from_user_units(table.number(r, c_feed), table.number(r, c_speed));
-    measured_rows.push_back({cut, table.number(r, c_axial), table.number(r, c_torque)});
-    theory_rows.push_back({cut, table.number(r, c_axial_theory), table.number(r, c_torque_theory)});
-  }
-
-  v.measured_fit = calibrate_trepanning(tool, measured_rows, weighting);
-  v.theory_fit = calibrate_trepanning(tool, theory_rows, weighting);
-  std::vector<double> m_axial, m_torque, t_axial, t_torque;
-  for (std::size_t i = 0; i < measured_rows.size(); ++i) {
-    m_axial.push_back(measured_rows[i].axial_force_N);
-    m_torque.push_back(measured_rows[i].torque_N_m);
-    t_axial.push_back(theory_rows[i].axial_force_N);
-    t_torque.push_back(theory_rows[i].torque_N_m);
-  }
-  v.paper_axial = error_metrics(t_axial, m_axial);
-  v.paper_torque = error_metrics(t_torque, m_torque);
-  const Json& brittle = v.scene.material.require_group("brittle", "material", "the implied half angle and friction");
-  const double hardness_Pa = units::gpa_to_pa(brittle.at("hardness_GPa").get<double>());
-  v.implied_measured = implied_trepanning_material(v.measured_fit.groups, hardness_Pa);
-  v.implied_theory = implied_trepanning_material(v.theory_fit.groups, hardness_Pa);
-
-  // Acceptance.
+/// The acceptance bands that do not hold, as v.failures.
+void check_acceptance(TrepanningValidation& v) {
   const auto& acc = v.acceptance;
   struct Band {
     const char* what;
@@ -127,9 +111,15 @@ TrepanningValidation run_trepanning_validation(const std::filesystem::path& case
                                        band.limit_percent));
     }
   }
-  if (out_dir.empty()) return v;
+}
 
-  // The report: measured against the fitted model, its leave-one-out predictions and the paper's theory.
+/// Measured against the fitted model (with its curve), its leave-one-out predictions and the paper's theory.
+Comparison trepanning_comparison(const TrepanningValidation& v, const CaseInputs& in,
+                                 const std::vector<TrepanningObservation>& measured_rows,
+                                 const std::vector<TrepanningObservation>& theory_rows) {
+  const TrepanningTool& tool = v.scene.tool;
+  const CsvTable& table = in.table;
+  const std::string& weighting_name = in.weighting_name;
   const ComparisonSpec spec = trepanning_spec(tool);
   const WidthBasis wall = WidthBasis::total((tool.outer_diameter_m - tool.inner_diameter_m) / 2.0);
   const std::vector<WidthBasis> bases = {wall, WidthBasis::none()};
@@ -158,15 +148,22 @@ TrepanningValidation run_trepanning_validation(const std::filesystem::path& case
     const auto f = trepanning_forces(tool, cut, groups);
     return std::vector<double>{f.axial_force_N, f.torque_N_m};
   };
-  const Comparison comparison = compare(spec, measured, {{fit, curve}, {loo, {}}, {paper, {}}});
+  return compare(spec, measured, {{fit, curve}, {loo, {}}, {paper, {}}});
+}
 
-  // Calibration section and summary.
+/// The report's calibration, leave-one-out and acceptance sections (Markdown).
+std::string calibration_markdown(const TrepanningValidation& v, const CaseInputs& in,
+                                 const std::vector<TrepanningObservation>& measured_rows,
+                                 const std::vector<double>& m_axial) {
+  const ResidualWeighting weighting = in.weighting;
+  const std::string& weighting_name = in.weighting_name;
+  const auto& acc = v.acceptance;
   const auto& mf = v.measured_fit;
   const auto& tf = v.theory_fit;
   std::string md = "## Calibration\n\n";
   const ResidualWeighting other =
       weighting == ResidualWeighting::relative ? ResidualWeighting::absolute : ResidualWeighting::relative;
-  const TrepanningCalibration alternative = calibrate_trepanning(tool, measured_rows, other);
+  const TrepanningCalibration alternative = calibrate_trepanning(v.scene.tool, measured_rows, other);
   const auto [min_axial, max_axial] = std::minmax_element(m_axial.begin(), m_axial.end());
   md += fmt::format(
       "The model is linear in each lumped group (F_n = (π/8) f (D − d) K_F, M = f (D² − d²) K_M / 16 with f = v_f / n), "
@@ -232,7 +229,14 @@ TrepanningValidation run_trepanning_validation(const std::filesystem::path& case
   for (const char* escape : {"#d", "#u"}) {
     for (auto at = md.find(escape); at != std::string::npos; at = md.find(escape)) md.erase(at, 2);
   }
+  return md;
+}
 
+/// summary.json's calibration and acceptance.
+Json calibration_summary(const TrepanningValidation& v, const std::string& weighting_name) {
+  const auto& mf = v.measured_fit;
+  const auto& tf = v.theory_fit;
+  const auto& acc = v.acceptance;
   const auto fit_json = [](const GroupFit& g) {
     return Json{{"value_MPa", units::pa_to_mpa(g.value_Pa)},
                 {"standard_error_MPa", units::pa_to_mpa(g.standard_error_Pa)},
@@ -249,9 +253,7 @@ TrepanningValidation run_trepanning_validation(const std::filesystem::path& case
                 {"physical", m.physical},
                 {"max_hardness_for_non_negative_friction_GPa", units::pa_to_gpa(m.max_hardness_for_non_negative_friction_Pa)}};
   };
-  ReportOptions options;
-  options.extra_markdown = md;
-  options.extra_summary = {
+  return {
       {"calibration",
        {{"weighting", weighting_name},
         {"measured", {{"axial_group", fit_json(mf.axial)}, {"torque_group", fit_json(mf.torque)},
@@ -263,7 +265,51 @@ TrepanningValidation run_trepanning_validation(const std::filesystem::path& case
         {"fitted_mean_abs_error_percent", {{"axial_force", acc.axial_mean_abs_error_percent}, {"torque", acc.torque_mean_abs_error_percent}}},
         {"passed", v.passed()},
         {"failures", v.failures}}}};
-  v.files = write_report(comparison, out_dir, options);
+}
+
+}  // namespace
+
+TrepanningValidation run_trepanning_validation(const std::filesystem::path& case_dir,
+                                               const std::filesystem::path& out_dir) {
+  TrepanningValidation v;
+  const CaseInputs in = read_case(case_dir, v);
+  const CsvTable& table = in.table;
+
+  // The rows, measured and the paper's theory.
+  std::vector<TrepanningObservation> measured_rows, theory_rows;
+  const std::size_t c_speed = table.column_index(in.speed_col), c_feed = table.column_index(in.feed_col),
+                    c_axial = table.column_index(in.axial_col), c_torque = table.column_index(in.torque_col),
+                    c_axial_theory = table.column_index(in.axial_theory_col),
+                    c_torque_theory = table.column_index(in.torque_theory_col);
+  for (std::size_t r = 0; r < table.rows.size(); ++r) {
+    const auto cut = TrepanningCut::from_user_units(table.number(r, c_feed), table.number(r, c_speed));
+    measured_rows.push_back({cut, table.number(r, c_axial), table.number(r, c_torque)});
+    theory_rows.push_back({cut, table.number(r, c_axial_theory), table.number(r, c_torque_theory)});
+  }
+
+  v.measured_fit = calibrate_trepanning(v.scene.tool, measured_rows, in.weighting);
+  v.theory_fit = calibrate_trepanning(v.scene.tool, theory_rows, in.weighting);
+  std::vector<double> m_axial, m_torque, t_axial, t_torque;
+  for (std::size_t i = 0; i < measured_rows.size(); ++i) {
+    m_axial.push_back(measured_rows[i].axial_force_N);
+    m_torque.push_back(measured_rows[i].torque_N_m);
+    t_axial.push_back(theory_rows[i].axial_force_N);
+    t_torque.push_back(theory_rows[i].torque_N_m);
+  }
+  v.paper_axial = error_metrics(t_axial, m_axial);
+  v.paper_torque = error_metrics(t_torque, m_torque);
+  v.scene.material.require_group("brittle", "material", "the implied half angle and friction");
+  const double hardness_Pa = brittle_group_from_material(v.scene.material, "material").hardness_Pa.value();
+  v.implied_measured = implied_trepanning_material(v.measured_fit.groups, hardness_Pa);
+  v.implied_theory = implied_trepanning_material(v.theory_fit.groups, hardness_Pa);
+
+  check_acceptance(v);
+  if (out_dir.empty()) return v;
+
+  ReportOptions options;
+  options.extra_markdown = calibration_markdown(v, in, measured_rows, m_axial);
+  options.extra_summary = calibration_summary(v, in.weighting_name);
+  v.files = write_report(trepanning_comparison(v, in, measured_rows, theory_rows), out_dir, options);
   return v;
 }
 

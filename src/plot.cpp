@@ -173,6 +173,8 @@ void draw_markers(const Points& p, int marker, double radius_mm) {
   }
 }
 
+// Long (~120 lines) for a reason: one PLplot page drawn in the order PLplot's state machine needs (viewport, axes,
+// bands, series, error bars, legend); its pieces share that state rather than values.
 void draw(const FigureSpec& fig, const std::pair<double, double>& xr, const std::pair<double, double>& yr,
           const std::string& legend_where) {
   pladv(0);

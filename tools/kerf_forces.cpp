@@ -160,6 +160,8 @@ int list_materials() {
 
 }  // namespace
 
+// Long (~95 lines) for a reason: the CLI's option table, one block per subcommand, each calling one library
+// function (the work is in analytic/).
 int main(int argc, char** argv) {
   CLI::App app{"kerf-forces: analytic cutting-force predictions (ductile regime) and sweeps"};
   app.require_subcommand(1);

@@ -29,7 +29,9 @@ TEST_CASE("The registry maps a name to its model by the name, not by the line's 
   const std::vector<kerf::AnalyticModelInfo>* lists[] = {&registry, &reversed};
   for (const auto* list : lists) {
     for (const char* name : {"merchant", "liu_li", "oxley"}) {
-      CHECK(kerf::force_model_name(kerf::registered_model<kerf::ForceModel>("force", name, *list)) == name);
+      const auto* line = kerf::registered_line(*list, "force", name);
+      REQUIRE(line);
+      CHECK(line->orthogonal != nullptr);
     }
     for (const char* name : {"constant", "merchant", "lee_shaffer"}) {
       CHECK(kerf::friction_closure_name(
@@ -65,7 +67,7 @@ TEST_CASE("Within a kind, each registered enum value belongs to one name", "[reg
     CAPTURE(m.kind, m.name);
     CHECK(seen.emplace(std::string(m.kind), m.id).second);
   }
-  CHECK_THROWS_AS(kerf::registered_model<kerf::ForceModel>("force", "no_such_model"), std::logic_error);
+  CHECK_THROWS_AS(kerf::registered_model<kerf::DeformationModel>("deformation", "no_such_model"), std::logic_error);
   CHECK_FALSE(kerf::registered_id(kerf::analytic_models(), "force", "auto").has_value());  // handled by name
 }
 
@@ -80,7 +82,7 @@ TEST_CASE("A scene constructs the models it names", "[registry][scene]") {
                "quadrature": {"rule": "gsl_qag"}}
   })");
   const auto scene = kerf::parse_analytic_scene(doc);
-  CHECK(scene.force == kerf::ForceModel::merchant);
+  CHECK(scene.force->name == "merchant");
   CHECK(scene.shear_angle == kerf::ShearAngleSource::chip_ratio);
   CHECK(scene.liu_li.closure == kerf::FrictionClosure::lee_shaffer);
   CHECK(scene.liu_li.lower_limit == kerf::LowerLimitRule::pole);

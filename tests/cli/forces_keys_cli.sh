@@ -16,7 +16,7 @@ awk '/<!-- kerf-forces keys: begin -->/ { inside = 1; if (n++) print ""; next }
 [ -s "$work/doc.md" ] || fail "docs/scenes.md has no kerf-forces keys blocks"
 diff -u "$work/doc.md" "$work/keys.md" >"$work/diff" ||
   fail "docs/scenes.md's key tables differ from kerf-forces keys: $(head -20 "$work/diff")"
-for section in material.elastic material.johnson_cook material.thermal material.microstructure material.oxley \
+for section in material.elastic material.johnson_cook material.thermal material.microstructure material.oxley material.brittle \
   tool cut cut.turning measured models models.quadrature models.flow_stress_policy models.trepanning \
   models.trepanning.grits; do
   grep -q "^#### \`$section\`" "$work/keys.md" || fail "no key table for $section"

@@ -5,6 +5,7 @@
 //
 //   auto record = kerf::load_material(kerf::Json("aisi_1045"), "material");
 //   kerf::JohnsonCookParams jc = kerf::johnson_cook_from_material(record, "material");
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,7 +35,15 @@ struct OxleyHeatFactors {
   double psi = 0.9;
 };
 
+/// The brittle group's keys (each absent when the material leaves it out): the regime check's hardness and
+/// toughness, the trepanning model's default hardness; the strengths are recorded (no analytic model reads them).
+struct BrittleGroup {
+  std::optional<double> hardness_Pa, fracture_toughness_Pa_sqrt_m, tensile_strength_Pa, compressive_strength_Pa;
+};
+
 ElasticProperties elastic_from_material(const MaterialRecord& material, const std::string& path);
+/// The brittle group read through its field table (all keys absent when the material has no such group).
+BrittleGroup brittle_group_from_material(const MaterialRecord& material, const std::string& path);
 JohnsonCookParams johnson_cook_from_material(const MaterialRecord& material, const std::string& path);
 ThermalProperties thermal_from_material(const MaterialRecord& material, const std::string& path);
 MicrostructureModels microstructure_from_material(const MaterialRecord& material, const std::string& path);

@@ -28,7 +28,7 @@ struct OxleyDetails {
 };
 
 struct Prediction {
-  ForceModel force_model = ForceModel::liu_li;
+  std::string_view force_model;  ///< the name of the force model that ran (its registry line's)
   double cutting_force_N = 0.0;
   double thrust_force_N = 0.0;
   double width_m = 0.0;

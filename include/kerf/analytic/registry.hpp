@@ -5,7 +5,7 @@
 // the order of the lines changes nothing.
 //
 //   for (const auto& m : kerf::analytic_models()) fmt::print("{}.{}: {}\n", m.kind, m.name, m.summary);
-//   auto names = kerf::analytic_model_names("force");   // {"auto", "merchant", "liu_li", "oxley"}
+//   auto names = kerf::analytic_model_names("force");   // {"auto", "merchant", "liu_li", "oxley", "trepanning"}
 //   auto rule = kerf::registered_model<kerf::ShearAngleSource>("shear_angle", "lee_shaffer");
 #include <optional>
 #include <stdexcept>
@@ -19,8 +19,9 @@
 
 namespace kerf {
 
-class AnalyticCase;   // evaluate.hpp
-class MaterialCache;  // scene.hpp
+class AnalyticCase;           // evaluate.hpp
+class MaterialCache;          // scene.hpp
+struct OrthogonalForceModel;  // scene.hpp
 
 /// Builds the scene kind a force line names from a document (evaluate.hpp's parse_scene calls it).
 using SceneBuilder = std::unique_ptr<AnalyticCase> (*)(const Json& document, MaterialCache* cache);
@@ -32,6 +33,8 @@ struct AnalyticModelInfo {
   std::string_view needs;    ///< what the scene and material must provide
   int id = -1;               ///< the value of the kind's enum this name constructs; -1: none (handled by name)
   SceneBuilder build = nullptr;  ///< force lines: the scene kind that runs this model (parse_scene)
+  /// force lines of the orthogonal kind: the model that kind runs (nullptr: a scene kind of its own)
+  const OrthogonalForceModel* orthogonal = nullptr;
 };
 
 const std::vector<AnalyticModelInfo>& analytic_models();

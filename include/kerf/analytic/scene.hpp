@@ -22,6 +22,7 @@
 #include "kerf/analytic/material_models.hpp"
 #include "kerf/analytic/oxley.hpp"
 #include "kerf/analytic/ploughing.hpp"
+#include "kerf/analytic/registry.hpp"
 #include "kerf/analytic/round_nose.hpp"
 #include "kerf/analytic/shear_angle.hpp"
 #include "kerf/analytic/thermal.hpp"
@@ -30,7 +31,30 @@
 
 namespace kerf {
 
-enum class ForceModel { merchant, liu_li, oxley };
+struct AnalyticScene;
+struct Prediction;  // predict.hpp
+
+/// A force model of the orthogonal kind (models.force merchant, liu_li, oxley, auto, or one registered later),
+/// as its registry line carries it (`orthogonal`, analytic/registry.cpp): the kind calls it and never asks
+/// which model a scene names. How to add one: docs/analytic-models.md.
+struct OrthogonalForceModel {
+  /// Fills p's forces, shear angle, friction angle, chip ratio and thickness, deformation state and flow stress
+  /// (and its own details: p.liu_li, p.ploughing), with its guards and warnings; p arrives with the width, the
+  /// thickness, the regime and the Oxley details set. `oxley`: the extended-Oxley solve at t0 where the scene
+  /// asked for one (force oxley or deformation oxley), else nullptr. Throws InputError / ModelError.
+  void (*predict)(const AnalyticScene& scene, const OxleyResult* oxley, Prediction& p) = nullptr;
+  /// The model is the extended-Oxley solve: the scene reads the material's johnson_cook, thermal and oxley
+  /// groups for it; it predicts its own friction angle (no friction data needed, the scene's is not used), its
+  /// flow stress is Johnson-Cook alone, and it ignores the edge (the ploughing columns stay empty).
+  bool solves_oxley = false;
+  /// The CSV carries the Liu-Li edge-integral and ploughing-model columns.
+  bool edge_columns = false;
+  /// `auto` only: picks the model for the scene as read (the name of another force line) and says why.
+  std::string_view (*choose)(const AnalyticScene& scene, std::string* reason) = nullptr;
+};
+
+/// The built-in models (analytic/predict.cpp), named by their registry lines.
+extern const OrthogonalForceModel merchant_force_model, liu_li_force_model, oxley_force_model, auto_force_model;
 
 /// r / t0 below which the edge changes the force by only a few percent: models.force = auto takes the
 /// sharp-tool model there, and the sharp-tool models warn above it.
@@ -38,8 +62,6 @@ inline constexpr double kSharpEdgeRatio = 0.05;
 enum class DeformationModel { room_temperature, given, oxley };
 enum class ShearAngleSource { merchant, lee_shaffer, chip_ratio };
 enum class TurningThickness { equivalent, maximum };
-
-std::string_view force_model_name(ForceModel model);
 
 /// One requested contact-length column: the model and the shear-angle relation (MEP or MSSP) it uses.
 struct ContactLengthRequest {
@@ -76,7 +98,8 @@ struct AnalyticScene {
   std::optional<double> given_strain_rate_per_s;  ///< for the room_temperature deformation model
 
   // Models
-  ForceModel force = ForceModel::liu_li;  ///< the model named, or the one 'auto' chose
+  /// The registry line of the force model named, or of the one 'auto' chose (set by parse_analytic_scene).
+  const AnalyticModelInfo* force = nullptr;
   bool force_auto = true;           ///< the scene asked for 'auto' (CSV columns then cover every choice)
   std::string force_choice_reason;  ///< why 'auto' chose the force model (empty when named)
   FlowStressModel flow_stress;
@@ -94,6 +117,9 @@ struct AnalyticScene {
   // Extended Oxley (filled when force or deformation is 'oxley')
   std::optional<OxleyParams> oxley;
   OxleySolverOptions oxley_options;
+
+  /// The force model of `force`'s line.
+  const OrthogonalForceModel& force_model() const;
 };
 
 /// Caches library materials between scenes of a sweep (a file is read once). Thread-safe: sweeps parse

@@ -1,0 +1,93 @@
+// A toy force model added to the orthogonal kind the way docs/analytic-models.md says: its predict function here
+// and one registry line (a test-only registration at start-up, before any scene is read) - nothing else in the
+// library changes - and the orthogonal scene reads its name, predicts with it and writes its row and report.
+#include <catch2/catch.hpp>
+#include <cstdio>
+#include <string>
+
+#include "kerf/analytic/evaluate.hpp"
+#include "kerf/analytic/predict.hpp"
+#include "kerf/analytic/registry.hpp"
+
+using kerf::Json;
+using Catch::Matchers::Contains;
+
+namespace {
+
+constexpr double kToySpecificForce_Pa = 2e9;  // F_c = k_c w t0 (no physics: it tests the plumbing)
+
+void predict_toy(const kerf::AnalyticScene& scene, const kerf::OxleyResult*, kerf::Prediction& p) {
+  p.cutting_force_N = kToySpecificForce_Pa * scene.width_m * scene.uncut_chip_thickness_m;
+  p.thrust_force_N = 0.5 * p.cutting_force_N;
+  p.shear_angle_rad = 0.5;
+  p.chip_ratio = 1.0;
+  p.chip_thickness_m = scene.uncut_chip_thickness_m;
+  p.state.temperature_K = scene.workpiece_temperature_K;
+  p.warnings.push_back("toy force model");
+}
+
+const kerf::OrthogonalForceModel toy_force_model{.predict = &predict_toy};
+
+// The one registry line (in the library it would be a line of analytic/registry.cpp).
+[[maybe_unused]] const bool registered = kerf::register_analytic_model(
+    {"force", "toy_specific_force", "test-only toy: F_c = k_c w t0", "cut", -1, &kerf::build_orthogonal_scene,
+     &toy_force_model});
+
+Json toy_scene() {
+  return Json::parse(R"({"material": "a2024_t351",
+                         "tool": {"rake_deg": 10, "edge_radius_um": 2},
+                         "cut": {"uncut_chip_thickness_um": 10, "width_mm": 1, "speed_m_per_min": 60,
+                                 "friction_angle_deg": 30},
+                         "models": {"force": "toy_specific_force"}})");
+}
+
+std::string column(const kerf::Columns& row, const std::string& name) {
+  for (const auto& [key, value] : row)
+    if (key == name) return value;
+  return "(none)";
+}
+
+}  // namespace
+
+TEST_CASE("A toy force model plugs into the orthogonal kind through one registry line", "[registry][force]") {
+  const auto scene = kerf::parse_analytic_scene(toy_scene());
+  REQUIRE(scene.force);
+  CHECK(scene.force->name == "toy_specific_force");
+  CHECK_FALSE(scene.force_auto);
+
+  // The CSV row: the toy's forces, none of the Liu-Li or Oxley columns (the toy asks for neither).
+  const kerf::Columns row = kerf::evaluate_scene_columns(toy_scene(), nullptr);
+  CHECK(column(row, "force_model") == "toy_specific_force");
+  CHECK(std::stod(column(row, "cutting_force_N")) == Approx(kToySpecificForce_Pa * 1e-3 * 10e-6));
+  CHECK(std::stod(column(row, "thrust_force_N")) == Approx(0.5 * kToySpecificForce_Pa * 1e-3 * 10e-6));
+  CHECK(column(row, "lower_limit_deg") == "(none)");
+  CHECK(column(row, "strain_rate_constant_C0") == "(none)");
+  CHECK(column(row, "warnings") == "toy force model");
+
+  // The report names it; the key reference lists it with the other orthogonal models.
+  auto scene_case = kerf::parse_scene(toy_scene(), nullptr);
+  scene_case->predict();
+  std::FILE* text = std::tmpfile();
+  REQUIRE(text);
+  scene_case->print(text, "toy.json");
+  std::rewind(text);
+  std::string report(4096, '\0');
+  report.resize(std::fread(report.data(), 1, report.size(), text));
+  std::fclose(text);
+  CHECK_THAT(report, Contains("force model       toy_specific_force\n"));
+  CHECK_THAT(kerf::analytic_scene_keys_markdown("models"), Contains("`oxley`, `toy_specific_force` |"));
+
+  // auto still chooses among the built-in models (the toy has no say in it).
+  Json doc = toy_scene();
+  doc["models"]["force"] = "auto";
+  CHECK(kerf::parse_analytic_scene(doc).force->name == "liu_li");
+}
+
+TEST_CASE("The models.force values of the orthogonal kind leave out the trepanning kind", "[registry][force]") {
+  const std::string models = kerf::analytic_scene_keys_markdown("models");
+  const std::string force_row = models.substr(models.find("| `force` |"));
+  const std::string first_row = force_row.substr(0, force_row.find('\n'));
+  CHECK_THAT(first_row, Contains("`auto`, `merchant`, `liu_li`, `oxley`"));
+  CHECK_THAT(first_row, !Contains("`trepanning`,") && !Contains("`trepanning` |"));
+  CHECK_THAT(first_row, Contains("`trepanning` is not a model of this scene"));
+}
