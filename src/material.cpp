@@ -20,7 +20,7 @@ const std::vector<std::string>& material_group_names() {
 
 const std::vector<std::string>& material_group_keys(const std::string& group_name) {
   // The keys each analytic model reads (analytic/material_models.cpp, critical_depth.cpp, trepanning_scene.cpp);
-  // the "dem" group is checked by the DEM's own reader (dem/material.cpp), key by key.
+  // the "dem" group is checked by the DEM's own reader (dem/laws/material.cpp), key by key.
   static const std::map<std::string, std::vector<std::string>> keys = {
       {"elastic", {"youngs_modulus_GPa", "poissons_ratio", "shear_modulus_GPa"}},
       {"thermal",

@@ -1,4 +1,4 @@
-// Scene kind "cut": orthogonal cutting (seed 000 Section 4; kerf/dem/cutting.hpp), forces against tool travel
+// Scene kind "cut": orthogonal cutting (seed 000 Section 4; kerf/dem/procedures/cutting.hpp), forces against tool travel
 // and cracks by mode and place; one run with checkpoints, or replicates on several packings side by side.
 #include <fmt/format.h>
 #include <omp.h>
@@ -11,9 +11,9 @@
 #include <optional>
 
 #include "common.hpp"
-#include "kerf/dem/output.hpp"
-#include "kerf/dem/png.hpp"
-#include "kerf/dem/study.hpp"
+#include "kerf/dem/output/output.hpp"
+#include "kerf/dem/output/png.hpp"
+#include "kerf/dem/study/study.hpp"
 #include "kerf/error.hpp"
 #include "kerf/io.hpp"
 #include "kerf/metrics.hpp"
@@ -193,7 +193,7 @@ class CutKind final : public SceneKind {
 
 }  // namespace
 
-/// The replicates are a study of one condition (kerf/dem/study.hpp) in OUT/replicates: items side by side, one
+/// The replicates are a study of one condition (kerf/dem/study/study.hpp) in OUT/replicates: items side by side, one
 /// thread each while there are items to spare (a cut of a few thousand disks scales better over replicates
 /// than over threads: no barrier per step), finished items reused on a rerun, the first failure (a cut the
 /// workpiece cannot hold) rethrown as it was. OUT/replicates/study.json is that study: `kerf-dem study` reruns

@@ -6,9 +6,9 @@
 #include <iostream>
 
 #include "common.hpp"
-#include "kerf/dem/lab_test.hpp"
-#include "kerf/dem/output.hpp"
-#include "kerf/dem/png.hpp"
+#include "kerf/dem/procedures/lab_test.hpp"
+#include "kerf/dem/output/output.hpp"
+#include "kerf/dem/output/png.hpp"
 #include "kerf/io.hpp"
 #include "kerf/units.hpp"
 

@@ -1,4 +1,4 @@
-#include "kerf/dem/checkpoint.hpp"
+#include "kerf/dem/engine/checkpoint.hpp"
 
 #include <catch2/catch.hpp>
 #include <cstdint>
@@ -7,9 +7,9 @@
 #include <new>
 #include <variant>
 
-#include "kerf/dem/calibration.hpp"
-#include "kerf/dem/simulation.hpp"
-#include "../../dem/serial.hpp"
+#include "kerf/dem/procedures/calibration.hpp"
+#include "kerf/dem/engine/simulation.hpp"
+#include "../../dem/engine/serial.hpp"
 #include "kerf/error.hpp"
 
 using kerf::dem::Checkpoint;
