@@ -1,5 +1,9 @@
-// The DEM engine: neighbour lists, the force loop (joints, unjointed contacts, walls), breaks applied after
-// the loop, velocity-Verlet with Cundall local damping, stable time step and instability detection.
+// The DEM engine's step, its hot path: the force loops (joints, unjointed contacts, walls) and the gather, breaks
+// applied after the loops, velocity-Verlet with Cundall local damping, the absorbing layer's decay, instability
+// detection. The engine's other rooms: simulation_setup.cpp (particles, joints, walls, the time step),
+// simulation_neighbours.cpp (contact and incidence lists), simulation_state.cpp (the state's bytes),
+// simulation_diagnostics.cpp (energies, stresses, counts). Every loop of a step and what it inlines is in this one
+// file, as before the split: a function moved to another file could no longer inline into the step.
 #include "kerf/dem/engine/simulation.hpp"
 
 #include <fmt/format.h>
@@ -12,7 +16,6 @@
 #include <cstring>
 #include <exception>
 #include <limits>
-#include <numbers>
 #include <type_traits>
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -20,7 +23,7 @@
 
 #include "../laws/flat_joint_simd.hpp"
 #include "kerf/error.hpp"
-#include "serial.hpp"
+#include "simulation_internal.hpp"
 
 namespace kerf::dem {
 
@@ -41,12 +44,6 @@ inline v2d lane_sqrt(v2d v) {
 #else
   return v2d{std::sqrt(v[0]), std::sqrt(v[1])};
 #endif
-}
-
-enum Kind : std::uint32_t { kBond = 0, kPair = 1, kWall = 2 };
-
-constexpr std::uint32_t encode(std::size_t index, Kind kind, std::uint32_t role) {
-  return static_cast<std::uint32_t>(index) << 3 | kind << 1 | role;
 }
 
 /// Cundall's local damping of one force component (physics-dem.md section 1): F (1 - alpha sign(F v)).
@@ -119,336 +116,12 @@ void damped_kick_disks(std::int64_t n, double dt, double alpha, const std::uint8
 struct DiskArrays {
   const double *x, *y, *vx, *vy, *om, *th, *rad;
 };
+
 inline DiskArrays disk_arrays(const Particles& p) {
   return {p.x.data(), p.y.data(), p.vx.data(), p.vy.data(), p.omega.data(), p.theta.data(), p.radius.data()};
 }
 
-/// Closest point of segment (x0, y0)-(x1, y1) to (px, py).
-inline std::array<double, 2> closest_on_segment(const Wall& w, double px, double py) {
-  const double ex = w.x1 - w.x0, ey = w.y1 - w.y0;
-  const double len2 = ex * ex + ey * ey;
-  const double s = len2 > 0 ? std::clamp(((px - w.x0) * ex + (py - w.y0) * ey) / len2, 0.0, 1.0) : 0.0;
-  return {w.x0 + s * ex, w.y0 + s * ey};
-}
-
 }  // namespace
-
-int BondStore::n_bonded_elements(std::size_t b) const {
-  int n = 0;
-  for (int e = 0; e < stride; ++e) n += bonded[b * static_cast<std::size_t>(stride) + e];
-  return n;
-}
-
-Simulation::Simulation(const Material& material, const SimulationOptions& options)
-    : material_(material), opt_(options), types_{ParticleType{material.density_kg_per_m3}} {
-  if (!(options.thickness_m > 0)) throw InputError("specimen.thickness_mm", format_value(options.thickness_m * 1e3), "a positive value in mm");
-  if (!(options.time_step_safety > 0 && options.time_step_safety <= 1))
-    throw InputError("engine.time_step_safety", format_value(options.time_step_safety), "a value in (0, 1]");
-  b_.stride = std::visit([](const auto& law) { return bond_elements(law); }, material.joint);
-  speed_limit_ = options.speed_limit_m_per_s > 0 ? options.speed_limit_m_per_s : p_wave_speed_m_per_s(material);
-}
-
-double p_wave_speed_m_per_s(const Material& material) {
-  const double contact_modulus_pa = std::visit([](const auto& law) { return law.effective_modulus_pa; }, material.contact);
-  return std::sqrt(contact_modulus_pa / material.density_kg_per_m3);
-}
-
-void refuse_small_time_step_safety(double steps, double time_step_s, double safety) {
-  const double default_safety = SimulationOptions{}.time_step_safety;
-  // dt is proportional to the safety: at the default the run would take steps * safety / default steps.
-  if (!(steps > kMaxRunSteps) || safety >= default_safety || !(steps * safety / default_safety <= kMaxRunSteps)) return;
-  throw InputError("engine.time_step_safety", format_value(safety),
-                   fmt::format("at least {}: smaller, the run takes {:.3g} time steps of {} ns, more than {}",
-                               format_value(safety * steps / kMaxRunSteps), steps, format_value(time_step_s * 1e9),
-                               format_value(kMaxRunSteps)));
-}
-
-void Simulation::set_time_step_safety(double f) {
-  if (!(f > 0 && f <= 1)) throw InputError("engine.time_step_safety", format_value(f), "a value in (0, 1]");
-  opt_.time_step_safety = f;
-  if (initialised_) refresh_time_step();
-}
-
-double Simulation::mass_of(double radius_m, std::uint8_t type) const {
-  return types_.at(type).density_kg_per_m3 * std::numbers::pi * radius_m * radius_m * opt_.thickness_m;
-}
-
-int Simulation::add_particle(double x_m, double y_m, double radius_m, std::uint8_t type) {
-  const double m = mass_of(radius_m, type);
-  p_.x.push_back(x_m);
-  p_.y.push_back(y_m);
-  for (auto* v : {&p_.vx, &p_.vy, &p_.theta, &p_.omega, &p_.fx, &p_.fy, &p_.torque}) v->push_back(0.0);
-  p_.radius.push_back(radius_m);
-  p_.inv_mass.push_back(1.0 / m);
-  p_.inv_inertia.push_back(2.0 / (m * radius_m * radius_m));  // disk: I = m r^2 / 2
-  p_.type.push_back(type);
-  p_.group.push_back(0);
-  if (!absorbing_rate_.empty()) absorbing_rate_.push_back(0.0);
-  // Added to a running simulation: the next step's drift measures its move from where it starts (the neighbour
-  // lists are rebuilt after that drift).
-  if (initialised_) x_ref_.push_back(x_m), y_ref_.push_back(y_m);
-  need_rebuild_ = true;
-  return static_cast<int>(p_.size() - 1);
-}
-
-void Simulation::set_absorbing_rates(std::vector<double> rates_per_s) {
-  if (!rates_per_s.empty() && rates_per_s.size() != p_.size())
-    throw std::logic_error("Simulation::set_absorbing_rates: one rate per disk");
-  for (double r : rates_per_s)
-    if (!(r >= 0 && std::isfinite(r))) throw std::logic_error("Simulation::set_absorbing_rates: a rate not finite and >= 0");
-  absorbing_rate_ = std::move(rates_per_s);
-  absorbing_decay_.clear();
-  absorbing_dt_ = 0;
-}
-
-void Simulation::absorb_disks() {
-  const auto n = static_cast<std::int64_t>(p_.size());
-  const std::uint8_t* __restrict group = p_.group.data();
-  const double* __restrict decay = absorbing_decay_.data();
-  double* __restrict vx = p_.vx.data();
-  double* __restrict vy = p_.vy.data();
-  double* __restrict om = p_.omega.data();
-  // The same static partition as the kick before it: each thread decays the disks it has just kicked.
-#pragma omp for schedule(static) nowait
-  for (std::int64_t ii = 0; ii < n; ++ii) {
-    const auto u = static_cast<std::size_t>(ii);
-    const double f = blend(group[u] == 0, decay[u], 1.0);  // a prescribed disk keeps its velocity
-    vx[u] *= f, vy[u] *= f, om[u] *= f;
-  }
-}
-
-void Simulation::set_radius(std::size_t i, double radius_m) {
-  const double m = mass_of(radius_m, p_.type[i]);
-  p_.radius[i] = radius_m;
-  p_.inv_mass[i] = 1.0 / m;
-  p_.inv_inertia[i] = 2.0 / (m * radius_m * radius_m);
-}
-
-int Simulation::add_wall(const Wall& wall) {
-  walls_.push_back(wall);
-  need_rebuild_ = true;
-  return static_cast<int>(walls_.size() - 1);
-}
-
-int Simulation::install_bond(int i, int j) {
-  if (i > j) std::swap(i, j);
-  const auto ui = static_cast<std::size_t>(i), uj = static_cast<std::size_t>(j);
-  return install_bond(i, j, std::hypot(p_.x[uj] - p_.x[ui], p_.y[uj] - p_.y[ui]), p_.theta[uj] - p_.theta[ui]);
-}
-
-int Simulation::install_bond(int i, int j, double ref_distance_m, double ref_rotation_rad) {
-  const auto ui = static_cast<std::size_t>(i), uj = static_cast<std::size_t>(j);
-  b_.i.push_back(i);
-  b_.j.push_back(j);
-  b_.ref_distance_m.push_back(ref_distance_m);
-  b_.ref_rotation_rad.push_back(ref_rotation_rad);
-  b_.geometry.push_back(std::visit(
-      [&](const auto& law) { return bond_geometry(law, p_.radius[ui], p_.radius[uj], opt_.thickness_m); }, material_.joint));
-  b_.active.push_back(1);
-  for (int e = 0; e < b_.stride; ++e) {
-    b_.shear_force_n.push_back(0.0);
-    b_.bonded.push_back(1);
-    b_.pending.push_back(BreakMode::none);
-  }
-  b_.out.push_back({0, 0, 0, 0});
-  need_rebuild_ = true;
-  return static_cast<int>(b_.size() - 1);
-}
-
-int Simulation::install_bonds_within_gap(double gap_m) {
-  std::vector<CandidatePair> candidates;
-  find_candidate_pairs(p_.x, p_.y, p_.radius, gap_m, candidates);
-  std::vector<CandidatePair> existing;
-  for (std::size_t b = 0; b < b_.size(); ++b)
-    if (b_.active[b]) existing.push_back({b_.i[b], b_.j[b]});
-  std::sort(existing.begin(), existing.end());
-  int n = 0;
-  for (const auto& c : candidates) {
-    if (std::binary_search(existing.begin(), existing.end(), c)) continue;
-    install_bond(c.i, c.j);
-    ++n;
-  }
-  return n;
-}
-
-double Simulation::stable_time_step() const {
-  const std::size_t n = p_.size();
-  std::vector<double> kt(n, 0.0), kr(n, 0.0);
-  const double t = opt_.thickness_m;
-  // A contact's stiffness on disk u: the larger eigenvalue of k_n n n + k_s s s, and the rotational k_b + k_s r^2.
-  const auto add = [&](std::size_t u, const TimeStepStiffness& k) {
-    kt[u] += std::max(k.normal, k.shear);
-    kr[u] += k.bending + k.shear * p_.radius[u] * p_.radius[u];
-  };
-  std::visit(
-      [&](const auto& law) {
-        for (std::size_t b = 0; b < b_.size(); ++b) {
-          if (!b_.active[b]) continue;
-          const TimeStepStiffness k = bond_time_step_stiffness(law, b_.geometry[b]);
-          for (auto u : {b_.i[b], b_.j[b]}) add(static_cast<std::size_t>(u), k);
-        }
-      },
-      material_.joint);
-  return std::visit(
-      [&](const auto& law) {
-        for (const auto& c : pairs_) {
-          const TimeStepStiffness k = contact_time_step_stiffness(law, p_.radius[c.i], p_.radius[c.j], t);
-          add(static_cast<std::size_t>(c.i), k);
-          add(static_cast<std::size_t>(c.j), k);
-        }
-        for (const auto& wc : wall_contacts_) {
-          const auto u = static_cast<std::size_t>(wc[1]);
-          add(u, contact_time_step_stiffness(law, p_.radius[u], 0.0, t));
-        }
-        double dt = std::numeric_limits<double>::infinity();
-        for (std::size_t u = 0; u < n; ++u) {
-          // Floor: four contacts with an equal disk, so that contacts formed later (fracture, genesis) stay
-          // stable. With f_safety <= 0.8 the step keeps a margin of about sqrt(2) / 0.8 on the Gershgorin bound
-          // of the largest eigenfrequency, sqrt(2 sum k / m).
-          const TimeStepStiffness self = contact_time_step_stiffness(law, p_.radius[u], p_.radius[u], t);
-          const double ktu = std::max(kt[u], 4 * std::max(self.normal, self.shear));
-          const double kru = std::max(kr[u], 4 * self.shear * p_.radius[u] * p_.radius[u]);
-          dt = std::min({dt, std::sqrt(1.0 / (p_.inv_mass[u] * ktu)), std::sqrt(1.0 / (p_.inv_inertia[u] * kru))});
-        }
-        dt *= opt_.time_step_safety;
-        // A density or stiffness so extreme that the masses or the step leave the doubles (1e308 kg/m^3:
-        // dt = inf; 1e-300: the masses underflow) cannot be integrated: say which inputs, before any step.
-        if (!(std::isfinite(dt) && dt > 0))
-          throw ModelError("dem", fmt::format("the stable time step is {:.4g} s, not a positive finite number: the "
-                                              "masses or stiffnesses are beyond double precision "
-                                              "(material.density_kg_per_m3 = {:.6g}, specimen.thickness_mm = {:.6g})",
-                                              dt, material_.density_kg_per_m3, 1e3 * t));
-        return dt;
-      },
-      material_.contact);
-}
-
-void Simulation::initialise() {
-  if (p_.size() == 0) throw ModelError("dem", "no particles to simulate");
-  skin_ = opt_.skin_m > 0 ? opt_.skin_m : 0.3 * *std::min_element(p_.radius.begin(), p_.radius.end());
-  rebuild_neighbours();
-  if (!dt_fixed_) dt_ = stable_time_step();
-  evaluate_forces();
-  initialised_ = true;
-}
-
-void Simulation::rebuild_neighbours() {
-  const std::size_t n = p_.size();
-  x_ref_ = p_.x;
-  y_ref_ = p_.y;
-  wall_ref_.clear();
-  for (const auto& w : walls_) wall_ref_.insert(wall_ref_.end(), {w.x0, w.y0});
-
-  // Active bonds per particle, so that jointed pairs are left out of the unjointed contacts.
-  std::vector<std::int32_t> bstart(n + 1, 0), partners;
-  for (std::size_t b = 0; b < b_.size(); ++b)
-    if (b_.active[b]) ++bstart[static_cast<std::size_t>(b_.i[b]) + 1];
-  for (std::size_t u = 0; u < n; ++u) bstart[u + 1] += bstart[u];
-  partners.resize(static_cast<std::size_t>(bstart[n]));
-  {
-    std::vector<std::int32_t> fill(bstart.begin(), bstart.end() - 1);
-    for (std::size_t b = 0; b < b_.size(); ++b)
-      if (b_.active[b]) partners[static_cast<std::size_t>(fill[static_cast<std::size_t>(b_.i[b])]++)] = b_.j[b];
-  }
-  std::vector<CandidatePair> found;
-  find_candidate_pairs(p_.x, p_.y, p_.radius, skin_, found);
-  // A bond law that replaces the unbonded contact of its pair keeps bonded pairs out of the contacts.
-  const bool bonded_pairs_touch = std::visit([](const auto& law) { return bond_keeps_contact(law); }, material_.joint);
-  // Keep the shear state of the pairs that persist (both lists are sorted by (i, j)).
-  std::vector<CandidatePair> pairs;
-  std::vector<double> shear;
-  pairs.reserve(found.size());
-  shear.reserve(found.size());
-  std::size_t old = 0;
-  for (const auto& c : found) {
-    const auto first = partners.begin() + bstart[static_cast<std::size_t>(c.i)];
-    const auto last = partners.begin() + bstart[static_cast<std::size_t>(c.i) + 1];
-    if (!bonded_pairs_touch && std::find(first, last, c.j) != last) continue;
-    if (opt_.skip_held_pairs && p_.group[static_cast<std::size_t>(c.i)] && p_.group[static_cast<std::size_t>(c.j)])
-      continue;
-    while (old < pairs_.size() && pairs_[old] < c) ++old;
-    pairs.push_back(c);
-    shear.push_back(old < pairs_.size() && pairs_[old] == c ? pair_shear_[old] : 0.0);
-  }
-  pairs_ = std::move(pairs);
-  pair_shear_ = std::move(shear);
-  pair_out_.assign(pairs_.size(), {0, 0, 0, 0});
-
-  // Disk-wall candidates, sorted by (wall, particle), shear state carried over.
-  std::vector<std::array<std::int32_t, 2>> wc;
-  std::vector<double> wshear;
-  std::size_t wold = 0;
-  for (std::size_t w = 0; w < walls_.size(); ++w) {
-    if (!walls_[w].enabled) continue;
-    for (std::size_t u = 0; u < n; ++u) {
-      const auto q = closest_on_segment(walls_[w], p_.x[u], p_.y[u]);
-      const double reach = p_.radius[u] + skin_;
-      const double dx = p_.x[u] - q[0], dy = p_.y[u] - q[1];
-      if (dx * dx + dy * dy >= reach * reach) continue;
-      const std::array<std::int32_t, 2> key{static_cast<std::int32_t>(w), static_cast<std::int32_t>(u)};
-      while (wold < wall_contacts_.size() && wall_contacts_[wold] < key) ++wold;
-      wc.push_back(key);
-      wshear.push_back(wold < wall_contacts_.size() && wall_contacts_[wold] == key ? wall_shear_[wold] : 0.0);
-    }
-  }
-  wall_contacts_ = std::move(wc);
-  wall_shear_ = std::move(wshear);
-  wall_out_.assign(wall_contacts_.size(), {0, 0, 0});
-
-  // Incidence lists: the order of the entries fixes the summation order, hence bit-identical results.
-  incidence_start_.assign(n + 1, 0);
-  const auto count = [&](std::int32_t u) { ++incidence_start_[static_cast<std::size_t>(u) + 1]; };
-  for (std::size_t b = 0; b < b_.size(); ++b)
-    if (b_.active[b]) count(b_.i[b]), count(b_.j[b]);
-  for (const auto& c : pairs_) count(c.i), count(c.j);
-  for (const auto& c : wall_contacts_) count(c[1]);
-  for (std::size_t u = 0; u < n; ++u) incidence_start_[u + 1] += incidence_start_[u];
-  incidence_.resize(static_cast<std::size_t>(incidence_start_[n]));
-  std::vector<std::int32_t> fill(incidence_start_.begin(), incidence_start_.end() - 1);
-  const auto put = [&](std::int32_t u, std::uint32_t entry) {
-    incidence_[static_cast<std::size_t>(fill[static_cast<std::size_t>(u)]++)] = entry;
-  };
-  // Each particle's entries: its joints, then its pairs, then its walls; where each kind begins is kept so
-  // that the gather runs one loop per kind (no branch on the kind, which mispredicted at every change).
-  for (std::size_t b = 0; b < b_.size(); ++b)
-    if (b_.active[b]) put(b_.i[b], encode(b, kBond, 0)), put(b_.j[b], encode(b, kBond, 1));
-  incidence_pair_begin_ = fill;
-  for (std::size_t k = 0; k < pairs_.size(); ++k) put(pairs_[k].i, encode(k, kPair, 0)), put(pairs_[k].j, encode(k, kPair, 1));
-  incidence_wall_begin_ = fill;
-  for (std::size_t k = 0; k < wall_contacts_.size(); ++k) put(wall_contacts_[k][1], encode(k, kWall, 0));
-
-  fixed_.clear();
-  for (std::size_t u = 0; u < n; ++u)
-    if (p_.group[u]) fixed_.push_back(static_cast<std::int32_t>(u));
-  need_rebuild_ = false;
-}
-
-ContactSprings Simulation::contact_springs() const {
-  ContactSprings s;
-  for (std::size_t k = 0; k < pairs_.size(); ++k)
-    if (pair_shear_[k] != 0) s.pairs.push_back(pairs_[k]), s.pair_shear_n.push_back(pair_shear_[k]);
-  for (std::size_t k = 0; k < wall_contacts_.size(); ++k)
-    if (wall_shear_[k] != 0) s.wall_contacts.push_back(wall_contacts_[k]), s.wall_shear_n.push_back(wall_shear_[k]);
-  return s;
-}
-
-void Simulation::set_contact_springs(ContactSprings springs) {
-  const auto n = static_cast<std::int32_t>(p_.size()), nw = static_cast<std::int32_t>(walls_.size());
-  const auto valid = [&](std::int32_t u, std::int32_t limit) { return u >= 0 && u < limit; };
-  if (springs.pairs.size() != springs.pair_shear_n.size() || springs.wall_contacts.size() != springs.wall_shear_n.size() ||
-      !std::is_sorted(springs.pairs.begin(), springs.pairs.end()) ||
-      !std::is_sorted(springs.wall_contacts.begin(), springs.wall_contacts.end()))
-    throw ModelError("dem", "contact springs: lists of different lengths or not sorted");
-  for (const auto& c : springs.pairs)
-    if (!valid(c.i, n) || !valid(c.j, n) || c.i >= c.j) throw ModelError("dem", "contact springs: a pair out of range");
-  for (const auto& c : springs.wall_contacts)
-    if (!valid(c[0], nw) || !valid(c[1], n)) throw ModelError("dem", "contact springs: a wall contact out of range");
-  pairs_ = std::move(springs.pairs);
-  pair_shear_ = std::move(springs.pair_shear_n);
-  wall_contacts_ = std::move(springs.wall_contacts);
-  wall_shear_ = std::move(springs.wall_shear_n);
-  need_rebuild_ = true;
-}
 
 void Simulation::evaluate_forces() {
   const double dt = dt_;
@@ -796,6 +469,22 @@ void Simulation::damped_half_kick(double dt) {
                     p_.vx.data(), p_.vy.data(), p_.omega.data());
 }
 
+void Simulation::absorb_disks() {
+  const auto n = static_cast<std::int64_t>(p_.size());
+  const std::uint8_t* __restrict group = p_.group.data();
+  const double* __restrict decay = absorbing_decay_.data();
+  double* __restrict vx = p_.vx.data();
+  double* __restrict vy = p_.vy.data();
+  double* __restrict om = p_.omega.data();
+  // The same static partition as the kick before it: each thread decays the disks it has just kicked.
+#pragma omp for schedule(static) nowait
+  for (std::int64_t ii = 0; ii < n; ++ii) {
+    const auto u = static_cast<std::size_t>(ii);
+    const double f = blend(group[u] == 0, decay[u], 1.0);  // a prescribed disk keeps its velocity
+    vx[u] *= f, vy[u] *= f, om[u] *= f;
+  }
+}
+
 void Simulation::step() {
   if (!initialised_) initialise();
   const double dt = dt_;
@@ -873,186 +562,6 @@ void Simulation::step() {
 
 void Simulation::run(std::int64_t n_steps) {
   for (std::int64_t s = 0; s < n_steps; ++s) step();
-}
-
-namespace {
-template <class... V>
-std::size_t bytes_of(const V&... v) {
-  return (... + (v.capacity() * sizeof(typename V::value_type)));
-}
-}  // namespace
-
-std::size_t Simulation::memory_bytes() const {
-  return bytes_of(p_.x, p_.y, p_.vx, p_.vy, p_.theta, p_.omega, p_.fx, p_.fy, p_.torque, p_.radius, p_.inv_mass,
-                  p_.inv_inertia, p_.type, p_.group) +
-         bytes_of(b_.i, b_.j, b_.ref_distance_m, b_.ref_rotation_rad, b_.geometry, b_.active, b_.shear_force_n,
-                  b_.bonded, b_.pending, b_.out) +
-         bytes_of(pairs_, pair_shear_, pair_out_, wall_contacts_, wall_shear_, wall_out_, incidence_start_, incidence_,
-                  incidence_pair_begin_, incidence_wall_begin_, x_ref_, y_ref_, wall_ref_, fixed_, cracks_);
-}
-
-namespace {
-
-constexpr std::string_view kStateMagic = "KERFDEM7";  // 2: Wall::friction_coefficient; 3: the laws as variants;
-                                                      // 4: the viscous damping ratio; 5: skip_held_pairs;
-                                                      // 6: the absorbing rates; 7: the laws by name
-constexpr std::string_view kStateMagicRawLaws = "KERFDEM6";  // still read: the laws as raw variants of 4a34e1f
-
-}  // namespace
-
-template <class Self, class Io>
-void Simulation::state_fields(Self& sim, Io& io) {
-  auto& p = sim.p_;
-  auto& b = sim.b_;
-  io(sim.types_);
-  for (auto* v : {&p.x, &p.y, &p.vx, &p.vy, &p.theta, &p.omega, &p.fx, &p.fy, &p.torque, &p.radius, &p.inv_mass,
-                  &p.inv_inertia})
-    io(*v);
-  io(p.type, p.group);
-  io(b.stride, b.i, b.j, b.ref_distance_m, b.ref_rotation_rad, b.geometry, b.active, b.shear_force_n, b.bonded,
-     b.pending, b.out);
-  io(sim.walls_, sim.cracks_, sim.pairs_, sim.pair_shear_, sim.pair_out_, sim.wall_contacts_, sim.wall_shear_,
-     sim.wall_out_, sim.incidence_start_, sim.incidence_, sim.incidence_pair_begin_,
-     sim.incidence_wall_begin_, sim.x_ref_, sim.y_ref_, sim.wall_ref_, sim.fixed_, sim.absorbing_rate_);
-  io(sim.need_rebuild_, sim.need_breaks_, sim.initialised_, sim.dt_fixed_);
-  io(sim.dt_, sim.time_, sim.skin_, sim.speed_limit_, sim.steps_);
-}
-
-std::string Simulation::serialize() const {
-  std::string out(kStateMagic);
-  serial::Out io{out};
-  io(material_.density_kg_per_m3, material_.contact, material_.joint, material_.local_damping,
-     material_.viscous_damping_ratio, material_.name, opt_);
-  state_fields(*this, io);
-  return out;
-}
-
-Simulation Simulation::deserialize(std::string_view bytes) {
-  std::size_t version = 0;
-  serial::In io = serial::open_tagged(bytes, {kStateMagic, kStateMagicRawLaws}, "engine state", &version);
-  io.raw_laws = version == 1;
-  Material m;
-  SimulationOptions opt;
-  io(m.density_kg_per_m3, m.contact, m.joint, m.local_damping, m.viscous_damping_ratio, m.name, opt);
-  Simulation sim(m, opt);
-  state_fields(sim, io);
-  io.expect_end("engine state");
-  return sim;
-}
-
-std::array<double, 2> Simulation::group_force(std::uint8_t g) const {
-  double fx = 0, fy = 0;
-  for (auto k : fixed_) {
-    const auto u = static_cast<std::size_t>(k);
-    if (p_.group[u] != g) continue;
-    fx += p_.fx[u];
-    fy += p_.fy[u];
-  }
-  return {fx, fy};
-}
-
-double Simulation::kinetic_energy() const {
-  double e = 0;
-  for (std::size_t u = 0; u < p_.size(); ++u)
-    e += 0.5 * ((p_.vx[u] * p_.vx[u] + p_.vy[u] * p_.vy[u]) / p_.inv_mass[u] + p_.omega[u] * p_.omega[u] / p_.inv_inertia[u]);
-  return e;
-}
-
-double Simulation::strain_energy() const {
-  double e = 0;
-  const auto stride = static_cast<std::size_t>(b_.stride);
-  std::visit(
-      [&](const auto& law) {
-        for (std::size_t b = 0; b < b_.size(); ++b) {
-          if (!b_.active[b]) continue;
-          const auto i = static_cast<std::size_t>(b_.i[b]), j = static_cast<std::size_t>(b_.j[b]);
-          const double d = std::hypot(p_.x[j] - p_.x[i], p_.y[j] - p_.y[i]);
-          const BondKinematics kin{d - b_.ref_distance_m[b], p_.theta[j] - p_.theta[i] - b_.ref_rotation_rad[b], 0};
-          e += bond_energy(law, b_.geometry[b], kin, b_.shear_force_n.data() + b * stride, b_.bonded.data() + b * stride);
-        }
-      },
-      material_.joint);
-  const double t = opt_.thickness_m;
-  std::visit(
-      [&](const auto& law) {
-        for (std::size_t k = 0; k < pairs_.size(); ++k) {
-          const auto i = static_cast<std::size_t>(pairs_[k].i), j = static_cast<std::size_t>(pairs_[k].j);
-          const double overlap = p_.radius[i] + p_.radius[j] - std::hypot(p_.x[j] - p_.x[i], p_.y[j] - p_.y[i]);
-          e += contact_energy(law, p_.radius[i], p_.radius[j], t, overlap, pair_shear_[k]);
-        }
-      },
-      material_.contact);
-  return e;
-}
-
-int Simulation::n_touching_pairs() const {
-  int n = 0;
-  for (const auto& c : pairs_) {
-    const auto i = static_cast<std::size_t>(c.i), j = static_cast<std::size_t>(c.j);
-    if (std::hypot(p_.x[j] - p_.x[i], p_.y[j] - p_.y[i]) < p_.radius[i] + p_.radius[j]) ++n;
-  }
-  return n;
-}
-
-double Simulation::coordination_number() const {
-  std::size_t n_bonds = 0;
-  for (auto a : b_.active) n_bonds += a;
-  std::size_t n_touching = static_cast<std::size_t>(n_touching_pairs());
-  if (std::visit([](const auto& law) { return bond_keeps_contact(law); }, material_.joint)) {
-    // A bonded pair that also touches is one contact, not two.
-    std::vector<CandidatePair> bonded;
-    for (std::size_t b = 0; b < b_.size(); ++b)
-      if (b_.active[b]) bonded.push_back({std::min(b_.i[b], b_.j[b]), std::max(b_.i[b], b_.j[b])});
-    std::sort(bonded.begin(), bonded.end());
-    for (const auto& c : pairs_) {
-      const auto i = static_cast<std::size_t>(c.i), j = static_cast<std::size_t>(c.j);
-      if (std::hypot(p_.x[j] - p_.x[i], p_.y[j] - p_.y[i]) < p_.radius[i] + p_.radius[j] &&
-          std::binary_search(bonded.begin(), bonded.end(), c))
-        --n_touching;
-    }
-  }
-  return p_.size() ? 2.0 * static_cast<double>(n_bonds + n_touching) / static_cast<double>(p_.size()) : 0.0;
-}
-
-int Simulation::n_contacts_of(std::size_t u) const {
-  int n = 0;
-  for (std::int32_t k = incidence_start_[u]; k < incidence_start_[u + 1]; ++k) {
-    const std::uint32_t entry = incidence_[static_cast<std::size_t>(k)];
-    const std::size_t idx = entry >> 3;
-    const std::uint32_t kind = (entry >> 1) & 3u;
-    if (kind == kBond) {
-      n += b_.active[idx];
-    } else if (kind == kPair) {
-      const auto i = static_cast<std::size_t>(pairs_[idx].i), j = static_cast<std::size_t>(pairs_[idx].j);
-      n += std::hypot(p_.x[j] - p_.x[i], p_.y[j] - p_.y[i]) < p_.radius[i] + p_.radius[j];
-    } else {
-      n += wall_out_[idx][0] != 0 || wall_out_[idx][1] != 0;
-    }
-  }
-  return n;
-}
-
-std::array<double, 3> Simulation::average_stress(double area_m2) const {
-  // sigma = (1/V) sum over particles and their contacts of f_on_p (x) (x_c - x_p); for a disk pair this is
-  // -(1/V) f_on_j (x) (x_j - x_i), independent of where the contact point lies.
-  double sxx = 0, syy = 0, sxy = 0;
-  const auto add = [&](const std::array<double, 4>& o, std::size_t i, std::size_t j) {
-    const double lx = p_.x[j] - p_.x[i], ly = p_.y[j] - p_.y[i];
-    sxx -= o[0] * lx, syy -= o[1] * ly, sxy -= 0.5 * (o[0] * ly + o[1] * lx);
-  };
-  for (std::size_t b = 0; b < b_.size(); ++b)
-    if (b_.active[b]) add(b_.out[b], static_cast<std::size_t>(b_.i[b]), static_cast<std::size_t>(b_.j[b]));
-  for (std::size_t k = 0; k < pairs_.size(); ++k)
-    add(pair_out_[k], static_cast<std::size_t>(pairs_[k].i), static_cast<std::size_t>(pairs_[k].j));
-  for (std::size_t k = 0; k < wall_contacts_.size(); ++k) {
-    const auto u = static_cast<std::size_t>(wall_contacts_[k][1]);
-    const auto q = closest_on_segment(walls_[static_cast<std::size_t>(wall_contacts_[k][0])], p_.x[u], p_.y[u]);
-    const double lx = q[0] - p_.x[u], ly = q[1] - p_.y[u];  // to the contact (approximately the wall point)
-    const auto& o = wall_out_[k];
-    sxx += o[0] * lx, syy += o[1] * ly, sxy += 0.5 * (o[0] * ly + o[1] * lx);
-  }
-  const double v = area_m2 * opt_.thickness_m;
-  return {sxx / v, syy / v, sxy / v};
 }
 
 }  // namespace kerf::dem
