@@ -105,6 +105,8 @@ void grid_pairs(std::span<const double> x, std::span<const double> y, std::span<
 }
 }  // namespace
 
+// Long (~90 lines) for a reason: the search as one pass (the grid over the bulk, strays through their cells), the
+// hot part of every rebuild, measured whole by bench/neighbor_search_ab.sh.
 void find_candidate_pairs(std::span<const double> x, std::span<const double> y, std::span<const double> r,
                           double skin_m, std::vector<CandidatePair>& pairs) {
   pairs.clear();

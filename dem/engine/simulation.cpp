@@ -161,6 +161,8 @@ double Simulation::dashpot_coefficient(std::size_t i, std::int64_t j, double sti
   return inv > 0 ? 2 * material_.viscous_damping_ratio * std::sqrt(stiffness / inv) : 0.0;
 }
 
+// Long (~90 lines) for a reason: the hot loop; its two passes over a block share the block and the disks'
+// pointers, and what it inlines was measured as it stands (docs/performance.md).
 template <class Law, bool kViscous>
 void Simulation::bond_loop(const Law& law, ForceCounts& counts) {
   const double dt = dt_;

@@ -9,6 +9,8 @@
 
 namespace kerf::dem {
 
+// Long (~90 lines) for a reason: the pairs and wall contacts are rebuilt, then the incidence lists from both in
+// the order that fixes the force sums; one function keeps that order in one place.
 void Simulation::rebuild_neighbours() {
   const std::size_t n = p_.size();
   x_ref_ = p_.x;

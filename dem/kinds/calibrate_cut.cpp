@@ -64,6 +64,8 @@ class CalibrateCutKind final : public SceneKind {
     SceneKind::check_options(options, common);
   }
 
+  // Long (~100 lines) for a reason: the fit's loop (each evaluation a replicate cut with the scaled material), its
+  // log and the fitted material's files share the loop's state, written in the order the files are.
   SceneOutcome run(const SceneCommon& common, const SceneRun& run) override {
     const fs::path& out = run.options.out;
     const auto start = std::chrono::steady_clock::now();

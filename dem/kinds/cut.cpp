@@ -41,6 +41,8 @@ SampleState cut_sample(const CutRun& run) {
 
 /// Runs (or continues, from a checkpoint) a cut to the end of its travel and writes the outputs; returns the
 /// summary. `doc` and the options' checkpoint interval are for the checkpoints.
+// Long (~110 lines) for a reason: each sample interleaves steps, the sample, checkpoints, frames and progress on
+// one state (the run, its schedule, the progress); split, every part would take most of it as arguments.
 Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& doc, Json summary,
                   const RunOptions& options, CutRun run, RunProgress tp) {
   const fs::path& out = options.out;
@@ -198,6 +200,8 @@ class CutKind final : public SceneKind {
 /// than over threads: no barrier per step), finished items reused on a rerun, the first failure (a cut the
 /// workpiece cannot hold) rethrown as it was. OUT/replicates/study.json is that study: `kerf-dem study` reruns
 /// it. OUT/summary.json keeps the replicate rows and their means, spreads and standard errors.
+// Long (~95 lines) for a reason: the replicates' study is built, run and folded into one summary (rows, means,
+// spreads, errors of the means) in that summary's order.
 SceneOutcome run_cut_replicates(const Json& cut_scene, const std::string& scene_dir, const CutParams& cut,
                                 int replicates, Json summary, const RunOptions& options) {
   // Each result with the name of its spread over the replicates.

@@ -91,6 +91,8 @@ class ToughnessKind final : public SceneKind {
       throw InputError("--replicates", std::to_string(options.replicates), "1 with specimen.file (one saved packing)");
   }
 
+  // Long (~100 lines) for a reason: the packings one after the other, then their mean and standard error, the
+  // quasi-static check, the figures and the summary: stages in order over the same results.
   SceneOutcome run(const SceneCommon& common, const SceneRun& scene_run) override {
     const fs::path& out = scene_run.options.out;
     const int packings = scene_run.options.replicates;

@@ -104,6 +104,8 @@ void CutWindow::sync(const Simulation& current) {
   full_.set_clock(current.time(), current.step_count());
 }
 
+// Long (~150 lines) for a reason: its stages (candidates, roles, disks, joints, springs, absorbing layers, kept
+// forces) share global_of_ and local_of_, whose order is the new window's disk order and so fixes its results.
 Simulation CutWindow::build(const Simulation* current, double x_edge_m) {
   if (current) sync(*current);
   Particles& q = full_.particles();

@@ -172,6 +172,8 @@ std::int64_t random_genesis_steps(const SpecimenSpec& spec) {
   return spec.growth_steps + kServoMax * kServoChunk + kFloaterRounds * 200 + spec.relax_steps;
 }
 
+// Long (~90 lines) for a reason: the genesis in order (the draw, the rows, the compaction and its servo) on one
+// packing's arrays, each stage reading what the one before left (physics-dem.md section 2).
 CompactedPacking compact_random(const SpecimenSpec& spec, const GenesisProgress& progress) {
   const double W = spec.width_m, H = spec.height_m, a = spec.radius_min_m, b = spec.radius_max_m;
   const double mean_r2 = (a * a + a * b + b * b) / 3;

@@ -90,6 +90,8 @@ double senb_stress_intensity(double load_n, double span_m, double thickness_m, d
   return load_n * span_m / (thickness_m * std::pow(depth_m, 1.5)) * senb_geometry_factor(notch_m / depth_m);
 }
 
+// Long (~90 lines) for a reason: the beam's set-up in order (the notch, the rollers, the crack's neighbourhood),
+// each stage on the specimen the one before left.
 ToughnessRun::ToughnessRun(const Simulation& specimen, const ToughnessSpec& spec) : sim_(specimen), spec_(spec) {
   const auto& p0 = specimen.particles();
   const std::size_t n0 = p0.size();

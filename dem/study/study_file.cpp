@@ -48,6 +48,101 @@ std::vector<std::string> result_names(const Json& list, const std::string& where
   return names;
 }
 
+/// The base scene: "scene" (a file, relative to the study file, or an object) with the study's "set" applied.
+void read_base_scene(ObjectReader& root, const fs::path& study_file, const fs::path& study_dir, StudySpec& s) {
+  const Json& scene = root.get("scene");
+  if (scene.is_string()) {
+    fs::path path = scene.get<std::string>();
+    if (path.is_relative()) path = study_dir / path;
+    std::error_code error;
+    if (!fs::is_regular_file(path, error)) throw InputError("scene", scene.get<std::string>(), "an existing scene file");
+    s.base = read_json_file(path.string());
+    s.scene_path = path.string();
+    s.scene_dir = fs::absolute(path).parent_path();
+  } else if (scene.is_object()) {
+    s.base = scene;
+    s.scene_path = study_file.string();
+    s.scene_dir = study_dir;
+  } else {
+    throw InputError("scene", json_value_text(scene), "a scene file name or a scene object");
+  }
+  if (const Json* set = root.find("set")) {
+    if (!set->is_array()) throw InputError("set", json_value_text(*set), "a list of key.path=value texts");
+    for (const Json& item : *set) {
+      if (!item.is_string()) throw InputError("set", json_value_text(item), "a key.path=value text");
+      apply_override(s.base, item.get<std::string>(), "set");
+      s.set.push_back(item.get<std::string>());
+    }
+  }
+}
+
+/// "conditions.grid": every combination of the keys' values.
+void read_condition_grid(const Json& g, StudySpec& s) {
+  if (!g.is_object() || g.empty())
+    throw InputError("conditions.grid", json_value_text(g), "an object of key path: list of values");
+  s.conditions.push_back({});
+  for (const auto& [key, values] : g.items()) {
+    check_key_path(key, "conditions.grid");
+    if (!values.is_array() || values.empty())
+      throw InputError("conditions.grid." + key, json_value_text(values), "a non-empty list of values");
+    s.varied_keys.push_back(key);
+    std::vector<Json> checked;  // each value once, not once per condition it multiplies
+    for (const Json& v : values) checked.push_back(scalar(v, "conditions.grid." + key));
+    std::vector<StudyCondition> next;
+    for (const StudyCondition& c : s.conditions)
+      for (const Json& v : checked) {
+        StudyCondition more = c;
+        more.values.emplace_back(key, v);
+        next.push_back(std::move(more));
+      }
+    s.conditions = std::move(next);
+  }
+}
+
+/// "conditions.list": one condition per object, with its tags.
+void read_condition_list(const Json& l, StudySpec& s) {
+  if (!l.is_array() || l.empty())
+    throw InputError("conditions.list", json_value_text(l), "a non-empty list of objects (key path: value)");
+  for (std::size_t i = 0; i < l.size(); ++i) {
+    const std::string where = fmt::format("conditions.list[{}]", i);
+    if (!l[i].is_object()) throw InputError(where, json_value_text(l[i]), "an object (key path: value)");
+    StudyCondition c;
+    for (const auto& [key, v] : l[i].items()) {
+      if (key == "tags") {  // labels of the condition (the record's columns), not overrides
+        if (!v.is_object()) throw InputError(where + ".tags", json_value_text(v), "an object of name: value");
+        for (const auto& [name, t] : v.items()) {
+          c.tags.emplace_back(name, scalar(t, where + ".tags." + name));
+          if (std::find(s.tag_names.begin(), s.tag_names.end(), name) == s.tag_names.end())
+            s.tag_names.push_back(name);
+        }
+        continue;
+      }
+      check_key_path(key, where);
+      const Json value = scalar(v, where + "." + key);
+      if (std::find(s.varied_keys.begin(), s.varied_keys.end(), key) == s.varied_keys.end()) s.varied_keys.push_back(key);
+      c.values.emplace_back(key, value);
+    }
+    s.conditions.push_back(std::move(c));
+  }
+}
+
+/// "replicates": fixed or adaptive, each policy's keys only with it.
+void read_replicates(ObjectReader& r, StudySpec& s) {
+  s.replicates = read_fields(r, study_replicates_fields(), StudyReplicates{});
+  const bool adaptive = s.replicates.policy == ReplicatePolicy::adaptive;
+  for (const char* key : {"min_count", "max_count", "target_relative_sem_percent", "results"})
+    if (!adaptive && r.has(key)) throw InputError(r.key_path(key), "(given)", "only with \"policy\": \"adaptive\"");
+  if (adaptive && r.has("count")) throw InputError(r.key_path("count"), "(given)", "only with \"policy\": \"fixed\"");
+  if (const Json* results = r.find("results"))
+    s.replicates.results = result_names(*results, "replicates.results");
+  if (adaptive && s.replicates.results.empty())
+    throw InputError("replicates.results", "(missing)", "the results the adaptive target applies to");
+  if (adaptive && s.replicates.min_count > s.replicates.max_count)
+    throw InputError("replicates.max_count", std::to_string(s.replicates.max_count),
+                     fmt::format("at least min_count ({})", s.replicates.min_count));
+  r.finish();
+}
+
 }  // namespace
 
 /// A condition's value in a CSV cell or a label.
@@ -104,99 +199,19 @@ StudySpec read_study(const Json& doc, const fs::path& study_file) {
   s.document = doc;
   s.description = root.get_string_or("description", "");
   const fs::path study_dir = fs::absolute(study_file).parent_path();
-  const Json& scene = root.get("scene");
-  if (scene.is_string()) {
-    fs::path path = scene.get<std::string>();
-    if (path.is_relative()) path = study_dir / path;
-    std::error_code error;
-    if (!fs::is_regular_file(path, error)) throw InputError("scene", scene.get<std::string>(), "an existing scene file");
-    s.base = read_json_file(path.string());
-    s.scene_path = path.string();
-    s.scene_dir = fs::absolute(path).parent_path();
-  } else if (scene.is_object()) {
-    s.base = scene;
-    s.scene_path = study_file.string();
-    s.scene_dir = study_dir;
-  } else {
-    throw InputError("scene", json_value_text(scene), "a scene file name or a scene object");
-  }
-  if (const Json* set = root.find("set")) {
-    if (!set->is_array()) throw InputError("set", json_value_text(*set), "a list of key.path=value texts");
-    for (const Json& item : *set) {
-      if (!item.is_string()) throw InputError("set", json_value_text(item), "a key.path=value text");
-      apply_override(s.base, item.get<std::string>(), "set");
-      s.set.push_back(item.get<std::string>());
-    }
-  }
+  read_base_scene(root, study_file, study_dir, s);
   if (auto conditions = root.find_object("conditions")) {
     const bool grid = conditions->has("grid"), list = conditions->has("list");
     if (grid == list)
       throw InputError("conditions", json_value_text(doc.at("conditions")), "an object with either \"grid\" or \"list\"");
-    if (grid) {
-      const Json& g = conditions->get("grid");
-      if (!g.is_object() || g.empty())
-        throw InputError("conditions.grid", json_value_text(g), "an object of key path: list of values");
-      s.conditions.push_back({});
-      for (const auto& [key, values] : g.items()) {
-        check_key_path(key, "conditions.grid");
-        if (!values.is_array() || values.empty())
-          throw InputError("conditions.grid." + key, json_value_text(values), "a non-empty list of values");
-        s.varied_keys.push_back(key);
-        std::vector<Json> checked;  // each value once, not once per condition it multiplies
-        for (const Json& v : values) checked.push_back(scalar(v, "conditions.grid." + key));
-        std::vector<StudyCondition> next;
-        for (const StudyCondition& c : s.conditions)
-          for (const Json& v : checked) {
-            StudyCondition more = c;
-            more.values.emplace_back(key, v);
-            next.push_back(std::move(more));
-          }
-        s.conditions = std::move(next);
-      }
-    } else {
-      const Json& l = conditions->get("list");
-      if (!l.is_array() || l.empty())
-        throw InputError("conditions.list", json_value_text(l), "a non-empty list of objects (key path: value)");
-      for (std::size_t i = 0; i < l.size(); ++i) {
-        const std::string where = fmt::format("conditions.list[{}]", i);
-        if (!l[i].is_object()) throw InputError(where, json_value_text(l[i]), "an object (key path: value)");
-        StudyCondition c;
-        for (const auto& [key, v] : l[i].items()) {
-          if (key == "tags") {  // labels of the condition (the record's columns), not overrides
-            if (!v.is_object()) throw InputError(where + ".tags", json_value_text(v), "an object of name: value");
-            for (const auto& [name, t] : v.items()) {
-              c.tags.emplace_back(name, scalar(t, where + ".tags." + name));
-              if (std::find(s.tag_names.begin(), s.tag_names.end(), name) == s.tag_names.end())
-                s.tag_names.push_back(name);
-            }
-            continue;
-          }
-          check_key_path(key, where);
-          const Json value = scalar(v, where + "." + key);
-          if (std::find(s.varied_keys.begin(), s.varied_keys.end(), key) == s.varied_keys.end()) s.varied_keys.push_back(key);
-          c.values.emplace_back(key, value);
-        }
-        s.conditions.push_back(std::move(c));
-      }
-    }
+    if (grid)
+      read_condition_grid(conditions->get("grid"), s);
+    else
+      read_condition_list(conditions->get("list"), s);
     conditions->finish();
   }
   if (s.conditions.empty()) s.conditions.push_back({});
-  if (auto r = root.find_object("replicates")) {
-    s.replicates = read_fields(*r, study_replicates_fields(), StudyReplicates{});
-    const bool adaptive = s.replicates.policy == ReplicatePolicy::adaptive;
-    for (const char* key : {"min_count", "max_count", "target_relative_sem_percent", "results"})
-      if (!adaptive && r->has(key)) throw InputError(r->key_path(key), "(given)", "only with \"policy\": \"adaptive\"");
-    if (adaptive && r->has("count")) throw InputError(r->key_path("count"), "(given)", "only with \"policy\": \"fixed\"");
-    if (const Json* results = r->find("results"))
-      s.replicates.results = result_names(*results, "replicates.results");
-    if (adaptive && s.replicates.results.empty())
-      throw InputError("replicates.results", "(missing)", "the results the adaptive target applies to");
-    if (adaptive && s.replicates.min_count > s.replicates.max_count)
-      throw InputError("replicates.max_count", std::to_string(s.replicates.max_count),
-                       fmt::format("at least min_count ({})", s.replicates.min_count));
-    r->finish();
-  }
+  if (auto r = root.find_object("replicates")) read_replicates(*r, s);
   if (auto record = root.find_object("record")) {
     StudyRecordSpec r;
     const std::string file = record->get_string("file");

@@ -120,6 +120,35 @@ double thread_cpu_s() {
   return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
+/// Why an item whose run ended with a status of its own is no sample of its condition.
+std::string failed_status_text(int status) {
+  return fmt::format("the run ended with exit status {} (a calibration that did not converge)", status);
+}
+
+/// An item finished before with the same scene (its description aside): its result into `r`, and true.
+bool reuse_finished_item(const fs::path& summary_file, const Json& doc, StudyItemResult& r) {
+  std::error_code error;
+  if (!fs::is_regular_file(summary_file, error)) return false;
+  try {
+    const Json old = read_json_file(summary_file.string());
+    const Json& mark = old.at("study_item");
+    if (without_description(mark.at("scene")) == without_description(doc)) {
+      r.reused = true;
+      r.wall_time_s = mark.at("wall_time_s").get<double>();
+      r.host = mark.at("host").get<std::string>();
+      r.rank = mark.at("rank").get<int>();
+      const int status = mark.value("exit_status", 0);
+      r.ok = status == 0;
+      if (r.ok) r.results = numeric_results(old);
+      else r.error = failed_status_text(status);
+      return true;
+    }
+  } catch (const std::exception&) {
+    // Not a study item's summary (or a damaged one): run it again.
+  }
+  return false;
+}
+
 }  // namespace
 
 std::string study_scene_key(const Json& scene) { return text_hash_fnv1a64(without_description(scene).dump()); }
@@ -148,28 +177,8 @@ StudyItemResult run_study_item(const StudySpec& spec, const StudyItem& item, con
   try {
     std::vector<std::string> overrides;
     const Json doc = item_scene(spec, item, overrides);
-    // A finished item with the same scene: reused as it is.
-    const fs::path summary_file = final_dir / "summary.json";
+    if (reuse_finished_item(final_dir / "summary.json", doc, r)) return r;
     std::error_code error;
-    if (fs::is_regular_file(summary_file, error)) {
-      try {
-        const Json old = read_json_file(summary_file.string());
-        const Json& mark = old.at("study_item");
-        if (without_description(mark.at("scene")) == without_description(doc)) {
-          r.reused = true;
-          r.wall_time_s = mark.at("wall_time_s").get<double>();
-          r.host = mark.at("host").get<std::string>();
-          r.rank = mark.at("rank").get<int>();
-          const int status = mark.value("exit_status", 0);
-          r.ok = status == 0;
-          if (r.ok) r.results = numeric_results(old);
-          else r.error = fmt::format("the run ended with exit status {} (a calibration that did not converge)", status);
-          return r;
-        }
-      } catch (const std::exception&) {
-        // Not a study item's summary (or a damaged one): run it again.
-      }
-    }
     const Scene scene = read_scene(doc, spec.scene_dir);
     RunOptions options;
     options.out = partial;
@@ -213,7 +222,7 @@ StudyItemResult run_study_item(const StudySpec& spec, const StudyItem& item, con
     // results are not a sample of the condition.
     r.ok = outcome.exit_status == 0;
     if (r.ok) r.results = numeric_results(summary);
-    else r.error = fmt::format("the run ended with exit status {} (a calibration that did not converge)", outcome.exit_status);
+    else r.error = failed_status_text(outcome.exit_status);
   } catch (const std::exception& e) {
     std::error_code ignored;
     // A checkpoint stays for the rerun (a run stopped by its caller, e.g. Ctrl-C in Python, continues there).

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <optional>
 #include <set>
 
 #include "kerf/dem/study/study.hpp"
@@ -50,42 +52,46 @@ std::string file_part(const std::string& key) {
   return out;
 }
 
-}  // namespace
-
-Json write_study_outputs(const StudySpec& spec, const StudyScheduler& scheduler, const StudyOptions& options,
-                         double wall_time_s, int workers) {
-  const std::vector<StudyItemResult> rows = scheduler.table();
-  // Every result any item has, in the order they first appear.
+/// Every result any item has, in the order they first appear.
+std::vector<std::string> result_names_of(const std::vector<StudyItemResult>& rows) {
   std::vector<std::string> names;
   for (const auto& r : rows)
     for (const auto& [name, v] : r.results)
       if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
-  const auto value_of = [](const StudyItemResult& r, const std::string& name) -> std::optional<double> {
-    for (const auto& [n, v] : r.results)
-      if (n == name) return v;
-    return std::nullopt;
-  };
-  const auto condition_cells = [&](int ci) {
-    std::vector<std::string> cells{std::to_string(ci + 1)};
-    const StudyCondition& c = spec.conditions[static_cast<std::size_t>(ci)];
-    for (const std::string& key : spec.varied_keys) {
-      std::string cell;
-      for (const auto& [k, v] : c.values)
-        if (k == key) cell = csv_escape(value_text(v));
-      cells.push_back(cell);
-    }
-    return cells;
-  };
-  // items.csv
+  return names;
+}
+
+std::optional<double> value_of(const StudyItemResult& r, const std::string& name) {
+  for (const auto& [n, v] : r.results)
+    if (n == name) return v;
+  return std::nullopt;
+}
+
+/// A row's first cells: the condition's number and its value of each varied key.
+std::vector<std::string> condition_cells(const StudySpec& spec, int ci) {
+  std::vector<std::string> cells{std::to_string(ci + 1)};
+  const StudyCondition& c = spec.conditions[static_cast<std::size_t>(ci)];
+  for (const std::string& key : spec.varied_keys) {
+    std::string cell;
+    for (const auto& [k, v] : c.values)
+      if (k == key) cell = csv_escape(value_text(v));
+    cells.push_back(cell);
+  }
+  return cells;
+}
+
+/// items.csv: one row per item; `failed` counts the failed ones.
+std::string items_csv(const StudySpec& spec, const std::vector<StudyItemResult>& rows,
+                      const std::vector<std::string>& names, std::size_t& failed) {
   std::vector<std::string> header{"condition"};
   for (const std::string& key : spec.varied_keys) header.push_back(csv_escape(key));
   for (const char* h : {"replicate", "seed", "status"}) header.emplace_back(h);
   for (const std::string& n : names) header.push_back(csv_escape(n));
   for (const char* h : {"wall_time_s", "host", "rank", "error"}) header.emplace_back(h);
-  std::string items_csv = csv_line(header);
-  std::size_t failed = 0;
+  std::string csv = csv_line(header);
+  failed = 0;
   for (const auto& r : rows) {
-    std::vector<std::string> cells = condition_cells(r.item.condition);
+    std::vector<std::string> cells = condition_cells(spec, r.item.condition);
     cells.push_back(std::to_string(r.item.replicate + 1));
     cells.push_back(std::to_string(r.item.seed));
     cells.emplace_back(r.ok ? "ok" : "failed");
@@ -98,9 +104,21 @@ Json write_study_outputs(const StudySpec& spec, const StudyScheduler& scheduler,
     cells.push_back(csv_escape(r.host));
     cells.push_back(std::to_string(r.rank));
     cells.push_back(csv_escape(r.error));
-    items_csv += csv_line(cells);
+    csv += csv_line(cells);
   }
-  // conditions.csv and the summary's conditions
+  return csv;
+}
+
+/// The statistics of every result over each condition's items: conditions.csv, the summary's conditions, and
+/// by_result[result][condition] for the plots.
+struct ConditionTables {
+  std::string csv;
+  Json conditions = Json::array();
+  std::map<std::string, std::vector<ResultStats>> by_result;
+};
+
+ConditionTables condition_tables(const StudySpec& spec, const StudyScheduler& scheduler,
+                                 const std::vector<StudyItemResult>& rows, const std::vector<std::string>& names) {
   const StudyReplicates& policy = spec.replicates;
   const bool adaptive = policy.policy == ReplicatePolicy::adaptive;
   std::vector<std::string> cheader{"condition"};
@@ -108,10 +126,8 @@ Json write_study_outputs(const StudySpec& spec, const StudyScheduler& scheduler,
   for (const char* h : {"result", "n", "failed", "mean", "std", "sem", "ci95_low", "ci95_high", "relative_sem_percent",
                         "target_relative_sem_percent", "target_met"})
     cheader.emplace_back(h);
-  std::string conditions_csv = csv_line(cheader);
-  Json conditions = Json::array();
-  // stats[result][condition]
-  std::map<std::string, std::vector<ResultStats>> by_result;
+  ConditionTables t;
+  t.csv = csv_line(cheader);
   for (std::size_t ci = 0; ci < spec.conditions.size(); ++ci) {
     Json cj{{"condition", ci + 1}, {"count", scheduler.count(static_cast<int>(ci))}};
     Json values = Json::object();
@@ -131,19 +147,19 @@ Json write_study_outputs(const StudySpec& spec, const StudyScheduler& scheduler,
       for (const auto* r : mine)
         if (const auto x = value_of(*r, n)) v.push_back(*x);
       const ResultStats st = stats_of(v);
-      by_result[n].push_back(st);
+      t.by_result[n].push_back(st);
       const double rel = st.sem / std::abs(st.mean) * 100;
       const bool targeted = adaptive && std::find(policy.results.begin(), policy.results.end(), n) != policy.results.end();
       const bool met = targeted && cfailed == 0 && std::isfinite(st.sem) &&
                        (st.sem == 0 || st.sem <= policy.target_relative_sem * std::abs(st.mean));
-      std::vector<std::string> cells = condition_cells(static_cast<int>(ci));
+      std::vector<std::string> cells = condition_cells(spec, static_cast<int>(ci));
       cells.push_back(csv_escape(n));
       cells.push_back(std::to_string(st.n));
       cells.push_back(std::to_string(cfailed));
       for (double x : {st.mean, st.std, st.sem, st.ci_low, st.ci_high, rel}) cells.push_back(csv_number(x));
       cells.push_back(targeted ? csv_number(policy.target_relative_sem * 100) : "");
       cells.emplace_back(targeted ? (met ? "yes" : "no") : "");
-      conditions_csv += csv_line(cells);
+      t.csv += csv_line(cells);
       Json rj{{"n", st.n},
               {"mean", finite_or_null(st.mean)},
               {"std", finite_or_null(st.std)},
@@ -153,13 +169,15 @@ Json write_study_outputs(const StudySpec& spec, const StudyScheduler& scheduler,
       results[n] = rj;
     }
     cj["results"] = results;
-    conditions.push_back(cj);
+    t.conditions.push_back(cj);
   }
-  const fs::path& out = options.out;
-  write_file_atomically(out / "items.csv", items_csv);
-  write_file_atomically(out / "conditions.csv", conditions_csv);
-  // Plots: each result against each varied key with numeric values, a line per combination of the other keys;
-  // error bars are the 95 % intervals.
+  return t;
+}
+
+/// Plots: each result against each varied key with numeric values, a line per combination of the other keys;
+/// error bars are the 95 % intervals. The files written, relative to `out`.
+std::vector<std::string> write_plots(const StudySpec& spec, const std::vector<std::string>& names,
+                                     std::map<std::string, std::vector<ResultStats>>& by_result, const fs::path& out) {
   std::vector<std::string> plots;
   for (std::size_t ki = 0; ki < spec.varied_keys.size(); ++ki) {
     const std::string& key = spec.varied_keys[ki];
@@ -206,6 +224,23 @@ Json write_study_outputs(const StudySpec& spec, const StudyScheduler& scheduler,
       plots.push_back(file);
     }
   }
+  return plots;
+}
+
+}  // namespace
+
+Json write_study_outputs(const StudySpec& spec, const StudyScheduler& scheduler, const StudyOptions& options,
+                         double wall_time_s, int workers) {
+  const std::vector<StudyItemResult> rows = scheduler.table();
+  const std::vector<std::string> names = result_names_of(rows);
+  std::size_t failed = 0;
+  const std::string items = items_csv(spec, rows, names, failed);
+  ConditionTables tables = condition_tables(spec, scheduler, rows, names);
+  const fs::path& out = options.out;
+  write_file_atomically(out / "items.csv", items);
+  write_file_atomically(out / "conditions.csv", tables.csv);
+  const std::vector<std::string> plots = write_plots(spec, names, tables.by_result, out);
+  const StudyReplicates& policy = spec.replicates;
   Json summary{{"kind", "study"},
                {"description", spec.description},
                {"scene", spec.scene_path},
@@ -215,11 +250,11 @@ Json write_study_outputs(const StudySpec& spec, const StudyScheduler& scheduler,
                {"items", rows.size()},
                {"items_failed", failed},
                {"items_reused", std::count_if(rows.begin(), rows.end(), [](const auto& r) { return r.reused; })},
-               {"conditions", conditions},
+               {"conditions", tables.conditions},
                {"plots", plots},
                {"workers", workers},
                {"wall_time_s", wall_time_s}};
-  if (adaptive) summary["replicates"]["results"] = policy.results;
+  if (policy.policy == ReplicatePolicy::adaptive) summary["replicates"]["results"] = policy.results;
   summary["provenance"] = run_provenance(options.command_line, spec.scene_path, spec.set);
   summary["provenance"]["study_as_run"] = spec.document;
   write_file_atomically(out / "summary.json", summary.dump(2) + "\n");
