@@ -1,11 +1,13 @@
 #pragma once
 // Byte-level helpers for the checkpoints (the engine state, LabTestRun, CutRun, calibration evaluations): raw
-// values and vectors with a length prefix, native endianness (a checkpoint is read back by the same build), and
-// the contact laws as records by name (a law list may be reordered or grow without misreading a checkpoint).
+// values and vectors with a length prefix, native endianness (a checkpoint is read back by the same build), the
+// contact laws as records by name (a law list may be reordered or grow without misreading a checkpoint), and a
+// parameter struct by the keys of its field tables (put_fields, get_fields).
 // Internal to dem/.
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -166,6 +168,29 @@ inline In open_tagged(std::string_view bytes, std::string_view tag, const std::s
   return open_tagged(bytes, {tag}, what);
 }
 
+// --- a field of a table as a record holds it ---
+
+/// Fields a record holds as a number: a real number in SI (to the bit), an integer, a flag.
+template <class S, class F>
+constexpr bool kNumberInRecord =
+    std::is_same_v<F, NumberField<S>> || std::is_same_v<F, IntField<S>> || std::is_same_v<F, BoolField<S>>;
+
+/// Sets a number, integer or flag field from its value in a record; `corrupt(why)` is the error of an integer
+/// that is none or out of its range (checked before the conversion, which would be undefined).
+template <class S, class F, class Corrupt>
+void set_from_record(const F& f, S& s, double value, const Corrupt& corrupt) {
+  if constexpr (std::is_same_v<F, NumberField<S>>) {
+    f.set(s, value);
+  } else if constexpr (std::is_same_v<F, IntField<S>>) {
+    if (!(value >= f.lo && value <= f.hi) || value != std::trunc(value))
+      throw corrupt(std::string(f.key) + " is not an integer in [" + std::to_string(f.lo) + ", " + std::to_string(f.hi) +
+                    "]");
+    f.set(s, static_cast<int>(value));
+  } else {
+    f.set(s, value != 0);
+  }
+}
+
 // --- the laws as records: the registry name, then each key of the law's field table with its SI value ---
 
 using legacy::LawRecord;
@@ -179,8 +204,7 @@ LawRecord law_record(const P& p) {
     std::visit(
         [&](const auto& f) {
           using F = std::decay_t<decltype(f)>;
-          if constexpr (std::is_same_v<F, NumberField<P>> || std::is_same_v<F, IntField<P>> ||
-                        std::is_same_v<F, BoolField<P>>)
+          if constexpr (kNumberInRecord<P, F>)
             r.values.emplace_back(std::string(f.key), static_cast<double>(f.get(p)));
           else
             throw std::logic_error("a law field of a kind the checkpoints cannot store: " + std::string(f.key));
@@ -215,17 +239,7 @@ V law_from_record(const LawRecord& r) {
                                              [&](const auto& kv) { return kv.first == f.key; });
                 if (it == r.values.end()) throw corrupt("no value for " + std::string(f.key));
                 ++used;
-                if constexpr (std::is_same_v<F, NumberField<P>>)
-                  f.set(p, it->second);
-                else if constexpr (std::is_same_v<F, IntField<P>>) {
-                  // Range and integrality before the conversion: a corrupt value would make it undefined.
-                  if (!(it->second >= f.lo && it->second <= f.hi) || it->second != std::trunc(it->second))
-                    throw corrupt(std::string(f.key) + " is not an integer in [" + std::to_string(f.lo) + ", " +
-                                  std::to_string(f.hi) + "]");
-                  f.set(p, static_cast<int>(it->second));
-                }
-                else if constexpr (std::is_same_v<F, BoolField<P>>)
-                  f.set(p, it->second != 0);
+                if constexpr (kNumberInRecord<P, F>) set_from_record(f, p, it->second, corrupt);
               },
               field);
         }
@@ -274,6 +288,88 @@ V get_law(In& io) {
   r.values.resize(static_cast<std::size_t>(n));
   for (auto& [key, value] : r.values) io(key, value);
   return law_from_record<V>(r);
+}
+
+
+// --- a parameter struct by the keys of its tables: each field as "section.key" with its value ---
+
+/// A table of S and the scene section whose keys it holds ("cut", "tool", ...).
+template <class S>
+struct SectionFields {
+  std::string_view section;
+  const FieldTable<S>& table;
+};
+
+/// Writes every field of `sections` for `s`: the numbers (reals in SI, to the bit; integers and flags as numbers)
+/// as (key, value) records, then the choices as (key, name). Derived from the tables, so a field added to a table
+/// is stored without a new format; a kind of field a record cannot hold is a logic error (a table of the build).
+template <class S, std::size_t N>
+void put_fields(std::string& out, const std::array<SectionFields<S>, N>& sections, const S& s) {
+  std::vector<std::pair<std::string, double>> numbers;
+  std::vector<std::pair<std::string, std::string>> choices;
+  for (const SectionFields<S>& sf : sections)
+    for (const auto& field : sf.table)
+      std::visit(
+          [&](const auto& f) {
+            using F = std::decay_t<decltype(f)>;
+            std::string key = std::string(sf.section) + "." + std::string(f.key);
+            if constexpr (std::is_same_v<F, NumberField<S>>) {
+              if (f.has) throw std::logic_error("an optional number the checkpoints cannot store: " + key);
+            }
+            if constexpr (kNumberInRecord<S, F>)
+              numbers.emplace_back(std::move(key), static_cast<double>(f.get(s)));
+            else if constexpr (std::is_same_v<F, ChoiceField<S>>)
+              choices.emplace_back(std::move(key), std::string(f.names[static_cast<std::size_t>(f.get(s))]));
+            else
+              throw std::logic_error("a field of a kind the checkpoints cannot store: " + key);
+          },
+          field);
+  put_raw(out, static_cast<std::uint64_t>(numbers.size()));
+  for (const auto& [key, value] : numbers) put_str(out, key), put_raw(out, value);
+  put_raw(out, static_cast<std::uint64_t>(choices.size()));
+  for (const auto& [key, name] : choices) put_str(out, key), put_str(out, name);
+}
+
+/// Reads what put_fields wrote into `s`: each field of `sections` from its record; a field the record lacks (one
+/// added to a table after it was written) keeps its value in `s`, the default. A key this build does not have, a
+/// key twice, an integer out of range or a choice's unknown name is a corrupt `what` (ModelError, exit 3).
+template <class S, std::size_t N>
+void get_fields(In& io, const std::array<SectionFields<S>, N>& sections, S& s, const std::string& what) {
+  const auto corrupt = [&](const std::string& why) { return ModelError("dem", "corrupt " + what + " (" + why + ")"); };
+  const auto count = [&] {
+    std::uint64_t n = 0;
+    io(n);
+    if (n > io.b.size() - io.at) throw corrupt("a length beyond its end");
+    return static_cast<std::size_t>(n);
+  };
+  std::vector<std::pair<std::string, double>> numbers(count());
+  for (auto& [key, value] : numbers) io(key, value);
+  std::vector<std::pair<std::string, std::string>> choices(count());
+  for (auto& [key, name] : choices) io(key, name);
+  std::size_t used = 0;
+  const auto find = [&](auto& list, const std::string& key) {
+    const auto it = std::find_if(list.begin(), list.end(), [&](const auto& kv) { return kv.first == key; });
+    used += it != list.end();
+    return it;
+  };
+  for (const SectionFields<S>& sf : sections)
+    for (const auto& field : sf.table)
+      std::visit(
+          [&](const auto& f) {
+            using F = std::decay_t<decltype(f)>;
+            const std::string key = std::string(sf.section) + "." + std::string(f.key);
+            if constexpr (kNumberInRecord<S, F>) {
+              if (const auto it = find(numbers, key); it != numbers.end()) set_from_record(f, s, it->second, corrupt);
+            } else if constexpr (std::is_same_v<F, ChoiceField<S>>) {
+              if (const auto it = find(choices, key); it != choices.end()) {
+                const auto name = std::find(f.names.begin(), f.names.end(), it->second);
+                if (name == f.names.end()) throw corrupt(key + " = '" + it->second + "', not a name this build has");
+                f.set(s, static_cast<int>(name - f.names.begin()));
+              }
+            }
+          },
+          field);
+  if (used != numbers.size() + choices.size()) throw corrupt("keys this build does not have, or a key twice");
 }
 
 }  // namespace kerf::dem::serial

@@ -691,30 +691,58 @@ void CutRun::finish() {
 }
 
 namespace {
-constexpr std::string_view kCutMagic = "KERFCUT7";  // 3: tool_friction_coefficient, 4: rake_face_height_m,
+
+constexpr std::string_view kCutMagic = "KERFCUT8";  // 3: tool_friction_coefficient, 4: rake_face_height_m,
                                                     // 5: the active window, 6: its absorbing layer,
-                                                    // 7: the held rows' layer
+                                                    // 7: the held rows' layer, 8: the parameters by key
+constexpr std::string_view kCutMagicListed = "KERFCUT7";  // still read: the parameters listed by hand
+
+/// A KERFCUT7 state's reader: CutRun::state_fields reads that format's order with it (frozen, as the format was).
+struct Cut7In {
+  serial::In& io;
+  template <class... T>
+  void operator()(T&... v) {
+    io(v...);
+  }
+};
+
+/// The cut's parameters by the keys of the scene sections that hold them.
+const std::array<serial::SectionFields<CutParams>, 4>& cut_sections() {
+  static const std::array<serial::SectionFields<CutParams>, 4> sections{
+      {{"cut", cut_fields()}, {"tool", tool_fields()}, {"grooves", groove_fields()}, {"active_window", active_window_fields()}}};
+  return sections;
+}
+
 }  // namespace
 
+// The run's state after its parameters (which serialize() writes by key from their tables). Called with
+// Cut7In, the frozen order of a KERFCUT7 state: the parameters by hand among the other fields.
 template <class Self, class Io>
 void CutRun::state_fields(Self& run, Io& io) {
-  auto& p = run.params_;
   auto& r = run.res_;
-  io(p.depth_of_cut_m, p.speed_m_per_s, p.length_m, p.rake_deg, p.clearance_deg, p.edge_radius_m, p.groove_depth_m,
-     p.groove_pitch_m, p.groove_width_m, p.groove_bottom_width_m, p.entry_fraction, p.window_m,
-     p.tool_friction_coefficient, p.rake_face_height_m);
-  std::string groove_shape = groove_shape_names().name(p.groove_shape);  // by name, as before the enum
-  io(p.edge_segments, p.sample_every_steps, groove_shape, r.samples);
-  if constexpr (!std::is_const_v<Self>) p.groove_shape = groove_shape_names().parse(groove_shape, "cut checkpoint");
-  io(r.y_top_m, r.y_cut_m, r.width_m, r.time_step_s, r.wall_time_s, run.t0_, r.workpiece_box_m);
-  io(r.n_particles, r.n_removed_by_grooves, r.steps, run.first_tool_wall_, run.n_tool_walls_, run.finished_);
-  io(p.active_window, p.window_ahead_depths, p.window_behind_depths, p.window_below_depths, p.window_above_depths,
-     p.window_shift_depths, r.particle_steps, p.window_absorbing_depths, p.window_absorbing_attenuation);
-  io(p.held_absorbing_depths);
+  if constexpr (std::is_same_v<Io, Cut7In>) {
+    auto& p = run.params_;
+    io(p.depth_of_cut_m, p.speed_m_per_s, p.length_m, p.rake_deg, p.clearance_deg, p.edge_radius_m, p.groove_depth_m,
+       p.groove_pitch_m, p.groove_width_m, p.groove_bottom_width_m, p.entry_fraction, p.window_m,
+       p.tool_friction_coefficient, p.rake_face_height_m);
+    std::string groove_shape;  // by name, as before the enum
+    io(p.edge_segments, p.sample_every_steps, groove_shape, r.samples);
+    p.groove_shape = groove_shape_names().parse(groove_shape, "cut checkpoint");
+    io(r.y_top_m, r.y_cut_m, r.width_m, r.time_step_s, r.wall_time_s, run.t0_, r.workpiece_box_m);
+    io(r.n_particles, r.n_removed_by_grooves, r.steps, run.first_tool_wall_, run.n_tool_walls_, run.finished_);
+    io(p.active_window, p.window_ahead_depths, p.window_behind_depths, p.window_below_depths, p.window_above_depths,
+       p.window_shift_depths, r.particle_steps, p.window_absorbing_depths, p.window_absorbing_attenuation);
+    io(p.held_absorbing_depths);
+  } else {
+    io(r.samples, r.y_top_m, r.y_cut_m, r.width_m, r.time_step_s, r.wall_time_s, run.t0_, r.workpiece_box_m);
+    io(r.n_particles, r.n_removed_by_grooves, r.steps, run.first_tool_wall_, run.n_tool_walls_, run.finished_,
+       r.particle_steps);
+  }
 }
 
 std::string CutRun::serialize() const {
   std::string out(kCutMagic);
+  serial::put_fields(out, cut_sections(), params_);
   serial::Out io{out};
   state_fields(*this, io);
   io(sim_.serialize(), window_ ? window_->serialize() : std::string());
@@ -722,9 +750,16 @@ std::string CutRun::serialize() const {
 }
 
 CutRun CutRun::deserialize(std::string_view bytes) {
-  serial::In io = serial::open_tagged(bytes, kCutMagic, "cut checkpoint");
+  std::size_t version = 0;
+  serial::In io = serial::open_tagged(bytes, {kCutMagic, kCutMagicListed}, "cut checkpoint", &version);
   CutRun run;
-  state_fields(run, io);
+  if (version == 1) {
+    Cut7In listed{io};
+    state_fields(run, listed);
+  } else {
+    serial::get_fields(io, cut_sections(), run.params_, "cut checkpoint");
+    state_fields(run, io);
+  }
   std::string state, window;
   io(state, window);
   io.expect_end("cut checkpoint");
