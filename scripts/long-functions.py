@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Functions longer than a limit (default 80 lines, signature to closing brace) in C++ files, one per line:
 length, file:line, name, and "reason" where a comment just above the function gives why it is long ("Long (...)
-for a reason: ..."; issue 39: no function over ~80 lines without one). Usage: python3 scripts/long-functions.py [--limit N] PATH... (files or folders).
+for a reason: ..."; issue 39: no function over ~80 lines without one).
+Usage: python3 scripts/long-functions.py [--limit N] PATH... (files or folders).
 A function is a brace block at namespace or class level whose head (the text since the previous ';', '{' or '}')
 has a parameter list and is no class, struct, enum, namespace, initialiser or lambda."""
 import pathlib, re, sys
@@ -38,7 +39,8 @@ def functions(path):
             head = text[head_start:i]
             inside_function = any(k == 'f' for k, _ in stack)
             h = ' '.join(head.split())
-            is_function = (not inside_function and '(' in h and not re.search(r'\b(class|struct|enum|union|namespace)\b[^(]*$', h)
+            is_function = (not inside_function and '(' in h
+                           and not re.search(r'\b(class|struct|enum|union|namespace)\b[^(]*$', h)
                            and not re.search(r'(=|\]\s*(\([^)]*\))?\s*(mutable)?\s*(->[^{]*)?)\s*$', h)
                            and not re.match(r'^(if|for|while|switch|do|else|try|catch)\b', h))
             if is_function:

@@ -40,6 +40,7 @@ for h in headers:
     elif not (dem / (h[:-4] + ".cpp")).exists() and h not in names:  # header only: named with its extension
         print(f"FAIL: include/kerf/dem/{h} has no source dem/{h[:-4]}.cpp, and the map does not name it as a header")
         failures += 1
-print(f"{len(names)} names, {len(files)} files under dem/, {len(headers)} headers under include/kerf/dem/; {failures} failures")
+print(f"{len(names)} names, {len(files)} files under dem/, {len(headers)} headers under include/kerf/dem/; "
+      f"{failures} failures")
 sys.exit(1 if failures else 0)
 PY

@@ -4,7 +4,8 @@
 # Usage: bash dem_long_functions.sh <bin dir (unused)> <source dir>. Needs python3 only: no build.
 set -uo pipefail
 src="$2"
-list=$(cd "$src" && python3 scripts/long-functions.py dem include/kerf/dem) || { echo "FAIL: long-functions.py"; exit 1; }
+list=$(cd "$src" && python3 scripts/long-functions.py dem include/kerf/dem) ||
+  { echo "FAIL: long-functions.py"; exit 1; }
 echo "$list"
 if grep -q 'NO REASON$' <<<"$list"; then
   echo "FAIL: a function over 80 lines without a reason (a comment 'Long (...) for a reason: ...' above it)"
