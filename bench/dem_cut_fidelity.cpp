@@ -7,7 +7,7 @@
 //   build/bench/bench_dem_cut_fidelity [--knob speed|radius|damping|time_step|all] [--replicates 3] [--threads 2]
 //       [--out-dir bench-out/dem_cut_fidelity] [--scene validation/soda_lime_cutting/scene.json]
 //
-// The cuts are one kerf-dem study (kerf/dem/study.hpp) in --out-dir/study: each knob value is a condition
+// The cuts are one kerf-dem study (kerf/dem/study/study.hpp) in --out-dir/study: each knob value is a condition
 // (the base scene with that knob's keys overridden: cut.speed_m_per_s, specimen.radius_min_um and
 // radius_max_um, material.local_damping, engine.time_step_safety), a setting two knobs share (the base case)
 // is one condition, and each runs on --replicates packings (seeds: the scene's specimen.seed + 0..N-1), side by
@@ -38,7 +38,7 @@
 #include <vector>
 
 #include "kerf/dem/scene.hpp"
-#include "kerf/dem/study.hpp"
+#include "kerf/dem/study/study.hpp"
 #include "kerf/error.hpp"
 #include "kerf/io.hpp"
 #include "kerf/json_reader.hpp"

@@ -15,7 +15,7 @@
 #include <numbers>
 #include <string>
 
-#include "kerf/dem/specimen.hpp"
+#include "kerf/dem/procedures/specimen.hpp"
 
 using namespace kerf::dem;
 

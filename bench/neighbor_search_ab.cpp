@@ -1,5 +1,5 @@
 // The neighbour search of two commits on the same synthetic assemblies, alternating in one process (built by
-// bench/neighbor_search_ab.sh, which pastes each commit's dem/neighbor_grid.cpp in as OLD_GRID and NEW_GRID).
+// bench/neighbor_search_ab.sh, which pastes each commit's dem/engine/neighbor_grid.cpp in as OLD_GRID and NEW_GRID).
 // An assembly: a jittered lattice of 12000 disks (6 mm x 1 mm, radii 10-13 um) and `strays` disks flown off
 // in a fan up to `spread` m away, as the fragments of an undamped cut without a window. CSV on stdout: the CPU
 // milliseconds per call of each (the smallest of five rounds of 50 calls) and whether the pairs agree.
@@ -17,7 +17,7 @@
 #include <utility>
 #include <vector>
 
-#include "kerf/dem/neighbor_grid.hpp"
+#include "kerf/dem/engine/neighbor_grid.hpp"
 #include "kerf/error.hpp"
 
 namespace kerf::dem {

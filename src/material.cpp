@@ -22,7 +22,7 @@ const std::vector<std::string>& material_group_keys(const std::string& group_nam
   // The keys of the analytic groups' field tables (analytic/material_models.cpp), written again here because
   // the tables live in kerf_analytic, which links this library (kerf_core; kerf-dem loads materials without
   // it): tests/analytic/scene_test.cpp checks that the two lists hold the same keys. The "dem" group is
-  // checked by the DEM's own reader (dem/material.cpp), key by key.
+  // checked by the DEM's own reader (dem/laws/material.cpp), key by key.
   static const std::map<std::string, std::vector<std::string>> keys = {
       {"elastic", {"youngs_modulus_GPa", "poissons_ratio", "shear_modulus_GPa"}},
       {"thermal",

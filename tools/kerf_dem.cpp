@@ -6,7 +6,7 @@
 //   kerf-dem resume DIR [--threads N]
 //   kerf-dem keys [SECTION]      the Markdown key table of every scene section (docs/dem.md), or of one
 //   kerf-dem study STUDY.json --out DIR [--threads N] [--threads-per-rank N] [--checkpoint-minutes M] [--log-every N]
-//                a study (kerf/dem/study.hpp); under `mpirun -np N` across ranks (built with MPI)
+//                a study (kerf/dem/study/study.hpp); under `mpirun -np N` across ranks (built with MPI)
 //
 // Exit status 2 for bad input (the message names the field, the value and what was expected), 3 when the
 // model fails (e.g. an unstable run, a calibration that does not converge, a damaged checkpoint), 4 when an
@@ -21,10 +21,10 @@
 #include <iostream>
 #include <optional>
 
-#include "kerf/dem/run_log.hpp"
+#include "kerf/dem/output/run_log.hpp"
 #include "kerf/dem/scene.hpp"
-#include "kerf/dem/study.hpp"
-#include "kerf/dem/study_mpi.hpp"
+#include "kerf/dem/study/study.hpp"
+#include "kerf/dem/study/study_mpi.hpp"
 #include "kerf/error.hpp"
 #include "kerf/io.hpp"
 #include "kerf/json_reader.hpp"
@@ -36,7 +36,7 @@ constexpr const char* kProgram = "kerf-dem";
 
 /// Runs `body(on_progress)`; when standard output is not a terminal (a log file, a batch job) and `log_every`
 /// > 0, with a log line every `log_every` samples of each stage and the performance lines
-/// (kerf/dem/run_log.hpp), which on_progress feeds; without the run's last one for a study (`performance_line`
+/// (kerf/dem/output/run_log.hpp), which on_progress feeds; without the run's last one for a study (`performance_line`
 /// false: the study's last line sums it up).
 int with_log(int log_every, const std::function<int(const kerf::dem::ProgressCallback&)>& body,
              bool performance_line = true) {

@@ -16,7 +16,7 @@
 
 #include "kerf/comparison_config.hpp"
 #include "kerf/dem/scene.hpp"
-#include "kerf/dem/study.hpp"
+#include "kerf/dem/study/study.hpp"
 #include "kerf/error.hpp"
 #include "kerf/interval95.hpp"
 #include "kerf/io.hpp"
@@ -578,7 +578,7 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
   }
   CuttingValidation v;
 
-  // 1. The runs: one study (kerf/dem/study.hpp) of the conditions, each on spec.replicates packings, in
+  // 1. The runs: one study (kerf/dem/study/study.hpp) of the conditions, each on spec.replicates packings, in
   // OUT/study: items side by side, one thread each (18 cuts in 9 rounds on 2 cores), finished items reused, so
   // an interrupted validation resumes where it stopped. OUT/study/study.json is that study, for kerf-dem study.
   Json conditions = Json::array();

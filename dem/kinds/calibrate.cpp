@@ -1,5 +1,5 @@
 // Scene kind "calibrate": the micro-parameters fitted to macro-properties by tension and compression tests
-// (kerf/dem/calibration.hpp), with a checkpoint after every evaluation.
+// (kerf/dem/procedures/calibration.hpp), with a checkpoint after every evaluation.
 #include <fmt/format.h>
 
 #include <chrono>
@@ -8,7 +8,7 @@
 
 #include "common.hpp"
 #include "kerf/csv_table.hpp"
-#include "kerf/dem/calibration.hpp"
+#include "kerf/dem/procedures/calibration.hpp"
 #include "kerf/error.hpp"
 #include "kerf/io.hpp"
 #include "kerf/material.hpp"
@@ -47,7 +47,7 @@ const FieldTable<CalibrationSpec>& calibration_fields() {
                    "largest relative error of each of E, nu, sigma_t, sigma_c for convergence", &CalibrationSpec::tolerance),
       int_field("max_evaluations", 1, 1000, "DEM evaluations (one tension and one compression test each)",
                 &CalibrationSpec::max_evaluations),
-      choice_field("method", method_names(), "root finder (kerf/dem/calibration.hpp)", &CalibrationSpec::method),
+      choice_field("method", method_names(), "root finder (kerf/dem/procedures/calibration.hpp)", &CalibrationSpec::method),
       int_field("packings", 1, 64,
                 "packings each candidate is evaluated on (seeds specimen.seed + 0..N-1); their mean is calibrated",
                 &CalibrationSpec::packings),

@@ -1,4 +1,4 @@
-// Scene kind "calibrate_cut": the bond-strength factor s (kerf/dem/cut_calibration.hpp) fitted so that the
+// Scene kind "calibrate_cut": the bond-strength factor s (kerf/dem/procedures/cut_calibration.hpp) fitted so that the
 // mean main force over `replicates` packings meets a measured one. Evaluation k runs its replicates in
 // OUT/evaluation_k/ (as --replicates does); rerunning the same command after a kill reuses every finished
 // replicate, and the factors that follow are the same (each is computed from the same forces, to the bit).
@@ -10,7 +10,7 @@
 #include <iostream>
 
 #include "common.hpp"
-#include "kerf/dem/cut_calibration.hpp"
+#include "kerf/dem/procedures/cut_calibration.hpp"
 #include "kerf/error.hpp"
 #include "kerf/io.hpp"
 #include "kerf/units.hpp"
@@ -64,6 +64,8 @@ class CalibrateCutKind final : public SceneKind {
     SceneKind::check_options(options, common);
   }
 
+  // Long (~100 lines) for a reason: the fit's loop (each evaluation a replicate cut with the scaled material), its
+  // log and the fitted material's files share the loop's state, written in the order the files are.
   SceneOutcome run(const SceneCommon& common, const SceneRun& run) override {
     const fs::path& out = run.options.out;
     const auto start = std::chrono::steady_clock::now();

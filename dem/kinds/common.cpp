@@ -13,8 +13,8 @@
 #include <mutex>
 #include <optional>
 
-#include "kerf/dem/output.hpp"
-#include "kerf/dem/png.hpp"
+#include "kerf/dem/output/output.hpp"
+#include "kerf/dem/output/png.hpp"
 #include "kerf/error.hpp"
 #include "kerf/io.hpp"
 #include "kerf/material.hpp"

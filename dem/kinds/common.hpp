@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "kerf/dem/cut_window.hpp"
-#include "kerf/dem/cutting.hpp"
+#include "kerf/dem/procedures/cut_window.hpp"
+#include "kerf/dem/procedures/cutting.hpp"
 #include "kerf/dem/scene.hpp"
-#include "kerf/dem/simulation.hpp"
+#include "kerf/dem/engine/simulation.hpp"
 #include "kerf/io.hpp"
 
 namespace kerf::dem::kinds {

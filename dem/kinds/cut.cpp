@@ -1,4 +1,4 @@
-// Scene kind "cut": orthogonal cutting (seed 000 Section 4; kerf/dem/cutting.hpp), forces against tool travel
+// Scene kind "cut": orthogonal cutting (seed 000 Section 4; kerf/dem/procedures/cutting.hpp), forces against tool travel
 // and cracks by mode and place; one run with checkpoints, or replicates on several packings side by side.
 #include <fmt/format.h>
 #include <omp.h>
@@ -11,9 +11,9 @@
 #include <optional>
 
 #include "common.hpp"
-#include "kerf/dem/output.hpp"
-#include "kerf/dem/png.hpp"
-#include "kerf/dem/study.hpp"
+#include "kerf/dem/output/output.hpp"
+#include "kerf/dem/output/png.hpp"
+#include "kerf/dem/study/study.hpp"
 #include "kerf/error.hpp"
 #include "kerf/io.hpp"
 #include "kerf/metrics.hpp"
@@ -41,6 +41,8 @@ SampleState cut_sample(const CutRun& run) {
 
 /// Runs (or continues, from a checkpoint) a cut to the end of its travel and writes the outputs; returns the
 /// summary. `doc` and the options' checkpoint interval are for the checkpoints.
+// Long (~110 lines) for a reason: each sample interleaves steps, the sample, checkpoints, frames and progress on
+// one state (the run, its schedule, the progress); split, every part would take most of it as arguments.
 Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& doc, Json summary,
                   const RunOptions& options, CutRun run, RunProgress tp) {
   const fs::path& out = options.out;
@@ -193,11 +195,13 @@ class CutKind final : public SceneKind {
 
 }  // namespace
 
-/// The replicates are a study of one condition (kerf/dem/study.hpp) in OUT/replicates: items side by side, one
+/// The replicates are a study of one condition (kerf/dem/study/study.hpp) in OUT/replicates: items side by side, one
 /// thread each while there are items to spare (a cut of a few thousand disks scales better over replicates
 /// than over threads: no barrier per step), finished items reused on a rerun, the first failure (a cut the
 /// workpiece cannot hold) rethrown as it was. OUT/replicates/study.json is that study: `kerf-dem study` reruns
 /// it. OUT/summary.json keeps the replicate rows and their means, spreads and standard errors.
+// Long (~95 lines) for a reason: the replicates' study is built, run and folded into one summary (rows, means,
+// spreads, errors of the means) in that summary's order.
 SceneOutcome run_cut_replicates(const Json& cut_scene, const std::string& scene_dir, const CutParams& cut,
                                 int replicates, Json summary, const RunOptions& options) {
   // Each result with the name of its spread over the replicates.

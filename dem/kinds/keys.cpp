@@ -5,10 +5,10 @@
 #include <utility>
 
 #include "common.hpp"
-#include "kerf/dem/lab_test.hpp"
-#include "kerf/dem/material.hpp"
-#include "kerf/dem/study.hpp"
-#include "kerf/dem/toughness.hpp"
+#include "kerf/dem/procedures/lab_test.hpp"
+#include "kerf/dem/laws/material.hpp"
+#include "kerf/dem/study/study.hpp"
+#include "kerf/dem/procedures/toughness.hpp"
 #include "kerf/error.hpp"
 #include "kerf/key_sections.hpp"
 

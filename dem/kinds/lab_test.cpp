@@ -6,9 +6,9 @@
 #include <iostream>
 
 #include "common.hpp"
-#include "kerf/dem/lab_test.hpp"
-#include "kerf/dem/output.hpp"
-#include "kerf/dem/png.hpp"
+#include "kerf/dem/procedures/lab_test.hpp"
+#include "kerf/dem/output/output.hpp"
+#include "kerf/dem/output/png.hpp"
 #include "kerf/io.hpp"
 #include "kerf/units.hpp"
 
@@ -84,6 +84,8 @@ class LabTestKind final : public SceneKind {
   std::string name() const { return lab_test_names().name(test_); }
 
   /// Runs (or continues) the test to its end, then the quasi-static check and the outputs.
+  // Long (~80 lines) for a reason: each sample interleaves steps, the sample, checkpoints, frames and progress on
+  // one state, as continue_cut does (kinds/cut.cpp).
   SceneOutcome continue_test(const SceneCommon& common, const SceneRun& scene_run, const Simulation& specimen,
                              Json summary, LabTestRun run, RunProgress tp) const {
     const fs::path& out = scene_run.options.out;

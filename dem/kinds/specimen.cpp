@@ -4,8 +4,8 @@
 #include <iostream>
 
 #include "common.hpp"
-#include "kerf/dem/output.hpp"
-#include "kerf/dem/png.hpp"
+#include "kerf/dem/output/output.hpp"
+#include "kerf/dem/output/png.hpp"
 #include "kerf/error.hpp"
 #include "kerf/units.hpp"
 

@@ -1,4 +1,4 @@
-// Scene kind "toughness": the fracture-toughness test (kerf/dem/toughness.hpp), a single-edge-notched beam in
+// Scene kind "toughness": the fracture-toughness test (kerf/dem/procedures/toughness.hpp), a single-edge-notched beam in
 // three-point bending on one packing or, with --replicates N, on packings specimen.seed + 0..N-1 one after the
 // other (mean and standard error), with the quasi-static check on the first packing.
 #include <fmt/format.h>
@@ -8,9 +8,9 @@
 #include <sstream>
 
 #include "common.hpp"
-#include "kerf/dem/output.hpp"
-#include "kerf/dem/png.hpp"
-#include "kerf/dem/toughness.hpp"
+#include "kerf/dem/output/output.hpp"
+#include "kerf/dem/output/png.hpp"
+#include "kerf/dem/procedures/toughness.hpp"
 #include "kerf/error.hpp"
 #include "kerf/io.hpp"
 #include "kerf/units.hpp"
@@ -91,6 +91,8 @@ class ToughnessKind final : public SceneKind {
       throw InputError("--replicates", std::to_string(options.replicates), "1 with specimen.file (one saved packing)");
   }
 
+  // Long (~100 lines) for a reason: the packings one after the other, then their mean and standard error, the
+  // quasi-static check, the figures and the summary: stages in order over the same results.
   SceneOutcome run(const SceneCommon& common, const SceneRun& scene_run) override {
     const fs::path& out = scene_run.options.out;
     const int packings = scene_run.options.replicates;

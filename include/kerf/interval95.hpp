@@ -1,5 +1,5 @@
 #pragma once
-// The two-sided 95 % interval of a mean, in one place: the study's replicate statistics (dem/study) and the
+// The two-sided 95 % interval of a mean, in one place: the study's replicate statistics (dem/study/study) and the
 // soda-lime validation (validation/soda_lime_cutting.cpp) both take their quantile here.
 //
 //   const double q = kerf::quantile95(n - 1);   // Student's t for n samples

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # kerf-dem's threads: summary.json's provenance records the OpenMP wait policy of the environment (kerf leaves
-# it to the user); engine.adaptive_threads (the team governor, kerf/dem/team_governor.hpp) is a scene key,
+# it to the user); engine.adaptive_threads (the team governor, kerf/dem/engine/team_governor.hpp) is a scene key,
 # on by default, and a cut on two threads gives the same forces and cracks with it off, to the bit.
 # Usage: dem_threads_cli.sh <dir of built programs> <source dir>
 source "$(dirname "$0")/lib/dem_common.sh" "$@"

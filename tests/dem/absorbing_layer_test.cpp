@@ -11,9 +11,9 @@
 #include <cmath>
 #include <vector>
 
-#include "kerf/dem/cut_window.hpp"
-#include "kerf/dem/cutting.hpp"
-#include "kerf/dem/simulation.hpp"
+#include "kerf/dem/procedures/cut_window.hpp"
+#include "kerf/dem/procedures/cutting.hpp"
+#include "kerf/dem/engine/simulation.hpp"
 #include "quick_specimen.hpp"
 
 using namespace kerf::dem;

@@ -1,7 +1,7 @@
 // Calibration: the exact proportional trends, a small-specimen calibration that must recover macro
 // properties produced by known micro-parameters (a self-consistent target, so the test is exact about
 // what is reachable), and resuming from saved evaluations (what `kerf-dem resume` relies on).
-#include "kerf/dem/calibration.hpp"
+#include "kerf/dem/procedures/calibration.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -12,7 +12,7 @@
 
 #include "quick_specimen.hpp"
 
-#include "kerf/dem/specimen.hpp"
+#include "kerf/dem/procedures/specimen.hpp"
 #include "kerf/error.hpp"
 
 using namespace kerf::dem;

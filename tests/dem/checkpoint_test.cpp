@@ -1,4 +1,4 @@
-#include "kerf/dem/checkpoint.hpp"
+#include "kerf/dem/engine/checkpoint.hpp"
 
 #include <catch2/catch.hpp>
 #include <cstdint>
@@ -7,9 +7,10 @@
 #include <new>
 #include <variant>
 
-#include "kerf/dem/calibration.hpp"
-#include "kerf/dem/simulation.hpp"
-#include "../../dem/serial.hpp"
+#include "kerf/dem/procedures/calibration.hpp"
+#include "kerf/dem/procedures/cutting.hpp"
+#include "kerf/dem/engine/simulation.hpp"
+#include "../../dem/engine/serial.hpp"
 #include "kerf/error.hpp"
 
 using kerf::dem::Checkpoint;
@@ -239,4 +240,86 @@ TEST_CASE("checkpoint: a calibration log of KERFCAL3 (the laws as raw variants) 
   REQUIRE(back.size() == 2);
   for (std::size_t k = 0; k < 2; ++k) CHECK(same_micro_parameters(back[k].material, log[k].material));
   CHECK(serialize_evaluations(back) == now);
+}
+
+namespace {
+using kerf::dem::CutParams;
+const std::array<kerf::dem::serial::SectionFields<CutParams>, 4>& cut_tables() {
+  static const std::array<kerf::dem::serial::SectionFields<CutParams>, 4> t{{{"cut", kerf::dem::cut_fields()},
+                                                                             {"tool", kerf::dem::tool_fields()},
+                                                                             {"grooves", kerf::dem::groove_fields()},
+                                                                             {"active_window", kerf::dem::active_window_fields()}}};
+  return t;
+}
+/// Every field of the cut's tables as one text: key, then the value's bits (numbers) or index (choices).
+std::string cut_fields_text(const CutParams& p) {
+  std::string text;
+  for (const auto& sf : cut_tables())
+    for (const auto& field : sf.table)
+      std::visit([&](const auto& f) {
+        text += std::string(sf.section) + "." + std::string(f.key) + "=";
+        const auto v = f.get(p);
+        using V = std::decay_t<decltype(v)>;
+        if constexpr (std::is_same_v<V, double>) {
+          std::uint64_t bits = 0;
+          std::memcpy(&bits, &v, sizeof v);
+          text += std::to_string(bits) + ";";
+        } else if constexpr (std::is_integral_v<V>) {
+          text += std::to_string(static_cast<long long>(v)) + ";";
+        }  // no other kind of field in the cut's tables (put_fields would refuse one)
+      }, field);
+  return text;
+}
+}  // namespace
+
+TEST_CASE("checkpoint: a parameter struct stored by the keys of its tables reads back every field to the bit "
+          "(the cut's, KERFCUT8)", "[checkpoint]") {
+  namespace serial = kerf::dem::serial;
+  // Every field off its default: numbers with many digits, integers at their top, flags flipped, the last choice.
+  CutParams p;
+  int k = 0;
+  for (const auto& sf : cut_tables())
+    for (const auto& field : sf.table)
+      std::visit([&](const auto& f) {
+        using F = std::decay_t<decltype(f)>;
+        ++k;
+        if constexpr (std::is_same_v<F, kerf::NumberField<CutParams>>) f.set(p, 1e-3 * k + 1.0 / 3);
+        else if constexpr (std::is_same_v<F, kerf::IntField<CutParams>>) f.set(p, f.hi);
+        else if constexpr (std::is_same_v<F, kerf::BoolField<CutParams>>) f.set(p, !f.get(CutParams{}));
+        else if constexpr (std::is_same_v<F, kerf::ChoiceField<CutParams>>) f.set(p, static_cast<int>(f.names.size()) - 1);
+      }, field);
+  REQUIRE(cut_fields_text(p) != cut_fields_text(CutParams{}));
+  std::string bytes;
+  serial::put_fields(bytes, cut_tables(), p);
+  CutParams q;
+  serial::In in{bytes};
+  serial::get_fields(in, cut_tables(), q, "test record");
+  in.expect_end("test record");
+  CHECK(cut_fields_text(q) == cut_fields_text(p));
+  // A record without a field (one added to a table later) leaves its default; an unknown key, a key twice or an
+  // unknown choice name is a corrupt record.
+  const auto record = [](std::vector<std::pair<std::string, double>> numbers,
+                         std::vector<std::pair<std::string, std::string>> choices) {
+    std::string b;
+    serial::put_raw(b, static_cast<std::uint64_t>(numbers.size()));
+    for (const auto& [key, v] : numbers) serial::put_str(b, key), serial::put_raw(b, v);
+    serial::put_raw(b, static_cast<std::uint64_t>(choices.size()));
+    for (const auto& [key, v] : choices) serial::put_str(b, key), serial::put_str(b, v);
+    return b;
+  };
+  const auto read = [](const std::string& b) {
+    CutParams r;
+    serial::In io{b};
+    serial::get_fields(io, cut_tables(), r, "test record");
+    return r;
+  };
+  const CutParams one = read(record({{"cut.depth_of_cut_mm", 2e-4}}, {}));
+  CHECK(one.depth_of_cut_m == 2e-4);
+  CHECK(one.length_m == CutParams{}.length_m);
+  CHECK(read(record({}, {{"grooves.shape", "trapezoidal"}})).groove_shape == kerf::dem::GrooveShape::trapezoidal);
+  CHECK_THROWS_WITH(read(record({{"cut.no_such_key", 1}}, {})), Catch::Contains("keys this build does not have"));
+  CHECK_THROWS_WITH(read(record({{"cut.depth_of_cut_mm", 1}, {"cut.depth_of_cut_mm", 2}}, {})),
+                    Catch::Contains("a key twice"));
+  CHECK_THROWS_WITH(read(record({}, {{"grooves.shape", "round"}})), Catch::Contains("not a name this build has"));
+  CHECK_THROWS_AS(read(record({{"tool.edge_segments", 0.5}}, {})), kerf::ModelError);
 }

@@ -1,10 +1,10 @@
 // Calibration to one measured cut: the strength factor's material and its update rule.
-#include "kerf/dem/cut_calibration.hpp"
+#include "kerf/dem/procedures/cut_calibration.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "kerf/dem/calibration.hpp"
+#include "kerf/dem/procedures/calibration.hpp"
 #include "kerf/error.hpp"
 
 using namespace kerf::dem;

@@ -1,16 +1,16 @@
-// The active window of a steady-state cut (kerf/dem/cut_window.hpp, issue 20): a window covering the whole
+// The active window of a steady-state cut (kerf/dem/procedures/cut_window.hpp, issue 20): a window covering the whole
 // workpiece is the full cut to the bit; bookkeeping of disks crossing its edge, chips and held disks; the
 // window's size independent of the workpiece's length; restart equals uninterrupted (with and without an
 // absorbing layer, and with one along the held rows).
-#include "kerf/dem/cut_window.hpp"
+#include "kerf/dem/procedures/cut_window.hpp"
 
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <utility>
 
-#include "kerf/dem/cutting.hpp"
-#include "kerf/dem/specimen.hpp"
+#include "kerf/dem/procedures/cutting.hpp"
+#include "kerf/dem/procedures/specimen.hpp"
 #include "quick_specimen.hpp"
 
 using namespace kerf::dem;

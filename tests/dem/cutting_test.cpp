@@ -1,6 +1,6 @@
 // Orthogonal cutting (seed 000 Section 4): groove and tool geometry, force sign convention, parameter
 // validation, and a small cut as a regression (forces, cracks, determinism, grooves).
-#include "kerf/dem/cutting.hpp"
+#include "kerf/dem/procedures/cutting.hpp"
 
 #include <algorithm>
 #include <catch2/catch.hpp>
@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <numbers>
 
-#include "kerf/dem/specimen.hpp"
+#include "kerf/dem/procedures/specimen.hpp"
 #include "kerf/error.hpp"
 #include "quick_specimen.hpp"
 

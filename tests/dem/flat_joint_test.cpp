@@ -1,7 +1,7 @@
 // The flat-joint law driven through prescribed motions (MercuryDPM style): tension to failure, shear
 // failure on the Coulomb envelope, bending with partial damage, load-unload-reload, closed-form stiffness.
-#include "kerf/dem/flat_joint.hpp"
-#include "../../dem/flat_joint_simd.hpp"
+#include "kerf/dem/laws/flat_joint.hpp"
+#include "../../dem/laws/flat_joint_simd.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>

@@ -1,6 +1,6 @@
 // The calibration tests: elastic response of a hexagonal specimen against the lattice closed form, and a
 // small random specimen against stored reference values (tests/dem/reference/lab_small.json).
-#include "kerf/dem/lab_test.hpp"
+#include "kerf/dem/procedures/lab_test.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -9,7 +9,7 @@
 #include <cstdlib>
 #include <fstream>
 
-#include "kerf/dem/specimen.hpp"
+#include "kerf/dem/procedures/specimen.hpp"
 #include "kerf/io.hpp"
 
 using namespace kerf::dem;

@@ -1,7 +1,7 @@
 // The linear contact driven through prescribed motions (as the flat joint's tests): the normal spring's
 // closed form for disk-disk and disk-wall, incremental shear up to the Coulomb limit and sliding there,
 // load reversal, separation resetting the shear, the energy whose derivative is the force, and validation.
-#include "kerf/dem/linear_contact.hpp"
+#include "kerf/dem/laws/linear_contact.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>

@@ -1,6 +1,6 @@
 // Reading micro-parameters: units converted once, unknown keys and bad values named with their path,
 // the contact-model registry rejecting unknown names, bundled materials found through "base".
-#include "kerf/dem/material.hpp"
+#include "kerf/dem/laws/material.hpp"
 
 #include <algorithm>
 #include <catch2/catch.hpp>
@@ -10,7 +10,7 @@
 #include <variant>
 #include <vector>
 
-#include "kerf/dem/contact_laws.hpp"
+#include "kerf/dem/laws/contact_laws.hpp"
 #include "kerf/error.hpp"
 
 using namespace kerf::dem;

@@ -1,7 +1,7 @@
 // The cell-grid neighbour search against brute force: a packed assembly, fragments flown far away (the grid
 // then covers the bulk, the strays outside it are paired through their occupied cells), strays touching the
 // bulk's edge, so many flown that no grid fits (every disk a stray), a long thin strip, all disks at one point.
-#include "kerf/dem/neighbor_grid.hpp"
+#include "kerf/dem/engine/neighbor_grid.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>

@@ -1,5 +1,5 @@
 // Result tables: exact headers with units and exact number formatting.
-#include "kerf/dem/output.hpp"
+#include "kerf/dem/output/output.hpp"
 
 #include <catch2/catch.hpp>
 

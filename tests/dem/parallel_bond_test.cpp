@@ -2,14 +2,14 @@
 // M = -k_n I theta, incremental shear; breaks on the periphery stress), against the flat joint where their
 // elastic responses coincide, and through the engine (a bond pulled apart, then the pair as a linear contact;
 // energy conserved without damping).
-#include "kerf/dem/parallel_bond.hpp"
+#include "kerf/dem/laws/parallel_bond.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
 
-#include "kerf/dem/flat_joint.hpp"
-#include "kerf/dem/simulation.hpp"
+#include "kerf/dem/laws/flat_joint.hpp"
+#include "kerf/dem/engine/simulation.hpp"
 #include "kerf/error.hpp"
 
 using namespace kerf::dem;

@@ -3,8 +3,8 @@
 // small bonded specimen in well under a second. Default radii of SpecimenSpec unless the test sets them.
 #include <cstdint>
 
-#include "kerf/dem/cutting.hpp"
-#include "kerf/dem/specimen.hpp"
+#include "kerf/dem/procedures/cutting.hpp"
+#include "kerf/dem/procedures/specimen.hpp"
 
 namespace kerf::dem::testing {
 

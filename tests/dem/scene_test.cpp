@@ -9,8 +9,8 @@
 #include <filesystem>
 #include <set>
 
-#include "kerf/dem/cutting.hpp"
-#include "kerf/dem/lab_test.hpp"
+#include "kerf/dem/procedures/cutting.hpp"
+#include "kerf/dem/procedures/lab_test.hpp"
 #include "kerf/error.hpp"
 #include "kerf/io.hpp"
 

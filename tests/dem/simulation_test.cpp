@@ -1,6 +1,6 @@
 // Engine invariants: Newton's third law, objectivity, energy balance without damping, time-step
 // stability, determinism across thread counts, a single joint pulled to failure through the engine.
-#include "kerf/dem/simulation.hpp"
+#include "kerf/dem/engine/simulation.hpp"
 
 #include <omp.h>
 
@@ -170,7 +170,7 @@ TEST_CASE("engine: bit-identical results for 1 and 2 threads", "[simulation]") {
 }
 
 TEST_CASE("engine: a team that changes size every 16 steps gives the one-thread results to the bit", "[simulation]") {
-  // The governor (kerf/dem/team_governor.hpp) set to switch at every probe, every other window of 16 steps:
+  // The governor (kerf/dem/engine/team_governor.hpp) set to switch at every probe, every other window of 16 steps:
   // the steps alternate between 2 threads and 1, joints breaking on both.
   const int before = omp_get_max_threads();
   omp_set_num_threads(1);

@@ -1,6 +1,6 @@
 // Specimen genesis: hexagonal packing against the closed-form lattice elasticity, random packing quality
 // (density, coordination, low locked-in stress), reproducibility from the seed, save/load round trip.
-#include "kerf/dem/specimen.hpp"
+#include "kerf/dem/procedures/specimen.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>

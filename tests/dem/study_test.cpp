@@ -1,7 +1,7 @@
-// The study's scheduler (dem/study.cpp): which items it hands out and when a condition is done, driven here
+// The study's scheduler (dem/study/study_scheduler.cpp): which items it hands out and when a condition is done, driven here
 // with made-up results completed in shuffled orders by a varying number of workers, against the prefix rule
 // computed independently; and the reading of study files.
-#include "kerf/dem/study.hpp"
+#include "kerf/dem/study/study.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -1,7 +1,7 @@
-// The team-size governor (kerf/dem/team_governor.hpp) on a synthetic clock: it keeps all threads where they
+// The team-size governor (kerf/dem/engine/team_governor.hpp) on a synthetic clock: it keeps all threads where they
 // are faster, takes one thread where that is faster (a core shared with another process), and comes back when
 // the contention ends; one thread allowed: always one.
-#include "kerf/dem/team_governor.hpp"
+#include "kerf/dem/engine/team_governor.hpp"
 
 #include <algorithm>
 #include <catch2/catch.hpp>

@@ -1,6 +1,6 @@
-// The fracture-toughness test (kerf/dem/toughness.hpp): Srawley's geometry factor against ASTM E399's table and
+// The fracture-toughness test (kerf/dem/procedures/toughness.hpp): Srawley's geometry factor against ASTM E399's table and
 // the edge-crack limit, the input relations, and a small notched beam broken in three-point bending.
-#include "kerf/dem/toughness.hpp"
+#include "kerf/dem/procedures/toughness.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -7,7 +7,7 @@
 #include <numbers>
 #include <vector>
 
-#include "kerf/dem/simulation.hpp"
+#include "kerf/dem/engine/simulation.hpp"
 
 using namespace kerf::dem;
 using Catch::Matchers::WithinRel;

@@ -22,9 +22,9 @@
 #include <string_view>
 #include <vector>
 
-#include "kerf/dem/checkpoint.hpp"
-#include "kerf/dem/material.hpp"
-#include "kerf/dem/specimen.hpp"
+#include "kerf/dem/engine/checkpoint.hpp"
+#include "kerf/dem/laws/material.hpp"
+#include "kerf/dem/procedures/specimen.hpp"
 #include "kerf/field_table.hpp"
 #include "kerf/json_reader.hpp"
 
@@ -127,7 +127,7 @@ std::vector<std::string> scene_kind_names();
 std::unique_ptr<SceneKind> make_scene_kind(const std::string& name, const std::string& path = "kind");
 
 /// The scene sections with a key table: specimen, engine, loading, cut, tool, grooves, calibration,
-/// calibration.targets, output ("material" is kerf/dem/material.hpp's).
+/// calibration.targets, output ("material" is kerf/dem/laws/material.hpp's).
 std::vector<std::string> scene_sections();
 /// The Markdown key table of one section (all of them when `section` is empty), as docs/dem.md holds them;
 /// InputError listing the sections for an unknown one.

@@ -1,0 +1,126 @@
+// What the DEM engine reports of its state: the forces on held groups, kinetic and strain energy, touching pairs,
+// the coordination number, a disk's contacts, the average stress.
+#include <algorithm>
+#include <cmath>
+
+#include "kerf/dem/engine/simulation.hpp"
+#include "simulation_internal.hpp"
+
+namespace kerf::dem {
+
+std::array<double, 2> Simulation::group_force(std::uint8_t g) const {
+  double fx = 0, fy = 0;
+  for (auto k : fixed_) {
+    const auto u = static_cast<std::size_t>(k);
+    if (p_.group[u] != g) continue;
+    fx += p_.fx[u];
+    fy += p_.fy[u];
+  }
+  return {fx, fy};
+}
+
+double Simulation::kinetic_energy() const {
+  double e = 0;
+  for (std::size_t u = 0; u < p_.size(); ++u)
+    e += 0.5 * ((p_.vx[u] * p_.vx[u] + p_.vy[u] * p_.vy[u]) / p_.inv_mass[u] + p_.omega[u] * p_.omega[u] / p_.inv_inertia[u]);
+  return e;
+}
+
+double Simulation::strain_energy() const {
+  double e = 0;
+  const auto stride = static_cast<std::size_t>(b_.stride);
+  std::visit(
+      [&](const auto& law) {
+        for (std::size_t b = 0; b < b_.size(); ++b) {
+          if (!b_.active[b]) continue;
+          const auto i = static_cast<std::size_t>(b_.i[b]), j = static_cast<std::size_t>(b_.j[b]);
+          const double d = std::hypot(p_.x[j] - p_.x[i], p_.y[j] - p_.y[i]);
+          const BondKinematics kin{d - b_.ref_distance_m[b], p_.theta[j] - p_.theta[i] - b_.ref_rotation_rad[b], 0};
+          e += bond_energy(law, b_.geometry[b], kin, b_.shear_force_n.data() + b * stride, b_.bonded.data() + b * stride);
+        }
+      },
+      material_.joint);
+  const double t = opt_.thickness_m;
+  std::visit(
+      [&](const auto& law) {
+        for (std::size_t k = 0; k < pairs_.size(); ++k) {
+          const auto i = static_cast<std::size_t>(pairs_[k].i), j = static_cast<std::size_t>(pairs_[k].j);
+          const double overlap = p_.radius[i] + p_.radius[j] - std::hypot(p_.x[j] - p_.x[i], p_.y[j] - p_.y[i]);
+          e += contact_energy(law, p_.radius[i], p_.radius[j], t, overlap, pair_shear_[k]);
+        }
+      },
+      material_.contact);
+  return e;
+}
+
+int Simulation::n_touching_pairs() const {
+  int n = 0;
+  for (const auto& c : pairs_) {
+    const auto i = static_cast<std::size_t>(c.i), j = static_cast<std::size_t>(c.j);
+    if (std::hypot(p_.x[j] - p_.x[i], p_.y[j] - p_.y[i]) < p_.radius[i] + p_.radius[j]) ++n;
+  }
+  return n;
+}
+
+double Simulation::coordination_number() const {
+  std::size_t n_bonds = 0;
+  for (auto a : b_.active) n_bonds += a;
+  std::size_t n_touching = static_cast<std::size_t>(n_touching_pairs());
+  if (std::visit([](const auto& law) { return bond_keeps_contact(law); }, material_.joint)) {
+    // A bonded pair that also touches is one contact, not two.
+    std::vector<CandidatePair> bonded;
+    for (std::size_t b = 0; b < b_.size(); ++b)
+      if (b_.active[b]) bonded.push_back({std::min(b_.i[b], b_.j[b]), std::max(b_.i[b], b_.j[b])});
+    std::sort(bonded.begin(), bonded.end());
+    for (const auto& c : pairs_) {
+      const auto i = static_cast<std::size_t>(c.i), j = static_cast<std::size_t>(c.j);
+      if (std::hypot(p_.x[j] - p_.x[i], p_.y[j] - p_.y[i]) < p_.radius[i] + p_.radius[j] &&
+          std::binary_search(bonded.begin(), bonded.end(), c))
+        --n_touching;
+    }
+  }
+  return p_.size() ? 2.0 * static_cast<double>(n_bonds + n_touching) / static_cast<double>(p_.size()) : 0.0;
+}
+
+int Simulation::n_contacts_of(std::size_t u) const {
+  int n = 0;
+  for (std::int32_t k = incidence_start_[u]; k < incidence_start_[u + 1]; ++k) {
+    const std::uint32_t entry = incidence_[static_cast<std::size_t>(k)];
+    const std::size_t idx = entry >> 3;
+    const std::uint32_t kind = (entry >> 1) & 3u;
+    if (kind == kBond) {
+      n += b_.active[idx];
+    } else if (kind == kPair) {
+      const auto i = static_cast<std::size_t>(pairs_[idx].i), j = static_cast<std::size_t>(pairs_[idx].j);
+      n += std::hypot(p_.x[j] - p_.x[i], p_.y[j] - p_.y[i]) < p_.radius[i] + p_.radius[j];
+    } else {
+      n += wall_out_[idx][0] != 0 || wall_out_[idx][1] != 0;
+    }
+  }
+  return n;
+}
+
+std::array<double, 3> Simulation::average_stress(double area_m2) const {
+  // sigma = (1/V) sum over particles and their contacts of f_on_p (x) (x_c - x_p); for a disk pair this is
+  // -(1/V) f_on_j (x) (x_j - x_i), independent of where the contact point lies.
+  double sxx = 0, syy = 0, sxy = 0;
+  const auto add = [&](const std::array<double, 4>& o, std::size_t i, std::size_t j) {
+    const double lx = p_.x[j] - p_.x[i], ly = p_.y[j] - p_.y[i];
+    sxx -= o[0] * lx, syy -= o[1] * ly, sxy -= 0.5 * (o[0] * ly + o[1] * lx);
+  };
+  for (std::size_t b = 0; b < b_.size(); ++b)
+    if (b_.active[b]) add(b_.out[b], static_cast<std::size_t>(b_.i[b]), static_cast<std::size_t>(b_.j[b]));
+  for (std::size_t k = 0; k < pairs_.size(); ++k)
+    add(pair_out_[k], static_cast<std::size_t>(pairs_[k].i), static_cast<std::size_t>(pairs_[k].j));
+  for (std::size_t k = 0; k < wall_contacts_.size(); ++k) {
+    const auto u = static_cast<std::size_t>(wall_contacts_[k][1]);
+    const auto q = closest_on_segment(walls_[static_cast<std::size_t>(wall_contacts_[k][0])], p_.x[u], p_.y[u]);
+    const double lx = q[0] - p_.x[u], ly = q[1] - p_.y[u];  // to the contact (approximately the wall point)
+    const auto& o = wall_out_[k];
+    sxx += o[0] * lx, syy += o[1] * ly, sxy += 0.5 * (o[0] * ly + o[1] * lx);
+  }
+  const double v = area_m2 * opt_.thickness_m;
+  return {sxx / v, syy / v, sxy / v};
+}
+
+}  // namespace kerf::dem

@@ -1,0 +1,55 @@
+#pragma once
+// Result files of the DEM: VTK PolyData frames (disks as vertices, joints as lines, walls as lines, cracks as
+// points), the ParaView collection (.pvd), and the CSV tables of a test. Everything is written atomically.
+// The .vtp files are VTK XML 1.0 with every array in one appended raw block (a UInt64 byte count before each
+// array's values, byte order in the header), read by ParaView, OVITO and VTK; positions and lengths in mm (the
+// CSVs' unit), the rest in the unit its name ends in (docs/dem.md, "ParaView").
+//
+//   write_vtp_frame(dir / "frame_0003.vtp", sim);
+//   write_walls_vtp(dir / "walls_0003.vtp", sim.walls());
+//   write_cracks_vtp(dir / "cracks_0003.vtp", sim.cracks());
+//   write_pvd(dir / "result.pvd", {{time_s, {"frame_0003.vtp", "walls_0003.vtp", "cracks_0003.vtp"}}});
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "kerf/dem/procedures/lab_test.hpp"
+#include "kerf/dem/engine/simulation.hpp"
+
+namespace kerf::dem {
+
+/// What a particle frame shows beside the simulation's own state, one entry per disk of `sim` (both empty: the
+/// disk's index in `sim` and no displacement array).
+struct FrameDiskArrays {
+  std::vector<std::int64_t> id;          ///< the disk's index in the run's workpiece (a windowed cut: not in its window)
+  std::vector<double> displacement_m;    ///< x, y per disk: since the run's first frame (NaN: not known)
+};
+/// Disks (point data: id, the disk's index, the same in every frame of a run; radius_mm, velocity_m_per_s,
+/// spin_rad_per_s, group: 0 free, 1 and 2 velocity prescribed; held: 1 when group > 0; displacement_m, a
+/// 3-vector with z = 0, when `extra` has it; broken_joints, the disk's joints that are broken, inactive)
+/// and active joints (cell data: intact_elements, bond; -1 for the disks' vertex cells).
+void write_vtp_frame(const std::filesystem::path& path, const Simulation& sim, const FrameDiskArrays& extra = {});
+/// The enabled walls (platens, the tool's faces) as lines (cell data: wall, the index; force_N, the force of
+/// the disks on it; velocity_m_per_s).
+void write_walls_vtp(const std::filesystem::path& path, const std::vector<Wall>& walls);
+/// Crack events as points (point data: mode 1 = tension 2 = shear, time_s, orientation_deg, length_um, bond,
+/// element; with a cut line `y_cut_m`, place: kCrackPlaceChip or kCrackPlaceSubsurface, as crack_place).
+void write_cracks_vtp(const std::filesystem::path& path, const std::vector<CrackEvent>& cracks,
+                      std::optional<double> y_cut_m = std::nullopt);
+/// The crack frames' `place` codes (cracks.csv's place column: chip, subsurface).
+inline constexpr std::int32_t kCrackPlaceChip = 1, kCrackPlaceSubsurface = 2;
+/// A collection listing, per time, the files of that frame as parts 0, 1, ... each named by its file's
+/// prefix (frame_: "particles", walls_, cracks_).
+void write_pvd(const std::filesystem::path& path, const std::vector<std::pair<double, std::vector<std::string>>>& frames);
+
+/// "time_s,axial_strain,lateral_strain,stress_MPa,tension_cracks,shear_cracks".
+std::string curve_csv(const LabTestResult& result);
+/// "time_s,x_mm,y_mm,orientation_deg,length_um,mode,bond,element".
+std::string cracks_csv(const std::vector<CrackEvent>& cracks);
+/// The same plus "place": chip (y above the cut line y_cut_m) or subsurface (orthogonal cutting).
+std::string cracks_csv(const std::vector<CrackEvent>& cracks, double y_cut_m);
+
+}  // namespace kerf::dem

@@ -1,0 +1,282 @@
+#pragma once
+// Orthogonal cutting of a bonded-particle workpiece (seed 000, Section 4; physics-dem.md section 4).
+//
+// The workpiece is a specimen whose left and bottom boundary disks are held (a prescribed-zero-velocity
+// group, as the tension grips use) and whose top is free. The tool is rigid: wall segments (rake face,
+// optional edge rounding, clearance face, a closing back face) whose lowest point lies `depth_of_cut`
+// below the top surface. It starts with its leading edge just right of the workpiece and moves in -x at
+// the cutting speed over `length`, so the chip flows up its rake face and the material is pushed towards the held left side.
+// Micro-grooves across the cut path are made as in the paper, by deleting the disks whose centres lie
+// inside each groove's outline (rectangular, or the inverted trapezoid of the real laser grooves).
+//
+// Sign convention (tested): main force = force the tool exerts on the workpiece along the cutting
+// direction (-x), thrust force = force the tool exerts on the workpiece into it (-y). A tool pushing into
+// material has positive main and thrust forces.
+//
+//   CutParams params = read_cut_params(root);        // the "cut", "tool" and "grooves" objects
+//   CutRun run(specimen, params);
+//   while (run.advance()) {}
+//   CutResult res = run.result();
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "kerf/dem/procedures/cut_window.hpp"
+#include "kerf/dem/engine/simulation.hpp"
+#include "kerf/field_table.hpp"
+#include "kerf/json_reader.hpp"
+
+namespace kerf::dem {
+
+enum class GrooveShape { none, rectangular, trapezoidal };
+/// "none", "rectangular", "trapezoidal" (the inverted trapezoid of the real laser grooves).
+const EnumNames<GrooveShape>& groove_shape_names();
+
+struct CutParams {
+  double depth_of_cut_m = 0.1e-3;
+  double speed_m_per_s = 1.0;   ///< the seed's 4.23 mm/s is scaled up (physics-dem.md section 4)
+  double length_m = 0.5e-3;     ///< tool travel
+  double rake_deg = -15, clearance_deg = 15;  ///< seed 000 Section 4
+  double edge_radius_m = 0;     ///< 0: sharp edge
+  int edge_segments = 4;        ///< wall segments approximating a rounded edge
+  /// Tool-workpiece Coulomb friction on every tool face; negative (the default): the workpiece material's
+  /// particle friction mu, as for any disk-wall contact (PFC's default). Not given by seed 000.
+  double tool_friction_coefficient = -1;
+  /// Height of the rake face's top above the tool tip; 0 (the default): 3 depths of cut, room for the chip.
+  /// Seed 000 does not give its tool's size: a fixed height is one tool for every depth of cut.
+  double rake_face_height_m = 0;
+  GrooveShape groove_shape = GrooveShape::none;
+  double groove_depth_m = 0.1e-3, groove_pitch_m = 0.2e-3, groove_width_m = 0.06e-3;
+  double groove_bottom_width_m = 0.03e-3;  ///< trapezoidal only: width at the groove bottom
+  /// The laser-affected layer along each groove's walls and bottom (apply_groove_damage): joints whose
+  /// midpoint lies within this distance of the groove's outline are pre-broken, each with probability
+  /// groove_damage_broken_fraction. 0 (the default): pristine glass up to the groove, as seed 000's DEM.
+  double groove_damage_depth_m = 0;
+  double groove_damage_broken_fraction = 1;
+  /// Part of the travel excluded from the mean forces (the entry), as a fraction of the travel.
+  double entry_fraction = 0.25;
+  int sample_every_steps = 50;
+  /// Report only: CutResult::travel_windows, mean forces per stretch of travel of this length (steadiness).
+  double window_m = 0.1e-3;
+  /// The active window of a steady-state cut (section "active_window", kerf/dem/procedures/cut_window.hpp): off, every
+  /// disk of the workpiece is integrated. Extents in depths of cut around the cutting edge.
+  bool active_window = false;
+  /// Defaults: the smallest window whose steady forces agreed with the whole workpiece's within their standard
+  /// errors with local damping 0.7 (one packing); undamped they do not (80 % more main force on four packings):
+  /// docs/dem.md, "Steady-state cuts".
+  double window_ahead_depths = 7, window_behind_depths = 3, window_below_depths = 4, window_above_depths = 4;
+  double window_shift_depths = 0.25;  ///< tool travel between two rebuilds of the window
+  /// The absorbing layer inside the window's ahead, behind and lower edges (kerf/dem/procedures/cut_window.hpp), its
+  /// thickness L in depths of cut (0: none), and the e-folds by which it attenuates a p-wave's amplitude on its
+  /// way through the layer and back: the peak rate 3 a c / L, with c = sqrt(E* / rho) of the contact law.
+  double window_absorbing_depths = 0, window_absorbing_attenuation = 2;
+  /// An absorbing layer along the workpiece's held rows (its left side and bottom, as rigid as the window's
+  /// frame), with or without a window: its thickness in depths of cut (0: none), the same attenuation.
+  double held_absorbing_depths = 0;
+};
+
+/// The keys of the scene's "cut", "tool" and "grooves" sections (kerf/field_table.hpp).
+const FieldTable<CutParams>& cut_fields();
+const FieldTable<CutParams>& tool_fields();
+const FieldTable<CutParams>& groove_fields();
+const FieldTable<CutParams>& active_window_fields();
+
+/// Checks every field's range and the cross-field constraints (groove narrower than its pitch, trapezoid bottom narrower than its
+/// top, the tool's wedge angle positive ...); InputError names the dotted key, value and expectation.
+void validate_cut_params(const CutParams& params);
+/// The active window's box and the absorbing layers' thicknesses in metres (each extent in depths of cut times
+/// the depth of cut): the one place they are converted. The layers' rates need the material's wave speed and
+/// the held rows the workpiece: CutRun sets those.
+CutWindowBox window_box_m(const CutParams& params);
+
+/// Reads the "cut" object (depth_of_cut_mm, speed_m_per_s, length_mm, entry_fraction,
+/// sample_every_steps, window_mm), the optional "tool" (rake_deg, clearance_deg, edge_radius_um, edge_segments,
+/// friction_coefficient, rake_face_height_mm)
+/// and "grooves" (shape, depth_mm, pitch_mm, width_mm, bottom_width_mm) objects of a scene, then validates.
+CutParams read_cut_params(ObjectReader& root);
+Json cut_params_to_json(const CutParams& params);
+
+// --- pure geometry ---
+
+/// Whether a point `dx` from a groove's centre line and `depth` below the top surface lies inside the
+/// groove's outline (depth in [0, groove depth]; half-width linear in depth for a trapezoid).
+bool inside_groove_outline(const CutParams& params, double dx_m, double depth_m);
+/// Centres of the grooves across the top surface: the first half a pitch left of the right edge, then every
+/// pitch, as long as the groove lies right of `x_left_m` (whatever the tool's travel).
+std::vector<double> groove_centres(const CutParams& params, double x_left_m, double x_right_m);
+/// Whether (x, y) lies inside any groove of a workpiece with top surface at `y_top_m`.
+bool inside_any_groove(const CutParams& params, const std::vector<double>& centres, double y_top_m, double x_m,
+                       double y_m);
+
+/// The tool outline, a closed polygon: rake-face top, the edge (the sharp tip, or the arc points of a
+/// rounded edge), the clearance-face end; segment k joins vertex k to vertex k + 1 (mod n), so the last
+/// one is the back face. Placed with its lowest point at height `y_tip_m` and its front-most (smallest x)
+/// point at `x_front_m`.
+std::vector<std::array<double, 2>> tool_outline(const CutParams& params, double x_front_m, double y_tip_m);
+
+/// The left-most x of the outline's edges within the band y0 <= y <= y1 (the part of the tool that meets
+/// the workpiece first when the band spans the cut line to the top surface); +inf if none.
+double leading_x_in_band(const std::vector<std::array<double, 2>>& outline, double y0_m, double y1_m);
+
+// --- running ---
+
+struct CutSample {
+  double travel_m, time_s, main_force_n, thrust_force_n;  ///< forces averaged over the sample interval
+};
+
+struct CutCrackCounts {
+  int tensile = 0, shear = 0, chip = 0, subsurface = 0;
+  double subsurface_damage_depth_m = 0;  ///< deepest subsurface crack below the cut line
+  /// Subsurface cracks under the surface machined during the steady part of the cut (CutResult::
+  /// steady_machined_x_m), and the deepest of them: the damage the steady cut leaves in the part. The
+  /// whole workpiece's depth above is often a breakout of its free corner at the entry (docs/dem.md).
+  int subsurface_steady = 0;
+  double subsurface_steady_damage_depth_m = 0;
+};
+
+/// What a windowed cut integrated and removed (all zero without an active window).
+struct CutWindowReport {
+  std::size_t rebuilds = 0, largest_window_particles = 0;
+  ChipAccount chips;
+};
+
+/// "chip" above the cut line (y > surface - depth of cut), else "subsurface".
+inline bool is_chip_crack(double y_m, double y_cut_m) { return y_m > y_cut_m; }
+inline const char* crack_place(double y_m, double y_cut_m) { return is_chip_crack(y_m, y_cut_m) ? "chip" : "subsurface"; }
+/// Counts by mode and place; `steady_x_m` = {from, to} is the span of x machined during the steady part.
+CutCrackCounts count_cut_cracks(const std::vector<CrackEvent>& cracks, double y_cut_m,
+                                std::array<double, 2> steady_x_m);
+
+/// The mean forces over one stretch of the tool's travel, [from, to).
+struct TravelWindow {
+  double from_m = 0, to_m = 0;
+  double main_force_n = 0, thrust_force_n = 0;
+  int n_samples = 0;
+};
+
+struct CutResult {
+  std::vector<CutSample> samples;
+  double main_force_n = 0, thrust_force_n = 0, main_force_std_n = 0, thrust_force_std_n = 0;  ///< steady part
+  /// Standard errors of the steady means (kerf/time_series.hpp): batch means when the steady part holds
+  /// kMinBatches batches of 5 g samples, else from the autocorrelation (methods named); the statistical
+  /// inefficiency g (samples) and the batch length of each.
+  double main_force_sem_n = 0, thrust_force_sem_n = 0;
+  const char *main_force_sem_method = "none", *thrust_force_sem_method = "none";
+  double main_force_inefficiency = 1, thrust_force_inefficiency = 1;
+  std::size_t main_force_batch_samples = 1, thrust_force_batch_samples = 1;
+  int n_steady_samples = 0;
+  /// Share of the steady samples with the tool in contact (main force > 0): an intermittent cut's duty cycle.
+  double contact_share = 0;
+  /// The travel the means cover, from the end of the entry (entry_fraction x length) to the last sample.
+  double steady_from_travel_m = 0, steady_to_travel_m = 0;
+  /// Whether the means are those of a steady cut (steady_statistics): they start after kEntryTravelM and both
+  /// have a standard error; if not, why (one line for the log and summary.json).
+  bool steady = false;
+  std::string not_steady_reason;
+  std::vector<TravelWindow> travel_windows;  ///< mean forces per params.window_m of travel (once finished)
+  CutCrackCounts cracks;
+  double y_top_m = 0, y_cut_m = 0, width_m = 0;  ///< width = out-of-plane thickness
+  std::array<double, 4> workpiece_box_m{};       ///< x_min, x_max, y_min, y_max before the cut
+  /// x span {from, to} of the surface the tool's cutting edge (its front-most lowest point) machined
+  /// during the steady part, from its position at the end of the entry to its final one (once finished).
+  std::array<double, 2> steady_machined_x_m{};
+  std::size_t n_particles = 0, n_removed_by_grooves = 0;  ///< the workpiece's
+  /// Joints within the grooves' laser-affected layer, and those of them broken before the cut (known at the
+  /// start only: a checkpoint holds the joints themselves, not these counts).
+  std::array<std::size_t, 2> groove_damage_joints{};
+  std::int64_t steps = 0;
+  /// Disks integrated times steps, over the cut (a windowed cut integrates its window only).
+  double particle_steps = 0;
+  CutWindowReport window;
+  double time_step_s = 0, wall_time_s = 0;
+};
+
+/// {main, thrust} from the force the disks exert on the tool (cutting direction -x): main = F_x, thrust = F_y.
+inline std::array<double, 2> tool_force_components(double fx_on_tool_n, double fy_on_tool_n) {
+  return {fx_on_tool_n, fy_on_tool_n};
+}
+
+/// The travel before a cut's forces are steady: the entry at the free edge. Measured on the seed-000 workpiece
+/// (1 mm x 1 mm, cuts 0.1 mm deep: the main force over the first 0.3 mm of travel is half that over the next
+/// 0.3 mm, in each packing; docs/dem.md, "How long a cut must be"); means that start earlier hold the entry.
+inline constexpr double kEntryTravelM = 0.3e-3;
+
+/// Mean and (population) standard deviation of main and thrust forces over samples with travel >= from, the
+/// standard errors of the means by batch means, the travel they cover, and whether they are steady: not when
+/// they start before kEntryTravelM, hold no sample, or a standard error cannot be computed (too few samples).
+void steady_statistics(CutResult& result, double from_travel_m);
+
+
+/// The travel [0, length] cut into consecutive windows of `window_m` (the last one shorter when the length
+/// is not a multiple of it, and holding every sample at or beyond `length`), with the mean forces in each.
+/// Windows whose means differ beyond the scatter show a cut that is not steady: the entry at the free
+/// edge, or a tool that has come near the held side.
+std::vector<TravelWindow> travel_window_means(const std::vector<CutSample>& samples, double length_m, double window_m);
+
+/// Distance from a point `dx` from a groove's centre line and `depth` below the top surface to the groove's
+/// walls and bottom (0 inside the outline; the top surface is not part of it).
+double distance_to_groove_outline(const CutParams& params, double dx_m, double depth_m);
+
+/// The laser-affected layer of a grooved workpiece cut from a specimen of box {x_min, x_max, y_min, y_max}
+/// (the grooves' places: groove_centres, below y_max): breaks every element of
+/// the joints whose midpoint lies within params.groove_damage_depth_m of a groove's walls or bottom, each
+/// joint with probability params.groove_damage_broken_fraction (a hash of the joint's index: the same joints
+/// for the same packing). A broken element carries compression and friction (a closed micro-crack), no
+/// tension (ultrashort laser pulses leave micro-cracks around what they modify in glass: Werr et al. 2022,
+/// docs/references.md). Returns {joints in the layer, joints broken}.
+std::array<std::size_t, 2> apply_groove_damage(Simulation& workpiece, const CutParams& params,
+                                               const std::array<double, 4>& box_m);
+
+/// The workpiece: the specimen without the groove disks, left and bottom boundary disks held (group 1).
+/// CutRun then breaks the grooves' laser-affected layer (apply_groove_damage).
+Simulation make_workpiece(const Simulation& specimen, const CutParams& params, std::size_t& n_removed);
+
+/// A cut in progress, advanced one sample at a time.
+class CutRun {
+ public:
+  CutRun(const Simulation& specimen, const CutParams& params);
+  /// Runs one sample interval; returns false once the tool has travelled `length`.
+  bool advance();
+  bool finished() const { return finished_; }
+  /// The simulation that runs: the whole workpiece, or the active window of a windowed cut.
+  const Simulation& simulation() const { return sim_; }
+  /// The whole workpiece (a windowed cut's as of its last rebuild, and whole once finished, its removed
+  /// chips left out), for pictures.
+  Simulation workpiece() const { return window_ ? window_->machined_workpiece() : sim_; }
+  /// The active window (null without one).
+  const CutWindow* window() const { return window_ ? &*window_ : nullptr; }
+  /// Every crack of the cut (a windowed cut's as of its last rebuild, and all once finished).
+  const std::vector<CrackEvent>& cracks() const { return window_ ? window_->cracks() : sim_.cracks(); }
+  /// Cracks so far, the running window's included.
+  std::size_t n_cracks() const;
+  const CutParams& params() const { return params_; }
+  /// The result so far (steady statistics and crack counts filled in once finished).
+  const CutResult& result() const { return res_; }
+  /// The complete state (checkpoints): restoring it and running on equals the uninterrupted run.
+  std::string serialize() const;
+  static CutRun deserialize(std::string_view bytes);
+
+ private:
+  CutRun() : sim_(Material{}, SimulationOptions{}) {}
+  Simulation sim_;
+  std::optional<CutWindow> window_;
+  CutParams params_;
+  CutResult res_;
+  std::int32_t first_tool_wall_ = 0, n_tool_walls_ = 0;
+  double t0_ = 0;
+  bool finished_ = false;
+  void finish();
+  /// The cutting edge: the front-most of the tool's lowest points (a flat clearance face has two) {x, y}.
+  std::array<double, 2> edge() const;
+  /// The checkpoint's fields before the engine state, in order: io(field...) writes or reads them.
+  template <class Self, class Io>
+  static void state_fields(Self& run, Io& io);
+};
+
+/// "tool_travel_mm,time_s,main_force_N,thrust_force_N".
+std::string cut_forces_csv(const CutResult& result);
+
+}  // namespace kerf::dem
