@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 #include <fmt/format.h>
 #include <filesystem>
+#include <unistd.h>
 #include <fstream>
 
 #include "kerf/analytic/predict.hpp"
@@ -30,7 +31,7 @@ double predicted_cutting_force(double t0_um) {
 }
 
 std::filesystem::path write_csv(const std::string& name, const std::string& text) {
-  const auto path = std::filesystem::temp_directory_path() / name;
+  const auto path = std::filesystem::temp_directory_path() / (std::to_string(::getpid()) + "-" + name);
   std::ofstream(path) << text;
   return path;
 }

@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 #include <cstdlib>
 #include <filesystem>
+#include <unistd.h>
 #include <set>
 
 #include "kerf/dem/procedures/cutting.hpp"
@@ -20,6 +21,11 @@ using Catch::Matchers::WithinRel;
 using kerf::Json;
 
 namespace {
+
+// A scratch directory of this process's own (runs of the suite side by side, e.g. a sanitized one, do not collide).
+std::filesystem::path scratch_dir(const std::string& name) {
+  return std::filesystem::temp_directory_path() / (name + "-" + std::to_string(::getpid()));
+}
 /// The same keys and texts, numbers equal to within an ulp or two: a unit conversion and its inverse
 /// (mm -> m -> mm) are not exact inverses in floating point.
 void check_same_json(const Json& a, const Json& b) {
@@ -145,7 +151,7 @@ TEST_CASE("scene: small cut regression through run_scene", "[scene][regression]"
     "grooves": {"shape": "rectangular", "pitch_mm": 0.08, "width_mm": 0.03},
     "output": {"frame_every_samples": 0}})");
   RunOptions options;
-  options.out = std::filesystem::temp_directory_path() / "kerf_scene_test_cut_small";
+  options.out = scratch_dir("kerf_scene_test_cut_small");
   options.show_progress = false;
   std::filesystem::remove_all(options.out);
   const SceneOutcome done = run_scene(scene, std::string(KERF_SOURCE_DIR) + "/data/scenes/scene.json", options);
@@ -192,7 +198,7 @@ Json small_cut_scene() {
 
 TEST_CASE("scene: progress reaches the caller's callback, every stage to its end", "[scene]") {
   RunOptions options;
-  options.out = std::filesystem::temp_directory_path() / "kerf_scene_test_progress";
+  options.out = scratch_dir("kerf_scene_test_progress");
   options.show_progress = false;
   std::vector<ProgressUpdate> seen;
   options.on_progress = [&](const ProgressUpdate& u) { seen.push_back(u); };
@@ -229,7 +235,7 @@ TEST_CASE("scene: a cut the workpiece cannot hold is refused after the geneses i
   for (const int threads : {1, 2}) {
     omp_set_num_threads(threads);
     RunOptions options;
-    options.out = std::filesystem::temp_directory_path() / "kerf_scene_test_replicates_refused";
+    options.out = scratch_dir("kerf_scene_test_replicates_refused");
     options.show_progress = false;
     options.replicates = 4;
     std::set<std::string> genesis_stages;
