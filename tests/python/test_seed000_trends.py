@@ -22,7 +22,8 @@ def test_fieller_without_denominator_error_is_the_scaled_numerator_interval():
 def test_fieller_is_unbounded_when_the_denominator_is_not_resolved_from_zero():
     r = st.ratio(st.Estimate(1.0, 0.1, 7), st.Estimate(0.2, 0.5, 7))
     assert r.low == -math.inf and r.high == math.inf
-    assert st.verdict(st.difference(r, st.Estimate(1.0, 0.1, 5))) == "not resolved"
+    other = st.Estimate(1.0, 0.1, 5)
+    assert st.verdict(st.difference(r, other), other) == "not resolved"
 
 
 def test_fieller_interval_covers_the_true_ratio_95_percent_of_the_time():
@@ -103,6 +104,22 @@ def test_verdicts_follow_the_intervals(tmp_path):
     rows = run(tmp_path, 0.15, 0.15)
     assert groove_row(rows, "kerf default")["against_experiment"] == "agrees"
     assert groove_row(rows, "kerf large")["against_experiment"] == "agrees"
+
+
+def test_an_interval_too_wide_to_tell_does_not_agree(tmp_path):
+    # Two packings that scatter 40 %: kerf's groove ratio at the experiments' value, but its interval holds ratios
+    # half and twice the experiments': not resolved, where a narrow one (8 packings, 2 %) agrees.
+    means = {(domain, surface, depth): 0.5 * (0.15 if surface == "rectangular" else 1)
+             for domain in st.DOMAINS for surface in ("regular", "rectangular") for depth in (0.1, 0.2)}
+    write_experiments(tmp_path / "experiments.csv", 0.65, 0.65 * 0.15)
+    for n, spread, expected in ((2, 0.4, "not resolved"), (8, 0.02, "agrees")):
+        write_record(tmp_path / "record.csv", means, n=n, spread=spread, seed=5)
+        src = st.Sources(st.read_record(tmp_path / "record.csv"), st.read_experiments(tmp_path / "experiments.csv"))
+        r = groove_row(st.rows_of(st.trends(src)), "kerf default")
+        assert r["minus_experiment_low"] <= 0 <= r["minus_experiment_high"], r
+        assert r["against_experiment"] == expected, (n, spread, r)
+        if expected == "not resolved":
+            assert max(-r["minus_experiment_low"], r["minus_experiment_high"]) > st.AGREEMENT_MARGIN * 0.15
 
 
 def test_domain_robustness_detects_a_domain_that_moves_a_trend(tmp_path):
