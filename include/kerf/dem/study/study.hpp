@@ -2,7 +2,7 @@
 // A study: one base scene (any kind) run under several conditions, each on several packings, with one table
 // of results (`kerf-dem study STUDY.json --out DIR`, issue 21).
 //
-// The study file (JSON; keys in docs/dem.md, "Studies", generated from the field tables below):
+// The study file (JSON; keys in docs/dem-keys.md, reference in docs/studies.md, generated from the field tables below):
 //
 //   {"scene": "../scenes/dem_tension.json",                    // or the scene itself, inline
 //    "set": ["specimen.width_mm=0.2", "output.frame_every_samples=0"],   // for every condition
