@@ -325,6 +325,17 @@ void fit_lumped_groups(Json& document, const Bindings& bindings, const DataSet& 
                   {"loo_max_abs_error_percent", fit.torque.loo.max_abs_error_percent}}}};
 }
 
+/// What predict prints beside the forces: the regime against the critical depth and the guards that fired.
+RowDiagnostics row_diagnostics(std::size_t line, const AnalyticCase& scene, const Columns& columns) {
+  RowDiagnostics diagnostics{line, "", scene.guard_names(), scene.warnings()};
+  for (const auto& [name, value] : columns) {
+    if (name == "regime" || name == "grit_regime") {
+      diagnostics.regime = value.size() >= 2 && value.front() == '"' ? value.substr(1, value.size() - 2) : value;
+    }
+  }
+  return diagnostics;
+}
+
 /// The model's predictions at each measured row's conditions (with each row's diagnostics into out.rows) and
 /// the model curve for the plots.
 PredictedSet predictions(const Json& document, const Bindings& bindings, const DataSet& measured, bool per_width,
@@ -334,37 +345,24 @@ PredictedSet predictions(const Json& document, const Bindings& bindings, const D
   const ComparisonSpec& spec = out.comparison.spec;
   // The curve is evaluated at many points for the plots: one material cache serves them all.
   auto cache = std::make_shared<MaterialCache>();
-  const auto columns_at = [document, conditions, spec, cache](const std::vector<ConditionValue>& at) {
+  const auto scene_at = [document, conditions, spec, cache](const std::vector<ConditionValue>& at) {
     Json d = document;
     for (std::size_t i = 0; i < conditions.size(); ++i) {
       set_path(d, conditions[i].scene_path, at[i].si.value_or(0.0) / spec.conditions[i].unit.si);
     }
-    return evaluate_scene_columns(d, cache.get());
-  };
-  // What predict prints beside the forces: the regime against the critical depth and the guards that fired.
-  const auto diagnostics_at = [document, conditions, spec, cache](std::size_t line,
-                                                                   const std::vector<ConditionValue>& at) {
-    Json d = document;
-    for (std::size_t i = 0; i < conditions.size(); ++i) {
-      set_path(d, conditions[i].scene_path, at[i].si.value_or(0.0) / spec.conditions[i].unit.si);
-    }
-    const auto scene = parse_scene(d, cache.get());
+    auto scene = parse_scene(d, cache.get());
     scene->predict();
-    RowDiagnostics diagnostics{line, "", scene->guard_names(), scene->warnings()};
-    for (const auto& [name, value] : scene_columns(*scene)) {
-      if (name == "regime" || name == "grit_regime") {
-        diagnostics.regime = value.size() >= 2 && value.front() == '"' ? value.substr(1, value.size() - 2) : value;
-      }
-    }
-    return diagnostics;
+    return scene;
   };
-  const auto predict_at = [columns_at, quantities, spec](const std::vector<ConditionValue>& at) {
-    const Columns columns = columns_at(at);
+  const auto values_of = [quantities, spec](const Columns& columns) {
     std::vector<double> values;
     for (std::size_t q = 0; q < quantities.size(); ++q) {
       values.push_back(column_value(columns, quantities[q].prediction_column) * spec.quantities[q].unit.si);
     }
     return values;
+  };
+  const auto predict_at = [scene_at, values_of](const std::vector<ConditionValue>& at) {
+    return values_of(scene_columns(*scene_at(at)));
   };
   DataSet predicted;
   predicted.name = options.fit ? "model (fitted)" : "model";
@@ -375,9 +373,11 @@ PredictedSet predictions(const Json& document, const Bindings& bindings, const D
   for (const auto& row : measured.rows) {
     DataRow p;
     p.conditions = row.conditions;
-    p.values = predict_at(row.conditions);
+    const auto scene = scene_at(row.conditions);  // one prediction gives the row's values and diagnostics
+    const Columns columns = scene_columns(*scene);
+    p.values = values_of(columns);
     predicted.rows.push_back(std::move(p));
-    out.rows.push_back(diagnostics_at(row.line, row.conditions));
+    out.rows.push_back(row_diagnostics(row.line, *scene, columns));
   }
   return PredictedSet{predicted, predict_at};
 }
