@@ -51,11 +51,10 @@ def steady_cracks(item, place):
 
 
 def pitch_map(study, out):
-    rows = [(label, item) for label, c in list(STEADY.items()) for item in items(study, c)[:2]]
     columns = len(STEADY)
     fig, axes = plt.subplots(2, columns, figsize=(4.4 * columns, 7), sharey=True, squeeze=False)
-    for col, label in enumerate(STEADY):
-        for row, item in enumerate([i for lab, i in rows if lab == label][:2]):
+    for col, (label, condition) in enumerate(STEADY.items()):
+        for row, item in enumerate(items(study, condition)[:2]):  # the first two packings
             ax = axes[row, col]
             xy, summary = steady_cracks(item, "chip")
             grooves = summary["cut"].get("grooves", {})

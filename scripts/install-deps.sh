@@ -11,9 +11,10 @@ packages=(build-essential cmake ninja-build pkg-config libeigen3-dev libgsl-dev 
   catch2 nlohmann-json3-dev libcli11-dev libplplot-dev plplot-driver-cairo python3
   python3-dev python3-pybind11 python3-numpy python3-pytest python3-matplotlib
   libopenmpi-dev openmpi-bin)
+vtk=(python3-vtk9 python3-paraview)  # either gives Python's vtk; the first is installed when neither is
 case "${1:-}" in
-  "") vtk=(python3-vtk9 python3-paraview) ;;  # the first is installed when neither is
-  --sanitize) packages+=(clang libomp-dev libclang-rt-dev) vtk=(python3-vtk9 python3-paraview) ;;
+  "") ;;
+  --sanitize) packages+=(clang libomp-dev libclang-rt-dev) ;;
   --long) packages+=(paraview xvfb xauth) vtk=(python3-paraview) ;;  # python3-paraview: pvpython, and vtk
   *) echo "install-deps.sh: error: option = $1: expected none, --sanitize or --long" >&2; exit 2 ;;
 esac
