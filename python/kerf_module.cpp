@@ -223,16 +223,15 @@ py::dict sweep(const py::object& scene, const py::dict& vary, const py::kwargs& 
 
 py::list materials() {
   py::list out;
-  for (const auto& name : kerf::library_material_names()) {
+  for (const auto& m : kerf::library_materials()) {
     py::dict entry;
-    entry["name"] = name;
-    try {
-      const auto record = kerf::load_material(Json(name), "material");
-      entry["title"] = record.title;
-      entry["groups"] = json_to_python(record.groups);
-      entry["file"] = record.origin;
-    } catch (const kerf::InputError& e) {
-      entry["error"] = std::string(e.what());
+    entry["name"] = m.name;
+    if (m.record) {
+      entry["title"] = m.record->title;
+      entry["groups"] = json_to_python(m.record->groups);
+      entry["file"] = m.record->origin;
+    } else {
+      entry["error"] = m.error;
     }
     out.append(entry);
   }

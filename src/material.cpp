@@ -199,4 +199,18 @@ MaterialRecord load_material(const Json& spec, const std::string& path, const st
   return record;
 }
 
+std::vector<LibraryMaterial> library_materials() {
+  std::vector<LibraryMaterial> out;
+  for (const auto& name : library_material_names()) {
+    LibraryMaterial entry{name, std::nullopt, ""};
+    try {
+      entry.record = load_material(Json(name), "material");
+    } catch (const InputError& e) {
+      entry.error = e.what();
+    }
+    out.push_back(std::move(entry));
+  }
+  return out;
+}
+
 }  // namespace kerf

@@ -1,13 +1,7 @@
 // kerf-forces: quick cutting-force predictions and parameter sweeps from a scene file.
 //
-//   kerf-forces predict SCENE.json [--set key.path=value]... [--csv FILE]
-//   kerf-forces sweep SCENE.json --vary key.path=START:STOP:COUNT[:log] [--vary ...] --csv FILE
-//   kerf-forces compare SCENE.json --experiments FILE.csv [--map a=b]... [--fit] [--pool] --out DIR
-//   kerf-forces report COMPARISON.json --out DIR   (measured and predicted CSV files named in a JSON file)
-//   kerf-forces regime SCENE.json (the ductile-brittle critical depth and the regime of the scene's cut)
-//   kerf-forces models            (the registered models)
-//   kerf-forces materials         (the bundled material library)
-//   kerf-forces keys [SECTION]    (the Markdown key table of every scene section, docs/scenes.md, or of one)
+// `kerf-forces --help` lists the subcommands and `kerf-forces SUBCOMMAND --help` their options (the option table in
+// main() is where each is described).
 //
 // Exit status: 0 success, 2 usage or input error (the message names the field, value and what was
 // expected), 3 a model failed on valid input or a result would not be finite, 4 an output cannot be written
@@ -70,22 +64,23 @@ int run_regime(const std::string& scene_path, const std::vector<std::string>& ov
   return 0;
 }
 
+/// One line per compared quantity: its error metrics, the percentages `width` characters wide.
+void print_metrics(const kerf::Comparison& comparison, int width) {
+  for (const auto& r : comparison.results) {
+    const auto& m = r.metrics;
+    fmt::print("{:<28} n = {:<3} mean |error| {:{}.2f} %   max |error| {:{}.2f} %   bias {:+{}.2f} %\n", r.key, m.n,
+               m.mean_abs_error_percent, width, m.max_abs_error_percent, width, m.bias_percent, width);
+  }
+}
+
 int run_compare(const std::string& scene_path, const std::vector<std::string>& overrides,
-                const std::string& experiments, const std::vector<std::string>& mappings, bool fit, bool pool,
-                std::optional<double> measured_width_mm, const std::string& out_dir) {
+                const std::string& experiments, const kerf::SceneComparisonOptions& options,
+                const std::string& out_dir) {
   const Json document = load_scene_document(scene_path, overrides);
-  kerf::SceneComparisonOptions options;
-  options.mappings = mappings;
-  options.fit = fit;
-  options.pool = pool;
-  options.measured_width_mm = measured_width_mm;
   kerf::SceneComparison result = kerf::compare_scene(document, experiments, options);
   result.comparison.spec.description = fmt::format("Scene {} against {}.", scene_path, experiments);
   const auto files = kerf::write_report(result.comparison, out_dir, result.report);
-  for (const auto& r : result.comparison.results) {
-    fmt::print("{:<28} n = {:<3} mean |error| {:6.2f} %   max |error| {:6.2f} %   bias {:+6.2f} %\n", r.key,
-               r.metrics.n, r.metrics.mean_abs_error_percent, r.metrics.max_abs_error_percent, r.metrics.bias_percent);
-  }
+  print_metrics(result.comparison, 6);
   if (result.calibration) {
     const auto& c = *result.calibration;
     fmt::print("fitted            K_F = {:.6g} MPa (leave-one-out mean |error| {:.2f} %), K_M = {:.6g} MPa "
@@ -109,10 +104,7 @@ int run_compare(const std::string& scene_path, const std::vector<std::string>& o
 int run_report(const std::string& config_path, const std::string& out_dir) {
   const kerf::Comparison comparison = kerf::run_comparison(kerf::read_comparison_config(config_path));
   const auto files = kerf::write_report(comparison, out_dir);
-  for (const auto& r : comparison.results) {
-    fmt::print("{:<28} n = {:<3} mean |error| {:7.2f} %   max |error| {:7.2f} %   bias {:+7.2f} %\n", r.key,
-               r.metrics.n, r.metrics.mean_abs_error_percent, r.metrics.max_abs_error_percent, r.metrics.bias_percent);
-  }
+  print_metrics(comparison, 7);
   fmt::print("report            {} ({} files)\n", out_dir, files.size());
   return 0;
 }
@@ -139,28 +131,28 @@ int run_sweep(const std::string& scene_path, const std::vector<std::string>& ove
 
 int list_models() {
   for (const auto& m : kerf::analytic_models()) {
-    fmt::print("models.{:<17} {:<17} {}{}\n", m.kind, m.name, m.summary, m.needs.empty() ? "" : fmt::format(" [needs {}]", m.needs));
+    fmt::print("models.{:<17} {:<17} {}{}\n", m.kind, m.name, m.summary,
+               m.needs.empty() ? "" : fmt::format(" [needs {}]", m.needs));
   }
   return 0;
 }
 
 int list_materials() {
-  for (const auto& name : kerf::library_material_names()) {
-    try {
-      const auto record = kerf::load_material(Json(name), "material");
-      std::string groups;
-      for (const auto& [group, values] : record.groups.items()) groups += (groups.empty() ? "" : ", ") + group;
-      fmt::print("{:<20} {} [{}]\n", name, record.title, groups);
-    } catch (const kerf::InputError& e) {
-      fmt::print("{:<20} (invalid: {})\n", name, e.what());
+  for (const auto& m : kerf::library_materials()) {
+    if (!m.record) {
+      fmt::print("{:<20} (invalid: {})\n", m.name, m.error);
+      continue;
     }
+    std::vector<std::string> groups;
+    for (const auto& [group, values] : m.record->groups.items()) groups.push_back(group);
+    fmt::print("{:<20} {} [{}]\n", m.name, m.record->title, fmt::join(groups, ", "));
   }
   return 0;
 }
 
 }  // namespace
 
-// Long (~95 lines) for a reason: the CLI's option table, one block per subcommand, each calling one library
+// Long (~90 lines) for a reason: the CLI's option table, one block per subcommand, each calling one library
 // function (the work is in analytic/).
 int main(int argc, char** argv) {
   CLI::App app{"kerf-forces: analytic cutting-force predictions (ductile regime) and sweeps"};
@@ -170,35 +162,34 @@ int main(int argc, char** argv) {
   std::vector<std::string> overrides, vary;
   int threads = 0;
 
-  auto* predict = app.add_subcommand("predict", "predict the forces of one scene");
-  predict->add_option("scene", scene_path, "scene file (JSON)")->required();
-  predict->add_option("--set", overrides, "override a scene value: key.path=value (repeatable)");
+  const auto scene_command = [&](const std::string& name, const std::string& description) {
+    auto* command = app.add_subcommand(name, description);
+    command->add_option("scene", scene_path, "scene file (JSON)")->required();
+    command->add_option("--set", overrides, "override a scene value: key.path=value (repeatable)");
+    return command;
+  };
+  auto* predict = scene_command("predict", "predict the forces of one scene");
   predict->add_option("--csv", csv, "also write the result as one CSV row to this file");
 
-  auto* sweep = app.add_subcommand("sweep", "evaluate a grid of scenes (cartesian product of --vary axes)");
-  sweep->add_option("scene", scene_path, "scene file (JSON)")->required();
-  sweep->add_option("--set", overrides, "override a scene value: key.path=value (repeatable)");
-  sweep->add_option("--vary", vary, "an axis: key.path=START:STOP:COUNT[:log] or key.path=A,B,C (repeatable)")->required();
+  auto* sweep = scene_command("sweep", "evaluate a grid of scenes (cartesian product of --vary axes)");
+  sweep->add_option("--vary", vary, "an axis: key.path=START:STOP:COUNT[:log] or key.path=A,B,C (repeatable)")
+      ->required();
   sweep->add_option("--csv", csv, "CSV file to write")->required();
   sweep->add_option("--plot", plot, "also a figure (PNG, with a PDF beside it): cutting and thrust force against the "
                                     "first varied key, a line per value of the second");
   sweep->add_option("--threads", threads, "threads (default: all cores)")->check(CLI::Range(1, 1024));
 
   std::string experiments, out_dir;
-  std::vector<std::string> mappings;
-  bool fit = false, pool = false;
-  std::optional<double> measured_width_mm;
-  auto* compare = app.add_subcommand("compare", "hold a scene against measured forces: report.md, CSV, JSON, plots");
-  compare->add_option("scene", scene_path, "scene file (JSON)")->required();
-  compare->add_option("--set", overrides, "override a scene value: key.path=value (repeatable)");
+  kerf::SceneComparisonOptions options;
+  auto* compare = scene_command("compare", "hold a scene against measured forces: report.md, CSV, JSON, plots");
   compare->add_option("--experiments", experiments, "experiment CSV ('#' lines are its citation)")->required();
-  compare->add_option("--map", mappings,
+  compare->add_option("--map", options.mappings,
                       "bind a CSV column: scene.key.path=column (a condition) or prediction_column=column");
-  compare->add_flag("--fit", fit, "fit the trepanning model's lumped groups to the measured rows first");
-  compare->add_flag("--pool", pool,
+  compare->add_flag("--fit", options.fit, "fit the trepanning model's lumped groups to the measured rows first");
+  compare->add_flag("--pool", options.pool,
                     "compare a CSV none of whose columns sets a condition: every row a measurement at the scene's own "
                     "condition (without it such a CSV is refused)");
-  compare->add_option("--measured-width-mm", measured_width_mm, "width the measured forces act over (mm)")
+  compare->add_option("--measured-width-mm", options.measured_width_mm, "width the measured forces act over (mm)")
       ->check(CLI::PositiveNumber);
   compare->add_option("--out", out_dir, "directory for the report")->required();
 
@@ -207,9 +198,7 @@ int main(int argc, char** argv) {
   report->add_option("comparison", config_path, "comparison file (JSON), e.g. data/comparisons/*.json")->required();
   report->add_option("--out", out_dir, "directory for the report")->required();
 
-  auto* regime = app.add_subcommand("regime", "ductile-brittle critical depth and the regime of the scene's cut");
-  regime->add_option("scene", scene_path, "scene file (JSON)")->required();
-  regime->add_option("--set", overrides, "override a scene value: key.path=value (repeatable)");
+  auto* regime = scene_command("regime", "ductile-brittle critical depth and the regime of the scene's cut");
 
   auto* models = app.add_subcommand("models", "list the registered models");
   auto* materials = app.add_subcommand("materials", "list the bundled material library");
@@ -241,8 +230,7 @@ int main(int argc, char** argv) {
     if (*compare || *report) kerf::check_writable_directory(out_dir);
     if (*predict) return run_predict(scene_path, overrides, csv);
     if (*sweep) return run_sweep(scene_path, overrides, vary, csv, plot);
-    if (*compare)
-      return run_compare(scene_path, overrides, experiments, mappings, fit, pool, measured_width_mm, out_dir);
+    if (*compare) return run_compare(scene_path, overrides, experiments, options, out_dir);
     if (*regime) return run_regime(scene_path, overrides);
     if (*report) return run_report(config_path, out_dir);
     if (*models) return list_models();

@@ -14,6 +14,7 @@
 //   const kerf::Json* jc = steel.group("johnson_cook");   // {"A_MPa": 553.1, ...}
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -50,5 +51,15 @@ MaterialRecord material_from_json(const Json& object, const std::string& path, b
 /// provenance optional), or an inline object. Unknown names list the library; with `needed_group` ("dem"), only
 /// the library's materials that have that group.
 MaterialRecord load_material(const Json& spec, const std::string& path, const std::string& needed_group = "");
+
+/// One material of the bundled library as listings show it: its record, or why it did not load.
+struct LibraryMaterial {
+  std::string name;
+  std::optional<MaterialRecord> record;
+  std::string error;  ///< the InputError's message when `record` is empty
+};
+
+/// Every bundled material (library_material_names()), each loaded; one that fails to load is listed with its error.
+std::vector<LibraryMaterial> library_materials();
 
 }  // namespace kerf
