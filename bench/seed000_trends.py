@@ -23,7 +23,9 @@ AGREEMENT_MARGIN (50 %) of the value compared against (the experiments', or the 
 -100 % to +900 % holds 0 but could not have told a factor of two; 'not resolved' otherwise, or when an interval
 cannot be formed (fewer than two packings, or an unbounded ratio).
 
-Writes DIR/trends.csv (one row per trend and source) and DIR/trends.png (+ .pdf): each trend with both domains,
+Writes DIR/trends.csv (one row per trend and source), DIR/cost.csv (per condition: CPU time per cut, the main
+force's spread between packings, the packings and CPU-hours a 10 % and a 5 % standard error take) and
+DIR/trends.png (+ .pdf): each trend with both domains,
 the experiments and the paper's DEM, with their intervals. With --report also DIR/report.md, the acceptance of
 validation/soda_lime_cutting_steady/ (exit 1 while a verdict is not resolved).
 """
@@ -297,6 +299,49 @@ def damage_section(cuts, floors):
     return md
 
 
+COST_TARGETS = (0.10, 0.05)  # the main force's relative standard error over packings a user may ask for
+
+
+def costs(cuts):
+    """What an answer costs, per condition (issue 41 item 5; docs/cluster.md): the recorded cuts, their median CPU
+    time, the spread of the main force between packings (coefficient of variation, sample sd / mean) and, for each
+    target relative standard error e in COST_TARGETS, the packings it takes, n = ceil((cv / e)^2) (at least 2: a
+    spread needs two), and their CPU-hours at the median cut. Rows without two packings have no spread and no n."""
+    out = []
+    for (domain, surface, depth), by_seed in sorted(cuts.items()):
+        rows = list(by_seed.values())
+        cpu = [r["cpu_time_s"] for r in rows if isinstance(r.get("cpu_time_s"), float)]
+        mains = [per_width(r, "main") for r in rows]
+        row = {"domain": domain, "surface": surface, "depth_of_cut_mm": depth, "cuts": len(rows),
+               "cpu_s_per_cut": statistics.median(cpu) if cpu else math.nan,
+               "main_force_cv": statistics.stdev(mains) / statistics.fmean(mains) if len(mains) >= 2 else math.nan}
+        for e in COST_TARGETS:
+            cv = row["main_force_cv"]
+            n = max(2, math.ceil((cv / e) ** 2 - 1e-9)) if math.isfinite(cv) else None  # 4.000000001 is 4
+            row[f"packings_for_{e:.0%}"] = n
+            row[f"cpu_h_for_{e:.0%}"] = n * row["cpu_s_per_cut"] / 3600 if n else math.nan
+        out.append(row)
+    return out
+
+
+def cost_section(cost_rows):
+    """The report's cost table (Markdown lines)."""
+    head = "| domain | surface | depth (mm) | cuts | CPU s per cut (median) | main force cv | " + " | ".join(
+        f"packings, CPU-h for {e:.0%}" for e in COST_TARGETS) + " |"
+    md = ["## What an answer costs", "",
+          "CPU seconds are the record's (one thread, on the machine that ran the cut, under whatever load it "
+          "had: an upper bound of a quiet core's). The packings a target standard error of the main force needs "
+          "are (cv / target)^2 from the spread between the packings so far (itself uncertain with few packings).",
+          "", head, "|---|---|---:|---:|---:|---:|" + "---:|" * len(COST_TARGETS)]
+    for r in cost_rows:
+        cv = f"{r['main_force_cv']:.2f}" if math.isfinite(r["main_force_cv"]) else "—"
+        cells = [f"{r[f'packings_for_{e:.0%}']}, {r[f'cpu_h_for_{e:.0%}']:.1f}" if r[f"packings_for_{e:.0%}"]
+                 else "—" for e in COST_TARGETS]
+        md.append(f"| {r['domain']} | {r['surface']} | {r['depth_of_cut_mm']:g} | {r['cuts']} | "
+                  f"{r['cpu_s_per_cut']:.0f} | {cv} | " + " | ".join(cells) + " |")
+    return md + [""]
+
+
 def rows_of(all_trends):
     """trends.csv's rows: each source's estimate, its difference from the experiment (and, for kerf's default
     domain, from the large one) with the verdicts."""
@@ -471,6 +516,7 @@ def report(rows, cuts, record_path, floors=None, needs=None):
     md.append(f"- Moved by the domain (resolved): {'; '.join(moved) or 'none'}.")
     md += ["", "## Levels, per mm of width (reported, not acceptance)", ""] + table(level_rows, False) + [""]
     md += damage_section(cuts, floors or {})
+    md += cost_section(costs(cuts))
     resolved, missing = acceptance(rows, needs)
     md.append("**RESOLVED**: every verdict above is resolved." if resolved else
               "**NOT RESOLVED**: " + "; ".join(missing) + ".")
@@ -495,6 +541,11 @@ def main(argv=None):
     out = pathlib.Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     write_csv(rows, out / "trends.csv")
+    cost_rows = costs(cuts)
+    with open(out / "cost.csv", "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=list(cost_rows[0]) if cost_rows else ["domain"])
+        writer.writeheader()
+        writer.writerows(cost_rows)
     plot(all_trends, out / "trends.png")
     print("cuts per condition: " + ", ".join(f"{d}/{s}/{h} mm {len(v)}" for (d, s, h), v in sorted(cuts.items())))
     for r in rows:
@@ -502,7 +553,7 @@ def main(argv=None):
         extra += f"  domain: {r['domain_robust']}" if "domain_robust" in r else ""
         print(f"{r['trend']:<58} {r['source']:<13} {r['value']:8.3g} [{r['ci95_low']:.3g}, {r['ci95_high']:.3g}]"
               f"{extra}")
-    print(f"wrote {out / 'trends.csv'}, {out / 'trends.png'}")
+    print(f"wrote {out / 'trends.csv'}, {out / 'cost.csv'}, {out / 'trends.png'}")
     if args.report:
         text, resolved = report(rows, cuts, args.record, floors, src.needs)
         tmp = out / "report.md.tmp"

@@ -236,3 +236,19 @@ def test_report_marks_a_damage_depth_at_the_floor_censored():
     cuts[("large", "regular", 0.1)][2]["subsurface_damage_depth_steady_um"] = 880.0
     assert any("Every cut's damage reaches it" in line for line in st.damage_section(
         cuts, {("large", "regular", 0.1): (900.0, 26.0)}))
+
+
+def test_cost_follows_the_packing_spread_and_the_cut_time():
+    # Main forces 0.9, 1.0, 1.1 N per mm: cv = 0.1 exactly; 10 % needs (0.1 / 0.1)^2 = 1 -> at least 2 packings,
+    # 5 % needs 4; CPU 360 s per cut (median of 300, 360, 900) -> 0.2 and 0.4 CPU-hours.
+    cuts = {("default", "regular", 0.1): {
+        k + 1: {"main_force_N": f, "width_mm": 1.0, "cpu_time_s": c} for k, (f, c) in
+        enumerate(((0.9, 300.0), (1.0, 360.0), (1.1, 900.0)))},
+        ("large", "regular", 0.1): {1: {"main_force_N": 1.0, "width_mm": 1.0, "cpu_time_s": 1000.0}}}
+    by = {r["domain"]: r for r in st.costs(cuts)}
+    d = by["default"]
+    assert math.isclose(d["main_force_cv"], 0.1, rel_tol=1e-12)
+    assert d["packings_for_10%"] == 2 and d["packings_for_5%"] == 4
+    assert math.isclose(d["cpu_h_for_5%"], 0.4, rel_tol=1e-12)
+    assert by["large"]["packings_for_5%"] is None  # one packing: no spread, no estimate
+    assert any("| large | regular | 0.1 | 1 | 1000 | — |" in line for line in st.cost_section(st.costs(cuts)))
