@@ -4,7 +4,7 @@
 //   kerf-dem run SCENE.json [--set key.path=value]... [--out DIR] [--threads N] [--checkpoint-every N] [--replicates N]
 //                [--log-every N]   (log lines on stdout when it is not a terminal)
 //   kerf-dem resume DIR [--threads N]
-//   kerf-dem keys [SECTION]      the Markdown key table of every scene section (docs/dem.md), or of one
+//   kerf-dem keys [SECTION]      the Markdown key table of every scene section (docs/dem-keys.md), or of one
 //   kerf-dem study STUDY.json --out DIR [--threads N] [--threads-per-rank N] [--checkpoint-minutes M] [--log-every N]
 //                a study (kerf/dem/study/study.hpp); under `mpirun -np N` across ranks (built with MPI)
 //
@@ -121,7 +121,7 @@ int main(int argc, char** argv) {
   resume->add_option("--threads", threads, "OpenMP threads (default: all)")->check(CLI::Range(1, 1024));
   resume->add_option("--log-every", log_every, "as for run: a log line every N samples when stdout is not a terminal")
       ->check(CLI::Range(0, 100000000));
-  auto* keys = app.add_subcommand("keys", "print the Markdown key table of the scene sections (docs/dem.md)");
+  auto* keys = app.add_subcommand("keys", "print the Markdown key table of the scene sections (docs/dem-keys.md)");
   keys->add_option("section", section, "one section (" + fmt::format("{}", fmt::join(kerf::dem::scene_sections(), ", ")) +
                                             "; default: all)");
   std::string study_path;

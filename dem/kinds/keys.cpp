@@ -1,4 +1,4 @@
-// The key reference of the scene sections (kerf-dem keys; docs/dem.md's key tables are its output).
+// The key reference of the scene sections (kerf-dem keys; docs/dem-keys.md's key tables are its output).
 #include <fmt/format.h>
 
 #include <functional>

@@ -1,17 +1,18 @@
 #!/usr/bin/env bash
-# The code map at the top of docs/dem.md matches the folders (issue 39): every name in its table's first column is
-# a file (`engine/simulation`: dem/engine/simulation.cpp or include/kerf/dem/engine/simulation.hpp; `kinds/common.*`:
-# any extension; `laws/contact_laws.hpp`: under dem/ or include/kerf/dem/), and every source and header of the DEM
-# (dem/**/*.cpp, dem/**/*.hpp, include/kerf/dem/**/*.hpp) is named by a row. A public header mirrors its source's
-# path. Usage: bash dem_code_map.sh <bin dir (unused)> <source dir>. Needs python3 only: no build.
+# The code map of docs/dem-code-map.md (its section "The folders") matches the folders (issue 39): every name in
+# its table's first column is a file (`engine/simulation`: dem/engine/simulation.cpp or
+# include/kerf/dem/engine/simulation.hpp; `kinds/common.*`: any extension; `laws/contact_laws.hpp`: under dem/ or
+# include/kerf/dem/), and every source and header of the DEM (dem/**/*.cpp, dem/**/*.hpp, include/kerf/dem/**/*.hpp)
+# is named by a row. A public header mirrors its source's path.
+# Usage: bash dem_code_map.sh <bin dir (unused)> <source dir>. Needs python3 only: no build.
 set -uo pipefail
 src="$2"
 python3 - "$src" <<'PY'
 import pathlib, re, sys
 src = pathlib.Path(sys.argv[1])
-text = (src / "docs/dem.md").read_text()
-section = text[text.index("## Code map"):]
-section = section[:section.index("\n## ", 1)]
+text = (src / "docs/dem-code-map.md").read_text()
+section = text[text.index("## The folders"):]
+section = section[:section.index("\n## ", 1)] if "\n## " in section[1:] else section
 names = []
 for line in section.split("\n"):
     if line.startswith("| `"):
@@ -33,10 +34,10 @@ for n in names:
         print(f"FAIL: the code map names `{n}`, which is no file under dem/ or include/kerf/dem/"); failures += 1
 for f in files:
     if not any(covers(n, f) for n in names):
-        print(f"FAIL: dem/{f} is not in the code map of docs/dem.md"); failures += 1
+        print(f"FAIL: dem/{f} is not in the code map of docs/dem-code-map.md"); failures += 1
 for h in headers:
     if not any(covers(n, h) for n in names):
-        print(f"FAIL: include/kerf/dem/{h} is not in the code map of docs/dem.md"); failures += 1
+        print(f"FAIL: include/kerf/dem/{h} is not in the code map of docs/dem-code-map.md"); failures += 1
     elif not (dem / (h[:-4] + ".cpp")).exists() and h not in names:  # header only: named with its extension
         print(f"FAIL: include/kerf/dem/{h} has no source dem/{h[:-4]}.cpp, and the map does not name it as a header")
         failures += 1

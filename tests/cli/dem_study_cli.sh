@@ -312,7 +312,7 @@ bad "kerf-dem: error: scene.kind = bending" "{\"scene\": {\"kind\": \"bending\"}
 "$bin" study "$smoke" --out /proc/kerf_study >/dev/null 2>"$work/err"
 [ $? -eq 4 ] || fail "unwritable --out: expected exit 4 ($(cat "$work/err"))"
 
-# The study keys are in kerf-dem keys (and so in docs/dem.md: dem_keys_cli.sh).
+# The study keys are in kerf-dem keys (and so in docs/dem-keys.md: dem_keys_cli.sh).
 "$bin" keys study.replicates | grep -q '`target_relative_sem_percent` | % |' || fail "keys study.replicates"
 "$bin" keys study | grep -q '`conditions.grid`' || fail "keys study"
 echo "dem study cli: ok"

@@ -129,7 +129,7 @@ std::unique_ptr<SceneKind> make_scene_kind(const std::string& name, const std::s
 /// The scene sections with a key table: specimen, engine, loading, cut, tool, grooves, calibration,
 /// calibration.targets, output ("material" is kerf/dem/laws/material.hpp's).
 std::vector<std::string> scene_sections();
-/// The Markdown key table of one section (all of them when `section` is empty), as docs/dem.md holds them;
+/// The Markdown key table of one section (all of them when `section` is empty), as docs/dem-keys.md holds them;
 /// InputError listing the sections for an unknown one.
 std::string scene_keys_markdown(const std::string& section = "");
 

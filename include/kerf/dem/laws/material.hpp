@@ -8,7 +8,8 @@
 // local_damping), contact_model and bond_model (the laws, kerf/dem/laws/contact_laws.hpp; defaults "linear" and
 // "flat_joint"), the keys of the two laws (their field tables; each key belongs to one law: friction_coefficient
 // is the unbonded contact's, residual_friction_coefficient the flat joint's), and base (name of a file
-// data/materials/<base>.json whose values the other keys override). material_keys_markdown() is the complete reference (docs/dem.md).
+// data/materials/<base>.json whose values the other keys override). material_keys_markdown() is the complete
+// reference (docs/dem-keys.md).
 #include <string>
 
 #include "kerf/dem/laws/contact_laws.hpp"

@@ -92,7 +92,7 @@ struct StudySpec {
 StudySpec read_study(const Json& doc, const std::filesystem::path& study_file);
 
 /// The Markdown key tables of a study file and of its "replicates" section (kerf-dem keys study,
-/// study.replicates; docs/dem.md).
+/// study.replicates; docs/dem-keys.md).
 std::string study_keys_markdown();
 std::string study_replicates_keys_markdown();
 
