@@ -122,7 +122,9 @@ void read_law(ObjectReader& reader, V& law) {
   std::visit(
       [&](auto& p) {
         using P = std::decay_t<decltype(p)>;
-        p = with_path(reader.path(), [&] { return P::validated(read_fields(reader, P::fields(), p)); });
+        // The reader's errors name the whole path already; validated() names the key alone.
+        const P raw = read_fields(reader, P::fields(), p);
+        p = with_path(reader.path(), [&] { return P::validated(raw); });
       },
       law);
 }
