@@ -22,6 +22,7 @@
 #endif
 
 #include "../laws/flat_joint_simd.hpp"
+#include "../laws/softening_flat_joint_simd.hpp"
 #include "kerf/error.hpp"
 #include "simulation_internal.hpp"
 
@@ -35,6 +36,12 @@ template <class Law>
 inline BondResult bond_update_fast(const Law& law, const BondGeometry& geo, const BondKinematics& kin, double* shear,
                                    const std::uint8_t* bonded, BreakMode* breaks) {
   return bond_update(law, geo, kin, shear, bonded, breaks);
+}
+/// The same for a law with a damage per element (the softening flat joint's overload: softening_flat_joint_simd.hpp).
+template <class Law>
+inline BondResult bond_update_fast(const Law& law, const BondGeometry& geo, const BondKinematics& kin, double* shear,
+                                   const std::uint8_t* bonded, BreakMode* breaks, double* damage) {
+  return bond_update(law, geo, kin, shear, bonded, breaks, damage);
 }
 
 /// Square root of each lane, correctly rounded as std::sqrt (one sqrtpd instead of two sqrtsd on x86-64).
@@ -163,8 +170,8 @@ double Simulation::dashpot_coefficient(std::size_t i, std::int64_t j, double sti
 
 // Long (~90 lines) for a reason: the hot loop; its two passes over a block share the block and the disks'
 // pointers, and what it inlines was measured as it stands (docs/performance.md).
-template <class Law, bool kViscous>
-void Simulation::bond_loop(const Law& law, ForceCounts& counts) {
+template <class Law, bool kViscous, class... Damage>
+void Simulation::bond_loop(const Law& law, ForceCounts& counts, Damage*... damage) {
   const double dt = dt_;
   const int stride = b_.stride;
   const auto nb = static_cast<std::int64_t>(b_.size());
@@ -223,7 +230,7 @@ void Simulation::bond_loop(const Law& law, ForceCounts& counts) {
       const std::size_t e0 = b * static_cast<std::size_t>(stride);
       const BondKinematics kin{block.gap[q], block.rotation[q], block.shear_increment[q]};
       BondResult r = bond_update_fast(law, b_.geometry[b], kin, b_.shear_force_n.data() + e0, b_.bonded.data() + e0,
-                                      b_.pending.data() + e0);
+                                      b_.pending.data() + e0, (damage + e0)...);
       n_breaking += r.n_breaking;
       if constexpr (kViscous) {
         // Dashpots beside the bond's springs (not part of its strength test): on disk 2, -c_n v_n n - c_s v_s s.
@@ -329,6 +336,14 @@ void Simulation::wall_loop(const Law& law) {
   }
 }
 
+template <bool kViscous, class Law>
+void Simulation::bond_loop_of(const Law& law, ForceCounts& counts) {
+  if constexpr (BondLawWithDamage<Law>)
+    bond_loop<Law, kViscous>(law, counts, b_.damage.data());
+  else
+    bond_loop<Law, kViscous>(law, counts);
+}
+
 // Called by every thread of a team (or by one thread outside any): orphaned worksharing loops, each contact
 // writing its own slot, then each particle summing its slots in a fixed order, so results are bit-identical
 // for any number of threads. The counts are complete after the wall loop's barrier; the gather ends without
@@ -337,11 +352,11 @@ void Simulation::wall_loop(const Law& law) {
 void Simulation::force_loops(ForceCounts& counts) {
   // The joint, pair and wall loops write disjoint slots: no barrier between them.
   if (material_.viscous_damping_ratio > 0) {
-    std::visit([&](const auto& law) { bond_loop<std::decay_t<decltype(law)>, true>(law, counts); }, material_.joint);
+    std::visit([&](const auto& law) { bond_loop_of<true>(law, counts); }, material_.joint);
     std::visit([&](const auto& law) { pair_loop<std::decay_t<decltype(law)>, true>(law); }, material_.contact);
     std::visit([&](const auto& law) { wall_loop<std::decay_t<decltype(law)>, true>(law); }, material_.contact);
   } else {
-    std::visit([&](const auto& law) { bond_loop<std::decay_t<decltype(law)>, false>(law, counts); }, material_.joint);
+    std::visit([&](const auto& law) { bond_loop_of<false>(law, counts); }, material_.joint);
     std::visit([&](const auto& law) { pair_loop<std::decay_t<decltype(law)>, false>(law); }, material_.contact);
     std::visit([&](const auto& law) { wall_loop<std::decay_t<decltype(law)>, false>(law); }, material_.contact);
   }  // the wall loop ends with a barrier
@@ -415,6 +430,7 @@ void Simulation::apply_breaks_of(const Law& law) {
                          place.length_m, b_.pending[k], static_cast<std::int32_t>(b), static_cast<std::int32_t>(e)});
       b_.bonded[k] = 0;
       b_.shear_force_n[k] = 0;  // residual mode: the shear stress of a broken element drops to zero
+      if constexpr (BondLawWithDamage<Law>) b_.damage[k] = 1;  // a broken element is wholly damaged
       b_.pending[k] = BreakMode::none;
       if (bond_retires_on_break(law)) {  // the whole bond goes with its first break
         b_.active[b] = 0;

@@ -36,7 +36,12 @@ double Simulation::strain_energy() const {
           const auto i = static_cast<std::size_t>(b_.i[b]), j = static_cast<std::size_t>(b_.j[b]);
           const double d = std::hypot(p_.x[j] - p_.x[i], p_.y[j] - p_.y[i]);
           const BondKinematics kin{d - b_.ref_distance_m[b], p_.theta[j] - p_.theta[i] - b_.ref_rotation_rad[b], 0};
-          e += bond_energy(law, b_.geometry[b], kin, b_.shear_force_n.data() + b * stride, b_.bonded.data() + b * stride);
+          if constexpr (BondLawWithDamage<std::decay_t<decltype(law)>>)
+            e += bond_energy(law, b_.geometry[b], kin, b_.shear_force_n.data() + b * stride,
+                             b_.bonded.data() + b * stride, b_.damage.data() + b * stride);
+          else
+            e += bond_energy(law, b_.geometry[b], kin, b_.shear_force_n.data() + b * stride,
+                             b_.bonded.data() + b * stride);
         }
       },
       material_.joint);

@@ -18,12 +18,22 @@ int BondStore::n_bonded_elements(std::size_t b) const {
   return n;
 }
 
+void BondStore::copy_elements(std::size_t to, const BondStore& from, std::size_t k) {
+  const auto n = static_cast<std::size_t>(stride);
+  for (std::size_t e = 0; e < n; ++e) {
+    bonded[to * n + e] = from.bonded[k * n + e];
+    shear_force_n[to * n + e] = from.shear_force_n[k * n + e];
+    if (keeps_damage && from.keeps_damage) damage[to * n + e] = from.damage[k * n + e];
+  }
+}
+
 Simulation::Simulation(const Material& material, const SimulationOptions& options)
     : material_(material), opt_(options), types_{ParticleType{material.density_kg_per_m3}} {
   if (!(options.thickness_m > 0)) throw InputError("specimen.thickness_mm", format_value(options.thickness_m * 1e3), "a positive value in mm");
   if (!(options.time_step_safety > 0 && options.time_step_safety <= 1))
     throw InputError("engine.time_step_safety", format_value(options.time_step_safety), "a value in (0, 1]");
   b_.stride = std::visit([](const auto& law) { return bond_elements(law); }, material.joint);
+  b_.keeps_damage = std::visit([](const auto& law) { return BondLawWithDamage<std::decay_t<decltype(law)>>; }, material.joint);
   speed_limit_ = options.speed_limit_m_per_s > 0 ? options.speed_limit_m_per_s : p_wave_speed_m_per_s(material);
 }
 
@@ -112,6 +122,7 @@ int Simulation::install_bond(int i, int j, double ref_distance_m, double ref_rot
     b_.shear_force_n.push_back(0.0);
     b_.bonded.push_back(1);
     b_.pending.push_back(BreakMode::none);
+    if (b_.keeps_damage) b_.damage.push_back(0.0);
   }
   b_.out.push_back({0, 0, 0, 0});
   need_rebuild_ = true;

@@ -1,4 +1,4 @@
-// The DEM engine's state as bytes (checkpoints: KERFDEM7, and KERFDEM6 still read) and the memory it holds.
+// The DEM engine's state as bytes (checkpoints: KERFDEM8; KERFDEM7 and KERFDEM6 still read) and the memory it holds.
 #include <string>
 #include <string_view>
 
@@ -19,22 +19,24 @@ std::size_t Simulation::memory_bytes() const {
   return bytes_of(p_.x, p_.y, p_.vx, p_.vy, p_.theta, p_.omega, p_.fx, p_.fy, p_.torque, p_.radius, p_.inv_mass,
                   p_.inv_inertia, p_.type, p_.group) +
          bytes_of(b_.i, b_.j, b_.ref_distance_m, b_.ref_rotation_rad, b_.geometry, b_.active, b_.shear_force_n,
-                  b_.bonded, b_.pending, b_.out) +
+                  b_.bonded, b_.pending, b_.out, b_.damage) +
          bytes_of(pairs_, pair_shear_, pair_out_, wall_contacts_, wall_shear_, wall_out_, incidence_start_, incidence_,
                   incidence_pair_begin_, incidence_wall_begin_, x_ref_, y_ref_, wall_ref_, fixed_, cracks_);
 }
 
 namespace {
 
-constexpr std::string_view kStateMagic = "KERFDEM7";  // 2: Wall::friction_coefficient; 3: the laws as variants;
+constexpr std::string_view kStateMagic = "KERFDEM8";  // 2: Wall::friction_coefficient; 3: the laws as variants;
                                                       // 4: the viscous damping ratio; 5: skip_held_pairs;
-                                                      // 6: the absorbing rates; 7: the laws by name
-constexpr std::string_view kStateMagicRawLaws = "KERFDEM6";  // still read: the laws as raw variants of 4a34e1f
+                                                      // 6: the absorbing rates; 7: the laws by name;
+                                                      // 8: the bonds' element damage
+constexpr std::string_view kStateMagicNoDamage = "KERFDEM7";  // still read: no element damage (no law had one)
+constexpr std::string_view kStateMagicRawLaws = "KERFDEM6";   // still read: also the laws as raw variants of 4a34e1f
 
 }  // namespace
 
 template <class Self, class Io>
-void Simulation::state_fields(Self& sim, Io& io) {
+void Simulation::state_fields(Self& sim, Io& io, bool with_damage) {
   auto& p = sim.p_;
   auto& b = sim.b_;
   io(sim.types_);
@@ -49,6 +51,7 @@ void Simulation::state_fields(Self& sim, Io& io) {
      sim.incidence_wall_begin_, sim.x_ref_, sim.y_ref_, sim.wall_ref_, sim.fixed_, sim.absorbing_rate_);
   io(sim.need_rebuild_, sim.need_breaks_, sim.initialised_, sim.dt_fixed_);
   io(sim.dt_, sim.time_, sim.skin_, sim.speed_limit_, sim.steps_);
+  if (with_damage) io(b.damage);  // last, so that the earlier formats are this one without it
 }
 
 std::string Simulation::serialize() const {
@@ -56,20 +59,24 @@ std::string Simulation::serialize() const {
   serial::Out io{out};
   io(material_.density_kg_per_m3, material_.contact, material_.joint, material_.local_damping,
      material_.viscous_damping_ratio, material_.name, opt_);
-  state_fields(*this, io);
+  state_fields(*this, io, true);
   return out;
 }
 
 Simulation Simulation::deserialize(std::string_view bytes) {
   std::size_t version = 0;
-  serial::In io = serial::open_tagged(bytes, {kStateMagic, kStateMagicRawLaws}, "engine state", &version);
-  io.raw_laws = version == 1;
+  serial::In io =
+      serial::open_tagged(bytes, {kStateMagic, kStateMagicNoDamage, kStateMagicRawLaws}, "engine state", &version);
+  io.raw_laws = version == 2;
   Material m;
   SimulationOptions opt;
   io(m.density_kg_per_m3, m.contact, m.joint, m.local_damping, m.viscous_damping_ratio, m.name, opt);
   Simulation sim(m, opt);
-  state_fields(sim, io);
+  state_fields(sim, io, version == 0);
   io.expect_end("engine state");
+  const BondStore& b = sim.b_;
+  if (b.damage.size() != (b.keeps_damage ? b.bonded.size() : 0))
+    throw ModelError("dem", "corrupt checkpoint (the bonds' element damage does not match their elements)");
   return sim;
 }
 

@@ -78,14 +78,10 @@ void CutWindow::sync(const Simulation& current) {
   }
   const BondStore& cb = current.bonds();
   BondStore& fb = full_.bonds();
-  const auto stride = static_cast<std::size_t>(fb.stride);
   for (std::size_t k = 0; k < cb.size(); ++k) {
     const auto g = static_cast<std::size_t>(bond_global_of_[k]);
     fb.active[g] = cb.active[k];
-    for (std::size_t e = 0; e < stride; ++e) {
-      fb.bonded[g * stride + e] = cb.bonded[k * stride + e];
-      fb.shear_force_n[g * stride + e] = cb.shear_force_n[k * stride + e];
-    }
+    fb.copy_elements(g, cb, k);
   }
   // The window's cracks not moved yet (sync may run more than once on one window).
   const auto& events = current.cracks();
@@ -198,16 +194,12 @@ Simulation CutWindow::build(const Simulation* current, double x_edge_m) {
   }
   std::sort(bond_global_of_.begin(), bond_global_of_.end());
   bond_global_of_.erase(std::unique(bond_global_of_.begin(), bond_global_of_.end()), bond_global_of_.end());
-  const auto stride = static_cast<std::size_t>(fb.stride);
   for (const auto bg : bond_global_of_) {
     const auto b = static_cast<std::size_t>(bg);
     const auto k = static_cast<std::size_t>(sim.install_bond(local_of_[static_cast<std::size_t>(fb.i[b])],
                                                              local_of_[static_cast<std::size_t>(fb.j[b])],
                                                              fb.ref_distance_m[b], fb.ref_rotation_rad[b]));
-    for (std::size_t e = 0; e < stride; ++e) {
-      sim.bonds().bonded[k * stride + e] = fb.bonded[b * stride + e];
-      sim.bonds().shear_force_n[k * stride + e] = fb.shear_force_n[b * stride + e];
-    }
+    sim.bonds().copy_elements(k, fb, b);
   }
   // The shear springs of the contacts between disks both in the window (sorted again by window index:
   // the same order, the window's disks being in the workpiece's order).

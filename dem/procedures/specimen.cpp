@@ -352,15 +352,11 @@ Simulation copy_disks_and_joints(const Simulation& source, const Material& mater
     q.group[u] = p.group[k];
   }
   const auto& b = source.bonds();
-  const auto stride = static_cast<std::size_t>(b.stride);
   for (std::size_t k = 0; k < b.size(); ++k) {
     const auto i = index[static_cast<std::size_t>(b.i[k])], j = index[static_cast<std::size_t>(b.j[k])];
     if (!b.active[k] || i < 0 || j < 0) continue;
     const auto id = static_cast<std::size_t>(sim.install_bond(i, j, b.ref_distance_m[k], b.ref_rotation_rad[k]));
-    for (std::size_t e = 0; e < stride; ++e) {
-      sim.bonds().bonded[id * stride + e] = b.bonded[k * stride + e];
-      sim.bonds().shear_force_n[id * stride + e] = b.shear_force_n[k * stride + e];
-    }
+    sim.bonds().copy_elements(id, b, k);
   }
   return sim;
 }
@@ -377,7 +373,7 @@ void save_specimen(const std::string& file_path, const Simulation& sim, const Sp
   j["material"] = material_to_json(sim.material());
   j["particles"] = Json{{"x_m", p.x}, {"y_m", p.y}, {"radius_m", p.radius}, {"theta_rad", p.theta}};
   std::vector<int> i, jj, bonded;
-  std::vector<double> d0, rot0, shear;
+  std::vector<double> d0, rot0, shear, damage;
   const auto stride = static_cast<std::size_t>(b.stride);
   for (std::size_t k = 0; k < b.size(); ++k) {
     if (!b.active[k]) continue;
@@ -388,10 +384,12 @@ void save_specimen(const std::string& file_path, const Simulation& sim, const Sp
     for (std::size_t e = 0; e < stride; ++e) {
       bonded.push_back(b.bonded[k * stride + e]);
       shear.push_back(b.shear_force_n[k * stride + e]);
+      if (b.keeps_damage) damage.push_back(b.damage[k * stride + e]);
     }
   }
   j["bonds"] = Json{{"n_elements", b.stride}, {"i", i}, {"j", jj}, {"ref_distance_m", d0}, {"ref_rotation_rad", rot0},
                     {"element_bonded", bonded}, {"element_shear_force_N", shear}};
+  if (b.keeps_damage) j["bonds"]["element_damage"] = damage;  // a law with element damage (softening flat joint)
   write_file_atomically(file_path, j.dump());
 }
 
@@ -429,6 +427,7 @@ Simulation load_specimen(const std::string& file_path, const Material& material,
     const auto rot0 = b.at("ref_rotation_rad").get<std::vector<double>>();
     const auto bonded = b.at("element_bonded").get<std::vector<int>>();
     const auto shear = b.at("element_shear_force_N").get<std::vector<double>>();
+    const auto damage = b.value("element_damage", std::vector<double>());  // absent: undamaged (or another law)
     const auto stored = static_cast<std::size_t>(b.at("n_elements").get<int>());
     const auto stride = static_cast<std::size_t>(sim.bonds().stride);
     for (std::size_t k = 0; k < bi.size(); ++k) {
@@ -440,6 +439,7 @@ Simulation load_specimen(const std::string& file_path, const Material& material,
       for (std::size_t e = 0; e < stride; ++e) {
         sim.bonds().bonded[id * stride + e] = static_cast<std::uint8_t>(bonded.at(k * stride + e));
         sim.bonds().shear_force_n[id * stride + e] = shear.at(k * stride + e);
+        if (sim.bonds().keeps_damage && !damage.empty()) sim.bonds().damage[id * stride + e] = damage.at(k * stride + e);
       }
     }
     sim.initialise();

@@ -203,11 +203,10 @@ ChoiceField<S> choice_field(std::string_view key, const EnumNames<E>& names, std
           [member](S& s, int v) { s.*member = static_cast<E>(v); }};
 }
 
-/// The fields of a member struct (`member` of S, of type B, with its own table) as fields of S: one table
-/// written once and embedded in each struct that holds it (the bond laws' BondStiffnessStrength). Number
-/// fields; then `own`, the fields S holds itself.
-template <class S, class B>
-FieldTable<S> embedded_fields(const FieldTable<B>& table, B S::*member, const FieldTable<S>& own = {}) {
+namespace detail {
+/// The fields of B as fields of S, through `part(s)`, B's part of an S (a member or a base), for both constness.
+template <class S, class B, class Part>
+FieldTable<S> fields_through(const FieldTable<B>& table, Part part, const FieldTable<S>& own, const char* who) {
   // Each field is built in its place and filled there, none moved (GCC 12 flags moving a just-built field's
   // std::function members as "may be used uninitialized", a false positive); reserved so none moves later.
   FieldTable<S> out;
@@ -219,17 +218,45 @@ FieldTable<S> embedded_fields(const FieldTable<B>& table, B S::*member, const Fi
           if constexpr (std::is_same_v<F, NumberField<B>>) {
             auto& g = std::get<NumberField<S>>(out.emplace_back(std::in_place_type<NumberField<S>>));
             g.key = f.key, g.unit = f.unit, g.range = f.range, g.doc = f.doc, g.required = f.required, g.absent = f.absent;
-            if (f.has) g.has = [has = f.has, member](const S& s) { return has(s.*member); };
-            g.get = [get = f.get, member](const S& s) { return get(s.*member); };
-            g.set = [set = f.set, member](S& s, double v) { set(s.*member, v); };
+            if (f.has) g.has = [has = f.has, part](const S& s) { return has(part(s)); };
+            g.get = [get = f.get, part](const S& s) { return get(part(s)); };
+            g.set = [set = f.set, part](S& s, double v) { set(part(s), v); };
+          } else if constexpr (std::is_same_v<F, IntField<B>>) {
+            auto& g = std::get<IntField<S>>(out.emplace_back(std::in_place_type<IntField<S>>));
+            g.key = f.key, g.lo = f.lo, g.hi = f.hi, g.doc = f.doc;
+            g.get = [get = f.get, part](const S& s) { return get(part(s)); };
+            g.set = [set = f.set, part](S& s, int v) { set(part(s), v); };
           } else {
-            throw std::logic_error("embedded_fields: number fields only (" + std::string(f.key) + ")");
+            throw std::logic_error(std::string(who) + ": number and integer fields only (" + std::string(f.key) + ")");
           }
         },
         field);
   }
   for (const auto& field : own) out.push_back(field);
   return out;
+}
+}  // namespace detail
+
+/// The fields of a member struct (`member` of S, of type B, with its own table) as fields of S: one table
+/// written once and embedded in each struct that holds it (the bond laws' BondStiffnessStrength). Number and
+/// integer fields; then `own`, the fields S holds itself.
+template <class S, class B>
+FieldTable<S> embedded_fields(const FieldTable<B>& table, B S::*member, const FieldTable<S>& own = {}) {
+  return detail::fields_through(table, [member](auto& s) -> auto& { return s.*member; }, own, "embedded_fields");
+}
+
+/// The fields of a base struct B of S (a parameter struct that extends another: the softening flat joint is a
+/// flat joint with a fracture energy) as fields of S, then `own`: the base's table written once.
+template <class S, class B>
+  requires std::is_base_of_v<B, S>
+FieldTable<S> inherited_fields(const FieldTable<B>& table, const FieldTable<S>& own = {}) {
+  return detail::fields_through(
+      table,
+      [](auto& s) -> auto& {
+        if constexpr (std::is_const_v<std::remove_reference_t<decltype(s)>>) return static_cast<const B&>(s);
+        else return static_cast<B&>(s);
+      },
+      own, "inherited_fields");
 }
 
 /// Whether read_fields refuses a number that its conversion to SI takes to 0, a subnormal or infinity, naming

@@ -33,6 +33,6 @@ PY
 "$bin" resume "$work/bad" --threads 1 >/dev/null 2>"$work/err"
 status=$?
 [ $status -eq 3 ] || fail "an engine state of KERFDEM5: exit $status (expected 3): $(cat "$work/err")"
-grep -qF "another kerf-dem version (KERFDEM5, this one reads KERFDEM7 or KERFDEM6)" "$work/err" ||
+grep -qF "another kerf-dem version (KERFDEM5, this one reads KERFDEM8 or KERFDEM7 or KERFDEM6)" "$work/err" ||
   fail "the refusal does not name the versions: $(cat "$work/err")"
 echo "dem_old_checkpoint_cli: ok"

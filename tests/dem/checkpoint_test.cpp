@@ -150,6 +150,17 @@ LawBytes law_bytes(const Material& m) {
   return out;
 }
 
+/// An engine state of this build ("KERFDEM8") of a law without damage as "KERFDEM7" wrote it: the same bytes
+/// without the bonds' element damage at the end (an empty vector: its length, 0).
+std::string as_kerfdem7(std::string now) {
+  REQUIRE(now.substr(0, 8) == "KERFDEM8");
+  REQUIRE(now.size() >= 16);
+  REQUIRE(now.substr(now.size() - 8) == std::string(8, '\0'));
+  now.resize(now.size() - 8);
+  now.replace(0, 8, "KERFDEM7");
+  return now;
+}
+
 /// `now` (this build's bytes holding `m`'s law records once) with the records replaced by the raw variants of
 /// 4a34e1f and its leading tag by `old_tag`; `joint_index_at` receives the place of the joint's index.
 std::string with_raw_laws(std::string now, const Material& m, std::string_view old_tag,
@@ -203,27 +214,37 @@ TEST_CASE("checkpoint: a law record of an unknown name, a missing key or a value
   CHECK_THROWS_AS(serial::law_from_record<BondLaw>(r), kerf::ModelError);
 }
 
-TEST_CASE("checkpoint: an engine state of KERFDEM6 (the laws as raw variants) reads the same laws, and another "
-          "version is refused naming it", "[checkpoint]") {
+TEST_CASE("checkpoint: engine states of KERFDEM7 (no element damage) and KERFDEM6 (also the laws as raw variants) "
+          "read the same state, and another version is refused naming it", "[checkpoint]") {
   for (const BondLaw& joint : {BondLaw(odd_flat_joint()), BondLaw(odd_parallel_bond())}) {
     Simulation sim(odd_material(joint), SimulationOptions{});
     const int a = sim.add_particle(0, 0, 10e-6), b = sim.add_particle(19e-6, 0, 10e-6);
     sim.install_bond(a, b);
     sim.initialise();
     sim.run(3);
-    const Simulation old = Simulation::deserialize(with_raw_laws(sim.serialize(), sim.material(), "KERFDEM6"));
-    CHECK(same_micro_parameters(old.material(), sim.material()));
-    CHECK(old.serialize() == sim.serialize());  // and written again in this build's format, byte for byte
+    const std::string v7 = as_kerfdem7(sim.serialize());
+    const Simulation old7 = Simulation::deserialize(v7);
+    CHECK(same_micro_parameters(old7.material(), sim.material()));
+    CHECK(old7.serialize() == sim.serialize());  // written again in this build's format, byte for byte
+    const Simulation old6 = Simulation::deserialize(with_raw_laws(v7, sim.material(), "KERFDEM6"));
+    CHECK(same_micro_parameters(old6.material(), sim.material()));
+    CHECK(old6.serialize() == sim.serialize());
   }
   const Simulation sim(odd_material(odd_parallel_bond()), SimulationOptions{});
   std::size_t index_at = 0;
-  std::string bad = with_raw_laws(sim.serialize(), sim.material(), "KERFDEM6", &index_at);
+  std::string bad = with_raw_laws(as_kerfdem7(sim.serialize()), sim.material(), "KERFDEM6", &index_at);
   bad[index_at] = static_cast<char>(std::variant_size_v<legacy::BondLaw6>);
   CHECK_THROWS_WITH(Simulation::deserialize(bad), Catch::Matchers::Contains("an unknown law"));
   std::string older = sim.serialize();
   older.replace(0, 8, "KERFDEM5");
   CHECK_THROWS_WITH(Simulation::deserialize(older),
-                    Catch::Matchers::Contains("another kerf-dem version (KERFDEM5, this one reads KERFDEM7 or KERFDEM6)"));
+                    Catch::Matchers::Contains(
+                        "another kerf-dem version (KERFDEM5, this one reads KERFDEM8 or KERFDEM7 or KERFDEM6)"));
+  // A KERFDEM8 state whose damage does not match its elements (a flat joint's with damage) is corrupt.
+  std::string damaged = sim.serialize();
+  damaged.resize(damaged.size() - 8);
+  serial::put_vec(damaged, std::vector<double>{0.5});
+  CHECK_THROWS_WITH(Simulation::deserialize(damaged), Catch::Matchers::Contains("element damage does not match"));
 }
 
 TEST_CASE("checkpoint: a calibration log of KERFCAL3 (the laws as raw variants) reads the same laws", "[checkpoint]") {

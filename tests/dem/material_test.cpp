@@ -46,6 +46,9 @@ TEST_CASE("material: errors name the field, the value and the expectation", "[ma
     CHECK_THAT(e.expected(), Contains("'flat_joint'"));
   }
   CHECK_THROWS_AS(read_material(kerf::Json::parse(R"({"radius_multiplier": 1.5})"), "material"), kerf::InputError);
+  // A law's key out of its range is named once, with its object's path (read by the law's table).
+  CHECK_THROWS_WITH(read_material(kerf::Json::parse(R"({"tensile_strength_MPa": -1})"), "material"),
+                    "material.tensile_strength_MPa = -1: expected a non-negative value in MPa");
   CHECK_THROWS_AS(read_material(kerf::Json::parse(R"({"base": "no_such_material"})"), "material"), kerf::InputError);
 }
 

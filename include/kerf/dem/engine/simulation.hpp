@@ -54,8 +54,16 @@ struct BondStore {
   std::vector<std::uint8_t> bonded;     ///< per element
   std::vector<BreakMode> pending;       ///< per element, breaks found in this step's force loop
   std::vector<std::array<double, 4>> out;  ///< per bond: force on j (x, y), torque on i, torque on j
+  /// Whether the bond law keeps a damage per element (BondLawWithDamage: the softening flat joint); set from the
+  /// law by the Simulation.
+  bool keeps_damage = false;
+  /// Per element when keeps_damage (0 at installation, 1 once broken; the law advances it), else empty.
+  std::vector<double> damage;
   std::size_t size() const { return i.size(); }
   int n_bonded_elements(std::size_t b) const;
+  /// Copies bond k's element states (bonded flags, shear forces, damage where both stores keep it) from `from`
+  /// into bond `to` of this store, both of the same stride (a specimen copied, a cut's window rebuilt).
+  void copy_elements(std::size_t to, const BondStore& from, std::size_t k);
 };
 
 /// A rigid wall: a line segment moving at a prescribed velocity. Disks touch it from either side.
@@ -195,10 +203,11 @@ class Simulation {
   int n_touching_pairs() const;
   /// The complete state (particles, joints, contact lists with their shear springs, neighbour reference
   /// positions, walls, cracks, clock) as bytes: restoring it and running on gives bit-identical results to
-  /// an uninterrupted run. Format: "KERFDEM7", the material with its two laws each as a record by name (the
+  /// an uninterrupted run. Format: "KERFDEM8", the material with its two laws each as a record by name (the
   /// registry name, then every key of its field table with its SI value), then each field as a length-prefixed
-  /// raw array (native endianness, same build). "KERFDEM6" (the laws as raw variants, kerf 4a34e1f) is still
-  /// read; another version is a ModelError naming it.
+  /// raw array (native endianness, same build), the bonds' element damage last. "KERFDEM7" (without the damage)
+  /// and "KERFDEM6" (also the laws as raw variants, kerf 4a34e1f) are still read; another version is a
+  /// ModelError naming it.
   std::string serialize() const;
   static Simulation deserialize(std::string_view bytes);
   /// Bytes held by the engine's arrays (particles, joints with their elements, contact lists, incidence).
@@ -231,8 +240,13 @@ class Simulation {
   /// The bond, pair and wall loops of force_loops, one instantiation per law.
   /// kViscous: with the contact dashpots of Material::viscous_damping_ratio (an instantiation without them
   /// runs when the ratio is 0, so undamped runs are the same to the bit).
-  template <class Law, bool kViscous>
-  void bond_loop(const Law& law, ForceCounts& counts);
+  /// `damage`: the bonds' element damage (BondStore::damage) for a law that has one (BondLawWithDamage), else
+  /// nothing (the loop then calls the law's update as before there was any).
+  template <class Law, bool kViscous, class... Damage>
+  void bond_loop(const Law& law, ForceCounts& counts, Damage*... damage);
+  /// bond_loop with the damage for a law that has one.
+  template <bool kViscous, class Law>
+  void bond_loop_of(const Law& law, ForceCounts& counts);
   template <class Law, bool kViscous>
   void pair_loop(const Law& law);
   template <class Law, bool kViscous>
@@ -252,8 +266,9 @@ class Simulation {
   void check_stability() const;
   double mass_of(double radius_m, std::uint8_t type) const;
   /// The state after the material and options, in checkpoint order: io(field...) writes or reads them.
+  /// `with_damage`: the bonds' element damage too (the formats since "KERFDEM8").
   template <class Self, class Io>
-  static void state_fields(Self& sim, Io& io);
+  static void state_fields(Self& sim, Io& io, bool with_damage);
 
   Material material_;
   SimulationOptions opt_;

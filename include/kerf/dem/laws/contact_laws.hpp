@@ -23,6 +23,7 @@
 #include "kerf/dem/laws/law.hpp"
 #include "kerf/dem/laws/linear_contact.hpp"
 #include "kerf/dem/laws/parallel_bond.hpp"
+#include "kerf/dem/laws/softening_flat_joint.hpp"
 #include "kerf/field_table.hpp"
 
 namespace kerf::dem {
@@ -36,24 +37,41 @@ concept LawParams = requires(const P& p) {
   { P::validated(p) } -> std::same_as<P>;
 };
 
-/// A bonded law: its stiffness and strength as the shared block `bond` (BondStiffnessStrength: what calibration
-/// moves), per-bond state of bond_elements() elements (a shear force and a bonded flag each), the geometry fixed
-/// at installation, the force update (breaks only flagged, applied by the engine after the
-/// loop), when a bond hands its pair to the unbonded contact, its time-step stiffness, strain energy and the
-/// place of a broken element (crack events).
+/// A bond law's update and energy from the elements' shear forces and bonded flags alone (the flat joint, the
+/// parallel bond).
 template <class P>
-concept BondLawParams = LawParams<P> && requires(const P& p, const BondGeometry& g, const BondKinematics& k,
-                                                 const BondResult& r, double* shear, const std::uint8_t* bonded,
-                                                 BreakMode* breaks) {
+concept BondLawWithoutDamage = requires(const P& p, const BondGeometry& g, const BondKinematics& k, double* shear,
+                                        const std::uint8_t* bonded, BreakMode* breaks) {
+  { bond_update(p, g, k, shear, bonded, breaks) } -> std::same_as<BondResult>;
+  { bond_energy(p, g, k, shear, bonded) } -> std::same_as<double>;
+};
+
+/// A bond law with a damage per element besides (the softening flat joint): its update and energy take the
+/// bond's `damage` too, bond_elements(p) doubles, which the engine keeps (BondStore::damage), zero at
+/// installation and set to 1 when the element breaks, and checkpoints; the update advances them in place.
+template <class P>
+concept BondLawWithDamage = requires(const P& p, const BondGeometry& g, const BondKinematics& k, double* shear,
+                                     const std::uint8_t* bonded, BreakMode* breaks, double* damage) {
+  { bond_update(p, g, k, shear, bonded, breaks, damage) } -> std::same_as<BondResult>;
+  { bond_energy(p, g, k, shear, bonded, damage) } -> std::same_as<double>;
+};
+
+/// A bonded law: its stiffness and strength as the shared block `bond` (BondStiffnessStrength: what calibration
+/// moves), per-bond state of bond_elements() elements (a shear force and a bonded flag each, and a damage for a
+/// BondLawWithDamage), the geometry fixed at installation, the force update (breaks only flagged, applied by the
+/// engine after the loop), when a bond hands its pair to the unbonded contact, its time-step stiffness, strain
+/// energy and the place of a broken element (crack events).
+template <class P>
+concept BondLawParams = LawParams<P> && (BondLawWithoutDamage<P> != BondLawWithDamage<P>) &&
+                        requires(const P& p, const BondGeometry& g, const BondKinematics& k, const BondResult& r,
+                                 const std::uint8_t* bonded) {
   { p.bond } -> std::same_as<const BondStiffnessStrength&>;
   { bond_elements(p) } -> std::same_as<int>;
   { bond_keeps_contact(p) } -> std::same_as<bool>;
   { bond_retires_on_break(p) } -> std::same_as<bool>;
   { bond_geometry(p, 1.0, 1.0, 1.0) } -> std::same_as<BondGeometry>;
-  { bond_update(p, g, k, shear, bonded, breaks) } -> std::same_as<BondResult>;
   { bond_retires(p, g, k, r, 1.0, bonded) } -> std::same_as<bool>;
   { bond_time_step_stiffness(p, g) } -> std::same_as<TimeStepStiffness>;
-  { bond_energy(p, g, k, shear, bonded) } -> std::same_as<double>;
   { bond_element_place(p, g, 0) } -> std::same_as<ElementPlace>;
 };
 
@@ -71,7 +89,7 @@ concept ContactLawParams = LawParams<P> && requires(const P& p, double& shear) {
 };
 
 // The laws. The first of each list is the default.
-using BondLaw = std::variant<FlatJointParams, ParallelBondParams>;
+using BondLaw = std::variant<FlatJointParams, ParallelBondParams, SofteningFlatJointParams>;
 using ContactLaw = std::variant<LinearContactParams>;
 
 namespace detail {
@@ -122,7 +140,9 @@ void read_law(ObjectReader& reader, V& law) {
   std::visit(
       [&](auto& p) {
         using P = std::decay_t<decltype(p)>;
-        p = with_path(reader.path(), [&] { return P::validated(read_fields(reader, P::fields(), p)); });
+        // The reader's errors name the whole path already; validated() names the key alone.
+        const P raw = read_fields(reader, P::fields(), p);
+        p = with_path(reader.path(), [&] { return P::validated(raw); });
       },
       law);
 }
