@@ -25,7 +25,28 @@ const EnumNames<CalibrationMethod>& method_names() {
 }
 
 constexpr std::string_view free_names[] = {"effective_modulus_GPa", "stiffness_ratio", "tensile_strength_MPa",
-                                           "cohesion_MPa"};
+                                           "cohesion_MPa", "fracture_energy_J_per_m2"};
+
+/// K_IC in MPa sqrt(m).
+constexpr FieldUnit kMPaSqrtM{"MPa sqrt(m)", units::mpa_to_pa, units::pa_to_mpa};
+
+/// "calibration.toughness": the beam of the fifth test (its packing the specimen's, its size its own); the
+/// test's own keys are the toughness scene's (toughness_fields()).
+struct Beam {
+  double depth_m = 0.5e-3, length_m = 2.2e-3;
+  std::optional<double> local_damping;
+};
+const FieldTable<Beam>& beam_fields() {
+  static const FieldTable<Beam> table{
+      number_field("beam_depth_mm", units::kMm, Range::positive(), "the beam's depth W (the specimen's height)",
+                   &Beam::depth_m),
+      number_field("beam_length_mm", units::kMm, Range::positive(),
+                   "the beam's length (at least 4.2 W: span 4 W and the overhangs)", &Beam::length_m),
+      optional_number_field("local_damping", units::kNone, Range::closed(0.0, 1.0),
+                            "the beam's local damping (a light one quietens the roller's ringing)", &Beam::local_damping,
+                            "the material's")};
+  return table;
+}
 
 /// "calibration.targets": a row of a table of macro-properties, which the section's own keys override.
 struct TargetsFile {
@@ -45,6 +66,9 @@ const FieldTable<CalibrationSpec>& calibration_fields() {
   static const FieldTable<CalibrationSpec> table{
       number_field("tolerance_percent", units::kPercent, Range::open(0.0, 100.0),
                    "largest relative error of each of E, nu, sigma_t, sigma_c for convergence", &CalibrationSpec::tolerance),
+      number_field("toughness_tolerance_percent", units::kPercent, Range::open(0.0, 100.0),
+                   "largest relative error of K_IC for convergence (with a toughness target)",
+                   &CalibrationSpec::toughness_tolerance),
       int_field("max_evaluations", 1, 1000, "DEM evaluations (one tension and one compression test each)",
                 &CalibrationSpec::max_evaluations),
       choice_field("method", method_names(), "root finder (kerf/dem/procedures/calibration.hpp)", &CalibrationSpec::method),
@@ -54,11 +78,13 @@ const FieldTable<CalibrationSpec>& calibration_fields() {
       FlagsField<CalibrationSpec>{"free", free_names, "the micro-parameters the calibration may change",
                                   [](const CalibrationSpec& c) {
                                     return unsigned{c.free_modulus} | unsigned{c.free_stiffness_ratio} << 1 |
-                                           unsigned{c.free_tensile_strength} << 2 | unsigned{c.free_cohesion} << 3;
+                                           unsigned{c.free_tensile_strength} << 2 | unsigned{c.free_cohesion} << 3 |
+                                           unsigned{c.free_fracture_energy} << 4;
                                   },
                                   [](CalibrationSpec& c, unsigned flags) {
                                     c.free_modulus = flags & 1u, c.free_stiffness_ratio = flags & 2u;
                                     c.free_tensile_strength = flags & 4u, c.free_cohesion = flags & 8u;
+                                    c.free_fracture_energy = flags & 16u;
                                   }}};
   return table;
 }
@@ -73,7 +99,10 @@ const FieldTable<MacroProperties>& target_fields() {
       number_field("tensile_strength_MPa", units::kMPa, Range::positive(), "tensile strength sigma_t",
                    &MacroProperties::tensile_strength_pa),
       number_field("compressive_strength_MPa", units::kMPa, Range::positive(), "unconfined compressive strength sigma_c",
-                   &MacroProperties::compressive_strength_pa)};
+                   &MacroProperties::compressive_strength_pa),
+      number_field("fracture_toughness_MPa_sqrt_m", kMPaSqrtM, Range::non_negative(),
+                   "fracture toughness K_IC of the calibration.toughness test (0: none)",
+                   &MacroProperties::fracture_toughness_pa_sqrt_m)};
   return table;
 }
 
@@ -90,12 +119,35 @@ MacroProperties read_targets_csv(const fs::path& path, const std::string& row, c
   throw InputError(field + ".row", row, "a row of " + path.string());
 }
 
-Json macro_json(const MacroProperties& m) { return fields_to_json(target_fields(), m); }
+/// The macro-properties as JSON (K_IC only when measured or targeted).
+Json macro_json(const MacroProperties& m) {
+  Json j = fields_to_json(target_fields(), m);
+  if (!(m.fracture_toughness_pa_sqrt_m > 0)) j.erase("fracture_toughness_MPa_sqrt_m");
+  return j;
+}
+
+/// The k-th beam's specimen: the calibration's specimen (radii, packing, its seed + k) at the beam's size.
+SpecimenSpec beam_spec(const SpecimenSpec& specimen, const Beam& beam, int k) {
+  SpecimenSpec s = specimen;
+  s.height_m = beam.depth_m;
+  s.width_m = beam.length_m;
+  s.seed += static_cast<std::uint64_t>(k);
+  return s;
+}
+
+/// The beams' packings (one per calibration packing), compacted once.
+std::vector<SpecimenSource> beam_sources(const SceneCommon& common, const Beam& beam, int packings,
+                                         ProgressTarget progress) {
+  SceneCommon beams = common;
+  beams.specimen = beam_spec(common.specimen, beam, 0);
+  progress.prefix += "beam ";
+  return start_specimen_sources(beams, "calibrate", packings, progress).sources;
+}
 
 class CalibrateKind final : public SceneKind {
  public:
   bool writes_checkpoints() const override { return true; }
-  void read(ObjectReader& root, const SceneCommon&) override {
+  void read(ObjectReader& root, const SceneCommon& common) override {
     auto& c = spec_;
     ObjectReader cal = root.get_object("calibration");
     if (auto targets = cal.find_object("targets")) {
@@ -109,6 +161,26 @@ class CalibrateKind final : public SceneKind {
       targets->finish();
     }
     c = read_fields(cal, calibration_fields(), c);
+    if (auto t = cal.find_object("toughness")) {
+      beam_ = read_fields(*t, beam_fields(), Beam{});
+      ToughnessSpec test;
+      test.quasi_static_check = false;  // per candidate too dear: checked on the calibrated glass's own scene
+      ToughnessCalibration tc{read_fields(*t, toughness_fields(), test), beam_.local_damping};
+      if (tc.test.quasi_static_check)
+        throw InputError(t->path() + ".quasi_static_check", "true",
+                         "false (not run per candidate: run the toughness scene with the calibrated glass)");
+      t->finish();
+      if (common.specimen_file)
+        throw InputError(t->path(), "a toughness test", "a specimen from a genesis (not specimen.file): the beams are "
+                                                           "built from the specimen's packing parameters");
+      with_path(t->path(), [&] { check_toughness_spec(tc.test, beam_spec(common.specimen, beam_, 0)); });
+      c.toughness = tc;
+    }
+    if (c.targets.fracture_toughness_pa_sqrt_m > 0 && !c.toughness)
+      throw InputError("calibration.targets.fracture_toughness_MPa_sqrt_m",
+                       fmt::format("{}", units::pa_to_mpa(c.targets.fracture_toughness_pa_sqrt_m)),
+                       "a calibration.toughness test to measure it on");
+    check_calibration_start(c, common.material);
     output_ = read_material_output(cal, "calibrated");
     cal.finish();
     LoadingSpec load;
@@ -126,40 +198,57 @@ class CalibrateKind final : public SceneKind {
 
   SceneOutcome run(const SceneCommon& common, const SceneRun& run) override {
     StartedSources started = start_specimen_sources(common, "calibrate", spec_.packings, progress_target(run.options));
-    return calibrate_from(common, run, started.sources, std::move(started.summary), {});
+    return calibrate_from(common, run, started.sources, std::move(started.summary), {}, beams(common, run));
   }
 
   /// The specimens are built again (a genesis or a specimen file is deterministic); the checkpoint holds the
   /// summary's head and the evaluations.
   SceneOutcome resume(const SceneCommon& common, const SceneRun& run, const Checkpoint& c) override {
     StartedSources started = start_specimen_sources(common, "calibrate", spec_.packings, progress_target(run.options));
-    return calibrate_from(common, run, started.sources, c.summary, deserialize_evaluations(c.run));
+    return calibrate_from(common, run, started.sources, c.summary, deserialize_evaluations(c.run), beams(common, run));
   }
 
  private:
   CalibrationSpec spec_;
+  Beam beam_;
   MaterialOutput output_;
+
+  std::vector<SpecimenSource> beams(const SceneCommon& common, const SceneRun& run) const {
+    if (!spec_.toughness) return {};
+    return beam_sources(common, beam_, spec_.packings, progress_target(run.options));
+  }
 
   /// Runs (or, with `known` from a checkpoint, continues) the calibration. With checkpoints a checkpoint is
   /// written after every evaluation (an evaluation is the unit of work that cannot be cut short).
   SceneOutcome calibrate_from(const SceneCommon& common, const SceneRun& run, const std::vector<SpecimenSource>& sources,
-                              Json summary, const std::vector<CalibrationEvaluation>& known) const {
+                              Json summary, const std::vector<CalibrationEvaluation>& known,
+                              const std::vector<SpecimenSource>& beams) const {
     const Simulation& specimen = sources.front().disks();
     const fs::path& out = run.options.out;
     const int checkpoint_every = run.options.checkpoint_every;
     const auto start = std::chrono::steady_clock::now();
     std::vector<CalibrationEvaluation> done;
-    std::string log = csv_line({"evaluation", "effective_modulus_GPa", "stiffness_ratio", "tensile_strength_MPa",
-                                "cohesion_MPa", "youngs_modulus_GPa", "poissons_ratio", "macro_tensile_strength_MPa",
-                                "macro_compressive_strength_MPa", "max_error_percent", "wall_time_s"});
+    const bool toughness = spec_.toughness.has_value();
+    std::vector<std::string> header{"evaluation", "effective_modulus_GPa", "stiffness_ratio", "tensile_strength_MPa",
+                                    "cohesion_MPa", "youngs_modulus_GPa", "poissons_ratio", "macro_tensile_strength_MPa",
+                                    "macro_compressive_strength_MPa", "max_error_percent", "wall_time_s"};
+    if (toughness)  // the toughness's columns after the four's (a log without them reads as before)
+      header.insert(header.end(), {"fracture_energy_J_per_m2", "macro_fracture_toughness_MPa_sqrt_m",
+                                   "toughness_error_percent"});
+    std::string log = csv_line(header);
     const CalibrationResult r = calibrate(sources, common.material, spec_, [&](const CalibrationEvaluation& e) {
       const CalibratedParams m = calibrated_params(e.material);
-      log += csv_line({std::to_string(e.index), csv_number(units::pa_to_gpa(m.contact_modulus_pa)),
+      std::vector<std::string> row{std::to_string(e.index), csv_number(units::pa_to_gpa(m.contact_modulus_pa)),
                        csv_number(m.stiffness_ratio), csv_number(units::pa_to_mpa(m.tensile_strength_pa)),
                        csv_number(units::pa_to_mpa(m.cohesion_pa)), csv_number(units::pa_to_gpa(e.macro.youngs_modulus_pa)),
                        csv_number(e.macro.poissons_ratio), csv_number(units::pa_to_mpa(e.macro.tensile_strength_pa)),
                        csv_number(units::pa_to_mpa(e.macro.compressive_strength_pa)), csv_number(100 * e.max_relative_error),
-                       csv_number(e.wall_time_s)});
+                       csv_number(e.wall_time_s)};
+      if (toughness)
+        row.insert(row.end(), {csv_number(m.fracture_energy_j_per_m2),
+                               csv_number(units::pa_to_mpa(e.macro.fracture_toughness_pa_sqrt_m)),
+                               csv_number(100 * e.toughness_error)});
+      log += csv_line(row);
       write_file_atomically(out / "calibration_log.csv", log);
       done.push_back(e);
       if (run.options.checkpoints())
@@ -171,9 +260,13 @@ class CalibrateKind final : public SceneKind {
                                units::pa_to_mpa(m.tensile_strength_pa), units::pa_to_mpa(m.cohesion_pa),
                                units::pa_to_gpa(e.macro.youngs_modulus_pa), e.macro.poissons_ratio,
                                units::pa_to_mpa(e.macro.tensile_strength_pa), units::pa_to_mpa(e.macro.compressive_strength_pa),
-                               100 * e.max_relative_error, e.wall_time_s, e.from_checkpoint ? ", from the checkpoint" : "")
-                << std::flush;
-    }, known);
+                               100 * e.max_relative_error, e.wall_time_s, e.from_checkpoint ? ", from the checkpoint" : "");
+      if (toughness)
+        std::cout << fmt::format("evaluation {}: G_f {:.3g} J/m^2 -> K_IC {:.3f} MPa sqrt(m) (error {:.1f} %)\n", e.index,
+                                 m.fracture_energy_j_per_m2, units::pa_to_mpa(e.macro.fracture_toughness_pa_sqrt_m),
+                                 100 * e.toughness_error);
+      std::cout << std::flush;
+    }, known, beams);
     Material calibrated = r.material;
     calibrated.name = output_.name;
     const auto& t = spec_.targets;
@@ -188,8 +281,16 @@ class CalibrateKind final : public SceneKind {
                                          summary["specimen"]["seed"].get<std::int64_t>() +
                                              static_cast<std::int64_t>(sources.size()) - 1)
                            : std::string());
+    std::string described = description;
+    if (toughness && t.fracture_toughness_pa_sqrt_m > 0)
+      described.insert(described.size() - 1,
+                       fmt::format(", and on K_IC {:.3f} MPa sqrt(m) (error {:.1f} %, tolerance {:.0f} %) of a notched beam "
+                                   "W = {:.2f} mm, a/W = {:.2f} (seeds as the specimen's)",
+                                   units::pa_to_mpa(t.fracture_toughness_pa_sqrt_m), 100 * r.toughness_error,
+                                   100 * spec_.toughness_tolerance, units::m_to_mm(beam_.depth_m),
+                                   spec_.toughness->test.notch_depth_m / beam_.depth_m));
     const Json material = library_material_json(calibrated, "Flat-joint DEM material calibrated by kerf-dem",
-                                                description, "kerf-dem calibrate (see description)");
+                                                described, "kerf-dem calibrate (see description)");
     write_material_output(output_, material, out, summary);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     summary["results"] = Json{{"converged", r.converged},
@@ -198,6 +299,7 @@ class CalibrateKind final : public SceneKind {
                               {"targets", macro_json(t)},
                               {"achieved", macro_json(r.macro)},
                               {"calibrated_material", material}};
+    if (toughness) summary["results"]["toughness_error_percent"] = 100 * r.toughness_error;
     summary["n_particles"] = specimen.particles().size();
     summary["wall_time_s"] = wall;
     write_summary(run.options, run.doc, summary);
@@ -219,7 +321,14 @@ namespace kerf::dem::kinds {
 
 std::string calibrate_keys_markdown() {
   return fields_markdown(calibration_fields()) + fields_markdown(material_output_fields(), {"calibrated", false}, false) +
-         "| `targets` | - | an object | seed 000 Table 2 | the macro-properties to meet (`calibration.targets`) |\n";
+         "| `targets` | - | an object | seed 000 Table 2 | the macro-properties to meet (`calibration.targets`) |\n"
+         "| `toughness` | - | an object | none | the fifth test, K_IC on a notched beam (`calibration.toughness`) |\n";
+}
+
+std::string calibrate_toughness_keys_markdown() {
+  ToughnessSpec test;
+  test.quasi_static_check = false;
+  return fields_markdown(beam_fields(), Beam{}) + fields_markdown(toughness_fields(), test, false);
 }
 
 std::string calibrate_targets_keys_markdown() {

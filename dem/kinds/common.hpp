@@ -159,5 +159,6 @@ namespace kerf::dem::kinds {
 /// The key tables of the kinds' own "calibration" sections (Markdown, for kerf-dem keys).
 std::string calibrate_keys_markdown();
 std::string calibrate_targets_keys_markdown();
+std::string calibrate_toughness_keys_markdown();
 std::string calibrate_cut_keys_markdown();
 }  // namespace kerf::dem::kinds

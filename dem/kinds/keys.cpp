@@ -31,6 +31,8 @@ const std::vector<SceneKeySection>& sections() {
        [] { return fields_markdown(active_window_fields()); }},
       {"calibration", "calibrate", kinds::calibrate_keys_markdown},
       {"calibration.targets", "calibrate", kinds::calibrate_targets_keys_markdown},
+      {"calibration.toughness", "calibrate: the fifth test, a notched beam (its own keys, then the toughness section's)",
+       kinds::calibrate_toughness_keys_markdown},
       {"calibration", "calibrate_cut", kinds::calibrate_cut_keys_markdown},
       {"toughness", "toughness: the notched beam in three-point bending", [] { return fields_markdown(toughness_fields()); }},
       {"output", "every kind", [] { return fields_markdown(output_fields()); }},

@@ -80,8 +80,10 @@ bool same_micro_parameters(const Material& a, const Material& b) {
 CalibratedParams calibrated_params(const Material& m) {
   return std::visit(
       [](const auto& c, const auto& j) {
-        return CalibratedParams{c.effective_modulus_pa, c.stiffness_ratio,          j.bond.effective_modulus_pa,
-                                j.bond.stiffness_ratio, j.bond.tensile_strength_pa, j.bond.cohesion_pa};
+        CalibratedParams p{c.effective_modulus_pa, c.stiffness_ratio,          j.bond.effective_modulus_pa,
+                           j.bond.stiffness_ratio, j.bond.tensile_strength_pa, j.bond.cohesion_pa};
+        if constexpr (requires { j.fracture_energy_j_per_m2; }) p.fracture_energy_j_per_m2 = j.fracture_energy_j_per_m2;
+        return p;
       },
       m.contact, m.joint);
 }

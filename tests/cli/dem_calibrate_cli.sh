@@ -29,4 +29,34 @@ python3 -c 'import json, sys; s = json.load(open(sys.argv[1])); s["specimen"] = 
   "$scene" "$work/spec/specimen.json" "$work/from_file.json" || fail "scene with specimen.file"
 expect_input_error "calibration.packings = 2: expected 1 with specimen.file" run "$work/from_file.json" \
   --set calibration.packings=2 --out "$work/x"
+# The fifth target (issue 37): bad input named before any genesis; a tiny five-target calibration killed and
+# resumed ends as one never interrupted, its log with the toughness's columns.
+tscene="$src/data/scenes/dem_calibrate_toughness.json"
+python3 -c 'import json, sys; s = json.load(open(sys.argv[1])); del s["calibration"]["toughness"]; json.dump(s, open(sys.argv[2], "w"))' \
+  "$tscene" "$work/no_beam.json" || fail "scene without a toughness test"
+expect_input_error "calibration.targets.fracture_toughness_MPa_sqrt_m = 0.77: expected a calibration.toughness test" \
+  run "$work/no_beam.json" --out "$work/x"
+expect_input_error "material.fracture_energy_J_per_m2 = 0: expected a bond_model softening_flat_joint with a fracture" \
+  run "$tscene" --set material.fracture_energy_J_per_m2=0 --out "$work/x"
+expect_input_error "calibration.toughness.notch_depth_mm = 0.6" run "$tscene" --set calibration.toughness.notch_depth_mm=0.6 \
+  --out "$work/x"
+expect_input_error "calibration.toughness.quasi_static_check = true: expected false" run "$tscene" \
+  --set calibration.toughness.quasi_static_check=true --out "$work/x"
+five=(--set specimen.width_mm=0.16 --set specimen.height_mm=0.32 --set specimen.growth_steps=2000
+      --set specimen.relax_steps=500 --set specimen.radius_min_um=7.5 --set specimen.radius_max_um=10
+      --set loading.speed_m_per_s=0.2 --set calibration.packings=1 --set calibration.max_evaluations=3
+      --set calibration.tolerance_percent=15 --set calibration.toughness_tolerance_percent=50
+      --set calibration.toughness.beam_depth_mm=0.2 --set calibration.toughness.beam_length_mm=0.86
+      --set calibration.toughness.notch_depth_mm=0.08 --set calibration.toughness.roller_radius_mm=0.03
+      --set calibration.toughness.speed_m_per_s=0.1 --set calibration.material_name=tiny_sfj --threads 1)
+"$bin" run "$tscene" "${five[@]}" --out "$work/five" >"$work/five.out" 2>&1
+[ -s "$work/five/calibration_log.csv" ] || fail "five-target calibration: $(cat "$work/five.out")"
+head -1 "$work/five/calibration_log.csv" | grep -q "fracture_energy_J_per_m2,macro_fracture_toughness_MPa_sqrt_m" ||
+  fail "the log lacks the toughness's columns: $(head -1 "$work/five/calibration_log.csv")"
+grep -q "K_IC" "$work/five.out" || fail "no K_IC in the evaluation lines: $(cat "$work/five.out")"
+# The start (the steady cut's glass with G_f = 7 J/m^2 on smaller disks) is far too strong: a second evaluation.
+[ "$(wc -l < "$work/five/calibration_log.csv")" -ge 3 ] || fail "expected at least two evaluations (to kill between)"
+expect_kill_resume_equal "$work/five" "$work/five_kill" "tiny_sfj.json" run "$tscene" "${five[@]}" --checkpoint-every 1
+cmp -s <(cut -d, -f1-10,12- "$work/five/calibration_log.csv") <(cut -d, -f1-10,12- "$work/five_kill/calibration_log.csv") ||
+  fail "resumed five-target log differs: $(diff "$work/five/calibration_log.csv" "$work/five_kill/calibration_log.csv")"
 echo "dem_calibrate_cli: ok"

@@ -51,6 +51,7 @@ bool same_micro_parameters(const Material& a, const Material& b);
 struct CalibratedParams {
   double contact_modulus_pa, contact_stiffness_ratio;
   double bond_modulus_pa, stiffness_ratio, tensile_strength_pa, cohesion_pa;
+  double fracture_energy_j_per_m2 = 0;  ///< of a softening joint; 0 for a law without one
 };
 CalibratedParams calibrated_params(const Material& m);
 
