@@ -43,8 +43,8 @@ const FieldTable<Beam>& beam_fields() {
       number_field("beam_length_mm", units::kMm, Range::positive(),
                    "the beam's length (at least 4.2 W: span 4 W and the overhangs)", &Beam::length_m),
       optional_number_field("local_damping", units::kNone, Range::closed(0.0, 1.0),
-                            "the beam's local damping (a light one quietens the roller's ringing)", &Beam::local_damping,
-                            "the material's")};
+                            "the beam's local damping (a light one quietens the roller's ringing)",
+                            &Beam::local_damping, "the material's")};
   return table;
 }
 
@@ -65,13 +65,15 @@ const FieldTable<TargetsFile>& targets_file_fields() {
 const FieldTable<CalibrationSpec>& calibration_fields() {
   static const FieldTable<CalibrationSpec> table{
       number_field("tolerance_percent", units::kPercent, Range::open(0.0, 100.0),
-                   "largest relative error of each of E, nu, sigma_t, sigma_c for convergence", &CalibrationSpec::tolerance),
+                   "largest relative error of each of E, nu, sigma_t, sigma_c for convergence",
+                   &CalibrationSpec::tolerance),
       number_field("toughness_tolerance_percent", units::kPercent, Range::open(0.0, 100.0),
                    "largest relative error of K_IC for convergence (with a toughness target)",
                    &CalibrationSpec::toughness_tolerance),
       int_field("max_evaluations", 1, 1000, "DEM evaluations (one tension and one compression test each)",
                 &CalibrationSpec::max_evaluations),
-      choice_field("method", method_names(), "root finder (kerf/dem/procedures/calibration.hpp)", &CalibrationSpec::method),
+      choice_field("method", method_names(), "root finder (kerf/dem/procedures/calibration.hpp)",
+                   &CalibrationSpec::method),
       int_field("packings", 1, 64,
                 "packings each candidate is evaluated on (seeds specimen.seed + 0..N-1); their mean is calibrated",
                 &CalibrationSpec::packings),
@@ -98,8 +100,8 @@ const FieldTable<MacroProperties>& target_fields() {
                    &MacroProperties::poissons_ratio),
       number_field("tensile_strength_MPa", units::kMPa, Range::positive(), "tensile strength sigma_t",
                    &MacroProperties::tensile_strength_pa),
-      number_field("compressive_strength_MPa", units::kMPa, Range::positive(), "unconfined compressive strength sigma_c",
-                   &MacroProperties::compressive_strength_pa),
+      number_field("compressive_strength_MPa", units::kMPa, Range::positive(),
+                   "unconfined compressive strength sigma_c", &MacroProperties::compressive_strength_pa),
       number_field("fracture_toughness_MPa_sqrt_m", kMPaSqrtM, Range::non_negative(),
                    "fracture toughness K_IC of the calibration.toughness test (0: none)",
                    &MacroProperties::fracture_toughness_pa_sqrt_m)};
@@ -171,8 +173,9 @@ class CalibrateKind final : public SceneKind {
                          "false (not run per candidate: run the toughness scene with the calibrated glass)");
       t->finish();
       if (common.specimen_file)
-        throw InputError(t->path(), "a toughness test", "a specimen from a genesis (not specimen.file): the beams are "
-                                                           "built from the specimen's packing parameters");
+        throw InputError(t->path(), "a toughness test",
+                         "a specimen from a genesis (not specimen.file): the beams are "
+                         "built from the specimen's packing parameters");
       with_path(t->path(), [&] { check_toughness_spec(tc.test, beam_spec(common.specimen, beam_, 0)); });
       c.toughness = tc;
     }
@@ -220,8 +223,9 @@ class CalibrateKind final : public SceneKind {
 
   /// Runs (or, with `known` from a checkpoint, continues) the calibration. With checkpoints a checkpoint is
   /// written after every evaluation (an evaluation is the unit of work that cannot be cut short).
-  SceneOutcome calibrate_from(const SceneCommon& common, const SceneRun& run, const std::vector<SpecimenSource>& sources,
-                              Json summary, const std::vector<CalibrationEvaluation>& known,
+  SceneOutcome calibrate_from(const SceneCommon& common, const SceneRun& run,
+                              const std::vector<SpecimenSource>& sources, Json summary,
+                              const std::vector<CalibrationEvaluation>& known,
                               const std::vector<SpecimenSource>& beams) const {
     const Simulation& specimen = sources.front().disks();
     const fs::path& out = run.options.out;
@@ -229,44 +233,68 @@ class CalibrateKind final : public SceneKind {
     const auto start = std::chrono::steady_clock::now();
     std::vector<CalibrationEvaluation> done;
     const bool toughness = spec_.toughness.has_value();
-    std::vector<std::string> header{"evaluation", "effective_modulus_GPa", "stiffness_ratio", "tensile_strength_MPa",
-                                    "cohesion_MPa", "youngs_modulus_GPa", "poissons_ratio", "macro_tensile_strength_MPa",
-                                    "macro_compressive_strength_MPa", "max_error_percent", "wall_time_s"};
+    std::vector<std::string> header{"evaluation",
+                                    "effective_modulus_GPa",
+                                    "stiffness_ratio",
+                                    "tensile_strength_MPa",
+                                    "cohesion_MPa",
+                                    "youngs_modulus_GPa",
+                                    "poissons_ratio",
+                                    "macro_tensile_strength_MPa",
+                                    "macro_compressive_strength_MPa",
+                                    "max_error_percent",
+                                    "wall_time_s"};
     if (toughness)  // the toughness's columns after the four's (a log without them reads as before)
-      header.insert(header.end(), {"fracture_energy_J_per_m2", "macro_fracture_toughness_MPa_sqrt_m",
-                                   "toughness_error_percent"});
+      header.insert(header.end(),
+                    {"fracture_energy_J_per_m2", "macro_fracture_toughness_MPa_sqrt_m", "toughness_error_percent"});
     std::string log = csv_line(header);
-    const CalibrationResult r = calibrate(sources, common.material, spec_, [&](const CalibrationEvaluation& e) {
-      const CalibratedParams m = calibrated_params(e.material);
-      std::vector<std::string> row{std::to_string(e.index), csv_number(units::pa_to_gpa(m.contact_modulus_pa)),
-                       csv_number(m.stiffness_ratio), csv_number(units::pa_to_mpa(m.tensile_strength_pa)),
-                       csv_number(units::pa_to_mpa(m.cohesion_pa)), csv_number(units::pa_to_gpa(e.macro.youngs_modulus_pa)),
-                       csv_number(e.macro.poissons_ratio), csv_number(units::pa_to_mpa(e.macro.tensile_strength_pa)),
-                       csv_number(units::pa_to_mpa(e.macro.compressive_strength_pa)), csv_number(100 * e.max_relative_error),
-                       csv_number(e.wall_time_s)};
-      if (toughness)
-        row.insert(row.end(), {csv_number(m.fracture_energy_j_per_m2),
-                               csv_number(units::pa_to_mpa(e.macro.fracture_toughness_pa_sqrt_m)),
-                               csv_number(100 * e.toughness_error)});
-      log += csv_line(row);
-      write_file_atomically(out / "calibration_log.csv", log);
-      done.push_back(e);
-      if (run.options.checkpoints())
-        write_checkpoint(out, {run.doc, summary, {}, static_cast<int>(done.size()), checkpoint_every, run.scene_dir,
-                               std::string(), serialize_evaluations(done), run.options.provenance});
-      std::cout << fmt::format("evaluation {}: E* {:.2f} GPa, kappa {:.3f}, sigma_c {:.1f} MPa, c {:.1f} MPa -> E {:.2f} GPa, "
-                               "nu {:.3f}, sigma_t {:.1f} MPa, sigma_C {:.1f} MPa (max error {:.1f} %, {:.0f} s{})\n",
-                               e.index, units::pa_to_gpa(m.contact_modulus_pa), m.stiffness_ratio,
-                               units::pa_to_mpa(m.tensile_strength_pa), units::pa_to_mpa(m.cohesion_pa),
-                               units::pa_to_gpa(e.macro.youngs_modulus_pa), e.macro.poissons_ratio,
-                               units::pa_to_mpa(e.macro.tensile_strength_pa), units::pa_to_mpa(e.macro.compressive_strength_pa),
-                               100 * e.max_relative_error, e.wall_time_s, e.from_checkpoint ? ", from the checkpoint" : "");
-      if (toughness)
-        std::cout << fmt::format("evaluation {}: G_f {:.3g} J/m^2 -> K_IC {:.3f} MPa sqrt(m) (error {:.1f} %)\n", e.index,
-                                 m.fracture_energy_j_per_m2, units::pa_to_mpa(e.macro.fracture_toughness_pa_sqrt_m),
-                                 100 * e.toughness_error);
-      std::cout << std::flush;
-    }, known, beams);
+    const CalibrationResult r = calibrate(
+        sources, common.material, spec_,
+        [&](const CalibrationEvaluation& e) {
+          const CalibratedParams m = calibrated_params(e.material);
+          std::vector<std::string> row{std::to_string(e.index),
+                                       csv_number(units::pa_to_gpa(m.contact_modulus_pa)),
+                                       csv_number(m.stiffness_ratio),
+                                       csv_number(units::pa_to_mpa(m.tensile_strength_pa)),
+                                       csv_number(units::pa_to_mpa(m.cohesion_pa)),
+                                       csv_number(units::pa_to_gpa(e.macro.youngs_modulus_pa)),
+                                       csv_number(e.macro.poissons_ratio),
+                                       csv_number(units::pa_to_mpa(e.macro.tensile_strength_pa)),
+                                       csv_number(units::pa_to_mpa(e.macro.compressive_strength_pa)),
+                                       csv_number(100 * e.max_relative_error),
+                                       csv_number(e.wall_time_s)};
+          if (toughness)
+            row.insert(row.end(), {csv_number(m.fracture_energy_j_per_m2),
+                                   csv_number(units::pa_to_mpa(e.macro.fracture_toughness_pa_sqrt_m)),
+                                   csv_number(100 * e.toughness_error)});
+          log += csv_line(row);
+          write_file_atomically(out / "calibration_log.csv", log);
+          done.push_back(e);
+          if (run.options.checkpoints())
+            write_checkpoint(out, {run.doc,
+                                   summary,
+                                   {},
+                                   static_cast<int>(done.size()),
+                                   checkpoint_every,
+                                   run.scene_dir,
+                                   std::string(),
+                                   serialize_evaluations(done),
+                                   run.options.provenance});
+          std::cout << fmt::format(
+              "evaluation {}: E* {:.2f} GPa, kappa {:.3f}, sigma_c {:.1f} MPa, c {:.1f} MPa -> E {:.2f} GPa, "
+              "nu {:.3f}, sigma_t {:.1f} MPa, sigma_C {:.1f} MPa (max error {:.1f} %, {:.0f} s{})\n",
+              e.index, units::pa_to_gpa(m.contact_modulus_pa), m.stiffness_ratio,
+              units::pa_to_mpa(m.tensile_strength_pa), units::pa_to_mpa(m.cohesion_pa),
+              units::pa_to_gpa(e.macro.youngs_modulus_pa), e.macro.poissons_ratio,
+              units::pa_to_mpa(e.macro.tensile_strength_pa), units::pa_to_mpa(e.macro.compressive_strength_pa),
+              100 * e.max_relative_error, e.wall_time_s, e.from_checkpoint ? ", from the checkpoint" : "");
+          if (toughness)
+            std::cout << fmt::format("evaluation {}: G_f {:.3g} J/m^2 -> K_IC {:.3f} MPa sqrt(m) (error {:.1f} %)\n",
+                                     e.index, m.fracture_energy_j_per_m2,
+                                     units::pa_to_mpa(e.macro.fracture_toughness_pa_sqrt_m), 100 * e.toughness_error);
+          std::cout << std::flush;
+        },
+        known, beams);
     Material calibrated = r.material;
     calibrated.name = output_.name;
     const auto& t = spec_.targets;
@@ -283,14 +311,15 @@ class CalibrateKind final : public SceneKind {
                            : std::string());
     std::string described = description;
     if (toughness && t.fracture_toughness_pa_sqrt_m > 0)
-      described.insert(described.size() - 1,
-                       fmt::format(", and on K_IC {:.3f} MPa sqrt(m) (error {:.1f} %, tolerance {:.0f} %) of a notched beam "
-                                   "W = {:.2f} mm, a/W = {:.2f} (seeds as the specimen's)",
-                                   units::pa_to_mpa(t.fracture_toughness_pa_sqrt_m), 100 * r.toughness_error,
-                                   100 * spec_.toughness_tolerance, units::m_to_mm(beam_.depth_m),
-                                   spec_.toughness->test.notch_depth_m / beam_.depth_m));
-    const Json material = library_material_json(calibrated, "Flat-joint DEM material calibrated by kerf-dem",
-                                                described, "kerf-dem calibrate (see description)");
+      described.insert(
+          described.size() - 1,
+          fmt::format(", and on K_IC {:.3f} MPa sqrt(m) (error {:.1f} %, tolerance {:.0f} %) of a notched beam "
+                      "W = {:.2f} mm, a/W = {:.2f} (seeds as the specimen's)",
+                      units::pa_to_mpa(t.fracture_toughness_pa_sqrt_m), 100 * r.toughness_error,
+                      100 * spec_.toughness_tolerance, units::m_to_mm(beam_.depth_m),
+                      spec_.toughness->test.notch_depth_m / beam_.depth_m));
+    const Json material = library_material_json(calibrated, "Flat-joint DEM material calibrated by kerf-dem", described,
+                                                "kerf-dem calibrate (see description)");
     write_material_output(output_, material, out, summary);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     summary["results"] = Json{{"converged", r.converged},
@@ -320,7 +349,8 @@ std::unique_ptr<SceneKind> make_calibrate_kind() { return std::make_unique<Calib
 namespace kerf::dem::kinds {
 
 std::string calibrate_keys_markdown() {
-  return fields_markdown(calibration_fields()) + fields_markdown(material_output_fields(), {"calibrated", false}, false) +
+  return fields_markdown(calibration_fields()) +
+         fields_markdown(material_output_fields(), {"calibrated", false}, false) +
          "| `targets` | - | an object | seed 000 Table 2 | the macro-properties to meet (`calibration.targets`) |\n"
          "| `toughness` | - | an object | none | the fifth test, K_IC on a notched beam (`calibration.toughness`) |\n";
 }

@@ -2,6 +2,10 @@
 // iteration on the remaining 2-D problem (see the header).
 #include "kerf/dem/procedures/calibration.hpp"
 
+#include <fmt/format.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_multiroots.h>
+
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -15,12 +19,8 @@
 #include <tuple>
 #include <utility>
 
-#include <fmt/format.h>
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_multiroots.h>
-
-#include "kerf/dem/procedures/specimen.hpp"
 #include "../engine/serial.hpp"
+#include "kerf/dem/procedures/specimen.hpp"
 #include "kerf/error.hpp"
 
 namespace kerf::dem {
@@ -47,7 +47,8 @@ MacroProperties mean_macro_properties(std::span<const SpecimenSource> sources, c
   return {sum.youngs_modulus_pa / n, sum.poissons_ratio / n, sum.tensile_strength_pa / n, sum.compressive_strength_pa / n};
 }
 
-double mean_fracture_toughness(std::span<const SpecimenSource> beams, const Material& m, const ToughnessCalibration& t) {
+double mean_fracture_toughness(std::span<const SpecimenSource> beams, const Material& m,
+                               const ToughnessCalibration& t) {
   if (beams.empty()) throw ModelError("calibrate", "no beam to run the toughness test on");
   Material beam_material = m;
   if (t.local_damping) beam_material.local_damping = *t.local_damping;
@@ -83,11 +84,13 @@ struct Context {
   /// What the best evaluation minimises: the four's largest error, or with a toughness target the largest
   /// error over its tolerance of the five.
   double score(const CalibrationEvaluation& e) const {
-    return toughness_target() ? std::max(e.max_relative_error / spec->tolerance, e.toughness_error / spec->toughness_tolerance)
-                              : e.max_relative_error;
+    return toughness_target()
+               ? std::max(e.max_relative_error / spec->tolerance, e.toughness_error / spec->toughness_tolerance)
+               : e.max_relative_error;
   }
   bool converged(const CalibrationEvaluation& e) const {
-    return e.max_relative_error <= spec->tolerance && (!toughness_target() || e.toughness_error <= spec->toughness_tolerance);
+    return e.max_relative_error <= spec->tolerance &&
+           (!toughness_target() || e.toughness_error <= spec->toughness_tolerance);
   }
 };
 
@@ -95,8 +98,10 @@ struct Context {
 std::optional<double> fracture_energy(const Material& m) {
   return std::visit(
       [](const auto& j) -> std::optional<double> {
-        if constexpr (requires { j.fracture_energy_j_per_m2; }) return j.fracture_energy_j_per_m2;
-        else return std::nullopt;
+        if constexpr (requires { j.fracture_energy_j_per_m2; })
+          return j.fracture_energy_j_per_m2;
+        else
+          return std::nullopt;
       },
       m.joint);
 }
@@ -131,10 +136,12 @@ MacroProperties evaluate(Context& ctx, const Material& proposed) {
   } else {
     const auto start = std::chrono::steady_clock::now();
     e.macro = mean_macro_properties(ctx.sources, m, ctx.spec->tension, ctx.spec->compression);
-    if (ctx.spec->toughness) e.macro.fracture_toughness_pa_sqrt_m = mean_fracture_toughness(ctx.beams, m, *ctx.spec->toughness);
+    if (ctx.spec->toughness)
+      e.macro.fracture_toughness_pa_sqrt_m = mean_fracture_toughness(ctx.beams, m, *ctx.spec->toughness);
     e.max_relative_error = max_relative_error(e.macro, ctx.spec->targets);
     if (ctx.toughness_target())
-      e.toughness_error = std::abs(e.macro.fracture_toughness_pa_sqrt_m / ctx.spec->targets.fracture_toughness_pa_sqrt_m - 1);
+      e.toughness_error =
+          std::abs(e.macro.fracture_toughness_pa_sqrt_m / ctx.spec->targets.fracture_toughness_pa_sqrt_m - 1);
     e.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
   e.index = static_cast<int>(ctx.result.log.size());
@@ -217,8 +224,8 @@ Material material_at(const Context& ctx, const Vars& x) {
           contact.stiffness_ratio = joint.bond.stiffness_ratio =
               std::exp(std::clamp(x[kKappa], std::log(kKappaMin), std::log(kKappaMax)));
         if (ctx.spec->free_cohesion)
-          joint.bond.cohesion_pa =
-              std::exp(std::clamp(x[kRatio], std::log(kRatioMin), std::log(kRatioMax))) * joint.bond.tensile_strength_pa;
+          joint.bond.cohesion_pa = std::exp(std::clamp(x[kRatio], std::log(kRatioMin), std::log(kRatioMax))) *
+                                   joint.bond.tensile_strength_pa;
         if constexpr (requires { joint.fracture_energy_j_per_m2; })
           if (ctx.spec->free_fracture_energy)
             joint.fracture_energy_j_per_m2 =
@@ -283,7 +290,8 @@ Vars trend_slopes(const Context& ctx) {
       const Vars dx{std::log(mb.stiffness_ratio / ma.stiffness_ratio),
                     std::log((mb.cohesion_pa / mb.tensile_strength_pa) / (ma.cohesion_pa / ma.tensile_strength_pa)),
                     have[kLambda] ? 0.0 : std::log(lambda_of(log[b].material) / lambda_of(log[a].material))};
-      const Vars dy{std::log(pb.poissons_ratio / pa.poissons_ratio), yb[kRatio] - ya[kRatio], yb[kLambda] - ya[kLambda]};
+      const Vars dy{std::log(pb.poissons_ratio / pa.poissons_ratio), yb[kRatio] - ya[kRatio],
+                    yb[kLambda] - ya[kLambda]};
       for (std::size_t v = 0; v < kVars; ++v) {
         if (have[v] || !(std::abs(dx[v]) > kSecantMinStep)) continue;
         slope[v] = std::clamp(dy[v] / dx[v], kMinSlopes[v], kSlopeMax);

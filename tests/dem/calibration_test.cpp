@@ -11,11 +11,10 @@
 #include <string_view>
 #include <vector>
 
-#include "quick_specimen.hpp"
-
 #include "kerf/dem/procedures/specimen.hpp"
 #include "kerf/dem/procedures/toughness.hpp"
 #include "kerf/error.hpp"
+#include "quick_specimen.hpp"
 
 using namespace kerf::dem;
 using Catch::Matchers::Contains;
@@ -313,7 +312,8 @@ TEST_CASE("calibration: a free fracture energy needs a softening joint with one 
   CHECK_THROWS_WITH(calibrate(lab, Material{}, spec, {}, {}, beams), Contains("material.fracture_energy_J_per_m2"));
   CHECK_THROWS_WITH(calibrate(lab, softening_glass(0.0), spec, {}, {}, beams), Contains("fracture_energy_J_per_m2"));
   spec.targets.fracture_toughness_pa_sqrt_m = 0;
-  CHECK_THROWS_WITH(calibrate(lab, softening_glass(2.0), spec, {}, {}, beams), Contains("fracture_toughness_MPa_sqrt_m"));
+  CHECK_THROWS_WITH(calibrate(lab, softening_glass(2.0), spec, {}, {}, beams),
+                    Contains("fracture_toughness_MPa_sqrt_m"));
   spec.targets.fracture_toughness_pa_sqrt_m = 0.77e6;
   CHECK_THROWS_AS(calibrate(lab, softening_glass(2.0), spec), kerf::ModelError);  // no beams
 }

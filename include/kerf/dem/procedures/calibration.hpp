@@ -42,11 +42,11 @@
 #include <string_view>
 #include <vector>
 
-#include "kerf/dem/procedures/lab_test.hpp"
-#include "kerf/dem/procedures/toughness.hpp"
-#include "kerf/dem/laws/material.hpp"
-#include "kerf/dem/procedures/specimen.hpp"
 #include "kerf/dem/engine/simulation.hpp"
+#include "kerf/dem/laws/material.hpp"
+#include "kerf/dem/procedures/lab_test.hpp"
+#include "kerf/dem/procedures/specimen.hpp"
+#include "kerf/dem/procedures/toughness.hpp"
 
 namespace kerf::dem {
 
