@@ -1,0 +1,75 @@
+#!/usr/bin/env python3
+"""Steady cuts of two glasses on the same packings (issue 41 item 4): what one model choice changes in a cut.
+
+    python3 bench/paired_glasses.py BASE.csv OTHER.csv [--domain default] [--depth 0.1]
+
+BASE and OTHER are records of `kerf-dem study` (data/studies/results/*.csv with the seed-000 study's columns:
+domain, surface, depth_of_cut_mm, seed, main_force_N, thrust_force_N, ...), e.g. seed000_steady.csv and
+seed000_softening_pairs.csv. Cuts pair by (domain, surface, depth, seed): a packing does not depend on the material.
+Per surface: each glass's mean over the paired packings, and the paired ratio OTHER / BASE (the mean of the per-packing
+ratios, Student t on n - 1 degrees of freedom). Then each glass's groove effect (grooved / regular, Fieller's
+interval as in bench/seed000_trends.py) and its change (delta method), against the experiments' 0.152 at 0.1 mm.
+"""
+import argparse
+import math
+import pathlib
+import statistics
+import sys
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+import seed000_trends as st  # noqa: E402
+
+QUANTITIES = [("main_force_N", "main force (N/mm)"), ("thrust_force_N", "thrust force (N/mm)"),
+              ("cracks_subsurface_steady", "subsurface cracks"), ("contact_share_steady", "share in contact")]
+
+
+def paired(base, other, key, quantity):
+    """Seeds both records have for this condition, and their values."""
+    b, o = base.get(key, {}), other.get(key, {})
+    seeds = sorted(set(b) & set(o))
+    value = (lambda r: st.per_width(r, quantity[:-8])) if quantity.endswith("_force_N") else (lambda r: r[quantity])
+    return seeds, [value(b[s]) for s in seeds], [value(o[s]) for s in seeds]
+
+
+def paired_ratio(xs, ys):
+    """Mean of y / x over the pairs with its 95 % interval (Student t on n - 1)."""
+    return st.mean_of([y / x for x, y in zip(xs, ys)])
+
+
+def compare(base, other, domain, depth):
+    lines = []
+    surfaces = sorted({k[1] for k in other if k[0] == domain and math.isclose(k[2], depth)})
+    for quantity, label in QUANTITIES:
+        lines.append(f"{label}:")
+        for surface in surfaces:
+            seeds, xs, ys = paired(base, other, (domain, surface, depth), quantity)
+            if not seeds:
+                continue
+            r = paired_ratio(xs, ys)
+            lines.append(f"  {surface:12s} seeds {seeds}: base {statistics.fmean(xs):.4g}, other {statistics.fmean(ys):.4g}, "
+                         f"other / base {r.value:.3f} [{r.low:.3f}, {r.high:.3f}]")
+    for quantity in ("main_force_N", "thrust_force_N"):
+        _, base_g, other_g = paired(base, other, (domain, "rectangular", depth), quantity)
+        _, base_r, other_r = paired(base, other, (domain, "regular", depth), quantity)
+        effects = {name: st.ratio(st.mean_of(g), st.mean_of(r))
+                   for name, g, r in (("base", base_g, base_r), ("other", other_g, other_r))}
+        d = st.difference(effects["other"], effects["base"])
+        lines.append(f"groove effect {quantity[:-8]} (rectangular / regular, paired packings): base "
+                     f"{effects['base'].value:.3f} [{effects['base'].low:.3f}, {effects['base'].high:.3f}], other "
+                     f"{effects['other'].value:.3f} [{effects['other'].low:.3f}, {effects['other'].high:.3f}]; "
+                     f"change {d.value:+.3f} [{d.low:+.3f}, {d.high:+.3f}]")
+    return "\n".join(lines)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("base", type=pathlib.Path)
+    ap.add_argument("other", type=pathlib.Path)
+    ap.add_argument("--domain", default="default")
+    ap.add_argument("--depth", default=0.1, type=float)
+    args = ap.parse_args()
+    print(compare(st.read_record(args.base), st.read_record(args.other), args.domain, args.depth))
+
+
+if __name__ == "__main__":
+    main()

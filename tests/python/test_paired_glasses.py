@@ -1,0 +1,42 @@
+"""bench/paired_glasses.py: cuts of two glasses paired by packing, on synthetic records with known answers."""
+import math
+import pathlib
+import sys
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "bench"))
+import paired_glasses as pg  # noqa: E402
+
+
+def record(main, thrust, factor=1.0, groove_factor=1.0):
+    """{(domain, surface, depth): {seed: row}}: regular forces main[s], grooved 0.6 main[s] x groove_factor."""
+    out = {}
+    for surface, f in (("regular", 1.0), ("rectangular", 0.6 * groove_factor)):
+        out[("default", surface, 0.1)] = {
+            s: {"main_force_N": m * f * factor, "thrust_force_N": t * f * factor, "width_mm": 1.0,
+                "cracks_subsurface_steady": 1000.0 * s, "contact_share_steady": 0.05}
+            for s, (m, t) in enumerate(zip(main, thrust), start=1)}
+    return out
+
+
+def test_a_glass_that_scales_every_force_has_that_paired_ratio_and_the_same_groove_effect():
+    base = record([0.5, 0.4, 0.45], [0.4, 0.3, 0.5])
+    other = record([0.5, 0.4, 0.45], [0.4, 0.3, 0.5], factor=1.25)
+    text = pg.compare(base, other, "default", 0.1)
+    assert "other / base 1.250 [1.250, 1.250]" in text
+    assert "change +0.000" in text
+
+
+def test_a_glass_that_halves_the_grooved_force_halves_the_groove_effect():
+    base = record([0.5, 0.4, 0.45], [0.4, 0.3, 0.5])
+    other = record([0.5, 0.4, 0.45], [0.4, 0.3, 0.5], groove_factor=0.5)
+    _, b, o = pg.paired(base, other, ("default", "rectangular", 0.1), "main_force_N")
+    assert all(math.isclose(y, 0.5 * x) for x, y in zip(b, o))
+    assert "base 0.600" in pg.compare(base, other, "default", 0.1).splitlines()[-2]
+    assert "other 0.300" in pg.compare(base, other, "default", 0.1).splitlines()[-2]
+
+
+def test_only_the_packings_both_records_have_are_paired():
+    base = record([0.5, 0.4, 0.45], [0.4, 0.3, 0.5])
+    other = record([0.5, 0.4], [0.4, 0.3])
+    seeds, b, o = pg.paired(base, other, ("default", "regular", 0.1), "main_force_N")
+    assert seeds == [1, 2] and b == o
