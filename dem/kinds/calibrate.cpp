@@ -146,6 +146,55 @@ std::vector<SpecimenSource> beam_sources(const SceneCommon& common, const Beam& 
   return start_specimen_sources(beams, "calibrate", packings, progress).sources;
 }
 
+/// calibration_log.csv's columns: the four's, then (with a toughness test) the toughness's, so that a log
+/// without them reads as before.
+std::vector<std::string> log_header(bool toughness) {
+  std::vector<std::string> h{"evaluation",        "effective_modulus_GPa",      "stiffness_ratio",
+                             "tensile_strength_MPa", "cohesion_MPa",            "youngs_modulus_GPa",
+                             "poissons_ratio",    "macro_tensile_strength_MPa", "macro_compressive_strength_MPa",
+                             "max_error_percent", "wall_time_s"};
+  if (toughness)
+    h.insert(h.end(), {"fracture_energy_J_per_m2", "macro_fracture_toughness_MPa_sqrt_m", "toughness_error_percent"});
+  return h;
+}
+
+std::vector<std::string> log_row(const CalibrationEvaluation& e, bool toughness) {
+  const CalibratedParams m = calibrated_params(e.material);
+  std::vector<std::string> row{std::to_string(e.index),
+                               csv_number(units::pa_to_gpa(m.contact_modulus_pa)),
+                               csv_number(m.stiffness_ratio),
+                               csv_number(units::pa_to_mpa(m.tensile_strength_pa)),
+                               csv_number(units::pa_to_mpa(m.cohesion_pa)),
+                               csv_number(units::pa_to_gpa(e.macro.youngs_modulus_pa)),
+                               csv_number(e.macro.poissons_ratio),
+                               csv_number(units::pa_to_mpa(e.macro.tensile_strength_pa)),
+                               csv_number(units::pa_to_mpa(e.macro.compressive_strength_pa)),
+                               csv_number(100 * e.max_relative_error),
+                               csv_number(e.wall_time_s)};
+  if (toughness)
+    row.insert(row.end(), {csv_number(m.fracture_energy_j_per_m2),
+                           csv_number(units::pa_to_mpa(e.macro.fracture_toughness_pa_sqrt_m)),
+                           csv_number(100 * e.toughness_error)});
+  return row;
+}
+
+/// One evaluation's log line(s) on stdout.
+void print_evaluation(const CalibrationEvaluation& e, bool toughness) {
+  const CalibratedParams m = calibrated_params(e.material);
+  std::cout << fmt::format(
+      "evaluation {}: E* {:.2f} GPa, kappa {:.3f}, sigma_c {:.1f} MPa, c {:.1f} MPa -> E {:.2f} GPa, "
+      "nu {:.3f}, sigma_t {:.1f} MPa, sigma_C {:.1f} MPa (max error {:.1f} %, {:.0f} s{})\n",
+      e.index, units::pa_to_gpa(m.contact_modulus_pa), m.stiffness_ratio, units::pa_to_mpa(m.tensile_strength_pa),
+      units::pa_to_mpa(m.cohesion_pa), units::pa_to_gpa(e.macro.youngs_modulus_pa), e.macro.poissons_ratio,
+      units::pa_to_mpa(e.macro.tensile_strength_pa), units::pa_to_mpa(e.macro.compressive_strength_pa),
+      100 * e.max_relative_error, e.wall_time_s, e.from_checkpoint ? ", from the checkpoint" : "");
+  if (toughness)
+    std::cout << fmt::format("evaluation {}: G_f {:.3g} J/m^2 -> K_IC {:.3f} MPa sqrt(m) (error {:.1f} %)\n", e.index,
+                             m.fracture_energy_j_per_m2, units::pa_to_mpa(e.macro.fracture_toughness_pa_sqrt_m),
+                             100 * e.toughness_error);
+  std::cout << std::flush;
+}
+
 class CalibrateKind final : public SceneKind {
  public:
   bool writes_checkpoints() const override { return true; }
@@ -221,6 +270,30 @@ class CalibrateKind final : public SceneKind {
     return beam_sources(common, beam_, spec_.packings, progress_target(run.options));
   }
 
+  /// The calibrated material's description: how it was calibrated and how close it came.
+  std::string description(const CalibrationResult& r, const Json& summary, std::size_t n_disks,
+                          std::size_t n_sources) const {
+    const auto& t = spec_.targets;
+    const std::int64_t seed = summary["specimen"]["seed"].get<std::int64_t>();
+    std::string out = fmt::format(
+        "Calibrated by kerf-dem calibrate ({} evaluations, {}converged: max error {:.2f} % against targets E {:.1f} GPa, "
+        "nu {:.3f}, sigma_t {:.1f} MPa, sigma_c {:.1f} MPa) on a {} specimen of {} disks{}.",
+        r.log.size(), r.converged ? "" : "NOT ", 100 * r.max_relative_error, units::pa_to_gpa(t.youngs_modulus_pa),
+        t.poissons_ratio, units::pa_to_mpa(t.tensile_strength_pa), units::pa_to_mpa(t.compressive_strength_pa),
+        summary["specimen"]["packing"].get<std::string>(), n_disks,
+        n_sources > 1 ? fmt::format(" (the mean over {} packings, seeds {} to {})", n_sources, seed,
+                                    seed + static_cast<std::int64_t>(n_sources) - 1)
+                      : std::string());
+    if (spec_.toughness && t.fracture_toughness_pa_sqrt_m > 0)
+      out.insert(out.size() - 1,
+                 fmt::format(", and on K_IC {:.3f} MPa sqrt(m) (error {:.1f} %, tolerance {:.0f} %) of a notched beam "
+                             "W = {:.2f} mm, a/W = {:.2f} (seeds as the specimen's)",
+                             units::pa_to_mpa(t.fracture_toughness_pa_sqrt_m), 100 * r.toughness_error,
+                             100 * spec_.toughness_tolerance, units::m_to_mm(beam_.depth_m),
+                             spec_.toughness->test.notch_depth_m / beam_.depth_m));
+    return out;
+  }
+
   /// Runs (or, with `known` from a checkpoint, continues) the calibration. With checkpoints a checkpoint is
   /// written after every evaluation (an evaluation is the unit of work that cannot be cut short).
   SceneOutcome calibrate_from(const SceneCommon& common, const SceneRun& run,
@@ -229,95 +302,24 @@ class CalibrateKind final : public SceneKind {
                               const std::vector<SpecimenSource>& beams) const {
     const Simulation& specimen = sources.front().disks();
     const fs::path& out = run.options.out;
-    const int checkpoint_every = run.options.checkpoint_every;
     const auto start = std::chrono::steady_clock::now();
     std::vector<CalibrationEvaluation> done;
     const bool toughness = spec_.toughness.has_value();
-    std::vector<std::string> header{"evaluation",
-                                    "effective_modulus_GPa",
-                                    "stiffness_ratio",
-                                    "tensile_strength_MPa",
-                                    "cohesion_MPa",
-                                    "youngs_modulus_GPa",
-                                    "poissons_ratio",
-                                    "macro_tensile_strength_MPa",
-                                    "macro_compressive_strength_MPa",
-                                    "max_error_percent",
-                                    "wall_time_s"};
-    if (toughness)  // the toughness's columns after the four's (a log without them reads as before)
-      header.insert(header.end(),
-                    {"fracture_energy_J_per_m2", "macro_fracture_toughness_MPa_sqrt_m", "toughness_error_percent"});
-    std::string log = csv_line(header);
-    const CalibrationResult r = calibrate(
-        sources, common.material, spec_,
-        [&](const CalibrationEvaluation& e) {
-          const CalibratedParams m = calibrated_params(e.material);
-          std::vector<std::string> row{std::to_string(e.index),
-                                       csv_number(units::pa_to_gpa(m.contact_modulus_pa)),
-                                       csv_number(m.stiffness_ratio),
-                                       csv_number(units::pa_to_mpa(m.tensile_strength_pa)),
-                                       csv_number(units::pa_to_mpa(m.cohesion_pa)),
-                                       csv_number(units::pa_to_gpa(e.macro.youngs_modulus_pa)),
-                                       csv_number(e.macro.poissons_ratio),
-                                       csv_number(units::pa_to_mpa(e.macro.tensile_strength_pa)),
-                                       csv_number(units::pa_to_mpa(e.macro.compressive_strength_pa)),
-                                       csv_number(100 * e.max_relative_error),
-                                       csv_number(e.wall_time_s)};
-          if (toughness)
-            row.insert(row.end(), {csv_number(m.fracture_energy_j_per_m2),
-                                   csv_number(units::pa_to_mpa(e.macro.fracture_toughness_pa_sqrt_m)),
-                                   csv_number(100 * e.toughness_error)});
-          log += csv_line(row);
-          write_file_atomically(out / "calibration_log.csv", log);
-          done.push_back(e);
-          if (run.options.checkpoints())
-            write_checkpoint(out, {run.doc,
-                                   summary,
-                                   {},
-                                   static_cast<int>(done.size()),
-                                   checkpoint_every,
-                                   run.scene_dir,
-                                   std::string(),
-                                   serialize_evaluations(done),
-                                   run.options.provenance});
-          std::cout << fmt::format(
-              "evaluation {}: E* {:.2f} GPa, kappa {:.3f}, sigma_c {:.1f} MPa, c {:.1f} MPa -> E {:.2f} GPa, "
-              "nu {:.3f}, sigma_t {:.1f} MPa, sigma_C {:.1f} MPa (max error {:.1f} %, {:.0f} s{})\n",
-              e.index, units::pa_to_gpa(m.contact_modulus_pa), m.stiffness_ratio,
-              units::pa_to_mpa(m.tensile_strength_pa), units::pa_to_mpa(m.cohesion_pa),
-              units::pa_to_gpa(e.macro.youngs_modulus_pa), e.macro.poissons_ratio,
-              units::pa_to_mpa(e.macro.tensile_strength_pa), units::pa_to_mpa(e.macro.compressive_strength_pa),
-              100 * e.max_relative_error, e.wall_time_s, e.from_checkpoint ? ", from the checkpoint" : "");
-          if (toughness)
-            std::cout << fmt::format("evaluation {}: G_f {:.3g} J/m^2 -> K_IC {:.3f} MPa sqrt(m) (error {:.1f} %)\n",
-                                     e.index, m.fracture_energy_j_per_m2,
-                                     units::pa_to_mpa(e.macro.fracture_toughness_pa_sqrt_m), 100 * e.toughness_error);
-          std::cout << std::flush;
-        },
-        known, beams);
+    std::string log = csv_line(log_header(toughness));
+    const auto on_evaluation = [&](const CalibrationEvaluation& e) {
+      log += csv_line(log_row(e, toughness));
+      write_file_atomically(out / "calibration_log.csv", log);
+      done.push_back(e);
+      if (run.options.checkpoints())
+        write_checkpoint(out, {run.doc, summary, {}, static_cast<int>(done.size()), run.options.checkpoint_every,
+                               run.scene_dir, std::string(), serialize_evaluations(done), run.options.provenance});
+      print_evaluation(e, toughness);
+    };
+    const CalibrationResult r = calibrate(sources, common.material, spec_, on_evaluation, known, beams);
     Material calibrated = r.material;
     calibrated.name = output_.name;
     const auto& t = spec_.targets;
-    const std::string description = fmt::format(
-        "Calibrated by kerf-dem calibrate ({} evaluations, {}converged: max error {:.2f} % against targets E {:.1f} GPa, "
-        "nu {:.3f}, sigma_t {:.1f} MPa, sigma_c {:.1f} MPa) on a {} specimen of {} disks{}.",
-        r.log.size(), r.converged ? "" : "NOT ", 100 * r.max_relative_error, units::pa_to_gpa(t.youngs_modulus_pa),
-        t.poissons_ratio, units::pa_to_mpa(t.tensile_strength_pa), units::pa_to_mpa(t.compressive_strength_pa),
-        summary["specimen"]["packing"].get<std::string>(), specimen.particles().size(),
-        sources.size() > 1 ? fmt::format(" (the mean over {} packings, seeds {} to {})", sources.size(),
-                                         summary["specimen"]["seed"].get<std::int64_t>(),
-                                         summary["specimen"]["seed"].get<std::int64_t>() +
-                                             static_cast<std::int64_t>(sources.size()) - 1)
-                           : std::string());
-    std::string described = description;
-    if (toughness && t.fracture_toughness_pa_sqrt_m > 0)
-      described.insert(
-          described.size() - 1,
-          fmt::format(", and on K_IC {:.3f} MPa sqrt(m) (error {:.1f} %, tolerance {:.0f} %) of a notched beam "
-                      "W = {:.2f} mm, a/W = {:.2f} (seeds as the specimen's)",
-                      units::pa_to_mpa(t.fracture_toughness_pa_sqrt_m), 100 * r.toughness_error,
-                      100 * spec_.toughness_tolerance, units::m_to_mm(beam_.depth_m),
-                      spec_.toughness->test.notch_depth_m / beam_.depth_m));
+    const std::string described = description(r, summary, specimen.particles().size(), sources.size());
     const Json material = library_material_json(calibrated, "Flat-joint DEM material calibrated by kerf-dem", described,
                                                 "kerf-dem calibrate (see description)");
     write_material_output(output_, material, out, summary);
