@@ -20,7 +20,9 @@ sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 import seed000_trends as st  # noqa: E402
 
 QUANTITIES = [("main_force_N", "main force (N/mm)"), ("thrust_force_N", "thrust force (N/mm)"),
-              ("cracks_subsurface_steady", "subsurface cracks"), ("contact_share_steady", "share in contact")]
+              ("cracks_subsurface_steady", "subsurface cracks"),
+              ("subsurface_damage_depth_steady_um", "deepest subsurface crack (um)"),
+              ("contact_share_steady", "share in contact")]
 
 
 def paired(base, other, key, quantity):

@@ -13,7 +13,8 @@ def record(main, thrust, factor=1.0, groove_factor=1.0):
     for surface, f in (("regular", 1.0), ("rectangular", 0.6 * groove_factor)):
         out[("default", surface, 0.1)] = {
             s: {"main_force_N": m * f * factor, "thrust_force_N": t * f * factor, "width_mm": 1.0,
-                "cracks_subsurface_steady": 1000.0 * s, "contact_share_steady": 0.05}
+                "cracks_subsurface_steady": 1000.0 * s, "contact_share_steady": 0.05,
+                "subsurface_damage_depth_steady_um": 300.0}
             for s, (m, t) in enumerate(zip(main, thrust), start=1)}
     return out
 
