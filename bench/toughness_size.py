@@ -153,17 +153,24 @@ def plot(rows, fit, path):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     fig, ax = plt.subplots(figsize=(6.4, 4.2))
-    colours = {}
-    for j in fit.ratios:
+    sizes = by_size(rows)
+    w_max = max(r["W"] for r in rows)
+    for i, j in enumerate(fit.ratios):
         sub = [r for r in rows if r["aW"] == j]
-        line, = ax.plot([r["W"] for r in sub], [r["K"] for r in sub], "o", alpha=0.6, label=f"beams, a/W = {j:g}")
-        colours[j] = line.get_color()
-        w = np.geomspace(0.25, 40, 200)
-        ax.plot(w, [fit.k_at(j, x) for x in w], "-", color=colours[j],
+        shift = 1.04 ** (i - (len(fit.ratios) - 1) / 2)  # side by side on the log axis
+        dots, = ax.plot([r["W"] * shift for r in sub], [r["K"] for r in sub], "o", ms=3, alpha=0.35)
+        colour = dots.get_color()
+        means = [(size, k, student_t(n - 1) * se if n > 1 else 0.0) for (jj, size), (n, k, se, _) in sizes.items()
+                 if jj == j]
+        ax.errorbar([m[0] * shift for m in means], [m[1] for m in means], yerr=[m[2] for m in means], fmt="s",
+                    color=colour, capsize=3, label=f"a/W = {j:g}: mean, 95 % interval (dots: packings)")
+        w_in = np.geomspace(0.3, w_max, 100)
+        w_out = np.geomspace(w_max, 40, 100)
+        ax.plot(w_in, [fit.k_at(j, x) for x in w_in], "-", color=colour,
                 label=f"size-effect law, a/W = {j:g} (W0 = {fit.w0(j):.2f} mm)")
+        ax.plot(w_out, [fit.k_at(j, x) for x in w_out], ":", color=colour)
     lo, hi = fit.k_inf_interval()
-    ax.axhspan(lo, min(hi, 5), color="grey", alpha=0.15, label=f"K_inf 95 % interval ({lo:.2f}-{hi:.2f})")
-    ax.axhline(fit.k_inf(), color="grey", lw=1)
+    ax.axhline(fit.k_inf(), color="grey", lw=1, label=f"K_inf {fit.k_inf():.2f} (95 % interval {lo:.2f}-{hi:.2f})")
     ax.axhline(0.77, color="k", ls="--", lw=1, label="soda-lime glass, 0.77 MPa sqrt(m)")
     ax.set_xscale("log")
     ax.set_xlabel("beam depth W (mm)")
