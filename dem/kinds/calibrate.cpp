@@ -70,7 +70,7 @@ const FieldTable<CalibrationSpec>& calibration_fields() {
       number_field("toughness_tolerance_percent", units::kPercent, Range::open(0.0, 100.0),
                    "largest relative error of K_IC for convergence (with a toughness target)",
                    &CalibrationSpec::toughness_tolerance),
-      int_field("max_evaluations", 1, 1000, "DEM evaluations (one tension and one compression test each)",
+      int_field("max_evaluations", 1, 1000, "DEM evaluations (a tension and a compression test each, and a beam with calibration.toughness)",
                 &CalibrationSpec::max_evaluations),
       choice_field("method", method_names(), "root finder (kerf/dem/procedures/calibration.hpp)",
                    &CalibrationSpec::method),
