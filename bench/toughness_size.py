@@ -36,6 +36,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+import seed000_trends as st  # noqa: E402  (Student t, means over packings)
 from seed000_trends import t as student_t  # noqa: E402  (two-sided 95 % Student t)
 
 WITHIN = 0.9  # K(W) / K_inf from which the toughness counts as size-independent
@@ -59,9 +60,8 @@ def by_size(rows):
         groups[(r["aW"], r["W"])].append(r)
     out = {}
     for key, g in sorted(groups.items()):
-        k = [r["K"] for r in g]
-        se = statistics.stdev(k) / math.sqrt(len(k)) if len(k) > 1 else float("nan")
-        out[key] = (len(k), statistics.fmean(k), se, statistics.fmean(r["G"] for r in g))
+        k = st.mean_of([r["K"] for r in g])
+        out[key] = (k.n, k.value, k.se, statistics.fmean(r["G"] for r in g))
     return out
 
 

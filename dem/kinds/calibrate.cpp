@@ -129,6 +129,14 @@ Json macro_json(const MacroProperties& m) {
   return j;
 }
 
+/// The toughness section's defaults in a calibration: the quasi-static check off (too dear per candidate; it is
+/// checked on the calibrated glass's own toughness scene).
+ToughnessSpec beam_test_defaults() {
+  ToughnessSpec test;
+  test.quasi_static_check = false;
+  return test;
+}
+
 /// The k-th beam's specimen: the calibration's specimen (radii, packing, its seed + k) at the beam's size.
 SpecimenSpec beam_spec(const SpecimenSpec& specimen, const Beam& beam, int k) {
   SpecimenSpec s = specimen;
@@ -215,9 +223,7 @@ class CalibrateKind final : public SceneKind {
     c = read_fields(cal, calibration_fields(), c);
     if (auto t = cal.find_object("toughness")) {
       beam_ = read_fields(*t, beam_fields(), Beam{});
-      ToughnessSpec test;
-      test.quasi_static_check = false;  // per candidate too dear: checked on the calibrated glass's own scene
-      ToughnessCalibration tc{read_fields(*t, toughness_fields(), test), beam_.local_damping};
+      ToughnessCalibration tc{read_fields(*t, toughness_fields(), beam_test_defaults()), beam_.local_damping};
       if (tc.test.quasi_static_check)
         throw InputError(t->path() + ".quasi_static_check", "true",
                          "false (not run per candidate: run the toughness scene with the calibrated glass)");
@@ -226,7 +232,8 @@ class CalibrateKind final : public SceneKind {
         throw InputError(t->path(), "a toughness test",
                          "a specimen from a genesis (not specimen.file): the beams are "
                          "built from the specimen's packing parameters");
-      with_path(t->path(), [&] { check_toughness_spec(tc.test, beam_spec(common.specimen, beam_, 0)); });
+      check_toughness_spec(tc.test, beam_spec(common.specimen, beam_, 0),
+                           {t->path(), t->path() + ".beam_depth_mm", t->path() + ".beam_length_mm"});
       c.toughness = tc;
     }
     if (c.targets.fracture_toughness_pa_sqrt_m > 0 && !c.toughness)
@@ -359,9 +366,7 @@ std::string calibrate_keys_markdown() {
 }
 
 std::string calibrate_toughness_keys_markdown() {
-  ToughnessSpec test;
-  test.quasi_static_check = false;
-  return fields_markdown(beam_fields(), Beam{}) + fields_markdown(toughness_fields(), test, false);
+  return fields_markdown(beam_fields(), Beam{}) + fields_markdown(toughness_fields(), beam_test_defaults(), false);
 }
 
 std::string calibrate_targets_keys_markdown() {

@@ -79,8 +79,8 @@ class ToughnessKind final : public SceneKind {
       spec_ = read_fields(*t, toughness_fields(), ToughnessSpec{});
       t->finish();
     }
-    if (!common.specimen_file) with_path("toughness", [&] { check_toughness_spec(spec_, common.specimen); });
-    else check_fields(toughness_fields(), spec_);
+    if (!common.specimen_file) check_toughness_spec(spec_, common.specimen);
+    else with_path("toughness", [&] { check_fields(toughness_fields(), spec_); });
   }
 
   void check_options(const RunOptions& options, const SceneCommon& common) const override {
@@ -108,7 +108,7 @@ class ToughnessKind final : public SceneKind {
       ProgressTarget t = target;
       if (packings > 1) t.prefix += fmt::format("packing {}: ", k + 1);
       StartedRun started = start_from_specimen(packing, "toughness", t);
-      if (common.specimen_file) with_path("toughness", [&] { check_toughness_spec(spec_, started.spec); });
+      if (common.specimen_file) check_toughness_spec(spec_, started.spec);
       if (k == 0) summary = started.summary;
       Simulation final_state(common.material, SimulationOptions{});
       const ToughnessResult r = run_one(started.specimen, spec_, "toughness", t, k == 0 ? &final_state : nullptr);

@@ -208,9 +208,8 @@ std::array<bool, kVars> free_vars(const CalibrationSpec& spec) {
   return {spec.free_stiffness_ratio, spec.free_cohesion, spec.free_fracture_energy};
 }
 
-/// lambda of a material (0 without a fracture energy).
-double lambda_of(const Material& m) {
-  const CalibratedParams j = calibrated_params(m);
+/// lambda of a material's micro-parameters (0 without a fracture energy).
+double lambda_of(const CalibratedParams& j) {
   return j.fracture_energy_j_per_m2 * j.bond_modulus_pa / (j.tensile_strength_pa * j.tensile_strength_pa);
 }
 
@@ -247,6 +246,9 @@ Vars responses(const MacroProperties& p) {
 }
 
 /// The residuals handed to GSL: f = (ln(nu / nu_target), ln R - ln R_target, ln(K/sigma_t) - ln(K/sigma_t)_target).
+/// ln(nu / nu_target) rather than ln nu - ln nu_target, and in trend_slopes ln(nu_b / nu_a), the secant ln nu_b -
+/// ln nu_a and steps from ln nu_target - ln nu: each as the two-variable solvers wrote it, so that a four-target
+/// calibration repeats the earlier ones to the bit (the last bit moves a brittle specimen's strength).
 Vars residuals(const MacroProperties& got, const MacroProperties& t) {
   const Vars y = responses(got), y_t = responses(t);
   return {std::log(got.poissons_ratio / t.poissons_ratio), y[kRatio] - y_t[kRatio], y[kLambda] - y_t[kLambda]};
@@ -255,7 +257,7 @@ Vars residuals(const MacroProperties& got, const MacroProperties& t) {
 /// The variables of an evaluated material.
 Vars vars_of(const Material& m) {
   const CalibratedParams j = calibrated_params(m);
-  const double lambda = lambda_of(m);
+  const double lambda = lambda_of(j);
   return {std::log(j.stiffness_ratio), std::log(j.cohesion_pa / j.tensile_strength_pa),
           lambda > 0 ? std::log(lambda) : 0.0};
 }
@@ -289,7 +291,7 @@ Vars trend_slopes(const Context& ctx) {
       const Vars ya = responses(pa);
       const Vars dx{std::log(mb.stiffness_ratio / ma.stiffness_ratio),
                     std::log((mb.cohesion_pa / mb.tensile_strength_pa) / (ma.cohesion_pa / ma.tensile_strength_pa)),
-                    have[kLambda] ? 0.0 : std::log(lambda_of(log[b].material) / lambda_of(log[a].material))};
+                    have[kLambda] ? 0.0 : std::log(lambda_of(mb) / lambda_of(ma))};
       const Vars dy{std::log(pb.poissons_ratio / pa.poissons_ratio), yb[kRatio] - ya[kRatio],
                     yb[kLambda] - ya[kLambda]};
       for (std::size_t v = 0; v < kVars; ++v) {
@@ -469,7 +471,7 @@ CalibrationResult calibrate(std::span<const SpecimenSource> sources, const Mater
   if (spec.toughness && beams.empty()) throw ModelError("calibrate", "a toughness test without beams to run it on");
   Context ctx{sources, beams, &spec, &on_evaluation, &known, start, {}, false, 0};
   check_calibration_start(spec, start);
-  if (spec.free_fracture_energy) ctx.ln_lambda_start = std::log(lambda_of(start));
+  if (spec.free_fracture_energy) ctx.ln_lambda_start = std::log(lambda_of(calibrated_params(start)));
   if (!spec.free_stiffness_ratio && !spec.free_cohesion && !spec.free_fracture_energy) {
     // Only the proportional corrections: repeat them until within tolerance.
     while (!ctx.done) evaluate(ctx, ctx.current);

@@ -53,30 +53,31 @@ const FieldTable<ToughnessSpec>& toughness_fields() {
   return table;
 }
 
-void check_toughness_spec(const ToughnessSpec& spec, const SpecimenSpec& specimen) {
-  check_fields(toughness_fields(), spec);
+void check_toughness_spec(const ToughnessSpec& spec, const SpecimenSpec& specimen, const ToughnessKeys& keys) {
+  with_path(keys.section, [&] { check_fields(toughness_fields(), spec); });
   const double w = specimen.height_m, a = spec.notch_depth_m;
   const double mm = units::m_to_mm(1.0);
+  const std::string notch = keys.section + ".notch_depth_mm";
   if (a >= w)
-    throw InputError("notch_depth_mm", format_value(a * mm),
-                     "a notch shorter than the beam's depth specimen.height_mm = " + format_value(w * mm) + " mm");
+    throw InputError(notch, format_value(a * mm),
+                     "a notch shorter than the beam's depth " + keys.depth + " = " + format_value(w * mm) + " mm");
   if (a < 0.1 * w || a > 0.8 * w)
-    throw InputError("notch_depth_mm", format_value(a * mm),
-                     "a / W in [0.1, 0.8] with W = specimen.height_mm = " + format_value(w * mm) + " mm");
+    throw InputError(notch, format_value(a * mm),
+                     "a / W in [0.1, 0.8] with W = " + keys.depth + " = " + format_value(w * mm) + " mm");
   if (w - a < kMinLigamentDiameters * 2 * specimen.radius_max_m)
-    throw InputError("notch_depth_mm", format_value(a * mm),
+    throw InputError(notch, format_value(a * mm),
                      "a ligament W - a of at least " + format_value(kMinLigamentDiameters) +
                          " disk diameters (2 specimen.radius_max_um)");
   const double span = kSenbSpanOverDepth * w;
   if (span <= a)  // cannot happen while a < W; kept as the relation the test rests on
-    throw InputError("specimen.height_mm", format_value(w * mm), "a span 4 W longer than the notch");
+    throw InputError(keys.depth, format_value(w * mm), "a span 4 W longer than the notch");
   const double length = span + 2 * kSenbOverhangOverDepth * w;
   if (specimen.width_m < length * (1 - 1e-9))
-    throw InputError("specimen.width_mm", format_value(specimen.width_m * mm),
+    throw InputError(keys.length, format_value(specimen.width_m * mm),
                      "a beam at least " + format_value(length * mm) + " mm long: the span S = 4 W = " +
                          format_value(span * mm) + " mm (ASTM E399) and 0.1 W beyond each support");
   if (spec.roller_radius_m >= 0.5 * w)
-    throw InputError("roller_radius_mm", format_value(spec.roller_radius_m * mm),
+    throw InputError(keys.section + ".roller_radius_mm", format_value(spec.roller_radius_m * mm),
                      "a roller radius below W / 2 = " + format_value(0.5 * w * mm) + " mm");
 }
 

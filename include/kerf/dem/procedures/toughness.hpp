@@ -54,11 +54,18 @@ struct ToughnessSpec {
 /// max_deflection_um, peak_window_um, youngs_modulus_GPa, sample_every_steps, quasi_static_check.
 const FieldTable<ToughnessSpec>& toughness_fields();
 
-/// The relations between the test and its specimen (the fields' own ranges are the table's): the notch
-/// shorter than the depth W = specimen.height_mm (a/W in [0.1, 0.8], with 4 disks of ligament at least), the
-/// span 4W longer than the notch and within the beam (specimen.width_mm at least 4.2 W), the rollers smaller
-/// than W / 2. InputError names the key ("notch_depth_mm", "specimen.width_mm").
-void check_toughness_spec(const ToughnessSpec& spec, const SpecimenSpec& specimen);
+/// The keys a message about the test names: its own section's and those that size the beam (the toughness
+/// scene's specimen; a calibration's calibration.toughness.beam_depth_mm and beam_length_mm).
+struct ToughnessKeys {
+  std::string section = "toughness";
+  std::string depth = "specimen.height_mm", length = "specimen.width_mm";
+};
+
+/// The fields' own ranges and the relations between the test and its specimen: the notch shorter than the
+/// depth W (a/W in [0.1, 0.8], with 4 disks of ligament at least), the span 4W longer than the notch and within
+/// the beam (its length at least 4.2 W), the rollers smaller than W / 2. InputError names the key as `keys`
+/// say ("toughness.notch_depth_mm", "specimen.width_mm").
+void check_toughness_spec(const ToughnessSpec& spec, const SpecimenSpec& specimen, const ToughnessKeys& keys = {});
 
 /// Srawley's geometry factor f(a/W) of the three-point-bend SENB with S = 4W (J. E. Srawley 1976, "Wide range
 /// stress intensity factor expressions for ASTM E 399 standard fracture toughness specimens", Int. J. Fracture
