@@ -6,6 +6,12 @@
 
 namespace kerf::dem {
 
+namespace {
+constexpr double per_mm2_to_per_m2(double v) { return v * 1e6; }
+constexpr double per_m2_to_per_mm2(double v) { return v * 1e-6; }
+constexpr FieldUnit kPerMm2{"per_mm2", per_mm2_to_per_m2, per_m2_to_per_mm2};
+}  // namespace
+
 const FieldTable<Material>& Material::fields() {
   static const FieldTable<Material> table{
       number_field("density_kg_per_m3", units::kSi("kg/m^3"), Range::positive(), "particle density",
@@ -14,7 +20,13 @@ const FieldTable<Material>& Material::fields() {
                    "Cundall's local damping alpha (docs/physics-dem.md section 1)", &Material::local_damping),
       number_field("viscous_damping_ratio", units::kNone, Range::closed(0.0, 1.0),
                    "critical damping ratio of the dashpots beside every contact and bond (normal and shear; 0: none)",
-                   &Material::viscous_damping_ratio)};
+                   &Material::viscous_damping_ratio),
+      number_field("flaw_length_um", units::kUm, Range::non_negative(),
+                   "length of each seeded flaw, a straight crack whose joints start broken (0: no flaws)",
+                   &Material::flaw_length_m),
+      number_field("flaw_density_per_mm2", kPerMm2, Range::non_negative(),
+                   "seeded flaws per unit area of every specimen (centres and orientations uniform at random)",
+                   &Material::flaw_density_per_m2)};
   return table;
 }
 
@@ -42,6 +54,9 @@ Material read_material(const Json& object, const std::string& path) {
   read_law(r, m.joint);
   r.ignore("description");
   r.finish();
+  if ((m.flaw_length_m > 0) != (m.flaw_density_per_m2 > 0))
+    throw InputError(r.key_path(m.flaw_length_m > 0 ? "flaw_density_per_mm2" : "flaw_length_um"), "0",
+                     "a positive value when the other flaw key is positive (both 0: no flaws)");
   return m;
 }
 
@@ -64,6 +79,10 @@ Material read_scene_material(ObjectReader& scene) {
 
 Json material_to_json(const Material& m) {
   Json j = fields_to_json(Material::fields(), m);
+  if (m.flaw_density_per_m2 <= 0) {  // a glass without flaws writes what it wrote before flaws existed
+    j.erase("flaw_length_um");
+    j.erase("flaw_density_per_mm2");
+  }
   j["name"] = m.name;
   j.update(law_to_json(m.joint));
   j.update(law_to_json(m.contact));  // the two laws' keys are distinct (material_keys_markdown's test checks it)
@@ -74,7 +93,8 @@ Json material_to_json(const Material& m) {
 
 bool same_micro_parameters(const Material& a, const Material& b) {
   return a.density_kg_per_m3 == b.density_kg_per_m3 && a.local_damping == b.local_damping &&
-         a.viscous_damping_ratio == b.viscous_damping_ratio && a.contact == b.contact && a.joint == b.joint;
+         a.viscous_damping_ratio == b.viscous_damping_ratio && a.flaw_length_m == b.flaw_length_m &&
+         a.flaw_density_per_m2 == b.flaw_density_per_m2 && a.contact == b.contact && a.joint == b.joint;
 }
 
 CalibratedParams calibrated_params(const Material& m) {

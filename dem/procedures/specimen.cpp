@@ -286,11 +286,13 @@ Simulation finish_specimen(const CompactedPacking& packing, const Material& mate
   Simulation sim = copy_at_rest(packing.disks, material);  // no joints yet, no walls
   if (spec.packing == Packing::hexagonal) {
     sim.install_bonds_within_gap(1e-6 * 0.5 * (spec.radius_min_m + spec.radius_max_m));
+    seed_flaws(sim, material, spec.seed);
     sim.initialise();
   } else {
     // 4. Joints, stress free, within the installation gap; 5. the walls are not copied; 6. relax with the
     // material's contact law (friction on) and damping.
     sim.install_bonds_within_gap(spec.installation_gap_m);
+    seed_flaws(sim, material, spec.seed);
     sim.initialise();
     sim.run(spec.relax_steps);
     if (progress) progress(report.genesis_steps + sim.step_count(), random_genesis_steps(spec));

@@ -97,6 +97,31 @@ TEST_CASE("lab test: small random specimen regression", "[lab_test]") {
   CHECK_THAT(t.youngs_modulus_pa, WithinRel(c.youngs_modulus_pa, 0.15));
 }
 
+TEST_CASE("lab test: seeded flaws weaken tension, and soften tension more than compression", "[lab_test]") {
+  // Flaws are closed cracks: tension opens them (a lower strength, and a softer specimen), compression
+  // closes them (only the flaws' frictional sliding softens it; Walsh's closed cracks). Same packing with and
+  // without flaws.
+  const SpecimenSpec spec = kerf::dem::testing::quick_random_spec(0.2e-3, 0.4e-3, 7);
+  Material flawed;
+  flawed.flaw_length_m = 60e-6;
+  flawed.flaw_density_per_m2 = 150e6;  // about a dozen flaws in the specimen
+  SpecimenReport report;
+  const Simulation intact = make_specimen(Material{}, spec, report), weak = make_specimen(flawed, spec, report);
+  LoadingSpec load;
+  load.speed_m_per_s = 0.1;
+  load.test = LabTest::tension;
+  const LabTestResult t_intact = run_lab_test(intact, load), t_weak = run_lab_test(weak, load);
+  load.test = LabTest::compression;
+  const LabTestResult c_intact = run_lab_test(intact, load), c_weak = run_lab_test(weak, load);
+  const double strength = t_weak.peak_stress_pa / t_intact.peak_stress_pa;
+  const double modulus_t = t_weak.youngs_modulus_pa / t_intact.youngs_modulus_pa;
+  const double modulus_c = c_weak.youngs_modulus_pa / c_intact.youngs_modulus_pa;
+  INFO("tensile strength x" << strength << ", modulus in tension x" << modulus_t << ", in compression x" << modulus_c);
+  CHECK(strength < 0.9);
+  CHECK(modulus_t < modulus_c);
+  CHECK(modulus_c < 1.0);
+}
+
 TEST_CASE("lab test: a loading too slow to reach max_strain within 1e9 steps is an input error", "[lab_test]") {
   // Stable at the extremes: 1e-12 m/s ran as a hang (years of steps) before.
   const Simulation sim = [] {

@@ -50,6 +50,26 @@ TEST_CASE("material: errors name the field, the value and the expectation", "[ma
   CHECK_THROWS_WITH(read_material(kerf::Json::parse(R"({"tensile_strength_MPa": -1})"), "material"),
                     "material.tensile_strength_MPa = -1: expected a non-negative value in MPa");
   CHECK_THROWS_AS(read_material(kerf::Json::parse(R"({"base": "no_such_material"})"), "material"), kerf::InputError);
+  // Seeded flaws need a length and a density: one without the other names the missing key.
+  CHECK_THROWS_WITH(read_material(kerf::Json::parse(R"({"flaw_length_um": 100})"), "material"),
+                    Contains("material.flaw_density_per_mm2 = 0"));
+  CHECK_THROWS_WITH(read_material(kerf::Json::parse(R"({"flaw_density_per_mm2": 4})"), "material"),
+                    Contains("material.flaw_length_um = 0"));
+}
+
+TEST_CASE("material: seeded flaws in SI, written only by a glass that has them", "[material]") {
+  const Material m =
+      read_material(kerf::Json::parse(R"({"flaw_length_um": 150, "flaw_density_per_mm2": 4})"), "material");
+  CHECK_THAT(m.flaw_length_m, WithinRel(150e-6, 1e-15));
+  CHECK_THAT(m.flaw_density_per_m2, WithinRel(4e6, 1e-15));
+  const kerf::Json j = material_to_json(m);
+  CHECK_THAT(j.at("flaw_length_um").get<double>(), WithinRel(150.0, 1e-15));
+  CHECK_THAT(j.at("flaw_density_per_mm2").get<double>(), WithinRel(4.0, 1e-15));
+  CHECK(same_micro_parameters(read_material(j, "material"), m));
+  CHECK_FALSE(same_micro_parameters(Material{}, m));
+  const kerf::Json plain = material_to_json(Material{});
+  CHECK_FALSE(plain.contains("flaw_length_um"));
+  CHECK_FALSE(plain.contains("flaw_density_per_mm2"));
 }
 
 TEST_CASE("material: a bundled material is the base that other keys override", "[material]") {

@@ -3,6 +3,7 @@
 #include "kerf/dem/procedures/specimen.hpp"
 
 #include <catch2/catch.hpp>
+#include <numbers>
 #include <cmath>
 #include <algorithm>
 #include <array>
@@ -176,4 +177,64 @@ TEST_CASE("specimen: save and load round trip", "[specimen]") {
   CHECK(report2.n_bonds == report.n_bonds);
   CHECK(spec2.packing == Packing::hexagonal);
   std::filesystem::remove(file);
+}
+
+namespace {
+// The length of segment f inside the box [x0, x1] x [y0, y1] (Liang-Barsky clipping).
+double length_inside(const Flaw& f, double x0, double x1, double y0, double y1) {
+  double t0 = 0, t1 = 1;
+  const double dx = f.x1_m - f.x0_m, dy = f.y1_m - f.y0_m;
+  const std::array<double, 4> p{-dx, dx, -dy, dy}, q{f.x0_m - x0, x1 - f.x0_m, f.y0_m - y0, y1 - f.y0_m};
+  for (std::size_t k = 0; k < 4; ++k) {
+    if (p[k] == 0) {
+      if (q[k] < 0) return 0;
+      continue;
+    }
+    const double t = q[k] / p[k];
+    if (p[k] < 0) t0 = std::max(t0, t);
+    else t1 = std::min(t1, t);
+  }
+  return t1 > t0 ? (t1 - t0) * std::hypot(dx, dy) : 0;
+}
+
+int broken_joints(const Simulation& sim) {
+  int n = 0;
+  for (std::size_t k = 0; k < sim.bonds().size(); ++k) n += sim.bonds().n_bonded_elements(k) == 0 ? 1 : 0;
+  return n;
+}
+}  // namespace
+
+TEST_CASE("specimen: seeded flaws cross the lattice's joints as Buffon's needle says", "[specimen]") {
+  // A line of length L thrown at random on a triangular lattice of spacing 2R crosses on average
+  // L n_b (2R) (2 / pi) joints, n_b = sqrt(3) / (2 R^2) joints per unit area: 2 sqrt(3) L / (pi R).
+  SpecimenSpec spec;
+  spec.packing = Packing::hexagonal;
+  spec.width_m = spec.height_m = 1.5e-3;
+  spec.radius_min_m = spec.radius_max_m = 10e-6;
+  Material m;
+  m.flaw_length_m = 100e-6;
+  m.flaw_density_per_m2 = 20e6;  // about 50 flaws: few cross one another
+  SpecimenReport report;
+  const Simulation intact = make_specimen(Material{}, spec, report);
+  REQUIRE(broken_joints(intact) == 0);
+  Simulation sim = make_specimen(m, spec, report);
+  const auto& p = sim.particles();
+  const auto [x0, x1] = std::minmax_element(p.x.begin(), p.x.end());
+  const auto [y0, y1] = std::minmax_element(p.y.begin(), p.y.end());
+  Simulation again = make_specimen(Material{}, spec, report);
+  const std::vector<Flaw> flaws = seed_flaws(again, m, spec.seed);  // the same draw as the genesis's
+  double inside_m = 0;
+  for (const Flaw& f : flaws) inside_m += length_inside(f, *x0, *x1, *y0, *y1);
+  const double expected = 2 * std::sqrt(3.0) * inside_m / (std::numbers::pi * 10e-6);
+  INFO("flaws " << flaws.size() << ", expected " << expected << " broken joints");
+  REQUIRE(flaws.size() > 30);
+  CHECK_THAT(static_cast<double>(broken_joints(sim)), WithinRel(expected, 0.05));
+  CHECK(broken_joints(again) == broken_joints(sim));
+  // Each packing its own flaws: another seed, another draw.
+  Simulation other = make_specimen(Material{}, spec, report);
+  const std::vector<Flaw> others = seed_flaws(other, m, spec.seed + 1);
+  CHECK(others.front().x0_m != flaws.front().x0_m);
+  // Their density is the material's: the expected count over the widened box.
+  const double area = (*x1 - *x0 + m.flaw_length_m) * (*y1 - *y0 + m.flaw_length_m);
+  CHECK(std::abs(static_cast<double>(flaws.size()) - m.flaw_density_per_m2 * area) <= 1.0);
 }

@@ -27,6 +27,11 @@ struct Material {
   /// Critical damping ratio beta of a dashpot beside each contact's and bond's normal and shear springs,
   /// c = 2 beta sqrt(m_eff k) (PFC's dashpots; LAMMPS BPM's damping). 0: none.
   double viscous_damping_ratio = 0;
+  /// Seeded flaws (docs/physics-dem.md section 6; dem/procedures/flaws.cpp): straight cracks of this length, at
+  /// this number per unit area, placed at random in every specimen the genesis builds; the joints they cross
+  /// start broken (closed cracks: compression and friction, no tension). 0: none.
+  double flaw_length_m = 0;
+  double flaw_density_per_m2 = 0;
 
   /// The material's own keys (density, damping); the laws' keys are in their own tables.
   static const FieldTable<Material>& fields();

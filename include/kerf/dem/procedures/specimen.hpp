@@ -20,6 +20,7 @@
 #include <functional>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "kerf/dem/engine/simulation.hpp"
 #include "kerf/field_table.hpp"
@@ -136,6 +137,20 @@ Simulation with_material(const Simulation& specimen, const Material& material);
 /// `material`'s joint must be the source's.
 Simulation copy_disks_and_joints(const Simulation& source, const Material& material, bool source_types,
                                  const std::vector<std::uint8_t>& keep = {});
+
+/// A seeded flaw: a straight crack from (x0, y0) to (x1, y1).
+struct Flaw {
+  double x0_m, y0_m, x1_m, y1_m;
+};
+
+/// Seeds `material`'s flaws (flaw_length_m, flaw_density_per_m2) into a jointed specimen (docs/physics-dem.md
+/// section 6): density x area straight cracks, centres uniform in the disks' centre box widened by half a flaw
+/// on each side, orientations uniform, drawn from `seed` (a stream apart from the packing's); every element of
+/// each active joint whose centre line crosses a flaw starts broken, with no shear force (a closed crack). The
+/// genesis (finish_specimen) calls it with the specimen's seed, before the relaxation; a saved specimen keeps the
+/// joint states it was saved with (its flaws, if any) and load_specimen seeds none. Returns the flaws drawn (none
+/// when the material has none).
+std::vector<Flaw> seed_flaws(Simulation& sim, const Material& material, std::uint64_t seed);
 
 /// Saves particles, joints with their element states, the spec and the report as JSON
 /// (format "kerf-dem-specimen", version 1; documented in docs/dem.md).
