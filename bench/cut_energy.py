@@ -1,0 +1,113 @@
+#!/usr/bin/env python3
+"""Where a steady cut's work goes, from its own outputs (issue 41 item 4): the energy its broken joints took,
+against the tool's work.
+
+    python3 bench/cut_energy.py DIR [DIR ...] [--csv OUT.csv]
+
+Each DIR is a cut's output folder (summary.json, cracks.csv) or a study's (DIR/items/*/). Per cut, over the steady
+part only (the travel the summary's means cover, and the cracks of the stretch it machined, steady_machined_from_x_mm
+to steady_machined_to_x_mm):
+
+* the tool's work W = main force x steady travel (the force is per the cut's width; the work too);
+* the energy of the broken joints, an estimate per broken element of the flat joint (k_n = Ebar* / L, k_s = k_n /
+  kappa, L the joint's length, here 2 x the mean radius x the genesis's radius scale; A = l_e x thickness): the
+  elastic energy of the element at its strength under a uniform stress, sigma_t^2 A L / (2 Ebar*) for a tensile
+  break and c^2 A L kappa / (2 Ebar*) for a shear break, plus G_f A for a softening joint (its fracture energy). Not
+  a bound: a bent element breaks at its edge with less energy stored, and the shear stored at a tensile break is
+  left out.
+
+Per condition (glass, window in mm ahead/behind/below, surface, depth): the energy's share of W with its 95 % interval over packings (Student
+t on n - 1), split into the chip (above the cut line) and the subsurface.
+"""
+import argparse
+import csv
+import json
+import math
+import pathlib
+import sys
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+import seed000_trends as st  # noqa: E402
+
+def element_energy_j(material, mode, length_m, joint_length_m, thickness_m):
+    """The estimate above for one broken element [J]."""
+    e_bar = material["bond_effective_modulus_GPa"] * 1e9
+    area = length_m * thickness_m
+    if mode == "tension":
+        stress, compliance = material["tensile_strength_MPa"] * 1e6, joint_length_m / e_bar
+    else:
+        stress = material["cohesion_MPa"] * 1e6
+        compliance = joint_length_m * material["bond_stiffness_ratio"] / e_bar
+    return 0.5 * stress * stress * area * compliance + material.get("fracture_energy_J_per_m2", 0.0) * area
+
+
+def cut_energy(folder):
+    """One cut: its condition, the tool's work and the broken joints' energy (chip, subsurface) over the steady part."""
+    summary = json.loads((folder / "summary.json").read_text())
+    results, material, spec = summary["results"], summary["material"], summary["specimen"]
+    scene = summary.get("study_item", {}).get("scene", {})
+    travel_m = (results["steady_to_travel_mm"] - results["steady_from_travel_mm"]) * 1e-3
+    lo, hi = sorted((results["steady_machined_from_x_mm"], results["steady_machined_to_x_mm"]))
+    thickness_m = spec["thickness_mm"] * 1e-3
+    joint_m = (spec["radius_min_um"] + spec["radius_max_um"]) * 1e-6 * spec.get("radius_scale", 1.0)
+    energy = {"chip": 0.0, "subsurface": 0.0}
+    with open(folder / "cracks.csv", newline="") as f:
+        for row in csv.DictReader(f):
+            if lo <= float(row["x_mm"]) <= hi and row["place"] in energy:
+                energy[row["place"]] += element_energy_j(material, row["mode"], float(row["length_um"]) * 1e-6,
+                                                         joint_m, thickness_m)
+    cut = summary["cut"]
+    depth_mm = cut["cut"]["depth_of_cut_mm"]
+    window = cut.get("active_window", {})
+    # The domain by its size in mm (ahead, behind, below; the seed-000 study's large window is 1.4/0.7/1.0 mm at both
+    # depths), or "whole" when every disk is active.
+    domain = "/".join(f"{window[k] * depth_mm:.2g}" for k in ("ahead_depths", "behind_depths", "below_depths")) + \
+        " mm" if window.get("enabled") else "whole"
+    key = (material.get("name", "custom"), domain,
+           {"none": "regular"}.get(cut["grooves"]["shape"], cut["grooves"]["shape"]), depth_mm)
+    work_j = results["main_force_N"] * travel_m
+    return key, scene.get("specimen", {}).get("seed", spec["seed"]), work_j, energy
+
+
+def folders(paths):
+    for p in map(pathlib.Path, paths):
+        if (p / "summary.json").is_file() and (p / "cracks.csv").is_file():
+            yield p
+        for item in sorted((p / "items").glob("*")):
+            if (item / "summary.json").is_file() and (item / "cracks.csv").is_file():
+                yield item
+
+
+def table(cuts):
+    """Per condition: n, the share of the work (total, chip, subsurface) as st.Estimate."""
+    by = {}
+    for key, _, work, energy in cuts:
+        if work > 0:
+            by.setdefault(key, []).append((sum(energy.values()) / work, energy["chip"] / work,
+                                           energy["subsurface"] / work))
+    return {k: [st.mean_of([r[i] for r in rows]) for i in range(3)] for k, rows in sorted(by.items())}
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("dirs", nargs="+")
+    ap.add_argument("--csv", help="also write one row per cut here")
+    a = ap.parse_args(argv)
+    cuts = [cut_energy(f) for f in folders(a.dirs)]
+    if a.csv:
+        with open(a.csv, "w", newline="") as f:
+            w = csv.writer(f)
+            w.writerow(["glass", "domain", "surface", "depth_of_cut_mm", "seed", "tool_work_J", "chip_joints_J",
+                        "subsurface_joints_J"])
+            for key, seed, work, e in cuts:
+                w.writerow([*key, seed, work, e["chip"], e["subsurface"]])
+    print("share of the tool's work taken by the broken joints (steady part; mean over packings [95 % interval]):")
+    for key, (total, chip, sub) in table(cuts).items():
+        def fmt(e):
+            return f"{e.value:.3f}" + (f" [{e.low:.3f}, {e.high:.3f}]" if e.resolved() else "")
+        print(f"  {' '.join(map(str, key))}: n {total.n}, all {fmt(total)}, chip {fmt(chip)}, subsurface {fmt(sub)}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

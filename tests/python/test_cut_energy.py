@@ -1,0 +1,60 @@
+"""bench/cut_energy.py: the broken joints' energy against the tool's work, on a synthetic cut with a known answer."""
+import json
+import math
+import pathlib
+import sys
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "bench"))
+import cut_energy as ce  # noqa: E402
+
+MATERIAL = {"name": "glass", "bond_effective_modulus_GPa": 100.0, "bond_stiffness_ratio": 2.0,
+            "tensile_strength_MPa": 100.0, "cohesion_MPa": 200.0}
+
+
+def write_cut(folder, main_force_n=0.5, grooves="none", seed=1, material=MATERIAL):
+    """A cut whose steady part covers 1 mm of travel and x in [2, 3] mm; cracks inside and outside it."""
+    folder.mkdir(parents=True)
+    summary = {"material": material,
+               "specimen": {"thickness_mm": 1.0, "radius_min_um": 10.0, "radius_max_um": 10.0, "radius_scale": 1.0,
+                            "seed": seed},
+               "cut": {"cut": {"depth_of_cut_mm": 0.1}, "grooves": {"shape": grooves},
+                       "active_window": {"enabled": True, "ahead_depths": 7, "behind_depths": 3, "below_depths": 4}},
+               "results": {"main_force_N": main_force_n, "steady_from_travel_mm": 0.5, "steady_to_travel_mm": 1.5,
+                           "steady_machined_from_x_mm": 3.0, "steady_machined_to_x_mm": 2.0}}
+    (folder / "summary.json").write_text(json.dumps(summary))
+    rows = ["time_s,x_mm,y_mm,orientation_deg,length_um,mode,bond,element,place"]
+    rows += [f"0,{2.0 + 0.1 * k},0.5,0,10,tension,{k},0,subsurface" for k in range(10)]  # inside
+    rows += ["0,2.5,0.95,0,10,shear,20,0,chip", "0,1.0,0.5,0,10,tension,21,0,subsurface",  # the second outside
+             "0,3.5,0.95,0,10,tension,22,0,chip"]  # outside
+    (folder / "cracks.csv").write_text("\n".join(rows) + "\n")
+
+
+def test_the_energy_of_each_broken_element_and_its_share_of_the_work(tmp_path):
+    write_cut(tmp_path / "a")
+    key, seed, work, energy = ce.cut_energy(tmp_path / "a")
+    assert key == ("glass", "0.7/0.3/0.4 mm", "regular", 0.1) and seed == 1
+    assert math.isclose(work, 0.5e-3)  # 0.5 N over 1 mm
+    area, joint = 10e-6 * 1e-3, 20e-6
+    tension = 0.5 * (100e6) ** 2 * area * joint / 100e9  # sigma_t^2 A L / (2 Ebar*)
+    shear = 0.5 * (200e6) ** 2 * area * joint * 2.0 / 100e9  # c^2 A L kappa / (2 Ebar*)
+    assert math.isclose(energy["subsurface"], 10 * tension)
+    assert math.isclose(energy["chip"], shear)
+
+
+def test_a_softening_joint_adds_its_fracture_energy_per_element_area(tmp_path):
+    write_cut(tmp_path / "a", material={**MATERIAL, "fracture_energy_J_per_m2": 5.0})
+    write_cut(tmp_path / "b")
+    _, _, _, soft = ce.cut_energy(tmp_path / "a")
+    _, _, _, plain = ce.cut_energy(tmp_path / "b")
+    assert math.isclose(soft["subsurface"] - plain["subsurface"], 10 * 5.0 * 10e-6 * 1e-3)
+
+
+def test_shares_are_means_over_packings_with_intervals(tmp_path):
+    for seed, force in ((1, 0.5), (2, 0.25)):
+        write_cut(tmp_path / "study" / "items" / f"condition_1_seed_{seed}", main_force_n=force, seed=seed)
+    cuts = [ce.cut_energy(f) for f in ce.folders([tmp_path / "study"])]
+    (total, chip, sub), = ce.table(cuts).values()
+    one = (cuts[0][3]["chip"] + cuts[0][3]["subsurface"]) / 0.5e-3
+    assert total.n == 2 and math.isclose(total.value, 1.5 * one)  # shares one and two: mean 1.5
+    assert total.low < total.value < total.high
+    assert math.isclose(chip.value + sub.value, total.value)
