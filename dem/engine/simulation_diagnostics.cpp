@@ -58,6 +58,26 @@ double Simulation::strain_energy() const {
   return e;
 }
 
+double Simulation::wall_contact_energy() const {
+  double e = 0;
+  const double t = opt_.thickness_m;
+  std::visit(
+      [&](const auto& law) {
+        for (std::size_t k = 0; k < wall_contacts_.size(); ++k) {
+          const Wall& w = walls_[static_cast<std::size_t>(wall_contacts_[k][0])];
+          const auto u = static_cast<std::size_t>(wall_contacts_[k][1]);
+          if (!w.enabled) continue;
+          const auto q = closest_on_segment(w, p_.x[u], p_.y[u]);
+          const double overlap = p_.radius[u] - std::hypot(p_.x[u] - q[0], p_.y[u] - q[1]);
+          // As wall_loop: the disk against a wall of zero radius, with the wall's own friction (which the
+          // energy does not depend on).
+          if (overlap > 0) e += contact_energy(law, p_.radius[u], 0.0, t, overlap, wall_shear_[k]);
+        }
+      },
+      material_.contact);
+  return e;
+}
+
 int Simulation::n_touching_pairs() const {
   int n = 0;
   for (const auto& c : pairs_) {

@@ -114,6 +114,16 @@ Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& d
                        {"to_travel_mm", std::round(units::m_to_mm(w.to_m) * 1e9) / 1e9},
                        {"main_force_N", w.main_force_n}, {"thrust_force_N", w.thrust_force_n}, {"samples", w.n_samples}});
   summary["results"]["travel_windows"] = windows;
+  if (res.energy_booked) {
+    // Where the tool's work went over the steady part (CutEnergy), per the cut's width like the forces' work.
+    const CutEnergy& e = res.energy;
+    for (const auto& [key, value] : {std::pair{"energy_tool_work_steady_J", e.tool_work_j},
+                                     {"energy_dissipated_steady_J", e.dissipated_j},
+                                     {"energy_left_kinetic_steady_J", e.left_kinetic_j},
+                                     {"energy_left_strain_steady_J", e.left_strain_j},
+                                     {"energy_stored_change_steady_J", e.stored_change_j}})
+      summary["results"][key] = value;
+  }
   summary["n_particles"] = res.n_particles;
   summary["steps"] = res.steps;
   summary["wall_time_s"] = res.wall_time_s;

@@ -649,12 +649,36 @@ std::size_t CutRun::n_cracks() const {
   return window_ ? window_->cracks().size() + sim_.cracks().size() : sim_.cracks().size();
 }
 
+CutEnergy cut_energy_between(const CutEnergyBooks& from, const CutEnergyBooks& to) {
+  CutEnergy e;
+  e.tool_work_j = to.tool_work_j - from.tool_work_j;
+  e.left_kinetic_j = to.left_kinetic_j - from.left_kinetic_j;
+  e.left_strain_j = to.left_strain_j - from.left_strain_j;
+  e.stored_change_j = (to.kinetic_j + to.strain_j) - (from.kinetic_j + from.strain_j);
+  e.dissipated_j = e.tool_work_j - e.left_kinetic_j - e.left_strain_j - e.stored_change_j;
+  return e;
+}
+
+CutEnergyBooks CutRun::books_now() const {
+  CutEnergyBooks b = books_;
+  b.kinetic_j = sim_.kinetic_energy();
+  b.strain_j = sim_.strain_energy() + sim_.wall_contact_energy();
+  return b;
+}
+
 bool CutRun::advance() {
   if (finished_) return false;
   const auto start = std::chrono::steady_clock::now();
   if (window_) {
     const double x_edge = edge()[0];
-    if (window_->due(x_edge)) sim_ = window_->build(&sim_, x_edge);
+    if (window_->due(x_edge)) {
+      // What the disks leaving the integration take with them (less what joining disks bring): the books.
+      const CutEnergyBooks before = books_now();
+      sim_ = window_->build(&sim_, x_edge);
+      const CutEnergyBooks after = books_now();
+      books_.left_kinetic_j += before.kinetic_j - after.kinetic_j;
+      books_.left_strain_j += before.strain_j - after.strain_j;
+    }
   }
   res_.particle_steps += static_cast<double>(sim_.particles().size()) * params_.sample_every_steps;
   double fx = 0, fy = 0;
@@ -669,6 +693,12 @@ bool CutRun::advance() {
   const auto f = tool_force_components(fx / params_.sample_every_steps, fy / params_.sample_every_steps);
   const double elapsed = sim_.time() - t0_, travel = params_.speed_m_per_s * elapsed;
   res_.samples.push_back({travel, elapsed, f[0], f[1]});
+  // The tool moves at -speed in x; the disks push it with fx each step: it does fx speed dt of work on them.
+  books_.tool_work_j += fx * params_.speed_m_per_s * sim_.time_step();
+  if (books_kept_ && !steady_booked_ && travel >= params_.entry_fraction * params_.length_m) {
+    books_steady_start_ = books_now();
+    steady_booked_ = true;
+  }
   res_.steps = sim_.step_count();
   res_.wall_time_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (travel >= params_.length_m) finish();
@@ -688,14 +718,18 @@ void CutRun::finish() {
     res_.window = {window_->rebuilds(), window_->largest_window(), window_->chips()};
   }
   res_.cracks = count_cut_cracks(cracks(), res_.y_cut_m, res_.steady_machined_x_m);
+  res_.energy_booked = books_kept_ && steady_booked_;
+  if (res_.energy_booked) res_.energy = cut_energy_between(books_steady_start_, books_now());
 }
 
 namespace {
 
-constexpr std::string_view kCutMagic = "KERFCUT8";  // 3: tool_friction_coefficient, 4: rake_face_height_m,
+constexpr std::string_view kCutMagic = "KERFCUT9";  // 3: tool_friction_coefficient, 4: rake_face_height_m,
                                                     // 5: the active window, 6: its absorbing layer,
-                                                    // 7: the held rows' layer, 8: the parameters by key
-constexpr std::string_view kCutMagicListed = "KERFCUT7";  // still read: the parameters listed by hand
+                                                    // 7: the held rows' layer, 8: the parameters by key,
+                                                    // 9: the energy books
+constexpr std::string_view kCutMagicNoBooks = "KERFCUT8";  // still read: no energy books (the run keeps none)
+constexpr std::string_view kCutMagicListed = "KERFCUT7";   // still read: the parameters listed by hand
 
 /// A KERFCUT7 state's reader: CutRun::state_fields reads that format's order with it (frozen, as the format was).
 struct Cut7In {
@@ -746,14 +780,23 @@ std::string CutRun::serialize() const {
   serial::Out io{out};
   state_fields(*this, io);
   io(sim_.serialize(), window_ ? window_->serialize() : std::string());
+  book_fields(*this, io);
   return out;
+}
+
+template <class Self, class Io>
+void CutRun::book_fields(Self& run, Io& io) {
+  io(run.books_kept_, run.steady_booked_);
+  for (auto* b : {&run.books_, &run.books_steady_start_})
+    io(b->tool_work_j, b->left_kinetic_j, b->left_strain_j, b->kinetic_j, b->strain_j);
 }
 
 CutRun CutRun::deserialize(std::string_view bytes) {
   std::size_t version = 0;
-  serial::In io = serial::open_tagged(bytes, {kCutMagic, kCutMagicListed}, "cut checkpoint", &version);
+  serial::In io =
+      serial::open_tagged(bytes, {kCutMagic, kCutMagicNoBooks, kCutMagicListed}, "cut checkpoint", &version);
   CutRun run;
-  if (version == 1) {
+  if (version == 2) {
     Cut7In listed{io};
     state_fields(run, listed);
   } else {
@@ -762,6 +805,10 @@ CutRun CutRun::deserialize(std::string_view bytes) {
   }
   std::string state, window;
   io(state, window);
+  if (version == 0)
+    book_fields(run, io);
+  else
+    run.books_kept_ = false;  // an older kerf kept no books: the finished run reports none
   io.expect_end("cut checkpoint");
   validate_cut_params(run.params_);
   run.sim_ = Simulation::deserialize(state);

@@ -14,6 +14,7 @@
 #include "quick_specimen.hpp"
 
 using namespace kerf::dem;
+using Catch::Matchers::WithinRel;
 
 namespace {
 
@@ -142,7 +143,55 @@ TEST_CASE("cut window: restored halfway, a windowed cut goes on to the bit", "[c
     for (std::size_t k = 0; k < whole.cracks().size(); ++k) CHECK(whole.cracks()[k].bond == restored.cracks()[k].bond);
     CHECK(whole.window()->workpiece().particles().x == restored.window()->workpiece().particles().x);
     CHECK(a.particle_steps == b.particle_steps);
+    // The energy books go on as well.
+    REQUIRE(a.energy_booked);
+    REQUIRE(b.energy_booked);
+    CHECK(a.energy.tool_work_j == b.energy.tool_work_j);
+    CHECK(a.energy.dissipated_j == b.energy.dissipated_j);
+    CHECK(a.energy.left_kinetic_j == b.energy.left_kinetic_j);
+    CHECK(a.energy.left_strain_j == b.energy.left_strain_j);
   }
+}
+
+TEST_CASE("cut window: a cut resumed from a checkpoint without energy books (KERFCUT8) goes on without them",
+          "[cut_window]") {
+  const Simulation specimen = quick_workpiece_specimen(0.6e-3, 0.25e-3, 7);
+  CutParams p = windowed(3, 2, 2, 2);
+  p.length_m = 0.1e-3;
+  CutRun whole(specimen, p), half(specimen, p);
+  while (whole.advance()) {}
+  for (std::size_t k = 0; k < whole.result().samples.size() / 2; ++k) half.advance();
+  // A KERFCUT8 state is a KERFCUT9 one without the books at its end: two flags and two books of five numbers.
+  std::string old = half.serialize();
+  old.resize(old.size() - (2 + 10 * sizeof(double)));
+  old.replace(0, 8, "KERFCUT8");
+  CutRun restored = CutRun::deserialize(old);
+  while (restored.advance()) {}
+  CHECK(restored.result().samples.back().main_force_n == whole.result().samples.back().main_force_n);
+  CHECK(whole.result().energy_booked);
+  CHECK_FALSE(restored.result().energy_booked);
+}
+
+TEST_CASE("cut window: the energy books balance, and what leaves the window is what its disks carried", "[cut_window]") {
+  // The tool's work is the mean force times the steady travel (the same samples, to their first one); the disks
+  // that leave take kinetic energy away (joining ones bring none: at rest); what stays dissipates
+  // (friction, broken joints) and is positive.
+  const Simulation specimen = quick_workpiece_specimen(0.6e-3, 0.25e-3, 7);
+  CutParams p = windowed(3, 2, 2, 2);
+  p.length_m = 0.3e-3;
+  p.entry_fraction = 0.2;
+  CutRun run(specimen, p);
+  while (run.advance()) {}
+  const CutResult& r = run.result();
+  REQUIRE(r.energy_booked);
+  const double travel = r.steady_to_travel_m - r.steady_from_travel_m;
+  const double one_sample = p.speed_m_per_s * p.sample_every_steps * r.time_step_s;
+  CHECK_THAT(r.energy.tool_work_j, WithinRel(r.main_force_n * travel, 2 * one_sample / travel + 1e-9));
+  CHECK(r.energy.left_kinetic_j > 0);
+  CHECK(r.energy.dissipated_j > 0);
+  const CutEnergy& e = r.energy;
+  CHECK_THAT(e.dissipated_j + e.left_kinetic_j + e.left_strain_j + e.stored_change_j,
+             WithinRel(e.tool_work_j, 1e-12));
 }
 
 TEST_CASE("cut window: contacts between two held disks are left out when asked", "[cut_window]") {

@@ -192,8 +192,12 @@ class Simulation {
   /// Sum of contact forces on the particles of prescribed-velocity group g [N].
   std::array<double, 2> group_force(std::uint8_t g) const;
   double kinetic_energy() const;
-  /// Elastic energy of bonded elements plus unjointed contacts (normal part), for energy checks [J].
+  /// Elastic energy of bonded elements plus unjointed disk-disk contacts (normal and shear springs), for energy
+  /// checks [J].
   double strain_energy() const;
+  /// Elastic energy of the disk-wall contacts (normal and shear springs) [J]: what a pressing tool or platen
+  /// stores in the disks it touches.
+  double wall_contact_energy() const;
   /// Number of active joints and of touching unjointed contacts, per particle (mean coordination number).
   double coordination_number() const;
   int n_contacts_of(std::size_t i) const;

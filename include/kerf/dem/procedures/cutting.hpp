@@ -157,6 +157,25 @@ struct TravelWindow {
   int n_samples = 0;
 };
 
+/// Where the tool's work goes, booked as a cut runs (issue 41 item 4). The integrated disks (the whole workpiece,
+/// or the active window) gain the tool's work and lose it three ways: dissipated among them (Coulomb friction,
+/// the energy each broken joint element held, the absorbing layers, the integrator's error), and, in a windowed
+/// cut, the kinetic and the strain energy of the disks that leave the integration when the window moves on
+/// (removed chips, disks frozen into the frame or the reservoir), less what joining disks bring. Running totals
+/// and the integrated disks' energies at one moment (Simulation::kinetic_energy; strain: strain_energy, joints
+/// and disk-disk contacts, plus wall_contact_energy, the tool's contacts).
+struct CutEnergyBooks {
+  double tool_work_j = 0, left_kinetic_j = 0, left_strain_j = 0;
+  double kinetic_j = 0, strain_j = 0;
+};
+
+/// The books over the steady part (the same travel as the mean forces): what each took, and the balance
+/// dissipated = tool work - left kinetic - left strain - (kinetic + strain at the end - at the steady start).
+struct CutEnergy {
+  double tool_work_j = 0, dissipated_j = 0, left_kinetic_j = 0, left_strain_j = 0, stored_change_j = 0;
+};
+CutEnergy cut_energy_between(const CutEnergyBooks& from, const CutEnergyBooks& to);
+
 struct CutResult {
   std::vector<CutSample> samples;
   double main_force_n = 0, thrust_force_n = 0, main_force_std_n = 0, thrust_force_std_n = 0;  ///< steady part
@@ -192,6 +211,10 @@ struct CutResult {
   double particle_steps = 0;
   CutWindowReport window;
   double time_step_s = 0, wall_time_s = 0;
+  /// The energy books over the steady part (once finished): booked only by a cut that ran from its start
+  /// under a kerf that keeps them (a cut resumed from an older checkpoint has none).
+  bool energy_booked = false;
+  CutEnergy energy;
 };
 
 /// {main, thrust} from the force the disks exert on the tool (cutting direction -x): main = F_x, thrust = F_y.
@@ -268,12 +291,20 @@ class CutRun {
   std::int32_t first_tool_wall_ = 0, n_tool_walls_ = 0;
   double t0_ = 0;
   bool finished_ = false;
+  /// The energy books: running (tool work, left), and at the steady part's start (its first sample).
+  bool books_kept_ = true, steady_booked_ = false;
+  CutEnergyBooks books_, books_steady_start_;
+  /// The running books with the integrated disks' energies now.
+  CutEnergyBooks books_now() const;
   void finish();
   /// The cutting edge: the front-most of the tool's lowest points (a flat clearance face has two) {x, y}.
   std::array<double, 2> edge() const;
   /// The checkpoint's fields before the engine state, in order: io(field...) writes or reads them.
   template <class Self, class Io>
   static void state_fields(Self& run, Io& io);
+  /// The energy books' fields, after the engine state (KERFCUT9).
+  template <class Self, class Io>
+  static void book_fields(Self& run, Io& io);
 };
 
 /// "tool_travel_mm,time_s,main_force_N,thrust_force_N".
