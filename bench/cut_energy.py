@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Where a steady cut's work goes, from its own outputs (issue 41 item 4): the energy its broken joints took,
-against the tool's work.
+"""Where a steady cut's work goes, from its own outputs (issue 41 item 4): the energy its broken joints took, and,
+from the cut's energy books where it kept them, friction and what the disks leaving the window carried off.
 
     python3 bench/cut_energy.py DIR [DIR ...] [--csv OUT.csv]
 
@@ -16,8 +16,13 @@ to steady_machined_to_x_mm):
   a bound: a bent element breaks at its edge with less energy stored, and the shear stored at a tensile break is
   left out.
 
-Per condition (glass, window in mm ahead/behind/below, surface, depth): the energy's share of W with its 95 % interval over packings (Student
-t on n - 1), split into the chip (above the cut line) and the subsurface.
+* from the cut's energy books (summary results energy_*_steady_J, kerf-dem since 2026-11-29; CutEnergy in
+  kerf/dem/procedures/cutting.hpp), where it has them: what the integrated disks dissipated, of which friction is
+  taken as the rest after the broken joints' estimate (the integrator's error, 1e-4 of the work in the tests, is left
+  in it), and the kinetic and strain energy the disks leaving the window carried off.
+
+Per condition (glass, window in mm ahead/behind/below, surface, depth): each share of W with its 95 % interval over
+packings (Student t on n - 1).
 """
 import argparse
 import csv
@@ -66,6 +71,12 @@ def cut_energy(folder):
     key = (material.get("name", "custom"), domain,
            {"none": "regular"}.get(cut["grooves"]["shape"], cut["grooves"]["shape"]), depth_mm)
     work_j = results["main_force_N"] * travel_m
+    if "energy_tool_work_steady_J" in results:  # the books: their own work (the same samples, to one)
+        work_j = results["energy_tool_work_steady_J"]
+        joints = energy["chip"] + energy["subsurface"]
+        energy["friction"] = results["energy_dissipated_steady_J"] - joints
+        energy["carried_kinetic"] = results["energy_left_kinetic_steady_J"]
+        energy["carried_strain"] = results["energy_left_strain_steady_J"]
     return key, scene.get("specimen", {}).get("seed", spec["seed"]), work_j, energy
 
 
@@ -78,14 +89,21 @@ def folders(paths):
                 yield item
 
 
+SHARES = ("joints", "chip", "subsurface", "friction", "carried_kinetic", "carried_strain")
+
+
 def table(cuts):
-    """Per condition: n, the share of the work (total, chip, subsurface) as st.Estimate."""
+    """Per condition: {share: st.Estimate} of the work, over the packings that have it (the books' shares only
+    from cuts that kept books)."""
     by = {}
     for key, _, work, energy in cuts:
-        if work > 0:
-            by.setdefault(key, []).append((sum(energy.values()) / work, energy["chip"] / work,
-                                           energy["subsurface"] / work))
-    return {k: [st.mean_of([r[i] for r in rows]) for i in range(3)] for k, rows in sorted(by.items())}
+        if work <= 0:
+            continue
+        row = {"joints": (energy["chip"] + energy["subsurface"]) / work}
+        row.update({k: v / work for k, v in energy.items()})
+        by.setdefault(key, []).append(row)
+    return {k: {name: st.mean_of([r[name] for r in rows if name in r]) for name in SHARES if any(name in r for r in rows)}
+            for k, rows in sorted(by.items())}
 
 
 def main(argv=None):
@@ -97,15 +115,18 @@ def main(argv=None):
     if a.csv:
         with open(a.csv, "w", newline="") as f:
             w = csv.writer(f)
-            w.writerow(["glass", "domain", "surface", "depth_of_cut_mm", "seed", "tool_work_J", "chip_joints_J",
-                        "subsurface_joints_J"])
+            books = ("friction", "carried_kinetic", "carried_strain")
+            w.writerow(["glass", "window", "surface", "depth_of_cut_mm", "seed", "tool_work_J", "chip_joints_J",
+                        "subsurface_joints_J"] + [f"{b}_J" for b in books])
             for key, seed, work, e in cuts:
-                w.writerow([*key, seed, work, e["chip"], e["subsurface"]])
-    print("share of the tool's work taken by the broken joints (steady part; mean over packings [95 % interval]):")
-    for key, (total, chip, sub) in table(cuts).items():
+                w.writerow([*key, seed, work, e["chip"], e["subsurface"]] + [e.get(b, "") for b in books])
+    print("share of the tool's work (steady part; mean over packings [95 % interval]): broken joints (chip, subsurface),")
+    print("and from the books where kept: friction (the dissipated rest), carried off by disks leaving (kinetic, strain)")
+    for key, shares in table(cuts).items():
         def fmt(e):
             return f"{e.value:.3f}" + (f" [{e.low:.3f}, {e.high:.3f}]" if e.resolved() else "")
-        print(f"  {' '.join(map(str, key))}: n {total.n}, all {fmt(total)}, chip {fmt(chip)}, subsurface {fmt(sub)}")
+        text = ", ".join(f"{name} {fmt(e)}" for name, e in shares.items())
+        print(f"  {' '.join(map(str, key))}: n {shares['joints'].n}, {text}")
     return 0
 
 

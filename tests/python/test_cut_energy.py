@@ -53,8 +53,24 @@ def test_shares_are_means_over_packings_with_intervals(tmp_path):
     for seed, force in ((1, 0.5), (2, 0.25)):
         write_cut(tmp_path / "study" / "items" / f"condition_1_seed_{seed}", main_force_n=force, seed=seed)
     cuts = [ce.cut_energy(f) for f in ce.folders([tmp_path / "study"])]
-    (total, chip, sub), = ce.table(cuts).values()
+    shares, = ce.table(cuts).values()
+    total, chip, sub = shares["joints"], shares["chip"], shares["subsurface"]
     one = (cuts[0][3]["chip"] + cuts[0][3]["subsurface"]) / 0.5e-3
     assert total.n == 2 and math.isclose(total.value, 1.5 * one)  # shares one and two: mean 1.5
     assert total.low < total.value < total.high
     assert math.isclose(chip.value + sub.value, total.value)
+    assert "friction" not in shares  # no books
+
+
+def test_the_books_give_friction_as_the_dissipated_rest_and_their_own_work(tmp_path):
+    write_cut(tmp_path / "a")
+    summary = json.loads((tmp_path / "a" / "summary.json").read_text())
+    summary["results"].update({"energy_tool_work_steady_J": 0.6e-3, "energy_dissipated_steady_J": 0.5e-3,
+                               "energy_left_kinetic_steady_J": 0.09e-3, "energy_left_strain_steady_J": 0.01e-3})
+    (tmp_path / "a" / "summary.json").write_text(json.dumps(summary))
+    _, _, work, energy = ce.cut_energy(tmp_path / "a")
+    assert work == 0.6e-3
+    assert math.isclose(energy["friction"], 0.5e-3 - energy["chip"] - energy["subsurface"])
+    shares, = ce.table([ce.cut_energy(tmp_path / "a")]).values()
+    assert math.isclose(shares["carried_kinetic"].value, 0.15)
+    assert math.isclose(shares["joints"].value + shares["friction"].value, 0.5 / 0.6)
