@@ -21,7 +21,7 @@ to steady_machined_to_x_mm):
   taken as the rest after the broken joints' estimate (the integrator's error, 1e-4 of the work in the tests, is left
   in it), and the kinetic and strain energy the disks leaving the window carried off.
 
-Per condition (glass, window in mm ahead/behind/below, surface, depth): each share of W with its 95 % interval over
+Per condition (glass and the tool's own friction if it has one, window in mm ahead/behind/below, surface, depth): each share of W with its 95 % interval over
 packings (Student t on n - 1).
 """
 import argparse
@@ -68,8 +68,10 @@ def cut_energy(folder):
     # depths), or "whole" when every disk is active.
     domain = "/".join(f"{window[k] * depth_mm:.2g}" for k in ("ahead_depths", "behind_depths", "below_depths")) + \
         " mm" if window.get("enabled") else "whole"
-    key = (material.get("name", "custom"), domain,
-           {"none": "regular"}.get(cut["grooves"]["shape"], cut["grooves"]["shape"]), depth_mm)
+    # The tool's friction when it has its own (tool.friction_coefficient), else the glass's.
+    tool = cut.get("tool", {}).get("friction_coefficient", -1)
+    glass = material.get("name", "custom") + (f", tool mu {tool:g}" if tool >= 0 else "")
+    key = (glass, domain, {"none": "regular"}.get(cut["grooves"]["shape"], cut["grooves"]["shape"]), depth_mm)
     work_j = results["main_force_N"] * travel_m
     if "energy_tool_work_steady_J" in results:  # the books: their own work (the same samples, to one)
         work_j = results["energy_tool_work_steady_J"]

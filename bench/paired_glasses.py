@@ -26,9 +26,9 @@ QUANTITIES = [("main_force_N", "main force (N/mm)"), ("thrust_force_N", "thrust 
 
 
 def paired(base, other, key, quantity):
-    """Seeds both records have for this condition, and their values."""
+    """Seeds both records have for this condition (and this quantity: a record may not keep it), and their values."""
     b, o = base.get(key, {}), other.get(key, {})
-    seeds = sorted(set(b) & set(o))
+    seeds = sorted(s for s in set(b) & set(o) if quantity in b[s] and quantity in o[s])
     value = (lambda r: st.per_width(r, quantity[:-8])) if quantity.endswith("_force_N") else (lambda r: r[quantity])
     return seeds, [value(b[s]) for s in seeds], [value(o[s]) for s in seeds]
 

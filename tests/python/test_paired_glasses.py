@@ -41,3 +41,13 @@ def test_only_the_packings_both_records_have_are_paired():
     other = record([0.5, 0.4], [0.4, 0.3])
     seeds, b, o = pg.paired(base, other, ("default", "regular", 0.1), "main_force_N")
     assert seeds == [1, 2] and b == o
+
+
+def test_a_quantity_one_record_does_not_keep_pairs_no_packing():
+    base = record([0.5, 0.4, 0.45], [0.4, 0.3, 0.5])
+    other = record([0.5, 0.4, 0.45], [0.4, 0.3, 0.5])
+    for rows in other.values():
+        for row in rows.values():
+            del row["subsurface_damage_depth_steady_um"]
+    assert pg.paired(base, other, ("default", "regular", 0.1), "subsurface_damage_depth_steady_um")[0] == []
+    assert "deepest subsurface crack (um):\nshare in contact:" in pg.compare(base, other, "default", 0.1)
