@@ -10,7 +10,9 @@
 #   - soda_lime_glass_sfj_cut: the same, a softening flat joint calibrated on a fifth target too
 #     (data/scenes/dem_calibrate_toughness.json), so also its K_IC on the bundled toughness beam (damping 0.05,
 #     0.02 m/s, packings seeds 1-3, as calibrated) within 10 % of soda-lime glass's 0.77 MPa sqrt(m)
-#     (data/experiments/soda_lime_fracture.csv).
+#     (data/experiments/soda_lime_fracture.csv);
+#   - soda_lime_glass_flawed_cut: the same as the steady cut's glass, with seeded flaws (200 um, one per mm^2;
+#     data/scenes/dem_calibrate_flawed.json).
 # The scenes run as shipped but without their half-speed rerun (a check of the loading speed, not of the
 # targets) and without frames. Minutes (about 10 runs); labelled "long", left out of the sanitized suite.
 # Usage: shipped_glass.sh <dir of built programs> <source dir>
@@ -18,7 +20,8 @@ source "$(dirname "$0")/../cli/lib/dem_common.sh" "$@"
 
 # glass:loading speed (m/s):radius_min_um:radius_max_um:packings
 for entry in soda_lime_glass_fj:0.05:7.5:10:1 soda_lime_glass_fj_undamped:0.025:7.5:10:1 \
-             soda_lime_glass_fj_undamped_cut:0.025:10:13:3 soda_lime_glass_sfj_cut:0.025:10:13:3; do
+             soda_lime_glass_fj_undamped_cut:0.025:10:13:3 soda_lime_glass_sfj_cut:0.025:10:13:3 \
+             soda_lime_glass_flawed_cut:0.025:10:13:3; do
   IFS=: read -r glass speed rmin rmax packings <<<"$entry"
   echo "$glass (loading $speed m/s, radii $rmin-$rmax um, $packings packing(s)):"
   for seed in $(seq 1 "$packings"); do
