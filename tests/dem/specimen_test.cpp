@@ -25,15 +25,21 @@ SpecimenSpec small_random() {
   return s;
 }
 
+// Equal disks of 10 um on a triangular lattice filling a square of this side.
+SpecimenSpec hexagonal_spec(double side_m) {
+  SpecimenSpec spec;
+  spec.packing = Packing::hexagonal;
+  spec.width_m = spec.height_m = side_m;
+  spec.radius_min_m = spec.radius_max_m = 10e-6;
+  return spec;
+}
+
 }  // namespace
 
 TEST_CASE("specimen: hexagonal lattice stress under affine strain matches the closed form", "[specimen]") {
   // Triangular lattice of disks (spacing d = 2R) with bond stiffnesses K_n, K_s: lambda = sqrt(3)/4 (K_n - K_s),
   // mu = sqrt(3)/4 (K_n + K_s) per thickness (sum over the 3 bond directions of the cell, area 2 sqrt(3) R^2).
-  SpecimenSpec spec;
-  spec.packing = Packing::hexagonal;
-  spec.width_m = spec.height_m = 0.3e-3;
-  spec.radius_min_m = spec.radius_max_m = 10e-6;
+  const SpecimenSpec spec = hexagonal_spec(0.3e-3);
   Material m;
   SpecimenReport report;
   Simulation sim = make_specimen(m, spec, report);
@@ -207,10 +213,7 @@ int broken_joints(const Simulation& sim) {
 TEST_CASE("specimen: seeded flaws cross the lattice's joints as Buffon's needle says", "[specimen]") {
   // A line of length L thrown at random on a triangular lattice of spacing 2R crosses on average
   // L n_b (2R) (2 / pi) joints, n_b = sqrt(3) / (2 R^2) joints per unit area: 2 sqrt(3) L / (pi R).
-  SpecimenSpec spec;
-  spec.packing = Packing::hexagonal;
-  spec.width_m = spec.height_m = 1.5e-3;
-  spec.radius_min_m = spec.radius_max_m = 10e-6;
+  const SpecimenSpec spec = hexagonal_spec(1.5e-3);
   Material m;
   m.flaw_length_m = 100e-6;
   m.flaw_density_per_m2 = 20e6;  // about 50 flaws: few cross one another
