@@ -7,8 +7,12 @@
 namespace kerf::dem {
 
 namespace {
-constexpr double per_mm2_to_per_m2(double v) { return v * 1e6; }
-constexpr double per_m2_to_per_mm2(double v) { return v * 1e-6; }
+constexpr double per_mm2_to_per_m2(double v) {
+  return v * 1e6;
+}
+constexpr double per_m2_to_per_mm2(double v) {
+  return v * 1e-6;
+}
 constexpr FieldUnit kPerMm2{"1/mm^2", per_mm2_to_per_m2, per_m2_to_per_mm2};
 }  // namespace
 

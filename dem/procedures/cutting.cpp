@@ -724,10 +724,10 @@ void CutRun::finish() {
 
 namespace {
 
-constexpr std::string_view kCutMagic = "KERFCUT9";  // 3: tool_friction_coefficient, 4: rake_face_height_m,
-                                                    // 5: the active window, 6: its absorbing layer,
-                                                    // 7: the held rows' layer, 8: the parameters by key,
-                                                    // 9: the energy books
+constexpr std::string_view kCutMagic = "KERFCUT9";         // 3: tool_friction_coefficient, 4: rake_face_height_m,
+                                                           // 5: the active window, 6: its absorbing layer,
+                                                           // 7: the held rows' layer, 8: the parameters by key,
+                                                           // 9: the energy books
 constexpr std::string_view kCutMagicNoBooks = "KERFCUT8";  // still read: no energy books (the run keeps none)
 constexpr std::string_view kCutMagicListed = "KERFCUT7";   // still read: the parameters listed by hand
 

@@ -328,8 +328,10 @@ std::string cut_fields_text(const CutParams& p) {
 }
 }  // namespace
 
-TEST_CASE("checkpoint: a parameter struct stored by the keys of its tables reads back every field to the bit "
-          "(the cut's, KERFCUT8 and on)", "[checkpoint]") {
+TEST_CASE(
+    "checkpoint: a parameter struct stored by the keys of its tables reads back every field to the bit "
+    "(the cut's, KERFCUT8 and on)",
+    "[checkpoint]") {
   namespace serial = kerf::dem::serial;
   // Every field off its default: numbers with many digits, integers at their top, flags flipped, the last choice.
   CutParams p;

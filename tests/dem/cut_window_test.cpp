@@ -159,20 +159,23 @@ TEST_CASE("cut window: a cut resumed from a checkpoint without energy books (KER
   CutParams p = windowed(3, 2, 2, 2);
   p.length_m = 0.1e-3;
   CutRun whole(specimen, p), half(specimen, p);
-  while (whole.advance()) {}
+  while (whole.advance()) {
+  }
   for (std::size_t k = 0; k < whole.result().samples.size() / 2; ++k) half.advance();
   // A KERFCUT8 state is a KERFCUT9 one without the books at its end: two flags and two books of five numbers.
   std::string old = half.serialize();
   old.resize(old.size() - (2 + 10 * sizeof(double)));
   old.replace(0, 8, "KERFCUT8");
   CutRun restored = CutRun::deserialize(old);
-  while (restored.advance()) {}
+  while (restored.advance()) {
+  }
   CHECK(restored.result().samples.back().main_force_n == whole.result().samples.back().main_force_n);
   CHECK(whole.result().energy_booked);
   CHECK_FALSE(restored.result().energy_booked);
 }
 
-TEST_CASE("cut window: the energy books balance, and what leaves the window is what its disks carried", "[cut_window]") {
+TEST_CASE("cut window: the energy books balance, and what leaves the window is what its disks carried",
+          "[cut_window]") {
   // The tool's work is the mean force times the steady travel (the same samples, to their first one); the disks
   // that leave take kinetic energy away (joining ones bring none: at rest); what stays dissipates
   // (friction, broken joints) and is positive.
@@ -181,7 +184,8 @@ TEST_CASE("cut window: the energy books balance, and what leaves the window is w
   p.length_m = 0.3e-3;
   p.entry_fraction = 0.2;
   CutRun run(specimen, p);
-  while (run.advance()) {}
+  while (run.advance()) {
+  }
   const CutResult& r = run.result();
   REQUIRE(r.energy_booked);
   const double travel = r.steady_to_travel_m - r.steady_from_travel_m;
@@ -190,8 +194,7 @@ TEST_CASE("cut window: the energy books balance, and what leaves the window is w
   CHECK(r.energy.left_kinetic_j > 0);
   CHECK(r.energy.dissipated_j > 0);
   const CutEnergy& e = r.energy;
-  CHECK_THAT(e.dissipated_j + e.left_kinetic_j + e.left_strain_j + e.stored_change_j,
-             WithinRel(e.tool_work_j, 1e-12));
+  CHECK_THAT(e.dissipated_j + e.left_kinetic_j + e.left_strain_j + e.stored_change_j, WithinRel(e.tool_work_j, 1e-12));
 }
 
 TEST_CASE("cut window: contacts between two held disks are left out when asked", "[cut_window]") {

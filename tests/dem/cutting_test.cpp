@@ -256,7 +256,8 @@ TEST_CASE("cutting: without friction or fracture, the tool's work is the energy 
   p.entry_fraction = 0.1;
   p.tool_friction_coefficient = 0;
   CutRun run(specimen, p);
-  while (run.advance()) {}
+  while (run.advance()) {
+  }
   const CutResult& r = run.result();
   REQUIRE(r.energy_booked);
   INFO("work " << r.energy.tool_work_j << " J, dissipated " << r.energy.dissipated_j << " J, stored change "

@@ -2,12 +2,12 @@
 // (density, coordination, low locked-in stress), reproducibility from the seed, save/load round trip.
 #include "kerf/dem/procedures/specimen.hpp"
 
-#include <catch2/catch.hpp>
-#include <numbers>
-#include <cmath>
 #include <algorithm>
 #include <array>
+#include <catch2/catch.hpp>
+#include <cmath>
 #include <filesystem>
+#include <numbers>
 #include <vector>
 
 using namespace kerf::dem;
@@ -197,8 +197,10 @@ double length_inside(const Flaw& f, double x0, double x1, double y0, double y1) 
       continue;
     }
     const double t = q[k] / p[k];
-    if (p[k] < 0) t0 = std::max(t0, t);
-    else t1 = std::min(t1, t);
+    if (p[k] < 0)
+      t0 = std::max(t0, t);
+    else
+      t1 = std::min(t1, t);
   }
   return t1 > t0 ? (t1 - t0) * std::hypot(dx, dy) : 0;
 }
