@@ -112,6 +112,7 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("dirs", nargs="+")
     ap.add_argument("--csv", help="also write one row per cut here")
+    ap.add_argument("--figure", help="also draw the shares of the conditions with books as stacked bars (PNG)")
     a = ap.parse_args(argv)
     cuts = [cut_energy(f) for f in folders(a.dirs)]
     if a.csv:
@@ -129,7 +130,47 @@ def main(argv=None):
             return f"{e.value:.3f}" + (f" [{e.low:.3f}, {e.high:.3f}]" if e.resolved() else "")
         text = ", ".join(f"{name} {fmt(e)}" for name, e in shares.items())
         print(f"  {' '.join(map(str, key))}: n {shares['joints'].n}, {text}")
+    if a.figure:
+        plot(table(cuts), a.figure)
     return 0
+
+
+PARTS = [("chip", "broken joints, chip", "#b2182b"), ("subsurface", "broken joints, subsurface", "#ef8a62"),
+         ("friction", "friction (the dissipated rest)", "#4d4d4d"),
+         ("carried_kinetic", "carried off, kinetic", "#67a9cf"), ("carried_strain", "carried off, strain", "#2166ac")]
+
+
+def plot(shares_by_condition, path):
+    """One bar per condition with books: its shares of the tool's work stacked, each with its 95 % interval."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    order = {"regular": 0, "rectangular": 1, "trapezoidal": 2}
+    rows = sorted(((k, v) for k, v in shares_by_condition.items() if "friction" in v),
+                  key=lambda kv: (", tool mu" in kv[0][0], kv[0][1], kv[0][3], order.get(kv[0][2], 3)))
+    fig, ax = plt.subplots(figsize=(10, 0.55 * len(rows) + 1.8))
+    for y, (key, shares) in enumerate(rows):
+        left = 0.0
+        for name, label, colour in PARTS:
+            e = shares[name]
+            ax.barh(y, e.value, left=left, color=colour, edgecolor="white", label=label if y == 0 else None)
+            if e.resolved():
+                ax.errorbar(left + e.value, y, xerr=[[e.value - e.low], [e.high - e.value]], color="black",
+                            capsize=2, lw=0.8)
+            left += e.value
+    ax.set_yticks(range(len(rows)))
+    glass_mu = "tool with the glass's mu"
+    ax.set_yticklabels([f"{k[2]}, {k[0].split(', ', 1)[1] if ', ' in k[0] else glass_mu} "
+                        f"({v['joints'].n} packings)" for k, v in rows])
+    ax.invert_yaxis()
+    ax.set_xlim(0, 1.05)
+    ax.set_xlabel("share of the tool's work, steady part (whiskers: 95 % intervals over packings)")
+    ax.set_title(f"{rows[0][0][0].split(',')[0]}, window {rows[0][0][1]}, depth of cut {rows[0][0][3]} mm", fontsize=9)
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.35 if len(rows) < 4 else -0.2), ncol=3, fontsize=8,
+              frameon=False)
+    fig.tight_layout()
+    fig.savefig(path, dpi=130)
+    plt.close(fig)
 
 
 if __name__ == "__main__":

@@ -74,3 +74,13 @@ def test_the_books_give_friction_as_the_dissipated_rest_and_their_own_work(tmp_p
     shares, = ce.table([ce.cut_energy(tmp_path / "a")]).values()
     assert math.isclose(shares["carried_kinetic"].value, 0.15)
     assert math.isclose(shares["joints"].value + shares["friction"].value, 0.5 / 0.6)
+
+
+def test_the_figure_draws_the_conditions_with_books(tmp_path):
+    write_cut(tmp_path / "a")
+    summary = json.loads((tmp_path / "a" / "summary.json").read_text())
+    summary["results"].update({"energy_tool_work_steady_J": 0.6e-3, "energy_dissipated_steady_J": 0.5e-3,
+                               "energy_left_kinetic_steady_J": 0.09e-3, "energy_left_strain_steady_J": 0.01e-3})
+    (tmp_path / "a" / "summary.json").write_text(json.dumps(summary))
+    assert ce.main([str(tmp_path / "a"), "--figure", str(tmp_path / "f.png")]) == 0
+    assert (tmp_path / "f.png").read_bytes()[:4] == b"\x89PNG"
