@@ -132,7 +132,11 @@ const FieldTable<CutParams>& active_window_fields() {
       number_field("absorbing_attenuation", kNone, Range::positive(),
                    "e-folds by which the absorbing layer (and cut.held_absorbing_depths') attenuates a p-wave's amplitude "
                    "through it and back",
-                   &P::window_absorbing_attenuation)};
+                   &P::window_absorbing_attenuation),
+      bool_field("remove_loose_fragments",
+                 "a bound, not a model of glass: at each rebuild remove every disk above the cut line that no intact "
+                 "joint path ties to the held rows (every loose fragment gone at once)",
+                 &P::window_remove_loose_fragments)};
   return table;
 }
 
@@ -620,6 +624,7 @@ CutRun::CutRun(const Simulation& specimen, const CutParams& params)
     }
     const double x_edge = edge()[0];
     window_.emplace(std::move(sim_), box, res_.y_top_m, res_.y_cut_m);
+    window_->set_remove_loose_fragments(params_.window_remove_loose_fragments);
     sim_ = window_->build(nullptr, x_edge);
   } else if (held_layer_m > 0) {
     // Every disk active: the layer along the held rows is set once (no disk joins or leaves the cut).
@@ -813,7 +818,10 @@ CutRun CutRun::deserialize(std::string_view bytes) {
   validate_cut_params(run.params_);
   run.sim_ = Simulation::deserialize(state);
   if (run.params_.active_window != !window.empty()) throw ModelError("dem", "corrupt cut checkpoint (the window)");
-  if (run.params_.active_window) run.window_ = CutWindow::deserialize(window);
+  if (run.params_.active_window) {
+    run.window_ = CutWindow::deserialize(window);
+    run.window_->set_remove_loose_fragments(run.params_.window_remove_loose_fragments);  // a parameter, stored by key
+  }
   if (run.finished_) run.finish();
   return run;
 }

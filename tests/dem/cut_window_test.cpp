@@ -153,6 +153,44 @@ TEST_CASE("cut window: restored halfway, a windowed cut goes on to the bit", "[c
   }
 }
 
+TEST_CASE("cut window: loose fragments above the cut line are removed at a rebuild, those below stay", "[cut_window]") {
+  // The bound of active_window.remove_loose_fragments: two clusters of disks cut loose from the workpiece (every
+  // joint between them and the rest broken), one above the cut line, one below it. With the option the window's
+  // build removes the first as a chip, every disk of it, and nothing else; without it nothing is removed.
+  const Simulation specimen = quick_workpiece_specimen(0.6e-3, 0.25e-3, 7);
+  CutParams p = windowed(3, 2, 2, 2);
+  std::size_t n_grooves = 0;
+  const Simulation workpiece = make_workpiece(specimen, p, n_grooves);
+  const auto& q = workpiece.particles();
+  double y_top = -1;
+  for (std::size_t u = 0; u < q.size(); ++u) y_top = std::max(y_top, q.y[u] + q.radius[u]);
+  const double y_cut = y_top - p.depth_of_cut_m;
+  const auto cluster = [&](std::size_t u, double y_centre) {
+    return std::hypot(q.x[u] - 0.3e-3, q.y[u] - y_centre) < 25e-6 ? 1 : 0;
+  };
+  std::vector<int> in(q.size());
+  std::size_t above = 0;
+  for (std::size_t u = 0; u < q.size(); ++u) {
+    in[u] = cluster(u, y_top - 20e-6) + 2 * cluster(u, y_cut - 60e-6);
+    above += in[u] == 1;
+  }
+  REQUIRE(above > 3);
+  const auto run = [&](bool remove) {
+    Simulation w = workpiece;
+    auto& b = w.bonds();
+    for (std::size_t k = 0; k < b.size(); ++k)
+      if (in[static_cast<std::size_t>(b.i[k])] != in[static_cast<std::size_t>(b.j[k])])
+        for (int e = 0; e < b.stride; ++e) b.bonded[k * static_cast<std::size_t>(b.stride) + static_cast<std::size_t>(e)] = 0;
+    w.initialise();
+    CutWindow window(std::move(w), window_box_m(p), y_top, y_cut);
+    window.set_remove_loose_fragments(remove);
+    window.build(nullptr, 0.35e-3);
+    return window.chips().particles;
+  };
+  CHECK(run(false) == 0);
+  CHECK(run(true) == above);
+}
+
 TEST_CASE("cut window: a cut resumed from a checkpoint without energy books (KERFCUT8) goes on without them",
           "[cut_window]") {
   const Simulation specimen = quick_workpiece_specimen(0.6e-3, 0.25e-3, 7);

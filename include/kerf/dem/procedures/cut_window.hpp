@@ -98,6 +98,10 @@ class CutWindow {
   /// The chips removed so far (from the removal flags), with the cracks they carried.
   ChipAccount chips() const;
   std::size_t rebuilds() const { return rebuilds_; }
+  /// From the next build on, also remove (as chips) every disk above the cut line that no path of joints with a
+  /// bonded element ties to a held disk of the workpiece (CutParams::window_remove_loose_fragments; not stored:
+  /// the cut sets it again from its parameters when restored).
+  void set_remove_loose_fragments(bool on) { remove_loose_ = on; }
   std::size_t largest_window() const { return largest_window_; }
 
   std::string serialize() const;
@@ -117,6 +121,9 @@ class CutWindow {
   ContactSprings springs_;         ///< of the last sync, by workpiece index
   std::size_t rebuilds_ = 0, largest_window_ = 0;
   std::size_t cracks_synced_ = 0;  ///< the running window's cracks already moved to the workpiece's
+  bool remove_loose_ = false;
+  /// Marks removed every disk above the cut line not tied by bonded joints to a held disk.
+  void remove_loose_fragments();
   // Derived from the above (not stored): the frame's width, the window's skin and the largest radius, disks
   // by x0, joints per disk.
   double frame_m_ = 0, skin_m_ = 0, r_max_m_ = 0;

@@ -73,6 +73,10 @@ struct CutParams {
   /// thickness L in depths of cut (0: none), and the e-folds by which it attenuates a p-wave's amplitude on its
   /// way through the layer and back: the peak rate 3 a c / L, with c = sqrt(E* / rho) of the contact law.
   double window_absorbing_depths = 0, window_absorbing_attenuation = 2;
+  /// A bound, not a model of glass (issue 41 item 4): at each rebuild of the window, remove every disk above the
+  /// cut line that no intact joint path ties to the workpiece's held rows (CutWindow::set_remove_loose_fragments),
+  /// as if every loose fragment left the plane at once and the tool met none of them again.
+  bool window_remove_loose_fragments = false;
   /// An absorbing layer along the workpiece's held rows (its left side and bottom, as rigid as the window's
   /// frame), with or without a window: its thickness in depths of cut (0: none), the same attenuation.
   double held_absorbing_depths = 0;
