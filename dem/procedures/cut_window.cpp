@@ -100,8 +100,6 @@ void CutWindow::sync(const Simulation& current) {
   full_.set_clock(current.time(), current.step_count());
 }
 
-// Long (~150 lines) for a reason: its stages (candidates, roles, disks, joints, springs, absorbing layers, kept
-// forces) share global_of_ and local_of_, whose order is the new window's disk order and so fixes its results.
 void CutWindow::remove_loose_fragments() {
   const Particles& q = full_.particles();
   const BondStore& fb = full_.bonds();
@@ -125,6 +123,8 @@ void CutWindow::remove_loose_fragments() {
     if (!tied[g] && q.y[g] > y_cut_m_) removed_[g] = 1;
 }
 
+// Long (~150 lines) for a reason: its stages (candidates, roles, disks, joints, springs, absorbing layers, kept
+// forces) share global_of_ and local_of_, whose order is the new window's disk order and so fixes its results.
 Simulation CutWindow::build(const Simulation* current, double x_edge_m) {
   if (current) sync(*current);
   if (remove_loose_) remove_loose_fragments();
