@@ -29,6 +29,14 @@ def write_cut(folder, main_force_n=0.5, grooves="none", seed=1, material=MATERIA
     (folder / "cracks.csv").write_text("\n".join(rows) + "\n")
 
 
+def add_books(folder):
+    """The cut's energy books: work 0.6 mJ, 0.5 dissipated, 0.09 carried off as kinetic and 0.01 as strain energy."""
+    summary = json.loads((folder / "summary.json").read_text())
+    summary["results"].update({"energy_tool_work_steady_J": 0.6e-3, "energy_dissipated_steady_J": 0.5e-3,
+                               "energy_left_kinetic_steady_J": 0.09e-3, "energy_left_strain_steady_J": 0.01e-3})
+    (folder / "summary.json").write_text(json.dumps(summary))
+
+
 def test_the_energy_of_each_broken_element_and_its_share_of_the_work(tmp_path):
     write_cut(tmp_path / "a")
     key, seed, work, energy = ce.cut_energy(tmp_path / "a")
@@ -64,10 +72,7 @@ def test_shares_are_means_over_packings_with_intervals(tmp_path):
 
 def test_the_books_give_friction_as_the_dissipated_rest_and_their_own_work(tmp_path):
     write_cut(tmp_path / "a")
-    summary = json.loads((tmp_path / "a" / "summary.json").read_text())
-    summary["results"].update({"energy_tool_work_steady_J": 0.6e-3, "energy_dissipated_steady_J": 0.5e-3,
-                               "energy_left_kinetic_steady_J": 0.09e-3, "energy_left_strain_steady_J": 0.01e-3})
-    (tmp_path / "a" / "summary.json").write_text(json.dumps(summary))
+    add_books(tmp_path / "a")
     _, _, work, energy = ce.cut_energy(tmp_path / "a")
     assert work == 0.6e-3
     assert math.isclose(energy["friction"], 0.5e-3 - energy["chip"] - energy["subsurface"])
@@ -78,9 +83,6 @@ def test_the_books_give_friction_as_the_dissipated_rest_and_their_own_work(tmp_p
 
 def test_the_figure_draws_the_conditions_with_books(tmp_path):
     write_cut(tmp_path / "a")
-    summary = json.loads((tmp_path / "a" / "summary.json").read_text())
-    summary["results"].update({"energy_tool_work_steady_J": 0.6e-3, "energy_dissipated_steady_J": 0.5e-3,
-                               "energy_left_kinetic_steady_J": 0.09e-3, "energy_left_strain_steady_J": 0.01e-3})
-    (tmp_path / "a" / "summary.json").write_text(json.dumps(summary))
+    add_books(tmp_path / "a")
     assert ce.main([str(tmp_path / "a"), "--figure", str(tmp_path / "f.png")]) == 0
     assert (tmp_path / "f.png").read_bytes()[:4] == b"\x89PNG"
