@@ -654,6 +654,8 @@ std::size_t CutRun::n_cracks() const {
   return window_ ? window_->cracks().size() + sim_.cracks().size() : sim_.cracks().size();
 }
 
+namespace {
+/// The books between two moments (CutEnergy's balance).
 CutEnergy cut_energy_between(const CutEnergyBooks& from, const CutEnergyBooks& to) {
   CutEnergy e;
   e.tool_work_j = to.tool_work_j - from.tool_work_j;
@@ -663,6 +665,7 @@ CutEnergy cut_energy_between(const CutEnergyBooks& from, const CutEnergyBooks& t
   e.dissipated_j = e.tool_work_j - e.left_kinetic_j - e.left_strain_j - e.stored_change_j;
   return e;
 }
+}  // namespace
 
 CutEnergyBooks CutRun::books_now() const {
   CutEnergyBooks b = books_;

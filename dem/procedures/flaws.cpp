@@ -1,6 +1,7 @@
 // Seeded flaws: straight cracks of pre-broken joints (docs/physics-dem.md section 6, "strong bonds with seeded
 // flaws"). A real glass breaks at its few largest flaws, a lattice of uniform joints at any joint; flaws let a
 // glass have joints stronger than its macroscopic strength, which is then the flaws'.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -55,9 +56,9 @@ std::vector<Flaw> seed_flaws(Simulation& sim, const Material& material, std::uin
   for (std::size_t k = 0; k < b.size(); ++k) {
     if (!b.active[k]) continue;
     const auto i = static_cast<std::size_t>(b.i[k]), j = static_cast<std::size_t>(b.j[k]);
-    bool crossed = false;
-    for (const Flaw& f : flaws) crossed = crossed || segments_cross(p.x[i], p.y[i], p.x[j], p.y[j], f);
-    if (!crossed) continue;
+    if (std::none_of(flaws.begin(), flaws.end(),
+                     [&](const Flaw& f) { return segments_cross(p.x[i], p.y[i], p.x[j], p.y[j], f); }))
+      continue;
     for (std::size_t e = 0; e < stride; ++e) {  // a closed crack: compression and friction, no tension
       b.bonded[k * stride + e] = 0;
       b.shear_force_n[k * stride + e] = 0;

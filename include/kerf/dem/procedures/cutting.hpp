@@ -178,7 +178,6 @@ struct CutEnergyBooks {
 struct CutEnergy {
   double tool_work_j = 0, dissipated_j = 0, left_kinetic_j = 0, left_strain_j = 0, stored_change_j = 0;
 };
-CutEnergy cut_energy_between(const CutEnergyBooks& from, const CutEnergyBooks& to);
 
 struct CutResult {
   std::vector<CutSample> samples;
