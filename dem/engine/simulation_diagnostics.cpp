@@ -78,6 +78,45 @@ double Simulation::wall_contact_energy() const {
   return e;
 }
 
+std::vector<Simulation::WallContactLoad> Simulation::wall_contact_loads() const {
+  std::vector<WallContactLoad> loads;
+  const double t = opt_.thickness_m;
+  std::visit(
+      [&](const auto& law) {
+        for (std::size_t k = 0; k < wall_contacts_.size(); ++k) {
+          const Wall& w = walls_[static_cast<std::size_t>(wall_contacts_[k][0])];
+          const auto u = static_cast<std::size_t>(wall_contacts_[k][1]);
+          if (!w.enabled) continue;
+          const auto q = closest_on_segment(w, p_.x[u], p_.y[u]);
+          const double overlap = p_.radius[u] - std::hypot(p_.x[u] - q[0], p_.y[u] - q[1]);
+          if (overlap <= 0) continue;
+          double shear = wall_shear_[k];  // a copy: no shear increment, the state untouched
+          loads.push_back({wall_contacts_[k][0], wall_contacts_[k][1],
+                           contact_update(law, p_.radius[u], 0.0, t, overlap, 0.0, shear).normal_force_n});
+        }
+      },
+      material_.contact);
+  return loads;
+}
+
+std::vector<std::uint8_t> Simulation::tied_to_held() const {
+  // Breadth-first from every held disk along the joints with a bonded element.
+  std::vector<std::vector<std::int32_t>> joined(p_.size());
+  for (std::size_t b = 0; b < b_.size(); ++b)
+    if (b_.active[b] && b_.n_bonded_elements(b) > 0) {
+      joined[static_cast<std::size_t>(b_.i[b])].push_back(b_.j[b]);
+      joined[static_cast<std::size_t>(b_.j[b])].push_back(b_.i[b]);
+    }
+  std::vector<std::uint8_t> tied(p_.size(), 0);
+  std::vector<std::int32_t> queue;
+  for (std::size_t u = 0; u < p_.size(); ++u)
+    if (p_.group[u] != 0) tied[u] = 1, queue.push_back(static_cast<std::int32_t>(u));
+  for (std::size_t head = 0; head < queue.size(); ++head)
+    for (const auto v : joined[static_cast<std::size_t>(queue[head])])
+      if (!tied[static_cast<std::size_t>(v)]) tied[static_cast<std::size_t>(v)] = 1, queue.push_back(v);
+  return tied;
+}
+
 int Simulation::n_touching_pairs() const {
   int n = 0;
   for (const auto& c : pairs_) {

@@ -114,6 +114,10 @@ Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& d
                        {"to_travel_mm", std::round(units::m_to_mm(w.to_m) * 1e9) / 1e9},
                        {"main_force_N", w.main_force_n}, {"thrust_force_N", w.thrust_force_n}, {"samples", w.n_samples}});
   summary["results"]["travel_windows"] = windows;
+  if (cut.window_grain_strength_pa > 0) {  // crushing grains (active_window.grain_strength_MPa): how many, how much
+    summary["results"]["grains_crushed"] = res.window.chips.crushed_grains;
+    summary["results"]["grains_crushed_mass_kg"] = res.window.chips.crushed_mass_kg;
+  }
   if (res.energy_booked) {
     // Where the tool's work went over the steady part (CutEnergy), per the cut's width like the forces' work.
     const CutEnergy& e = res.energy;

@@ -272,6 +272,11 @@ Simulation CutWindow::build(const Simulation* current, double x_edge_m) {
   return sim;
 }
 
+Simulation CutWindow::crush(const Simulation& current, const std::vector<std::size_t>& window_disks) {
+  for (const auto u : window_disks) removed_[static_cast<std::size_t>(global_of_[u])] = 2;
+  return build(&current, x_built_m_);
+}
+
 Simulation CutWindow::machined_workpiece() const {
   std::vector<std::uint8_t> keep(removed_.size());
   for (std::size_t g = 0; g < keep.size(); ++g) keep[g] = !removed_[g];
@@ -285,7 +290,10 @@ ChipAccount CutWindow::chips() const {
   ChipAccount a;
   const Particles& q = full_.particles();
   for (std::size_t g = 0; g < removed_.size(); ++g)
-    if (removed_[g]) ++a.particles, a.mass_kg += 1 / q.inv_mass[g];
+    if (removed_[g]) {
+      ++a.particles, a.mass_kg += 1 / q.inv_mass[g];
+      if (removed_[g] == 2) ++a.crushed_grains, a.crushed_mass_kg += 1 / q.inv_mass[g];
+    }
   const BondStore& b = full_.bonds();
   for (const auto& e : full_.cracks()) {
     const auto k = static_cast<std::size_t>(e.bond);

@@ -136,7 +136,11 @@ const FieldTable<CutParams>& active_window_fields() {
       bool_field("remove_loose_fragments",
                  "a bound, not a model of glass: at each rebuild remove every disk above the cut line that no intact "
                  "joint path ties to the held rows (every loose fragment gone at once)",
-                 &P::window_remove_loose_fragments)};
+                 &P::window_remove_loose_fragments),
+      number_field("grain_strength_MPa", kMPa, Range::non_negative(),
+                   "debris grains crush: a disk of a loose fragment pressed by the tool with more than its splitting "
+                   "load pi sigma r t is removed (0: disks never break)",
+                   &P::window_grain_strength_pa)};
   return table;
 }
 
@@ -145,6 +149,8 @@ namespace {
 void check_cut_relations(const CutParams& p) {
   require(p.window_m >= 1e-3 * p.length_m, "cut.window_mm", units::m_to_mm(p.window_m),
           "a positive window of at least 1/1000 of cut.length_mm");
+  require(p.window_grain_strength_pa == 0 || p.active_window, "active_window.grain_strength_MPa",
+          units::pa_to_mpa(p.window_grain_strength_pa), "0 unless active_window.enabled (only a window removes disks)");
   // The wedge between the two faces must be a real wedge: rake + clearance < 90 deg.
   require(p.rake_deg + p.clearance_deg < 89, "tool.clearance_deg", p.clearance_deg,
           "rake_deg + clearance_deg below 89 deg (a tool wedge angle of at least 1 deg)");
@@ -674,6 +680,32 @@ CutEnergyBooks CutRun::books_now() const {
   return b;
 }
 
+void CutRun::crush_grains() {
+  // The disks a tool face presses with more than their splitting load (CutParams::window_grain_strength_pa) ...
+  const auto& p = sim_.particles();
+  const double t = sim_.options().thickness_m;
+  std::vector<std::size_t> pressed;
+  for (const auto& c : sim_.wall_contact_loads()) {
+    const auto u = static_cast<std::size_t>(c.disk);
+    if (c.wall >= first_tool_wall_ && c.wall < first_tool_wall_ + n_tool_walls_ && p.group[u] == 0 &&
+        c.normal_force_n > std::numbers::pi * params_.window_grain_strength_pa * p.radius[u] * t)
+      pressed.push_back(u);
+  }
+  if (pressed.empty()) return;
+  // ... that belong to loose fragments are crushed (a disk tied to the workpiece breaks by its joints).
+  const auto tied = sim_.tied_to_held();
+  std::erase_if(pressed, [&](std::size_t u) { return tied[u] != 0; });
+  if (pressed.empty()) return;
+  std::sort(pressed.begin(), pressed.end());
+  pressed.erase(std::unique(pressed.begin(), pressed.end()), pressed.end());
+  // What the crushed grains held leaves the integration with them (the books, as a rebuild's).
+  const CutEnergyBooks before = books_now();
+  sim_ = window_->crush(sim_, pressed);
+  const CutEnergyBooks after = books_now();
+  books_.left_kinetic_j += before.kinetic_j - after.kinetic_j;
+  books_.left_strain_j += before.strain_j - after.strain_j;
+}
+
 bool CutRun::advance() {
   if (finished_) return false;
   const auto start = std::chrono::steady_clock::now();
@@ -698,6 +730,7 @@ bool CutRun::advance() {
       fy += walls[static_cast<std::size_t>(first_tool_wall_ + w)].fy;
     }
   }
+  if (window_ && params_.window_grain_strength_pa > 0) crush_grains();
   const auto f = tool_force_components(fx / params_.sample_every_steps, fy / params_.sample_every_steps);
   const double elapsed = sim_.time() - t0_, travel = params_.speed_m_per_s * elapsed;
   res_.samples.push_back({travel, elapsed, f[0], f[1]});

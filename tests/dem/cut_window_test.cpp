@@ -235,6 +235,40 @@ TEST_CASE("cut window: the energy books balance, and what leaves the window is w
   CHECK_THAT(e.dissipated_j + e.left_kinetic_j + e.left_strain_j + e.stored_change_j, WithinRel(e.tool_work_j, 1e-12));
 }
 
+TEST_CASE("cut window: loose grains the tool presses beyond their splitting load are crushed", "[cut_window]") {
+  // active_window.grain_strength_MPa: at a strength no contact reaches the cut is the cut without it, to the bit
+  // (the check alone changes nothing); at 1 MPa (a splitting load of 0.03 N for a 10 um disk, 1 mm thick) grains
+  // are crushed, each counted among the removed disks with its mass, and the energy books still balance.
+  const Simulation specimen = quick_workpiece_specimen(0.6e-3, 0.25e-3, 7);
+  CutParams p = windowed(3, 2, 2, 2);
+  p.length_m = 0.3e-3;
+  p.entry_fraction = 0.2;
+  const auto cut = [&](double strength_pa) {
+    CutParams q = p;
+    q.window_grain_strength_pa = strength_pa;
+    CutRun run(specimen, q);
+    while (run.advance()) {
+    }
+    return run.result();
+  };
+  const CutResult none = cut(0), never = cut(1e15), weak = cut(1e6);
+  CHECK(never.samples.back().main_force_n == none.samples.back().main_force_n);
+  CHECK(never.main_force_n == none.main_force_n);
+  CHECK(never.window.chips.crushed_grains == 0);
+  CHECK(none.window.chips.crushed_grains == 0);
+  CHECK(weak.window.chips.crushed_grains > 0);
+  CHECK(weak.window.chips.crushed_grains <= weak.window.chips.particles);
+  CHECK(weak.window.chips.crushed_mass_kg > 0);
+  CHECK(weak.window.chips.crushed_mass_kg <= weak.window.chips.mass_kg);
+  CHECK(weak.window.rebuilds > none.window.rebuilds);  // a crush rebuilds the window
+  REQUIRE(weak.energy_booked);
+  const CutEnergy& e = weak.energy;
+  CHECK_THAT(e.dissipated_j + e.left_kinetic_j + e.left_strain_j + e.stored_change_j, WithinRel(e.tool_work_j, 1e-12));
+  p.active_window = false;
+  p.window_grain_strength_pa = 85e6;
+  CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains("active_window.grain_strength_MPa = 85"));
+}
+
 TEST_CASE("cut window: contacts between two held disks are left out when asked", "[cut_window]") {
   for (const bool skip : {false, true}) {
     SimulationOptions o;

@@ -296,3 +296,31 @@ TEST_CASE("engine: a wall's own friction coefficient limits the shear of its con
   CHECK_THAT(slide(-1.0), WithinRel(std::get<LinearContactParams>(Material{}.contact).friction_coefficient, 1e-9));
   CHECK_THAT(slide(1.5), WithinRel(1.5, 1e-9));
 }
+
+TEST_CASE("simulation: a wall contact's load is k_n times its overlap, and ties to the held disks follow bonded joints",
+          "[simulation]") {
+  // The diagnostics a cut's crushing grains use (CutRun::crush_grains): a disk 0.2 um into a wall feels the linear
+  // law's k_n overlap (L = R for a wall), a disk clear of it none; a chain held at one end is tied along its
+  // bonded joints, and a joint with every element broken cuts the chain there.
+  Simulation sim(Material{}, {});
+  const double r = 10e-6, overlap = 0.2e-6;
+  sim.add_particle(0, r - overlap, r);  // on the wall y = 0
+  sim.add_particle(2 * r, r + 1e-6, r);  // clear of it
+  sim.add_particle(4 * r, r + 1e-6, r);
+  sim.add_wall(Wall{-1e-3, 0, 1e-3, 0});
+  sim.install_bond(0, 1);
+  sim.install_bond(1, 2);
+  sim.particles().group[0] = 1;
+  sim.initialise();
+  const auto loads = sim.wall_contact_loads();
+  REQUIRE(loads.size() == 1);
+  CHECK(loads[0].disk == 0);
+  const auto& law = std::get<LinearContactParams>(sim.material().contact);
+  CHECK_THAT(loads[0].normal_force_n, WithinRel(linear_normal_stiffness(law, r, 0, sim.options().thickness_m) * overlap, 1e-9));
+  CHECK(sim.tied_to_held() == std::vector<std::uint8_t>{1, 1, 1});
+  auto& b = sim.bonds();
+  for (int e = 0; e < b.stride; ++e) b.bonded[static_cast<std::size_t>(b.stride + e)] = 0;  // joint 1-2 broken
+  CHECK(sim.tied_to_held() == std::vector<std::uint8_t>{1, 1, 0});
+  sim.particles().group[0] = 0;
+  CHECK(sim.tied_to_held() == std::vector<std::uint8_t>{0, 0, 0});
+}

@@ -198,6 +198,15 @@ class Simulation {
   /// Elastic energy of the disk-wall contacts (normal and shear springs) [J]: what a pressing tool or platen
   /// stores in the disks it touches.
   double wall_contact_energy() const;
+  /// A disk-wall contact's normal force now [N] (compression positive), from its overlap by the contact law.
+  struct WallContactLoad {
+    std::int32_t wall = 0, disk = 0;
+    double normal_force_n = 0;
+  };
+  /// The disk-wall contacts that touch (positive overlap) with their normal forces.
+  std::vector<WallContactLoad> wall_contact_loads() const;
+  /// Per disk: 1 if a path of joints with a bonded element ties it to a held disk (group != 0), else 0.
+  std::vector<std::uint8_t> tied_to_held() const;
   /// Number of active joints and of touching unjointed contacts, per particle (mean coordination number).
   double coordination_number() const;
   int n_contacts_of(std::size_t i) const;

@@ -77,6 +77,13 @@ struct CutParams {
   /// cut line that no intact joint path ties to the workpiece's held rows (CutWindow::set_remove_loose_fragments),
   /// as if every loose fragment left the plane at once and the tool met none of them again.
   bool window_remove_loose_fragments = false;
+  /// Debris grains that crush (issue 41 item 4; 0, the default: a disk never breaks). A disk of a loose fragment
+  /// (no intact joint path to the held rows) pressed by a tool face with a normal force above its splitting load,
+  /// F = pi sigma r t (a cylinder of radius r and length t under two opposite line loads splits when
+  /// 2 F / (pi 2r t) reaches sigma: the Brazilian test), is crushed: removed at once, its energy leaves with it.
+  /// Without it a single loose disk wedged under the tool's tip carries up to ~100 N per mm of width
+  /// (docs/notes/2026-11-29-jams.md). Checked at each force sample; windowed cuts only.
+  double window_grain_strength_pa = 0;
   /// An absorbing layer along the workpiece's held rows (its left side and bottom, as rigid as the window's
   /// frame), with or without a window: its thickness in depths of cut (0: none), the same attenuation.
   double held_absorbing_depths = 0;
@@ -292,6 +299,8 @@ class CutRun {
   CutParams params_;
   CutResult res_;
   std::int32_t first_tool_wall_ = 0, n_tool_walls_ = 0;
+  /// Crushes the loose disks the tool presses beyond their splitting load (CutParams::window_grain_strength_pa).
+  void crush_grains();
   double t0_ = 0;
   bool finished_ = false;
   /// The energy books: running (tool work, left), and at the steady part's start (its first sample).
