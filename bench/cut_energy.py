@@ -61,17 +61,7 @@ def cut_energy(folder):
             if lo <= float(row["x_mm"]) <= hi and row["place"] in energy:
                 energy[row["place"]] += element_energy_j(material, row["mode"], float(row["length_um"]) * 1e-6,
                                                          joint_m, thickness_m)
-    cut = summary["cut"]
-    depth_mm = cut["cut"]["depth_of_cut_mm"]
-    window = cut.get("active_window", {})
-    # The domain by its size in mm (ahead, behind, below; the seed-000 study's large window is 1.4/0.7/1.0 mm at both
-    # depths), or "whole" when every disk is active.
-    domain = "/".join(f"{window[k] * depth_mm:.2g}" for k in ("ahead_depths", "behind_depths", "below_depths")) + \
-        " mm" if window.get("enabled") else "whole"
-    # The tool's friction when it has its own (tool.friction_coefficient), else the glass's.
-    tool = cut.get("tool", {}).get("friction_coefficient", -1)
-    glass = material.get("name", "custom") + (f", tool mu {tool:g}" if tool >= 0 else "")
-    key = (glass, domain, {"none": "regular"}.get(cut["grooves"]["shape"], cut["grooves"]["shape"]), depth_mm)
+    key = condition_of(summary)
     work_j = results["main_force_N"] * travel_m
     if "energy_tool_work_steady_J" in results:  # the books: their own work (the same samples, to one)
         work_j = results["energy_tool_work_steady_J"]
@@ -82,12 +72,36 @@ def cut_energy(folder):
     return key, scene.get("specimen", {}).get("seed", spec["seed"]), work_j, energy
 
 
-def folders(paths):
+def condition_of(summary):
+    """A cut's condition from its summary: (glass, window, surface, depth of cut in mm)."""
+    material, cut = summary["material"], summary["cut"]
+    depth_mm = cut["cut"]["depth_of_cut_mm"]
+    window = cut.get("active_window", {})
+    # The domain by its size in mm (ahead, behind, below; the seed-000 study's large window is 1.4/0.7/1.0 mm at both
+    # depths), or "whole" when every disk is active.
+    domain = "/".join(f"{window[k] * depth_mm:.2g}" for k in ("ahead_depths", "behind_depths", "below_depths")) + \
+        " mm" if window.get("enabled") else "whole"
+    # The tool's friction when it has its own (tool.friction_coefficient), else the glass's; crushing grains.
+    tool = cut.get("tool", {}).get("friction_coefficient", -1)
+    grains = window.get("grain_strength_MPa", 0)
+    glass = material.get("name", "custom") + (f", tool mu {tool:g}" if tool >= 0 else "") + \
+        (f", grains crush at {grains:g} MPa" if grains > 0 else "") + \
+        (", loose fragments removed" if window.get("remove_loose_fragments") else "")
+    # The surface, with its laser-affected layer if it has one (grooves.damage_depth_um, damage_broken_fraction).
+    grooves = cut["grooves"]
+    surface = {"none": "regular"}.get(grooves["shape"], grooves["shape"])
+    if grooves.get("damage_depth_um", 0) > 0:
+        surface += f" ({grooves['damage_depth_um']:g} um layer, {grooves.get('damage_broken_fraction', 1):g} broken)"
+    return glass, domain, surface, depth_mm
+
+
+def folders(paths, needs="cracks.csv"):
+    """The cut output folders among `paths` (a cut's own, or a study's items/*/) that have summary.json and `needs`."""
     for p in map(pathlib.Path, paths):
-        if (p / "summary.json").is_file() and (p / "cracks.csv").is_file():
+        if (p / "summary.json").is_file() and (p / needs).is_file():
             yield p
         for item in sorted((p / "items").glob("*")):
-            if (item / "summary.json").is_file() and (item / "cracks.csv").is_file():
+            if (item / "summary.json").is_file() and (item / needs).is_file():
                 yield item
 
 

@@ -1,0 +1,98 @@
+#!/usr/bin/env python3
+"""How intermittent a steady cut's force is, from its own forces.csv (issue 41 item 4): how much of the tool's work a
+few jams do.
+
+    python3 bench/cut_bursts.py DIR [DIR ...] [--csv OUT.csv]
+
+Each DIR is a cut's output folder (summary.json, forces.csv) or a study's (DIR/items/*/). Per cut, over the steady
+part (the travel the summary's means cover), the travel is cut into bins of a tenth of the depth of cut and the tool's
+work in each (main force x travel, summed over the bin's samples) is found. Reported:
+
+* work_share_top_1pc: the share of the steady work done in the 1 % of the bins that hold the most (1 % if the force
+  were steady; about half in kerf's undamped cuts, docs/notes/2026-11-29-jams.md);
+* travel_share_half_work: the smallest share of the travel (in bins) that holds half the work (0.5 if steady);
+* peak_main_force_N: the largest sample of the main force (per the cut's width, as the forces).
+
+Per condition (bench/cut_energy.py's: glass, window, surface, depth) each with its 95 % interval over packings.
+"""
+import argparse
+import csv
+import json
+import pathlib
+import sys
+
+import numpy as np
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+import cut_energy as ce  # noqa: E402
+import seed000_trends as st  # noqa: E402
+
+MEASURES = ("work_share_top_1pc", "travel_share_half_work", "peak_main_force_N", "main_force_N")
+
+
+def work_bins(travel_mm, main_force_n, bin_mm):
+    """The tool's work per bin of travel [N mm per mm of width], over whole bins from the first sample (the samples
+    are equally spaced in travel: a bin is a whole number of them)."""
+    step = float(np.median(np.diff(travel_mm)))
+    per_bin = max(1, round(bin_mm / step))
+    whole = travel_mm.size // per_bin * per_bin
+    return (main_force_n[:whole] * step).reshape(-1, per_bin).sum(axis=1)
+
+
+def concentration(work):
+    """(share of the work in the top 1 % of bins, smallest share of bins holding half the work)."""
+    ranked = np.sort(work)[::-1]
+    total = ranked.sum()
+    if total <= 0:
+        return float("nan"), float("nan")
+    top = max(1, len(ranked) // 100)
+    half = int(np.searchsorted(np.cumsum(ranked) / total, 0.5)) + 1
+    return float(ranked[:top].sum() / total), half / len(ranked)
+
+
+def cut_bursts(folder):
+    """One cut: its condition, seed and measures over the steady part."""
+    summary = json.loads((folder / "summary.json").read_text())
+    results = summary["results"]
+    forces = np.loadtxt(folder / "forces.csv", delimiter=",", skiprows=1, ndmin=2)
+    travel, main = forces[:, 0], forces[:, 2]
+    steady = (travel >= results["steady_from_travel_mm"]) & (travel <= results["steady_to_travel_mm"])
+    bin_mm = 0.1 * summary["cut"]["cut"]["depth_of_cut_mm"]
+    top, half = concentration(work_bins(travel[steady], main[steady], bin_mm))
+    seed = summary.get("study_item", {}).get("scene", {}).get("specimen", {}).get("seed", summary["specimen"]["seed"])
+    measures = {"work_share_top_1pc": top, "travel_share_half_work": half,
+                "peak_main_force_N": float(main[steady].max()), "main_force_N": results["main_force_N"]}
+    return ce.condition_of(summary), seed, measures
+
+
+def table(cuts):
+    """Per condition: {measure: st.Estimate over packings}."""
+    by = {}
+    for key, _, m in cuts:
+        by.setdefault(key, []).append(m)
+    return {k: {name: st.mean_of([m[name] for m in rows]) for name in MEASURES} for k, rows in sorted(by.items())}
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("dirs", nargs="+")
+    ap.add_argument("--csv", help="also write one row per cut here")
+    a = ap.parse_args(argv)
+    cuts = [cut_bursts(f) for f in ce.folders(a.dirs, needs="forces.csv")]
+    if a.csv:
+        with open(a.csv, "w", newline="") as f:
+            w = csv.writer(f)
+            w.writerow(["glass", "window", "surface", "depth_of_cut_mm", "seed", *MEASURES])
+            for key, seed, m in cuts:
+                w.writerow([*key, seed, *(m[name] for name in MEASURES)])
+    print("steady part, bins of 0.1 depth of cut: mean over packings [95 % interval]")
+    for key, row in table(cuts).items():
+        def fmt(e):
+            return f"{e.value:.3g}" + (f" [{e.low:.3g}, {e.high:.3g}]" if e.resolved() else "")
+        print(f"  {' '.join(map(str, key))}: n {row['main_force_N'].n}, " +
+              ", ".join(f"{name} {fmt(e)}" for name, e in row.items()))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

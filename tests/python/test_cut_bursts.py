@@ -1,0 +1,57 @@
+"""bench/cut_bursts.py: the concentration of a cut's work, on synthetic force records with a known answer."""
+import json
+import pathlib
+import sys
+
+import numpy as np
+import pytest
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "bench"))
+import cut_bursts as cb  # noqa: E402
+
+
+def write_cut(folder, force, travel_mm, seed=1, steady_from_mm=0.0):
+    """A cut at 0.1 mm depth of cut (bins of 0.01 mm) with the main force `force` sampled at `travel_mm`."""
+    folder.mkdir(parents=True)
+    summary = {"material": {"name": "glass"}, "specimen": {"seed": seed},
+               "cut": {"cut": {"depth_of_cut_mm": 0.1}, "grooves": {"shape": "none"},
+                       "active_window": {"enabled": True, "ahead_depths": 7, "behind_depths": 3, "below_depths": 4}},
+               "results": {"main_force_N": float(np.mean(force)), "steady_from_travel_mm": steady_from_mm,
+                           "steady_to_travel_mm": float(travel_mm[-1])}}
+    (folder / "summary.json").write_text(json.dumps(summary))
+    rows = ["tool_travel_mm,time_s,main_force_N,thrust_force_N"]
+    rows += [f"{x!r},0,{f!r},0" for x, f in zip(travel_mm, force)]
+    (folder / "forces.csv").write_text("\n".join(rows) + "\n")
+
+
+def test_a_steady_force_spreads_its_work_and_a_spiky_one_concentrates_it(tmp_path):
+    travel = np.arange(0, 100000) * 1e-4  # 10 mm in 0.1 um samples: 1000 bins of 0.01 mm
+    write_cut(tmp_path / "steady", np.full(travel.size, 0.5), travel)
+    _, _, m = cb.cut_bursts(tmp_path / "steady")
+    assert m["work_share_top_1pc"] == pytest.approx(0.01, rel=0.02)  # 10 bins of 1000
+    assert m["travel_share_half_work"] == pytest.approx(0.5, abs=0.002)
+    # A background of 0.1 N (1 N mm over the 10 mm) plus 10 spikes of 0.9 N mm each, each within one bin: the top 1 %
+    # of the bins (10 of 1000) hold the spikes and their background, (10 x 0.9 + 10 x 0.001) / 10.
+    spiky = np.full(travel.size, 0.1)
+    for k in range(10):
+        start = 5000 + 9000 * k
+        spiky[start:start + 50] += 0.9 / (50 * 1e-4)
+    write_cut(tmp_path / "spiky", spiky, travel, seed=2)
+    _, _, s = cb.cut_bursts(tmp_path / "spiky")
+    assert s["work_share_top_1pc"] == pytest.approx((10 * 0.9 + 10 * 0.001) / 10, rel=1e-9)
+    assert s["travel_share_half_work"] == pytest.approx(6 / 1000, abs=1e-9)  # 5 spikes hold 45 %, the 6th passes 50
+    assert s["peak_main_force_N"] == pytest.approx(spiky.max())
+
+
+def test_the_steady_part_only_and_one_condition_over_packings(tmp_path):
+    travel = np.arange(0, 20000) * 1e-4
+    force = np.full(travel.size, 0.2)
+    force[:5000] = 50.0  # the entry, before the steady part begins at 0.5 mm: left out
+    for seed in (1, 2):
+        write_cut(tmp_path / "study" / "items" / f"c_{seed}", force, travel, seed=seed, steady_from_mm=0.5)
+    cuts = [cb.cut_bursts(f) for f in cb.ce.folders([tmp_path / "study"], needs="forces.csv")]
+    assert len(cuts) == 2
+    assert cuts[0][2]["peak_main_force_N"] == pytest.approx(0.2)
+    (key, row), = cb.table(cuts).items()
+    assert key[2] == "regular" and row["travel_share_half_work"].n == 2
+    assert row["travel_share_half_work"].value == pytest.approx(0.5, abs=0.01)
