@@ -58,21 +58,29 @@ double Simulation::strain_energy() const {
   return e;
 }
 
+std::vector<std::pair<std::size_t, double>> Simulation::wall_overlaps() const {
+  std::vector<std::pair<std::size_t, double>> touching;
+  for (std::size_t k = 0; k < wall_contacts_.size(); ++k) {
+    const Wall& w = walls_[static_cast<std::size_t>(wall_contacts_[k][0])];
+    const auto u = static_cast<std::size_t>(wall_contacts_[k][1]);
+    if (!w.enabled) continue;
+    // As wall_loop: the disk against a wall of zero radius.
+    const auto q = closest_on_segment(w, p_.x[u], p_.y[u]);
+    const double overlap = p_.radius[u] - std::hypot(p_.x[u] - q[0], p_.y[u] - q[1]);
+    if (overlap > 0) touching.emplace_back(k, overlap);
+  }
+  return touching;
+}
+
 double Simulation::wall_contact_energy() const {
   double e = 0;
   const double t = opt_.thickness_m;
   std::visit(
       [&](const auto& law) {
-        for (std::size_t k = 0; k < wall_contacts_.size(); ++k) {
-          const Wall& w = walls_[static_cast<std::size_t>(wall_contacts_[k][0])];
-          const auto u = static_cast<std::size_t>(wall_contacts_[k][1]);
-          if (!w.enabled) continue;
-          const auto q = closest_on_segment(w, p_.x[u], p_.y[u]);
-          const double overlap = p_.radius[u] - std::hypot(p_.x[u] - q[0], p_.y[u] - q[1]);
-          // As wall_loop: the disk against a wall of zero radius, with the wall's own friction (which the
-          // energy does not depend on).
-          if (overlap > 0) e += contact_energy(law, p_.radius[u], 0.0, t, overlap, wall_shear_[k]);
-        }
+        // With the material's law: the wall's own friction does not change the stored energy.
+        for (const auto& [k, overlap] : wall_overlaps())
+          e += contact_energy(law, p_.radius[static_cast<std::size_t>(wall_contacts_[k][1])], 0.0, t, overlap,
+                              wall_shear_[k]);
       },
       material_.contact);
   return e;
@@ -83,13 +91,8 @@ std::vector<Simulation::WallContactLoad> Simulation::wall_contact_loads() const 
   const double t = opt_.thickness_m;
   std::visit(
       [&](const auto& law) {
-        for (std::size_t k = 0; k < wall_contacts_.size(); ++k) {
-          const Wall& w = walls_[static_cast<std::size_t>(wall_contacts_[k][0])];
+        for (const auto& [k, overlap] : wall_overlaps()) {
           const auto u = static_cast<std::size_t>(wall_contacts_[k][1]);
-          if (!w.enabled) continue;
-          const auto q = closest_on_segment(w, p_.x[u], p_.y[u]);
-          const double overlap = p_.radius[u] - std::hypot(p_.x[u] - q[0], p_.y[u] - q[1]);
-          if (overlap <= 0) continue;
           double shear = wall_shear_[k];  // a copy: no shear increment, the state untouched
           loads.push_back({wall_contacts_[k][0], wall_contacts_[k][1],
                            contact_update(law, p_.radius[u], 0.0, t, overlap, 0.0, shear).normal_force_n});

@@ -18,6 +18,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "kerf/dem/laws/contact_laws.hpp"
@@ -239,6 +240,8 @@ class Simulation {
 
  private:
   void rebuild_neighbours();
+  /// The enabled disk-wall contacts that touch: (index in the wall contact list, overlap [m]).
+  std::vector<std::pair<std::size_t, double>> wall_overlaps() const;
   /// Breaks found and joints retired by one force evaluation (summed over threads).
   struct ForceCounts {
     int n_breaking = 0, n_retired = 0;
