@@ -82,7 +82,8 @@ struct ToughnessSample {
                                         ///< (the mean over the sample's steps)
   double support_load_n;                ///< the two supports' reaction together (= load when quasi-static)
   double external_work_j;               ///< integral of the load over the deflection so far
-  double strain_energy_j, kinetic_energy_j;
+  double stored_elastic_energy_j;       ///< Simulation::stored_elastic_energy (the rollers' contacts included)
+  double kinetic_energy_j;
   int n_cracks;                         ///< broken joint elements beyond the notch
   double smoothed_load_n = 0;           ///< the load averaged over peak_window_um about this deflection (at the end)
 };
