@@ -106,19 +106,13 @@ TEST_CASE("toughness: a small notched beam breaks through its ligament, in equil
 
 TEST_CASE("toughness: loaded elastically, the load roller's work is what the beam stores, rollers' springs included",
           "[toughness]") {
-  // The small beam of the test above, frictionless (disks, rollers, joint elements), its joints too strong to
-  // break, no damping: nothing dissipates, so the books' G_c (the work less the change of the stored elastic and
+  // The small beam of the test above, where nothing dissipates (conservative_material: no friction, rollers'
+  // included, no fracture, no damping), so the books' G_c (the work less the change of the stored elastic and
   // kinetic energy) is the integrator's error only. The rollers' contact springs hold a share of the stored energy:
   // books without it (joints and disk-disk contacts only, kerf 6d40fad) gave G_c = 0.70 % of the work (measured).
   SpecimenSpec spec = kerf::dem::testing::quick_random_spec(0.86e-3, 0.2e-3, 3);
-  Material m;
-  m.local_damping = 0;
-  std::get<LinearContactParams>(m.contact).friction_coefficient = 0;
-  auto& joint = std::get<FlatJointParams>(m.joint);
-  joint.residual_friction_coefficient = 0;
-  joint.bond.tensile_strength_pa = joint.bond.cohesion_pa = 1e15;
   SpecimenReport report;
-  const Simulation beam = make_specimen(m, spec, report);
+  const Simulation beam = make_specimen(kerf::dem::testing::conservative_material(), spec, report);
   ToughnessSpec t;
   t.notch_depth_m = 0.08e-3;
   t.roller_radius_m = 0.03e-3;
