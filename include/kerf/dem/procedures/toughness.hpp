@@ -128,8 +128,8 @@ class ToughnessRun {
   ToughnessResult res_;
   std::vector<int> load_walls_, support_walls_;
   double t0_ = 0, load_prev_ = 0;
-  double low_since_m_ = -1;
-  double through_y_m_ = 0, crack_band_m_ = 0;  ///< where a crack counts as through the ligament  ///< deflection since which the load has stayed below the stop fraction; -1: not
+  double low_since_m_ = -1;  ///< deflection since which the load has stayed below the stop fraction; -1: not
+  double through_y_m_ = 0, crack_band_m_ = 0;  ///< where a crack counts as through the ligament
   std::size_t counted_ = 0;
   int n_cracks_ = 0;
   bool finished_ = false;
