@@ -1,5 +1,5 @@
-// What the DEM engine reports of its state: the forces on held groups, kinetic and strain energy, touching pairs,
-// the coordination number, a disk's contacts, the average stress.
+// What the DEM engine reports of its state: the forces on held groups, kinetic and stored elastic energy, touching
+// pairs, the coordination number, a disk's contacts, the average stress.
 #include <algorithm>
 #include <cmath>
 
@@ -26,7 +26,11 @@ double Simulation::kinetic_energy() const {
   return e;
 }
 
-double Simulation::strain_energy() const {
+double Simulation::stored_elastic_energy() const {
+  return joint_and_contact_energy() + wall_contact_energy();
+}
+
+double Simulation::joint_and_contact_energy() const {
   double e = 0;
   const auto stride = static_cast<std::size_t>(b_.stride);
   std::visit(

@@ -41,13 +41,13 @@ std::pair<double, double> mean_and_sem(const std::vector<double>& v) {
 
 std::string curve_csv(const std::vector<std::pair<std::uint64_t, const ToughnessResult*>>& runs) {
   std::ostringstream out;
-  out << "seed,time_s,deflection_um,load_N,smoothed_load_N,support_load_N,external_work_J,strain_energy_J,"
+  out << "seed,time_s,deflection_um,load_N,smoothed_load_N,support_load_N,external_work_J,stored_elastic_energy_J,"
          "kinetic_energy_J,n_cracks\n";
   for (const auto& [seed, r] : runs)
     for (const auto& s : r->curve)
       out << fmt::format("{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{}\n", seed, s.time_s,
-                         units::m_to_um(s.deflection_m), s.load_n, s.smoothed_load_n, s.support_load_n, s.external_work_j,
-                         s.strain_energy_j, s.kinetic_energy_j, s.n_cracks);
+                         units::m_to_um(s.deflection_m), s.load_n, s.smoothed_load_n, s.support_load_n,
+                         s.external_work_j, s.stored_elastic_energy_j, s.kinetic_energy_j, s.n_cracks);
   return out.str();
 }
 

@@ -676,7 +676,7 @@ CutEnergy cut_energy_between(const CutEnergyBooks& from, const CutEnergyBooks& t
 CutEnergyBooks CutRun::books_now() const {
   CutEnergyBooks b = books_;
   b.kinetic_j = sim_.kinetic_energy();
-  b.strain_j = sim_.strain_energy() + sim_.wall_contact_energy();
+  b.strain_j = sim_.stored_elastic_energy();
   return b;
 }
 

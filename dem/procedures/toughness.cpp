@@ -178,7 +178,7 @@ ToughnessRun::ToughnessRun(const Simulation& specimen, const ToughnessSpec& spec
                          (spec.quasi_static_check ? " at the quasi-static check's half speed" : ""));
   counted_ = sim_.cracks().size();
   t0_ = sim_.time();
-  res_.curve.push_back({0, 0, 0, 0, 0, sim_.strain_energy(), sim_.kinetic_energy(), 0, 0});
+  res_.curve.push_back({0, 0, 0, 0, 0, sim_.stored_elastic_energy(), sim_.kinetic_energy(), 0, 0});
 }
 
 double ToughnessRun::roller_force(const std::vector<int>& walls) const {
@@ -210,8 +210,8 @@ bool ToughnessRun::advance() {
   }
   n_cracks_ = static_cast<int>(sim_.cracks().size() - counted_);
   const double elapsed = sim_.time() - t0_, deflection = v * elapsed, load = load_sum / spec_.sample_every_steps;
-  res_.curve.push_back({elapsed, deflection, load, support_sum / spec_.sample_every_steps, work, sim_.strain_energy(),
-                        sim_.kinetic_energy(), n_cracks_, 0});
+  res_.curve.push_back({elapsed, deflection, load, support_sum / spec_.sample_every_steps, work,
+                        sim_.stored_elastic_energy(), sim_.kinetic_energy(), n_cracks_, 0});
   if (load > res_.raw_peak_load_n) res_.raw_peak_load_n = load;
   if (res_.through_sample < 0 && res_.crack_tip_y_m >= through_y_m_)
     res_.through_sample = static_cast<int>(res_.curve.size()) - 1;
@@ -259,7 +259,8 @@ void ToughnessRun::finish() {
   // hinge the broken halves make under the load roller (friction, contacts), not into the crack.
   const ToughnessSample &start = r.curve.front(),
                         &end = r.through_sample >= 0 ? r.curve[static_cast<std::size_t>(r.through_sample)] : r.curve.back();
-  const double kept = end.strain_energy_j - start.strain_energy_j + end.kinetic_energy_j - start.kinetic_energy_j;
+  const double kept =
+      end.stored_elastic_energy_j - start.stored_elastic_energy_j + end.kinetic_energy_j - start.kinetic_energy_j;
   r.fracture_energy_j_per_m2 = (end.external_work_j - kept) / ligament_area;
   r.work_of_fracture_j_per_m2 = end.external_work_j / ligament_area;
   r.irwin_energy_j_per_m2 = r.fracture_toughness_pa_sqrt_m * r.fracture_toughness_pa_sqrt_m / spec_.youngs_modulus_pa;

@@ -38,7 +38,9 @@ Simulation chain(int n) {
   return sim;
 }
 
-double energy(const Simulation& sim) { return sim.kinetic_energy() + sim.strain_energy(); }
+double energy(const Simulation& sim) {
+  return sim.kinetic_energy() + sim.stored_elastic_energy();
+}
 
 /// The inner lines of a cut workpiece's held rows, from the specimen itself (seed 000 Section 4: centres within
 /// two largest radii of the left side or the bottom).

@@ -235,20 +235,14 @@ TEST_CASE("cutting: force signs (material resisting the tool gives positive main
 }
 
 TEST_CASE("cutting: without friction or fracture, the tool's work is the energy the workpiece stores", "[cutting]") {
-  // Frictionless disks, tool and joint elements, joints too strong to break, every disk integrated, no
-  // damping: nothing dissipates, so the books' dissipated energy is the integrator's error only (the tool's
-  // contacts included: without their springs' energy, 7.5 % of the work went missing).
+  // Nothing dissipates (conservative_material: no friction, no fracture, no damping; every disk integrated), so
+  // the books' dissipated energy is the integrator's error only (the tool's contacts included: without their
+  // springs' energy, 7.5 % of the work went missing).
   SpecimenSpec spec = kerf::dem::testing::quick_random_spec(0.4e-3, 0.2e-3, 3);
   spec.radius_min_m = 10e-6;
   spec.radius_max_m = 13e-6;
-  Material m;
-  m.local_damping = 0;
-  std::get<LinearContactParams>(m.contact).friction_coefficient = 0;
-  auto& joint = std::get<FlatJointParams>(m.joint);
-  joint.residual_friction_coefficient = 0;
-  joint.bond.tensile_strength_pa = joint.bond.cohesion_pa = 1e15;
   SpecimenReport report;
-  const Simulation specimen = make_specimen(m, spec, report);
+  const Simulation specimen = make_specimen(kerf::dem::testing::conservative_material(), spec, report);
   CutParams p;
   p.depth_of_cut_m = 0.03e-3;
   p.speed_m_per_s = 2;

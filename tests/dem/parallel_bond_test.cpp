@@ -198,12 +198,12 @@ TEST_CASE("parallel bond: energy is conserved without damping, bond and contact 
     sim.set_time_step(sim.time_step() * dt_fraction);
     auto& p = sim.particles();
     for (std::size_t i = 0; i < p.size(); ++i) p.vx[i] = 0.02 * u(rng), p.vy[i] = 0.02 * u(rng), p.omega[i] = 200 * u(rng);
-    const double e0 = sim.kinetic_energy() + sim.strain_energy();
+    const double e0 = sim.kinetic_energy() + sim.stored_elastic_energy();
     double worst = 0;
     const auto steps = static_cast<int>(std::lround(100 / dt_fraction));
     for (int k = 0; k < 20; ++k) {
       sim.run(steps);
-      worst = std::max(worst, std::abs(sim.kinetic_energy() + sim.strain_energy() - e0) / e0);
+      worst = std::max(worst, std::abs(sim.kinetic_energy() + sim.stored_elastic_energy() - e0) / e0);
     }
     REQUIRE(sim.cracks().empty());
     REQUIRE(sim.n_touching_pairs() > 30);  // the contacts beside the bonds are really there

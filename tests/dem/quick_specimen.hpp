@@ -18,6 +18,18 @@ inline SpecimenSpec quick_random_spec(double width_m, double height_m, std::uint
   return spec;
 }
 
+/// The default material with nothing to dissipate energy: frictionless disks, walls and joint elements, joints too
+/// strong to break, no damping (for tests of the energy books: the work done on it is what it stores).
+inline Material conservative_material() {
+  Material m;
+  m.local_damping = 0;
+  std::get<LinearContactParams>(m.contact).friction_coefficient = 0;
+  auto& joint = std::get<FlatJointParams>(m.joint);
+  joint.residual_friction_coefficient = 0;
+  joint.bond.tensile_strength_pa = joint.bond.cohesion_pa = 1e15;
+  return m;
+}
+
 /// A small random specimen with the seed-000 workpiece's disk radii (10-13 um), default material.
 inline Simulation quick_workpiece_specimen(double width_m, double height_m, std::uint64_t seed) {
   SpecimenSpec spec = quick_random_spec(width_m, height_m, seed);

@@ -193,12 +193,12 @@ class Simulation {
   /// Sum of contact forces on the particles of prescribed-velocity group g [N].
   std::array<double, 2> group_force(std::uint8_t g) const;
   double kinetic_energy() const;
-  /// Elastic energy of bonded elements plus unjointed disk-disk contacts (normal and shear springs), for energy
-  /// checks [J].
-  double strain_energy() const;
-  /// Elastic energy of the disk-wall contacts (normal and shear springs) [J]: what a pressing tool or platen
-  /// stores in the disks it touches.
-  double wall_contact_energy() const;
+  /// The elastic energy every spring holds [J]: the joints', the unjointed disk-disk contacts' and the disk-wall
+  /// contacts' (normal and shear springs; a wall is a disk of zero radius to its contact law). What every energy
+  /// book counts as stored (a cut's, a toughness test's): without the walls' part the springs between the disks
+  /// and a pressing tool, platen or roller are booked as dissipated (7.5 % of the work of the tool in
+  /// tests/dem/cutting_test.cpp's frictionless cut).
+  double stored_elastic_energy() const;
   /// A disk-wall contact's normal force now [N] (compression positive), from its overlap by the contact law.
   struct WallContactLoad {
     std::int32_t wall = 0, disk = 0;
@@ -242,6 +242,9 @@ class Simulation {
   void rebuild_neighbours();
   /// The enabled disk-wall contacts that touch: (index in the wall contact list, overlap [m]).
   std::vector<std::pair<std::size_t, double>> wall_overlaps() const;
+  /// stored_elastic_energy's parts: the joints' and disk-disk contacts', the disk-wall contacts'.
+  double joint_and_contact_energy() const;
+  double wall_contact_energy() const;
   /// Breaks found and joints retired by one force evaluation (summed over threads).
   struct ForceCounts {
     int n_breaking = 0, n_retired = 0;

@@ -173,8 +173,8 @@ struct TravelWindow {
 /// the energy each broken joint element held, the absorbing layers, the integrator's error), and, in a windowed
 /// cut, the kinetic and the strain energy of the disks that leave the integration when the window moves on
 /// (removed chips, disks frozen into the frame or the reservoir), less what joining disks bring. Running totals
-/// and the integrated disks' energies at one moment (Simulation::kinetic_energy; strain: strain_energy, joints
-/// and disk-disk contacts, plus wall_contact_energy, the tool's contacts).
+/// and the integrated disks' energies at one moment (Simulation::kinetic_energy; strain:
+/// Simulation::stored_elastic_energy, the tool's contacts included).
 struct CutEnergyBooks {
   double tool_work_j = 0, left_kinetic_j = 0, left_strain_j = 0;
   double kinetic_j = 0, strain_j = 0;

@@ -82,7 +82,8 @@ struct ToughnessSample {
                                         ///< (the mean over the sample's steps)
   double support_load_n;                ///< the two supports' reaction together (= load when quasi-static)
   double external_work_j;               ///< integral of the load over the deflection so far
-  double strain_energy_j, kinetic_energy_j;
+  double stored_elastic_energy_j;       ///< Simulation::stored_elastic_energy (the rollers' contacts included)
+  double kinetic_energy_j;
   int n_cracks;                         ///< broken joint elements beyond the notch
   double smoothed_load_n = 0;           ///< the load averaged over peak_window_um about this deflection (at the end)
 };
@@ -127,8 +128,8 @@ class ToughnessRun {
   ToughnessResult res_;
   std::vector<int> load_walls_, support_walls_;
   double t0_ = 0, load_prev_ = 0;
-  double low_since_m_ = -1;
-  double through_y_m_ = 0, crack_band_m_ = 0;  ///< where a crack counts as through the ligament  ///< deflection since which the load has stayed below the stop fraction; -1: not
+  double low_since_m_ = -1;  ///< deflection since which the load has stayed below the stop fraction; -1: not
+  double through_y_m_ = 0, crack_band_m_ = 0;  ///< where a crack counts as through the ligament
   std::size_t counted_ = 0;
   int n_cracks_ = 0;
   bool finished_ = false;
