@@ -698,9 +698,14 @@ void CutRun::crush_grains() {
   if (pressed.empty()) return;
   std::sort(pressed.begin(), pressed.end());
   pressed.erase(std::unique(pressed.begin(), pressed.end()), pressed.end());
-  // What the crushed grains held leaves the integration with them (the books, as a rebuild's).
+  take_window(window_->crush(sim_, pressed));  // what the crushed grains held leaves with them
+}
+
+void CutRun::take_window(Simulation next) {
+  // What the disks leaving the integration take with them (less what joining disks bring): the books. `next` was
+  // built from sim_ without changing it.
   const CutEnergyBooks before = books_now();
-  sim_ = window_->crush(sim_, pressed);
+  sim_ = std::move(next);
   const CutEnergyBooks after = books_now();
   books_.left_kinetic_j += before.kinetic_j - after.kinetic_j;
   books_.left_strain_j += before.strain_j - after.strain_j;
@@ -711,14 +716,7 @@ bool CutRun::advance() {
   const auto start = std::chrono::steady_clock::now();
   if (window_) {
     const double x_edge = edge()[0];
-    if (window_->due(x_edge)) {
-      // What the disks leaving the integration take with them (less what joining disks bring): the books.
-      const CutEnergyBooks before = books_now();
-      sim_ = window_->build(&sim_, x_edge);
-      const CutEnergyBooks after = books_now();
-      books_.left_kinetic_j += before.kinetic_j - after.kinetic_j;
-      books_.left_strain_j += before.strain_j - after.strain_j;
-    }
+    if (window_->due(x_edge)) take_window(window_->build(&sim_, x_edge));
   }
   res_.particle_steps += static_cast<double>(sim_.particles().size()) * params_.sample_every_steps;
   double fx = 0, fy = 0;

@@ -264,6 +264,16 @@ TEST_CASE("cut window: loose grains the tool presses beyond their splitting load
   REQUIRE(weak.energy_booked);
   const CutEnergy& e = weak.energy;
   CHECK_THAT(e.dissipated_j + e.left_kinetic_j + e.left_strain_j + e.stored_change_j, WithinRel(e.tool_work_j, 1e-12));
+  // Restored halfway (the crushed grains are in the window's removal flags), it goes on to the bit.
+  CutParams q = p;
+  q.window_grain_strength_pa = 1e6;
+  CutRun half(specimen, q);
+  for (std::size_t k = 0; k < weak.samples.size() / 2; ++k) half.advance();
+  CutRun restored = CutRun::deserialize(half.serialize());
+  while (restored.advance()) {
+  }
+  CHECK(restored.result().samples.back().main_force_n == weak.samples.back().main_force_n);
+  CHECK(restored.result().window.chips.crushed_grains == weak.window.chips.crushed_grains);
   p.active_window = false;
   p.window_grain_strength_pa = 85e6;
   CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains("active_window.grain_strength_MPa = 85"));

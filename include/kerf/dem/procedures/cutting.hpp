@@ -301,6 +301,8 @@ class CutRun {
   std::int32_t first_tool_wall_ = 0, n_tool_walls_ = 0;
   /// Crushes the loose disks the tool presses beyond their splitting load (CutParams::window_grain_strength_pa).
   void crush_grains();
+  /// Runs `next` (a window built from the running one) in its place, booking what leaves with the disks it drops.
+  void take_window(Simulation next);
   double t0_ = 0;
   bool finished_ = false;
   /// The energy books: running (tool work, left), and at the steady part's start (its first sample).
