@@ -86,7 +86,8 @@ def condition_of(summary):
     grains = window.get("grain_strength_MPa", 0)
     glass = material.get("name", "custom") + (f", tool mu {tool:g}" if tool >= 0 else "") + \
         (f", grains crush at {grains:g} MPa" if grains > 0 else "") + \
-        (", loose fragments removed" if window.get("remove_loose_fragments") else "")
+        (", loose fragments removed" if window.get("remove_loose_fragments") else "") + \
+        (f", absorbing layer {window['absorbing_depths']:g} depths" if window.get("absorbing_depths", 0) > 0 else "")
     # The surface, with its laser-affected layer if it has one (grooves.damage_depth_um, damage_broken_fraction).
     grooves = cut["grooves"]
     surface = {"none": "regular"}.get(grooves["shape"], grooves["shape"])
