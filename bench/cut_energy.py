@@ -81,10 +81,13 @@ def condition_of(summary):
     # depths), or "whole" when every disk is active.
     domain = "/".join(f"{window[k] * depth_mm:.2g}" for k in ("ahead_depths", "behind_depths", "below_depths")) + \
         " mm" if window.get("enabled") else "whole"
-    # The tool's friction when it has its own (tool.friction_coefficient), else the glass's; crushing grains.
+    # The tool's friction when it has its own (tool.friction_coefficient), else the glass's; its edge radius;
+    # crushing grains; the window's options.
     tool = cut.get("tool", {}).get("friction_coefficient", -1)
+    edge = cut.get("tool", {}).get("edge_radius_um", 0)
     grains = window.get("grain_strength_MPa", 0)
     glass = material.get("name", "custom") + (f", tool mu {tool:g}" if tool >= 0 else "") + \
+        (f", edge radius {edge:g} um" if edge > 0 else "") + \
         (f", grains crush at {grains:g} MPa" if grains > 0 else "") + \
         (", loose fragments removed" if window.get("remove_loose_fragments") else "") + \
         (f", absorbing layer {window['absorbing_depths']:g} depths" if window.get("absorbing_depths", 0) > 0 else "")
