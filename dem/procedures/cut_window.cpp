@@ -101,26 +101,11 @@ void CutWindow::sync(const Simulation& current) {
 }
 
 void CutWindow::remove_loose_fragments() {
+  // The removed disks are out of the workpiece: no path runs through them, and a crushed grain stays counted as one.
+  const auto tied = full_.tied_to_held(removed_);
   const Particles& q = full_.particles();
-  const BondStore& fb = full_.bonds();
-  // Breadth-first from every held disk along the joints that still hold (an element bonded).
-  std::vector<std::uint8_t> tied(q.size(), 0);
-  std::vector<std::int32_t> queue;
   for (std::size_t g = 0; g < q.size(); ++g)
-    if (q.group[g] != 0 && !removed_[g]) tied[g] = 1, queue.push_back(static_cast<std::int32_t>(g));
-  for (std::size_t head = 0; head < queue.size(); ++head) {
-    const auto g = static_cast<std::size_t>(queue[head]);
-    for (auto k = bond_start_[g]; k < bond_start_[g + 1]; ++k) {
-      const auto b = static_cast<std::size_t>(bond_list_[static_cast<std::size_t>(k)]);
-      if (!fb.active[b] || fb.n_bonded_elements(b) == 0) continue;
-      const auto other = static_cast<std::size_t>(fb.i[b] == static_cast<std::int32_t>(g) ? fb.j[b] : fb.i[b]);
-      if (tied[other] || removed_[other]) continue;
-      tied[other] = 1;
-      queue.push_back(static_cast<std::int32_t>(other));
-    }
-  }
-  for (std::size_t g = 0; g < q.size(); ++g)
-    if (!tied[g] && q.y[g] > y_cut_m_) removed_[g] = 1;
+    if (!tied[g] && !removed_[g] && q.y[g] > y_cut_m_) removed_[g] = 1;
 }
 
 // Long (~150 lines) for a reason: its stages (candidates, roles, disks, joints, springs, absorbing layers, kept

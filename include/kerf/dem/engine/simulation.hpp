@@ -206,8 +206,9 @@ class Simulation {
   };
   /// The disk-wall contacts that touch (positive overlap) with their normal forces.
   std::vector<WallContactLoad> wall_contact_loads() const;
-  /// Per disk: 1 if a path of joints with a bonded element ties it to a held disk (group != 0), else 0.
-  std::vector<std::uint8_t> tied_to_held() const;
+  /// Per disk: 1 if a path of joints with a bonded element ties it to a held disk (group != 0), else 0. Disks with
+  /// `excluded[u]` != 0 (when given: one flag per disk) are neither held nor on any path.
+  std::vector<std::uint8_t> tied_to_held(std::span<const std::uint8_t> excluded = {}) const;
   /// Number of active joints and of touching unjointed contacts, per particle (mean coordination number).
   double coordination_number() const;
   int n_contacts_of(std::size_t i) const;
