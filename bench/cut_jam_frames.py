@@ -1,19 +1,18 @@
 #!/usr/bin/env python3
 """A jam and what follows it, from a cut's VTK frames (issue 41 item 4; docs/notes/2026-11-29-jams.md).
 
-    python3 bench/cut_jam_frames.py DIR --zoom K1,K2 --wide K3,K4 --out FIGURE.png
+    PYTHONPATH=build/python python3 bench/cut_jam_frames.py DIR --zoom K1,K2 --wide K3,K4 --out FIGURE.png
 
 DIR is a cut's output folder written with output.frame_every_samples > 0 (frame_K.vtp, walls_K.vtp, forces.csv,
 summary.json). The figure: the frames K1, K2 near the tool's tip, the frames K3, K4 over the whole window, and the
 main force against travel between K3 and K4. Disks are coloured by whether a path of joints with a bonded element
 ties them to a held disk (the workpiece) or not (loose: chips, debris); black lines are those joints; the disks the
-tool's faces touch are outlined in green. Frames are read with a small reader of kerf's own VTK XML (appended raw
-data, UInt64 headers: dem/io).
+tool's faces touch are outlined in green. Frames are read with kerf.dem.read_frames (the kerf module, built in
+build/python).
 """
 import argparse
 import json
 import pathlib
-import re
 import sys
 
 import matplotlib
@@ -24,27 +23,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.collections import LineCollection, PatchCollection  # noqa: E402
 from matplotlib.patches import Circle  # noqa: E402
 
-TYPES = {"Float64": "<f8", "Int64": "<i8", "Int32": "<i4", "UInt8": "u1"}
-
-
-def read_vtp(path):
-    """The arrays of one of kerf's .vtp files by 'Section/Name' (e.g. 'Points/position_mm')."""
-    raw = pathlib.Path(path).read_bytes()
-    head, _, rest = raw.partition(b'<AppendedData encoding="raw">')
-    data = rest[rest.index(b"_") + 1:]
-    arrays, section = {}, None
-    for m in re.finditer(rb"<(Points|PointData|CellData|Verts|Lines)[ >]|<DataArray ([^>]*)/>", head):
-        if m.group(1):
-            section = m.group(1).decode()
-            continue
-        a = dict(re.findall(r'(\w+)="([^"]*)"', m.group(2).decode()))
-        offset = int(a["offset"])
-        size = int(np.frombuffer(data[offset:offset + 8], "<u8")[0])
-        values = np.frombuffer(data[offset + 8:offset + 8 + size], TYPES[a["type"]])
-        components = int(a.get("NumberOfComponents", 1))
-        arrays[f"{section}/{a['Name']}"] = values.reshape(-1, components) if components > 1 else values
-    return arrays
-
+import kerf  # noqa: E402
 
 def tied(n, i, j, held):
     """Per disk: tied to a held disk along the joints (i, j)."""
@@ -69,21 +48,22 @@ def segment_distance(p, a, b):
 
 
 def draw_frame(ax, folder, k, half_width_mm, below_mm, above_mm):
-    frame, walls = read_vtp(folder / f"frame_{k:04d}.vtp"), read_vtp(folder / f"walls_{k:04d}.vtp")
-    p, r = frame["Points/position_mm"][:, :2], frame["PointData/radius_mm"]
+    frame = kerf.dem.read_frames(folder, steps=[k])[0]  # frame_K.vtp is time step K
+    particles, walls = frame["particles"], frame["walls"]
+    p, r = particles["position_mm"][:, :2], particles["radius_mm"]
     n = len(p)
-    pairs = frame["Lines/connectivity"].reshape(-1, 2)
-    intact = frame["CellData/intact_elements"][n:] > 0  # the cells are the disks (verts), then the joints (lines)
-    i, j = pairs[intact, 0], pairs[intact, 1]
-    anchored = tied(n, i, j, frame["PointData/held"] > 0)
-    w = walls["Points/position_mm"][:, :2]
+    joints = particles["lines"][particles["intact_elements"] > 0]
+    i, j = joints[:, 0], joints[:, 1]
+    anchored = tied(n, i, j, particles["held"] > 0)
+    w = walls["position_mm"][:, :2]
+    faces = [(w[a], w[b]) for a, b in walls["lines"]]
     tip = w[np.argmin(w[:, 1])]
     x0, x1 = tip[0] - 2 * half_width_mm, tip[0] + 0.5 * half_width_mm
     y0, y1 = tip[1] - below_mm, tip[1] + above_mm
     show = (p[:, 0] > x0 - 0.05) & (p[:, 0] < x1 + 0.05) & (p[:, 1] > y0 - 0.05) & (p[:, 1] < y1 + 0.05)
     touching = np.zeros(n, bool)
-    for s in range(0, len(w), 2):
-        touching |= segment_distance(p, w[s], w[s + 1]) < r
+    for a, b in faces:
+        touching |= segment_distance(p, a, b) < r
     disks = PatchCollection([Circle(p[u], r[u]) for u in np.flatnonzero(show)], lw=0.2)
     disks.set_facecolor(np.where(anchored[show][:, None], [[0.45, 0.6, 0.9, 1]], [[0.9, 0.45, 0.35, 1]]))
     disks.set_edgecolor(np.where(touching[show][:, None], [[0, 0.6, 0, 1]], [[0.3, 0.3, 0.3, 1]]))
@@ -91,8 +71,8 @@ def draw_frame(ax, folder, k, half_width_mm, below_mm, above_mm):
     ax.add_collection(disks)
     keep = show[i] | show[j]
     ax.add_collection(LineCollection(np.stack([p[i[keep]], p[j[keep]]], axis=1), colors="k", lw=0.4))
-    for s in range(0, len(w), 2):
-        ax.plot(w[s:s + 2, 0], w[s:s + 2, 1], color="g", lw=1.5)
+    for a, b in faces:
+        ax.plot([a[0], b[0]], [a[1], b[1]], color="g", lw=1.5)
     ax.set_xlim(x0, x1)
     ax.set_ylim(y0, y1)
     ax.set_aspect("equal")

@@ -151,12 +151,13 @@ def _read_vtp(path):
     return out
 
 
-def _read_frames(directory):
+def _read_frames(directory, steps=None):
     """The VTK frames of a kerf-dem run: its .pvd series (result.pvd) read into numpy arrays, no VTK needed.
 
     directory: the run's output directory (or one .pvd file).
+    steps: the indices of the time steps to read, in time order (frame_K.vtp is step K); None (the default): all.
 
-    Returns a list, one dict per time step in time order: 'time_s' (float) and, per part the run wrote,
+    Returns a list, one dict per time step read, in time order: 'time_s' (float) and, per part the run wrote,
     'particles', 'walls', 'cracks' (each a dict of numpy arrays named as in the files: 'position_mm' (n, 3),
     the point arrays ('radius_mm', 'velocity_m_per_s', ...), 'lines' (m, 2) point indices of the joints or
     walls, and the line arrays ('intact_elements', 'bond', 'force_N', ...) one value per line; 'n_points').
@@ -167,13 +168,19 @@ def _read_frames(directory):
     if not series or not series[0].is_file():
         raise InputError("directory", str(directory), "a kerf-dem output directory with a .pvd series "
                          "(output.frame_every_samples > 0 writes one)")
-    steps = {}
+    files = {}
     for pvd in series:
         for dataset in _ElementTree.parse(pvd).getroot().iter("DataSet"):
-            time = float(dataset.get("timestep"))
             name = dataset.get("name") or _re.sub(r"_.*", "", dataset.get("file"))
-            steps.setdefault(time, {"time_s": time})[name] = _read_vtp(pvd.parent / dataset.get("file"))
-    return [steps[t] for t in sorted(steps)]
+            files.setdefault(float(dataset.get("timestep")), {})[name] = pvd.parent / dataset.get("file")
+    times = sorted(files)
+    if steps is not None:
+        wanted = list(steps)
+        bad = [k for k in wanted if not 0 <= k < len(times)]
+        if bad:
+            raise InputError("steps", str(bad[0]), f"indices of the run's {len(times)} time steps (0 to {len(times) - 1})")
+        times = [times[k] for k in wanted]
+    return [{"time_s": t, **{name: _read_vtp(path) for name, path in files[t].items()}} for t in times]
 
 
 _run.__name__ = _run.__qualname__ = "run"

@@ -131,6 +131,16 @@ def test_dem_run_progress_counts_are_ints_and_tables_always_present(tmp_path):
         kerf.dem.read_frames(tmp_path)
 
 
+def test_dem_read_frames_reads_the_steps_asked_for(tmp_path):
+    kerf.dem.run(FRAMED_CUT, out=tmp_path / "cut", threads=1)
+    every = kerf.dem.read_frames(tmp_path / "cut")
+    chosen = kerf.dem.read_frames(tmp_path / "cut", steps=[len(every) - 1, 0])
+    assert [f["time_s"] for f in chosen] == [every[-1]["time_s"], every[0]["time_s"]]
+    assert np.array_equal(chosen[0]["particles"]["position_mm"], every[-1]["particles"]["position_mm"])
+    with pytest.raises(kerf.InputError, match="steps"):
+        kerf.dem.read_frames(tmp_path / "cut", steps=[len(every)])
+
+
 def test_compare_rows_hold_each_rows_prediction_lists(tmp_path):
     # The rows' guards and warnings are the prediction's own lists at each row's condition (not the CSV's joined
     # text): the same lists kerf.predict gives at that edge radius.
