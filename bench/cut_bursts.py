@@ -2,7 +2,7 @@
 """How intermittent a steady cut's force is, from its own forces.csv (issue 41 item 4): how much of the tool's work a
 few jams do.
 
-    python3 bench/cut_bursts.py DIR [DIR ...] [--csv OUT.csv]
+    python3 bench/cut_bursts.py DIR [DIR ...] [--csv OUT.csv] [--to-travel-mm X] [--figure OUT.png]
 
 Each DIR is a cut's output folder (summary.json, forces.csv) or a study's (DIR/items/*/). Per cut, over the steady
 part (the travel the summary's means cover), the travel is cut into bins of a tenth of the depth of cut and the tool's
@@ -50,19 +50,60 @@ def concentration(work):
     return float(ranked[:top].sum() / total), half / len(ranked)
 
 
-def cut_bursts(folder):
-    """One cut: its condition, seed and measures over the steady part."""
+def cut_bursts(folder, to_travel_mm=None):
+    """One cut: its condition, seed and measures over the steady part, or over its part up to `to_travel_mm` of travel
+    (to compare cuts of different lengths over the same travel; the main force is then the mean of the samples
+    there)."""
     summary = json.loads((folder / "summary.json").read_text())
     results = summary["results"]
     forces = np.loadtxt(folder / "forces.csv", delimiter=",", skiprows=1, ndmin=2)
     travel, main = forces[:, 0], forces[:, 2]
-    steady = (travel >= results["steady_from_travel_mm"]) & (travel <= results["steady_to_travel_mm"])
+    end_mm = results["steady_to_travel_mm"] if to_travel_mm is None else min(to_travel_mm, results["steady_to_travel_mm"])
+    steady = (travel >= results["steady_from_travel_mm"]) & (travel <= end_mm)
     bin_mm = 0.1 * summary["cut"]["cut"]["depth_of_cut_mm"]
     top, half = concentration(work_bins(travel[steady], main[steady], bin_mm))
     seed = summary.get("study_item", {}).get("scene", {}).get("specimen", {}).get("seed", summary["specimen"]["seed"])
+    mean = results["main_force_N"] if to_travel_mm is None else float(main[steady].mean())
     measures = {"work_share_top_1pc": top, "travel_share_half_work": half,
-                "peak_main_force_N": float(main[steady].max()), "main_force_N": results["main_force_N"]}
+                "peak_main_force_N": float(main[steady].max()), "main_force_N": mean}
     return ce.condition_of(summary), seed, measures
+
+
+def cumulative_work(folder, to_travel_mm=None):
+    """The tool's work from the start of the steady part [mJ per mm of width] against the travel from there [mm]."""
+    results = json.loads((folder / "summary.json").read_text())["results"]
+    forces = np.loadtxt(folder / "forces.csv", delimiter=",", skiprows=1, ndmin=2)
+    end_mm = results["steady_to_travel_mm"] if to_travel_mm is None else min(to_travel_mm, results["steady_to_travel_mm"])
+    steady = (forces[:, 0] >= results["steady_from_travel_mm"]) & (forces[:, 0] <= end_mm)
+    travel, main = forces[steady, 0], forces[steady, 2]
+    step = float(np.median(np.diff(travel)))
+    return travel - travel[0], np.cumsum(main) * step
+
+
+def figure(folders_and_cuts, path, to_travel_mm=None):
+    """One panel per surface and depth; each cut's cumulative work, coloured by its glass and window: a steady force
+    is a straight line, a jam a step."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    panels = sorted({(key[2], key[3]) for _, (key, _, _) in folders_and_cuts})
+    kinds = sorted({(key[0], key[1]) for _, (key, _, _) in folders_and_cuts})
+    fig, axes = plt.subplots(1, len(panels), figsize=(5.5 * len(panels), 4.2), squeeze=False, sharey=True)
+    for ax, (surface, depth) in zip(axes[0], panels):
+        for folder, (key, seed, _) in folders_and_cuts:
+            if (key[2], key[3]) != (surface, depth):
+                continue
+            kind = kinds.index((key[0], key[1]))
+            travel, work = cumulative_work(folder, to_travel_mm)
+            label = f"{key[0]}, {key[1]}" if seed == min(s for _, (k, s, _) in folders_and_cuts if k == key) else None
+            ax.plot(travel, work, color=f"C{kind}", lw=1, label=label)
+        ax.set_title(f"{surface}, depth of cut {depth:g} mm")
+        ax.set_xlabel("tool travel over the steady part (mm)")
+        ax.grid(alpha=0.3)
+    axes[0][0].set_ylabel("tool's work (mJ per mm of width)")
+    axes[0][0].legend(fontsize=7, loc="upper left")
+    fig.tight_layout()
+    fig.savefig(path, dpi=130)
 
 
 def table(cuts):
@@ -77,8 +118,13 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("dirs", nargs="+")
     ap.add_argument("--csv", help="also write one row per cut here")
+    ap.add_argument("--figure", help="a PNG of each cut's cumulative work against its travel")
+    ap.add_argument("--to-travel-mm", type=float, help="only the steady part up to this travel (cuts of other lengths)")
     a = ap.parse_args(argv)
-    cuts = [cut_bursts(f) for f in ce.folders(a.dirs, needs="forces.csv")]
+    found = list(ce.folders(a.dirs, needs="forces.csv"))
+    cuts = [cut_bursts(f, a.to_travel_mm) for f in found]
+    if a.figure:
+        figure(list(zip(found, cuts)), a.figure, a.to_travel_mm)
     if a.csv:
         with open(a.csv, "w", newline="") as f:
             w = csv.writer(f)

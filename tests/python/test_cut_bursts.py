@@ -55,3 +55,32 @@ def test_the_steady_part_only_and_one_condition_over_packings(tmp_path):
     (key, row), = cb.table(cuts).items()
     assert key[2] == "regular" and row["travel_share_half_work"].n == 2
     assert row["travel_share_half_work"].value == pytest.approx(0.5, abs=0.01)
+
+
+def test_a_cut_read_only_up_to_a_travel_keeps_that_part_alone(tmp_path):
+    # 0.1 N for the first 5 mm, 0.3 N after: read to 5 mm the mean is 0.1 N and the work spread evenly; read whole, the
+    # mean is 0.2 N and the later half holds three quarters of the work.
+    travel = np.arange(0, 100000) * 1e-4
+    force = np.where(travel < 5.0, 0.1, 0.3)
+    write_cut(tmp_path / "a", force, travel)
+    _, _, part = cb.cut_bursts(tmp_path / "a", to_travel_mm=5.0 - 1e-9)
+    _, _, whole = cb.cut_bursts(tmp_path / "a")
+    assert part["main_force_N"] == pytest.approx(0.1)
+    assert part["travel_share_half_work"] == pytest.approx(0.5, abs=0.005)
+    assert whole["main_force_N"] == pytest.approx(0.2, rel=1e-3)
+    assert whole["travel_share_half_work"] == pytest.approx(1 / 3, abs=0.002)
+
+
+def test_the_cumulative_work_is_a_staircase_of_the_jams_and_the_figure_is_drawn(tmp_path):
+    travel = np.arange(0, 20000) * 1e-4  # 2 mm
+    force = np.full(travel.size, 0.1)
+    force[10000:10010] += 100.0  # one jam of 100 N over 1 um: 0.1 mJ per mm of width
+    write_cut(tmp_path / "study" / "items" / "c_1", force, travel, steady_from_mm=0.5)
+    x, work = cb.cumulative_work(tmp_path / "study" / "items" / "c_1")
+    assert x[0] == 0 and x[-1] == pytest.approx(1.5, abs=1e-3)
+    assert work[-1] == pytest.approx(0.1 * 1.5 + 0.1, rel=1e-3)
+    jump = work[5010] - work[4999]  # across the jam at 1.0 mm of travel, 0.5 mm into the steady part
+    assert jump == pytest.approx(0.1 + 11 * 0.1e-4, rel=1e-6)
+    png = tmp_path / "w.png"
+    assert cb.main([str(tmp_path / "study"), "--figure", str(png)]) == 0
+    assert png.read_bytes()[:4] == b"\x89PNG"

@@ -40,7 +40,7 @@ def add_books(folder):
 def test_the_energy_of_each_broken_element_and_its_share_of_the_work(tmp_path):
     write_cut(tmp_path / "a")
     key, seed, work, energy = ce.cut_energy(tmp_path / "a")
-    assert key == ("glass", "0.7/0.3/0.4 mm", "regular", 0.1) and seed == 1
+    assert key == ("glass, radii 10-10 um", "0.7/0.3/0.4 mm", "regular", 0.1) and seed == 1
     assert math.isclose(work, 0.5e-3)  # 0.5 N over 1 mm
     area, joint = 10e-6 * 1e-3, 20e-6
     tension = 0.5 * (100e6) ** 2 * area * joint / 100e9  # sigma_t^2 A L / (2 Ebar*)
@@ -89,14 +89,14 @@ def test_the_figure_draws_the_conditions_with_books(tmp_path):
 
 
 def test_a_condition_names_the_options_that_change_the_cut():
-    summary = {"material": {"name": "glass"},
+    summary = {"material": {"name": "glass"}, "specimen": {"radius_min_um": 5.0, "radius_max_um": 6.5},
                "cut": {"cut": {"depth_of_cut_mm": 0.1}, "tool": {"friction_coefficient": 0.0, "edge_radius_um": 20.0},
                        "grooves": {"shape": "rectangular", "damage_depth_um": 25.0, "damage_broken_fraction": 0.5},
                        "active_window": {"enabled": True, "ahead_depths": 7, "behind_depths": 3, "below_depths": 4,
                                          "grain_strength_MPa": 85.0, "absorbing_depths": 1.0,
                                          "remove_loose_fragments": True}}}
     glass, window, surface, depth = ce.condition_of(summary)
-    for part in ("tool mu 0", "edge radius 20 um", "grains crush at 85 MPa", "loose fragments removed",
+    for part in ("radii 5-6.5 um", "tool mu 0", "edge radius 20 um", "grains crush at 85 MPa", "loose fragments removed",
                  "absorbing layer 1 depths"):
         assert part in glass
     assert (window, surface, depth) == ("0.7/0.3/0.4 mm", "rectangular (25 um layer, 0.5 broken)", 0.1)
