@@ -86,7 +86,7 @@ def figure(folders_and_cuts, path, to_travel_mm=None):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    panels = sorted({(key[2], key[3]) for _, (key, _, _) in folders_and_cuts})
+    panels = sorted({(key[2], key[3]) for _, (key, _, _) in folders_and_cuts}, key=lambda p: (p[0] != "regular", p))
     kinds = sorted({(key[0], key[1]) for _, (key, _, _) in folders_and_cuts})
     fig, axes = plt.subplots(1, len(panels), figsize=(5.5 * len(panels), 4.2), squeeze=False, sharey=True)
     for ax, (surface, depth) in zip(axes[0], panels):
