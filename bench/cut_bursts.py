@@ -50,39 +50,42 @@ def concentration(work):
     return float(ranked[:top].sum() / total), half / len(ranked)
 
 
-def cut_bursts(folder, to_travel_mm=None):
-    """One cut: its condition, seed and measures over the steady part, or over its part up to `to_travel_mm` of travel
-    (to compare cuts of different lengths over the same travel; the main force is then the mean of the samples
-    there)."""
+def steady_part(folder, to_travel_mm=None):
+    """A cut's summary and its (travel [mm], main force [N per mm of width]) samples over the steady part, or over the
+    steady part up to `to_travel_mm` of travel (to compare cuts of different lengths over the same travel)."""
     summary = json.loads((folder / "summary.json").read_text())
     results = summary["results"]
     forces = np.loadtxt(folder / "forces.csv", delimiter=",", skiprows=1, ndmin=2)
-    travel, main = forces[:, 0], forces[:, 2]
-    end_mm = results["steady_to_travel_mm"] if to_travel_mm is None else min(to_travel_mm, results["steady_to_travel_mm"])
-    steady = (travel >= results["steady_from_travel_mm"]) & (travel <= end_mm)
+    end_mm = results["steady_to_travel_mm"]
+    if to_travel_mm is not None:
+        end_mm = min(end_mm, to_travel_mm)
+    steady = (forces[:, 0] >= results["steady_from_travel_mm"]) & (forces[:, 0] <= end_mm)
+    return summary, forces[steady, 0], forces[steady, 2]
+
+
+def cut_bursts(folder, to_travel_mm=None):
+    """One cut: its condition, seed and measures over the steady part, or over its part up to `to_travel_mm` of travel
+    (the main force is then the mean of the samples there)."""
+    summary, travel, main = steady_part(folder, to_travel_mm)
     bin_mm = 0.1 * summary["cut"]["cut"]["depth_of_cut_mm"]
-    top, half = concentration(work_bins(travel[steady], main[steady], bin_mm))
+    top, half = concentration(work_bins(travel, main, bin_mm))
     seed = summary.get("study_item", {}).get("scene", {}).get("specimen", {}).get("seed", summary["specimen"]["seed"])
-    mean = results["main_force_N"] if to_travel_mm is None else float(main[steady].mean())
+    mean = summary["results"]["main_force_N"] if to_travel_mm is None else float(main.mean())
     measures = {"work_share_top_1pc": top, "travel_share_half_work": half,
-                "peak_main_force_N": float(main[steady].max()), "main_force_N": mean}
+                "peak_main_force_N": float(main.max()), "main_force_N": mean}
     return ce.condition_of(summary), seed, measures
 
 
 def cumulative_work(folder, to_travel_mm=None):
     """The tool's work from the start of the steady part [mJ per mm of width] against the travel from there [mm]."""
-    results = json.loads((folder / "summary.json").read_text())["results"]
-    forces = np.loadtxt(folder / "forces.csv", delimiter=",", skiprows=1, ndmin=2)
-    end_mm = results["steady_to_travel_mm"] if to_travel_mm is None else min(to_travel_mm, results["steady_to_travel_mm"])
-    steady = (forces[:, 0] >= results["steady_from_travel_mm"]) & (forces[:, 0] <= end_mm)
-    travel, main = forces[steady, 0], forces[steady, 2]
+    _, travel, main = steady_part(folder, to_travel_mm)
     step = float(np.median(np.diff(travel)))
     return travel - travel[0], np.cumsum(main) * step
 
 
 def figure(folders_and_cuts, path, to_travel_mm=None):
-    """One panel per surface and depth; each cut's cumulative work, coloured by its glass and window: a steady force
-    is a straight line, a jam a step."""
+    """One panel per surface and depth; each cut's cumulative work, coloured by its glass and window (the legend names
+    each once): a steady force is a straight line, a jam a step."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -90,13 +93,14 @@ def figure(folders_and_cuts, path, to_travel_mm=None):
     kinds = sorted({(key[0], key[1]) for _, (key, _, _) in folders_and_cuts})
     fig, axes = plt.subplots(1, len(panels), figsize=(5.5 * len(panels), 4.2), squeeze=False, sharey=True)
     for ax, (surface, depth) in zip(axes[0], panels):
-        for folder, (key, seed, _) in folders_and_cuts:
+        named = set()
+        for folder, (key, _, _) in folders_and_cuts:
             if (key[2], key[3]) != (surface, depth):
                 continue
             kind = kinds.index((key[0], key[1]))
             travel, work = cumulative_work(folder, to_travel_mm)
-            label = f"{key[0]}, {key[1]}" if seed == min(s for _, (k, s, _) in folders_and_cuts if k == key) else None
-            ax.plot(travel, work, color=f"C{kind}", lw=1, label=label)
+            ax.plot(travel, work, color=f"C{kind}", lw=1, label=None if kind in named else f"{key[0]}, {key[1]}")
+            named.add(kind)
         ax.set_title(f"{surface}, depth of cut {depth:g} mm")
         ax.set_xlabel("tool travel over the steady part (mm)")
         ax.grid(alpha=0.3)

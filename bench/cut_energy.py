@@ -88,7 +88,8 @@ def condition_of(summary):
     grains = window.get("grain_strength_MPa", 0)
     # The workpiece's disk radii when the summary gives them (a finer workpiece is another condition).
     specimen = summary.get("specimen", {})
-    radii = f", radii {specimen['radius_min_um']:g}-{specimen['radius_max_um']:g} um" if "radius_min_um" in specimen else ""
+    radii = f", radii {specimen['radius_min_um']:g}-{specimen['radius_max_um']:g} um" \
+        if "radius_min_um" in specimen else ""
     glass = material.get("name", "custom") + radii + (f", tool mu {tool:g}" if tool >= 0 else "") + \
         (f", edge radius {edge:g} um" if edge > 0 else "") + \
         (f", grains crush at {grains:g} MPa" if grains > 0 else "") + \

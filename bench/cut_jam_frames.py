@@ -25,6 +25,7 @@ from matplotlib.patches import Circle  # noqa: E402
 
 import kerf  # noqa: E402
 
+
 def tied(n, i, j, held):
     """Per disk: tied to a held disk along the joints (i, j)."""
     neighbours = [[] for _ in range(n)]

@@ -96,8 +96,8 @@ def test_a_condition_names_the_options_that_change_the_cut():
                                          "grain_strength_MPa": 85.0, "absorbing_depths": 1.0,
                                          "remove_loose_fragments": True}}}
     glass, window, surface, depth = ce.condition_of(summary)
-    for part in ("radii 5-6.5 um", "tool mu 0", "edge radius 20 um", "grains crush at 85 MPa", "loose fragments removed",
-                 "absorbing layer 1 depths"):
+    for part in ("radii 5-6.5 um", "tool mu 0", "edge radius 20 um", "grains crush at 85 MPa",
+                 "loose fragments removed", "absorbing layer 1 depths"):
         assert part in glass
     assert (window, surface, depth) == ("0.7/0.3/0.4 mm", "rectangular (25 um layer, 0.5 broken)", 0.1)
     plain = {"material": {"name": "glass"}, "cut": {"cut": {"depth_of_cut_mm": 0.2}, "grooves": {"shape": "none"}}}
