@@ -82,10 +82,10 @@ def condition_of(summary):
     domain = "/".join(f"{window[k] * depth_mm:.2g}" for k in ("ahead_depths", "behind_depths", "below_depths")) + \
         " mm" if window.get("enabled") else "whole"
     # The tool's friction when it has its own (tool.friction_coefficient), else the glass's; its edge radius;
-    # crushing grains; the window's options.
+    # crushing grains, loose and tied; the window's options.
     tool = cut.get("tool", {}).get("friction_coefficient", -1)
     edge = cut.get("tool", {}).get("edge_radius_um", 0)
-    grains = window.get("grain_strength_MPa", 0)
+    grains, tied = window.get("grain_strength_MPa", 0), window.get("tied_grain_strength_MPa", 0)
     # The workpiece's disk radii when the summary gives them (a finer workpiece is another condition).
     specimen = summary.get("specimen", {})
     radii = f", radii {specimen['radius_min_um']:g}-{specimen['radius_max_um']:g} um" \
@@ -93,6 +93,7 @@ def condition_of(summary):
     glass = material.get("name", "custom") + radii + (f", tool mu {tool:g}" if tool >= 0 else "") + \
         (f", edge radius {edge:g} um" if edge > 0 else "") + \
         (f", grains crush at {grains:g} MPa" if grains > 0 else "") + \
+        (f", tied disks crush at {tied:g} MPa" if tied > 0 else "") + \
         (", loose fragments removed" if window.get("remove_loose_fragments") else "") + \
         (f", absorbing layer {window['absorbing_depths']:g} depths" if window.get("absorbing_depths", 0) > 0 else "")
     # The surface, with its laser-affected layer if it has one (grooves.damage_depth_um, damage_broken_fraction).

@@ -118,6 +118,10 @@ Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& d
     summary["results"]["grains_crushed"] = res.window.chips.crushed_grains;
     summary["results"]["grains_crushed_mass_kg"] = res.window.chips.crushed_mass_kg;
   }
+  if (cut.window_tied_grain_strength_pa > 0) {  // the workpiece's own disks crushed (tied_grain_strength_MPa)
+    summary["results"]["tied_disks_crushed"] = res.window.chips.crushed_tied_disks;
+    summary["results"]["tied_disks_crushed_mass_kg"] = res.window.chips.crushed_tied_mass_kg;
+  }
   if (res.energy_booked) {
     // Where the tool's work went over the steady part (CutEnergy), per the cut's width like the forces' work.
     const CutEnergy& e = res.energy;

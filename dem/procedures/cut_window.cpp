@@ -257,8 +257,10 @@ Simulation CutWindow::build(const Simulation* current, double x_edge_m) {
   return sim;
 }
 
-Simulation CutWindow::crush(const Simulation& current, const std::vector<std::size_t>& window_disks) {
-  for (const auto u : window_disks) removed_[static_cast<std::size_t>(global_of_[u])] = 2;
+Simulation CutWindow::crush(const Simulation& current, const std::vector<std::size_t>& grains,
+                            const std::vector<std::size_t>& tied_disks) {
+  for (const auto u : grains) removed_[static_cast<std::size_t>(global_of_[u])] = 2;
+  for (const auto u : tied_disks) removed_[static_cast<std::size_t>(global_of_[u])] = 3;
   return build(&current, x_built_m_);
 }
 
@@ -278,6 +280,7 @@ ChipAccount CutWindow::chips() const {
     if (removed_[g]) {
       ++a.particles, a.mass_kg += 1 / q.inv_mass[g];
       if (removed_[g] == 2) ++a.crushed_grains, a.crushed_mass_kg += 1 / q.inv_mass[g];
+      if (removed_[g] == 3) ++a.crushed_tied_disks, a.crushed_tied_mass_kg += 1 / q.inv_mass[g];
     }
   const BondStore& b = full_.bonds();
   for (const auto& e : full_.cracks()) {

@@ -140,7 +140,11 @@ const FieldTable<CutParams>& active_window_fields() {
       number_field("grain_strength_MPa", kMPa, Range::non_negative(),
                    "debris grains crush: a disk of a loose fragment pressed by the tool with more than its splitting "
                    "load pi sigma r t is removed (0: disks never break)",
-                   &P::window_grain_strength_pa)};
+                   &P::window_grain_strength_pa),
+      number_field("tied_grain_strength_MPa", kMPa, Range::non_negative(),
+                   "the workpiece's own disks crush: a disk still tied to the workpiece pressed by the tool with more "
+                   "than pi sigma r t is removed, its joints with it (0: it breaks only by its joints)",
+                   &P::window_tied_grain_strength_pa)};
   return table;
 }
 
@@ -151,6 +155,9 @@ void check_cut_relations(const CutParams& p) {
           "a positive window of at least 1/1000 of cut.length_mm");
   require(p.window_grain_strength_pa == 0 || p.active_window, "active_window.grain_strength_MPa",
           units::pa_to_mpa(p.window_grain_strength_pa), "0 unless active_window.enabled (only a window removes disks)");
+  require(p.window_tied_grain_strength_pa == 0 || p.active_window, "active_window.tied_grain_strength_MPa",
+          units::pa_to_mpa(p.window_tied_grain_strength_pa),
+          "0 unless active_window.enabled (only a window removes disks)");
   // The wedge between the two faces must be a real wedge: rake + clearance < 90 deg.
   require(p.rake_deg + p.clearance_deg < 89, "tool.clearance_deg", p.clearance_deg,
           "rake_deg + clearance_deg below 89 deg (a tool wedge angle of at least 1 deg)");
@@ -681,24 +688,36 @@ CutEnergyBooks CutRun::books_now() const {
 }
 
 void CutRun::crush_grains() {
-  // The disks a tool face presses with more than their splitting load (CutParams::window_grain_strength_pa) ...
+  // The disks a tool face presses with more than their splitting load F = pi sigma r t, sigma the loose grains'
+  // (CutParams::window_grain_strength_pa) or the tied disks' (window_tied_grain_strength_pa); 0 is never.
+  const double loose_pa = params_.window_grain_strength_pa, tied_pa = params_.window_tied_grain_strength_pa;
+  const double weakest_pa = loose_pa > 0 && tied_pa > 0 ? std::min(loose_pa, tied_pa) : std::max(loose_pa, tied_pa);
   const auto& p = sim_.particles();
   const double t = sim_.options().thickness_m;
-  std::vector<std::size_t> pressed;
+  const auto splitting_load_n = [&](std::size_t u, double strength_pa) {
+    return std::numbers::pi * strength_pa * p.radius[u] * t;
+  };
+  std::vector<std::pair<std::size_t, double>> pressed;  // disk, its largest tool load
   for (const auto& c : sim_.wall_contact_loads()) {
     const auto u = static_cast<std::size_t>(c.disk);
     if (c.wall >= first_tool_wall_ && c.wall < first_tool_wall_ + n_tool_walls_ && p.group[u] == 0 &&
-        c.normal_force_n > std::numbers::pi * params_.window_grain_strength_pa * p.radius[u] * t)
-      pressed.push_back(u);
+        c.normal_force_n > splitting_load_n(u, weakest_pa))
+      pressed.emplace_back(u, c.normal_force_n);
   }
   if (pressed.empty()) return;
-  // ... that belong to loose fragments are crushed (a disk tied to the workpiece breaks by its joints).
+  // Each against its own strength: a loose fragment's disk as a grain, a disk tied to the workpiece as one.
   const auto tied = sim_.tied_to_held();
-  std::erase_if(pressed, [&](std::size_t u) { return tied[u] != 0; });
-  if (pressed.empty()) return;
-  std::sort(pressed.begin(), pressed.end());
-  pressed.erase(std::unique(pressed.begin(), pressed.end()), pressed.end());
-  take_window(window_->crush(sim_, pressed));  // what the crushed grains held leaves with them
+  std::vector<std::size_t> grains, tied_disks;
+  for (const auto& [u, load_n] : pressed) {
+    const double strength_pa = tied[u] ? tied_pa : loose_pa;
+    if (strength_pa > 0 && load_n > splitting_load_n(u, strength_pa)) (tied[u] ? tied_disks : grains).push_back(u);
+  }
+  if (grains.empty() && tied_disks.empty()) return;
+  for (auto* list : {&grains, &tied_disks}) {
+    std::sort(list->begin(), list->end());
+    list->erase(std::unique(list->begin(), list->end()), list->end());
+  }
+  take_window(window_->crush(sim_, grains, tied_disks));  // what the crushed disks held leaves with them
 }
 
 void CutRun::take_window(Simulation next) {
@@ -728,7 +747,7 @@ bool CutRun::advance() {
       fy += walls[static_cast<std::size_t>(first_tool_wall_ + w)].fy;
     }
   }
-  if (window_ && params_.window_grain_strength_pa > 0) crush_grains();
+  if (window_ && (params_.window_grain_strength_pa > 0 || params_.window_tied_grain_strength_pa > 0)) crush_grains();
   const auto f = tool_force_components(fx / params_.sample_every_steps, fy / params_.sample_every_steps);
   const double elapsed = sim_.time() - t0_, travel = params_.speed_m_per_s * elapsed;
   res_.samples.push_back({travel, elapsed, f[0], f[1]});

@@ -93,11 +93,12 @@ def test_a_condition_names_the_options_that_change_the_cut():
                "cut": {"cut": {"depth_of_cut_mm": 0.1}, "tool": {"friction_coefficient": 0.0, "edge_radius_um": 20.0},
                        "grooves": {"shape": "rectangular", "damage_depth_um": 25.0, "damage_broken_fraction": 0.5},
                        "active_window": {"enabled": True, "ahead_depths": 7, "behind_depths": 3, "below_depths": 4,
-                                         "grain_strength_MPa": 85.0, "absorbing_depths": 1.0,
+                                         "grain_strength_MPa": 85.0, "tied_grain_strength_MPa": 330.0,
+                                         "absorbing_depths": 1.0,
                                          "remove_loose_fragments": True}}}
     glass, window, surface, depth = ce.condition_of(summary)
     for part in ("radii 5-6.5 um", "tool mu 0", "edge radius 20 um", "grains crush at 85 MPa",
-                 "loose fragments removed", "absorbing layer 1 depths"):
+                 "tied disks crush at 330 MPa", "loose fragments removed", "absorbing layer 1 depths"):
         assert part in glass
     assert (window, surface, depth) == ("0.7/0.3/0.4 mm", "rectangular (25 um layer, 0.5 broken)", 0.1)
     plain = {"material": {"name": "glass"}, "cut": {"cut": {"depth_of_cut_mm": 0.2}, "grooves": {"shape": "none"}}}

@@ -71,6 +71,8 @@ struct ChipAccount {
   int cracks = 0;  ///< crack events of joints with a removed disk at either end
   std::size_t crushed_grains = 0;  ///< of the particles, those crushed (CutWindow::crush), with their mass
   double crushed_mass_kg = 0;
+  std::size_t crushed_tied_disks = 0;  ///< of the particles, those crushed while tied to the workpiece
+  double crushed_tied_mass_kg = 0;
 };
 
 class CutWindow {
@@ -104,9 +106,11 @@ class CutWindow {
   /// bonded element ties to a held disk of the workpiece (CutParams::window_remove_loose_fragments; not stored:
   /// the cut sets it again from its parameters when restored).
   void set_remove_loose_fragments(bool on) { remove_loose_ = on; }
-  /// Removes the running window's disks `window_disks` (indices in `current`) as crushed grains and rebuilds the
-  /// window around the same edge (a rebuild: counted in rebuilds()).
-  Simulation crush(const Simulation& current, const std::vector<std::size_t>& window_disks);
+  /// Removes the running window's disks `grains` (indices in `current`) as crushed grains, and `tied_disks` as
+  /// disks crushed while tied to the workpiece, and rebuilds the window around the same edge (a rebuild: counted
+  /// in rebuilds()).
+  Simulation crush(const Simulation& current, const std::vector<std::size_t>& grains,
+                   const std::vector<std::size_t>& tied_disks = {});
   std::size_t largest_window() const { return largest_window_; }
 
   std::string serialize() const;
@@ -121,7 +125,7 @@ class CutWindow {
   double x_built_m_ = 0;           ///< the edge's x when the window was last built
   double max_displacement_m_ = 0;  ///< largest |x - x0| of a disk written back (widens the reservoir search)
   std::vector<double> x0_;         ///< each disk's x in the uncut workpiece
-  std::vector<std::uint8_t> removed_;                ///< per disk: removed as a chip (1) or crushed (2)
+  std::vector<std::uint8_t> removed_;                ///< per disk: removed as a chip (1), crushed (2), crushed tied (3)
   std::vector<std::int32_t> global_of_, bond_global_of_;  ///< the window's disks and joints in the workpiece
   ContactSprings springs_;         ///< of the last sync, by workpiece index
   std::size_t rebuilds_ = 0, largest_window_ = 0;

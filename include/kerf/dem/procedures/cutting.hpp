@@ -84,6 +84,13 @@ struct CutParams {
   /// Without it a single loose disk wedged under the tool's tip carries up to ~100 N per mm of width
   /// (docs/notes/2026-11-29-jams.md). Checked at each force sample; windowed cuts only.
   double window_grain_strength_pa = 0;
+  /// The workpiece's own disks that crush (issue 41 item 4; 0, the default: a disk tied to the workpiece breaks
+  /// only by its joints). The same law for a disk still tied to the held rows: pressed by a tool face above
+  /// pi sigma r t, it is removed at once, its intact joints with it. A flat joint never fails in compression, so a
+  /// disk of the cut line pressed by the tool's tip carries what the lattice behind it does (jams of 50-130 N per mm
+  /// of width at every disk size measured: docs/notes/2026-11-29-jams.md); glass under a sharp tip is crushed at the
+  /// scale below a disk. Checked at each force sample; windowed cuts only.
+  double window_tied_grain_strength_pa = 0;
   /// An absorbing layer along the workpiece's held rows (its left side and bottom, as rigid as the window's
   /// frame), with or without a window: its thickness in depths of cut (0: none), the same attenuation.
   double held_absorbing_depths = 0;
@@ -299,7 +306,8 @@ class CutRun {
   CutParams params_;
   CutResult res_;
   std::int32_t first_tool_wall_ = 0, n_tool_walls_ = 0;
-  /// Crushes the loose disks the tool presses beyond their splitting load (CutParams::window_grain_strength_pa).
+  /// Crushes the disks the tool presses beyond their splitting load: loose ones at CutParams::
+  /// window_grain_strength_pa, those tied to the workpiece at window_tied_grain_strength_pa (each 0: never).
   void crush_grains();
   /// Runs `next` (a window built from the running one) in its place, booking what leaves with the disks it drops.
   void take_window(Simulation next);
