@@ -91,22 +91,25 @@ def figure(folders_and_cuts, path, to_travel_mm=None):
     import matplotlib.pyplot as plt
     panels = sorted({(key[2], key[3]) for _, (key, _, _) in folders_and_cuts}, key=lambda p: (p[0] != "regular", p))
     kinds = sorted({(key[0], key[1]) for _, (key, _, _) in folders_and_cuts})
-    fig, axes = plt.subplots(1, len(panels), figsize=(5.5 * len(panels), 4.2), squeeze=False, sharey=True)
+    # The legend below the panels, one line per kind (its names are long): room for it in the figure's height.
+    legend_in = 0.18 * len(kinds) + 0.2
+    fig, axes = plt.subplots(1, len(panels), figsize=(5.5 * len(panels), 4.2 + legend_in), squeeze=False, sharey=True)
+    handles = {}
     for ax, (surface, depth) in zip(axes[0], panels):
-        named = set()
         for folder, (key, _, _) in folders_and_cuts:
             if (key[2], key[3]) != (surface, depth):
                 continue
             kind = kinds.index((key[0], key[1]))
             travel, work = cumulative_work(folder, to_travel_mm)
-            ax.plot(travel, work, color=f"C{kind}", lw=1, label=None if kind in named else f"{key[0]}, {key[1]}")
-            named.add(kind)
+            (line,) = ax.plot(travel, work, color=f"C{kind}", lw=1)
+            handles.setdefault(kind, line)
         ax.set_title(f"{surface}, depth of cut {depth:g} mm")
         ax.set_xlabel("tool travel over the steady part (mm)")
         ax.grid(alpha=0.3)
     axes[0][0].set_ylabel("tool's work (mJ per mm of width)")
-    axes[0][0].legend(fontsize=7, loc="upper left")
-    fig.tight_layout()
+    fig.legend([handles[k] for k in sorted(handles)], [f"{kinds[k][0]}, {kinds[k][1]}" for k in sorted(handles)],
+               fontsize=8, loc="lower center", frameon=False)
+    fig.tight_layout(rect=(0, legend_in / (4.2 + legend_in), 1, 1))
     fig.savefig(path, dpi=130)
 
 
