@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <string>
 #include <utility>
 
 #include "kerf/dem/procedures/cutting.hpp"
@@ -235,100 +236,73 @@ TEST_CASE("cut window: the energy books balance, and what leaves the window is w
   CHECK_THAT(e.dissipated_j + e.left_kinetic_j + e.left_strain_j + e.stored_change_j, WithinRel(e.tool_work_j, 1e-12));
 }
 
-TEST_CASE("cut window: loose grains the tool presses beyond their splitting load are crushed", "[cut_window]") {
-  // active_window.grain_strength_MPa: at a strength no contact reaches the cut is the cut without it, to the bit
-  // (the check alone changes nothing); at 1 MPa (a splitting load of 0.03 N for a 10 um disk, 1 mm thick) grains
-  // are crushed, each counted among the removed disks with its mass, and the energy books still balance.
+namespace {
+/// One crushing law (active_window.grain_strength_MPa or tied_grain_strength_MPa: `strength`) on a short windowed
+/// cut: at a strength no contact reaches the cut is the cut without it, to the bit (the check alone changes nothing);
+/// at `weak_pa` disks are crushed, counted (`count`, `mass`: the law's own counters, the other law's staying 0) among
+/// the removed disks, the window rebuilt for each crush, the energy books balanced (what a crushed disk held leaves
+/// with it), the peak force no higher; restored halfway, the cut goes on to the bit; the key needs a window.
+void check_crushing(double CutParams::*strength, double weak_pa, std::size_t ChipAccount::*count,
+                    double ChipAccount::*mass, std::size_t ChipAccount::*other_count, const std::string& key) {
   const Simulation specimen = quick_workpiece_specimen(0.6e-3, 0.25e-3, 7);
   CutParams p = windowed(3, 2, 2, 2);
   p.length_m = 0.3e-3;
   p.entry_fraction = 0.2;
   const auto cut = [&](double strength_pa) {
     CutParams q = p;
-    q.window_grain_strength_pa = strength_pa;
+    q.*strength = strength_pa;
     CutRun run(specimen, q);
     while (run.advance()) {
     }
     return run.result();
   };
-  const CutResult none = cut(0), never = cut(1e15), weak = cut(1e6);
+  const CutResult none = cut(0), never = cut(1e15), weak = cut(weak_pa);
   CHECK(never.samples.back().main_force_n == none.samples.back().main_force_n);
   CHECK(never.main_force_n == none.main_force_n);
-  CHECK(never.window.chips.crushed_grains == 0);
-  CHECK(none.window.chips.crushed_grains == 0);
-  CHECK(weak.window.chips.crushed_grains > 0);
-  CHECK(weak.window.chips.crushed_grains <= weak.window.chips.particles);
-  CHECK(weak.window.chips.crushed_mass_kg > 0);
-  CHECK(weak.window.chips.crushed_mass_kg <= weak.window.chips.mass_kg);
+  CHECK(never.window.chips.*count == 0);
+  CHECK(none.window.chips.*count == 0);
+  CHECK(weak.window.chips.*count > 0);
+  CHECK(weak.window.chips.*other_count == 0);
+  CHECK(weak.window.chips.*count <= weak.window.chips.particles);
+  CHECK(weak.window.chips.*mass > 0);
+  CHECK(weak.window.chips.*mass <= weak.window.chips.mass_kg);
   CHECK(weak.window.rebuilds > none.window.rebuilds);  // a crush rebuilds the window
   REQUIRE(weak.energy_booked);
   const CutEnergy& e = weak.energy;
   CHECK_THAT(e.dissipated_j + e.left_kinetic_j + e.left_strain_j + e.stored_change_j, WithinRel(e.tool_work_j, 1e-12));
-  // Restored halfway (the crushed grains are in the window's removal flags), it goes on to the bit.
+  const auto peak = [](const CutResult& r) {
+    double m = 0;
+    for (const auto& x : r.samples) m = std::max(m, x.main_force_n);
+    return m;
+  };
+  CHECK(peak(weak) <= peak(none));
   CutParams q = p;
-  q.window_grain_strength_pa = 1e6;
+  q.*strength = weak_pa;
   CutRun half(specimen, q);
   for (std::size_t k = 0; k < weak.samples.size() / 2; ++k) half.advance();
   CutRun restored = CutRun::deserialize(half.serialize());
   while (restored.advance()) {
   }
   CHECK(restored.result().samples.back().main_force_n == weak.samples.back().main_force_n);
-  CHECK(restored.result().window.chips.crushed_grains == weak.window.chips.crushed_grains);
+  CHECK(restored.result().window.chips.*count == weak.window.chips.*count);
   p.active_window = false;
-  p.window_grain_strength_pa = 85e6;
-  CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains("active_window.grain_strength_MPa = 85"));
+  p.*strength = 85e6;
+  CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains(key + " = 85"));
+}
+}  // namespace
+
+TEST_CASE("cut window: loose grains the tool presses beyond their splitting load are crushed", "[cut_window]") {
+  // At 1 MPa: a splitting load of 0.03 N for a 10 um disk, 1 mm thick.
+  check_crushing(&CutParams::window_grain_strength_pa, 1e6, &ChipAccount::crushed_grains, &ChipAccount::crushed_mass_kg,
+                 &ChipAccount::crushed_tied_disks, "active_window.grain_strength_MPa");
 }
 
 TEST_CASE("cut window: the workpiece's own disks the tool presses beyond their splitting load are crushed",
           "[cut_window]") {
-  // active_window.tied_grain_strength_MPa: at a strength no contact reaches the cut is the cut without it, to the
-  // bit; at 20 MPa (0.6 N for a 10 um disk, 1 mm thick) disks tied to the workpiece are crushed, counted apart from
-  // the loose grains (none, their own law off), and the energy books still balance: what a crushed disk's joints
-  // and contacts held leaves with it.
-  const Simulation specimen = quick_workpiece_specimen(0.6e-3, 0.25e-3, 7);
-  CutParams p = windowed(3, 2, 2, 2);
-  p.length_m = 0.3e-3;
-  p.entry_fraction = 0.2;
-  const auto cut = [&](double tied_pa) {
-    CutParams q = p;
-    q.window_tied_grain_strength_pa = tied_pa;
-    CutRun run(specimen, q);
-    while (run.advance()) {
-    }
-    return run.result();
-  };
-  const CutResult none = cut(0), never = cut(1e15), weak = cut(20e6);
-  CHECK(never.samples.back().main_force_n == none.samples.back().main_force_n);
-  CHECK(never.main_force_n == none.main_force_n);
-  CHECK(never.window.chips.crushed_tied_disks == 0);
-  CHECK(weak.window.chips.crushed_tied_disks > 0);
-  CHECK(weak.window.chips.crushed_grains == 0);
-  CHECK(weak.window.chips.crushed_tied_disks <= weak.window.chips.particles);
-  CHECK(weak.window.chips.crushed_tied_mass_kg > 0);
-  CHECK(weak.window.chips.crushed_tied_mass_kg <= weak.window.chips.mass_kg);
-  REQUIRE(weak.energy_booked);
-  const CutEnergy& e = weak.energy;
-  CHECK_THAT(e.dissipated_j + e.left_kinetic_j + e.left_strain_j + e.stored_change_j, WithinRel(e.tool_work_j, 1e-12));
-  // A tool that crushes what it presses carries less at its peak than one that must break the lattice behind.
-  const auto peak = [](const CutResult& r) {
-    double m = 0;
-    for (const auto& s : r.samples) m = std::max(m, s.main_force_n);
-    return m;
-  };
-  CHECK(peak(weak) < peak(none));
-  // Restored halfway (the crushed disks are in the window's removal flags), it goes on to the bit.
-  CutParams q = p;
-  q.window_tied_grain_strength_pa = 20e6;
-  CutRun half(specimen, q);
-  for (std::size_t k = 0; k < weak.samples.size() / 2; ++k) half.advance();
-  CutRun restored = CutRun::deserialize(half.serialize());
-  while (restored.advance()) {
-  }
-  CHECK(restored.result().samples.back().main_force_n == weak.samples.back().main_force_n);
-  CHECK(restored.result().window.chips.crushed_tied_disks == weak.window.chips.crushed_tied_disks);
-  p.active_window = false;
-  p.window_tied_grain_strength_pa = 330e6;
-  CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains("active_window.tied_grain_strength_MPa = 330"));
+  // At 20 MPa: 0.6 N for a 10 um disk; the loose grains' law off, so none of them is crushed.
+  check_crushing(&CutParams::window_tied_grain_strength_pa, 20e6, &ChipAccount::crushed_tied_disks,
+                 &ChipAccount::crushed_tied_mass_kg, &ChipAccount::crushed_grains,
+                 "active_window.tied_grain_strength_MPa");
 }
 
 TEST_CASE("cut window: contacts between two held disks are left out when asked", "[cut_window]") {
