@@ -51,3 +51,21 @@ def test_a_quantity_one_record_does_not_keep_pairs_no_packing():
             del row["subsurface_damage_depth_steady_um"]
     assert pg.paired(base, other, ("default", "regular", 0.1), "subsurface_damage_depth_steady_um")[0] == []
     assert "deepest subsurface crack (um):\nshare in contact:" in pg.compare(base, other, "default", 0.1)
+
+
+def test_the_window_or_the_depth_is_paired_packing_by_packing_within_one_record():
+    one = record([0.5, 0.4, 0.45], [0.4, 0.3, 0.5])
+    large = record([0.5, 0.4, 0.45], [0.4, 0.3, 0.5], factor=1.2, groove_factor=0.5)
+    deep = record([0.5, 0.4, 0.45], [0.4, 0.3, 0.5], factor=1.5)
+    one[("large", "regular", 0.1)] = large[("default", "regular", 0.1)]
+    one[("large", "rectangular", 0.1)] = large[("default", "rectangular", 0.1)]
+    one[("default", "regular", 0.2)] = deep[("default", "regular", 0.1)]
+    text = pg.compare(one, one, "large", 0.1, base_domain="default")
+    assert text.splitlines()[0] == "other: large window, 0.1 mm; base: default window, 0.1 mm"
+    assert "regular      seeds [1, 2, 3]: base 0.45, other 0.54, other / base 1.200 [1.200, 1.200]" in text
+    assert "rectangular  seeds [1, 2, 3]: base 0.27, other 0.162, other / base 0.600 [0.600, 0.600]" in text
+    assert "base 0.600" in text.splitlines()[-2] and "other 0.300" in text.splitlines()[-2]
+    deeper = pg.compare(one, one, "default", 0.2, base_depth=0.1)
+    assert "other / base 1.500 [1.500, 1.500]" in deeper and "rectangular" not in deeper.split("thrust")[0]
+    assert "nan" not in deeper and "groove effect main: fewer than two paired packings of each surface" in deeper
+    assert pg.compare(one, one, "default", 0.1) == pg.compare(one, one, "default", 0.1, "default", 0.1)
