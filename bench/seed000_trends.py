@@ -2,12 +2,13 @@
 """The seed-000 trends from a record of steady cuts (issue 41): does the DEM reproduce what the experiments show,
 and is each trend the same in the two domains?
 
-    python3 bench/seed000_trends.py [RECORD.csv] [--out DIR] [--experiments CSV]
+    python3 bench/seed000_trends.py [RECORD.csv ...] [--out DIR] [--experiments CSV]
 
 RECORD (default data/studies/results/seed000_steady.csv) is the record that `kerf-dem study
 data/studies/seed000_steady.json` writes, one row per cut: domain, surface (regular, rectangular, trapezoidal),
 depth_of_cut_mm, seed, main_force_N, thrust_force_N, width_mm, ... Everything here comes from the record and the
-experiments' table alone, so the numbers outlive the machine that ran the cuts.
+experiments' table alone, so the numbers outlive the machine that ran the cuts. Several records merge (one model
+choice's cuts spread over two studies); a cut in two of them is an error.
 
 Statistics. A condition's mean is over its packings (the independent samples); its standard error is the
 sample standard deviation / sqrt(n), with n - 1 degrees of freedom. A ratio of two conditions' means (depth
@@ -122,6 +123,16 @@ def difference(x, y):
     return Estimate(x.value - y.value, math.hypot(x.se, y.se), dof)
 
 
+def combination(terms):
+    """sum c_i x_i of independent estimates, terms (c_i, x_i): delta-method standard error, Welch dof (not resolved
+    where any term is not)."""
+    value = sum(c * x.value for c, x in terms)
+    if not all(x.resolved() for _, x in terms):
+        return Estimate(value, math.nan, 0)
+    se = math.sqrt(sum((c * x.se) ** 2 for c, x in terms))
+    return Estimate(value, se, welch_dof([((c * x.se) ** 2, x.dof) for c, x in terms]))
+
+
 AGREEMENT_MARGIN = 0.5  # an 'agrees' must exclude a difference of half the value compared against
 
 
@@ -149,6 +160,21 @@ def read_record(path):
                 except (TypeError, ValueError):
                     values[k] = v
             cuts.setdefault(key, {})[int(float(row["seed"]))] = values
+    return cuts
+
+
+def read_records(paths):
+    """read_record of several records merged (e.g. a study's record and another that adds its missing depths); a
+    cut two records both hold is an error (ValueError naming it), not silently one of the two."""
+    cuts = {}
+    for path in paths:
+        for key, runs in read_record(path).items():
+            mine = cuts.setdefault(key, {})
+            for seed, row in runs.items():
+                if seed in mine:
+                    raise ValueError(f"{path}: cut {key[0]}/{key[1]}/{key[2]:g} mm packing {seed} is in an earlier "
+                                     "record too")
+                mine[seed] = row
     return cuts
 
 
@@ -238,6 +264,18 @@ def trends(src):
                     [(surface, depth), ("regular", depth)],
                     lambda dom, s=surface, d=depth, q=q: ratio(src.kerf(dom, s, d, q), src.kerf(dom, "regular", d, q)),
                     lambda source, s=surface, d=depth, q=q: ref_ratio(source, (s, d), ("regular", d), q))
+    # Albrecht's decomposition through the two depths: F(h) = F0 + k h, the intercept F0 = 2 F(0.1) - F(0.2) (a force
+    # that does not grow with the depth of cut: the edge's) and the slope k = (F(0.2) - F(0.1)) / 0.1 mm (the chip's).
+    for q in ("main", "thrust"):
+        for surface in ("regular",) + GROOVED:
+            for name, unit, coefficients in (("depth-independent", "N/mm", (2.0, -1.0)),
+                                             ("per mm of depth", "N/mm per mm", (-10.0, 10.0))):
+                def parts(get, s=surface, q=q, c=coefficients):
+                    a, b = get(s, 0.1, q), get(s, 0.2, q)
+                    return combination([(c[0], a), (c[1], b)]) if a and b else None
+                add(f"{q} force {name}, {surface} ({unit})", "decomposition", [(surface, 0.1), (surface, 0.2)],
+                    lambda dom, parts=parts: parts(lambda s, d, q: src.kerf(dom, s, d, q)),
+                    lambda source, parts=parts: parts(lambda s, d, q: src.reference(source, s, d, q)))
     for depth in (0.1, 0.2):
         add(f"trapezoidal / rectangular thrust at {depth} mm", "ratio",
             [("trapezoidal", depth), ("rectangular", depth)],
@@ -515,6 +553,12 @@ def report(rows, cuts, record_path, floors=None, needs=None):
     moved = [r["trend"] for r in ratio_rows if r.get("domain_robust") == "differs"]
     md.append(f"- Moved by the domain (resolved): {'; '.join(moved) or 'none'}.")
     md += ["", "## Levels, per mm of width (reported, not acceptance)", ""] + table(level_rows, False) + [""]
+    md += ["## The force as an edge part and a chip part (reported, not acceptance)", "",
+           "Through the two depths of cut, F(h) = F0 + k h (Albrecht's decomposition): the depth-independent part "
+           "F0 = 2 F(0.1) - F(0.2), the force of the edge, and the part per mm of depth k = (F(0.2) - F(0.1)) / "
+           "0.1 mm, the chip's. The large window spans the same millimetres at both depths; the default one twice "
+           "as many at 0.2 mm, so its decomposition holds the window's growth too.", ""]
+    md += table([r for r in rows if r["group"] == "decomposition"], True) + [""]
     md += damage_section(cuts, floors or {})
     md += cost_section(costs(cuts))
     resolved, missing = acceptance(rows, needs)
@@ -525,7 +569,8 @@ def report(rows, cuts, record_path, floors=None, needs=None):
 
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("record", nargs="?", default=str(RECORD))
+    parser.add_argument("records", nargs="*", metavar="RECORD",
+                        help=f"records to merge (default {RECORD.relative_to(ROOT)}; --report takes one)")
     parser.add_argument("--experiments", default=str(EXPERIMENTS))
     parser.add_argument("--study", default=str(STUDY), help="the study of the record (the damage floors)")
     parser.add_argument("--out", default="out/seed000_trends")
@@ -533,7 +578,13 @@ def main(argv=None):
                         help="also write DIR/report.md, the steady validation case's report, and exit 1 while a "
                              "verdict is not resolved")
     args = parser.parse_args(argv)
-    cuts = read_record(args.record)
+    records = args.records or [str(RECORD)]
+    if args.report and len(records) != 1:
+        parser.error(f"--report: {len(records)} records given, expected one (the validation case's)")
+    try:
+        cuts = read_records(records)
+    except ValueError as e:
+        parser.error(str(e))
     floors = damage_floors(args.study)
     src = Sources(cuts, read_experiments(args.experiments), planned=set(floors) or None)
     all_trends = trends(src)
@@ -555,7 +606,7 @@ def main(argv=None):
               f"{extra}")
     print(f"wrote {out / 'trends.csv'}, {out / 'cost.csv'}, {out / 'trends.png'}")
     if args.report:
-        text, resolved = report(rows, cuts, args.record, floors, src.needs)
+        text, resolved = report(rows, cuts, records[0], floors, src.needs)
         tmp = out / "report.md.tmp"
         tmp.write_text(text)
         tmp.replace(out / "report.md")

@@ -252,3 +252,34 @@ def test_cost_follows_the_packing_spread_and_the_cut_time():
     assert math.isclose(d["cpu_h_for_5%"], 0.4, rel_tol=1e-12)
     assert by["large"]["packings_for_5%"] is None  # one packing: no spread, no estimate
     assert any("| large | regular | 0.1 | 1 | 1000 | — |" in line for line in st.cost_section(st.costs(cuts)))
+
+
+def test_the_decomposition_recovers_a_known_edge_force_and_chip_slope(tmp_path):
+    # F(h) = F0 + k h: regular F0 0.55 N/mm, k 1.0 N/mm per mm; rectangular F0 0, k 0.7 (the experiments' pattern).
+    law = {"regular": (0.55, 1.0), "rectangular": (0.0, 0.7)}
+    means = {(domain, surface, depth): f0 + k * depth
+             for domain in st.DOMAINS for surface, (f0, k) in law.items() for depth in (0.1, 0.2)}
+    write_record(tmp_path / "record.csv", means, n=8, spread=0.005)
+    write_experiments(tmp_path / "experiments.csv", 0.65, 0.1)
+    src = st.Sources(st.read_record(tmp_path / "record.csv"), st.read_experiments(tmp_path / "experiments.csv"))
+    rows = [r for r in st.rows_of(st.trends(src)) if r["group"] == "decomposition" and r["source"] == "kerf large"]
+    by = {r["trend"]: r for r in rows}
+    for surface, (f0, k) in law.items():
+        edge = by[f"main force depth-independent, {surface} (N/mm)"]
+        chip = by[f"main force per mm of depth, {surface} (N/mm per mm)"]
+        assert abs(edge["value"] - f0) < 0.02 and edge["ci95_low"] < edge["value"] < edge["ci95_high"]
+        assert abs(chip["value"] - k) < 0.15 and chip["ci95_low"] < chip["value"] < chip["ci95_high"]
+        thrust_edge = by[f"thrust force depth-independent, {surface} (N/mm)"]
+        assert abs(thrust_edge["value"] - 0.8 * f0) < 0.02
+    # The experiments' levels do not depend on the depth here (0.65 at both): all edge, no chip.
+    exp = next(r for r in st.rows_of(st.trends(src)) if r["source"] == "experiment"
+               and r["trend"] == "main force per mm of depth, regular (N/mm per mm)")
+    assert abs(exp["value"]) < 1e-9 and exp["ci95_low"] < 0 < exp["ci95_high"]
+
+
+def test_a_combination_of_estimates_adds_their_variances():
+    a, b = st.Estimate(1.0, 0.1, 4), st.Estimate(2.0, 0.2, 9)
+    c = st.combination([(2.0, a), (-1.0, b)])
+    assert math.isclose(c.value, 0.0, abs_tol=1e-12) and math.isclose(c.se, math.sqrt(0.04 + 0.04))
+    assert 4 <= c.dof <= 13
+    assert not st.combination([(1.0, st.Estimate(1.0, math.nan, 0)), (1.0, a)]).resolved()
