@@ -104,6 +104,7 @@ Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& d
            {"steady_machined_to_x_mm", units::m_to_mm(res.steady_machined_x_m[1])},
            {"cracks_subsurface_steady", res.cracks.subsurface_steady},
            {"subsurface_damage_depth_steady_um", units::m_to_um(res.cracks.subsurface_steady_damage_depth_m)},
+           {"subsurface_damage_depth_steady_p95_um", units::m_to_um(res.cracks.subsurface_steady_damage_depth_p95_m)},
            {"surface_y_mm", units::m_to_mm(res.y_top_m)},
            {"cut_line_y_mm", units::m_to_mm(res.y_cut_m)},
            {"particles_removed_by_grooves", res.n_removed_by_grooves}};
@@ -230,7 +231,8 @@ SceneOutcome run_cut_replicates(const Json& cut_scene, const std::string& scene_
       {"cracks_shear", "cracks_shear_replicate_std"},
       {"subsurface_damage_depth_um", "subsurface_damage_depth_replicate_std_um"},
       {"cracks_subsurface_steady", "cracks_subsurface_steady_replicate_std"},
-      {"subsurface_damage_depth_steady_um", "subsurface_damage_depth_steady_replicate_std_um"}};
+      {"subsurface_damage_depth_steady_um", "subsurface_damage_depth_steady_replicate_std_um"},
+      {"subsurface_damage_depth_steady_p95_um", "subsurface_damage_depth_steady_p95_replicate_std_um"}};
   const auto start = std::chrono::steady_clock::now();
   const Json study_doc{{"description", fmt::format("{} replicates of a cut (kerf-dem run --replicates {})", replicates, replicates)},
                        {"scene", cut_scene},

@@ -368,6 +368,7 @@ double leading_x_in_band(const std::vector<std::array<double, 2>>& v, double y0,
 CutCrackCounts count_cut_cracks(const std::vector<CrackEvent>& cracks, double y_cut_m,
                                 std::array<double, 2> steady_x_m) {
   CutCrackCounts n;
+  std::vector<double> steady_depths_m;
   for (const auto& c : cracks) {
     (c.mode == BreakMode::tension ? n.tensile : n.shear)++;
     if (is_chip_crack(c.y_m, y_cut_m)) {
@@ -379,7 +380,14 @@ CutCrackCounts count_cut_cracks(const std::vector<CrackEvent>& cracks, double y_
     if (c.x_m >= steady_x_m[0] && c.x_m <= steady_x_m[1]) {
       ++n.subsurface_steady;
       n.subsurface_steady_damage_depth_m = std::max(n.subsurface_steady_damage_depth_m, y_cut_m - c.y_m);
+      steady_depths_m.push_back(y_cut_m - c.y_m);
     }
+  }
+  if (!steady_depths_m.empty()) {  // nearest rank: the ceil(0.95 n)-th smallest depth
+    const auto rank = static_cast<std::size_t>(std::ceil(0.95 * static_cast<double>(steady_depths_m.size())));
+    const auto at = steady_depths_m.begin() + static_cast<std::ptrdiff_t>(rank - 1);
+    std::nth_element(steady_depths_m.begin(), at, steady_depths_m.end());
+    n.subsurface_steady_damage_depth_p95_m = *at;
   }
   return n;
 }

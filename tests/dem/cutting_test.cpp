@@ -389,7 +389,31 @@ TEST_CASE("cutting: crack places and subsurface damage depth", "[cutting]") {
   const CutCrackCounts none = count_cut_cracks(cracks, 0.9e-3, {1.0, 1.0});
   CHECK(none.subsurface_steady == 0);
   CHECK(none.subsurface_steady_damage_depth_m == 0);
+  CHECK(none.subsurface_steady_damage_depth_p95_m == 0);
   CHECK(none.subsurface == 3);
+}
+
+TEST_CASE("cutting: the steady damage depth's 95th percentile is not the sparse tail's", "[cutting]") {
+  // 100 steady subsurface cracks at depths 1..100 um (in shuffled order): the nearest-rank 95th percentile is the
+  // 95th smallest, 95 um, as is the deepest 100 um. A tail of five cracks at the window's floor (400 um) moves the
+  // deepest to 400 um; the percentile moves only by the ranks they add (to the 100th of 105: 100 um).
+  const double y_cut = 0.9e-3;
+  std::vector<CrackEvent> cracks;
+  for (int k = 0; k < 100; ++k) {
+    const int depth_um = 1 + (k * 37) % 100;  // a permutation of 1..100
+    cracks.push_back({0, 0.3e-3, y_cut - depth_um * 1e-6, 0, 1e-6, BreakMode::tension, k, 0});
+  }
+  const CutCrackCounts n = count_cut_cracks(cracks, y_cut, {0.2e-3, 0.5e-3});
+  REQUIRE(n.subsurface_steady == 100);
+  CHECK_THAT(n.subsurface_steady_damage_depth_p95_m, WithinAbs(95e-6, 1e-12));
+  CHECK_THAT(n.subsurface_steady_damage_depth_m, WithinAbs(100e-6, 1e-12));
+  for (int k = 0; k < 5; ++k) cracks.push_back({0, 0.4e-3, y_cut - 400e-6, 0, 1e-6, BreakMode::shear, 100 + k, 0});
+  const CutCrackCounts tail = count_cut_cracks(cracks, y_cut, {0.2e-3, 0.5e-3});
+  CHECK_THAT(tail.subsurface_steady_damage_depth_m, WithinAbs(400e-6, 1e-12));
+  CHECK_THAT(tail.subsurface_steady_damage_depth_p95_m, WithinAbs(100e-6, 1e-12));
+  // One crack: it is its own percentile.
+  const CutCrackCounts one = count_cut_cracks({cracks.front()}, y_cut, {0.2e-3, 0.5e-3});
+  CHECK(one.subsurface_steady_damage_depth_p95_m == one.subsurface_steady_damage_depth_m);
 }
 
 TEST_CASE("cutting: a small cut regression (forces, cracks, determinism, grooves)", "[cutting]") {

@@ -153,6 +153,9 @@ struct CutCrackCounts {
   /// whole workpiece's depth above is often a breakout of its free corner at the entry (docs/dem.md).
   int subsurface_steady = 0;
   double subsurface_steady_damage_depth_m = 0;
+  /// The depth above which 95 % of those steady subsurface cracks lie (nearest rank; 0 without any): unlike the
+  /// deepest one, not set by a sparse tail that reaches the active window's floor (docs/dem.md).
+  double subsurface_steady_damage_depth_p95_m = 0;
 };
 
 /// What a windowed cut integrated and removed (all zero without an active window).
