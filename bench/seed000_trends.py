@@ -27,8 +27,9 @@ cannot be formed (fewer than two packings, or an unbounded ratio).
 Writes DIR/trends.csv (one row per trend and source), DIR/cost.csv (per condition: CPU time per cut, the main
 force's spread between packings, the packings and CPU-hours a 10 % and a 5 % standard error take) and
 DIR/trends.png (+ .pdf): each trend with both domains,
-the experiments and the paper's DEM, with their intervals. With --report also DIR/report.md, the acceptance of
-validation/soda_lime_cutting_steady/ (exit 1 while a verdict is not resolved).
+the experiments and the paper's DEM, with their intervals; DIR/decomposition.png: each surface's force split through
+the two depths of cut into an edge part and a chip part (Albrecht's decomposition, F = F0 + k h). With --report also
+DIR/report.md, the acceptance of validation/soda_lime_cutting_steady/ (exit 1 while a verdict is not resolved).
 """
 import argparse
 import csv
