@@ -283,3 +283,21 @@ def test_a_combination_of_estimates_adds_their_variances():
     assert math.isclose(c.value, 0.0, abs_tol=1e-12) and math.isclose(c.se, math.sqrt(0.04 + 0.04))
     assert 4 <= c.dof <= 13
     assert not st.combination([(1.0, st.Estimate(1.0, math.nan, 0)), (1.0, a)]).resolved()
+
+
+def test_the_papers_dem_verdicts_shown_but_not_asked_of_the_acceptance(tmp_path):
+    # kerf's verdicts all resolved (eight packings, 2 % scatter); the paper's DEM's three packings scatter 60 %, so its
+    # verdicts against the experiments cannot be resolved: the report shows them, the case still resolves.
+    full_record(tmp_path, 0.15, n=8)
+    with open(tmp_path / "experiments.csv", "a", newline="") as f:
+        w = csv.writer(f)
+        for surface, level in (("regular", 14.0), ("grooved", 2.0)):
+            for depth in (0.1, 0.2):
+                for k, e in enumerate((-0.6, 0.0, 0.6)):
+                    w.writerow(["paper_dem", surface, depth, k + 1, 1.0, level * (1 + e), 0.7 * level * (1 + e)])
+    rc = st.main([str(tmp_path / "record.csv"), "--experiments", str(tmp_path / "experiments.csv"),
+                  "--out", str(tmp_path / "out"), "--report"])
+    rows = list(csv.DictReader(open(tmp_path / "out" / "trends.csv")))
+    papers = [r for r in rows if r["source"] == "paper DEM" and r["group"] == "ratio" and r["against_experiment"]]
+    assert papers and any(r["against_experiment"] == "not resolved" for r in papers)
+    assert rc == 0
