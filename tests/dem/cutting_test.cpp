@@ -395,7 +395,7 @@ TEST_CASE("cutting: crack places and subsurface damage depth", "[cutting]") {
 
 TEST_CASE("cutting: the steady damage depth's 95th percentile is not the sparse tail's", "[cutting]") {
   // 100 steady subsurface cracks at depths 1..100 um (in shuffled order): the nearest-rank 95th percentile is the
-  // 95th smallest, 95 um, as is the deepest 100 um. A tail of five cracks at the window's floor (400 um) moves the
+  // 95th smallest, 95 um; the deepest is 100 um. A tail of five cracks at the window's floor (400 um) moves the
   // deepest to 400 um; the percentile moves only by the ranks they add (to the 100th of 105: 100 um).
   const double y_cut = 0.9e-3;
   std::vector<CrackEvent> cracks;
