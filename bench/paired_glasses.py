@@ -90,8 +90,11 @@ def main():
     ap.add_argument("--base-domain", help="BASE's window (default: --domain)")
     ap.add_argument("--base-depth", type=float, help="BASE's depth of cut in mm (default: --depth)")
     args = ap.parse_args()
-    print(compare(st.read_record(args.base), st.read_record(args.other), args.domain, args.depth,
-                  args.base_domain, args.base_depth))
+    try:
+        base, other = st.read_record(args.base), st.read_record(args.other)
+    except ValueError as e:
+        ap.error(str(e))
+    print(compare(base, other, args.domain, args.depth, args.base_domain, args.base_depth))
 
 
 if __name__ == "__main__":

@@ -149,7 +149,9 @@ def verdict(d, against):
 
 
 def read_record(path):
-    """{(domain, surface, depth_mm): {seed: row}} with numbers as floats."""
+    """{(domain, surface, depth_mm): {seed: row}} with numbers as floats. Two cuts of one (domain, surface, depth)
+    on one packing (conditions that differ in another tag, e.g. the disk size) are an error (ValueError naming them):
+    kept, one would silently replace the other."""
     cuts = {}
     with open(path, newline="") as f:
         for row in csv.DictReader(f):
@@ -160,7 +162,12 @@ def read_record(path):
                     values[k] = float(v)
                 except (TypeError, ValueError):
                     values[k] = v
-            cuts.setdefault(key, {})[int(float(row["seed"]))] = values
+            seed = int(float(row["seed"]))
+            mine = cuts.setdefault(key, {})
+            if seed in mine:
+                raise ValueError(f"{path}: two cuts of {key[0]}/{key[1]}/{key[2]:g} mm on packing {seed} (conditions "
+                                 "that differ in another tag: compare them apart)")
+            mine[seed] = values
     return cuts
 
 

@@ -166,9 +166,12 @@ def main(argv=None):
     ap.add_argument("--figure", type=pathlib.Path)
     args = ap.parse_args(argv)
     rows = []
-    for strength, record in sorted(args.point):
-        rows += point_rows(strength, st.read_record(record), args.domain, args.depth)
-    rows += point_rows(None, st.read_record(args.off), args.domain, args.depth)
+    try:
+        for strength, record in sorted(args.point):
+            rows += point_rows(strength, st.read_record(record), args.domain, args.depth)
+        rows += point_rows(None, st.read_record(args.off), args.domain, args.depth)
+    except ValueError as e:
+        ap.error(str(e))
     exp = experiments(args.depth)
     print(table(rows, exp))
     if args.csv:

@@ -301,3 +301,19 @@ def test_the_papers_dem_verdicts_shown_but_not_asked_of_the_acceptance(tmp_path)
     papers = [r for r in rows if r["source"] == "paper DEM" and r["group"] == "ratio" and r["against_experiment"]]
     assert papers and any(r["against_experiment"] == "not resolved" for r in papers)
     assert rc == 0
+
+
+def test_two_cuts_of_one_condition_on_one_packing_are_an_error_not_a_silent_choice(tmp_path):
+    # A record of two disk sizes, both regular 0.1 mm in the default window on packing 1: read as one condition,
+    # one cut would replace the other.
+    with open(tmp_path / "record.csv", "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["domain", "surface", "depth_of_cut_mm", "seed", "radius_min_um", "main_force_N"])
+        w.writerow(["default", "regular", 0.1, 1, 10, 0.27])
+        w.writerow(["default", "regular", 0.1, 1, 5, 0.37])
+    try:
+        st.read_record(tmp_path / "record.csv")
+    except ValueError as e:
+        assert "default/regular/0.1 mm on packing 1" in str(e)
+    else:
+        raise AssertionError("two cuts of one condition and packing were read silently")
