@@ -603,7 +603,9 @@ def report(rows, cuts, record_path, floors=None, needs=None):
     md += ["## The force as an edge part and a chip part (reported, not acceptance)", "",
            "Through the two depths of cut, F(h) = F0 + k h (Albrecht's decomposition): the depth-independent part "
            "F0 = 2 F(0.1) - F(0.2), the force of the edge, and the part per mm of depth k = (F(0.2) - F(0.1)) / "
-           "0.1 mm, the chip's. The large window spans the same millimetres at both depths; the default one twice "
+           "0.1 mm, the chip's. With two depths any pair of forces splits so: the split reads the depth effect, it "
+           "does not test that the force is linear in the depth (a force growing as the depth to a small power has "
+           "the same two points). The large window spans the same millimetres at both depths; the default one twice "
            "as many at 0.2 mm, so its decomposition holds the window's growth too.", ""]
     md += table([r for r in rows if r["group"] == "decomposition"], True) + [""]
     md += damage_section(cuts, floors or {})
