@@ -115,23 +115,19 @@ def ratio(a, b):
     return Estimate(r, math.sqrt(va + vb), dof, (-qb - root) / (2 * qa), (-qb + root) / (2 * qa))
 
 
-def difference(x, y):
-    """x - y of two independent estimates: delta-method standard error, Welch dof (not resolved where either
-    interval is not: an unbounded Fieller interval is not made finite by the delta method)."""
-    if not (x.resolved() and y.resolved()):
-        return Estimate(x.value - y.value, math.nan, 0)
-    dof = welch_dof([(x.se ** 2, x.dof), (y.se ** 2, y.dof)])
-    return Estimate(x.value - y.value, math.hypot(x.se, y.se), dof)
-
-
 def combination(terms):
     """sum c_i x_i of independent estimates, terms (c_i, x_i): delta-method standard error, Welch dof (not resolved
-    where any term is not)."""
+    where any term is not: an unbounded Fieller interval is not made finite by the delta method)."""
     value = sum(c * x.value for c, x in terms)
     if not all(x.resolved() for _, x in terms):
         return Estimate(value, math.nan, 0)
-    se = math.sqrt(sum((c * x.se) ** 2 for c, x in terms))
+    se = math.hypot(*(c * x.se for c, x in terms))
     return Estimate(value, se, welch_dof([((c * x.se) ** 2, x.dof) for c, x in terms]))
+
+
+def difference(x, y):
+    """x - y of two independent estimates (combination)."""
+    return combination([(1.0, x), (-1.0, y)])
 
 
 AGREEMENT_MARGIN = 0.5  # an 'agrees' must exclude a difference of half the value compared against
@@ -148,11 +144,12 @@ def verdict(d, against):
     return "agrees" if -margin <= d.low and d.high <= margin else "not resolved"
 
 
-def read_record(path):
-    """{(domain, surface, depth_mm): {seed: row}} with numbers as floats. Two cuts of one (domain, surface, depth)
-    on one packing (conditions that differ in another tag, e.g. the disk size) are an error (ValueError naming them):
-    kept, one would silently replace the other."""
-    cuts = {}
+def read_record(path, cuts=None):
+    """{(domain, surface, depth_mm): {seed: row}} with numbers as floats, added to `cuts` where given (records merge:
+    one model choice's cuts spread over two studies). Two cuts of one (domain, surface, depth) on one packing, in this
+    record or against `cuts` (conditions that differ in another tag, e.g. the disk size), are an error (ValueError
+    naming them): kept, one would silently replace the other."""
+    cuts = {} if cuts is None else cuts
     with open(path, newline="") as f:
         for row in csv.DictReader(f):
             key = (row["domain"], row["surface"], round(float(row["depth_of_cut_mm"]), 6))
@@ -165,24 +162,17 @@ def read_record(path):
             seed = int(float(row["seed"]))
             mine = cuts.setdefault(key, {})
             if seed in mine:
-                raise ValueError(f"{path}: two cuts of {key[0]}/{key[1]}/{key[2]:g} mm on packing {seed} (conditions "
-                                 "that differ in another tag: compare them apart)")
+                raise ValueError(f"{path}: a second cut of {key[0]}/{key[1]}/{key[2]:g} mm on packing {seed} "
+                                 "(conditions that differ in another tag, or a cut in two records: compare them apart)")
             mine[seed] = values
     return cuts
 
 
 def read_records(paths):
-    """read_record of several records merged (e.g. a study's record and another that adds its missing depths); a
-    cut two records both hold is an error (ValueError naming it), not silently one of the two."""
+    """read_record of several records merged."""
     cuts = {}
     for path in paths:
-        for key, runs in read_record(path).items():
-            mine = cuts.setdefault(key, {})
-            for seed, row in runs.items():
-                if seed in mine:
-                    raise ValueError(f"{path}: cut {key[0]}/{key[1]}/{key[2]:g} mm packing {seed} is in an earlier "
-                                     "record too")
-                mine[seed] = row
+        read_record(path, cuts)
     return cuts
 
 
@@ -274,16 +264,18 @@ def trends(src):
                     lambda source, s=surface, d=depth, q=q: ref_ratio(source, (s, d), ("regular", d), q))
     # Albrecht's decomposition through the two depths: F(h) = F0 + k h, the intercept F0 = 2 F(0.1) - F(0.2) (a force
     # that does not grow with the depth of cut: the edge's) and the slope k = (F(0.2) - F(0.1)) / 0.1 mm (the chip's).
+    def through_depths(c, at_01, at_02):
+        return combination([(c[0], at_01), (c[1], at_02)]) if at_01 and at_02 else None
+
     for q in ("main", "thrust"):
         for surface in ("regular",) + GROOVED:
-            for name, unit, coefficients in (("depth-independent", "N/mm", (2.0, -1.0)),
-                                             ("per mm of depth", "N/mm per mm", (-10.0, 10.0))):
-                def parts(get, s=surface, q=q, c=coefficients):
-                    a, b = get(s, 0.1, q), get(s, 0.2, q)
-                    return combination([(c[0], a), (c[1], b)]) if a and b else None
+            for name, unit, c in (("depth-independent", "N/mm", (2.0, -1.0)),
+                                  ("per mm of depth", "N/mm per mm", (-10.0, 10.0))):
                 add(f"{q} force {name}, {surface} ({unit})", "decomposition", [(surface, 0.1), (surface, 0.2)],
-                    lambda dom, parts=parts: parts(lambda s, d, q: src.kerf(dom, s, d, q)),
-                    lambda source, parts=parts: parts(lambda s, d, q: src.reference(source, s, d, q)))
+                    lambda dom, s=surface, q=q, c=c: through_depths(c, src.kerf(dom, s, 0.1, q),
+                                                                    src.kerf(dom, s, 0.2, q)),
+                    lambda source, s=surface, q=q, c=c: through_depths(c, src.reference(source, s, 0.1, q),
+                                                                       src.reference(source, s, 0.2, q)))
     for depth in (0.1, 0.2):
         add(f"trapezoidal / rectangular thrust at {depth} mm", "ratio",
             [("trapezoidal", depth), ("rectangular", depth)],

@@ -46,14 +46,14 @@ def point_rows(strength, cuts, domain, depth):
 
 
 def experiments(depth):
-    """The experiments' per-width means {(quantity, surface): value} at this depth; grooved is the rectangular."""
-    exp = st.read_experiments(st.EXPERIMENTS)
+    """The experiments' per-width means {(quantity, surface): value} at this depth (the rectangular surface is their
+    grooved one) and their groove effect."""
+    ref = st.Sources({}, st.read_experiments(st.EXPERIMENTS))
     out = {}
-    for surface, theirs in (("regular", "regular"), ("rectangular", "grooved")):
-        for force in ("main", "thrust"):
-            values = exp.get(("experiment", theirs, round(depth, 6)), {}).get(force, [])
-            out[(f"{force}_force_N_per_mm", surface)] = sum(values) / len(values) if values else math.nan
     for force in ("main", "thrust"):
+        for surface in SURFACES:
+            e = ref.reference("experiment", surface, round(depth, 6), force)
+            out[(f"{force}_force_N_per_mm", surface)] = e.value if e else math.nan
         out[(f"groove_effect_{force}", "rectangular/regular")] = (
             out[(f"{force}_force_N_per_mm", "rectangular")] / out[(f"{force}_force_N_per_mm", "regular")])
     return out
