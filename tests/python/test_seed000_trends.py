@@ -317,3 +317,77 @@ def test_two_cuts_of_one_condition_on_one_packing_are_an_error_not_a_silent_choi
         assert "default/regular/0.1 mm on packing 1" in str(e)
     else:
         raise AssertionError("two cuts of one condition and packing were read silently")
+
+
+def test_packings_factor_is_where_the_projected_interval_first_resolves():
+    # kerf 0.30 +- 0.05 (7 dof) against the experiments' 0.15 +- 0.01: at 8 packings the difference's interval holds 0
+    # and is wider than +-50 %; with more packings it narrows about 0.15 and comes to exclude 0.
+    kerf, exp = st.Estimate(0.30, 0.07, 7), st.Estimate(0.15, 0.01, 2)
+    terms = [(1.0, kerf, True), (-1.0, exp, False)]
+    assert st.verdict(st.difference(kerf, exp), exp) == "not resolved"
+    k, why = st.packings_factor(terms, exp)
+    assert why == "spread" and 1 < k < 100
+    at = lambda f: st.verdict(st.difference(st.scaled(kerf, f), exp), exp)
+    assert at(k) == "differs" and at(k / 1.01) == "not resolved"
+    # Already resolved: no more packings.
+    assert st.packings_factor([(1.0, st.Estimate(0.9, 0.01, 7), True), (-1.0, exp, False)], exp) == (1.0, "spread")
+
+
+def test_a_verdict_the_experiments_own_interval_leaves_open_is_never_resolved_by_packings():
+    # The experiments' ratio 1.7 +- 0.25 (2 dof: half-width about 1.1): kerf's 1.2 lies within it however narrow
+    # kerf's own interval becomes, and the interval is far wider than +-50 % of 1.7.
+    kerf, exp = st.Estimate(1.2, 0.08, 11), st.Estimate(1.7, 0.25, 2)
+    assert st.packings_factor([(1.0, kerf, True), (-1.0, exp, False)], exp) == (math.inf, "experiments")
+    # Two of kerf's estimates (one domain against the other) have no fixed part: packings always resolve them,
+    # unless the two values are equal and the margin is zero.
+    a, b = st.Estimate(1.2, 0.3, 7), st.Estimate(1.0, 0.3, 7)
+    k, why = st.packings_factor([(1.0, a, True), (-1.0, b, True)], b)
+    assert why == "spread" and math.isfinite(k) and k > 1
+
+
+def test_acceptance_asks_the_main_force_not_the_thrust_nor_what_the_experiments_cannot_tell():
+    def row(trend, verdict):
+        return {"trend": trend, "group": "ratio", "source": "kerf default", "against_experiment": verdict}
+
+    main, thrust = "depth effect main, regular (0.2 / 0.1 mm)", "depth effect thrust, regular (0.2 / 0.1 mm)"
+    label = lambda trend: f"{trend} (kerf default) against the experiments"
+    needs = {main: ("default",), thrust: ("default",)}
+    # The thrust's verdict not resolved: shown, not asked.
+    ok, missing, shown = st.acceptance([row(main, "differs"), row(thrust, "not resolved")], needs, {thrust})
+    assert ok and not missing and shown == [f"{label(thrust)} (thrust)"]
+    # The main force's: asked, unless the experiments cannot tell.
+    ok, missing, shown = st.acceptance([row(main, "not resolved"), row(thrust, "agrees")], needs, {thrust})
+    assert not ok and missing == [label(main)]
+    pending = [{"verdict": label(main), "why": "experiments"}]
+    ok, missing, shown = st.acceptance([row(main, "not resolved")], needs, {thrust}, pending)
+    assert ok and shown == [f"{label(main)} (the experiments cannot tell)"]
+    # A projection that more packings would resolve it does not excuse it.
+    pending = [{"verdict": label(main), "why": "spread"}]
+    assert not st.acceptance([row(main, "not resolved")], needs, {thrust}, pending)[0]
+
+
+def test_to_resolve_prices_each_open_verdict_at_its_conditions_cut_time(tmp_path):
+    # Three packings scattering 15 %, kerf's groove effect 0.35 against the experiments' 0.15: some verdicts open.
+    means = {(d, s, h): 0.5 * (0.35 if s == "rectangular" else 1)
+             for d in st.DOMAINS for s in ("regular", "rectangular") for h in (0.1, 0.2)}
+    write_record(tmp_path / "record.csv", means, n=3, spread=0.15, seed=11)
+    write_experiments(tmp_path / "experiments.csv", 0.65, 0.65 * 0.15)
+    cuts = st.read_record(tmp_path / "record.csv")
+    for by_seed in cuts.values():
+        for r in by_seed.values():
+            r["cpu_time_s"] = 3600.0 if r["depth_of_cut_mm"] == 0.2 else 1800.0
+    src = st.Sources(cuts, st.read_experiments(tmp_path / "experiments.csv"))
+    all_trends = st.trends(src)
+    pending = st.to_resolve(all_trends, src, st.costs(cuts))
+    open_verdicts = st.acceptance(st.rows_of(all_trends))[1]
+    assert pending and {p["verdict"] for p in pending} <= set(open_verdicts)
+    assert any(math.isfinite(p["factor"]) for p in pending)
+    for p in pending:
+        assert p["now"] and all(n == 3 for n in p["now"])
+        if math.isfinite(p["factor"]):
+            assert p["need"] == [math.ceil(p["factor"] * 3 - 1e-9)] * len(p["now"])
+            hours = {0.1: 0.5, 0.2: 1.0}
+            trend = p["verdict"].split(" (kerf")[0].split(": default")[0]
+            domains = len(p["now"]) // len(src.conditions[trend])
+            expected = domains * sum((p["need"][0] - 3) * hours[h] for _, h in src.conditions[trend])
+            assert math.isclose(p["cpu_h"], expected)
