@@ -419,6 +419,17 @@ def cost_section(cost_rows):
     return md + [""]
 
 
+def against_experiments(trend, source):
+    """The name of a verdict of `source` ('kerf default', ...) against the experiments (the report's, the acceptance's
+    and to_resolve's)."""
+    return f"{trend} ({source}) against the experiments"
+
+
+def between_domains(trend):
+    """The name of a trend's domain-robustness verdict."""
+    return f"{trend}: default against large domain"
+
+
 def to_resolve(all_trends, src, cost_rows):
     """Each of kerf's verdicts not resolved (the acceptance's: ratios against the experiments, and default against
     large), with what resolving it would take at the present spread (packings_factor): [{verdict, packings now
@@ -447,12 +458,11 @@ def to_resolve(all_trends, src, cost_rows):
             if e is None:
                 continue
             if exp is not None and verdict(difference(e, exp), exp) == "not resolved":
-                add(f"{name} (kerf {domain}) against the experiments", name, (domain,),
+                add(against_experiments(name, f"kerf {domain}"), name, (domain,),
                     [(1.0, e, True), (-1.0, exp, False)], exp)
         large, default = values.get("kerf large"), values.get("kerf default")
         if large is not None and default is not None and verdict(difference(default, large), large) == "not resolved":
-            add(f"{name}: default against large domain", name, DOMAINS, [(1.0, default, True), (-1.0, large, True)],
-                large)
+            add(between_domains(name), name, DOMAINS, [(1.0, default, True), (-1.0, large, True)], large)
     return out
 
 
@@ -464,8 +474,8 @@ def resolve_section(pending):
           "At the present spread between packings (the delta method's interval narrowing as one over the square "
           "root of the packings, the experiments' not at all), the packings each condition of the trend would need "
           "for the verdict to resolve, either way, and the CPU-hours they add at the median cut. A projection, not "
-          "a promise: the spread itself is uncertain with 6-8 packings. Verdicts sharing a condition share its cuts.",
-          "", "| verdict | packings now | times | packings needed | CPU-hours more |", "|---|---:|---:|---:|---:|"]
+          "a promise: the spread itself is uncertain with few packings. Verdicts sharing a condition share its cuts.",
+          "", "| verdict | packings now | x packings | packings needed | CPU-hours more |", "|---|---:|---:|---:|---:|"]
     for r in pending:
         now = ", ".join(map(str, r["now"]))
         if math.isfinite(r["factor"]):
@@ -626,9 +636,9 @@ def acceptance(rows, needs=None, thrust=frozenset(), pending=()):
         if r["group"] != "ratio" or not r["source"].startswith("kerf"):
             continue
         if "against_experiment" in r and r["against_experiment"] == "not resolved":
-            ask(f"{r['trend']} ({r['source']}) against the experiments", r["trend"])
+            ask(against_experiments(r["trend"], r["source"]), r["trend"])
         if "domain_robust" in r and r["domain_robust"] == "not resolved":
-            ask(f"{r['trend']}: default against large domain", r["trend"])
+            ask(between_domains(r["trend"]), r["trend"])
     ratios_with_experiment = {r["trend"] for r in rows if r["group"] == "ratio" and r["source"] == "experiment"}
     for trend in sorted(ratios_with_experiment):
         sources = {r["source"] for r in rows if r["trend"] == trend}
