@@ -9,9 +9,9 @@
 #                                                 # soda_lime_cutting_cut_fitted (12 cuts, 13-34 min) or
 #                                                 # soda_lime_cutting_steady (the seed-000 study's record:
 #                                                 # kerf-dem study data/studies/seed000_steady.json runs the
-#                                                 # cuts not yet recorded, 23+ CPU-hours from nothing, then
+#                                                 # cuts not yet recorded, 14-23 CPU-hours from nothing, then
 #                                                 # bench/seed000_trends.py --report; exit 0 when every
-#                                                 # verdict is resolved)
+#                                                 # verdict asked is resolved)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 case="${1:-all}"
