@@ -430,12 +430,14 @@ def between_domains(trend):
     return f"{trend}: default against large domain"
 
 
-def to_resolve(all_trends, src, cost_rows):
-    """Each of kerf's verdicts not resolved (the acceptance's: ratios against the experiments, and default against
-    large), with what resolving it would take at the present spread (packings_factor): [{verdict, packings now
-    (per condition), factor, why, packings per condition, CPU-hours more}]. The CPU-hours are each condition's median
-    cut times its added packings; two verdicts sharing a condition share its cuts (not summed here)."""
+def to_resolve(rows, all_trends, src, cost_rows):
+    """Each of kerf's verdicts not resolved in `rows` (rows_of's; the acceptance's: ratios against the experiments,
+    and default against large), with what resolving it would take at the present spread (packings_factor):
+    [{verdict, packings now (per condition), factor, why, packings per condition, CPU-hours more}]. The CPU-hours are
+    each condition's median cut times its added packings; two verdicts sharing a condition share its cuts (not summed
+    here)."""
     cpu = {(r["domain"], r["surface"], r["depth_of_cut_mm"]): r["cpu_s_per_cut"] for r in cost_rows}
+    values_of = {name: values for name, _, values in all_trends}
     out = []
 
     def add(label, name, domains, terms, against):
@@ -449,20 +451,18 @@ def to_resolve(all_trends, src, cost_rows):
             row["cpu_h"] = sum((m - n) * cpu.get(key, math.nan) for m, n, key in zip(need, now, keys)) / 3600
         out.append(row)
 
-    for name, group, values in all_trends:
-        if group != "ratio":
-            continue
-        exp = values.get("experiment")
-        for domain in DOMAINS:
-            e = values.get(f"kerf {domain}")
-            if e is None:
-                continue
-            if exp is not None and verdict(difference(e, exp), exp) == "not resolved":
-                add(against_experiments(name, f"kerf {domain}"), name, (domain,),
+    open_rows = [r for r in rows if r["group"] == "ratio" and r["source"].startswith("kerf")]
+    for name in dict.fromkeys(r["trend"] for r in open_rows):
+        values = values_of[name]
+        for r in open_rows:  # against the experiments first, then between the domains
+            if r["trend"] == name and r.get("against_experiment") == "not resolved":
+                e, exp = values[r["source"]], values["experiment"]
+                add(against_experiments(name, r["source"]), name, (r["source"][5:],),
                     [(1.0, e, True), (-1.0, exp, False)], exp)
-        large, default = values.get("kerf large"), values.get("kerf default")
-        if large is not None and default is not None and verdict(difference(default, large), large) == "not resolved":
-            add(between_domains(name), name, DOMAINS, [(1.0, default, True), (-1.0, large, True)], large)
+        for r in open_rows:
+            if r["trend"] == name and r.get("domain_robust") == "not resolved":
+                default, large = values["kerf default"], values["kerf large"]
+                add(between_domains(name), name, DOMAINS, [(1.0, default, True), (-1.0, large, True)], large)
     return out
 
 
@@ -777,7 +777,7 @@ def main(argv=None):
               f"{extra}")
     print(f"wrote {out / 'trends.csv'}, {out / 'cost.csv'}, {out / 'trends.png'}, {out / 'decomposition.png'}")
     if args.report:
-        text, resolved = report(rows, cuts, records[0], floors, src, to_resolve(all_trends, src, cost_rows))
+        text, resolved = report(rows, cuts, records[0], floors, src, to_resolve(rows, all_trends, src, cost_rows))
         tmp = out / "report.md.tmp"
         tmp.write_text(text)
         tmp.replace(out / "report.md")
