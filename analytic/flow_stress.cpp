@@ -7,9 +7,14 @@
 namespace kerf {
 
 void FlowStressModel::validate(const std::string& path) const {
-  if (!johnson_cook && !hall_petch && !dislocation) {
-    throw InputError(path + ".terms", "[]", "at least one of 'johnson_cook', 'hall_petch', 'dislocation'");
+  if (!johnson_cook && !hall_petch && !dislocation && !hardness) {
+    throw InputError(path, "[]", "at least one of 'johnson_cook', 'hall_petch', 'dislocation', or a hardness term");
   }
+  if (hardness && (johnson_cook || hall_petch || dislocation)) {
+    throw InputError(path, std::string(constraint_model_name(constraint)) + " with other terms",
+                     "the hardness term alone (it is a glass's whole flow stress, not an addition to a metal's)");
+  }
+  if (hardness) hardness->validate("material", constraint);
   if (johnson_cook) johnson_cook->validate(path + ".johnson_cook");
   if (hall_petch) hall_petch->validate(path + ".microstructure");
   if (dislocation) dislocation->validate(path + ".microstructure");
@@ -17,6 +22,11 @@ void FlowStressModel::validate(const std::string& path) const {
 
 FlowStress flow_stress(const FlowStressModel& model, const DeformationState& state, Guards* guards) {
   FlowStress out;
+  if (model.hardness) {  // rate- and temperature-independent (hardness_flow.hpp)
+    out.hardness_Pa = out.total_Pa = hardness_yield_stress_Pa(*model.hardness, model.constraint);
+    out.shear_Pa = out.total_Pa / std::sqrt(3.0);
+    return out;
+  }
   const JohnsonCookParams* softening_law = model.johnson_cook         ? &*model.johnson_cook
                                            : model.thermal_softening ? &*model.thermal_softening
                                                                      : nullptr;

@@ -2,6 +2,9 @@
 
 #include <optional>
 
+#include <fmt/format.h>
+
+#include "kerf/error.hpp"
 #include "kerf/field_table.hpp"
 #include "kerf/units.hpp"
 
@@ -153,6 +156,9 @@ const FieldTable<BrittleGroup>& brittle_fields() {
                             &BrittleGroup::hardness_Pa, "none"),
       optional_number_field("fracture_toughness_MPa_sqrt_m", kMPaSqrtM, Range::positive(), "fracture toughness K_c",
                             &BrittleGroup::fracture_toughness_Pa_sqrt_m, "none"),
+      optional_number_field("constraint_factor", units::kNone, Range::at_least(1.0),
+                            "constraint factor C = H / Y of the hardness flow stress (models.flow_stress = hardness)",
+                            &BrittleGroup::constraint_factor, "none"),
       optional_number_field("tensile_strength_MPa", units::kMPa, Range::positive(),
                             "tensile strength (recorded: no analytic model reads it)", &BrittleGroup::tensile_strength_Pa,
                             "none"),
@@ -175,7 +181,8 @@ const std::vector<SceneKeySection>& material_key_sections() {
       {"material.oxley", "optional, used by oxley: the heat partition factors",
        [] { return fields_markdown(oxley_fields()); }},
       {"material.brittle", "optional: hardness and toughness give the regime check's critical depth (with "
-                           "elastic.youngs_modulus_GPa); the hardness is the trepanning model's default",
+                           "elastic.youngs_modulus_GPa) and the transition model's fracture part; the hardness is the "
+                           "trepanning model's default and, with the constraint factor, the hardness flow stress",
        [] { return fields_markdown(brittle_fields()); }}};
   return list;
 }
@@ -244,6 +251,22 @@ T optional_group(const MaterialRecord& material, const std::string& path, const 
 
 BrittleGroup brittle_group_from_material(const MaterialRecord& material, const std::string& path) {
   return optional_group(material, path, "brittle", brittle_fields());
+}
+
+HardnessFlowParams hardness_flow_from_material(const MaterialRecord& material, const std::string& path) {
+  const std::string purpose = "the hardness flow stress (models.flow_stress = hardness)";
+  material.require_group("brittle", path, purpose);
+  const BrittleGroup brittle = brittle_group_from_material(material, path);
+  if (!brittle.hardness_Pa) {
+    throw InputError(path + ".brittle.hardness_GPa", fmt::format("(missing in material '{}')", material.name),
+                     "a number: " + purpose + " needs it");
+  }
+  material.require_group("elastic", path, purpose);
+  const ElasticProperties elastic = elastic_from_material(material, path);
+  return {.hardness_Pa = *brittle.hardness_Pa,
+          .youngs_modulus_Pa = elastic.youngs_modulus_Pa,
+          .poissons_ratio = elastic.poissons_ratio,
+          .constraint_factor = brittle.constraint_factor};
 }
 
 OxleyHeatFactors oxley_factors_from_material(const MaterialRecord& material, const std::string& path) {

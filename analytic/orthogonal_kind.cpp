@@ -41,10 +41,17 @@ void print_prediction(std::FILE* text, const std::string& scene_path, const Anal
                                                                       friction_closure_name(scene.liu_li.closure)));
   }
   fmt::print(text, "chip ratio        {:.4g} (chip thickness {:.6g} um)\n", p.chip_ratio, m_to_um(p.chip_thickness_m));
-  fmt::print(text,
-             "flow stress       {:.6g} MPa (JC {:.6g} + Hall-Petch {:.6g} + dislocation {:.6g}); k_s = {:.6g} MPa\n",
-             pa_to_mpa(p.flow.total_Pa), pa_to_mpa(p.flow.johnson_cook_Pa), pa_to_mpa(p.flow.hall_petch_Pa),
-             pa_to_mpa(p.flow.dislocation_Pa), pa_to_mpa(p.flow.shear_Pa));
+  if (scene.flow_stress.hardness) {
+    fmt::print(text, "flow stress       {:.6g} MPa (hardness {:.6g} MPa / constraint factor {:.4g}, {}); k_s = {:.6g} MPa\n",
+               pa_to_mpa(p.flow.total_Pa), pa_to_mpa(scene.flow_stress.hardness->hardness_Pa),
+               scene.flow_stress.hardness->hardness_Pa / p.flow.total_Pa,
+               constraint_model_name(scene.flow_stress.constraint), pa_to_mpa(p.flow.shear_Pa));
+  } else {
+    fmt::print(text,
+               "flow stress       {:.6g} MPa (JC {:.6g} + Hall-Petch {:.6g} + dislocation {:.6g}); k_s = {:.6g} MPa\n",
+               pa_to_mpa(p.flow.total_Pa), pa_to_mpa(p.flow.johnson_cook_Pa), pa_to_mpa(p.flow.hall_petch_Pa),
+               pa_to_mpa(p.flow.dislocation_Pa), pa_to_mpa(p.flow.shear_Pa));
+  }
   fmt::print(text, "at                strain {:.4g}, strain rate {:.4g} 1/s, temperature {:.5g} K\n", p.state.strain,
              p.state.strain_rate_per_s, p.state.temperature_K);
   if (scene.critical_depth_m) {
@@ -74,6 +81,15 @@ void print_prediction(std::FILE* text, const std::string& scene_path, const Anal
     } else {
       fmt::print(text, "ploughing part    none (models.ploughing = {})\n", ploughing_model_name(scene.ploughing));
     }
+  }
+  if (p.transition) {
+    const auto& t = *p.transition;
+    fmt::print(text, "ductile layer     l = {:.4g} um ({} x d_c); the ductile model's part {:.6g} N cutting, {:.6g} N "
+                     "thrust\n",
+               m_to_um(t.ductile_layer_m), scene.transition.layer_factor, t.layer.cutting_N_per_m * p.width_m,
+               t.layer.thrust_N_per_m * p.width_m);
+    fmt::print(text, "fracture part     {:.6g} N cutting, {:.6g} N thrust ({})\n", t.fracture.cutting_N_per_m * p.width_m,
+               t.fracture.thrust_N_per_m * p.width_m, fracture_model_name(scene.transition.fracture));
   }
   if (p.oxley) {
     fmt::print(text,
@@ -117,15 +133,16 @@ class OrthogonalCase final : public AnalyticCase {
     fmt::print(text, "regime            {}\n", cutting_regime_name(regime));
     switch (regime) {
       case CuttingRegime::ductile:
-        fmt::print(text, "model to use      the ductile-regime analytic models (merchant, liu_li, oxley)\n");
+        fmt::print(text, "model to use      the ductile-regime analytic models (merchant, liu_li, oxley; "
+                         "transition reduces to them here)\n");
         break;
       case CuttingRegime::transition:
-        fmt::print(text, "model to use      neither cleanly (d_c to 3 d_c): the ductile models overestimate the chip's "
-                         "integrity, the DEM resolves the cracks (kerf-dem)\n");
+        fmt::print(text, "model to use      models.force = transition (the ductile layer plus a fracture part); the "
+                         "ductile models alone overestimate the chip's integrity\n");
         break;
       case CuttingRegime::brittle:
-        fmt::print(text, "model to use      the DEM (kerf-dem) for cutting, or the trepanning model for abrasive "
-                         "drilling\n");
+        fmt::print(text, "model to use      models.force = transition up to about 0.2 mm, the DEM (kerf-dem) for cuts "
+                         "of tens of um and more, or the trepanning model for abrasive drilling\n");
         break;
     }
   }

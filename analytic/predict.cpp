@@ -26,6 +26,8 @@ constexpr double kContactLengthValidatedThickness_m = 0.1e-3;
 constexpr const char* kContactLengthValidatedMaterial = "a2024_t351";
 // Two friction angles closer than this are the same (rounding of the closures' identities).
 constexpr double kSameAngle_rad = 1e-9;
+// The deepest cut the transition model was held against: seed 000's Table 6 (0.1 and 0.2 mm).
+constexpr double kTransitionValidatedDepth_m = 0.2e-3;
 
 /// Shear-plane strain and Oxley's strain-rate estimate for a sharp tool (physics-analytic.md §3).
 DeformationState shear_plane_state(const AnalyticScene& scene, double shear_angle_rad) {
@@ -57,17 +59,28 @@ void check_shear_angle(double phi, const AnalyticScene& scene) {
                                units::rad_to_deg(scene.friction_angle_rad.value_or(0.0))));
 }
 
-/// Every force model here is a ductile-regime model: warn, and name the model to use, above the critical depth.
+/// Every force model but `transition` is a ductile-regime model: warn, and name the model to use, above the
+/// critical depth; `transition` warns beyond the depth it was held against.
 void add_regime(const AnalyticScene& scene, Prediction& p) {
   if (!scene.critical_depth_m) return;
   const double depth = scene.uncut_chip_thickness_m, critical = *scene.critical_depth_m;
   const CuttingRegime regime = classify_regime(depth, critical);
   p.regime = cutting_regime_name(regime);
+  if (&scene.force_model() == &transition_force_model) {
+    if (depth > kTransitionValidatedDepth_m) {
+      p.within_model_range = false;
+      p.warnings.push_back(fmt::format("uncut chip thickness {:.4g} um is beyond {:.3g} um, the deepest cut the "
+                                       "transition model was held against (docs/models.md)",
+                                       units::m_to_um(depth), units::m_to_um(kTransitionValidatedDepth_m)));
+    }
+    return;
+  }
   if (regime == CuttingRegime::ductile) return;
+  p.within_model_range = false;
   p.warnings.push_back(fmt::format(
       "uncut chip thickness {:.4g} nm is above the ductile-brittle critical depth d_c = {:.3g} nm (Bifano): {} "
-      "regime, where this ductile-regime model does not hold; use the DEM (kerf-dem) for cutting, or the "
-      "trepanning model for abrasive drilling",
+      "regime, where this ductile-regime model does not hold; use models.force = transition (0.01 um to 0.2 mm), "
+      "the DEM (kerf-dem) for cuts of tens of um and more, or the trepanning model for abrasive drilling",
       units::m_to_nm(depth), units::m_to_nm(critical), p.regime));
 }
 
@@ -302,9 +315,40 @@ void predict_liu_li_forces(const AnalyticScene& scene, const OxleyResult* oxley,
   predict_chip_forces(scene, oxley, false, p);
 }
 
+/// models.force = transition: the ductile model (Liu-Li with an edge radius, Merchant without) at min(h, l), plus
+/// the fracture part above l (transition.hpp). Above l the shear angle, chip, state and edge details are the
+/// layer's.
+void predict_transition_forces(const AnalyticScene& scene, const OxleyResult* oxley, Prediction& p) {
+  if (!scene.critical_depth_m) {
+    throw InputError("material.brittle", fmt::format("(no hardness and toughness in material '{}')", scene.material->name),
+                     "a brittle material with elastic.youngs_modulus_GPa, brittle.hardness_GPa and "
+                     "brittle.fracture_toughness_MPa_sqrt_m: models.force = transition needs its critical depth");
+  }
+  const double layer = ductile_layer_m(scene.transition, *scene.critical_depth_m);
+  const double depth = scene.uncut_chip_thickness_m;
+  const bool sharp = scene.edge_radius_m == 0.0;
+  TransitionDetails details;
+  details.ductile_layer_m = layer;
+  if (depth <= layer) {
+    predict_chip_forces(scene, oxley, sharp, p);
+  } else {
+    AnalyticScene layer_scene = scene;
+    layer_scene.uncut_chip_thickness_m = layer;
+    predict_chip_forces(layer_scene, oxley, sharp, p);
+  }
+  details.layer = {p.cutting_force_N / scene.width_m, p.thrust_force_N / scene.width_m};
+  const BrittleProperties brittle = brittle_properties(*scene.material, "material");
+  details.fracture = fracture_force_per_width(scene.transition, brittle.fracture_toughness_Pa_sqrt_m, depth, layer,
+                                              scene.rake_rad, p.friction_angle_rad);
+  p.cutting_force_N += details.fracture.cutting_N_per_m * scene.width_m;
+  p.thrust_force_N += details.fracture.thrust_N_per_m * scene.width_m;
+  p.transition = details;
+}
+
 /// models.force = auto: the cheapest valid model for the scene as read.
 std::string_view choose_force_model(const AnalyticScene& scene, std::string* reason) {
-  if (!scene.friction_angle_rad && scene.shear_angle != ShearAngleSource::chip_ratio) {
+  if (!scene.friction_angle_rad && scene.shear_angle != ShearAngleSource::chip_ratio &&
+      scene.material->group("johnson_cook")) {
     *reason = "no friction data: only oxley predicts without it";
     return "oxley";
   }
@@ -361,6 +405,7 @@ const OrthogonalForceModel merchant_force_model{.predict = &predict_merchant_for
 const OrthogonalForceModel liu_li_force_model{.predict = &predict_liu_li_forces, .edge_columns = true};
 const OrthogonalForceModel oxley_force_model{.predict = &predict_oxley_forces, .solves_oxley = true};
 const OrthogonalForceModel auto_force_model{.choose = &choose_force_model};
+const OrthogonalForceModel transition_force_model{.predict = &predict_transition_forces, .edge_columns = true};
 
 Prediction predict(const AnalyticScene& scene) {
   Prediction p = predict_forces(scene);
@@ -403,6 +448,7 @@ void write_prediction_cells(const AnalyticScene& scene, const Prediction& p, Cel
   if (scene.flow_stress.johnson_cook) w.number("johnson_cook_stress_MPa", units::pa_to_mpa(p.flow.johnson_cook_Pa));
   if (scene.flow_stress.hall_petch) w.number("hall_petch_stress_MPa", units::pa_to_mpa(p.flow.hall_petch_Pa));
   if (scene.flow_stress.dislocation) w.number("dislocation_stress_MPa", units::pa_to_mpa(p.flow.dislocation_Pa));
+  if (scene.flow_stress.hardness) w.number("hardness_flow_stress_MPa", units::pa_to_mpa(p.flow.hardness_Pa));
   w.number("strain", p.state.strain);
   w.number("strain_rate_per_s", p.state.strain_rate_per_s);
   w.number("temperature_K", p.state.temperature_K);
@@ -440,6 +486,15 @@ void write_prediction_cells(const AnalyticScene& scene, const Prediction& p, Cel
     w.optional_number("oxley_residual", has, o.residual);
     w.optional_number("oxley_shear_angle_roots", has, o.shear_angle_roots);
   }
+  if (&scene.force_model() == &transition_force_model) {
+    const TransitionDetails t = p.transition.value_or(TransitionDetails{});
+    w.text("fracture_model", fracture_model_name(scene.transition.fracture));
+    w.number("ductile_layer_um", units::m_to_um(t.ductile_layer_m));
+    w.number("layer_cutting_force_N", t.layer.cutting_N_per_m * p.width_m);
+    w.number("layer_thrust_force_N", t.layer.thrust_N_per_m * p.width_m);
+    w.number("fracture_cutting_force_N", t.fracture.cutting_N_per_m * p.width_m);
+    w.number("fracture_thrust_force_N", t.fracture.thrust_N_per_m * p.width_m);
+  }
   if (scene.turning) {
     w.number("feed_um_per_rev", units::m_to_um(scene.turning->geometry.feed_m_per_rev));
     w.number("depth_of_cut_um", units::m_to_um(scene.turning->geometry.depth_of_cut_m));
@@ -450,6 +505,7 @@ void write_prediction_cells(const AnalyticScene& scene, const Prediction& p, Cel
   w.optional_number("critical_depth_nm", scene.critical_depth_m.has_value(),
                     units::m_to_nm(scene.critical_depth_m.value_or(0.0)));
   w.text("regime", p.regime);
+  w.text("within_model_range", p.within_model_range ? "yes" : "no");
   w.text("guards", p.guards.names());
   std::string warnings;
   for (const auto& w_text : p.warnings) warnings += (warnings.empty() ? "" : "; ") + w_text;

@@ -28,12 +28,25 @@ std::vector<AnalyticModelInfo>& registry() {
        -1, &build_orthogonal_scene, &liu_li_force_model},
       {"force", "oxley", "extended Oxley theory with Johnson-Cook (Lalwani et al. 2009), sharp tool",
        "material johnson_cook, thermal and oxley groups", -1, &build_orthogonal_scene, &oxley_force_model},
+      {"force", "transition", "brittle materials across the ductile-brittle transition: the ductile model (liu_li, or "
+                              "merchant for a sharp edge) up to a layer of about d_c, then that layer at the edge "
+                              "plus a fracture part (models.fracture; docs/models.md); from 0.01 um to 0.2 mm",
+       "material E, hardness, toughness; friction; a flow stress (hardness for glasses)", -1, &build_orthogonal_scene,
+       &transition_force_model},
       {"force", "trepanning", "fixed-abrasive trepanning drill, axial force and torque (seed 002 Eqs. 21-22; brittle "
                               "regime)", "tool outer/inner diameter, cut feed rate and spindle speed, the two lumped "
                               "groups or hardness, half angle and friction", -1, &build_trepanning_scene},
       {"flow_stress", "johnson_cook", "Johnson-Cook, seed 001 Eq. 9", "material johnson_cook group; a deformation state"},
       {"flow_stress", "hall_petch", "Hall-Petch with K_HP from seed 001 Eqs. 10-11", "material microstructure and elastic groups"},
       {"flow_stress", "dislocation", "incidental-boundary strengthening, seed 001 Eqs. 4-6", "material microstructure and elastic groups"},
+      {"flow_stress", "hardness", "glasses and ceramics: Y = H / C with the material's constraint factor C (Marsh 1964: "
+                                  "1.5-2 for glasses); alone, rate- and temperature-independent",
+       "material brittle.hardness_GPa and brittle.constraint_factor, elastic group", id(ConstraintModel::given)},
+      {"flow_stress", "hardness_marsh", "glasses and ceramics: Y from H / Y = 0.07 + 0.6 ln(E / Y) (Marsh 1964)",
+       "material brittle.hardness_GPa, elastic group; H / E below 0.212", id(ConstraintModel::marsh)},
+      {"flow_stress", "hardness_johnson", "glasses and ceramics: Y from Johnson's expanding cavity, H / Y = (2/3)(1 + "
+                                          "ln(E* tan 19.7 deg / 3 Y)) (Johnson 1970)",
+       "material brittle.hardness_GPa, elastic group; H / E* below 0.0724 (not soda-lime glass)", id(ConstraintModel::johnson_cavity)},
       {"deformation", "room_temperature", "T = workpiece temperature, shear-plane strain of the shear angle, "
                                           "Oxley's strain-rate estimate with C0 = 5 unless cut.strain_rate_per_s is given", "",
        id(DeformationModel::room_temperature)},
@@ -61,6 +74,11 @@ std::vector<AnalyticModelInfo>& registry() {
        "an edge radius; cut.friction_factor or a friction angle in [0, 45) deg", id(PloughingModel::wave)},
       {"ploughing", "none", "no force under the edge below the stagnation point (the ploughed layer is reported)", "",
        id(PloughingModel::none)},
+      {"fracture", "lefm_scratch", "F / w = zeta K_c (sqrt(h) - sqrt(l)) above the ductile layer l (Huang & "
+                                   "Detournay 2008; zeta = sqrt(2), Akono & Ulm 2011), thrust along the rake face's "
+                                   "friction", "material toughness",
+       id(FractureModel::lefm_scratch)},
+      {"fracture", "none", "no fracture part: the edge's ductile layer alone above l", "", id(FractureModel::none)},
       {"contact_length", "altintas", "Altintas, seed 003 Eq. 1 (suffix _mep or _mssp picks the shear angle)", "friction",
        id(ContactLengthModel::altintas)},
       {"contact_length", "vinogradov", "Vinogradov, seed 003 Eq. 2 (suffix _mep or _mssp)", "friction",

@@ -81,7 +81,7 @@ std::optional<E> registered_as(std::string_view name) {
 }
 
 constexpr char kDeformation[] = "deformation", kShearAngle[] = "shear_angle", kClosure[] = "friction_closure",
-               kLowerLimit[] = "lower_limit", kPloughing[] = "ploughing";
+               kLowerLimit[] = "lower_limit", kPloughing[] = "ploughing", kFracture[] = "fracture";
 
 template <class E, const char* Kind, class At>
 ChoiceField<AnalyticScene> model_choice(std::string_view doc, At at) {
@@ -258,7 +258,9 @@ NameListField<AnalyticScene> contact_length_field() {
 const FieldTable<AnalyticScene>& models_fields() {
   static const FieldTable<AnalyticScene> table{
       force_field(),
-      NameListField<AnalyticScene>{"flow_stress", registry_names("flow_stress"), "the terms of seed 001 Eq. 8 to add",
+      NameListField<AnalyticScene>{"flow_stress", registry_names("flow_stress"), "the terms of seed 001 Eq. 8 to add, or one "
+                                   "hardness term for a glass or ceramic (the default for a material with a hardness "
+                                   "and no johnson_cook group: hardness with its constraint factor, else hardness_marsh)",
                                    [](const AnalyticScene& s) { return s.flow_stress_terms; },
                                    [](AnalyticScene& s, const std::vector<std::string>& terms) { s.flow_stress_terms = terms; }},
       model_choice<DeformationModel, kDeformation>(
@@ -283,6 +285,10 @@ const FieldTable<AnalyticScene>& models_fields() {
           "model on the chord of the engaged arc, added to the chip term; `none`: no such force (0 N inside the "
           "ploughed layer)",
           [](auto& s) -> auto& { return s.ploughing; }),
+      model_choice<FractureModel, kFracture>(
+          "the fracture part of models.force = transition above the ductile layer: the LEFM scratch scaling "
+          "zeta K_c sqrt(h) (Huang & Detournay 2008, Akono & Ulm 2011), or none (the edge's ductile layer alone)",
+          [](auto& s) -> auto& { return s.transition.fracture; }),
       number_at<AnalyticScene>("lower_limit_margin_deg", units::kDeg, Range::open(0.0, 45.0),
                                "margin above the pole (and above -pi/2 for the Merchant closure, whose thrust diverges "
                                "there)",
@@ -294,6 +300,17 @@ const FieldTable<AnalyticScene>& models_fields() {
                    "shear angle (MEP or MSSP) of the contact-length names without a suffix",
                    &AnalyticScene::contact_shear_angle),
       contact_length_field()};
+  return table;
+}
+
+const FieldTable<TransitionParams>& transition_fields() {
+  static const FieldTable<TransitionParams> table{
+      number_field("ductile_layer_factor", units::kSi("(times d_c)"), Range::positive(),
+                   "the layer the edge removes in the ductile mode above d_c, l = factor d_c", 
+                   &TransitionParams::layer_factor),
+      number_field("fracture_coefficient", units::kNone, Range::non_negative(),
+                   "zeta of the fracture part zeta K_c (sqrt(h) - sqrt(l)) (docs/models.md)",
+                   &TransitionParams::fracture_coefficient)};
   return table;
 }
 
@@ -364,9 +381,11 @@ const std::vector<SceneKeySection>& key_sections() {
          "optional, top level: the friction angle is then beta = atan(F_thrust / F_cutting) + rake (seed 003), in "
          "place of a friction value in `cut`",
          [] { return fields_markdown(measured_fields()); }},
-        {"models", "the models to run; besides these, the objects `quadrature` and `flow_stress_policy`",
+        {"models", "the models to run; besides these, the objects `quadrature`, `transition` and `flow_stress_policy`",
          [] { return fields_markdown(models_fields()); }},
         {"models.quadrature", "optional: the Liu-Li integration", [] { return fields_markdown(quadrature_fields()); }},
+        {"models.transition", "optional: models.force = transition's ductile layer and fracture part",
+         [] { return fields_markdown(transition_fields()); }},
         {"models.flow_stress_policy", "optional: the Johnson-Cook law outside its domain",
          [] { return fields_markdown(flow_stress_policy_fields()); }}});
     for (const auto& s : trepanning_key_sections()) out.push_back(s);
@@ -439,10 +458,15 @@ void read_models(ObjectReader& root, AnalyticScene& scene) {
                        "an orthogonal-cut model here (" + name + " is a scene kind of its own, read by parse_scene)");
     }
   }
+  scene.flow_stress_named = models.has("flow_stress");
   read_fields_into(models, models_fields(), scene, SiCheck::on);
   if (auto quadrature = models.find_object("quadrature")) {
     read_fields_into(*quadrature, quadrature_fields(), scene.liu_li.quadrature, SiCheck::on);
     quadrature->finish();
+  }
+  if (auto transition = models.find_object("transition")) {
+    read_fields_into(*transition, transition_fields(), scene.transition, SiCheck::on);
+    transition->finish();
   }
   if (auto policy = models.find_object("flow_stress_policy")) {
     read_fields_into(*policy, flow_stress_policy_fields(), scene.flow_stress.policy, SiCheck::on);
@@ -492,8 +516,24 @@ void resolve_force_model(AnalyticScene& scene) {
 void resolve_flow_stress(const MaterialRecord& record, MaterialCache& materials, const CutKeys& keys,
                          AnalyticScene& scene) {
   const bool solves_oxley = scene.force_model().solves_oxley;
+  // A glass or ceramic (no Johnson-Cook group, a hardness) takes its flow stress from its hardness unless the
+  // scene names the terms: with its constraint factor when the material gives one, else Marsh's relation.
+  if (!scene.flow_stress_named && !record.group("johnson_cook")) {
+    const BrittleGroup brittle = materials.derived(record, &brittle_group_from_material);
+    if (brittle.hardness_Pa) scene.flow_stress_terms = {brittle.constraint_factor ? "hardness" : "hardness_marsh"};
+  }
   // Flow stress: only the terms named.
   const auto& terms = scene.flow_stress_terms;
+  for (const auto& term : terms) {
+    const auto* line = registered_line(analytic_models(), "flow_stress", term);
+    if (!line || line->id < 0) continue;  // the metals' terms are handled by name below
+    if (scene.flow_stress.hardness) {
+      throw InputError("models.flow_stress", term, "one hardness term at most (hardness, hardness_marsh or "
+                                                   "hardness_johnson)");
+    }
+    scene.flow_stress.hardness = materials.derived(record, &hardness_flow_from_material);
+    scene.flow_stress.constraint = static_cast<ConstraintModel>(line->id);
+  }
   const auto has_term = [&](const char* t) { return std::find(terms.begin(), terms.end(), t) != terms.end(); };
   // Oxley needs the Johnson-Cook law even when the flow stress of the force model does not add it.
   const bool uses_oxley = solves_oxley || scene.deformation == DeformationModel::oxley;

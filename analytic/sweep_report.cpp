@@ -27,6 +27,68 @@ std::vector<std::optional<double>> column_numbers(const SweepGrid& grid, const s
   return values;
 }
 
+std::vector<std::optional<std::string>> column_texts(const SweepGrid& grid, const std::vector<SweepRow>& rows,
+                                                     std::string_view name) {
+  std::vector<std::optional<std::string>> values(rows.size());
+  const auto& names = grid.column_names();
+  const auto column = std::find(names.begin(), names.end(), name);
+  if (column == names.end()) return values;
+  const auto c = static_cast<std::size_t>(column - names.begin());
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (!rows[i].error.empty()) continue;
+    const auto fields = split_cells(rows[i].cells);
+    if (c >= fields.size()) continue;
+    std::string_view field = fields[c];
+    if (field.size() >= 2 && field.front() == '"' && field.back() == '"') field = field.substr(1, field.size() - 2);
+    values[i] = std::string(field);
+  }
+  return values;
+}
+
+std::string sweep_summary(const SweepGrid& grid, const std::vector<SweepRow>& rows) {
+  // Counts in first-seen order, so that the line reads in the sweep's own order.
+  const auto tally = [](const std::vector<std::string>& items) {
+    std::vector<std::pair<std::string, std::size_t>> counts;
+    for (const auto& item : items) {
+      auto it = std::find_if(counts.begin(), counts.end(), [&](const auto& c) { return c.first == item; });
+      if (it == counts.end()) counts.emplace_back(item, 1);
+      else ++it->second;
+    }
+    std::string out;
+    for (const auto& [name, n] : counts) out += fmt::format("{}{} {}", out.empty() ? "" : ", ", n, name);
+    return out;
+  };
+  std::vector<std::string> regimes, ranges, guards;
+  const auto regime_cells = column_texts(grid, rows, "regime");
+  const auto range_cells = column_texts(grid, rows, "within_model_range");
+  const auto guard_cells = column_texts(grid, rows, "guards");
+  std::size_t refused = 0;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (!rows[i].error.empty()) {
+      ++refused;
+      continue;
+    }
+    if (regime_cells[i]) regimes.push_back(regime_cells[i]->empty() ? "without d_c" : *regime_cells[i]);
+    if (range_cells[i]) ranges.push_back(*range_cells[i] == "no" ? "outside" : "within");
+    if (!guard_cells[i]) continue;
+    if (guard_cells[i]->empty()) guards.emplace_back("none");
+    std::string_view list = *guard_cells[i];
+    while (!list.empty()) {
+      const auto end = std::min(list.find(';'), list.size());
+      guards.emplace_back(list.substr(0, end));
+      list.remove_prefix(std::min(end + 1, list.size()));
+    }
+  }
+  std::string line = fmt::format("{} points: {} refused", rows.size(), refused);
+  if (!regimes.empty()) line += "; regime " + tally(regimes);
+  if (!ranges.empty()) {
+    const auto outside = static_cast<std::size_t>(std::count(ranges.begin(), ranges.end(), "outside"));
+    line += fmt::format("; within the model's range {}, outside {}", ranges.size() - outside, outside);
+  }
+  if (!guards.empty()) line += "; guards " + tally(guards);
+  return line;
+}
+
 // Long (~90 lines) for a reason: one figure assembled in the order it is drawn (axes, title and width, one series
 // per force and second-axis value, the line-style key); the parts share the figure under construction.
 void plot_sweep(const SweepGrid& grid, const std::vector<SweepRow>& rows, const std::string& path,
@@ -42,6 +104,8 @@ void plot_sweep(const SweepGrid& grid, const std::vector<SweepRow>& rows, const 
   // The two force columns' numbers, read once.
   std::vector<std::vector<std::optional<double>>> force_numbers;
   for (const char* force : {"cutting_force_N", "thrust_force_N"}) force_numbers.push_back(column_numbers(grid, rows, force));
+  const auto in_range = column_texts(grid, rows, "within_model_range");
+  const auto outside = [&](std::size_t i) { return in_range[i] && *in_range[i] == "no"; };
   FigureSpec fig;
   fig.x_log = x_log;
   fig.x_label = key_label(axis_paths[0]);
@@ -71,12 +135,18 @@ void plot_sweep(const SweepGrid& grid, const std::vector<SweepRow>& rows, const 
   constexpr std::array<int, 6> kColors = {0, 1, 2, 3, 4, 6};
   const std::size_t n_second = axis_values.size() > 1 ? std::min<std::size_t>(kColors.size(), axis_values[1].size()) : 1;
   std::vector<PlotSeries> keys;
+  bool any_outside = false;
   for (std::size_t k = 0; k < n_second; ++k) {
     bool drawn = false;
     for (const bool dashed : {false, true}) {  // the cutting force, then the thrust (a column the scene lacks: no values)
       PlotSeries series;
       series.style = dashed ? SeriesStyle::dashed_line : SeriesStyle::line;
       series.color = kColors[k];
+      // A marker at each computed point: filled within the model's range, hollow outside it.
+      PlotSeries within_marks, outside_marks;
+      within_marks.color = outside_marks.color = kColors[k];
+      within_marks.marker = dashed ? 1 : 0;
+      outside_marks.marker = within_marks.marker + 5;
       for (std::size_t i = 0; i < n_points; ++i) {
         if (axis_values.size() > 1 && coordinate(i, 1) != axis_values[1][k]) continue;
         bool first_of_the_rest = true;  // further axes: their first value
@@ -87,10 +157,16 @@ void plot_sweep(const SweepGrid& grid, const std::vector<SweepRow>& rows, const 
         if (!value) continue;  // refused, or no such column
         series.x.push_back(coordinate(i, 0));
         series.y.push_back(*value / (per_mm ? coordinate(i, width_axis) : 1.0));
+        PlotSeries& marks = outside(i) ? outside_marks : within_marks;
+        marks.x.push_back(series.x.back());
+        marks.y.push_back(series.y.back());
       }
       if (series.x.empty()) continue;
       drawn = true;
+      any_outside = any_outside || !outside_marks.x.empty();
       fig.series.push_back(std::move(series));
+      for (auto* marks : {&within_marks, &outside_marks})
+        if (!marks->x.empty()) fig.series.push_back(std::move(*marks));
     }
     if (drawn && axis_values.size() > 1) {
       const std::string label = key_label(axis_paths[1]);
@@ -107,11 +183,38 @@ void plot_sweep(const SweepGrid& grid, const std::vector<SweepRow>& rows, const 
     }
   }
   if (fig.series.empty()) throw InputError("--plot", path, "a sweep with cutting_force_N or thrust_force_N values");
+  // The critical depth, where the first key is the depth of cut and the material has one.
+  if (axis_paths[0] == "cut.uncut_chip_thickness_um") {
+    const auto critical = column_numbers(grid, rows, "critical_depth_nm");
+    const auto found = std::find_if(critical.begin(), critical.end(), [](const auto& v) { return v.has_value(); });
+    if (found != critical.end()) {
+      double y_lo = 0.0, y_hi = 0.0;
+      for (const auto& s : fig.series)
+        for (double y : s.y) y_lo = std::min(y_lo, y), y_hi = std::max(y_hi, y);
+      PlotSeries line;
+      line.label = fmt::format("critical depth d_c = {:.3g} nm", **found);
+      line.style = SeriesStyle::line;
+      line.color = 3;
+      line.x = {**found * 1e-3, **found * 1e-3};
+      line.y = {y_lo, y_hi};
+      fig.series.push_back(std::move(line));
+    }
+  }
   for (const auto& [label, dashed] : {std::pair{"cutting force", false}, std::pair{"thrust force", true}}) {
     PlotSeries key;
     key.label = label;
     key.style = dashed ? SeriesStyle::dashed_line : SeriesStyle::line;
     key.color = 5;
+    key.legend_only = true;
+    keys.push_back(std::move(key));
+  }
+  for (const bool hollow : {false, true}) {
+    if (hollow && !any_outside) break;
+    PlotSeries key;
+    key.label = hollow ? "outside the model's range" : "within the model's range";
+    key.style = SeriesStyle::points;
+    key.color = 5;
+    key.marker = hollow ? 5 : 0;
     key.legend_only = true;
     keys.push_back(std::move(key));
   }

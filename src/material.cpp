@@ -35,7 +35,9 @@ const std::vector<std::string>& material_group_keys(const std::string& group_nam
         "hall_petch_coefficient_MPa_sqrt_m", "alpha", "boundary_constant_k", "misorientation_deg", "boundary_spacing_um",
         "interior_dislocation_density_per_m2"}},
       {"oxley", {"eta", "psi"}},
-      {"brittle", {"hardness_GPa", "fracture_toughness_MPa_sqrt_m", "tensile_strength_MPa", "compressive_strength_MPa"}},
+      {"brittle",
+       {"hardness_GPa", "fracture_toughness_MPa_sqrt_m", "constraint_factor", "tensile_strength_MPa",
+        "compressive_strength_MPa"}},
   };
   static const std::vector<std::string> any;
   const auto it = keys.find(group_name);

@@ -123,6 +123,7 @@ int run_sweep(const std::string& scene_path, const std::vector<std::string>& ove
   const auto n_failed = std::count_if(rows.begin(), rows.end(), [](const auto& row) { return !row.error.empty(); });
   fmt::print(stderr, "kerf-forces: {} points written to {} ({} refused with an error, see the 'error' column)\n",
              grid.size(), csv, n_failed);
+  fmt::print(stderr, "kerf-forces: {}\n", kerf::sweep_summary(grid, rows));
   for (const auto& warning : kerf::falling_force_warnings(grid, rows)) {
     fmt::print(stderr, "kerf-forces: warning: {}\n", warning);
   }

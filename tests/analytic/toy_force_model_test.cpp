@@ -75,7 +75,7 @@ TEST_CASE("A toy force model plugs into the orthogonal kind through one registry
   report.resize(std::fread(report.data(), 1, report.size(), text));
   std::fclose(text);
   CHECK_THAT(report, Contains("force model       toy_specific_force\n"));
-  CHECK_THAT(kerf::analytic_scene_keys_markdown("models"), Contains("`oxley`, `toy_specific_force` |"));
+  CHECK_THAT(kerf::analytic_scene_keys_markdown("models"), Contains("`transition`, `toy_specific_force` |"));
 
   // auto still chooses among the built-in models (the toy has no say in it).
   Json doc = toy_scene();

@@ -5,7 +5,7 @@ scene="$src/data/scenes/psic_orthogonal.json"
 printf '{"material": "psic", "tool": {' >"$tmp/malformed.json"
 expect 2 "malformed JSON" -- predict "$tmp/malformed.json"
 expect 2 "tool.rake_dg = 5: expected a known key (did you mean 'rake_deg'?)" -- predict "$scene" --set tool.rake_dg=5
-expect 2 "models.force = liu_lee: expected one of 'auto', 'merchant', 'liu_li', 'oxley', 'trepanning' (did you mean 'liu_li'?)" -- predict "$scene" --set models.force=liu_lee
+expect 2 "models.force = liu_lee: expected one of 'auto', 'merchant', 'liu_li', 'oxley', 'transition', 'trepanning' (did you mean 'liu_li'?)" -- predict "$scene" --set models.force=liu_lee
 expect 2 "cut.uncut_chip_thickness_um = -1: expected a positive value in um" -- predict "$scene" --set cut.uncut_chip_thickness_um=-1
 expect 2 "cut.uncut_chip_thickness_um = 0: expected a positive value in um" -- predict "$scene" --set cut.uncut_chip_thickness_um=0
 expect 2 "tool.rake_deg = 95: expected a value in (-90, 90) deg" -- predict "$scene" --set tool.rake_deg=95

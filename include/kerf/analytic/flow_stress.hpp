@@ -8,6 +8,8 @@
 // define no dependence; kerf's choice: the microstructural terms soften with the material's Johnson-Cook
 // thermal factor (1 - T*^m) above room temperature, so the flow stress falls continuously to zero at T_melt.
 // At T >= T_melt every term is zero (a melt has no grains) and Guard::temperature_at_or_above_melt is raised.
+// Glasses and ceramics take the hardness term instead (hardness_flow.hpp): Y = H / C, independent of strain,
+// rate and temperature, alone (it is a whole flow stress, not an addition to the metals' terms).
 //
 //   kerf::FlowStressModel model;
 //   model.johnson_cook = jc;  model.hall_petch = hp;         // dislocation term left out
@@ -19,6 +21,7 @@
 #include "kerf/analytic/dislocation.hpp"
 #include "kerf/analytic/guards.hpp"
 #include "kerf/analytic/hall_petch.hpp"
+#include "kerf/analytic/hardness_flow.hpp"
 #include "kerf/analytic/johnson_cook.hpp"
 
 namespace kerf {
@@ -35,13 +38,17 @@ struct FlowStressModel {
   JohnsonCookPolicy policy;
   std::optional<HallPetchParams> hall_petch;
   std::optional<DislocationParams> dislocation;
+  /// A glass's or ceramic's yield stress from its hardness (models.flow_stress hardness, hardness_marsh or
+  /// hardness_johnson), the only term when present.
+  std::optional<HardnessFlowParams> hardness;
+  ConstraintModel constraint = ConstraintModel::given;
   /// The material's Johnson-Cook law when the Johnson-Cook term is not used: its thermal factor softens the
   /// microstructural terms (when the term is used, its own law does).
   std::optional<JohnsonCookParams> thermal_softening;
   /// The melt policy for the microstructural terms when neither law is known (0: none).
   double melting_temperature_K = 0.0;
 
-  /// At least one term; each term validated under `path`.
+  /// At least one term, the hardness term alone; each term validated under `path`.
   void validate(const std::string& path) const;
 };
 
@@ -49,6 +56,7 @@ struct FlowStress {
   double johnson_cook_Pa = 0.0;
   double hall_petch_Pa = 0.0;
   double dislocation_Pa = 0.0;
+  double hardness_Pa = 0.0;  ///< Y = H / C (hardness_flow.hpp)
   double total_Pa = 0.0;  ///< sigma (Eq. 8)
   double shear_Pa = 0.0;  ///< k_s = sigma / sqrt(3) (Eq. 12)
 };

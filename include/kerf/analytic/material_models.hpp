@@ -11,6 +11,7 @@
 
 #include "kerf/analytic/dislocation.hpp"
 #include "kerf/analytic/hall_petch.hpp"
+#include "kerf/analytic/hardness_flow.hpp"
 #include "kerf/analytic/johnson_cook.hpp"
 #include "kerf/analytic/key_sections.hpp"
 #include "kerf/analytic/oxley.hpp"
@@ -36,10 +37,16 @@ struct OxleyHeatFactors {
 };
 
 /// The brittle group's keys (each absent when the material leaves it out): the regime check's hardness and
-/// toughness, the trepanning model's default hardness; the strengths are recorded (no analytic model reads them).
+/// toughness, the trepanning model's default hardness, the hardness flow stress's constraint factor; the strengths
+/// are recorded (no analytic model reads them).
 struct BrittleGroup {
   std::optional<double> hardness_Pa, fracture_toughness_Pa_sqrt_m, tensile_strength_Pa, compressive_strength_Pa;
+  std::optional<double> constraint_factor;  ///< H / Y (models.flow_stress = hardness)
 };
+
+/// The hardness flow stress's inputs (hardness_flow.hpp) from the brittle and elastic groups; InputError names a
+/// missing key and the term that needs it.
+HardnessFlowParams hardness_flow_from_material(const MaterialRecord& material, const std::string& path);
 
 ElasticProperties elastic_from_material(const MaterialRecord& material, const std::string& path);
 /// The brittle group read through its field table (all keys absent when the material has no such group).

@@ -27,6 +27,13 @@ struct OxleyDetails {
   int shear_angle_roots = 0;  ///< branches found; the minimum-force one is reported
 };
 
+/// models.force = transition: the two parts of the totals (docs/models.md).
+struct TransitionDetails {
+  double ductile_layer_m = 0.0;  ///< l = lambda d_c
+  ForcePerWidth layer;           ///< the ductile model at min(h, l): the edge's part, depth-independent above l
+  ForcePerWidth fracture;        ///< zero at and below l
+};
+
 struct Prediction {
   std::string_view force_model;  ///< the name of the force model that ran (its registry line's)
   double cutting_force_N = 0.0;
@@ -50,7 +57,11 @@ struct Prediction {
   std::optional<EdgePloughingResult> ploughing;
   double friction_factor = 0.0;  ///< the ploughing model's f (given, or sin(2 beta))
   std::optional<OxleyDetails> oxley;
+  std::optional<TransitionDetails> transition;
   std::string regime;  ///< "ductile", "transition" or "brittle" against the critical depth; empty without one
+  /// False where the force model does not hold (a ductile model above d_c; transition beyond 0.2 mm): the CSV's
+  /// within_model_range, the figures' hollow points.
+  bool within_model_range = true;
   Guards guards;
   std::vector<std::string> warnings;
 };

@@ -26,6 +26,7 @@
 #include "kerf/analytic/round_nose.hpp"
 #include "kerf/analytic/shear_angle.hpp"
 #include "kerf/analytic/thermal.hpp"
+#include "kerf/analytic/transition.hpp"
 #include "kerf/material.hpp"
 #include "kerf/units.hpp"
 
@@ -54,7 +55,8 @@ struct OrthogonalForceModel {
 };
 
 /// The built-in models (analytic/predict.cpp), named by their registry lines.
-extern const OrthogonalForceModel merchant_force_model, liu_li_force_model, oxley_force_model, auto_force_model;
+extern const OrthogonalForceModel merchant_force_model, liu_li_force_model, oxley_force_model, auto_force_model,
+    transition_force_model;
 
 /// r / t0 below which the edge changes the force by only a few percent: models.force = auto takes the
 /// sharp-tool model there, and the sharp-tool models warn above it.
@@ -104,10 +106,12 @@ struct AnalyticScene {
   std::string force_choice_reason;  ///< why 'auto' chose the force model (empty when named)
   FlowStressModel flow_stress;
   std::vector<std::string> flow_stress_terms = {"johnson_cook"};
+  bool flow_stress_named = false;  ///< the scene named models.flow_stress (else a glass takes its hardness term)
   DeformationModel deformation = DeformationModel::room_temperature;
   ShearAngleSource shear_angle = ShearAngleSource::merchant;
   LiuLiParams liu_li;  ///< closure, lower limit, margin, quadrature (geometry filled at prediction)
   PloughingModel ploughing = PloughingModel::wave;  ///< the force under the edge below the stagnation point
+  TransitionParams transition;  ///< models.force = transition: the ductile layer and the fracture part
   ShearAngleModel contact_shear_angle = ShearAngleModel::merchant;  ///< of contact-length names without a suffix
   std::vector<ContactLengthRequest> contact_lengths;
 

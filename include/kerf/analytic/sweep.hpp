@@ -93,10 +93,21 @@ std::optional<double> cell_number(std::string_view cells, std::size_t column);
 std::vector<std::optional<double>> column_numbers(const SweepGrid& grid, const std::vector<SweepRow>& rows,
                                                   std::string_view name);
 
+/// The texts of the column `name` (unquoted; nullopt at a refused point or without such a column).
+std::vector<std::optional<std::string>> column_texts(const SweepGrid& grid, const std::vector<SweepRow>& rows,
+                                                     std::string_view name);
+
+/// The sweep's summary line: points, refused, rows per regime, within and outside the model's range, and per
+/// guard ("60 points: 0 refused; regime 21 ductile, 12 transition, 27 brittle; within the model's range 21,
+/// outside 39; guards none 60"), each count the rows' own.
+std::string sweep_summary(const SweepGrid& grid, const std::vector<SweepRow>& rows);
+
 /// The sweep's figure (sweep_report.cpp): cutting (solid) and thrust (dashed) force against the first varied
 /// key, one colour per value of the second (the first 6 of them; further keys at their first value), refused
-/// points left out; the axes labelled from the keys' unit suffixes, the material, scene and width in the title
-/// and y label, the legend (a row per colour and one per line style) beside the plot. PNG with a PDF beside it.
+/// points left out; a marker at every computed point, hollow where the row is outside its model's range
+/// (within_model_range = no); the critical depth d_c as a vertical line where the first key is the depth of cut;
+/// the axes labelled from the keys' unit suffixes, the material, scene and width in the title and y label, the
+/// legend (a row per colour and one per line style) beside the plot. PNG with a PDF beside it.
 /// The axes must be numeric (parse_sweep_axis).
 void plot_sweep(const SweepGrid& grid, const std::vector<SweepRow>& rows, const std::string& path,
                 const std::string& scene_path);
