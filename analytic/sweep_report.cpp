@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <array>
-#include <filesystem>
 
 #include "kerf/analytic/evaluate.hpp"
 #include "kerf/analytic/sweep.hpp"
@@ -92,7 +91,7 @@ std::string sweep_summary(const SweepGrid& grid, const std::vector<SweepRow>& ro
 // Long (~90 lines) for a reason: one figure assembled in the order it is drawn (axes, title and width, one series
 // per force and second-axis value, the line-style key); the parts share the figure under construction.
 void plot_sweep(const SweepGrid& grid, const std::vector<SweepRow>& rows, const std::string& path,
-                const std::string& scene_path) {
+                const std::string& /*scene_path: the CSV and the command name it*/) {
   const Json& base = grid.base();
   MaterialCache& materials = grid.materials();
   const std::size_t n_points = grid.size();
@@ -112,12 +111,12 @@ void plot_sweep(const SweepGrid& grid, const std::vector<SweepRow>& rows, const 
   std::string material;
   try {
     const auto& record = materials.get(base.at("material"), "material");
-    // The title, where it fits the figure's width beside the scene's file name; else the library name.
+    // The title, where it fits above the plot beside the legend; else the library name.
     material = record.title.empty() || record.title.size() > 40 ? record.name : record.title;
   } catch (const std::exception&) {
     material = "material?";  // the scene's own errors are the sweep's to report, not the figure's
   }
-  fig.title = fmt::format("{}: {}", material, std::filesystem::path(scene_path).filename().string());
+  fig.title = material;  // the scene's file name is the CSV's and the command's; the material is what a reader needs
   // The width the forces are for: the scene's, stated; per mm of width where the width is swept.
   const auto width_axis =
       static_cast<std::size_t>(std::find(axis_paths.begin(), axis_paths.end(), "cut.width_mm") - axis_paths.begin());
@@ -192,7 +191,7 @@ void plot_sweep(const SweepGrid& grid, const std::vector<SweepRow>& rows, const 
       for (const auto& s : fig.series)
         for (double y : s.y) y_lo = std::min(y_lo, y), y_hi = std::max(y_hi, y);
       PlotSeries line;
-      line.label = fmt::format("critical depth d_c = {:.3g} nm", **found);
+      line.label = fmt::format("d_c = {:.3g} nm", **found);
       line.style = SeriesStyle::line;
       line.color = 3;
       line.x = {**found * 1e-3, **found * 1e-3};
@@ -211,7 +210,7 @@ void plot_sweep(const SweepGrid& grid, const std::vector<SweepRow>& rows, const 
   for (const bool hollow : {false, true}) {
     if (hollow && !any_outside) break;
     PlotSeries key;
-    key.label = hollow ? "outside the model's range" : "within the model's range";
+    key.label = hollow ? "model not valid" : "model valid";
     key.style = SeriesStyle::points;
     key.color = 5;
     key.marker = hollow ? 5 : 0;

@@ -3,7 +3,10 @@
 # acceptance bands: exit status 0 when all hold. Installs and builds first, like the quick start.
 #
 #   bash scripts/validate.sh                      # every case
-#   bash scripts/validate.sh soda_lime_cutting    # one case: k9_trepanning (seconds), soda_lime_cutting
+#   bash scripts/validate.sh soda_lime_cutting    # one case: k9_trepanning (seconds), glass_transition
+#                                                 # (seconds: the transition model of soda-lime glass against
+#                                                 # Yang et al. 2018's Table 6, a report without acceptance bands),
+#                                                 # soda_lime_cutting
 #                                                 # (18 kerf-dem cuts, 19-35 min on 2 cores; rerunning
 #                                                 # reuses the replicates already finished),
 #                                                 # soda_lime_cutting_cut_fitted (12 cuts, 13-34 min) or
@@ -24,12 +27,15 @@ steady() {  # the steady case's acceptance comes from the study's record (its RE
   "$build/tools/kerf-dem" study "$root/data/studies/seed000_steady.json" --out "$1/study" --checkpoint-minutes 5
   python3 "$root/bench/seed000_trends.py" --report --out "$1"
 }
+glass() { python3 "$root/validation/glass_transition/report.py" --kerf-forces "$build/tools/kerf-forces" --out "$1"; }
 case "$case" in
   soda_lime_cutting_steady) steady "$out" ;;
+  glass_transition) glass "$out" ;;
   all) rc=0
        for c in k9_trepanning soda_lime_cutting soda_lime_cutting_cut_fitted; do
          "$build/validation/run_validation" "$c" "$out/$c" || rc=1
        done
+       glass "$out/glass_transition" || rc=1
        steady "$out/soda_lime_cutting_steady" || rc=1
        exit $rc ;;
   *) "$build/validation/run_validation" "$case" "$out" ;;

@@ -153,3 +153,17 @@ def test_compare_rows_hold_each_rows_prediction_lists(tmp_path):
         assert row["guards"] == alone["guards"] and row["warnings"] == alone["warnings"]
         assert all(isinstance(w, str) for w in row["warnings"])
     assert result["rows"][1]["guards"] or result["rows"][1]["warnings"]
+
+
+def test_glass_results_carry_the_regime_and_the_model_range():
+    """Issue 53: a glass runs through kerf.predict and kerf.sweep; each row says its regime and whether its model
+    holds there (a ductile-only model above d_c does not)."""
+    glass = SOURCE / "data" / "scenes" / "soda_lime_transition.json"
+    row = kerf.predict(glass)
+    assert row["regime"] == "brittle" and row["within_model_range"] == "yes"
+    assert row["layer_cutting_force_N"] > 0 and row["fracture_cutting_force_N"] > 0
+    table = kerf.sweep(glass, vary={"cut.uncut_chip_thickness_um": [0.01, 0.1, 1.0]}, models__force="liu_li")
+    dc_um = table["critical_depth_nm"][0] / 1e3
+    assert list(table["regime"]) == ["ductile" if h < dc_um else "transition" if h < 3 * dc_um else "brittle"
+                                     for h in table["uncut_chip_thickness_um"]]
+    assert list(table["within_model_range"]) == ["yes" if h < dc_um else "no" for h in table["uncut_chip_thickness_um"]]

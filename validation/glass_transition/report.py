@@ -11,6 +11,7 @@ depth-independent part F0 is the edge's, the test of its form), and the model's 
 import argparse
 import csv
 import io
+import itertools
 import json
 import math
 import os
@@ -23,10 +24,12 @@ ROOT = os.path.dirname(os.path.dirname(HERE))
 SCENE = os.path.join(ROOT, "data", "scenes", "soda_lime_transition.json")
 EXPERIMENTS = os.path.join(ROOT, "data", "experiments", "soda_lime_orthogonal_cutting.csv")
 DEPTHS_MM = (0.1, 0.2)
-# The tool's unknowns, over the ranges of ../shared/docs/physics-glass-edge.md section 4 (none from Table 6).
+# The tool's unknowns, over the ranges of docs/physics-glass-edge.md section 4 (none from Table 6).
 EDGE_RADII_UM = (0.0, 2.0)
 FRICTIONS = (0.15, 0.3, 0.4)
 FRACTURE_MODELS = ("lefm_scratch", "none")
+# The ductile layer l = factor d_c: d_c is uncertain by a factor of 2-3 (Bifano's 0.15 is a fit).
+LAYER_FACTORS = (1.0, 3.0)
 
 
 def table6():
@@ -47,9 +50,10 @@ def split(f1, f2):
     return f1 - k * DEPTHS_MM[0], k
 
 
-def predict(kerf_forces, depth_mm, radius_um, mu, fracture):
+def predict(kerf_forces, depth_mm, radius_um, mu, fracture, layer):
     sets = [f"cut.uncut_chip_thickness_um={depth_mm * 1000:g}", f"tool.edge_radius_um={radius_um:g}",
-            f"cut.friction_coefficient={mu:g}", f"models.fracture={fracture}"]
+            f"cut.friction_coefficient={mu:g}", f"models.fracture={fracture}",
+            f"models.transition.ductile_layer_factor={layer:g}"]
     cmd = [kerf_forces, "predict", SCENE, "--csv", "-"]
     for s in sets:
         cmd += ["--set", s]
@@ -67,27 +71,26 @@ def main():
     measured = table6()
     m_split = {q: split(measured[0.1][q][0], measured[0.2][q][0]) for q in ("main", "thrust")}
     lines, records = [], []
-    for fracture in FRACTURE_MODELS:
-        for radius in EDGE_RADII_UM:
-            for mu in FRICTIONS:
-                p = {d: predict(args.kerf_forces, d, radius, mu, fracture) for d in DEPTHS_MM}
-                main = {d: float(p[d]["cutting_force_N_per_mm"]) for d in DEPTHS_MM}
-                thrust = {d: float(p[d]["thrust_force_N_per_mm"]) for d in DEPTHS_MM}
-                width = float(p[0.1]["width_mm"])
-                edge = (float(p[0.1]["layer_cutting_force_N"]) / width, float(p[0.1]["layer_thrust_force_N"]) / width)
-                f0_main, k_main = split(main[0.1], main[0.2])
-                f0_thrust, _ = split(thrust[0.1], thrust[0.2])
-                rec = {"fracture_model": fracture, "edge_radius_um": radius, "friction_coefficient": mu,
-                       "ductile_layer_um": float(p[0.1]["ductile_layer_um"]),
-                       "edge_main_N_per_mm": edge[0], "edge_thrust_N_per_mm": edge[1],
-                       "edge_thrust_to_main": edge[1] / edge[0]}
-                for d in DEPTHS_MM:
-                    rec[f"main_{d}mm_N_per_mm"] = main[d]
-                    rec[f"thrust_{d}mm_N_per_mm"] = thrust[d]
-                    rec[f"main_{d}mm_error_percent"] = 100 * (main[d] / measured[d]["main"][0] - 1)
-                    rec[f"thrust_{d}mm_error_percent"] = 100 * (thrust[d] / measured[d]["thrust"][0] - 1)
-                rec.update({"F0_main_N_per_mm": f0_main, "F0_thrust_N_per_mm": f0_thrust, "k_main_N_per_mm2": k_main})
-                records.append(rec)
+    for fracture, layer, radius, mu in itertools.product(FRACTURE_MODELS, LAYER_FACTORS, EDGE_RADII_UM, FRICTIONS):
+        p = {d: predict(args.kerf_forces, d, radius, mu, fracture, layer) for d in DEPTHS_MM}
+        main = {d: float(p[d]["cutting_force_N_per_mm"]) for d in DEPTHS_MM}
+        thrust = {d: float(p[d]["thrust_force_N_per_mm"]) for d in DEPTHS_MM}
+        width = float(p[0.1]["width_mm"])
+        edge = (float(p[0.1]["layer_cutting_force_N"]) / width, float(p[0.1]["layer_thrust_force_N"]) / width)
+        f0_main, k_main = split(main[0.1], main[0.2])
+        f0_thrust, _ = split(thrust[0.1], thrust[0.2])
+        rec = {"fracture_model": fracture, "ductile_layer_factor": layer, "edge_radius_um": radius,
+               "friction_coefficient": mu,
+               "ductile_layer_um": float(p[0.1]["ductile_layer_um"]),
+               "edge_main_N_per_mm": edge[0], "edge_thrust_N_per_mm": edge[1],
+               "edge_thrust_to_main": edge[1] / edge[0]}
+        for d in DEPTHS_MM:
+            rec[f"main_{d}mm_N_per_mm"] = main[d]
+            rec[f"thrust_{d}mm_N_per_mm"] = thrust[d]
+            rec[f"main_{d}mm_error_percent"] = 100 * (main[d] / measured[d]["main"][0] - 1)
+            rec[f"thrust_{d}mm_error_percent"] = 100 * (thrust[d] / measured[d]["thrust"][0] - 1)
+        rec.update({"F0_main_N_per_mm": f0_main, "F0_thrust_N_per_mm": f0_thrust, "k_main_N_per_mm2": k_main})
+        records.append(rec)
     os.makedirs(args.out, exist_ok=True)
     with open(os.path.join(args.out, "predictions.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(records[0]))
@@ -107,11 +110,11 @@ def main():
     L(f"\nThrough the two depths: F0 main {m_split['main'][0]:.3f} N/mm, F0 thrust {m_split['thrust'][0]:.3f} N/mm "
       f"(thrust / main {m_split['thrust'][0] / m_split['main'][0]:.2f}); k main {m_split['main'][1]:.2f} N/mm per mm.\n")
     L("## Predicted, with the error against the measured means\n")
-    L("| fracture | r (um) | mu | main 0.1 (N/mm) | err % | main 0.2 | err % | thrust 0.1 | err % | thrust 0.2 | err % "
+    L("| fracture | l / d_c | r (um) | mu | main 0.1 (N/mm) | err % | main 0.2 | err % | thrust 0.1 | err % | thrust 0.2 | err % "
       "| edge main | edge thrust | edge thrust / main | F0 main | k main |")
-    L("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    L("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for r in records:
-        L(f"| {r['fracture_model']} | {r['edge_radius_um']:g} | {r['friction_coefficient']:g} | "
+        L(f"| {r['fracture_model']} | {r['ductile_layer_factor']:g} | {r['edge_radius_um']:g} | {r['friction_coefficient']:g} | "
           f"{r['main_0.1mm_N_per_mm']:.3g} | {r['main_0.1mm_error_percent']:+.0f} | "
           f"{r['main_0.2mm_N_per_mm']:.3g} | {r['main_0.2mm_error_percent']:+.0f} | "
           f"{r['thrust_0.1mm_N_per_mm']:.3g} | {r['thrust_0.1mm_error_percent']:+.0f} | "

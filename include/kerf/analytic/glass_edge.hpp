@@ -2,7 +2,7 @@
 // The force of a tool's edge on intact glass at the cut line, per unit width: the ductile layer l = lambda d_c that
 // the edge removes in the ductile mode however deep the cut (docs/models.md, "Glass and ceramics"; the edge part
 // of models.force = transition). The DEM's edge model calls it: the physics of the edge lies 100-300 times below
-// its disks (../shared/docs/physics-glass-edge.md). It runs the analytic scene of that layer, so it is the same
+// its disks (docs/physics-glass-edge.md). It runs the analytic scene of that layer, so it is the same
 // number `kerf-forces predict` gives for models.force = transition with models.fracture = none.
 //
 //   kerf::EdgeTool tool{.rake_rad = kerf::units::deg_to_rad(-15.0), .edge_radius_m = 0.0,

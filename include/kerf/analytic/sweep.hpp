@@ -106,7 +106,7 @@ std::string sweep_summary(const SweepGrid& grid, const std::vector<SweepRow>& ro
 /// key, one colour per value of the second (the first 6 of them; further keys at their first value), refused
 /// points left out; a marker at every computed point, hollow where the row is outside its model's range
 /// (within_model_range = no); the critical depth d_c as a vertical line where the first key is the depth of cut;
-/// the axes labelled from the keys' unit suffixes, the material, scene and width in the title and y label, the
+/// the axes labelled from the keys' unit suffixes, the material in the title, the width in the y label, the
 /// legend (a row per colour and one per line style) beside the plot. PNG with a PDF beside it.
 /// The axes must be numeric (parse_sweep_axis).
 void plot_sweep(const SweepGrid& grid, const std::vector<SweepRow>& rows, const std::string& path,
