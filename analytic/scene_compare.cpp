@@ -325,14 +325,33 @@ void fit_lumped_groups(Json& document, const Bindings& bindings, const DataSet& 
                   {"loo_max_abs_error_percent", fit.torque.loo.max_abs_error_percent}}}};
 }
 
+/// A column's text, unquoted; empty when the row has no such column.
+std::string column_text(const Columns& columns, const std::string& name) {
+  for (const auto& [column, value] : columns) {
+    if (column != name) continue;
+    return value.size() >= 2 && value.front() == '"' ? value.substr(1, value.size() - 2) : value;
+  }
+  return {};
+}
+
+/// The critical depth on a depth-of-cut condition's axis (its figures draw it), from a row that has one.
+void mark_critical_depth(const Columns& columns, const Bindings& bindings, ComparisonSpec& spec) {
+  const std::string critical = column_text(columns, "critical_depth_nm");
+  if (critical.empty()) return;
+  const double critical_nm = std::stod(critical);
+  for (std::size_t i = 0; i < bindings.conditions.size(); ++i) {
+    const std::string& key = spec.conditions[i].key;
+    const bool marked = std::any_of(spec.marks.begin(), spec.marks.end(), [&](const auto& m) { return m.condition == key; });
+    if (bindings.conditions[i].scene_path != "cut.uncut_chip_thickness_um" || marked) continue;
+    spec.marks.push_back({key, critical_nm * 1e-9, fmt::format("d_c = {:.3g} nm", critical_nm)});
+  }
+}
+
 /// What predict prints beside the forces: the regime against the critical depth and the guards that fired.
 RowDiagnostics row_diagnostics(std::size_t line, const AnalyticCase& scene, const Columns& columns) {
   RowDiagnostics diagnostics{line, "", scene.guard_names(), scene.warnings()};
-  for (const auto& [name, value] : columns) {
-    if (name == "regime" || name == "grit_regime") {
-      diagnostics.regime = value.size() >= 2 && value.front() == '"' ? value.substr(1, value.size() - 2) : value;
-    }
-  }
+  for (const char* name : {"regime", "grit_regime"})
+    if (std::string regime = column_text(columns, name); !regime.empty()) diagnostics.regime = regime;
   return diagnostics;
 }
 
@@ -376,6 +395,8 @@ PredictedSet predictions(const Json& document, const Bindings& bindings, const D
     const auto scene = scene_at(row.conditions);  // one prediction gives the row's values and diagnostics
     const Columns columns = scene_columns(*scene);
     p.values = values_of(columns);
+    p.outside_model_range = column_text(columns, "within_model_range") == "no";
+    mark_critical_depth(columns, bindings, out.comparison.spec);
     predicted.rows.push_back(std::move(p));
     out.rows.push_back(row_diagnostics(row.line, *scene, columns));
   }

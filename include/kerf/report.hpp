@@ -99,6 +99,13 @@ struct ComparisonSpec {
   /// Which views to report. Empty: as_published where the bases agree; an InputError where they differ (the
   /// caller must choose). per_unit_width needs force bases on both sides.
   std::vector<WidthView> views;
+  /// Values to mark on a condition's axis (a dashed vertical line in its figures, e.g. a critical depth).
+  struct Mark {
+    std::string condition;  ///< the condition's key
+    double value_si = 0.0;
+    std::string label;      ///< the legend entry ("d_c = 36 nm")
+  };
+  std::vector<Mark> marks;
   void validate() const;
 };
 
@@ -106,6 +113,7 @@ struct DataRow {
   std::vector<ConditionValue> conditions;  ///< in ComparisonSpec::conditions order
   std::vector<double> values;              ///< per quantity, SI; NaN where the set has no value
   std::size_t line = 0;                    ///< source line (0: not from a file)
+  bool outside_model_range = false;        ///< a prediction's: its model does not hold at these conditions
 };
 
 struct DataSet {
@@ -153,6 +161,7 @@ struct GroupComparison {
   std::vector<double> row_error_percent;       ///< (predicted mean - replicate) / replicate, per measured row
   bool has_scatter = false;                ///< two or more replicates
   bool within_1sd = false, within_2sd = false;  ///< predicted mean inside mean +- 1 (2) SD; only with scatter
+  bool outside_model_range = false;  ///< a predicted row of the group lies outside its model's range (figures: hollow)
 };
 
 struct QuantityComparison {

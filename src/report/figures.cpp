@@ -45,11 +45,16 @@ PlannedFigure parity_figure(const Comparison& c, const QuantityComparison& r) {
   double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
   for (const auto& rr : c.results) {
     if (rr.key != r.key) continue;
-    PlotSeries s;
-    s.label = c.predictions[rr.prediction].data.name;
-    s.color = static_cast<int>(rr.prediction);
-    s.marker = rr.prediction == 0 ? 0 : 5 + static_cast<int>(rr.prediction);  // filled, then hollow
+    PlotSeries within;
+    within.label = c.predictions[rr.prediction].data.name;
+    within.color = static_cast<int>(rr.prediction);
+    within.marker = rr.prediction == 0 ? 0 : 5 + static_cast<int>(rr.prediction);  // filled, then hollow
+    // Groups whose prediction lies outside its model's range: a series of their own, hollow, said in the legend.
+    PlotSeries outside = within;
+    outside.label = within.label + ", not valid here";
+    outside.marker = 8 + static_cast<int>(rr.prediction) % 2;  // hollow diamond (or down-triangle)
     for (const auto& g : rr.groups) {
+      PlotSeries& s = g.outside_model_range ? outside : within;
       const double x = g.measured_stats.mean / rr.unit.si, y = g.predicted_stats.mean / rr.unit.si;
       s.x.push_back(x);
       s.y.push_back(y);
@@ -60,7 +65,8 @@ PlannedFigure parity_figure(const Comparison& c, const QuantityComparison& r) {
       hi = std::max({hi, x + (std::isfinite(s.x_error.back()) ? s.x_error.back() : 0.0),
                      y + (std::isfinite(s.y_error.back()) ? s.y_error.back() : 0.0)});
     }
-    fig.series.push_back(std::move(s));
+    if (!within.x.empty() || outside.x.empty()) fig.series.push_back(std::move(within));
+    if (!outside.x.empty()) fig.series.push_back(std::move(outside));
   }
   const double span = hi - lo;
   lo = std::max(0.0, lo - 0.12 * span - 0.05 * std::abs(lo));
@@ -188,6 +194,17 @@ PlannedFigure condition_figure(const Comparison& c, const QuantityComparison& r,
     for (const auto& rr : c.results) {
       if (rr.key != r.key) continue;
       fig.series.push_back(predicted_series(c, rr, vc, fixed, x_lo, x_hi, pi, many_partitions, suffix));
+      // Predictions outside their model's range: hollow diamonds on the model's values, said in the legend.
+      PlotSeries outside;
+      outside.label = c.predictions[rr.prediction].data.name + ", not valid here" + (many_partitions ? suffix : "");
+      outside.color = fig.series.back().color;
+      outside.marker = 8;
+      for (const auto& g : rr.groups) {
+        if (!g.outside_model_range || !same_but(spec, g.conditions, fixed, vc)) continue;
+        outside.x.push_back(*g.conditions[vc].si / cs.unit.si);
+        outside.y.push_back(g.predicted_stats.mean / rr.unit.si);
+      }
+      if (!outside.x.empty()) fig.series.push_back(std::move(outside));
     }
   }
   // Headroom above the data for the legend (forces start at zero).
@@ -197,6 +214,16 @@ PlannedFigure condition_figure(const Comparison& c, const QuantityComparison& r,
       const double e = series.y_error.empty() || !std::isfinite(series.y_error[k]) ? 0.0 : series.y_error[k];
       if (std::isfinite(series.y[k])) y_top = std::max(y_top, series.y[k] + e);
     }
+  }
+  // Marks on this condition's axis, where they fall within the data's x range widened by its span (a mark far
+  // outside it would squeeze the data into a corner).
+  double x_lo = std::numeric_limits<double>::infinity(), x_hi = -x_lo;
+  for (const auto& series : fig.series)
+    for (double x : series.x) x_lo = std::min(x_lo, x), x_hi = std::max(x_hi, x);
+  for (const auto& mark : spec.marks) {
+    const double x = mark.value_si / cs.unit.si;
+    if (mark.condition != cs.key || y_top <= 0.0 || x < x_lo - (x_hi - x_lo) || x > x_hi + (x_hi - x_lo)) continue;
+    fig.series.push_back(PlotSeries{mark.label, {x, x}, {0.0, y_top}, {}, {}, SeriesStyle::dashed_line, 3, 0});
   }
   if (y_top > 0.0) fig.y_max = y_top * (1.0 + 0.09 * static_cast<double>(fig.series.size()) + 0.08);
   fig.legend_position = "best";

@@ -81,6 +81,7 @@ GroupComparison compare_group(const ComparisonSpec& spec, const DataSet& measure
   for (const auto& row : predicted.rows) {
     if (std::isfinite(row.values[q]) && conditions_match(row.conditions, gc.conditions, spec.relative_tolerance)) {
       gc.predicted.push_back(view_value(row.values[q], pb, view));
+      gc.outside_model_range = gc.outside_model_range || row.outside_model_range;
     }
   }
   if (gc.predicted.empty()) return gc;
