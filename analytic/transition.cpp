@@ -31,9 +31,10 @@ ForcePerWidth fracture_force_per_width(const TransitionParams& params, double to
                "MPa m^0.5");
   check_number(units::m_to_um(depth_m), "cut.uncut_chip_thickness_um", Range::non_negative(), "um");
   const double inclination = friction_angle_rad - rake_rad;  // of the rake face's force from the cutting direction
-  if (!(inclination >= 0.0 && inclination < std::numbers::pi / 2.0)) {
+  if (!(std::fabs(inclination) < std::numbers::pi / 2.0)) {
     throw InputError("cut.friction_angle_deg", fmt::format("{:.6g}", units::rad_to_deg(friction_angle_rad)),
-                     fmt::format("friction minus rake in [0, 90) deg for the fracture part's thrust (rake {:.6g} deg)",
+                     fmt::format("friction minus rake in (-90, 90) deg for the fracture part's thrust (rake {:.6g} "
+                                 "deg)",
                                  units::rad_to_deg(rake_rad)));
   }
   if (params.fracture == FractureModel::none || depth_m <= layer_m) return {};

@@ -39,7 +39,9 @@ TEST_CASE("Fracture part: zeta K_c (sqrt(h) - sqrt(l)), thrust along the rake fa
   none.fracture = kerf::FractureModel::none;
   CHECK(kerf::fracture_force_per_width(none, 0.75e6, 1e-4, l, rake, beta).cutting_N_per_m == 0.0);
   CHECK_THROWS_AS(kerf::fracture_force_per_width(t, 0.75e6, -1e-9, l, rake, beta), kerf::InputError);
-  CHECK_THROWS_AS(kerf::fracture_force_per_width(t, 0.75e6, 1e-4, l, 0.3, 0.1), kerf::InputError);  // beta < alpha
+  // A rake above the friction angle: the thrust turns negative, as in Merchant's circle; beyond 90 deg, refused.
+  CHECK(kerf::fracture_force_per_width(t, 0.75e6, 1e-4, l, 0.3, 0.1).thrust_N_per_m < 0.0);
+  CHECK_THROWS_AS(kerf::fracture_force_per_width(t, 0.75e6, 1e-4, l, -1.2, 0.5), kerf::InputError);
 }
 
 TEST_CASE("Transition model: the ductile model below the layer, continuous at it", "[transition]") {

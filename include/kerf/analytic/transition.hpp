@@ -45,7 +45,8 @@ struct TransitionParams {
 double ductile_layer_m(const TransitionParams& params, double critical_depth_m);
 
 /// The fracture part per unit width (N/m): zero at and below the layer; rake alpha and friction angle beta in rad.
-/// InputError for a negative toughness or depth, or a rake and friction with beta - alpha outside [0, pi/2).
+/// InputError for a negative toughness or depth, or a rake and friction with beta - alpha outside (-pi/2, pi/2) (a
+/// rake above the friction angle gives a negative thrust, as Merchant's circle does).
 ForcePerWidth fracture_force_per_width(const TransitionParams& params, double fracture_toughness_Pa_sqrt_m,
                                        double depth_m, double layer_m, double rake_rad, double friction_angle_rad);
 
