@@ -3,11 +3,13 @@
 #include <fmt/format.h>
 #include <omp.h>
 
+#include <algorithm>
 #include <cmath>
 #include <exception>
 #include <limits>
 #include <stdexcept>
 
+#include "kerf/analytic/cells.hpp"
 #include "kerf/analytic/evaluate.hpp"
 #include "kerf/csv_table.hpp"
 #include "kerf/error.hpp"
@@ -51,14 +53,27 @@ SweepAxis parse_sweep_axis(const std::string& spec, const std::string& option_na
   axis.spec = spec;
   const std::string rest = spec.substr(eq + 1);
   if (rest.find(':') == std::string::npos) {  // a list of values: A,B,C
+    std::vector<std::string> texts;
+    std::size_t numbers = 0;
     for (std::size_t start = 0; start <= rest.size();) {
       const std::size_t comma = std::min(rest.find(',', start), rest.size());
+      texts.push_back(rest.substr(start, comma - start));
       double value = 0.0;
-      if (!parse_number(std::string_view(rest).substr(start, comma - start), value)) {
-        fail("a list of numbers A,B,C (or START:STOP:COUNT[:log])");
-      }
-      add_value(axis, value);
+      numbers += parse_number(texts.back(), value) ? 1 : 0;
       start = comma + 1;
+    }
+    if (numbers > 0 && numbers < texts.size()) fail("a list of numbers or a list of names A,B,C, not both");
+    if (numbers == 0) {  // names (models, materials) or other values, each as --set reads it
+      for (const auto& text : texts)
+        if (text.empty()) fail("a list of values A,B,C without an empty one");
+      SweepAxis categorical = sweep_axis_from_texts(axis.key, std::move(texts));
+      categorical.spec = spec;
+      return categorical;
+    }
+    for (const auto& text : texts) {
+      double value = 0.0;
+      parse_number(text, value);
+      add_value(axis, value);
     }
     return axis;
   }
@@ -119,8 +134,10 @@ SweepGrid::SweepGrid(Json base, std::vector<SweepAxis> axes, std::string option_
       throw InputError(option_name_, axis.spec, "a grid of at most 50 million points");
     }
   }
-  // The column set depends only on the models the scene asks for: the names come from the unvaried scene.
+  // The column set depends only on the models the scene asks for: the names come from the unvaried scene, or
+  // with categorical axes from each combination of their values (numeric axes at their first value).
   names_ = scene_column_names(base_, &materials_);
+  union_categorical_columns();
   // A key the scene does not read would refuse every point: an input error now, not a CSV of errors.
   for (const auto& axis : axes_) {
     check_varied_key(base_, axis.key + "=" + axis.texts.front(), option_name_, &materials_);
@@ -130,6 +147,41 @@ SweepGrid::SweepGrid(Json base, std::vector<SweepAxis> axes, std::string option_
       if (&a != &b && (a.key == b.key || b.key.starts_with(a.key + "."))) independent_keys_ = false;
     }
   }
+}
+
+void SweepGrid::union_categorical_columns() {
+  std::vector<std::size_t> categorical;
+  for (std::size_t a = 0; a < axes_.size(); ++a)
+    if (axes_[a].numbers.empty()) categorical.push_back(a);
+  if (categorical.empty()) return;
+  std::size_t combinations = 1;
+  for (std::size_t a : categorical) combinations *= axes_[a].values.size();
+  for (std::size_t combination = 0; combination < combinations; ++combination) {
+    Json document = base_;
+    std::size_t rest = combination;
+    for (std::size_t a = 0; a < axes_.size(); ++a) {
+      std::size_t k = 0;
+      if (axes_[a].numbers.empty()) k = rest % axes_[a].values.size(), rest /= axes_[a].values.size();
+      apply_override(document, axes_[a].key + "=" + axes_[a].texts[k], axes_[a].values[k], option_name_);
+    }
+    try {
+      for (auto& name : scene_column_names(document, &materials_))
+        if (std::find(names_.begin(), names_.end(), name) == names_.end()) names_.push_back(std::move(name));
+    } catch (const InputError&) {  // that combination's points are refused, each with its message
+    } catch (const ModelError&) {
+    }
+  }
+  varying_columns_ = true;
+  for (std::size_t c = 0; c < names_.size(); ++c) column_index_.emplace(names_[c], c);
+}
+
+std::vector<std::string> SweepGrid::axis_column_names() const {
+  std::vector<std::string> out;
+  for (const auto& axis : axes_) {
+    const bool taken = std::find(names_.begin(), names_.end(), axis.key) != names_.end();
+    out.push_back(taken ? axis.key + "_varied" : axis.key);
+  }
+  return out;
 }
 
 std::size_t SweepGrid::stride(std::size_t a) const {
@@ -150,6 +202,15 @@ void SweepGrid::evaluate(std::size_t point, Json& document, SweepRow& row, bool 
   }
   const auto scene = parse_scene(document, &materials_);
   scene->predict();
+  if (varying_columns_) {  // each cell to its column of the union; the columns this scene lacks stay empty
+    ColumnCollector collected;
+    scene->write_cells(collected);
+    std::vector<std::string> cells(names_.size());
+    for (auto& [name, text] : collected.columns) cells.at(column_index_.at(name)) = std::move(text);
+    for (std::size_t c = 0; c < cells.size(); ++c) (row.cells += c ? "," : "") += cells[c];
+    if (lists) row.guards = scene->guard_names(), row.warnings = scene->warnings();
+    return;
+  }
   row.cells.reserve(16 * names_.size());  // about the text of a row: one allocation, not a doubling series
   CellJoiner joiner(row.cells);
   scene->write_cells(joiner);
@@ -211,8 +272,9 @@ std::vector<SweepRow> SweepGrid::run(bool lists, const std::function<void(std::s
 std::string SweepGrid::csv_text(const std::vector<SweepRow>& rows) const {
   std::vector<std::vector<std::string>> coordinates(axes_.size());
   std::vector<std::string> header;
+  const std::vector<std::string> axis_names = axis_column_names();
   for (std::size_t a = 0; a < axes_.size(); ++a) {
-    header.push_back(csv_escape(axes_[a].key));
+    header.push_back(csv_escape(axis_names[a]));
     for (std::size_t k = 0; k < axes_[a].values.size(); ++k) {
       coordinates[a].push_back(k < axes_[a].numbers.size() ? csv_number(axes_[a].numbers[k])
                                                            : csv_escape(axes_[a].texts[k]));

@@ -44,47 +44,69 @@ std::vector<std::optional<std::string>> column_texts(const SweepGrid& grid, cons
   return values;
 }
 
-std::string sweep_summary(const SweepGrid& grid, const std::vector<SweepRow>& rows) {
-  // Counts in first-seen order, so that the line reads in the sweep's own order.
-  const auto tally = [](const std::vector<std::string>& items) {
-    std::vector<std::pair<std::string, std::size_t>> counts;
-    for (const auto& item : items) {
-      auto it = std::find_if(counts.begin(), counts.end(), [&](const auto& c) { return c.first == item; });
-      if (it == counts.end()) counts.emplace_back(item, 1);
-      else ++it->second;
-    }
+namespace {
+/// Counts in first-seen order, so that the summary reads in the sweep's own order.
+class Tally {
+ public:
+  void add(std::string_view item) {
+    const auto it = std::find_if(counts_.begin(), counts_.end(), [&](const auto& c) { return c.first == item; });
+    if (it == counts_.end()) counts_.emplace_back(std::string(item), 1);
+    else ++it->second;
+  }
+  bool empty() const { return counts_.empty(); }
+  std::size_t count(std::string_view item) const {
+    const auto it = std::find_if(counts_.begin(), counts_.end(), [&](const auto& c) { return c.first == item; });
+    return it == counts_.end() ? 0 : it->second;
+  }
+  std::string text() const {
     std::string out;
-    for (const auto& [name, n] : counts) out += fmt::format("{}{} {}", out.empty() ? "" : ", ", n, name);
+    for (const auto& [name, n] : counts_) out += fmt::format("{}{} {}", out.empty() ? "" : ", ", n, name);
     return out;
+  }
+
+ private:
+  std::vector<std::pair<std::string, std::size_t>> counts_;
+};
+}  // namespace
+
+std::string sweep_summary(const SweepGrid& grid, const std::vector<SweepRow>& rows) {
+  const auto& names = grid.column_names();
+  const auto index_of = [&](std::string_view name) {
+    return static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
   };
-  std::vector<std::string> regimes, ranges, guards;
-  const auto regime_cells = column_texts(grid, rows, "regime");
-  const auto range_cells = column_texts(grid, rows, "within_model_range");
-  const auto guard_cells = column_texts(grid, rows, "guards");
+  const std::size_t regime_c = index_of("regime"), range_c = index_of("within_model_range"), guard_c = index_of("guards");
+  const auto unquoted = [](std::string_view field) {
+    return field.size() >= 2 && field.front() == '"' ? field.substr(1, field.size() - 2) : field;
+  };
+  // One pass over the rows, each split once (a sweep may hold millions of them).
+  Tally regimes, ranges, guards;
   std::size_t refused = 0;
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    if (!rows[i].error.empty()) {
+  for (const auto& row : rows) {
+    if (!row.error.empty()) {
       ++refused;
       continue;
     }
-    if (regime_cells[i]) regimes.push_back(regime_cells[i]->empty() ? "without d_c" : *regime_cells[i]);
-    if (range_cells[i]) ranges.push_back(*range_cells[i] == "no" ? "outside" : "within");
-    if (!guard_cells[i]) continue;
-    if (guard_cells[i]->empty()) guards.emplace_back("none");
-    std::string_view list = *guard_cells[i];
+    const auto fields = split_cells(row.cells);
+    if (regime_c < fields.size()) {
+      const auto regime = unquoted(fields[regime_c]);
+      regimes.add(regime.empty() ? "without d_c" : regime);
+    }
+    if (range_c < fields.size()) ranges.add(unquoted(fields[range_c]) == "no" ? "outside" : "within");
+    if (guard_c >= fields.size()) continue;
+    std::string_view list = unquoted(fields[guard_c]);
+    if (list.empty()) guards.add("none");
     while (!list.empty()) {
       const auto end = std::min(list.find(';'), list.size());
-      guards.emplace_back(list.substr(0, end));
+      guards.add(list.substr(0, end));
       list.remove_prefix(std::min(end + 1, list.size()));
     }
   }
   std::string line = fmt::format("{} points: {} refused", rows.size(), refused);
-  if (!regimes.empty()) line += "; regime " + tally(regimes);
+  if (!regimes.empty()) line += "; regime " + regimes.text();
   if (!ranges.empty()) {
-    const auto outside = static_cast<std::size_t>(std::count(ranges.begin(), ranges.end(), "outside"));
-    line += fmt::format("; within the model's range {}, outside {}", ranges.size() - outside, outside);
+    line += fmt::format("; within the model's range {}, outside {}", ranges.count("within"), ranges.count("outside"));
   }
-  if (!guards.empty()) line += "; guards " + tally(guards);
+  if (!guards.empty()) line += "; guards " + guards.text();
   return line;
 }
 
@@ -95,6 +117,10 @@ void plot_sweep(const SweepGrid& grid, const std::vector<SweepRow>& rows, const 
   const Json& base = grid.base();
   MaterialCache& materials = grid.materials();
   const std::size_t n_points = grid.size();
+  if (grid.axes()[0].numbers.empty()) {
+    throw InputError("--plot", path, fmt::format("a numeric first --vary key to draw against ({} is categorical: "
+                                                 "put a numeric key first)", grid.axes()[0].key));
+  }
   const bool x_log = grid.axes()[0].log_spacing;
   std::vector<std::string> axis_paths;
   std::vector<std::vector<double>> axis_values;
@@ -132,7 +158,8 @@ void plot_sweep(const SweepGrid& grid, const std::vector<SweepRow>& rows, const 
   }
   // Colours 0-4 and 6: grey (5) is the line-style key's.
   constexpr std::array<int, 6> kColors = {0, 1, 2, 3, 4, 6};
-  const std::size_t n_second = axis_values.size() > 1 ? std::min<std::size_t>(kColors.size(), axis_values[1].size()) : 1;
+  const std::size_t n_second =
+      grid.axes().size() > 1 ? std::min<std::size_t>(kColors.size(), grid.axes()[1].values.size()) : 1;
   std::vector<PlotSeries> keys;
   bool any_outside = false;
   for (std::size_t k = 0; k < n_second; ++k) {
@@ -147,10 +174,9 @@ void plot_sweep(const SweepGrid& grid, const std::vector<SweepRow>& rows, const 
       within_marks.marker = dashed ? 1 : 0;
       outside_marks.marker = within_marks.marker + 5;
       for (std::size_t i = 0; i < n_points; ++i) {
-        if (axis_values.size() > 1 && coordinate(i, 1) != axis_values[1][k]) continue;
+        if (axis_values.size() > 1 && grid.value_index(i, 1) != k) continue;
         bool first_of_the_rest = true;  // further axes: their first value
-        for (std::size_t a = 2; a < axis_values.size(); ++a)
-          first_of_the_rest = first_of_the_rest && coordinate(i, a) == axis_values[a][0];
+        for (std::size_t a = 2; a < axis_values.size(); ++a) first_of_the_rest = first_of_the_rest && grid.value_index(i, a) == 0;
         if (!first_of_the_rest) continue;
         const auto& value = force_numbers[dashed ? 1 : 0][i];
         if (!value) continue;  // refused, or no such column
@@ -171,10 +197,14 @@ void plot_sweep(const SweepGrid& grid, const std::vector<SweepRow>& rows, const 
       const std::string label = key_label(axis_paths[1]);
       const auto open = label.rfind(" (");
       PlotSeries key;
-      key.label = open == std::string::npos
-                      ? fmt::format("{} = {:g}", label, axis_values[1][k])
-                      : fmt::format("{} = {:g} {}", label.substr(0, open), axis_values[1][k],
-                                    label.substr(open + 2, label.size() - open - 3));
+      if (axis_values[1].empty()) {  // a categorical key: its value as written
+        key.label = fmt::format("{} = {}", label, grid.axes()[1].texts[k]);
+      } else {
+        key.label = open == std::string::npos
+                        ? fmt::format("{} = {:g}", label, axis_values[1][k])
+                        : fmt::format("{} = {:g} {}", label.substr(0, open), axis_values[1][k],
+                                      label.substr(open + 2, label.size() - open - 3));
+      }
       key.style = SeriesStyle::line;
       key.color = kColors[k];
       key.legend_only = true;

@@ -189,7 +189,7 @@ py::dict sweep(const py::object& scene, const py::dict& vary, const py::kwargs& 
     rows = grid.run(/*lists=*/true);
   }
   const std::vector<std::string>& names = grid.column_names();
-  std::vector<std::string> header = keys;
+  std::vector<std::string> header = grid.axis_column_names();  // a key that is also a column: key_varied
   header.insert(header.end(), names.begin(), names.end());
   for (const char* listed : {"guards", "warnings"})  // every row has them, trepanning's too
     if (std::find(header.begin(), header.end(), listed) == header.end()) header.emplace_back(listed);

@@ -167,3 +167,21 @@ def test_glass_results_carry_the_regime_and_the_model_range():
     assert list(table["regime"]) == ["ductile" if h < dc_um else "transition" if h < 3 * dc_um else "brittle"
                                      for h in table["uncut_chip_thickness_um"]]
     assert list(table["within_model_range"]) == ["yes" if h < dc_um else "no" for h in table["uncut_chip_thickness_um"]]
+
+
+def test_categorical_sweeps_give_the_separate_predictions():
+    """Issue 55 item 3: models and materials varied in kerf.sweep, crossed with a number: each row is the separate
+    prediction's, every varied key its own column (material_varied beside the prediction's own material)."""
+    glass = SOURCE / "data" / "scenes" / "soda_lime_transition.json"
+    table = kerf.sweep(glass, vary={"models.force": ["merchant", "transition"], "material": ["soda_lime_glass", "k9_glass"],
+                                    "cut.uncut_chip_thickness_um": [0.02, 5.0]})
+    assert len(table["error"]) == 8 and all(e is None for e in table["error"])
+    for i in range(8):
+        one = kerf.predict(glass, models__force=table["models.force"][i], material=table["material_varied"][i],
+                           cut__uncut_chip_thickness_um=table["cut.uncut_chip_thickness_um"][i])
+        for key, value in one.items():
+            cell = table[key][i]
+            if value is None and isinstance(cell, float):  # an empty number: None in a dict, NaN in a float column
+                value = float("nan")
+            assert cell == value or (isinstance(value, float) and np.isnan(value) and np.isnan(cell)), (key, cell, value)
+        assert table["material"][i] == table["material_varied"][i]

@@ -14,6 +14,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include "kerf/analytic/scene.hpp"
@@ -32,7 +33,8 @@ struct SweepAxis {
 };
 
 /// The CLI's axis: key.path=START:STOP:COUNT[:log|:lin] (values rounded to 15 significant digits) or
-/// key.path=A,B,C. InputError naming `option_name` and the spec.
+/// key.path=A,B,C: numbers, or names and any other values as --set reads them (models.force=merchant,liu_li,
+/// material=psic,k9_glass: a categorical axis, without numbers). InputError naming `option_name` and the spec.
 SweepAxis parse_sweep_axis(const std::string& spec, const std::string& option_name = "--vary");
 
 /// An axis of values given as JSON texts (Python's: json.dumps of each value), each read as a --set value.
@@ -50,12 +52,17 @@ struct SweepRow {
 class SweepGrid {
  public:
   /// Checks the grid (at most 50 million points) and each axis's key against the scene (check_varied_key:
-  /// InputError naming `option_name`), and fixes the column names from the unvaried scene.
+  /// InputError naming `option_name`), and fixes the column names: the unvaried scene's, or with categorical axes
+  /// (a model or material varied) the union of each combination's columns, in order of first appearance; a point
+  /// leaves the columns its scene lacks empty.
   SweepGrid(Json base, std::vector<SweepAxis> axes, std::string option_name);
 
   std::size_t size() const { return n_points_; }
   const std::vector<SweepAxis>& axes() const { return axes_; }
   const std::vector<std::string>& column_names() const { return names_; }
+  /// The varied keys' column names, in axis order: the key, or key + "_varied" where a prediction column has the
+  /// key's name (`material`: the prediction's column is the record's name, the axis's the value as given).
+  std::vector<std::string> axis_column_names() const;
   /// The value index of `point` on axis `a` (row-major: the last axis varies fastest).
   std::size_t value_index(std::size_t point, std::size_t a) const;
   /// The points between neighbours along axis `a`.
@@ -74,6 +81,7 @@ class SweepGrid {
 
  private:
   void evaluate(std::size_t point, Json& document, SweepRow& row, bool lists) const;
+  void union_categorical_columns();
 
   Json base_;
   std::vector<SweepAxis> axes_;
@@ -81,6 +89,8 @@ class SweepGrid {
   std::vector<std::string> names_;
   std::size_t n_points_ = 1;
   bool independent_keys_ = true;  ///< no key is another's prefix: a point's document can be the last one's
+  bool varying_columns_ = false;  ///< categorical axes: a point's cells are placed by name into the union
+  std::unordered_map<std::string, std::size_t> column_index_;  ///< name -> position, when varying_columns_
   mutable MaterialCache materials_;
 };
 
