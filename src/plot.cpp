@@ -297,15 +297,28 @@ void draw(const FigureSpec& fig, const std::pair<double, double>& xr, const std:
 
 }  // namespace
 
+void check_figure_path(const std::filesystem::path& path, const std::string& field) {
+  const std::string extension = path.extension().string();
+  if (path.filename() == "-" || (extension != ".png" && extension != ".svg" && extension != ".pdf")) {
+    throw InputError(field, path.string(),
+                     "a figure file named .png, .svg or .pdf (figures are not written to standard output)");
+  }
+}
+
 void draw_png_with_plplot(const std::filesystem::path& path, int width_px, int height_px,
                           const std::function<void()>& before_init, const std::function<void()>& draw) {
   namespace fs = std::filesystem;
+  // The file the extension names (PNG or SVG), then the same drawing as a PDF beside it (vector, for papers):
+  // cairo's page is the PNG's size in points, so both look alike. A .pdf path is the PDF alone.
+  check_figure_path(path, path.string());
+  const std::string extension = path.extension().string();
   if (path.has_parent_path()) fs::create_directories(path.parent_path());
-  // The PNG, then the same drawing as a PDF beside it (vector, for papers): cairo's page is the PNG's size
-  // in points, so both look alike.
   fs::path pdf = path;
   pdf.replace_extension(".pdf");
-  for (const auto& [device, file] : {std::pair<const char*, fs::path>{"pngcairo", path}, {"pdfcairo", pdf}}) {
+  std::vector<std::pair<const char*, fs::path>> outputs;
+  if (extension != ".pdf") outputs.emplace_back(extension == ".svg" ? "svgcairo" : "pngcairo", path);
+  outputs.emplace_back("pdfcairo", pdf);
+  for (const auto& [device, file] : outputs) {
     const fs::path temporary = TemporaryFile::reserve(file, file.extension().string());
     {
       // PLplot keeps library-wide state: one drawing at a time, on a stream of its own, closed with plend1()

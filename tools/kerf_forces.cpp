@@ -25,6 +25,7 @@
 #include "kerf/error.hpp"
 #include "kerf/io.hpp"
 #include "kerf/material.hpp"
+#include "kerf/plot.hpp"
 #include "kerf/report.hpp"
 #include "kerf/units.hpp"
 #include "kerf/version.hpp"
@@ -111,6 +112,7 @@ int run_report(const std::string& config_path, const std::string& out_dir) {
 
 int run_sweep(const std::string& scene_path, const std::vector<std::string>& overrides,
               const std::vector<std::string>& vary_specs, const std::string& csv, const std::string& plot) {
+  if (!plot.empty()) kerf::check_figure_path(plot, "--plot");
   Json base = load_scene_document(scene_path, overrides);
   std::vector<kerf::SweepAxis> axes;
   for (const auto& spec : vary_specs) axes.push_back(kerf::parse_sweep_axis(spec, "--vary"));
@@ -176,7 +178,7 @@ int main(int argc, char** argv) {
   sweep->add_option("--vary", vary, "an axis: key.path=START:STOP:COUNT[:log] or key.path=A,B,C (repeatable)")
       ->required();
   sweep->add_option("--csv", csv, "CSV file to write")->required();
-  sweep->add_option("--plot", plot, "also a figure (PNG, with a PDF beside it): cutting and thrust force against the "
+  sweep->add_option("--plot", plot, "also a figure (.png or .svg with a PDF beside it, or .pdf): cutting and thrust force against the "
                                     "first varied key, a line per value of the second");
   sweep->add_option("--threads", threads, "threads (default: all cores)")->check(CLI::Range(1, 1024));
 

@@ -63,6 +63,10 @@ struct FigureSpec {
 /// plinit, then `draw`; under one lock around PLplot's library-wide state, so callers on several threads are
 /// serialised. Each file is written to a temporary file beside it, then moved into place (whole or not at
 /// all); std::runtime_error when PLplot wrote nothing. render_png and the DEM pictures use it.
+/// A figure's file name: .png or .svg (a PDF beside it) or .pdf; InputError naming `field` for '-' or another
+/// extension. The drawing functions check it; a command checks its option before any work.
+void check_figure_path(const std::filesystem::path& path, const std::string& field);
+
 void draw_png_with_plplot(const std::filesystem::path& path, int width_px, int height_px,
                           const std::function<void()>& before_init, const std::function<void()>& draw);
 
