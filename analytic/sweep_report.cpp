@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <limits>
 
 #include "kerf/analytic/evaluate.hpp"
 #include "kerf/analytic/sweep.hpp"
@@ -216,7 +218,16 @@ void plot_sweep(const SweepGrid& grid, const std::vector<SweepRow>& rows, const 
   if (axis_paths[0] == "cut.uncut_chip_thickness_um") {
     const auto critical = column_numbers(grid, rows, "critical_depth_nm");
     const auto found = std::find_if(critical.begin(), critical.end(), [](const auto& v) { return v.has_value(); });
-    if (found != critical.end()) {
+    // Where it falls within the data's x range widened by its span (in decades on a log axis): a mark far
+    // outside it would squeeze the data into a corner.
+    double x_lo = std::numeric_limits<double>::infinity(), x_hi = -x_lo;
+    for (const auto& s : fig.series)
+      for (double x : s.x) x_lo = std::min(x_lo, x), x_hi = std::max(x_hi, x);
+    const auto scale = [&](double x) { return x_log ? std::log10(x) : x; };
+    const bool near = found != critical.end() && x_hi >= x_lo &&
+                      std::fabs(scale(**found * 1e-3) - 0.5 * (scale(x_lo) + scale(x_hi))) <=
+                          1.5 * (scale(x_hi) - scale(x_lo));
+    if (near) {
       double y_lo = 0.0, y_hi = 0.0;
       for (const auto& s : fig.series)
         for (double y : s.y) y_lo = std::min(y_lo, y), y_hi = std::max(y_hi, y);

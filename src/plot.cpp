@@ -238,6 +238,10 @@ void draw(const FigureSpec& fig, const std::pair<double, double>& xr, const std:
   plcol0(kBlack);
   plwidth(1.5);
   plsmin(0.0, 1.0);
+  // Tick labels as plain numbers (0.002, 15000): PLplot's "(x10^-3)" exponent label sits outside the axes, where
+  // the title or the canvas edge clips it.
+  plsxax(12, 0);
+  plsyax(12, 0);
   plbox(fig.x_log ? "bcnstl" : "bcnst", 0.0, 0, "bcnstv", 0.0, 0);
   plmtex("b", 2.9, 0.5, 0.5, fig.x_label.c_str());
   plmtex("l", 4.6, 0.5, 0.5, fig.y_label.c_str());
@@ -387,10 +391,46 @@ FigureSpec with_log10_x(FigureSpec fig) {
   }
   return fig;
 }
+
+/// A linear axis whose values are all tiny or huge (|v| < 0.01 or >= 1e5) is drawn in a power of ten that is a
+/// multiple of 3, said in the axis label ("force (10^-3 N)"): PLplot's own "(x10^-3)" sits outside the axes where
+/// the title or the canvas edge clips it, and plain labels of many digits run into the axis title.
+void scale_by_a_power_of_ten(FigureSpec& fig, bool x) {
+  double largest = 0.0;
+  for (const auto& s : fig.series) {
+    if (s.legend_only) continue;
+    for (double v : x ? s.x : s.y)
+      if (std::isfinite(v)) largest = std::max(largest, std::fabs(v));
+  }
+  if (!(largest > 0.0) || (largest >= 0.01 && largest < 1e5)) return;
+  const int exponent = 3 * static_cast<int>(std::floor(std::log10(largest) / 3.0));
+  const double factor = std::pow(10.0, -exponent);
+  const auto scale = [&](std::vector<double>& values) {
+    for (double& v : values) v *= factor;
+  };
+  for (auto& s : fig.series) {
+    scale(x ? s.x : s.y);
+    scale(x ? s.x_error : s.y_error);
+  }
+  for (auto& b : fig.bands) {
+    if (x) scale(b.x);
+    else scale(b.y_low), scale(b.y_high);
+  }
+  for (auto* limit : x ? std::array{&fig.x_min, &fig.x_max} : std::array{&fig.y_min, &fig.y_max})
+    if (*limit) **limit *= factor;
+  std::string& label = x ? fig.x_label : fig.y_label;
+  const std::string power = fmt::format("10#u{}#d", exponent);
+  const auto open = label.rfind(" (");
+  label = open != std::string::npos && label.back() == ')'
+              ? label.substr(0, open + 2) + power + " " + label.substr(open + 2)
+              : label + " (" + power + ")";
+}
 }  // namespace
 
 void render_png(const FigureSpec& figure, const std::filesystem::path& path) {
-  const FigureSpec fig = figure.x_log ? with_log10_x(figure) : figure;
+  FigureSpec fig = figure.x_log ? with_log10_x(figure) : figure;
+  if (!fig.x_log) scale_by_a_power_of_ten(fig, true);
+  scale_by_a_power_of_ten(fig, false);
   // Validate everything PLplot would otherwise exit() on.
   Extent xe, ye;
   bool any_point = false;
