@@ -23,7 +23,18 @@ void write_specimen_png(const std::filesystem::path& path, const Simulation& sim
     x0 = std::min(x0, p.x[i] - p.radius[i]), x1 = std::max(x1, p.x[i] + p.radius[i]);
     y0 = std::min(y0, p.y[i] - p.radius[i]), y1 = std::max(y1, p.y[i] + p.radius[i]);
   }
-  if (view_m) x0 = (*view_m)[0], x1 = (*view_m)[1], y0 = (*view_m)[2], y1 = (*view_m)[3];
+  // The walls (the tool, platens) in the picture too, with a margin: a tool above the specimen is not clipped.
+  for (const auto& w : sim.walls()) {
+    if (!w.enabled) continue;
+    x0 = std::min({x0, w.x0, w.x1}), x1 = std::max({x1, w.x0, w.x1});
+    y0 = std::min({y0, w.y0, w.y1}), y1 = std::max({y1, w.y0, w.y1});
+  }
+  const double margin = 0.02 * std::max(x1 - x0, y1 - y0);
+  x0 -= margin, x1 += margin, y0 -= margin, y1 += margin;
+  if (view_m) {  // a fixed view (a cut's frames share it) keeps its x range but reaches up to the walls' tops
+    const double wall_top = y1;
+    x0 = (*view_m)[0], x1 = (*view_m)[1], y0 = (*view_m)[2], y1 = std::max((*view_m)[3], wall_top);
+  }
   // Millimetres on the axes; about 1000 pixels along the longer side.
   const double mx = units::m_to_mm(1.0);
   const double aspect = (y1 - y0) / (x1 - x0);
@@ -48,7 +59,7 @@ void write_specimen_png(const std::filesystem::path& path, const Simulation& sim
     const bool any_wall = std::any_of(sim.walls().begin(), sim.walls().end(), [](const Wall& w) { return w.enabled; });
     const std::string key = std::string(any_held ? "grey fill = held disks" : "") + (any_held && any_wall ? "; " : "") +
                             (any_wall ? "green = walls (tool, platens)" : "");
-    plmtex("t", 2.6, 0.5, 0.5, "cracks: red = tension, blue = shear");
+    if (!sim.cracks().empty()) plmtex("t", 2.6, 0.5, 0.5, "cracks: red = tension, blue = shear");
     if (!key.empty()) plmtex("t", 1.2, 0.5, 0.5, key.c_str());
     plcol0(5);
     for (std::size_t i = 0; i < p.size(); ++i)
@@ -74,22 +85,26 @@ void write_cut_forces_png(const std::filesystem::path& path, const CutResult& re
   FigureSpec fig;
   fig.title = "cut: force on the tool";
   fig.x_label = "tool travel (mm)";
-  fig.y_label = fmt::format("force per {:g} mm width (N)", units::m_to_mm(result.width_m));
+  // Per mm of width, whatever the specimen's thickness: the force on the tool divided by the width it cuts.
+  const double width_mm = units::m_to_mm(result.width_m);
+  fig.y_label = "force per unit width (N/mm)";
   PlotSeries main{"main force", {}, {}, {}, {}, SeriesStyle::line, 0, 0};
   PlotSeries thrust{"thrust force", {}, {}, {}, {}, SeriesStyle::line, 1, 0};
   for (const auto& s : result.samples) {
-    main.x.push_back(units::m_to_mm(s.travel_m)), main.y.push_back(s.main_force_n);
-    thrust.x.push_back(units::m_to_mm(s.travel_m)), thrust.y.push_back(s.thrust_force_n);
+    main.x.push_back(units::m_to_mm(s.travel_m)), main.y.push_back(s.main_force_n / width_mm);
+    thrust.x.push_back(units::m_to_mm(s.travel_m)), thrust.y.push_back(s.thrust_force_n / width_mm);
   }
   // The means over the travel they cover, and whether that is a steady cut (CutResult::steady).
   const double x0 = units::m_to_mm(result.steady_from_travel_m), x1 = units::m_to_mm(result.steady_to_travel_m);
   const auto mean_label = [&](double force_n) {
-    return fmt::format("mean {:.3g} N over {:.3g}-{:.3g} mm{}", force_n, x0, x1, result.steady ? "" : " (NOT STEADY)");
+    return fmt::format("mean {:.3g} N/mm over {:.3g}-{:.3g} mm{}", force_n / width_mm, x0, x1,
+                       result.steady ? "" : " (NOT STEADY)");
   };
-  PlotSeries main_mean{mean_label(result.main_force_n), {x0, x1}, {result.main_force_n, result.main_force_n}, {}, {},
+  const double main_mean_n_per_mm = result.main_force_n / width_mm, thrust_mean_n_per_mm = result.thrust_force_n / width_mm;
+  PlotSeries main_mean{mean_label(result.main_force_n), {x0, x1}, {main_mean_n_per_mm, main_mean_n_per_mm}, {}, {},
                        SeriesStyle::dashed_line, 0, 0};
-  PlotSeries thrust_mean{mean_label(result.thrust_force_n), {x0, x1}, {result.thrust_force_n, result.thrust_force_n},
-                         {}, {}, SeriesStyle::dashed_line, 1, 0};
+  PlotSeries thrust_mean{mean_label(result.thrust_force_n), {x0, x1}, {thrust_mean_n_per_mm, thrust_mean_n_per_mm}, {},
+                         {}, SeriesStyle::dashed_line, 1, 0};
   if (!result.steady) fig.title += " (means NOT STEADY)";
   fig.series = {main, thrust, main_mean, thrust_mean};
   leave_room_for_legend(fig);
