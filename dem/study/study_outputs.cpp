@@ -9,6 +9,7 @@
 #include <optional>
 #include <set>
 
+#include "kerf/comparison_config.hpp"
 #include "kerf/dem/study/study.hpp"
 #include "kerf/error.hpp"
 #include "kerf/interval95.hpp"
@@ -184,10 +185,12 @@ std::vector<std::string> write_plots(const StudySpec& spec, const std::vector<st
     for (const std::string& n : names) {
       FigureSpec fig;
       fig.title = "mean and 95 % interval over the packings";
-      fig.x_label = key;
-      fig.y_label = n;
+      fig.x_label = key_label(key);  // "cut.depth_of_cut_mm" -> "depth of cut (mm)"
+      fig.y_label = key_label(n);
       std::map<std::string, std::size_t> series_of;
       bool echoes_key = true;  // a result that only repeats the varied input (the loading speed) is not plotted
+      std::optional<double> first_mean;
+      bool constant = true;  // nor one that is the same in every condition (a setting echoed as a result)
       for (std::size_t ci = 0; ci < spec.conditions.size(); ++ci) {
         const ResultStats& st = by_result[n][ci];
         std::optional<double> x;
@@ -196,11 +199,13 @@ std::vector<std::string> write_plots(const StudySpec& spec, const std::vector<st
           if (k == key) {
             if (v.is_number()) x = v.get<double>();
           } else {
-            label += (label.empty() ? "" : ", ") + k + " = " + value_text(v);
+            label += (label.empty() ? "" : ", ") + key_label(k) + " = " + value_text(v);
           }
         }
         if (!x || !std::isfinite(st.mean)) continue;
         echoes_key = echoes_key && st.mean == *x && st.std == 0;
+        if (!first_mean) first_mean = st.mean;
+        constant = constant && st.mean == *first_mean && st.std == 0;
         auto [it, fresh] = series_of.try_emplace(label, fig.series.size());
         if (fresh) {
           PlotSeries s;
@@ -215,7 +220,7 @@ std::vector<std::string> write_plots(const StudySpec& spec, const std::vector<st
         s.y.push_back(st.mean);
         s.y_error.push_back(std::isfinite(st.ci_high) ? st.ci_high - st.mean : NAN);
       }
-      if (fig.series.empty() || echoes_key) continue;
+      if (fig.series.empty() || echoes_key || constant) continue;
       for (PlotSeries& s : fig.series) sort_by_x(s);  // in x order
       if (fig.series.size() > 1) leave_room_for_legend(fig);
       const std::string file = fmt::format("plots/{}_vs_{}.png", file_part(n), file_part(key));
