@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -413,6 +414,20 @@ py::dict dem_run(const py::object& scene, const py::object& out, const py::objec
 }  // namespace
 
 PYBIND11_MODULE(kerf, m) {
+  // numpy first, with a message of one line: without it pybind11 would report only "initialization failed".
+  try {
+    py::module_::import("numpy");
+  } catch (const py::error_already_set&) {
+    const auto sys = py::module_::import("sys");
+    const auto info = sys.attr("version_info");
+    const std::string executable = py::str(sys.attr("executable")).cast<std::string>();
+    const std::string built_for = KERF_PYTHON_EXECUTABLE;
+    throw std::runtime_error("kerf needs numpy, which " + executable + " (Python " +
+                             py::str(info.attr("major")).cast<std::string>() + "." +
+                             py::str(info.attr("minor")).cast<std::string>() +
+                             ") cannot import: install it (Debian: apt install python3-numpy)" +
+                             (executable == built_for ? "" : ", or run " + built_for + ", which kerf was built for"));
+  }
   m.doc() = "kerf: cutting forces for hard, brittle materials (analytic models and the 2D bonded-particle DEM)";
   m.attr("__version__") = std::string(kerf::version());
   m.attr("__git_commit__") = std::string(kerf::git_commit());

@@ -9,6 +9,7 @@
 #include <set>
 
 #include "kerf/error.hpp"
+#include "kerf/install.hpp"
 
 namespace kerf {
 
@@ -58,7 +59,8 @@ const Json& MaterialRecord::require_group(const std::string& group_name, const s
 
 std::filesystem::path data_directory() {
   if (const char* dir = std::getenv("KERF_DATA_DIR"); dir && *dir) return dir;
-  return KERF_DEFAULT_DATA_DIR;
+  static const std::filesystem::path installed = installed_data_directory();  // include/kerf/install.hpp
+  return installed.empty() ? std::filesystem::path(KERF_DEFAULT_DATA_DIR) : installed;
 }
 
 std::vector<std::filesystem::path> material_directories() {

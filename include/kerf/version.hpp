@@ -2,7 +2,7 @@
 // What built kerf and what a run was: the version, the git commit captured when CMake configured the build,
 // and the provenance block a run's summary.json carries.
 //
-//   fmt::print("{}\n", kerf::version_line("kerf-dem"));   // "kerf-dem 0.1.0 (git d6d883e)"
+//   fmt::print("{}\n", kerf::version_line("kerf-dem"));   // "kerf-dem 0.2.0 (git d6d883e)"
 //   summary["provenance"] = kerf::run_provenance("kerf-dem run s.json", "s.json", {"cut.length_mm=0.2"});
 #include <string>
 #include <string_view>
@@ -12,7 +12,7 @@
 
 namespace kerf {
 
-/// The project version ("0.1.0").
+/// The project version, CMakeLists.txt's project() VERSION ("0.2.0").
 std::string_view version();
 /// `git describe --always --dirty` of the source tree when the build was configured; empty outside git.
 std::string_view git_commit();
