@@ -8,7 +8,8 @@ estimates (a difference) has the delta-method standard error sqrt(sum c_i^2 se_i
 of freedom. Verdicts come from a difference's interval only (verdict): 'differs' when it excludes 0, 'agrees' when it
 holds 0 within +-AGREEMENT_MARGIN of the value compared against, 'not resolved' otherwise.
 
-Student's t (t95): a table to 30 degrees of freedom, the Cornish-Fisher expansion beyond, interpolated in 1 / dof.
+The one Student t quantile is the C++ one (t95: kerf::quantile95, include/kerf/interval95.hpp, GSL's exact quantile
+at any real degrees of freedom), through the compiled module.
 
     from kerf.stats import mean_of, ratio, difference, verdict
     groove = ratio(mean_of(grooved_forces), mean_of(regular_forces))   # an Estimate: value, se, dof, low, high
@@ -16,34 +17,15 @@ Student's t (t95): a table to 30 degrees of freedom, the Cornish-Fisher expansio
 import math
 import statistics
 
-
-
-# Student's t, two-sided 95 %, by degrees of freedom (1-30); beyond, the Cornish-Fisher expansion about the
-# normal's 1.959964 (Abramowitz & Stegun 26.7.5; within 1e-4 of the quantile from 30 degrees of freedom on).
-T975 = [12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.365, 2.306, 2.262, 2.228, 2.201, 2.179, 2.160, 2.145, 2.131,
-        2.120, 2.110, 2.101, 2.093, 2.086, 2.080, 2.074, 2.069, 2.064, 2.060, 2.056, 2.052, 2.048, 2.045, 2.042]
-
-
-def t975(dof):
-    if dof <= len(T975):
-        return T975[dof - 1]
-    z, n = 1.959964, float(dof)
-    return (z + (z ** 3 + z) / (4 * n) + (5 * z ** 5 + 16 * z ** 3 + 3 * z) / (96 * n ** 2)
-            + (3 * z ** 7 + 19 * z ** 5 + 17 * z ** 3 - 15 * z) / (384 * n ** 3))
+from kerf import _quantile95
 
 
 def t95(dof):
-    """Student's t, two-sided 95 %, at Welch's fractional dof: interpolated in 1 / dof between the neighbouring
-    integers (the usual rule; slightly conservative). Rounding down instead made two packings' t 12.7 at 1.97
-    degrees of freedom where it is about 4.4, and a ratio's interval far wider than its difference's."""
-    if not math.isfinite(dof):
-        return 1.959964
-    dof = max(1.0, dof)
-    lo = int(math.floor(dof))
-    if dof == lo:
-        return t975(lo)
-    w = (1 / lo - 1 / dof) / (1 / lo - 1 / (lo + 1))
-    return t975(lo) + w * (t975(lo + 1) - t975(lo))
+    """Student's t, two-sided 95 % (the 0.975 quantile), at `dof` degrees of freedom, fractional ones (Welch's)
+    included: GSL's exact quantile, the one the C++ intervals take (kerf::quantile95, include/kerf/interval95.hpp);
+    the normal's 1.96 when `dof` is not finite or not positive (kerf::kZ95: no spread, it multiplies a standard error
+    of 0)."""
+    return _quantile95(float(dof))
 
 
 class Estimate:

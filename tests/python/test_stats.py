@@ -45,20 +45,44 @@ def test_welch_dof_of_two_equal_samples_is_their_pooled_dof():
     assert math.isclose(d.se, math.sqrt(2) * x.se)
 
 
-def test_t_quantile_at_fractional_dof_lies_between_its_integers():
-    # Welch's dof are fractional: t falls from t(1) = 12.706 to t(2) = 4.303 without a jump, and at an integer it
-    # is the table's. At 1.97 dof the exact quantile is about 4.37; interpolating in 1 / dof gives a little more.
-    assert math.isclose(ks.t95(1.0), 12.706, abs_tol=1e-3) and math.isclose(ks.t95(2.0), 4.303, abs_tol=1e-3)
-    assert ks.t95(1.0) > ks.t95(1.5) > ks.t95(1.97) > ks.t95(2.0)
-    assert 4.37 <= ks.t95(1.97) < 4.5
-    assert ks.t95(0.5) == ks.t95(1.0) and math.isclose(ks.t95(math.inf), 1.96, abs_tol=1e-3)
+def student_cdf_minus_half(x, dof, steps=20000):
+    """P(0 < T < x) for Student's t with real `dof`: Simpson's rule over the density
+    Gamma((dof + 1) / 2) / (sqrt(dof pi) Gamma(dof / 2)) (1 + t^2 / dof)^(-(dof + 1) / 2)."""
+    c = math.exp(math.lgamma((dof + 1) / 2) - math.lgamma(dof / 2)) / math.sqrt(dof * math.pi)
+    f = lambda t: c * (1 + t * t / dof) ** (-(dof + 1) / 2)  # noqa: E731
+    h = x / steps
+    return h / 3 * (f(0) + f(x) + sum((4 if k % 2 else 2) * f(k * h) for k in range(1, steps)))
 
 
-def test_t_quantile_beyond_the_table_falls_towards_the_normal():
-    # Tabulated 2.042 at 30 degrees of freedom; 2.0211 at 40, 2.0003 at 60, 1.9799 at 120 (standard tables).
-    assert ks.t95(30) > ks.t95(31) > ks.t95(40) > 1.96
-    for dof, want in ((40, 2.0211), (60, 2.0003), (120, 1.9799)):
-        assert math.isclose(ks.t95(dof), want, abs_tol=2e-4)
+def test_t_quantile_has_the_closed_forms_of_one_two_and_four_degrees_of_freedom():
+    # 1 dof (Cauchy): tan(pi (p - 1/2)); 2 dof: a sqrt(2 / (1 - a^2)), a = 2p - 1; 4 dof: 2 sqrt(q - 1),
+    # q = cos(arccos(sqrt(alpha)) / 3) / sqrt(alpha), alpha = 4 p (1 - p) (Hill 1970).
+    p = 0.975
+    a, alpha = 2 * p - 1, 4 * p * (1 - p)
+    q = math.cos(math.acos(math.sqrt(alpha)) / 3) / math.sqrt(alpha)
+    assert math.isclose(ks.t95(1), math.tan(math.pi * (p - 0.5)), rel_tol=1e-12)
+    assert math.isclose(ks.t95(2), a * math.sqrt(2 / (1 - a * a)), rel_tol=1e-12)
+    assert math.isclose(ks.t95(4), 2 * math.sqrt(q - 1), rel_tol=1e-12)
+
+
+def test_t_quantile_is_the_textbooks_and_tends_to_the_normal():
+    # Standard tables to 9 decimals (e.g. NIST/SEMATECH's); beyond, 1.96 + (1.96^3 + 1.96) / (4 dof) to first order.
+    for dof, want in ((3, 3.182446305), (10, 2.228138852), (30, 2.042272456), (60, 2.000297821),
+                      (120, 1.979930405)):
+        assert math.isclose(ks.t95(dof), want, abs_tol=2e-9)
+    z = 1.959963984540054
+    assert math.isclose(ks.t95(1e6), z + (z ** 3 + z) / 4e6, abs_tol=1e-9)
+    # No spread to scale: the C++ side's normal 1.96 (kerf::kZ95).
+    assert ks.t95(math.inf) == 1.96 and ks.t95(0) == 1.96
+
+
+def test_t_quantile_at_fractional_dof_is_where_the_distribution_holds_95_percent():
+    # Welch's dof are fractional: the quantile is exact there too, P(|T| < t) = 0.95 by the density itself, and falls
+    # without a jump from 12.706 at 1 dof to 4.303 at 2 (at 1.97, where two packings' Welch dof often lie, about 4.37).
+    for dof in (0.5, 1.5, 1.97, 3.3, 7.25, 41.7):
+        assert math.isclose(student_cdf_minus_half(ks.t95(dof), dof), 0.475, abs_tol=1e-9), dof
+    assert ks.t95(0.5) > ks.t95(1.0) > ks.t95(1.5) > ks.t95(1.97) > ks.t95(2.0)
+    assert 4.36 < ks.t95(1.97) < 4.38
 
 
 def test_a_combination_of_estimates_adds_their_variances():
