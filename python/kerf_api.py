@@ -191,3 +191,12 @@ _read_frames.__name__ = _read_frames.__qualname__ = "read_frames"
 _read_frames.__module__ = "kerf.dem"
 dem.run, dem.kinds, dem.read_frames = _run, _kinds, _read_frames
 del _run, _kinds, _read_frames
+
+
+def __getattr__(name):
+    """The compiled module is also a package: its pure-Python submodules (kerf.stats, kerf.records: python/kerf/)
+    lie in the folder kerf/ beside it, where python/CMakeLists.txt copies them. Python asks for __path__ when it
+    imports a submodule, once the import has given the module its __file__ (it has none while this file runs)."""
+    if name == "__path__":
+        return [_os.path.join(_os.path.dirname(__file__), "kerf")]
+    raise AttributeError(f"module 'kerf' has no attribute '{name}'")

@@ -32,6 +32,7 @@
 #include "kerf/csv_table.hpp"
 #include "kerf/dem/scene.hpp"
 #include "kerf/error.hpp"
+#include "kerf/interval95.hpp"
 #include "kerf/json_reader.hpp"
 #include "kerf/material.hpp"
 #include "kerf/report.hpp"
@@ -464,6 +465,8 @@ PYBIND11_MODULE(kerf, m) {
   m.def("_dem_run", &dem_run, py::arg("scene"), py::arg("out"), py::arg("threads"), py::arg("replicates"),
         py::arg("checkpoint_every"), py::arg("progress"));
   m.def("_dem_kinds", &kerf::dem::scene_kind_names);
+  // The one two-sided 95 % Student t quantile (GSL's), which kerf.stats' intervals use as the C++ ones do.
+  m.def("_quantile95", &kerf::quantile95, py::arg("degrees_of_freedom"));
   m.def_submodule("dem", "the 2D bonded-particle DEM (kerf-dem): run, kinds, read_frames");
   py::exec(kKerfApiPy, m.attr("__dict__"));
 }

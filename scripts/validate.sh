@@ -13,7 +13,8 @@
 #                                                 # soda_lime_cutting_steady (the seed-000 study's record:
 #                                                 # kerf-dem study data/studies/seed000_steady.json runs the
 #                                                 # cuts not yet recorded, 14-23 CPU-hours from nothing, then
-#                                                 # bench/seed000_trends.py --report; exit 0 when every
+#                                                 # validation/soda_lime_cutting_steady/trends.py --report, with
+#                                                 # the built module kerf (kerf.stats); exit 0 when every
 #                                                 # verdict asked is resolved)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -23,9 +24,13 @@ bash "$root/scripts/build.sh" >/dev/null
 out="$root/out/validation"
 [ "$case" = all ] || out="$out/$case"
 build="${KERF_BUILD_DIR:-$root/build}"
+# The interpreter the module kerf was built for (python/CMakeLists.txt), and the module on its path.
+python="$(sed -n 's/^Python3_EXECUTABLE:[A-Z]*=//p' "$build/CMakeCache.txt" 2>/dev/null)"
+python="${python:-python3}"
 steady() {  # the steady case's acceptance comes from the study's record (its README)
   "$build/tools/kerf-dem" study "$root/data/studies/seed000_steady.json" --out "$1/study" --checkpoint-minutes 5
-  python3 "$root/bench/seed000_trends.py" --report --out "$1"
+  PYTHONPATH="$build/python${PYTHONPATH:+:$PYTHONPATH}" "$python" \
+    "$root/validation/soda_lime_cutting_steady/trends.py" --report --out "$1"
 }
 glass() { python3 "$root/validation/glass_transition/report.py" --kerf-forces "$build/tools/kerf-forces" --out "$1"; }
 case "$case" in

@@ -2,7 +2,7 @@
 // validation.json with kerf-dem (replicates on different packings), collects the forces, compares them through
 // the report layer with the experiments (Table 6, 25.4 mm wide) and the paper's DEM (Table 4, 1 mm), and checks
 // the acceptance bands where validation.json gives them. See validation/soda_lime_cutting/README.md. (The
-// steady-state case's acceptance is the seed-000 study's record, bench/seed000_trends.py.)
+// steady-state case's acceptance is the seed-000 study's record, validation/soda_lime_cutting_steady/trends.py.)
 #include "soda_lime_cutting.hpp"
 
 #include <fmt/format.h>
@@ -261,8 +261,8 @@ std::string num(double x, int digits = 3) { return std::isfinite(x) ? fmt::forma
 /// report's line. The ratio's standard error to first order (ratio_of), its 95 % interval value +- q standard
 /// errors (q: Student's t at the Welch-Satterthwaite degrees of freedom). AGREES: the experiment's ratio inside
 /// the interval and the interval within +-kAgreementMargin of it (narrow enough to have seen a difference that
-/// matters, the steady case's rule: bench/seed000_trends.py); DISAGREES: outside it (resolved); UNRESOLVED: no
-/// standard error, or an interval too wide to tell; REPORTED: no experiment to compare.
+///  matters, the steady case's rule: validation/soda_lime_cutting_steady/trends.py); DISAGREES: outside it (resolved);
+/// UNRESOLVED: no standard error, or an interval too wide to tell; REPORTED: no experiment to compare.
 struct TrendCheck {
   Json row;
   std::string line, verdict;

@@ -12,7 +12,7 @@ src="$2"
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 
-dirs=(analytic dem src include tools validation tests bench docs data scripts README.md)
+dirs=(analytic dem src include tools validation tests bench analysis docs data scripts README.md)
 files=()
 if git -C "$src" rev-parse --is-inside-work-tree >/dev/null 2>&1; then
   while IFS= read -r f; do files+=("$f"); done < <(git -C "$src" ls-files -- "${dirs[@]}")

@@ -1,13 +1,12 @@
-"""bench/cut_bursts.py: the concentration of a cut's work, on synthetic force records with a known answer."""
+"""analysis/cut_bursts.py: the concentration of a cut's work, on synthetic force records with a known answer."""
 import json
-import pathlib
-import sys
 
 import numpy as np
 import pytest
 
-sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "bench"))
-import cut_bursts as cb  # noqa: E402
+from repo_scripts import load
+
+cb = load("analysis/cut_bursts.py")
 
 
 def write_cut(folder, force, travel_mm, seed=1, steady_from_mm=0.0):
@@ -49,7 +48,7 @@ def test_the_steady_part_only_and_one_condition_over_packings(tmp_path):
     force[:5000] = 50.0  # the entry, before the steady part begins at 0.5 mm: left out
     for seed in (1, 2):
         write_cut(tmp_path / "study" / "items" / f"c_{seed}", force, travel, seed=seed, steady_from_mm=0.5)
-    cuts = [cb.cut_bursts(f) for f in cb.ce.folders([tmp_path / "study"], needs="forces.csv")]
+    cuts = [cb.cut_bursts(f) for f in cb.folders([tmp_path / "study"], needs="forces.csv")]
     assert len(cuts) == 2
     assert cuts[0][2]["peak_main_force_N"] == pytest.approx(0.2)
     (key, row), = cb.table(cuts).items()

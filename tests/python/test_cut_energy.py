@@ -1,11 +1,10 @@
-"""bench/cut_energy.py: the broken joints' energy against the tool's work, on a synthetic cut with a known answer."""
+"""analysis/cut_energy.py: the broken joints' energy against the tool's work, on a synthetic cut with a known answer."""
 import json
 import math
-import pathlib
-import sys
 
-sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "bench"))
-import cut_energy as ce  # noqa: E402
+from repo_scripts import load
+
+ce = load("analysis/cut_energy.py")
 
 MATERIAL = {"name": "glass", "bond_effective_modulus_GPa": 100.0, "bond_stiffness_ratio": 2.0,
             "tensile_strength_MPa": 100.0, "cohesion_MPa": 200.0}

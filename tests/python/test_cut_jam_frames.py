@@ -1,13 +1,12 @@
-"""bench/cut_jam_frames.py: its ties and its figure, on a small cut's own frames."""
-import pathlib
-import sys
+"""analysis/cut_jam_frames.py: its ties and its figure, on a small cut's own frames."""
 
 import numpy as np
 
 import kerf
 
-sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "bench"))
-import cut_jam_frames as cj  # noqa: E402
+from repo_scripts import load
+
+cj = load("analysis/cut_jam_frames.py")
 
 SMALL_CUT = {"kind": "cut", "material": {"base": "soda_lime_glass_fj"},
              "specimen": {"width_mm": 0.4, "height_mm": 0.25, "radius_min_um": 10, "radius_max_um": 13, "seed": 1,

@@ -1,10 +1,9 @@
-"""bench/paired_glasses.py: cuts of two glasses paired by packing, on synthetic records with known answers."""
+"""analysis/paired_glasses.py: cuts of two glasses paired by packing, on synthetic records with known answers."""
 import math
-import pathlib
-import sys
 
-sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "bench"))
-import paired_glasses as pg  # noqa: E402
+from repo_scripts import load
+
+pg = load("analysis/paired_glasses.py")
 
 
 def record(main, thrust, factor=1.0, groove_factor=1.0):

@@ -1,51 +1,15 @@
-"""bench/seed000_trends.py: the statistics of the seed-000 trends on synthetic records with known answers."""
+"""validation/soda_lime_cutting_steady/trends.py: the seed-000 trends, report and acceptance on synthetic records
+with known answers."""
 import csv
 import math
 import pathlib
 import random
-import sys
 
-sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "bench"))
-import seed000_trends as st  # noqa: E402
+import kerf.records as kr
+import kerf.stats as ks
+from repo_scripts import load
 
-
-def test_fieller_without_denominator_error_is_the_scaled_numerator_interval():
-    a = st.Estimate(6.0, 0.5, 7)
-    b = st.Estimate(2.0, 0.0, 7)
-    r = st.ratio(a, b)
-    half = st.t(7) * 0.5 / 2.0
-    assert math.isclose(r.value, 3.0)
-    assert math.isclose(r.low, 3.0 - half, rel_tol=1e-12)
-    assert math.isclose(r.high, 3.0 + half, rel_tol=1e-12)
-
-
-def test_fieller_is_unbounded_when_the_denominator_is_not_resolved_from_zero():
-    r = st.ratio(st.Estimate(1.0, 0.1, 7), st.Estimate(0.2, 0.5, 7))
-    assert r.low == -math.inf and r.high == math.inf
-    other = st.Estimate(1.0, 0.1, 5)
-    assert st.verdict(st.difference(r, other), other) == "not resolved"
-
-
-def test_fieller_interval_covers_the_true_ratio_95_percent_of_the_time():
-    rng = random.Random(41)
-    true_a, true_b, sd, n = 0.3, 0.45, 0.08, 8
-    trials, covered = 3000, 0
-    for _ in range(trials):
-        a = st.mean_of([rng.gauss(true_a, sd) for _ in range(n)])
-        b = st.mean_of([rng.gauss(true_b, sd) for _ in range(n)])
-        r = st.ratio(a, b)
-        covered += r.low <= true_a / true_b <= r.high
-    # Welch's dof rounded down makes it a little conservative; 3000 trials: binomial sd 0.4 %.
-    assert 0.94 <= covered / trials <= 0.975
-
-
-def test_welch_dof_of_two_equal_samples_is_their_pooled_dof():
-    x = st.mean_of([1.0, 2.0, 3.0, 4.0, 5.0])
-    y = st.mean_of([2.0, 3.0, 4.0, 5.0, 6.0])
-    d = st.difference(x, y)
-    assert math.isclose(d.dof, 8.0)
-    assert math.isclose(d.value, -1.0)
-    assert math.isclose(d.se, math.sqrt(2) * x.se)
+st = load("validation/soda_lime_cutting_steady/trends.py")
 
 
 def write_record(path, means, n=8, spread=0.02, seed=3):
@@ -88,7 +52,7 @@ def run(tmp_path, kerf_grooved, experiment_grooved):
             means[(domain, "rectangular", depth)] = 0.5 * kerf_grooved
     write_record(tmp_path / "record.csv", means)
     write_experiments(tmp_path / "experiments.csv", 0.65, 0.65 * experiment_grooved)
-    src = st.Sources(st.read_record(tmp_path / "record.csv"), st.read_experiments(tmp_path / "experiments.csv"))
+    src = st.Sources(kr.read_record(tmp_path / "record.csv"), kr.read_experiments(tmp_path / "experiments.csv"))
     return st.rows_of(st.trends(src))
 
 
@@ -114,12 +78,12 @@ def test_an_interval_too_wide_to_tell_does_not_agree(tmp_path):
     write_experiments(tmp_path / "experiments.csv", 0.65, 0.65 * 0.15)
     for n, spread, expected in ((2, 0.4, "not resolved"), (8, 0.02, "agrees")):
         write_record(tmp_path / "record.csv", means, n=n, spread=spread, seed=5)
-        src = st.Sources(st.read_record(tmp_path / "record.csv"), st.read_experiments(tmp_path / "experiments.csv"))
+        src = st.Sources(kr.read_record(tmp_path / "record.csv"), kr.read_experiments(tmp_path / "experiments.csv"))
         r = groove_row(st.rows_of(st.trends(src)), "kerf default")
         assert r["minus_experiment_low"] <= 0 <= r["minus_experiment_high"], r
         assert r["against_experiment"] == expected, (n, spread, r)
         if expected == "not resolved":
-            assert max(-r["minus_experiment_low"], r["minus_experiment_high"]) > st.AGREEMENT_MARGIN * 0.15
+            assert max(-r["minus_experiment_low"], r["minus_experiment_high"]) > ks.AGREEMENT_MARGIN * 0.15
 
 
 def test_domain_robustness_detects_a_domain_that_moves_a_trend(tmp_path):
@@ -131,8 +95,8 @@ def test_domain_robustness_detects_a_domain_that_moves_a_trend(tmp_path):
         means[("large", "rectangular", depth)] = 0.06
     write_record(tmp_path / "record.csv", means)
     write_experiments(tmp_path / "experiments.csv", 0.65, 0.1)
-    rows = st.rows_of(st.trends(st.Sources(st.read_record(tmp_path / "record.csv"),
-                                           st.read_experiments(tmp_path / "experiments.csv"))))
+    rows = st.rows_of(st.trends(st.Sources(kr.read_record(tmp_path / "record.csv"),
+                                           kr.read_experiments(tmp_path / "experiments.csv"))))
     assert groove_row(rows, "kerf default")["domain_robust"] == "differs"
     level = next(r for r in rows if r["trend"] == "main force per mm, regular 0.1 mm (N/mm)"
                  and r["source"] == "experiment")
@@ -198,22 +162,6 @@ def test_acceptance_asks_a_domain_only_for_the_trends_the_study_runs_there(tmp_p
     assert "trapezoidal / regular at 0.1 mm (kerf large): no cuts" in (tmp_path / "out" / "report.md").read_text()
 
 
-def test_t_quantile_at_fractional_dof_lies_between_its_integers():
-    # Welch's dof are fractional: t falls from t(1) = 12.706 to t(2) = 4.303 without a jump, and at an integer it
-    # is the table's. At 1.97 dof the exact quantile is about 4.37; interpolating in 1 / dof gives a little more.
-    assert math.isclose(st.t(1.0), 12.706, abs_tol=1e-3) and math.isclose(st.t(2.0), 4.303, abs_tol=1e-3)
-    assert st.t(1.0) > st.t(1.5) > st.t(1.97) > st.t(2.0)
-    assert 4.37 <= st.t(1.97) < 4.5
-    assert st.t(0.5) == st.t(1.0) and math.isclose(st.t(math.inf), 1.96, abs_tol=1e-3)
-
-
-def test_t_quantile_beyond_the_table_falls_towards_the_normal():
-    # Tabulated 2.042 at 30 degrees of freedom; 2.0211 at 40, 2.0003 at 60, 1.9799 at 120 (standard tables).
-    assert st.t(30) > st.t(31) > st.t(40) > 1.96
-    for dof, want in ((40, 2.0211), (60, 2.0003), (120, 1.9799)):
-        assert math.isclose(st.t(dof), want, abs_tol=2e-4)
-
-
 def test_damage_floors_are_the_nearer_of_the_window_floor_and_the_workpiece_bottom():
     # The study's scene is 1 mm high; the default window sees 4 depths of cut below the cut line, the large one
     # 10 (0.1 mm) or 5 (0.2 mm) depths, which reach below the workpiece: its bottom is 1 mm - depth below.
@@ -261,7 +209,7 @@ def test_the_decomposition_recovers_a_known_edge_force_and_chip_slope(tmp_path):
              for domain in st.DOMAINS for surface, (f0, k) in law.items() for depth in (0.1, 0.2)}
     write_record(tmp_path / "record.csv", means, n=8, spread=0.005)
     write_experiments(tmp_path / "experiments.csv", 0.65, 0.1)
-    src = st.Sources(st.read_record(tmp_path / "record.csv"), st.read_experiments(tmp_path / "experiments.csv"))
+    src = st.Sources(kr.read_record(tmp_path / "record.csv"), kr.read_experiments(tmp_path / "experiments.csv"))
     rows = [r for r in st.rows_of(st.trends(src)) if r["group"] == "decomposition" and r["source"] == "kerf large"]
     by = {r["trend"]: r for r in rows}
     for surface, (f0, k) in law.items():
@@ -275,14 +223,6 @@ def test_the_decomposition_recovers_a_known_edge_force_and_chip_slope(tmp_path):
     exp = next(r for r in st.rows_of(st.trends(src)) if r["source"] == "experiment"
                and r["trend"] == "main force per mm of depth, regular (N/mm per mm)")
     assert abs(exp["value"]) < 1e-9 and exp["ci95_low"] < 0 < exp["ci95_high"]
-
-
-def test_a_combination_of_estimates_adds_their_variances():
-    a, b = st.Estimate(1.0, 0.1, 4), st.Estimate(2.0, 0.2, 9)
-    c = st.combination([(2.0, a), (-1.0, b)])
-    assert math.isclose(c.value, 0.0, abs_tol=1e-12) and math.isclose(c.se, math.sqrt(0.04 + 0.04))
-    assert 4 <= c.dof <= 13
-    assert not st.combination([(1.0, st.Estimate(1.0, math.nan, 0)), (1.0, a)]).resolved()
 
 
 def test_the_papers_dem_verdicts_shown_but_not_asked_of_the_acceptance(tmp_path):
@@ -301,48 +241,6 @@ def test_the_papers_dem_verdicts_shown_but_not_asked_of_the_acceptance(tmp_path)
     papers = [r for r in rows if r["source"] == "paper DEM" and r["group"] == "ratio" and r["against_experiment"]]
     assert papers and any(r["against_experiment"] == "not resolved" for r in papers)
     assert rc == 0
-
-
-def test_two_cuts_of_one_condition_on_one_packing_are_an_error_not_a_silent_choice(tmp_path):
-    # A record of two disk sizes, both regular 0.1 mm in the default window on packing 1: read as one condition,
-    # one cut would replace the other.
-    with open(tmp_path / "record.csv", "w", newline="") as f:
-        w = csv.writer(f)
-        w.writerow(["domain", "surface", "depth_of_cut_mm", "seed", "radius_min_um", "main_force_N"])
-        w.writerow(["default", "regular", 0.1, 1, 10, 0.27])
-        w.writerow(["default", "regular", 0.1, 1, 5, 0.37])
-    try:
-        st.read_record(tmp_path / "record.csv")
-    except ValueError as e:
-        assert "default/regular/0.1 mm on packing 1" in str(e)
-    else:
-        raise AssertionError("two cuts of one condition and packing were read silently")
-
-
-def test_packings_factor_is_where_the_projected_interval_first_resolves():
-    # kerf 0.30 +- 0.07 (7 dof) against the experiments' 0.15 +- 0.01: at 8 packings the difference's interval holds 0
-    # and is wider than +-50 %; with more packings it narrows about 0.15 and comes to exclude 0.
-    kerf, exp = st.Estimate(0.30, 0.07, 7), st.Estimate(0.15, 0.01, 2)
-    terms = [(1.0, kerf, True), (-1.0, exp, False)]
-    assert st.verdict(st.difference(kerf, exp), exp) == "not resolved"
-    k, why = st.packings_factor(terms, exp)
-    assert why == "spread" and 1 < k < 100
-    at = lambda f: st.verdict(st.difference(st.scaled(kerf, f), exp), exp)
-    assert at(k) == "differs" and at(k / 1.01) == "not resolved"
-    # Already resolved: no more packings.
-    assert st.packings_factor([(1.0, st.Estimate(0.9, 0.01, 7), True), (-1.0, exp, False)], exp) == (1.0, "spread")
-
-
-def test_a_verdict_the_experiments_own_interval_leaves_open_is_never_resolved_by_packings():
-    # The experiments' ratio 1.7 +- 0.25 (2 dof: half-width about 1.1): kerf's 1.2 lies within it however narrow
-    # kerf's own interval becomes, and the interval is far wider than +-50 % of 1.7.
-    kerf, exp = st.Estimate(1.2, 0.08, 11), st.Estimate(1.7, 0.25, 2)
-    assert st.packings_factor([(1.0, kerf, True), (-1.0, exp, False)], exp) == (math.inf, "experiments")
-    # Two of kerf's estimates (one domain against the other) have no fixed part: packings always resolve them,
-    # unless the two values are equal and the margin is zero.
-    a, b = st.Estimate(1.2, 0.3, 7), st.Estimate(1.0, 0.3, 7)
-    k, why = st.packings_factor([(1.0, a, True), (-1.0, b, True)], b)
-    assert why == "spread" and math.isfinite(k) and k > 1
 
 
 def test_acceptance_asks_the_main_force_not_the_thrust_nor_what_the_experiments_cannot_tell():
@@ -372,11 +270,11 @@ def test_to_resolve_prices_each_open_verdict_at_its_conditions_cut_time(tmp_path
              for d in st.DOMAINS for s in ("regular", "rectangular") for h in (0.1, 0.2)}
     write_record(tmp_path / "record.csv", means, n=3, spread=0.15, seed=11)
     write_experiments(tmp_path / "experiments.csv", 0.65, 0.65 * 0.15)
-    cuts = st.read_record(tmp_path / "record.csv")
+    cuts = kr.read_record(tmp_path / "record.csv")
     for by_seed in cuts.values():
         for r in by_seed.values():
             r["cpu_time_s"] = 3600.0 if r["depth_of_cut_mm"] == 0.2 else 1800.0
-    src = st.Sources(cuts, st.read_experiments(tmp_path / "experiments.csv"))
+    src = st.Sources(cuts, kr.read_experiments(tmp_path / "experiments.csv"))
     all_trends = st.trends(src)
     rows = st.rows_of(all_trends)
     pending = st.to_resolve(rows, all_trends, src, st.costs(cuts))

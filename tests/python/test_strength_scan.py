@@ -1,14 +1,13 @@
-"""bench/strength_scan.py: a scan of one strength over steady-cut records, on synthetic records with known answers."""
+"""analysis/strength_scan.py: a scan of one strength over steady-cut records, on synthetic ones with known answers."""
 import argparse
 import csv
 import math
-import pathlib
-import sys
 
 import pytest
 
-sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "bench"))
-import strength_scan as ss  # noqa: E402
+from repo_scripts import load
+
+ss = load("analysis/strength_scan.py")
 
 COLUMNS = ["domain", "surface", "depth_of_cut_mm", "seed", "main_force_N", "thrust_force_N", "width_mm",
            "cracks_subsurface_steady", "subsurface_damage_depth_steady_um"]
@@ -33,8 +32,8 @@ def rows_by(rows, quantity, surface):
 def test_the_groove_effect_and_the_level_of_each_point_are_the_records(tmp_path):
     a = write_record(tmp_path / "a.csv", [0.10, 0.12, 0.11], 0.4, width_mm=2.0)
     off = write_record(tmp_path / "off.csv", [0.30, 0.36, 0.33], 0.9)
-    rows = ss.point_rows(85.0, ss.st.read_record(a), "default", 0.1)
-    rows += ss.point_rows(None, ss.st.read_record(off), "default", 0.1)
+    rows = ss.point_rows(85.0, ss.read_record(a), "default", 0.1)
+    rows += ss.point_rows(None, ss.read_record(off), "default", 0.1)
     level = rows_by(rows, "main_force_N_per_mm", "regular")
     assert math.isclose(level[85.0][1], 0.11) and math.isclose(level[None][1], 0.33)  # per mm of width
     assert level[85.0][2] < 0.11 < level[85.0][3]

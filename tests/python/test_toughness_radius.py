@@ -1,10 +1,9 @@
-"""bench/toughness_radius.py: the sqrt(R) check on synthetic lattices with known answers."""
+"""analysis/toughness_radius.py: the sqrt(R) check on synthetic lattices with known answers."""
 import math
-import pathlib
-import sys
 
-sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "bench"))
-import toughness_radius as tr  # noqa: E402
+from repo_scripts import load
+
+tr = load("analysis/toughness_radius.py")
 
 
 def lattice(k_large, exponent, noise):

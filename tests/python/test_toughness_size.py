@@ -1,14 +1,13 @@
-"""bench/toughness_size.py: Bazant's size-effect fit on synthetic records with known answers."""
+"""analysis/toughness_size.py: Bazant's size-effect fit on synthetic records with known answers."""
 import csv
 import math
-import pathlib
 import random
-import sys
 
 import pytest
 
-sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "bench"))
-import toughness_size as ts  # noqa: E402
+from repo_scripts import load
+
+ts = load("analysis/toughness_size.py")
 
 
 def beams(k_inf, w0, sizes=(0.5, 1.0, 2.0), ratios=(0.3, 0.5), seeds=(1, 2, 3), noise=0.0, rng=None):

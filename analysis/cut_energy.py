@@ -2,7 +2,7 @@
 """Where a steady cut's work goes, from its own outputs (issue 41 item 4): the energy its broken joints took, and,
 from the cut's energy books where it kept them, friction and what the disks leaving the window carried off.
 
-    python3 bench/cut_energy.py DIR [DIR ...] [--csv OUT.csv]
+    python3 analysis/cut_energy.py DIR [DIR ...] [--csv OUT.csv]
 
 Each DIR is a cut's output folder (summary.json, cracks.csv) or a study's (DIR/items/*/). Per cut, over the steady
 part only (the travel the summary's means cover, and the cracks of the stretch it machined, steady_machined_from_x_mm
@@ -27,12 +27,10 @@ packings (Student t on n - 1).
 import argparse
 import csv
 import json
-import math
-import pathlib
 import sys
 
-sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-import seed000_trends as st  # noqa: E402
+from kerf.records import condition_of, folders
+from kerf.stats import mean_of
 
 def element_energy_j(material, mode, length_m, joint_length_m, thickness_m):
     """The estimate above for one broken element [J]."""
@@ -72,53 +70,11 @@ def cut_energy(folder):
     return key, scene.get("specimen", {}).get("seed", spec["seed"]), work_j, energy
 
 
-def condition_of(summary):
-    """A cut's condition from its summary: (glass, window, surface, depth of cut in mm)."""
-    material, cut = summary["material"], summary["cut"]
-    depth_mm = cut["cut"]["depth_of_cut_mm"]
-    window = cut.get("active_window", {})
-    # The domain by its size in mm (ahead, behind, below; the seed-000 study's large window is 1.4/0.7/1.0 mm at both
-    # depths), or "whole" when every disk is active.
-    domain = "/".join(f"{window[k] * depth_mm:.2g}" for k in ("ahead_depths", "behind_depths", "below_depths")) + \
-        " mm" if window.get("enabled") else "whole"
-    # The tool's friction when it has its own (tool.friction_coefficient), else the glass's; its edge radius;
-    # crushing grains, loose and tied; the window's options.
-    tool = cut.get("tool", {}).get("friction_coefficient", -1)
-    edge = cut.get("tool", {}).get("edge_radius_um", 0)
-    grains, tied = window.get("grain_strength_MPa", 0), window.get("tied_grain_strength_MPa", 0)
-    # The workpiece's disk radii when the summary gives them (a finer workpiece is another condition).
-    specimen = summary.get("specimen", {})
-    radii = f", radii {specimen['radius_min_um']:g}-{specimen['radius_max_um']:g} um" \
-        if "radius_min_um" in specimen else ""
-    glass = material.get("name", "custom") + radii + (f", tool mu {tool:g}" if tool >= 0 else "") + \
-        (f", edge radius {edge:g} um" if edge > 0 else "") + \
-        (f", grains crush at {grains:g} MPa" if grains > 0 else "") + \
-        (f", tied disks crush at {tied:g} MPa" if tied > 0 else "") + \
-        (", loose fragments removed" if window.get("remove_loose_fragments") else "") + \
-        (f", absorbing layer {window['absorbing_depths']:g} depths" if window.get("absorbing_depths", 0) > 0 else "")
-    # The surface, with its laser-affected layer if it has one (grooves.damage_depth_um, damage_broken_fraction).
-    grooves = cut["grooves"]
-    surface = {"none": "regular"}.get(grooves["shape"], grooves["shape"])
-    if grooves.get("damage_depth_um", 0) > 0:
-        surface += f" ({grooves['damage_depth_um']:g} um layer, {grooves.get('damage_broken_fraction', 1):g} broken)"
-    return glass, domain, surface, depth_mm
-
-
-def folders(paths, needs="cracks.csv"):
-    """The cut output folders among `paths` (a cut's own, or a study's items/*/) that have summary.json and `needs`."""
-    for p in map(pathlib.Path, paths):
-        if (p / "summary.json").is_file() and (p / needs).is_file():
-            yield p
-        for item in sorted((p / "items").glob("*")):
-            if (item / "summary.json").is_file() and (item / needs).is_file():
-                yield item
-
-
 SHARES = ("joints", "chip", "subsurface", "friction", "carried_kinetic", "carried_strain")
 
 
 def table(cuts):
-    """Per condition: {share: st.Estimate} of the work, over the packings that have it (the books' shares only
+    """Per condition: {share: Estimate} of the work, over the packings that have it (the books' shares only
     from cuts that kept books)."""
     by = {}
     for key, _, work, energy in cuts:
@@ -127,7 +83,7 @@ def table(cuts):
         row = {"joints": (energy["chip"] + energy["subsurface"]) / work}
         row.update({k: v / work for k, v in energy.items()})
         by.setdefault(key, []).append(row)
-    return {k: {name: st.mean_of([r[name] for r in rows if name in r]) for name in SHARES if any(name in r for r in rows)}
+    return {k: {name: mean_of([r[name] for r in rows if name in r]) for name in SHARES if any(name in r for r in rows)}
             for k, rows in sorted(by.items())}
 
 

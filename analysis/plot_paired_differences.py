@@ -3,16 +3,15 @@
 force difference of every packing both sets have (small points) and their mean with its Student-t 95 % interval
 from the paired spread (bar), in N and as a share of the base's mean. Prints the table and draws the figure.
 
-    python3 bench/plot_paired_differences.py OUT.png "LABEL=BASE_SET,OTHER_SET" [...]
+    python3 analysis/plot_paired_differences.py OUT.png "LABEL=BASE_SET,OTHER_SET" [...]
 
-A SET is a study directory or a record file (bench/compare_steady_cuts.py), with :C and @A-B as there. A comparison
+A SET is a study directory or a record file (analysis/compare_steady_cuts.py), with :C and @A-B as there. A comparison
 with a force recorded for two packings shows their differences and mean without an interval (with one degree of
 freedom it is twelve standard errors wide); for fewer it is left out of that force's panel, and a force no
 comparison has for two packings gets no panel.
 Needs matplotlib (/usr/bin/python3 on Debian).
 """
 import math
-import pathlib
 import statistics
 import sys
 
@@ -21,8 +20,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from compare_steady_cuts import records, t975  # noqa: E402
+from kerf.records import read_set  # noqa: E402
+from kerf.stats import t95  # noqa: E402
 
 
 def paired(base, other, force):
@@ -39,7 +38,7 @@ def main():
     for arg in sys.argv[2:]:
         label, sets = arg.split("=", 1)
         base_spec, other_spec = sets.split(",", 1)
-        comparisons.append((label, records(base_spec), records(other_spec)))
+        comparisons.append((label, read_set(base_spec), read_set(other_spec)))
     forces = [f for f in ("main", "thrust") if any(len(paired(b, o, f)[0]) >= 2 for _, b, o in comparisons)]
     if not forces:
         sys.exit("no comparison has a force recorded for two packings")
@@ -53,7 +52,7 @@ def main():
                 print(f"{force}, {label}: {len(diffs)} packing(s) recorded, left out")
                 continue
             n, mean, base_mean = len(diffs), statistics.mean(diffs), statistics.mean(bases)
-            half = t975(n - 1) * statistics.stdev(diffs) / math.sqrt(n) if n >= 3 else math.nan
+            half = t95(n - 1) * statistics.stdev(diffs) / math.sqrt(n) if n >= 3 else math.nan
             interval = (f" [{mean - half:+.3f}, {mean + half:+.3f}]", f" [{100 * (mean - half) / base_mean:+.0f} %, "
                         f"{100 * (mean + half) / base_mean:+.0f} %]") if n >= 3 else ("", "")
             print(f"{force}, {label}: seeds {seeds}, differences {', '.join(f'{d:+.3f}' for d in diffs)} N; mean "

@@ -1,24 +1,25 @@
 #!/usr/bin/env python3
 """A scan of one model strength over steady-cut records (issue 41 item 4): force levels and groove effect against it.
 
-    python3 bench/strength_scan.py --off OFF.csv --point 85=A.csv --point 330=B.csv ... [--label KEY]
+    python3 analysis/strength_scan.py --off OFF.csv --point 85=A.csv --point 330=B.csv ... [--label KEY]
                                    [--domain default] [--depth 0.1] [--csv OUT.csv] [--figure OUT.png]
 
 Each --point is a value of the scanned key (in MPa) and the `kerf-dem study` record of the cuts made at it; --off is
 the record of the same cuts without the law (the key at 0), drawn right of the largest value. Per point and surface
 (regular, rectangular): the main and thrust force per mm of width over the packings with their 95 % intervals (Student
-t), the groove effect (rectangular / regular main and thrust, Fieller's interval as in bench/seed000_trends.py), the
-subsurface cracks and the deepest one; the experiments' levels and groove effect (seed 000 Table 6, per mm of width)
-beside them.
+t), the groove effect (rectangular / regular main and thrust, Fieller's interval as in
+validation/soda_lime_cutting_steady/trends.py), the subsurface cracks and the deepest one; the experiments' levels and
+groove effect (seed 000 Table 6, per mm of width) beside them.
 """
 import argparse
 import csv
 import math
 import pathlib
-import sys
 
-sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-import seed000_trends as st  # noqa: E402
+from kerf.records import per_width, read_experiments, read_record, reference
+from kerf.stats import mean_of, ratio
+
+EXPERIMENTS = pathlib.Path(__file__).resolve().parents[1] / "data/experiments/soda_lime_orthogonal_cutting.csv"
 
 SURFACES = ("regular", "rectangular")
 FIELDS = ["strength_MPa", "quantity", "surface", "n", "value", "ci95_low", "ci95_high"]
@@ -30,16 +31,16 @@ def point_rows(strength, cuts, domain, depth):
     means = {}
     for surface in SURFACES:
         runs = list(cuts.get((domain, surface, round(depth, 6)), {}).values())
-        for quantity, values in (("main_force_N_per_mm", [st.per_width(r, "main") for r in runs]),
-                                 ("thrust_force_N_per_mm", [st.per_width(r, "thrust") for r in runs]),
+        for quantity, values in (("main_force_N_per_mm", [per_width(r, "main") for r in runs]),
+                                 ("thrust_force_N_per_mm", [per_width(r, "thrust") for r in runs]),
                                  ("cracks_subsurface", [r.get("cracks_subsurface_steady", math.nan) for r in runs]),
                                  ("deepest_subsurface_crack_um",
                                   [r.get("subsurface_damage_depth_steady_um", math.nan) for r in runs])):
-            e = st.mean_of(values)
+            e = mean_of(values)
             means[(quantity, surface)] = e
             rows.append([strength, quantity, surface, e.n, e.value, e.low, e.high])
     for force in ("main", "thrust"):
-        e = st.ratio(means[(f"{force}_force_N_per_mm", "rectangular")], means[(f"{force}_force_N_per_mm", "regular")])
+        e = ratio(means[(f"{force}_force_N_per_mm", "rectangular")], means[(f"{force}_force_N_per_mm", "regular")])
         rows.append([strength, f"groove_effect_{force}", "rectangular/regular",
                      min(means[(f"{force}_force_N_per_mm", s)].n for s in SURFACES), e.value, e.low, e.high])
     return rows
@@ -48,11 +49,11 @@ def point_rows(strength, cuts, domain, depth):
 def experiments(depth):
     """The experiments' per-width means {(quantity, surface): value} at this depth (the rectangular surface is their
     grooved one) and their groove effect."""
-    ref = st.Sources({}, st.read_experiments(st.EXPERIMENTS))
+    table = read_experiments(EXPERIMENTS)
     out = {}
     for force in ("main", "thrust"):
         for surface in SURFACES:
-            e = ref.reference("experiment", surface, round(depth, 6), force)
+            e = reference(table, "experiment", surface, round(depth, 6), force)
             out[(f"{force}_force_N_per_mm", surface)] = e.value if e else math.nan
         out[(f"groove_effect_{force}", "rectangular/regular")] = (
             out[(f"{force}_force_N_per_mm", "rectangular")] / out[(f"{force}_force_N_per_mm", "regular")])
@@ -168,8 +169,8 @@ def main(argv=None):
     rows = []
     try:
         for strength, record in sorted(args.point):
-            rows += point_rows(strength, st.read_record(record), args.domain, args.depth)
-        rows += point_rows(None, st.read_record(args.off), args.domain, args.depth)
+            rows += point_rows(strength, read_record(record), args.domain, args.depth)
+        rows += point_rows(None, read_record(args.off), args.domain, args.depth)
     except ValueError as e:
         ap.error(str(e))
     exp = experiments(args.depth)

@@ -8,7 +8,7 @@ F = F0 + k v with the slope's significance; whether the cuts' own errors agree w
 (a chi-square test); how regular the impacts are; and the main force per mm of travel, averaged over all cuts, to
 show where the entry transient ends.
 
-    python3 bench/plot_steady_speed.py OUT.png STUDY_DIR [STUDY_DIR...]
+    python3 analysis/plot_steady_speed.py OUT.png STUDY_DIR [STUDY_DIR...]
 
 Each STUDY_DIR is a study's output (its items/ directory), e.g. the study above and a `kerf-dem run ... --replicates N`
 of the bundled scene on other seeds (its DIR/replicates): the items are pooled by speed.
@@ -25,8 +25,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from plot_steady_damping import intermittency  # noqa: E402
+from kerf.records import intermittency  # noqa: E402
 
 
 def items(study_dir):

@@ -4,14 +4,13 @@ main and thrust forces over the packings every set of the series has, with the c
 (sqrt(sum sem^2) / n), against the mean number of disks integrated (log scale); a cut without a window (every
 disk active) is drawn as a horizontal line with its error band. Prints the table and draws the figure.
 
-    python3 bench/plot_window_convergence.py OUT.png "LABEL=SET;SET;..." [...]
+    python3 analysis/plot_window_convergence.py OUT.png "LABEL=SET;SET;..." [...]
 
-A SET is a study directory or a record file (bench/compare_steady_cuts.py), with :C and @A-B as there.
+A SET is a study directory or a record file (analysis/compare_steady_cuts.py), with :C and @A-B as there.
 
 Needs numpy and matplotlib (/usr/bin/python3 on Debian).
 """
 import math
-import pathlib
 import sys
 
 import matplotlib
@@ -20,12 +19,12 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.ticker import ScalarFormatter  # noqa: E402
 
-sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from compare_steady_cuts import known_mean, own_error, records  # noqa: E402
+from kerf.records import read_set  # noqa: E402
+from kerf.stats import known_mean, own_error  # noqa: E402
 
 
 def series_points(specs):
-    sets = [records(spec) for spec in specs]
+    sets = [read_set(spec) for spec in specs]
     common = sorted(set.intersection(*(set(s) for s in sets)))
     if not common:
         sys.exit(f"no packing in every set of {specs}")

@@ -13,7 +13,7 @@ Only the steady part is counted (summary.json's steady_machined_from_x_mm .. ste
 centres lie at the workpiece's right end - pitch/2 - k pitch (dem/procedures/cutting.cpp, groove_centres); the right end is
 taken as specimen.width_mm.
 
-    python3 bench/seed000_crack_maps.py --study /work/runs/seed000 --damage /work/runs/groove_damage --out DIR
+    python3 analysis/seed000_crack_maps.py --study /work/runs/seed000 --damage /work/runs/groove_damage --out DIR
 """
 import argparse
 import csv

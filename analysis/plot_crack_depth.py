@@ -4,13 +4,12 @@ within the steadily machined stretch (summary.json's steady_machined_from_x_mm .
 depth and divided by the stretch's length (cracks per mm of cut per 25 um of depth), averaged over the packings of
 each set; the window's floor (active_window.damage_depth_limit_um) marked. Prints the table and draws the figure.
 
-    python3 bench/plot_crack_depth.py OUT.png LABEL=STUDY_DIR[:C] [LABEL=STUDY_DIR[:C] ...]
+    python3 analysis/plot_crack_depth.py OUT.png LABEL=STUDY_DIR[:C] [LABEL=STUDY_DIR[:C] ...]
 
 STUDY_DIR:C takes only condition C's items. Needs numpy and matplotlib (/usr/bin/python3 on Debian).
 """
 import csv
 import json
-import pathlib
 import sys
 
 import matplotlib
@@ -19,8 +18,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from compare_steady_cuts import item_dirs  # noqa: E402
+from kerf.records import item_dirs  # noqa: E402
 
 BIN_UM = 25.0
 

@@ -2,7 +2,7 @@
 """How intermittent a steady cut's force is, from its own forces.csv (issue 41 item 4): how much of the tool's work a
 few jams do.
 
-    python3 bench/cut_bursts.py DIR [DIR ...] [--csv OUT.csv] [--to-travel-mm X] [--figure OUT.png]
+    python3 analysis/cut_bursts.py DIR [DIR ...] [--csv OUT.csv] [--to-travel-mm X] [--figure OUT.png]
 
 Each DIR is a cut's output folder (summary.json, forces.csv) or a study's (DIR/items/*/). Per cut, over the steady
 part (the travel the summary's means cover), the travel is cut into bins of a tenth of the depth of cut and the tool's
@@ -13,19 +13,17 @@ work in each (main force x travel, summed over the bin's samples) is found. Repo
 * travel_share_half_work: the smallest share of the travel (in bins) that holds half the work (0.5 if steady);
 * peak_main_force_N: the largest sample of the main force (per the cut's width, as the forces).
 
-Per condition (bench/cut_energy.py's: glass, window, surface, depth) each with its 95 % interval over packings.
+Per condition (analysis/cut_energy.py's: glass, window, surface, depth) each with its 95 % interval over packings.
 """
 import argparse
 import csv
 import json
-import pathlib
 import sys
 
 import numpy as np
 
-sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-import cut_energy as ce  # noqa: E402
-import seed000_trends as st  # noqa: E402
+from kerf.records import condition_of, folders
+from kerf.stats import mean_of
 
 MEASURES = ("work_share_top_1pc", "travel_share_half_work", "peak_main_force_N", "main_force_N")
 
@@ -73,7 +71,7 @@ def cut_bursts(folder, to_travel_mm=None):
     mean = summary["results"]["main_force_N"] if to_travel_mm is None else float(main.mean())
     measures = {"work_share_top_1pc": top, "travel_share_half_work": half,
                 "peak_main_force_N": float(main.max()), "main_force_N": mean}
-    return ce.condition_of(summary), seed, measures
+    return condition_of(summary), seed, measures
 
 
 def cumulative_work(folder, to_travel_mm=None):
@@ -114,11 +112,11 @@ def figure(folders_and_cuts, path, to_travel_mm=None):
 
 
 def table(cuts):
-    """Per condition: {measure: st.Estimate over packings}."""
+    """Per condition: {measure: Estimate over packings}."""
     by = {}
     for key, _, m in cuts:
         by.setdefault(key, []).append(m)
-    return {k: {name: st.mean_of([m[name] for m in rows]) for name in MEASURES} for k, rows in sorted(by.items())}
+    return {k: {name: mean_of([m[name] for m in rows]) for name in MEASURES} for k, rows in sorted(by.items())}
 
 
 def main(argv=None):
@@ -128,7 +126,7 @@ def main(argv=None):
     ap.add_argument("--figure", help="a PNG of each cut's cumulative work against its travel")
     ap.add_argument("--to-travel-mm", type=float, help="only the steady part up to this travel (cuts of other lengths)")
     a = ap.parse_args(argv)
-    found = list(ce.folders(a.dirs, needs="forces.csv"))
+    found = list(folders(a.dirs, needs="forces.csv"))
     cuts = [cut_bursts(f, a.to_travel_mm) for f in found]
     if a.figure:
         figure(list(zip(found, cuts)), a.figure, a.to_travel_mm)

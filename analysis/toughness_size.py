@@ -2,7 +2,7 @@
 """The fracture toughness's size effect (issue 37 item 1): is K_IC of a DEM glass independent of the specimen, and
 if not, what is its large-specimen (LEFM) limit?
 
-    python3 bench/toughness_size.py [RECORD.csv] [--out DIR]
+    python3 analysis/toughness_size.py [RECORD.csv] [--out DIR]
 
 RECORD (default data/studies/results/toughness_size.csv) is what `kerf-dem study data/studies/toughness_size.json`
 writes: one row per beam, beam_depth_W_mm, notch_ratio_a_over_W, seed, fracture_toughness_MPa_sqrt_m,
@@ -31,13 +31,10 @@ import csv
 import math
 import pathlib
 import statistics
-import sys
 
 import numpy as np
 
-sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-import seed000_trends as st  # noqa: E402  (Student t, means over packings)
-from seed000_trends import t as student_t  # noqa: E402  (two-sided 95 % Student t)
+from kerf.stats import mean_of, t95 as student_t
 
 WITHIN = 0.9  # K(W) / K_inf from which the toughness counts as size-independent
 
@@ -60,7 +57,7 @@ def by_size(rows):
         groups[(r["aW"], r["W"])].append(r)
     out = {}
     for key, g in sorted(groups.items()):
-        k = st.mean_of([r["K"] for r in g])
+        k = mean_of([r["K"] for r in g])
         out[key] = (k.n, k.value, k.se, statistics.fmean(r["G"] for r in g))
     return out
 

@@ -5,12 +5,10 @@ cuts' own standard errors (batch means): where the lines flatten and meet is the
 and forces.csv, and prints a Markdown table with how intermittent each cut is: the share of the steady samples
 in which the tool touches (main force above 0.1 N) and the share of the mean carried by the largest 5 % of them.
 
-    python3 bench/plot_steady_damping.py STUDY_DIR OUT.png
+    python3 analysis/plot_steady_damping.py STUDY_DIR OUT.png
 """
 import csv
 import json
-
-import numpy as np
 import pathlib
 import sys
 
@@ -18,6 +16,8 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+
+from kerf.records import intermittency  # noqa: E402
 
 
 def items(study_dir):
@@ -38,13 +38,6 @@ def items(study_dir):
             })
             rows[-1].update(intermittency(study_dir / "items" / name, float(row["steady_from_travel_mm"])))
     return rows
-
-
-def intermittency(item_dir, steady_from_mm):
-    forces = np.genfromtxt(item_dir / "forces.csv", delimiter=",", names=True)
-    main_force = forces["main_force_N"][forces["tool_travel_mm"] >= steady_from_mm]
-    largest = np.sort(main_force)[::-1][: len(main_force) // 20]
-    return {"contact": float(np.mean(np.abs(main_force) > 0.1)), "top5": float(largest.sum() / main_force.sum())}
 
 
 def damping_label(r):

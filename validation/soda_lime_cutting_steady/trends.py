@@ -2,7 +2,10 @@
 """The seed-000 trends from a record of steady cuts (issue 41): does the DEM reproduce what the experiments show,
 and is each trend the same in the two domains?
 
-    python3 bench/seed000_trends.py [RECORD.csv ...] [--out DIR] [--experiments CSV]
+    PYTHONPATH=build/python python3 validation/soda_lime_cutting_steady/trends.py [RECORD.csv ...] [--out DIR]
+        [--experiments CSV] [--report]
+
+(the module kerf from the build: its kerf.stats and kerf.records; scripts/validate.sh sets the path.)
 
 RECORD (default data/studies/results/seed000_steady.csv) is the record that `kerf-dem study
 data/studies/seed000_steady.json` writes, one row per cut: domain, surface (regular, rectangular, trapezoidal),
@@ -10,13 +13,13 @@ depth_of_cut_mm, seed, main_force_N, thrust_force_N, width_mm, ... Everything he
 experiments' table alone, so the numbers outlive the machine that ran the cuts. Several records merge (one model
 choice's cuts spread over two studies); a cut in two of them is an error.
 
-Statistics. A condition's mean is over its packings (the independent samples); its standard error is the
+Statistics (kerf.stats, python/kerf/stats.py; the record readers kerf.records). A condition's mean is over its packings (the independent samples); its standard error is the
 sample standard deviation / sqrt(n), with n - 1 degrees of freedom. A ratio of two conditions' means (depth
 effect, groove effect, trapezoid against rectangle) is treated as a ratio of independent means (the cuts of two
 conditions share a packing seed, but an intermittent cut decorrelates them; the paired spread is printed beside
 it): its 95 % interval is Fieller's (Fieller 1954; exact for normal means, unbounded when the denominator is
 not resolved from zero), with Student's t at the Welch-Satterthwaite degrees of freedom of the delta-method
-variance (interpolated in 1 / dof). A difference of two estimates (kerf against the experiments, one domain against the
+variance. A difference of two estimates (kerf against the experiments, one domain against the
 other) uses the delta-method standard errors, sqrt(se1^2 + se2^2), with Welch-Satterthwaite degrees of freedom.
 Verdicts come from those intervals only: 'differs' when the 95 % interval of the difference excludes 0; 'agrees'
 when it contains 0 and is narrow enough to have seen a difference that matters, every point of it within
@@ -41,192 +44,14 @@ import pathlib
 import statistics
 import sys
 
-sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from compare_steady_cuts import t975  # noqa: E402  (Student's t table, shared)
+from kerf.records import GROOVED, per_width, read_experiments, read_records, reference
+from kerf.stats import combination, difference, mean_of, packings_factor, ratio, verdict
 
-ROOT = pathlib.Path(__file__).resolve().parent.parent
+ROOT = pathlib.Path(__file__).resolve().parents[2]
 RECORD = ROOT / "data/studies/results/seed000_steady.csv"
 STUDY = ROOT / "data/studies/seed000_steady.json"
 EXPERIMENTS = ROOT / "data/experiments/soda_lime_orthogonal_cutting.csv"
 DOMAINS = ("default", "large")
-GROOVED = ("rectangular", "trapezoidal")
-
-
-class Estimate:
-    """A value with its standard error, degrees of freedom and 95 % interval (low, high)."""
-
-    def __init__(self, value, se, dof, low=None, high=None, n=0):
-        self.value, self.se, self.dof, self.n = value, se, dof, n
-        usable = math.isfinite(se) and dof >= 1
-        half = t(dof) * se if usable else math.nan
-        self.low = low if low is not None else (value - half if usable else math.nan)
-        self.high = high if high is not None else (value + half if usable else math.nan)
-
-    def resolved(self):
-        return all(math.isfinite(x) for x in (self.value, self.low, self.high))
-
-
-def t(dof):
-    """Student's t, two-sided 95 %, at Welch's fractional dof: interpolated in 1 / dof between the neighbouring
-    integers (the usual rule; slightly conservative). Rounding down instead made two packings' t 12.7 at 1.97
-    degrees of freedom where it is about 4.4, and a ratio's interval far wider than its difference's."""
-    if not math.isfinite(dof):
-        return 1.959964
-    dof = max(1.0, dof)
-    lo = int(math.floor(dof))
-    if dof == lo:
-        return t975(lo)
-    w = (1 / lo - 1 / dof) / (1 / lo - 1 / (lo + 1))
-    return t975(lo) + w * (t975(lo + 1) - t975(lo))
-
-
-def mean_of(values):
-    """The mean over packings: sample std / sqrt(n), n - 1 degrees of freedom."""
-    values = [v for v in values if math.isfinite(v)]
-    n = len(values)
-    if n == 0:
-        return Estimate(math.nan, math.nan, 0)
-    if n == 1:
-        return Estimate(values[0], math.nan, 0, n=1)
-    return Estimate(statistics.mean(values), statistics.stdev(values) / math.sqrt(n), n - 1, n=n)
-
-
-def welch_dof(terms):
-    """Welch-Satterthwaite: terms are (variance contribution, its dof)."""
-    total = sum(v for v, _ in terms)
-    denominator = sum(v * v / d for v, d in terms if d > 0)
-    return total * total / denominator if denominator > 0 else math.inf
-
-
-def ratio(a, b):
-    """a / b of two independent means: Fieller's 95 % interval at the delta method's Welch dof."""
-    if not (math.isfinite(a.se) and math.isfinite(b.se)) or b.value == 0:
-        return Estimate(a.value / b.value if b.value else math.nan, math.nan, 0)
-    r = a.value / b.value
-    va, vb = (a.se / b.value) ** 2, (r * b.se / b.value) ** 2
-    dof = welch_dof([(va, a.dof), (vb, b.dof)])
-    q = t(dof) ** 2
-    # (a - theta b)^2 <= q (sa^2 + theta^2 sb^2): a quadratic in theta.
-    qa = b.value ** 2 - q * b.se ** 2
-    qb = -2 * a.value * b.value
-    qc = a.value ** 2 - q * a.se ** 2
-    disc = qb * qb - 4 * qa * qc
-    if qa <= 0 or disc < 0:  # the denominator is not resolved from zero: unbounded
-        return Estimate(r, math.sqrt(va + vb), dof, -math.inf, math.inf)
-    root = math.sqrt(disc)
-    return Estimate(r, math.sqrt(va + vb), dof, (-qb - root) / (2 * qa), (-qb + root) / (2 * qa))
-
-
-def combination(terms):
-    """sum c_i x_i of independent estimates, terms (c_i, x_i): delta-method standard error, Welch dof (not resolved
-    where any term is not: an unbounded Fieller interval is not made finite by the delta method)."""
-    value = sum(c * x.value for c, x in terms)
-    if not all(x.resolved() for _, x in terms):
-        return Estimate(value, math.nan, 0)
-    se = math.hypot(*(c * x.se for c, x in terms))
-    return Estimate(value, se, welch_dof([((c * x.se) ** 2, x.dof) for c, x in terms]))
-
-
-def difference(x, y):
-    """x - y of two independent estimates (combination)."""
-    return combination([(1.0, x), (-1.0, y)])
-
-
-AGREEMENT_MARGIN = 0.5  # an 'agrees' must exclude a difference of half the value compared against
-
-
-def verdict(d, against):
-    """From the interval of a difference x - y only, y = `against`'s value: 'differs' when it excludes 0, 'agrees'
-    when it holds 0 within +-AGREEMENT_MARGIN |y|, else 'not resolved' (too wide to tell)."""
-    if not d.resolved():
-        return "not resolved"
-    if not d.low <= 0 <= d.high:
-        return "differs"
-    margin = AGREEMENT_MARGIN * abs(against.value)
-    return "agrees" if -margin <= d.low and d.high <= margin else "not resolved"
-
-
-def scaled(e, k):
-    """e at k times its packings, the spread between them as now: se / sqrt(k), k n - 1 degrees of freedom
-    (n = dof + 1); k = inf: no spread left."""
-    if math.isinf(k):
-        return Estimate(e.value, 0.0, math.inf)
-    return Estimate(e.value, e.se / math.sqrt(k), k * (e.dof + 1) - 1)
-
-
-def packings_factor(terms, against, largest=100.0):
-    """How many times each condition's present packings a verdict not resolved would take to resolve, the spread
-    between packings as now: the smallest k at which verdict(sum c_i x_i) is 'agrees' or 'differs', where terms are
-    (c_i, x_i, more_i) and more_i says whether x_i narrows with kerf's packings (kerf's estimates; the experiments'
-    not). Bisection: the interval only narrows about a fixed centre as k grows, so a verdict once resolved stays.
-    Returns (k, why): k = inf when none up to `largest` resolves it, why 'experiments' when not even kerf without any
-    spread would (the experiments' own interval is too wide for an 'agrees'), else 'spread'."""
-    def resolved_at(k):
-        d = combination([(c, scaled(x, k) if more else x) for c, x, more in terms])
-        return verdict(d, against) != "not resolved"
-
-    if not resolved_at(math.inf):
-        return math.inf, "experiments"
-    if not resolved_at(largest):
-        return math.inf, "spread"
-    low, high = 1.0, largest
-    if resolved_at(low):
-        return low, "spread"
-    while high / low > 1.001:
-        mid = math.sqrt(low * high)
-        low, high = (low, mid) if resolved_at(mid) else (mid, high)
-    return high, "spread"
-
-
-def read_record(path, cuts=None):
-    """{(domain, surface, depth_mm): {seed: row}} with numbers as floats, added to `cuts` where given (records merge:
-    one model choice's cuts spread over two studies). Two cuts of one (domain, surface, depth) on one packing, in this
-    record or against `cuts` (conditions that differ in another tag, e.g. the disk size), are an error (ValueError
-    naming them): kept, one would silently replace the other."""
-    cuts = {} if cuts is None else cuts
-    with open(path, newline="") as f:
-        for row in csv.DictReader(f):
-            key = (row["domain"], row["surface"], round(float(row["depth_of_cut_mm"]), 6))
-            values = {}
-            for k, v in row.items():
-                try:
-                    values[k] = float(v)
-                except (TypeError, ValueError):
-                    values[k] = v
-            seed = int(float(row["seed"]))
-            mine = cuts.setdefault(key, {})
-            if seed in mine:
-                raise ValueError(f"{path}: a second cut of {key[0]}/{key[1]}/{key[2]:g} mm on packing {seed} "
-                                 "(conditions that differ in another tag, or a cut in two records: compare them apart)")
-            mine[seed] = values
-    return cuts
-
-
-def read_records(paths):
-    """read_record of several records merged."""
-    cuts = {}
-    for path in paths:
-        read_record(path, cuts)
-    return cuts
-
-
-def per_width(row, force):
-    width = row.get("width_mm", 1.0)
-    width = width if isinstance(width, float) and math.isfinite(width) and width > 0 else 1.0
-    return row[f"{force}_force_N"] / width
-
-
-def read_experiments(path):
-    """{(source, surface, depth_mm): {"main": [...], "thrust": [...]}} per mm of width."""
-    out = {}
-    with open(path, newline="") as f:
-        for row in csv.DictReader(line for line in f if not line.startswith("#")):
-            key = (row["source"], row["surface"], round(float(row["depth_of_cut_mm"]), 6))
-            width = float(row["width_mm"])
-            d = out.setdefault(key, {"main": [], "thrust": []})
-            d["main"].append(float(row["main_force_N"]) / width)
-            d["thrust"].append(float(row["thrust_force_N"]) / width)
-    return out
 
 
 class Sources:
@@ -252,9 +77,7 @@ class Sources:
         return mean_of([r.get(quantity, math.nan) for r in rows])
 
     def reference(self, source, surface, depth, quantity):
-        surface = "grooved" if surface in GROOVED else surface
-        values = self.experiments.get((source, surface, depth), {}).get(quantity)
-        return mean_of(values) if values else None
+        return reference(self.experiments, source, surface, depth, quantity)
 
 
 def trends(src):
@@ -660,7 +483,7 @@ def report(rows, cuts, record_path, floors=None, src=None, pending=None):
     latest = f", the latest recorded {max(dates)}" if dates else ""
     md = ["# Validation: soda-lime glass, the seed-000 trends in the steady cut", "",
           f"From the record `{record_path}` alone ({n_cuts} cuts{latest}, {cpu_h:.1f} CPU-hours; `kerf-dem study "
-          "data/studies/seed000_steady.json` adds to it, this report is `python3 bench/seed000_trends.py --report`).",
+          "data/studies/seed000_steady.json` adds to it, this report is `python3 validation/soda_lime_cutting_steady/trends.py --report`).",
           "", "## What is compared, and why", "",
           "- **Trends, not levels.** The undamped steady cut's force per mm of width moves with the integrated "
           "domain (docs/dem.md, 'Steady-state cuts'); a ratio between two conditions cut in the same domain may "
@@ -709,9 +532,9 @@ def report(rows, cuts, record_path, floors=None, src=None, pending=None):
         if "against_experiment" in r and r["source"].startswith("kerf"):
             summary.setdefault(r["against_experiment"], []).append(f"{r['trend']} ({r['source'][5:]})")
     md += ["## What the DEM reproduces", ""]
-    for verdict, label in (("agrees", "Agrees with the experiments"), ("differs", "Differs from them, resolved"),
-                           ("not resolved", "Not resolved yet")):
-        md.append(f"- {label}: {'; '.join(summary.get(verdict, [])) or 'none'}.")
+    for kind, label in (("agrees", "Agrees with the experiments"), ("differs", "Differs from them, resolved"),
+                        ("not resolved", "Not resolved yet")):
+        md.append(f"- {label}: {'; '.join(summary.get(kind, [])) or 'none'}.")
     moved = [r["trend"] for r in ratio_rows if r.get("domain_robust") == "differs"]
     md.append(f"- Moved by the domain (resolved): {'; '.join(moved) or 'none'}.")
     md += ["", "## Levels, per mm of width (reported, not acceptance)", ""] + table(level_rows, False) + [""]

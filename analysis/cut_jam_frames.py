@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """A jam and what follows it, from a cut's VTK frames (issue 41 item 4; docs/notes/2026-11-29-jams.md).
 
-    PYTHONPATH=build/python python3 bench/cut_jam_frames.py DIR --zoom K1,K2 --wide K3,K4 --out FIGURE.png
+    PYTHONPATH=build/python python3 analysis/cut_jam_frames.py DIR --zoom K1,K2 --wide K3,K4 --out FIGURE.png
 
 DIR is a cut's output folder written with output.frame_every_samples > 0 (frame_K.vtp, walls_K.vtp, forces.csv,
 summary.json). The figure: the frames K1, K2 near the tool's tip, the frames K3, K4 over the whole window, and the

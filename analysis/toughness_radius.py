@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Issue 37's lattice check: does K_IC scale as sqrt(R) when the disk radius is halved at fixed joint strength?
 
-    python3 bench/toughness_radius.py [RECORD.csv]
+    python3 analysis/toughness_radius.py [RECORD.csv]
 
 RECORD (default data/studies/results/toughness_hex_radius.csv) is what `kerf-dem study
 data/studies/toughness_hex_radius.json` writes: one beam per row, disk_radius_um, lattice_offset_R, notch_offset_rows,
@@ -15,10 +15,8 @@ import argparse
 import csv
 import math
 import pathlib
-import sys
 
-sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-import seed000_trends as st  # noqa: E402
+from kerf.stats import mean_of
 
 
 def read_record(path):
@@ -39,12 +37,12 @@ def scaling(beams):
     placings = sorted(set(beams[small]) & set(beams[large]))
     lines = []
     for r in (large, small):
-        k = st.mean_of([beams[r][p][0] for p in placings])
-        g = st.mean_of([beams[r][p][1] for p in placings])
+        k = mean_of([beams[r][p][0] for p in placings])
+        g = mean_of([beams[r][p][1] for p in placings])
         lines.append(f"R = {r:g} um: K_IC {k.value:.4f} +- {k.se:.4f} MPa sqrt(m), G_c {g.value:.3f} +- {g.se:.3f} J/m^2 "
                      f"({len(placings)} placings)")
-    k_ratio = st.mean_of([beams[small][p][0] / beams[large][p][0] for p in placings])
-    g_ratio = st.mean_of([beams[small][p][1] / beams[large][p][1] for p in placings])
+    k_ratio = mean_of([beams[small][p][0] / beams[large][p][0] for p in placings])
+    g_ratio = mean_of([beams[small][p][1] / beams[large][p][1] for p in placings])
     expected = math.sqrt(small / large)
     lines.append(f"K(R = {small:g}) / K(R = {large:g}): {k_ratio.value:.4f} [{k_ratio.low:.4f}, {k_ratio.high:.4f}] "
                  f"against sqrt(R ratio) = {expected:.4f}: "

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Steady cuts of two glasses on the same packings (issue 41 item 4): what one model choice changes in a cut.
 
-    python3 bench/paired_glasses.py BASE.csv OTHER.csv [--domain default] [--depth 0.1]
+    python3 analysis/paired_glasses.py BASE.csv OTHER.csv [--domain default] [--depth 0.1]
                                     [--base-domain large] [--base-depth 0.2]
 
 BASE and OTHER are records of `kerf-dem study` (data/studies/results/*.csv with the seed-000 study's columns:
@@ -12,16 +12,16 @@ same seed is the same packing in every window and at every depth): how the windo
 e.g. BASE = OTHER = one record, --domain large --base-domain default.
 Per surface: each glass's mean over the paired packings, and the paired ratio OTHER / BASE (the mean of the per-packing
 ratios, Student t on n - 1 degrees of freedom). Then each glass's groove effect (grooved / regular, Fieller's
-interval as in bench/seed000_trends.py) and its change (delta method), against the experiments' 0.152 at 0.1 mm.
+interval as in validation/soda_lime_cutting_steady/trends.py) and its change (delta method), against the experiments'
+0.152 at 0.1 mm.
 """
 import argparse
 import math
 import pathlib
 import statistics
-import sys
 
-sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-import seed000_trends as st  # noqa: E402
+from kerf.records import per_width, read_record
+from kerf.stats import difference, mean_of, ratio
 
 QUANTITIES = [("main_force_N", "main force (N/mm)"), ("thrust_force_N", "thrust force (N/mm)"),
               ("cracks_subsurface_steady", "subsurface cracks"),
@@ -34,13 +34,13 @@ def paired(base, other, key, quantity, base_key=None):
     keep it), and their values."""
     b, o = base.get(base_key or key, {}), other.get(key, {})
     seeds = sorted(s for s in set(b) & set(o) if quantity in b[s] and quantity in o[s])
-    value = (lambda r: st.per_width(r, quantity[:-8])) if quantity.endswith("_force_N") else (lambda r: r[quantity])
+    value = (lambda r: per_width(r, quantity[:-8])) if quantity.endswith("_force_N") else (lambda r: r[quantity])
     return seeds, [value(b[s]) for s in seeds], [value(o[s]) for s in seeds]
 
 
 def paired_ratio(xs, ys):
     """Mean of y / x over the pairs with its 95 % interval (Student t on n - 1)."""
-    return st.mean_of([y / x for x, y in zip(xs, ys)])
+    return mean_of([y / x for x, y in zip(xs, ys)])
 
 
 def compare(base, other, domain, depth, base_domain=None, base_depth=None):
@@ -71,9 +71,9 @@ def compare(base, other, domain, depth, base_domain=None, base_depth=None):
         if len(base_g) < 2 or len(base_r) < 2:
             lines.append(f"groove effect {quantity[:-8]}: fewer than two paired packings of each surface")
             continue
-        effects = {name: st.ratio(st.mean_of(g), st.mean_of(r))
+        effects = {name: ratio(mean_of(g), mean_of(r))
                    for name, g, r in (("base", base_g, base_r), ("other", other_g, other_r))}
-        d = st.difference(effects["other"], effects["base"])
+        d = difference(effects["other"], effects["base"])
         lines.append(f"groove effect {quantity[:-8]} (rectangular / regular, paired packings): base "
                      f"{effects['base'].value:.3f} [{effects['base'].low:.3f}, {effects['base'].high:.3f}], other "
                      f"{effects['other'].value:.3f} [{effects['other'].low:.3f}, {effects['other'].high:.3f}]; "
@@ -91,7 +91,7 @@ def main():
     ap.add_argument("--base-depth", type=float, help="BASE's depth of cut in mm (default: --depth)")
     args = ap.parse_args()
     try:
-        base, other = st.read_record(args.base), st.read_record(args.other)
+        base, other = read_record(args.base), read_record(args.other)
     except ValueError as e:
         ap.error(str(e))
     print(compare(base, other, args.domain, args.depth, args.base_domain, args.base_depth))

@@ -1,0 +1,52 @@
+"""kerf.records (python/kerf/records.py): the study records' reader and the references' means."""
+import csv
+import math
+import statistics
+
+import kerf.records as kr
+
+
+def test_two_cuts_of_one_condition_on_one_packing_are_an_error_not_a_silent_choice(tmp_path):
+    # A record of two disk sizes, both regular 0.1 mm in the default window on packing 1: read as one condition,
+    # one cut would replace the other.
+    with open(tmp_path / "record.csv", "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["domain", "surface", "depth_of_cut_mm", "seed", "radius_min_um", "main_force_N"])
+        w.writerow(["default", "regular", 0.1, 1, 10, 0.27])
+        w.writerow(["default", "regular", 0.1, 1, 5, 0.37])
+    try:
+        kr.read_record(tmp_path / "record.csv")
+    except ValueError as e:
+        assert "default/regular/0.1 mm on packing 1" in str(e)
+    else:
+        raise AssertionError("two cuts of one condition and packing were read silently")
+
+
+def test_records_merge_and_forces_are_per_mm_of_width(tmp_path):
+    # Two records of one study (a condition's packings in both): merged by condition and packing; a force per mm is
+    # the force over the row's width, 1 mm where the row has none.
+    for name, rows in (("a.csv", [[1, 0.8, 2.0], [2, 0.9, 2.0]]), ("b.csv", [[3, 0.3, ""]])):
+        with open(tmp_path / name, "w", newline="") as f:
+            w = csv.writer(f)
+            w.writerow(["domain", "surface", "depth_of_cut_mm", "seed", "main_force_N", "width_mm"])
+            for seed, force, width in rows:
+                w.writerow(["large", "rectangular", 0.2, seed, force, width])
+    cuts = kr.read_records([tmp_path / "a.csv", tmp_path / "b.csv"])
+    rows = cuts[("large", "rectangular", 0.2)]
+    assert sorted(rows) == [1, 2, 3]
+    assert [kr.per_width(rows[s], "main") for s in (1, 2, 3)] == [0.4, 0.45, 0.3]
+
+
+def test_a_reference_is_the_mean_of_its_tests_per_mm_and_grooved_for_both_groove_shapes(tmp_path):
+    # Three tests on a 25.4 mm wide workpiece: the mean per mm is their mean over 25.4, its standard error the
+    # sample standard deviation over sqrt(3); the references' one grooved surface answers for both shapes.
+    path = tmp_path / "experiments.csv"
+    path.write_text("# the experiments\nsource,surface,depth_of_cut_mm,width_mm,main_force_N,thrust_force_N\n" +
+                    "".join(f"experiment,grooved,0.1,25.4,{f},1.0\n" for f in (2.0, 2.5, 3.0)))
+    table = kr.read_experiments(path)
+    for surface in ("rectangular", "trapezoidal"):
+        e = kr.reference(table, "experiment", surface, 0.1, "main")
+        assert math.isclose(e.value, 2.5 / 25.4, rel_tol=1e-12)
+        assert math.isclose(e.se, statistics.stdev([2.0, 2.5, 3.0]) / 25.4 / math.sqrt(3), rel_tol=1e-12)
+        assert e.dof == 2 and e.n == 3
+    assert kr.reference(table, "experiment", "regular", 0.1, "main") is None
