@@ -1,5 +1,6 @@
 """When kerf cannot be imported, one line says why and names the interpreter to use (issue 55): numpy missing, or
 an interpreter of another version than the one the module was built for (python/kerf_fallback.py.in)."""
+import os
 import pathlib
 import shutil
 import subprocess
@@ -20,11 +21,11 @@ def last_line(result):
 def test_numpy_missing_says_so(tmp_path):
     shutil.copy2(MODULE, tmp_path / MODULE.name)
     # python -S: no site directories, so no numpy from them; kerf from tmp_path alone.
-    code = f"import sys; sys.path.insert(0, {str(tmp_path)!r}); import kerf"
-    probe = subprocess.run([sys.executable, "-S", "-c", "import numpy"], capture_output=True, text=True)
+    env = dict(os.environ, PYTHONPATH=str(tmp_path))  # -S leaves PYTHONPATH in force
+    probe = subprocess.run([sys.executable, "-S", "-c", "import numpy"], capture_output=True, text=True, env=env)
     if probe.returncode == 0:
         pytest.skip("numpy is importable without site directories here")
-    result = subprocess.run([sys.executable, "-S", "-c", code], capture_output=True, text=True)
+    result = subprocess.run([sys.executable, "-S", "-c", "import kerf"], capture_output=True, text=True, env=env)
     assert result.returncode != 0
     line = last_line(result)
     assert line.startswith(f"ImportError: kerf needs numpy, which {sys.executable} (Python "), result.stderr
