@@ -52,8 +52,11 @@ class CMakeBuild(build_ext):
 
         library = pathlib.Path(self.get_ext_fullpath(ext.name)).parent.resolve()
         library.mkdir(parents=True, exist_ok=True)
-        for file in (stage / "python").iterdir():  # kerf.cpython-XY-....so and its stand-in kerf.py
-            shutil.copy2(file, library / file.name)
+        for item in (stage / "python").iterdir():  # kerf.cpython-XY-....so, its stand-in kerf.py, kerf/*.py
+            if item.is_dir():
+                shutil.copytree(item, library / item.name, dirs_exist_ok=True)
+            else:
+                shutil.copy2(item, library / item.name)
         data_files = self.distribution.data_files  # install_data reads this list after the build
         for directory in sorted({p.parent for p in stage.rglob("*") if p.is_file()}):
             relative = directory.relative_to(stage)

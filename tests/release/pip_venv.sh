@@ -30,6 +30,8 @@ venv = pathlib.Path(sys.argv[1])
 assert pathlib.Path(kerf.__file__).is_relative_to(venv), kerf.__file__
 assert kerf.scene_path("psic_liu_li").is_relative_to(venv / "share" / "kerf" / "data"), kerf.scene_path("psic_liu_li")
 assert kerf.predict(kerf.scene_path("psic_liu_li"))["cutting_force_N"] > 0
+import kerf.stats, kerf.records  # the pure-Python submodules, in the folder kerf/ beside the module
+assert pathlib.Path(kerf.stats.__file__).is_relative_to(venv), kerf.stats.__file__
 print("kerf", kerf.__version__, "from", kerf.__file__)
 PY
 KERF_TOOLS="$work/V/bin" OMP_NUM_THREADS=1 python -m pytest -q -rs -p no:cacheprovider "$src/tests/python" ||
