@@ -5,6 +5,7 @@
 // to the same counts, and from an older one (KERFCUT9) without a record.
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
@@ -176,7 +177,7 @@ TEST_CASE("cut edge: through a whole cut, an unbreakable block is tied glass, a 
   }
 }
 
-TEST_CASE("cut edge: a cut resumed from its checkpoint has the uninterrupted cut's record; from a KERFCUT9 one none",
+TEST_CASE("cut edge: a cut resumed from its checkpoint has the uninterrupted cut's record, from a KERFCUT9 one none",
           "[cut_edge]") {
   const Simulation specimen = kerf::dem::testing::quick_workpiece_specimen(0.6e-3, 0.25e-3, 7);
   const CutParams p = kerf::dem::testing::windowed(3, 2, 2, 2);
@@ -208,4 +209,30 @@ TEST_CASE("cut edge: a cut resumed from its checkpoint has the uninterrupted cut
   CHECK(older.result().samples.back().main_force_n == whole.result().samples.back().main_force_n);
   CHECK(older.result().energy_booked);
   CHECK_FALSE(older.result().edge_recorded);
+}
+
+TEST_CASE("cut edge: the cost of one observation on the steady cut's workpiece", "[.bench][cut_edge]") {
+  // Hidden (a measurement, not a check): a 12 x 1 mm workpiece of 10-13 um disks, as data/scenes/dem_cut_steady.json.
+  SpecimenSpec spec = kerf::dem::testing::quick_random_spec(12e-3, 1e-3, 3);
+  spec.radius_min_m = 10e-6;
+  spec.radius_max_m = 13e-6;
+  SpecimenReport report;
+  const Simulation specimen = make_specimen(Material{}, spec, report);
+  CutParams p;
+  p.depth_of_cut_m = 0.1e-3;
+  p.speed_m_per_s = 2;
+  p.length_m = 0.5e-3;
+  p.active_window = true;
+  CutRun run(specimen, p);
+  for (int k = 0; k < 200; ++k) run.advance();
+  const int n = 200;
+  const auto t0 = std::chrono::steady_clock::now();
+  TiedProfile profile;
+  for (int k = 0; k < n; ++k) add_tied_profile(run.window()->now(run.simulation()), {0, 0}, 0, profile);
+  const double each = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() / n;
+  const auto t1 = std::chrono::steady_clock::now();
+  for (int k = 0; k < 10; ++k) run.advance();
+  const double sample = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count() / 10;
+  WARN("disks " << specimen.particles().size() << ", one observation " << each * 1e3 << " ms, one sample of "
+                << p.sample_every_steps << " steps " << sample * 1e3 << " ms");
 }

@@ -182,7 +182,7 @@ struct TravelWindow {
 /// steady part (the travel of the mean forces). "Tied": a disk that a path of joints with a bonded element ties to
 /// the workpiece's held rows (its fixed left side and bottom), through the whole workpiece (WorkpieceNow); "loose":
 /// any other disk still in the workpiece (a fragment, however large, that no intact joint holds to the base).
-inline constexpr double kEdgeObserveTravelM = 1e-6;
+inline constexpr double kEdgeObserveTravelM = 5e-6;
 /// The edge: the tool's boundary within this distance of its tip (the front-most lowest point).
 inline constexpr double kEdgeZoneM = 25e-6;
 /// The stretches of the cut line where the tied share is read: this far ahead of the tip (-x, towards the uncut
