@@ -39,6 +39,25 @@ SampleState cut_sample(const CutRun& run) {
   return s;
 }
 
+/// What the edge met over the steady part (CutEdgeRecord, docs/dem.md "What the edge meets"): the shares of the
+/// observations in which the tool's boundary within 25 um of its tip touched tied glass, loose fragments or nothing,
+/// and the tied share of the disks by depth below the cut line 0.05-0.3 mm ahead of and behind the tip (null without
+/// an observation or a disk).
+void add_edge_results(const CutEdgeRecord& e, Json& r) {
+  const auto share = [](std::int64_t part, std::int64_t whole) {
+    return whole > 0 ? Json(static_cast<double>(part) / static_cast<double>(whole)) : Json();
+  };
+  r["edge_observations_steady"] = e.observations;
+  r["edge_touches_tied_share_steady"] = share(e.touches_tied, e.observations);
+  r["edge_touches_loose_share_steady"] = share(e.touches_loose, e.observations);
+  r["edge_touches_nothing_share_steady"] = share(e.observations - e.touches_tied - e.touches_loose, e.observations);
+  for (std::size_t side = 0; side < 2; ++side)
+    for (std::size_t band = 0; band < 3; ++band)
+      r[fmt::format("tied_share_{}_depth_{:g}_{:g}_um_steady", side == 0 ? "ahead" : "behind",
+                    units::m_to_um(kTiedBandDepthM[band]), units::m_to_um(kTiedBandDepthM[band + 1]))] =
+          share(e.profile.tied[side][band], e.profile.disks[side][band]);
+}
+
 /// Runs (or continues, from a checkpoint) a cut to the end of its travel and writes the outputs; returns the
 /// summary. `doc` and the options' checkpoint interval are for the checkpoints.
 // Long (~110 lines) for a reason: each sample interleaves steps, the sample, checkpoints, frames and progress on
@@ -133,6 +152,7 @@ Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& d
                                      {"energy_stored_change_steady_J", e.stored_change_j}})
       summary["results"][key] = value;
   }
+  if (res.edge_recorded) add_edge_results(res.edge, summary["results"]);
   summary["n_particles"] = res.n_particles;
   summary["steps"] = res.steps;
   summary["wall_time_s"] = res.wall_time_s;

@@ -100,6 +100,45 @@ void CutWindow::sync(const Simulation& current) {
   full_.set_clock(current.time(), current.step_count());
 }
 
+WorkpieceNow workpiece_now(const Simulation& sim) {
+  const Particles& p = sim.particles();
+  return {p.x, p.y, std::vector<std::uint8_t>(p.size(), 1), sim.tied_to_held()};
+}
+
+WorkpieceNow CutWindow::now(const Simulation& current) const {
+  const Particles& c = current.particles();
+  const Particles& q = full_.particles();
+  const BondStore& cb = current.bonds();
+  const BondStore& fb = full_.bonds();
+  if (c.size() != global_of_.size() || cb.size() != bond_global_of_.size())
+    throw ModelError("dem", "windowed cut: the running simulation is not the window's");
+  WorkpieceNow w{q.x, q.y, std::vector<std::uint8_t>(q.size()), std::vector<std::uint8_t>(q.size(), 0)};
+  for (std::size_t g = 0; g < q.size(); ++g) w.present[g] = !removed_[g];
+  for (std::size_t u = 0; u < c.size(); ++u) {
+    const auto g = static_cast<std::size_t>(global_of_[u]);
+    w.x_m[g] = c.x[u], w.y_m[g] = c.y[u];
+  }
+  // The joints with a bonded element: the reservoir's, and the running window's where it has them.
+  std::vector<std::uint8_t> bonded(fb.size());
+  for (std::size_t b = 0; b < fb.size(); ++b) bonded[b] = fb.active[b] && fb.n_bonded_elements(b) > 0;
+  for (std::size_t k = 0; k < cb.size(); ++k)
+    bonded[static_cast<std::size_t>(bond_global_of_[k])] = cb.active[k] && cb.n_bonded_elements(k) > 0;
+  // Breadth-first from every held disk of the workpiece (its group, not the window's frame).
+  std::vector<std::size_t> queue;
+  for (std::size_t g = 0; g < q.size(); ++g)
+    if (q.group[g] != 0 && w.present[g]) w.tied[g] = 1, queue.push_back(g);
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    const std::size_t g = queue[head];
+    for (auto k = bond_start_[g]; k < bond_start_[g + 1]; ++k) {
+      const auto b = static_cast<std::size_t>(bond_list_[static_cast<std::size_t>(k)]);
+      if (!bonded[b]) continue;
+      const auto other = static_cast<std::size_t>(fb.i[b] == static_cast<std::int32_t>(g) ? fb.j[b] : fb.i[b]);
+      if (!w.tied[other] && w.present[other]) w.tied[other] = 1, queue.push_back(other);
+    }
+  }
+  return w;
+}
+
 void CutWindow::remove_loose_fragments() {
   // The removed disks are out of the workpiece: no path runs through them, and a crushed grain stays counted as one.
   const auto tied = full_.tied_to_held(removed_);

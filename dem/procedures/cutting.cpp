@@ -584,6 +584,40 @@ Simulation make_workpiece(const Simulation& specimen, const CutParams& params, s
   return sim;
 }
 
+EdgeMeets edge_meets(const Simulation& sim, std::int32_t first_tool_wall, std::int32_t n_tool_walls,
+                     std::array<double, 2> tip_m, const std::vector<std::uint8_t>& tied) {
+  const Particles& p = sim.particles();
+  bool loose = false;
+  for (const auto& c : sim.wall_contact_loads()) {
+    if (c.wall < first_tool_wall || c.wall >= first_tool_wall + n_tool_walls) continue;
+    const Wall& w = sim.walls()[static_cast<std::size_t>(c.wall)];
+    const auto u = static_cast<std::size_t>(c.disk);
+    // The contact's point: the wall's closest point to the disk's centre.
+    const double ex = w.x1 - w.x0, ey = w.y1 - w.y0, len2 = ex * ex + ey * ey;
+    const double s = len2 > 0 ? std::clamp(((p.x[u] - w.x0) * ex + (p.y[u] - w.y0) * ey) / len2, 0.0, 1.0) : 0.0;
+    if (std::hypot(w.x0 + s * ex - tip_m[0], w.y0 + s * ey - tip_m[1]) > kEdgeZoneM) continue;
+    if (tied[u]) return EdgeMeets::tied;
+    loose = true;
+  }
+  return loose ? EdgeMeets::loose : EdgeMeets::nothing;
+}
+
+void add_tied_profile(const WorkpieceNow& now, std::array<double, 2> tip_m, double y_cut_m, TiedProfile& into) {
+  for (std::size_t g = 0; g < now.present.size(); ++g) {
+    if (!now.present[g]) continue;
+    const double depth = y_cut_m - now.y_m[g];
+    if (!(depth >= kTiedBandDepthM.front() && depth < kTiedBandDepthM.back())) continue;
+    const double dx = now.x_m[g] - tip_m[0];  // the tool moves in -x: ahead is dx < 0
+    const double along = std::abs(dx);
+    if (!(along >= kTiedStretchM[0] && along < kTiedStretchM[1])) continue;
+    const std::size_t side = dx < 0 ? 0 : 1;
+    std::size_t band = 0;
+    while (depth >= kTiedBandDepthM[band + 1]) ++band;
+    ++into.disks[side][band];
+    into.tied[side][band] += now.tied[g];
+  }
+}
+
 CutWindowBox window_box_m(const CutParams& p) {
   const double d = p.depth_of_cut_m;
   CutWindowBox box{p.window_ahead_depths * d, p.window_behind_depths * d, p.window_below_depths * d,
@@ -759,6 +793,14 @@ bool CutRun::advance() {
   const auto f = tool_force_components(fx / params_.sample_every_steps, fy / params_.sample_every_steps);
   const double elapsed = sim_.time() - t0_, travel = params_.speed_m_per_s * elapsed;
   res_.samples.push_back({travel, elapsed, f[0], f[1]});
+  // What the edge meets: once per kEdgeObserveTravelM of travel over the steady part (it changes nothing).
+  if (edge_kept_ && travel >= params_.entry_fraction * params_.length_m) {
+    const auto step = static_cast<std::int64_t>(std::floor(travel / kEdgeObserveTravelM));
+    if (step > edge_last_step_) {
+      edge_last_step_ = step;
+      observe_edge();
+    }
+  }
   // The tool moves at -speed in x; the disks push it with fx each step: it does fx speed dt of work on them.
   books_.tool_work_j += fx * params_.speed_m_per_s * sim_.time_step();
   if (books_kept_ && !steady_booked_ && travel >= params_.entry_fraction * params_.length_m) {
@@ -769,6 +811,22 @@ bool CutRun::advance() {
   res_.wall_time_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (travel >= params_.length_m) finish();
   return !finished_;
+}
+
+void CutRun::observe_edge() {
+  const auto tip = edge();
+  const WorkpieceNow now = window_ ? window_->now(sim_) : workpiece_now(sim_);
+  std::vector<std::uint8_t> tied(sim_.particles().size());
+  for (std::size_t u = 0; u < tied.size(); ++u)
+    tied[u] = now.tied[window_ ? static_cast<std::size_t>(window_->workpiece_index(u)) : u];
+  CutEdgeRecord& e = res_.edge;
+  ++e.observations;
+  switch (edge_meets(sim_, first_tool_wall_, n_tool_walls_, tip, tied)) {
+    case EdgeMeets::tied: ++e.touches_tied; break;
+    case EdgeMeets::loose: ++e.touches_loose; break;
+    case EdgeMeets::nothing: break;
+  }
+  add_tied_profile(now, tip, res_.y_cut_m, e.profile);
 }
 
 void CutRun::finish() {
@@ -785,15 +843,17 @@ void CutRun::finish() {
   }
   res_.cracks = count_cut_cracks(cracks(), res_.y_cut_m, res_.steady_machined_x_m);
   res_.energy_booked = books_kept_ && steady_booked_;
+  res_.edge_recorded = edge_kept_;
   if (res_.energy_booked) res_.energy = cut_energy_between(books_steady_start_, books_now());
 }
 
 namespace {
 
-constexpr std::string_view kCutMagic = "KERFCUT9";         // 3: tool_friction_coefficient, 4: rake_face_height_m,
+constexpr std::string_view kCutMagic = "KERFCUTA";         // 3: tool_friction_coefficient, 4: rake_face_height_m,
                                                            // 5: the active window, 6: its absorbing layer,
                                                            // 7: the held rows' layer, 8: the parameters by key,
-                                                           // 9: the energy books
+                                                           // 9: the energy books, A (10): the edge's record
+constexpr std::string_view kCutMagicNoEdge = "KERFCUT9";   // still read: no edge record (the run keeps none)
 constexpr std::string_view kCutMagicNoBooks = "KERFCUT8";  // still read: no energy books (the run keeps none)
 constexpr std::string_view kCutMagicListed = "KERFCUT7";   // still read: the parameters listed by hand
 
@@ -847,7 +907,13 @@ std::string CutRun::serialize() const {
   state_fields(*this, io);
   io(sim_.serialize(), window_ ? window_->serialize() : std::string());
   book_fields(*this, io);
+  edge_fields(*this, io);
   return out;
+}
+
+template <class Self, class Io>
+void CutRun::edge_fields(Self& run, Io& io) {
+  io(run.edge_kept_, run.edge_last_step_, run.res_.edge);
 }
 
 template <class Self, class Io>
@@ -859,10 +925,10 @@ void CutRun::book_fields(Self& run, Io& io) {
 
 CutRun CutRun::deserialize(std::string_view bytes) {
   std::size_t version = 0;
-  serial::In io =
-      serial::open_tagged(bytes, {kCutMagic, kCutMagicNoBooks, kCutMagicListed}, "cut checkpoint", &version);
+  serial::In io = serial::open_tagged(bytes, {kCutMagic, kCutMagicNoEdge, kCutMagicNoBooks, kCutMagicListed},
+                                      "cut checkpoint", &version);
   CutRun run;
-  if (version == 2) {
+  if (version == 3) {
     Cut7In listed{io};
     state_fields(run, listed);
   } else {
@@ -871,10 +937,14 @@ CutRun CutRun::deserialize(std::string_view bytes) {
   }
   std::string state, window;
   io(state, window);
-  if (version == 0)
+  if (version <= 1)
     book_fields(run, io);
   else
     run.books_kept_ = false;  // an older kerf kept no books: the finished run reports none
+  if (version == 0)
+    edge_fields(run, io);
+  else
+    run.edge_kept_ = false;  // nor the edge's record
   io.expect_end("cut checkpoint");
   validate_cut_params(run.params_);
   run.sim_ = Simulation::deserialize(state);

@@ -201,9 +201,10 @@ TEST_CASE("cut window: a cut resumed from a checkpoint without energy books (KER
   while (whole.advance()) {
   }
   for (std::size_t k = 0; k < whole.result().samples.size() / 2; ++k) half.advance();
-  // A KERFCUT8 state is a KERFCUT9 one without the books at its end: two flags and two books of five numbers.
+  // A KERFCUT8 state is a KERFCUTA one without the books and the edge's record at its end: two flags and two books of
+  // five numbers, then a flag, the last observation and the record.
   std::string old = half.serialize();
-  old.resize(old.size() - (2 + 10 * sizeof(double)));
+  old.resize(old.size() - (2 + 10 * sizeof(double)) - (1 + sizeof(std::int64_t) + sizeof(CutEdgeRecord)));
   old.replace(0, 8, "KERFCUT8");
   CutRun restored = CutRun::deserialize(old);
   while (restored.advance()) {

@@ -64,6 +64,21 @@ struct CutWindowBox {
   HeldRows held_rows{};  ///< where the held rows are (when held_absorbing_m > 0)
 };
 
+/// The whole workpiece at one moment (issue 54 item 2: what the tool's edge meets): per workpiece disk its place,
+/// whether it is still in the workpiece, and whether it is tied to it.
+struct WorkpieceNow {
+  std::vector<double> x_m, y_m;
+  /// 1: still in the workpiece (not removed as a chip or crushed).
+  std::vector<std::uint8_t> present;
+  /// 1: a path of joints with a bonded element ties it to a held disk of the workpiece (its held left side and
+  /// bottom, seed 000's fixed base), through any disk still present (Simulation::tied_to_held's rule over the
+  /// whole workpiece). A disk of a loose fragment, however large, is not tied.
+  std::vector<std::uint8_t> tied;
+};
+
+/// The workpiece of a cut without a window: the simulation's disks, every one present, tied by its held disks.
+WorkpieceNow workpiece_now(const Simulation& sim);
+
 /// What the windowed cut removed as chips.
 struct ChipAccount {
   std::size_t particles = 0;
@@ -112,6 +127,10 @@ class CutWindow {
   Simulation crush(const Simulation& current, const std::vector<std::size_t>& grains,
                    const std::vector<std::size_t>& tied_disks = {});
   std::size_t largest_window() const { return largest_window_; }
+  /// The whole workpiece now, without changing anything: the running window's disks and joints as `current` (the
+  /// window built last) has them, the others as the reservoir holds them. The window's held frame counts for
+  /// nothing here: a disk is tied through the workpiece's own held rows (WorkpieceNow::tied).
+  WorkpieceNow now(const Simulation& current) const;
 
   std::string serialize() const;
   static CutWindow deserialize(std::string_view bytes);

@@ -178,6 +178,41 @@ struct TravelWindow {
   int n_samples = 0;
 };
 
+/// What the tool's edge meets (issue 54 item 2), observed once per kEdgeObserveTravelM of the tool's travel over the
+/// steady part (the travel of the mean forces). "Tied": a disk that a path of joints with a bonded element ties to
+/// the workpiece's held rows (its fixed left side and bottom), through the whole workpiece (WorkpieceNow); "loose":
+/// any other disk still in the workpiece (a fragment, however large, that no intact joint holds to the base).
+inline constexpr double kEdgeObserveTravelM = 5e-6;
+/// The edge: the tool's boundary within this distance of its tip (the front-most lowest point).
+inline constexpr double kEdgeZoneM = 25e-6;
+/// The stretches of the cut line where the tied share is read: this far ahead of the tip (-x, towards the uncut
+/// glass) and as far behind it (the machined surface), [from, to).
+inline constexpr std::array<double, 2> kTiedStretchM{0.05e-3, 0.3e-3};
+/// The depth bands below the cut line of the tied share (disk centres), [from, to): 0-25, 25-50, 50-100 um.
+inline constexpr std::array<double, 4> kTiedBandDepthM{0, 25e-6, 50e-6, 100e-6};
+
+/// What the edge touches at one moment: a tied disk if any, else a loose one if any, else nothing.
+enum class EdgeMeets { nothing, loose, tied };
+/// The disks whose contact with one of the tool's walls [first_tool_wall, + n_tool_walls) lies within kEdgeZoneM
+/// of the tip (the closest point of the wall to the disk's centre, the contact's point), touching (positive
+/// overlap); `tied` one flag per disk of `sim`.
+EdgeMeets edge_meets(const Simulation& sim, std::int32_t first_tool_wall, std::int32_t n_tool_walls,
+                     std::array<double, 2> tip_m, const std::vector<std::uint8_t>& tied);
+
+/// Disk counts per stretch (0 ahead, 1 behind) and depth band (kTiedBandDepthM), and how many of them are tied.
+struct TiedProfile {
+  std::array<std::array<std::int64_t, 3>, 2> disks{}, tied{};
+};
+/// Adds the present disks of `now` whose centres lie in the stretches ahead of and behind the tip `tip_m`
+/// (kTiedStretchM along x, the tool moving in -x) and in the bands below the cut line `y_cut_m`.
+void add_tied_profile(const WorkpieceNow& now, std::array<double, 2> tip_m, double y_cut_m, TiedProfile& into);
+
+/// The steady part's observations of the edge (a plain record of counts: stored in the cut's checkpoints).
+struct CutEdgeRecord {
+  std::int64_t observations = 0, touches_tied = 0, touches_loose = 0;  ///< the rest touched nothing
+  TiedProfile profile;
+};
+
 /// Where the tool's work goes, booked as a cut runs (issue 41 item 4). The integrated disks (the whole workpiece,
 /// or the active window) gain the tool's work and lose it three ways: dissipated among them (Coulomb friction,
 /// the energy each broken joint element held, the absorbing layers, the integrator's error), and, in a windowed
@@ -235,6 +270,10 @@ struct CutResult {
   /// under a kerf that keeps them (a cut resumed from an older checkpoint has none).
   bool energy_booked = false;
   CutEnergy energy;
+  /// What the edge met over the steady part (once finished): recorded only by a cut that ran from its start under
+  /// a kerf that records it (a cut resumed from an older checkpoint has none).
+  bool edge_recorded = false;
+  CutEdgeRecord edge;
 };
 
 /// {main, thrust} from the force the disks exert on the tool (cutting direction -x): main = F_x, thrust = F_y.
@@ -327,9 +366,16 @@ class CutRun {
   /// The checkpoint's fields before the engine state, in order: io(field...) writes or reads them.
   template <class Self, class Io>
   static void state_fields(Self& run, Io& io);
-  /// The energy books' fields, after the engine state (KERFCUT9).
+  /// The energy books' fields, after the engine state (KERFCUT9), then the edge's record (KERFCUTA).
   template <class Self, class Io>
   static void book_fields(Self& run, Io& io);
+  template <class Self, class Io>
+  static void edge_fields(Self& run, Io& io);
+  /// The edge's record: kept from the start (else none), the last observation's travel in kEdgeObserveTravelM.
+  bool edge_kept_ = true;
+  std::int64_t edge_last_step_ = -1;
+  /// Observes what the edge meets now and the tied profile around it (res_.edge).
+  void observe_edge();
 };
 
 /// "tool_travel_mm,time_s,main_force_N,thrust_force_N".
