@@ -361,7 +361,7 @@ namespace kerf::dem::kinds {
 std::string calibrate_keys_markdown() {
   return fields_markdown(calibration_fields()) +
          fields_markdown(material_output_fields(), {"calibrated", false}, false) +
-         "| `targets` | - | an object | seed 000 Table 2 | the macro-properties to meet (`calibration.targets`) |\n"
+         "| `targets` | - | an object | Yang et al. 2018, Table 2 | the macro-properties to meet (`calibration.targets`) |\n"
          "| `toughness` | - | an object | none | the fifth test, K_IC on a notched beam (`calibration.toughness`) |\n";
 }
 

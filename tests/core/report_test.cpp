@@ -109,7 +109,7 @@ TEST_CASE("Width bases convert through the force per unit width", "[report][widt
   CHECK(WidthBasis::total(25.4e-3).describe() == "total force over a 25.4 mm width");
 }
 
-TEST_CASE("Seed 000: experiment (25.4 mm) against the paper's DEM (1 mm) needs an explicit width view",
+TEST_CASE("Yang et al. 2018: experiment (25.4 mm) against the paper's DEM (1 mm) needs an explicit width view",
           "[report][width]") {
   const auto table = kerf::read_csv_file(std::string(KERF_SOURCE_DIR) + "/data/experiments/soda_lime_orthogonal_cutting.csv");
   auto spec = depth_spec();

@@ -1,4 +1,4 @@
-"""bench/seed000_trends.py: the statistics of the seed-000 trends on synthetic records with known answers."""
+"""bench/seed000_trends.py: the statistics of the Yang et al. 2018 trends on synthetic records with known answers."""
 import csv
 import math
 import pathlib
