@@ -39,8 +39,8 @@ FlowStress flow_stress(const FlowStressModel& model, const DeformationState& sta
     out.johnson_cook_Pa = johnson_cook_stress(*model.johnson_cook, model.policy, state.strain, state.strain_rate_per_s,
                                               state.temperature_K, guards);
   }
-  // Seed 001 Eq. 8 writes K_HP(eps, epsdot, T) but defines K_HP only by Eqs. 10-11, which hold no strain, rate or
-  // temperature. kerf's choice: the microstructural terms soften with the Johnson-Cook thermal factor
+  // Shao et al. 2013, Eq. 8 writes K_HP(eps, epsdot, T) but defines K_HP only by Eqs. 10-11, which hold no strain,
+  // rate or temperature. kerf's choice: the microstructural terms soften with the Johnson-Cook thermal factor
   // (1 - T*^m) of the same material, so that the whole flow stress, and every force, falls continuously to
   // zero at the melting temperature. At or below room temperature the factor is 1 (Eqs. 4-11 as printed).
   double softening = 1.0;

@@ -114,7 +114,7 @@ const FieldTable<MicrostructureKeys>& microstructure_fields() {
       both_terms_field("critical_grain_size_nm", kNm, Range::non_negative(),
                        "grain size (and boundary spacing) below which the terms are capped",
                        &HallPetchParams::critical_grain_size_m, &DislocationParams::critical_spacing_m),
-      micro_field("grain_boundary_stress_ratio", units::kNone, Range::positive(), "tau_b / G (seed 001 Eq. 11)",
+      micro_field("grain_boundary_stress_ratio", units::kNone, Range::positive(), "tau_b / G (Shao et al. 2013, Eq. 11)",
                   [](auto& k) -> auto& { return k.models.hall_petch.grain_boundary_stress_ratio; }),
       NumberField<MicrostructureKeys>{
           "hall_petch_coefficient_MPa_sqrt_m", FieldUnit{"MPa m^0.5", units::mpa_to_pa, units::pa_to_mpa},

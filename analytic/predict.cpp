@@ -20,13 +20,13 @@ namespace {
 // Oxley's strain-rate constant C0 lies in 2-10 (Oxley 1989); its middle is used to estimate the primary-zone
 // strain rate when the scene neither gives one nor asks for an Oxley solve.
 constexpr double kTypicalStrainRateConstant = 5.0;
-// Seed 003 validated the contact-length models for A2024-T351 up to h = 0.1 mm (chip segmentation above); the
-// limit is that material's, so the warning is too.
+// Berezvai et al. 2019 validated the contact-length models for A2024-T351 up to h = 0.1 mm (chip segmentation
+// above); the limit is that material's, so the warning is too.
 constexpr double kContactLengthValidatedThickness_m = 0.1e-3;
 constexpr const char* kContactLengthValidatedMaterial = "a2024_t351";
 // Two friction angles closer than this are the same (rounding of the closures' identities).
 constexpr double kSameAngle_rad = 1e-9;
-// The deepest cut the transition model was held against: seed 000's Table 6 (0.1 and 0.2 mm).
+// The deepest cut the transition model was held against: Yang et al. 2018's Table 6 (0.1 and 0.2 mm).
 constexpr double kTransitionValidatedDepth_m = 0.2e-3;
 
 /// Shear-plane strain and Oxley's strain-rate estimate for a sharp tool (physics-analytic.md §3).
@@ -88,9 +88,9 @@ DeformationState shear_plane_state_of(const OxleyResult& oxley) {
   return {oxley.shear_plane_strain, oxley.shear_plane_strain_rate_per_s, oxley.shear_plane_temperature_K};
 }
 
-/// Contact lengths (seed 003 Eqs. 1-4) with the prediction's own friction angle. A variant outside its domain
-/// (no positive shear angle or length) is not applicable: its cell stays empty, the guard and a warning say why,
-/// and the rest of the prediction stands.
+/// Contact lengths (Berezvai et al. 2019, Eqs. 1-4) with the prediction's own friction angle. A variant outside its
+/// domain (no positive shear angle or length) is not applicable: its cell stays empty, the guard and a warning say
+/// why, and the rest of the prediction stands.
 void add_contact_lengths(const AnalyticScene& scene, double friction_angle_rad, Prediction& p) {
   const double t0 = scene.uncut_chip_thickness_m;
   for (const auto& request : scene.contact_lengths) {
@@ -107,7 +107,8 @@ void add_contact_lengths(const AnalyticScene& scene, double friction_angle_rad, 
   }
   if (!scene.contact_lengths.empty() && t0 > kContactLengthValidatedThickness_m &&
       scene.material->name == kContactLengthValidatedMaterial) {
-    p.warnings.push_back("contact-length models were validated up to h = 0.1 mm (seed 003: chip segmentation above)");
+    p.warnings.push_back(
+        "contact-length models were validated up to h = 0.1 mm (Berezvai et al. 2019: chip segmentation above)");
   }
 }
 

@@ -225,7 +225,7 @@ std::span<const std::string_view> contact_length_names() {
 
 NameListField<AnalyticScene> contact_length_field() {
   return {"contact_length", contact_length_names(),
-          "contact-length columns `contact_length_<name>_mm` (seed 003); a name without a suffix uses "
+          "contact-length columns `contact_length_<name>_mm` (Berezvai et al. 2019); a name without a suffix uses "
           "`contact_shear_angle`",
           [](const AnalyticScene& s) {
             std::vector<std::string> names;
@@ -258,7 +258,7 @@ NameListField<AnalyticScene> contact_length_field() {
 const FieldTable<AnalyticScene>& models_fields() {
   static const FieldTable<AnalyticScene> table{
       force_field(),
-      NameListField<AnalyticScene>{"flow_stress", registry_names("flow_stress"), "the terms of seed 001 Eq. 8 to add, or one "
+      NameListField<AnalyticScene>{"flow_stress", registry_names("flow_stress"), "the terms of Shao et al. 2013's Eq. 8 to add, or one "
                                    "hardness term for a glass or ceramic (the default for a material with a hardness "
                                    "and no johnson_cook group: hardness with its constraint factor, else hardness_marsh)",
                                    [](const AnalyticScene& s) { return s.flow_stress_terms; },
@@ -360,7 +360,7 @@ void parse_friction(const CutKeys& keys, ObjectReader& cut, ObjectReader& root, 
     if (scene.friction_angle_rad) {
       throw InputError("measured", "(given)", "measured forces or a friction value in cut, not both");
     }
-    // seed 003, Section 2: beta = atan(F_z / F_x) + rake
+    // Berezvai et al. 2019, Section 2: beta = atan(F_z / F_x) + rake
     scene.friction_angle_rad = std::atan2(forces.thrust_force_N, forces.cutting_force_N) + scene.rake_rad;
     scene.friction_origin = "measured forces";
   }
@@ -378,8 +378,8 @@ const std::vector<SceneKeySection>& key_sections() {
          "is chip area / thickness",
          [] { return fields_markdown(turning_fields()); }},
         {"measured",
-         "optional, top level: the friction angle is then beta = atan(F_thrust / F_cutting) + rake (seed 003), in "
-         "place of a friction value in `cut`",
+         "optional, top level: the friction angle is then beta = atan(F_thrust / F_cutting) + rake (Berezvai et al. "
+         "2019), in place of a friction value in `cut`",
          [] { return fields_markdown(measured_fields()); }},
         {"models", "the models to run; besides these, the objects `quadrature`, `transition` and `flow_stress_policy`",
          [] { return fields_markdown(models_fields()); }},

@@ -1,4 +1,4 @@
-// The trepanning scene kind (models.force = trepanning, seed 002): trepanning_scene.hpp parses it,
+// The trepanning scene kind (models.force = trepanning, Yu et al. 2023): trepanning_scene.hpp parses it,
 // trepanning.hpp predicts it; this file puts it behind the AnalyticCase interface (evaluate.hpp) with its CSV
 // row and report.
 #include <fmt/format.h>
@@ -66,7 +66,7 @@ class TrepanningCase final : public AnalyticCase {
     const TrepanningForces& forces = forces_.value();
     fmt::print(text, "scene             {}\n", scene_path);
     fmt::print(text, "material          {} ({})\n", scene_.material.name, scene_.material.title);
-    fmt::print(text, "force model       trepanning (seed 002 Eqs. 21-22, brittle regime)\n");
+    fmt::print(text, "force model       trepanning (Yu et al. 2023, Eqs. 21-22, brittle regime)\n");
     fmt::print(text, "tool              outer diameter {:.6g} mm, inner diameter {:.6g} mm\n",
                units::m_to_mm(scene_.tool.outer_diameter_m), units::m_to_mm(scene_.tool.inner_diameter_m));
     fmt::print(text, "cut               feed rate {:.6g} um/s, spindle speed {:.6g} rpm ({:.6g} um/rev)\n",
@@ -93,8 +93,8 @@ class TrepanningCase final : public AnalyticCase {
   bool fits_lumped_groups() const override { return true; }
 
   void print_regime(std::FILE* text, const std::string& scene_path) const override {
-    fmt::print(text, "{}: the trepanning model is a brittle-regime model (seed 002); the depth each grit cuts depends "
-               "on the grit density, which the scene does not give\n", scene_path);
+    fmt::print(text, "{}: the trepanning model is a brittle-regime model (Yu et al. 2023); the depth each grit cuts "
+               "depends on the grit density, which the scene does not give\n", scene_path);
   }
 
  private:

@@ -22,7 +22,7 @@ const Unit kNewtonMetre{"N·m", "N_m", 1.0};
 
 ComparisonSpec trepanning_spec(const TrepanningTool& tool) {
   ComparisonSpec spec;
-  spec.title = "K9 glass, fixed-abrasive trepanning drill: axial force and torque (seed 002, Table 4)";
+  spec.title = "K9 glass, fixed-abrasive trepanning drill: axial force and torque (Yu et al. 2023, Table 4)";
   spec.description = fmt::format(
       "Eqs. 21–22 of Yu et al. (2023) for a diamond trepanning drill of outer diameter {} mm and inner diameter "
       "{} mm, against the measured axial force and torque (each the mean of two tests). The model's two lumped "

@@ -7,7 +7,7 @@
 #   bash scripts/dem-refcheck.sh OLD_BIN_DIR NEW_BIN_DIR OUT_DIR [--skip-compression]
 #
 # BIN_DIR holds kerf-dem (e.g. build/tools of a worktree of the commit before the change). Cases: the first
-# 0.04 mm of the seed-000 cut (regular 0.1 mm, trapezoidal-grooved 0.2 mm), the first 0.2 mm of the bundled
+# 0.04 mm of the Yang et al. 2018 cut (regular 0.1 mm, trapezoidal-grooved 0.2 mm), the first 0.2 mm of the bundled
 # steady-state cut (active window), the first 0.8 mm of the same cut without a window on a 1.5 mm workpiece
 # (fragments fly off undamped: the neighbour search's strays), the bundled tension and
 # compression scenes (2 threads), the tiny calibration of tests/cli/dem_calibrate_cli.sh. About 5 min on

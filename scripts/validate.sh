@@ -10,7 +10,7 @@
 #                                                 # (18 kerf-dem cuts, 19-35 min on 2 cores; rerunning
 #                                                 # reuses the replicates already finished),
 #                                                 # soda_lime_cutting_cut_fitted (12 cuts, 13-34 min) or
-#                                                 # soda_lime_cutting_steady (the seed-000 study's record:
+#                                                 # soda_lime_cutting_steady (the Yang et al. 2018 study's record:
 #                                                 # kerf-dem study data/studies/seed000_steady.json runs the
 #                                                 # cuts not yet recorded, 14-23 CPU-hours from nothing, then
 #                                                 # validation/soda_lime_cutting_steady/trends.py --report, with

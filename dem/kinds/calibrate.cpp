@@ -191,8 +191,8 @@ std::vector<std::string> log_row(const CalibrationEvaluation& e, bool toughness)
 void print_evaluation(const CalibrationEvaluation& e, bool toughness) {
   const CalibratedParams m = calibrated_params(e.material);
   std::cout << fmt::format(
-      "evaluation {}: E* {:.2f} GPa, kappa {:.3f}, sigma_c {:.1f} MPa, c {:.1f} MPa -> E {:.2f} GPa, "
-      "nu {:.3f}, sigma_t {:.1f} MPa, sigma_C {:.1f} MPa (max error {:.1f} %, {:.0f} s{})\n",
+      "evaluation {}: E* {:.2f} GPa, kappa {:.3f}, joint tensile strength {:.1f} MPa, joint cohesion {:.1f} MPa -> "
+      "E {:.2f} GPa, nu {:.3f}, sigma_t {:.1f} MPa, sigma_c {:.1f} MPa (max error {:.1f} %, {:.0f} s{})\n",
       e.index, units::pa_to_gpa(m.contact_modulus_pa), m.stiffness_ratio, units::pa_to_mpa(m.tensile_strength_pa),
       units::pa_to_mpa(m.cohesion_pa), units::pa_to_gpa(e.macro.youngs_modulus_pa), e.macro.poissons_ratio,
       units::pa_to_mpa(e.macro.tensile_strength_pa), units::pa_to_mpa(e.macro.compressive_strength_pa),
@@ -361,7 +361,7 @@ namespace kerf::dem::kinds {
 std::string calibrate_keys_markdown() {
   return fields_markdown(calibration_fields()) +
          fields_markdown(material_output_fields(), {"calibrated", false}, false) +
-         "| `targets` | - | an object | seed 000 Table 2 | the macro-properties to meet (`calibration.targets`) |\n"
+         "| `targets` | - | an object | Yang et al. 2018, Table 2 | the macro-properties to meet (`calibration.targets`) |\n"
          "| `toughness` | - | an object | none | the fifth test, K_IC on a notched beam (`calibration.toughness`) |\n";
 }
 

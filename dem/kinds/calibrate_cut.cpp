@@ -89,7 +89,8 @@ class CalibrateCutKind final : public SceneKind {
       e.material = scale_bond_strengths(common.material, s, fmt::format("{}_bond_strength_x{:.6g}", common.material.name, s));
       const fs::path dir = out / fmt::format("evaluation_{}", k);
       fs::create_directories(dir);
-      std::cout << fmt::format("evaluation {}: bond strengths x {:.4g} (sigma_c {:.2f} MPa, c {:.2f} MPa), {} replicates\n",
+      std::cout << fmt::format("evaluation {}: bond strengths x {:.4g} (joint tensile strength {:.2f} MPa, joint "
+                               "cohesion {:.2f} MPa), {} replicates\n",
                                k, s, units::pa_to_mpa(calibrated_params(e.material).tensile_strength_pa),
                                units::pa_to_mpa(calibrated_params(e.material).cohesion_pa), fit.replicates)
                 << std::flush;
@@ -135,10 +136,10 @@ class CalibrateCutKind final : public SceneKind {
     named.name = output_.name;  // factor 1 keeps the base's name
     const double sem = evaluations[best]["main_force_replicate_std_N"].get<double>() / std::sqrt(fit.replicates);
     const std::string description = fmt::format(
-        "{} with both bond strengths (sigma_c, c) x {:.4g}, fitted by kerf-dem calibrate_cut to a mean main force of "
-        "{:.4g} N{} ({} evaluations, {}converged: {:.4g} +- {:.2g} N, mean +- standard error over {} packings) on the "
-        "cut: depth {:g} mm, speed {:g} m/s, travel {:g} mm, rake {:g} deg, grooves {}. The macro strengths scale by the "
-        "same factor (exact trend), E and nu are those of the base material.",
+        "{} with both bond strengths (joint tensile strength and cohesion) x {:.4g}, fitted by kerf-dem calibrate_cut "
+        "to a mean main force of {:.4g} N{} ({} evaluations, {}converged: {:.4g} +- {:.2g} N, mean +- standard error "
+        "over {} packings) on the cut: depth {:g} mm, speed {:g} m/s, travel {:g} mm, rake {:g} deg, grooves {}. The "
+        "macro strengths scale by the same factor (exact trend), E and nu are those of the base material.",
         common.material.name, b.strength_factor, fit.target_main_force_n,
         fit.target_source.empty() ? "" : " (" + fit.target_source + ")", history.size(), converged ? "" : "NOT ",
         b.main_force_n, sem, fit.replicates, units::m_to_mm(cut_.depth_of_cut_m), cut_.speed_m_per_s,

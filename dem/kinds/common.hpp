@@ -134,7 +134,7 @@ MaterialOutput read_material_output(ObjectReader& calibration, const std::string
 /// Writes the fitted material to OUT/<name>.json and, with install, to the data directory (summary notes it).
 void write_material_output(const MaterialOutput& output, const Json& material, const fs::path& out, Json& summary);
 
-/// Seed 000 Section 4 repeats each cut on `replicates` packings: replicate k uses packing seed specimen.seed +
+/// Yang et al. 2018, Section 4 repeats each cut on `replicates` packings: replicate k uses packing seed specimen.seed +
 /// k. They run as a study of one condition (`cut_scene`, a scene of kind cut, with replicates) into
 /// OUT/replicates (items/condition_1_seed_S/ each; finished ones reused on a rerun); OUT/summary.json has the
 /// per-replicate results and their mean and (sample) standard deviation. `summary` is the head every summary

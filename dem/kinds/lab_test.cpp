@@ -1,4 +1,4 @@
-// Scene kinds "tension" and "compression": the calibration tests of seed 000 Section 3 on a specimen, with
+// Scene kinds "tension" and "compression": the calibration tests of Yang et al. 2018's Section 3 on a specimen, with
 // the quasi-static check (the same test at half the speed), checkpoints and VTK frames.
 #include <fmt/format.h>
 

@@ -197,7 +197,7 @@ std::string cracks_table(const std::vector<CrackEvent>& cracks, const double* y_
                                  csv_number(units::rad_to_deg(c.orientation_rad)), csv_number(units::m_to_um(c.length_m)),
                                  c.mode == BreakMode::tension ? "tension" : "shear", std::to_string(c.bond),
                                  std::to_string(c.element)};
-    // Orthogonal cutting (seed 000 Section 4): chip above the cut line, subsurface on or below it.
+    // Orthogonal cutting (Yang et al. 2018, Section 4): chip above the cut line, subsurface on or below it.
     if (y_cut_m) row.push_back(crack_place(c.y_m, *y_cut_m));
     out += csv_line(row);
   }

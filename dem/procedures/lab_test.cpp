@@ -1,4 +1,4 @@
-// Tension and compression tests (seed 000, Section 3; physics-dem.md section 3).
+// Tension and compression tests (Yang et al. 2018, Section 3; physics-dem.md section 3).
 #include "kerf/dem/procedures/lab_test.hpp"
 
 #include <algorithm>

@@ -45,7 +45,7 @@ const FieldTable<ToughnessSpec>& toughness_fields() {
                    &T::peak_window_m),
       number_field("youngs_modulus_GPa", units::kGPa, Range::positive(),
                    "E' of the 2D model for the check K_IC^2 / E' against G_c: the glass's calibrated in-plane E "
-                   "(seed 000 Table 2 for the shipped glasses)",
+                   "(Yang et al. 2018, Table 2 for the shipped glasses)",
                    &T::youngs_modulus_pa),
       int_field("sample_every_steps", 1, 1000000, "steps per curve sample", &T::sample_every_steps),
       bool_field("quasi_static_check", "rerun at half the speed and report the change of the peak load",

@@ -3,7 +3,7 @@
 // predicted values, which columns are the conditions and quantities, their units, the width bases and views.
 //
 //   {
-//     "title": "Soda-lime glass: experiment vs the paper's DEM (seed 000)",
+//     "title": "Soda-lime glass: experiment vs the paper's DEM (Yang et al. 2018)",
 //     "conditions": [{"key": "surface", "label": "Surface", "text": true},
 //                    {"key": "depth_of_cut", "label": "Depth of cut a#dc#u", "unit": "mm"}],
 //     "quantities": [{"key": "main_force", "label": "Main force F#dc#u", "unit": "N"}],

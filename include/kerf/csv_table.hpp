@@ -3,7 +3,7 @@
 // source (citation) of the data. The comments are kept so that a report can quote them.
 //
 //   kerf::CsvTable t = kerf::read_csv_file("data/experiments/k9_trepanning.csv");
-//   t.comments[1];                                  // "Source: seed 002_..., Table 4 (...)"
+//   t.comments[1];                                  // "Source: Yu et al. 2023, Table 4 (...)"
 //   std::size_t col = t.column_index("torque_test_Nm");
 //   double m = t.number(0, col);                    // 4.63
 //   // a bad cell: InputError "k9_trepanning.csv:7: column 4 'torque_test_Nm' = abc: expected a number"

@@ -1,7 +1,7 @@
 #pragma once
 // Agreement metrics between predictions and measurements, in percent of the measurement.
 //
-// The per-row error is e_i = (predicted_i - measured_i) / measured_i (the sign convention of seed 002's
+// The per-row error is e_i = (predicted_i - measured_i) / measured_i (the sign convention of Yu et al. 2023's
 // Table 4: positive when the model over-predicts). Over n rows:
 //   mean |error| = sum |e_i| / n,  max |error| = max |e_i|,  bias = sum e_i / n,  rms = sqrt(sum e_i^2 / n).
 //

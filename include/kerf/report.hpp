@@ -8,7 +8,7 @@
 // whether the prediction lies inside mean +- 1 SD (and +- 2 SD). Per quantity: n, mean |error|, max |error|,
 // bias (mean signed error), all relative to the measured (group) mean, in percent (metrics.hpp).
 //
-// Width basis: every force carries one — a total force over a stated width (seed 000's experiments: 25.4 mm;
+// Width basis: every force carries one — a total force over a stated width (Yang et al. 2018's experiments: 25.4 mm;
 // its 2D DEM: 1 mm) or a force per unit width. Comparing forces whose bases differ needs an explicit choice;
 // ComparisonSpec::views asks for the direct comparison as published, the per-unit-width one, or both.
 //

@@ -13,7 +13,7 @@ using kerf::ContactLengthModel;
 using kerf::ShearAngleModel;
 using kerf::units::deg_to_rad;
 
-TEST_CASE("Seed 003: with the MSSP shear angle Altintas equals Vinogradov", "[contact_length]") {
+TEST_CASE("Berezvai et al. 2019: with the MSSP shear angle Altintas equals Vinogradov", "[contact_length]") {
   for (double rake_deg : {-10.0, 0.0, 15.0}) {
     for (double beta_deg : {15.0, 30.0, 40.0}) {
       const double a = deg_to_rad(rake_deg), beta = deg_to_rad(beta_deg), h = 0.1e-3;
@@ -25,7 +25,7 @@ TEST_CASE("Seed 003: with the MSSP shear angle Altintas equals Vinogradov", "[co
   }
 }
 
-TEST_CASE("Seed 003: Lee-Shaffer is twice Vinogradov for any shear angle", "[contact_length]") {
+TEST_CASE("Berezvai et al. 2019: Lee-Shaffer is twice Vinogradov for any shear angle", "[contact_length]") {
   for (double phi_deg : {10.0, 25.0, 40.0, 55.0}) {
     const double phi = deg_to_rad(phi_deg), a = deg_to_rad(15.0), beta = deg_to_rad(30.0);
     CHECK_THAT(kerf::contact_length(ContactLengthModel::lee_shaffer, 0.05e-3, phi, beta, a),
@@ -33,7 +33,8 @@ TEST_CASE("Seed 003: Lee-Shaffer is twice Vinogradov for any shear angle", "[con
   }
 }
 
-TEST_CASE("Contact length is proportional to chip thickness and MSSP exceeds MEP as seed 003 reports", "[contact_length]") {
+TEST_CASE("Contact length is proportional to chip thickness and MSSP exceeds MEP as Berezvai et al. 2019 reports",
+          "[contact_length]") {
   const double a = deg_to_rad(15.0), beta = deg_to_rad(35.0);
   const double phi_mep = kerf::shear_angle(ShearAngleModel::merchant, a, beta);
   const double phi_mssp = kerf::shear_angle(ShearAngleModel::lee_shaffer, a, beta);

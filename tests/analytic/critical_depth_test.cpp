@@ -44,7 +44,7 @@ TEST_CASE("Regime: ductile below d_c, transition up to 3 d_c, brittle beyond", "
   CHECK(kerf::classify_regime(36e-9, dc) == kerf::CuttingRegime::transition);
   CHECK(kerf::classify_regime(100e-9, dc) == kerf::CuttingRegime::transition);
   CHECK(kerf::classify_regime(108e-9, dc) == kerf::CuttingRegime::brittle);
-  // Seed 000 cuts soda-lime glass 0.1 mm deep: deep in the brittle regime.
+  // Yang et al. 2018 cuts soda-lime glass 0.1 mm deep: deep in the brittle regime.
   CHECK(kerf::classify_regime(0.1e-3, dc) == kerf::CuttingRegime::brittle);
   // No band: a sharp switch at d_c.
   CHECK(kerf::classify_regime(36e-9, dc, {.brittle_factor = 1.0}) == kerf::CuttingRegime::brittle);

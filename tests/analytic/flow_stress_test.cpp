@@ -29,7 +29,7 @@ kerf::DislocationParams sic_dislocation(double spacing_m) {
 }
 }  // namespace
 
-TEST_CASE("Hall-Petch coefficient follows seed 001 Eqs. 10-11", "[hall_petch]") {
+TEST_CASE("Hall-Petch coefficient follows Shao et al. 2013, Eqs. 10-11", "[hall_petch]") {
   const auto hp = sic_hall_petch(5e-6);
   const double tau_b = 0.057 * 180e9;
   const double expected = 3.06 * std::sqrt(tau_b * 4.0 * 180e9 * 0.308e-9 / ((1.0 - 0.14) * std::numbers::pi));
@@ -55,7 +55,7 @@ TEST_CASE("Grains below the critical size cap the microstructural terms and fire
   CHECK(guards.has(Guard::boundary_spacing_below_critical));
 }
 
-TEST_CASE("Dislocation strengthening follows seed 001 Eqs. 4-6", "[dislocation]") {
+TEST_CASE("Dislocation strengthening follows Shao et al. 2013, Eqs. 4-6", "[dislocation]") {
   const auto d = sic_dislocation(1e-6);
   const double rho = 3.0 * d.misorientation_rad / (1e-6 * 0.308e-9);
   CHECK_THAT(kerf::dislocation_stress(d, nullptr), WithinRel(3.06 * 0.24 * 180e9 * 0.308e-9 * std::sqrt(rho), 1e-14));

@@ -8,7 +8,7 @@
 using Catch::Matchers::WithinRel;
 
 TEST_CASE("Round-nose chip: area, edge length and thicknesses", "[round_nose]") {
-  // Seed 001's turning: f = 0.25 um/rev, R = 0.5 mm.
+  // Shao et al. 2013's turning: f = 0.25 um/rev, R = 0.5 mm.
   const kerf::RoundNoseTurning turn{.feed_m_per_rev = 0.25e-6, .nose_radius_m = 0.5e-3, .depth_of_cut_m = 10e-6};
   const auto chip = kerf::round_nose_chip(turn, nullptr);
   CHECK_THAT(chip.area_m2, WithinRel(2.5e-12, 1e-14));

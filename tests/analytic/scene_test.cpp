@@ -74,7 +74,7 @@ TEST_CASE("Merchant and Liu-Li agree for a sharp edge", "[scene]") {
   CHECK_THAT(liu_li.thrust_force_N, WithinRel(merchant.thrust_force_N, 1e-12));
 }
 
-TEST_CASE("Friction from measured forces follows seed 003", "[scene]") {
+TEST_CASE("Friction from measured forces follows Berezvai et al. 2019", "[scene]") {
   auto doc = orthogonal_scene();
   doc["cut"].erase("friction_coefficient");
   doc["tool"]["rake_deg"] = 15.0;
@@ -109,7 +109,7 @@ TEST_CASE("A turning scene cuts the equivalent chip over the engaged edge", "[sc
   REQUIRE(scene.turning.has_value());
   CHECK_THAT(scene.width_m, WithinRel(scene.turning->chip.engaged_edge_length_m, 1e-12));
   CHECK_THAT(scene.uncut_chip_thickness_m * scene.width_m, WithinRel(0.25e-6 * 10e-6, 1e-12));
-  // Forces rise with depth of cut (seed 001 Figs. 4-5). A 5 nm edge keeps the ploughed layer (about 1 nm)
+  // Forces rise with depth of cut (Shao et al. 2013, Figs. 4-5). A 5 nm edge keeps the ploughed layer (about 1 nm)
   // below the equivalent chip thickness of the shallowest cut (about 6 nm).
   doc["tool"]["edge_radius_um"] = 0.005;
   double previous = 0.0;
@@ -238,7 +238,7 @@ Json a2024_scene() {
     "models": {"force": "liu_li", "flow_stress": ["johnson_cook"]}
   })");
 }
-// Merchant's force circle (seed 003; physics-analytic.md section 2) at the prediction's own phi and beta.
+// Merchant's force circle (Berezvai et al. 2019; physics-analytic.md section 2) at the prediction's own phi and beta.
 double merchant_cutting_force(const kerf::Prediction& p, double rake_rad) {
   const double phi = p.shear_angle_rad, beta = p.friction_angle_rad;
   return p.flow.shear_Pa * p.uncut_chip_thickness_m * p.width_m * std::cos(beta - rake_rad) /
@@ -286,12 +286,12 @@ TEST_CASE("Issue 22 reproducer 1: a measured chip ratio with the Merchant closur
   doc["models"]["contact_length"] = Json::array({"altintas_mep"});
   const auto p = kerf::predict(kerf::parse_analytic_scene(doc));
   const double phi = std::atan2(0.5 * std::cos(kerf::units::deg_to_rad(15.0)),
-                                1.0 - 0.5 * std::sin(kerf::units::deg_to_rad(15.0)));  // seed 001 Eq. 3
+                                1.0 - 0.5 * std::sin(kerf::units::deg_to_rad(15.0)));  // Shao et al. 2013, Eq. 3
   const double beta = std::numbers::pi / 2.0 + kerf::units::deg_to_rad(15.0) - 2.0 * phi;
   CHECK_THAT(kerf::units::rad_to_deg(p.friction_angle_rad), WithinAbs(46.96, 0.01));  // the issue's 46.96 deg
   CHECK_THAT(p.friction_angle_rad, WithinRel(beta, 1e-12));
   CHECK_THAT(p.thrust_force_N / p.cutting_force_N, WithinRel(std::tan(beta - kerf::units::deg_to_rad(15.0)), 1e-12));
-  // The contact length uses it too: Altintas (seed 003 Eq. 1) with the MEP shear angle of beta.
+  // The contact length uses it too: Altintas (Berezvai et al. 2019, Eq. 1) with the MEP shear angle of beta.
   const double a = kerf::units::deg_to_rad(15.0), phi_mep = std::numbers::pi / 4.0 - (beta - a) / 2.0;
   REQUIRE(p.contact_lengths_m.size() == 1);
   CHECK_THAT(*p.contact_lengths_m[0].second,
@@ -430,12 +430,12 @@ TEST_CASE("Oxley mode reports its own friction angle and the contact lengths fro
   // lambda = theta + a - phi, and F_t / F_c = tan(lambda - a) (Oxley's force circle, O 6).
   const double a = kerf::units::deg_to_rad(-7.0);
   CHECK_THAT(p.thrust_force_N / p.cutting_force_N, WithinRel(std::tan(p.friction_angle_rad - a), 1e-9));
-  const double phi_mep = std::numbers::pi / 4.0 - (p.friction_angle_rad - a) / 2.0;  // seed 003 Eq. 4
+  const double phi_mep = std::numbers::pi / 4.0 - (p.friction_angle_rad - a) / 2.0;  // Berezvai et al. 2019, Eq. 4
   REQUIRE(p.contact_lengths_m.size() == 2);
   CHECK_THAT(*p.contact_lengths_m[1].second,
              WithinRel(150e-6 * std::sin(phi_mep + p.friction_angle_rad - a) /
                            (std::sin(phi_mep) * std::cos(p.friction_angle_rad)),
-                       1e-12));  // altintas_mep, seed 003 Eq. 1
+                       1e-12));  // altintas_mep, Berezvai et al. 2019, Eq. 1
 }
 
 TEST_CASE("Oxley without a physical solution is a model failure naming why", "[scene][oxley][issue22]") {

@@ -13,7 +13,7 @@ using Catch::Matchers::WithinRel;
 
 namespace {
 
-// Seed 002, Table 4: K9 glass, D = 132 mm, d = 124 mm. Measured (mean of two tests) and the paper's theory.
+// Yu et al. 2023, Table 4: K9 glass, D = 132 mm, d = 124 mm. Measured (mean of two tests) and the paper's theory.
 struct Table4Row {
   double spindle_speed_rpm, feed_rate_um_s, axial_test_N, torque_test_Nm, axial_theory_N, torque_theory_Nm;
 };

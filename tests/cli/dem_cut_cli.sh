@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# kerf-dem kind "cut" (orthogonal cutting, seed 000 Section 4): bad cut parameters exit 2 naming the key;
+# kerf-dem kind "cut" (orthogonal cutting, Yang et al. 2018, Section 4): bad cut parameters exit 2 naming the key;
 # a small cut writes forces.csv, cracks.csv (with place), summary.json, frames and a PNG; the grooved
 # scene removes disks; a rerun gives identical forces, on one thread or a team of two.
 # Usage: dem_cut_cli.sh <dir of built programs> <source dir>

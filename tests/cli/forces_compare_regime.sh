@@ -19,7 +19,7 @@ for key, band in (("axial_force", 5.0), ("torque", 6.7)):
     for field in ("n", "mean_abs_error_percent", "max_abs_error_percent", "bias_percent"):
         assert field in q[key], (key, field)
     assert q[key]["n"] == 8
-    assert q[key]["mean_abs_error_percent"] <= band, (key, q[key]["mean_abs_error_percent"])  # seed 002's own figures
+    assert q[key]["mean_abs_error_percent"] <= band, (key, q[key]["mean_abs_error_percent"])  # Yu et al. 2023's own figures
 assert s["extra"]["fit"]["axial_force"]["loo_mean_abs_error_percent"] > q["axial_force"]["mean_abs_error_percent"]
 print("compare checks passed")
 PY
@@ -59,7 +59,7 @@ grep -q ",brittle," "$tmp/b.csv" || fail "the CSV regime column must say brittle
 python3 - "$tmp/soda/summary.json" <<'PY' || exit 1
 import json, sys
 q = json.load(open(sys.argv[1]))["quantities"]
-# Seed 000: the paper's DEM (1 mm) against experiments (25.4 mm); both views must be reported.
+# Yang et al. 2018: the paper's DEM (1 mm) against experiments (25.4 mm); both views must be reported.
 assert {"main_force", "main_force_per_width", "thrust_force", "thrust_force_per_width"} <= set(q), q.keys()
 print("report checks passed")
 PY

@@ -165,7 +165,7 @@ sed -i 's/"surface": "grooved"/"surface": "polished"/' "$case_dir/validation.jso
 "$validate" soda_lime_cutting "$work/bad" >"$work/log" 2>&1
 [ $? -eq 2 ] || fail "bad surface did not exit 2"
 grep -q "validation.conditions\[1\].surface" "$work/log" || fail "error does not name the field: $(cat "$work/log")"
-# The steady case is not run by run_validation: its acceptance is the seed-000 study's record, and the error says
+# The steady case is not run by run_validation: its acceptance is the Yang et al. 2018 study's record, and the error says
 # where to go (one line, exit 2).
 "$validate" soda_lime_cutting_steady "$work/steady" >"$work/log" 2>&1
 [ $? -eq 2 ] || fail "soda_lime_cutting_steady did not exit 2"

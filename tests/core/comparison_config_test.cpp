@@ -20,7 +20,7 @@ std::string field_of(const kerf::Json& doc) {
 }
 }  // namespace
 
-TEST_CASE("The bundled seed-000 comparison reads and compares in both width views", "[comparison_config]") {
+TEST_CASE("The bundled Yang et al. 2018 comparison reads and compares in both width views", "[comparison_config]") {
   const auto cfg = kerf::read_comparison_config(kFile);
   CHECK(cfg.measured.rows.size() == 12);
   REQUIRE(cfg.predictions.size() == 1);

@@ -17,7 +17,7 @@ TEST_CASE("Error metrics on hand-made data are exact", "[metrics]") {
   CHECK_THAT(m.max_abs_error_percent, WithinRel(25.0, 1e-14));
   CHECK_THAT(m.bias_percent, WithinRel(6.25, 1e-14));
   CHECK_THAT(m.rms_error_percent, WithinRel(std::sqrt(825.0 / 4.0), 1e-14));
-  // The sign convention of seed 002's Table 4: (theory - test) / test.
+  // The sign convention of Yu et al. 2023's Table 4: (theory - test) / test.
   CHECK_THAT(kerf::relative_error_percent(220.1, 210.5), WithinAbs(4.56, 0.005));
   CHECK_THAT(kerf::relative_error_percent(5.32, 4.63), WithinAbs(14.90, 0.005));
 }

@@ -42,8 +42,8 @@ double energy(const Simulation& sim) {
   return sim.kinetic_energy() + sim.stored_elastic_energy();
 }
 
-/// The inner lines of a cut workpiece's held rows, from the specimen itself (seed 000 Section 4: centres within
-/// two largest radii of the left side or the bottom).
+/// The inner lines of a cut workpiece's held rows, from the specimen itself (Yang et al. 2018, Section 4: centres
+/// within two largest radii of the left side or the bottom).
 HeldRows held_rows_of_specimen(const Simulation& specimen) {
   const auto& p = specimen.particles();
   double x_min = 1e300, y_min = 1e300, r_max = 0;

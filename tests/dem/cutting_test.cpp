@@ -1,4 +1,4 @@
-// Orthogonal cutting (seed 000 Section 4): groove and tool geometry, force sign convention, parameter
+// Orthogonal cutting (Yang et al. 2018, Section 4): groove and tool geometry, force sign convention, parameter
 // validation, and a small cut as a regression (forces, cracks, determinism, grooves).
 #include "kerf/dem/procedures/cutting.hpp"
 
@@ -29,7 +29,7 @@ CutParams grooved(GrooveShape shape) {
   return p;
 }
 
-/// A small random specimen with the seed-000 workpiece's disk radii (10-13 um), default material.
+/// A small random specimen with the Yang et al. 2018 workpiece's disk radii (10-13 um), default material.
 using kerf::dem::testing::quick_workpiece_specimen;
 
 double angle_deg(const std::array<double, 2>& a, const std::array<double, 2>& b) {

@@ -30,7 +30,7 @@ inline Material conservative_material() {
   return m;
 }
 
-/// A small random specimen with the seed-000 workpiece's disk radii (10-13 um), default material.
+/// A small random specimen with the Yang et al. 2018 workpiece's disk radii (10-13 um), default material.
 inline Simulation quick_workpiece_specimen(double width_m, double height_m, std::uint64_t seed) {
   SpecimenSpec spec = quick_random_spec(width_m, height_m, seed);
   spec.radius_min_m = 10e-6;

@@ -141,7 +141,7 @@ TEST_CASE("scene: field tables read the struct's defaults, check ranges and roun
 }
 
 TEST_CASE("scene: small cut regression through run_scene", "[scene][regression]") {
-  // A miniature of the seed-000 validation cut (2 s on one thread). Reference forces and crack counts with
+  // A miniature of the Yang et al. 2018 validation cut (2 s on one thread). Reference forces and crack counts with
   // their tolerance; regenerate with KERF_REGENERATE_REFERENCE=1 build/tests/kerf_dem_tests '[regression]'.
   const std::string file = std::string(KERF_SOURCE_DIR) + "/tests/dem/reference/cut_small.json";
   const Json scene = Json::parse(R"({"kind": "cut", "material": {"base": "soda_lime_glass_fj"},

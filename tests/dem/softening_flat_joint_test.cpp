@@ -33,7 +33,7 @@ SofteningFlatJointParams softening(double fracture_energy_j_per_m2, int n_elemen
 }
 
 /// Joints of a glass whose elements fail in tension more than in shear (as the calibrated glasses: c about 5
-/// sigma_c), unlike seed 000's Table 1 (c = 113 MPa against sigma_c = 200 MPa), whose random specimens break in
+/// sigma_c), unlike Yang et al. 2018's Table 1 (c = 113 MPa against sigma_c = 200 MPa), whose random specimens break in
 /// shear before any element reaches its tensile strength.
 SofteningFlatJointParams glass(double fracture_energy_j_per_m2) {
   SofteningFlatJointParams p = softening(fracture_energy_j_per_m2);

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The shipped glasses, pinned (issue 20 items 4 and 5): the bundled tension and compression scenes of the seed
 # specimen (data/scenes/dem_tension.json, dem_compression.json) with each calibrated glass shipped, as it was
-# calibrated, must meet seed 000's Table 2 (data/experiments/soda_lime_properties.csv, row soda_lime_glass): E, nu
+# calibrated, must meet Yang et al. 2018's Table 2 (data/experiments/soda_lime_properties.csv, row soda_lime_glass): E, nu
 # (compression), sigma_t (tension), sigma_c (compression), each within 3 %, the calibration's tolerance:
 #   - soda_lime_glass_fj: local damping 0.7, the scenes' 0.05 m/s and radii 7.5-10 um, packing seed 1;
 #   - soda_lime_glass_fj_undamped: no damping, 0.025 m/s, radii 7.5-10 um, seed 1;

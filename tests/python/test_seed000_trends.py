@@ -1,4 +1,4 @@
-"""validation/soda_lime_cutting_steady/trends.py: the seed-000 trends, report and acceptance on synthetic records
+"""validation/soda_lime_cutting_steady/trends.py: the Yang et al. 2018 trends, report and acceptance on synthetic records
 with known answers."""
 import csv
 import math

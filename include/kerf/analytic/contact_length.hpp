@@ -1,5 +1,5 @@
 #pragma once
-// Tool-chip contact length models of seed 003 (Eqs. 1-3), for uncut chip thickness h, shear angle phi,
+// Tool-chip contact length models of Berezvai et al. 2019 (Eqs. 1-3), for uncut chip thickness h, shear angle phi,
 // mean friction angle beta and rake a (radians):
 //
 //   L_Alt = h sin(phi + beta - a) / (sin(phi) cos(beta))         Altintas          (Eq. 1)
@@ -7,7 +7,7 @@
 //   L_Lee = 2 h sin(pi/4) / (sin(phi) sin(pi/4 + phi - a))       Lee and Shaffer   (Eq. 3)
 //
 // each with phi from the MSSP or MEP shear-angle relation (Eq. 4). With MSSP, L_Alt = L_Vin exactly, and
-// always L_Lee = 2 L_Vin. Seed 003 validated them for A2024-T351 up to h ~ 0.1 mm; chip segmentation
+// always L_Lee = 2 L_Vin. Berezvai et al. 2019 validated them for A2024-T351 up to h ~ 0.1 mm; chip segmentation
 // above that breaks them.
 //
 //   double L_m = kerf::contact_length(kerf::ContactLengthModel::lee_shaffer, h_m, phi, beta, rake);

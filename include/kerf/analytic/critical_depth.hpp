@@ -5,8 +5,8 @@
 //   d_c = 0.15 (E / H) (K_c / H)^2
 //
 // with Young's modulus E, hardness H and fracture toughness K_c (SI: Pa, Pa, Pa m^0.5 -> m). It is tens of
-// nanometres for glasses and SiC. Below d_c material flows (the ductile analytic models apply, seed 001); well
-// above it material is removed by fracture (the DEM or the brittle trepanning model, seed 002).
+// nanometres for glasses and SiC. Below d_c material flows (the ductile analytic models apply, Shao et al. 2013); well
+// above it material is removed by fracture (the DEM or the brittle trepanning model, Yu et al. 2023).
 //
 // Transition band (kerf's choice, documented in RegimeBand): the coefficient 0.15 is an empirical fit (Bifano
 // et al. chose it so that d_c marks the depth where fracture damage first appears on ground surfaces) and E,

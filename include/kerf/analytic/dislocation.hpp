@@ -1,5 +1,5 @@
 #pragma once
-// Strengthening by incidental dislocation boundaries (Hughes & Hansen; seed 001 Eqs. 4-6):
+// Strengthening by incidental dislocation boundaries (Hughes & Hansen; Shao et al. 2013, Eqs. 4-6):
 //
 //   rho_b = k theta_av / (D_avg b)                    (Eq. 5; theta_av in radians)
 //   sigma_IDB = M alpha G b sqrt(rho_0 + rho_b)        (Eqs. 4 and 6)

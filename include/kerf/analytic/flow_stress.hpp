@@ -1,5 +1,5 @@
 #pragma once
-// The composite flow stress of seed 001 (Eq. 8) and the shear flow stress (Eq. 12):
+// The composite flow stress of Shao et al. 2013 (Eq. 8) and the shear flow stress (Eq. 12):
 //
 //   sigma = sigma_JC(eps, epsdot, T) + K_HP / sqrt(D) + M alpha G b sqrt(k theta_av / (D_avg b))
 //   k_s   = sigma / sqrt(3)

@@ -1,5 +1,5 @@
 #pragma once
-// Hall-Petch strengthening from high-angle (geometrically necessary) boundaries, seed 001:
+// Hall-Petch strengthening from high-angle (geometrically necessary) boundaries, Shao et al. 2013:
 //
 //   sigma_GNB = K_HP / sqrt(D)                                  (Eq. 7)
 //   K_HP      = M sqrt(tau_b 4 G b / ((1 - nu) pi))             (Eq. 10, Nes et al. 2005)

@@ -1,5 +1,5 @@
 #pragma once
-// Johnson-Cook flow stress (seed 001 Eq. 9; seed 003 Eq. 6):
+// Johnson-Cook flow stress (Shao et al. 2013, Eq. 9; Berezvai et al. 2019, Eq. 6):
 //
 //   sigma = (A + B eps^n) (1 + C ln(epsdot / epsdot_0)) (1 - T*^m),   T* = (T - T_room) / (T_melt - T_room)
 //

@@ -1,5 +1,5 @@
 #pragma once
-// The Liu-Li edge-radius force model (seed 001 Eqs. 1-3; Liu & Li 2001).
+// The Liu-Li edge-radius force model (Shao et al. 2013, Eqs. 1-3; Liu & Li 2001).
 //
 // A round edge of radius r: the arc point with local rake gamma_k sits at height r (1 + sin gamma_k) above
 // the lowest point, so a layer dy = r cos(gamma_k) d gamma_k is cut with local rake gamma_k, each layer a

@@ -5,7 +5,7 @@
 //   F_c = k_s t0 cos(beta - a) / (sin(phi) cos(phi + beta - a))
 //   F_t = k_s t0 sin(beta - a) / (sin(phi) cos(phi + beta - a))
 //
-// This is the straight-rake term of seed 001 Eqs. 1-2 and the r -> 0 limit of the Liu-Li model.
+// This is the straight-rake term of Shao et al. 2013's Eqs. 1-2 and the r -> 0 limit of the Liu-Li model.
 //
 //   auto f = kerf::sharp_tool_force_per_width(k_s, t0_m, phi, beta, rake);   // N per m of width
 #include <string>

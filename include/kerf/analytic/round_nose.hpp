@@ -1,5 +1,5 @@
 #pragma once
-// Undeformed chip of a round-nose turning tool (seed 001's experiments: nose radius R = 0.5 mm, feed
+// Undeformed chip of a round-nose turning tool (Shao et al. 2013's experiments: nose radius R = 0.5 mm, feed
 // f = 0.25 um/rev, depth of cut a_p = 0.5-300 um), so a turning scene can be predicted directly.
 //
 // With a_p <= R the chip section is the crescent between two successive passes of the nose arc:

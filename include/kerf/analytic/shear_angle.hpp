@@ -1,10 +1,10 @@
 #pragma once
 // Shear-angle relations of orthogonal cutting (angles in radians; a = rake, beta = mean friction angle).
 //
-//   phi_MEP  = pi/4 - (beta - a) / 2     Merchant, minimum energy           (seed 003 Eq. 4)
-//   phi_MSSP = pi/4 - (beta - a)         Lee-Shaffer / Krystof, max. shear   (seed 003 Eq. 4)
-//   tan phi  = r_c cos a / (1 - r_c sin a)   from the chip ratio r_c = t0 / t_chip  (seed 001 Eq. 3)
-//   beta     = atan(F_thrust / F_cutting) + a                                (seed 003, Section 2)
+//   phi_MEP  = pi/4 - (beta - a) / 2     Merchant, minimum energy           (Berezvai et al. 2019, Eq. 4)
+//   phi_MSSP = pi/4 - (beta - a)         Lee-Shaffer / Krystof, max. shear   (Berezvai et al. 2019, Eq. 4)
+//   tan phi  = r_c cos a / (1 - r_c sin a)   from the chip ratio r_c = t0 / t_chip  (Shao et al. 2013, Eq. 3)
+//   beta     = atan(F_thrust / F_cutting) + a                                (Berezvai et al. 2019, Section 2)
 //
 //   double phi = kerf::shear_angle(kerf::ShearAngleModel::merchant, rake_rad, beta_rad);
 //   double r_c = kerf::chip_ratio_from_shear_angle(phi, rake_rad);

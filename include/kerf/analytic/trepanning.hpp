@@ -1,6 +1,6 @@
 #pragma once
-// Brittle-regime axial force and torque of a fixed-abrasive diamond trepanning drill (seed 002: Yu, Li, Zou &
-// Liang, Micromachines 14 (2023) 1270, Eqs. 1-22; notes in docs/physics-analytic.md §5).
+// Brittle-regime axial force and torque of a fixed-abrasive diamond trepanning drill (Yu, Li, Zou &
+// Liang 2023, Micromachines 14, 1270, Eqs. 1-22; notes in docs/physics-analytic.md §5).
 //
 // Diamond grits on the annular end face (outer diameter D, inner d) indent the work like small cones of half
 // angle phi; material of hardness H is removed by brittle fracture. Summed over all N_c = S C grits (Eq. 2),

@@ -1,5 +1,5 @@
 #pragma once
-// A trepanning scene: the JSON a user writes for models.force = "trepanning" (seed 002), validated into SI.
+// A trepanning scene: the JSON a user writes for models.force = "trepanning" (Yu et al. 2023), validated into SI.
 //
 //   {
 //     "material": "k9_glass",

@@ -1,5 +1,5 @@
 #pragma once
-// The K9 trepanning validation case (validation/k9_trepanning/): seed 002's Table 4 against Eqs. 21-22.
+// The K9 trepanning validation case (validation/k9_trepanning/): Yu et al. 2023's Table 4 against Eqs. 21-22.
 //
 // The case directory holds scene.json (the scene with the calibrated groups), k9_trepanning.csv (Table 4 with
 // its citation), validation.json (column names, weighting, acceptance bands) and a README. The run:

@@ -1,6 +1,6 @@
 #pragma once
 // A kerf-dem scene and its kinds, as a library: what the kerf-dem program runs and what other programs (the
-// seed-000 validation) call directly.
+// Yang et al. 2018 validation) call directly.
 //
 // A scene is a JSON document: "kind" names a scene kind; the sections every kind shares (material,
 // specimen, engine, output) are read here; the kind reads its own (loading, cut/tool/grooves, calibration).

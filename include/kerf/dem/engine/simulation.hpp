@@ -87,7 +87,7 @@ struct CrackEvent {
 };
 
 /// A run (cut or lab test) that would take more time steps than this is an input error: days of computing
-/// on a seed-size workpiece (6x the seed's own 4.23 mm/s over the validation's 0.6 mm of travel), refused
+/// on a paper-size workpiece (6x the paper's own 4.23 mm/s over the validation's 0.6 mm of travel), refused
 /// rather than started as if it could finish.
 inline constexpr double kMaxRunSteps = 1e9;
 

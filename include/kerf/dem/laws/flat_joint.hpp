@@ -24,7 +24,7 @@
 
 namespace kerf::dem {
 
-/// Micro-parameters of the flat joint (docs/physics-dem.md section 1). SI units; the defaults are seed 000's
+/// Micro-parameters of the flat joint (docs/physics-dem.md section 1). SI units; the defaults are Yang et al. 2018's
 /// Table 1.
 struct FlatJointParams {
   static constexpr std::string_view kName = "flat_joint";

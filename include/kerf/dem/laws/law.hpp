@@ -24,7 +24,7 @@ struct BondGeometry {
 
 /// The stiffness and strength every bond law of kerf has (the concept BondLawParams requires it as the member
 /// `bond`), with one field table: what calibration moves and reports, by name, whatever the law. SI; the
-/// defaults are seed 000's Table 1.
+/// defaults are Yang et al. 2018's Table 1.
 struct BondStiffnessStrength {
   double effective_modulus_pa = 107e9;             ///< Ebar*: k_n = Ebar* / (R1 + R2)
   double stiffness_ratio = 3.1;                    ///< kappabar* = k_n / k_s

@@ -2,9 +2,9 @@
 // The micro-parameters of a bonded-particle material, read from JSON with units in the key names.
 //
 //   Material m = read_material(json.at("material"), "material");  // unknown keys are rejected
-//   Material s = read_scene_material(scene_reader);  // a scene's "material", or seed 000 Table 1
+//   Material s = read_scene_material(scene_reader);  // a scene's "material", or Yang et al. 2018, Table 1
 //
-// Keys (all optional, defaults are seed 000 Table 1): the material's own (name, density_kg_per_m3,
+// Keys (all optional, defaults are Yang et al. 2018, Table 1): the material's own (name, density_kg_per_m3,
 // local_damping), contact_model and bond_model (the laws, kerf/dem/laws/contact_laws.hpp; defaults "linear" and
 // "flat_joint"), the keys of the two laws (their field tables; each key belongs to one law: friction_coefficient
 // is the unbonded contact's, residual_friction_coefficient the flat joint's), and base (name of a file
@@ -41,7 +41,7 @@ struct Material {
 /// group the other keys override.
 Material read_material(const Json& object, const std::string& path);
 
-/// A scene's "material" object, or the defaults (seed 000 Table 1) when the scene has none: what kerf-dem
+/// A scene's "material" object, or the defaults (Yang et al. 2018, Table 1) when the scene has none: what kerf-dem
 /// and the cut benchmark's --scene read.
 Material read_scene_material(ObjectReader& scene);
 

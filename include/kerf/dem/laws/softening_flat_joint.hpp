@@ -36,7 +36,8 @@
 //
 // strength (1 - D) (c - sigma tan(phi)) with sigma = F_n,e / A_e: the flat joint's Coulomb envelope, scaled. (Scaling
 // the cohesion alone, (1 - D) c - sigma tan(phi), would break every softening element in shear with no shear force
-// at all once k_n g tan(phi) > c, about 1.2 g_0 for seed 000's Table 1: the tensile softening would never finish.)
+// at all once k_n g tan(phi) > c, about 1.2 g_0 for Yang et al. 2018's Table 1: the tensile softening would never
+// finish.)
 // Elastic energy of a damaged element: 1/2 k_n t [int min(g, 0)^2 + (1 - D) int max(g, 0)^2] + F_s^2 / (2 (1 - D)
 // k_s A_e). An undamaged element whose stress stays within sigma_c is the flat joint's, to the bit (the same
 // Coulomb envelope c - sigma tan(phi)). Breaks: in tension when D reaches 1 (g_e >= g_f), in shear on the damaged

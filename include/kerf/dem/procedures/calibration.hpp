@@ -1,5 +1,5 @@
 #pragma once
-// Automatic calibration of the micro-parameters to macro-properties (seed 000, Section 3; physics-dem.md
+// Automatic calibration of the micro-parameters to macro-properties (Yang et al. 2018, Section 3; physics-dem.md
 // section 3): E, nu, tensile and compressive strength, each within a tolerance.
 //
 // Method. Two trends are exact for a linear-elastic-brittle assembly loaded quasi-statically: scaling all
@@ -65,7 +65,7 @@ struct ToughnessCalibration {
 enum class CalibrationMethod { hybrid, secant };
 
 struct CalibrationSpec {
-  MacroProperties targets{71e9, 0.23, 41e6, 330e6};  ///< seed 000 Table 2
+  MacroProperties targets{71e9, 0.23, 41e6, 330e6};  ///< Yang et al. 2018, Table 2
   bool free_modulus = true;         ///< effective_modulus_GPa (with bond_effective_modulus_GPa)
   bool free_stiffness_ratio = true; ///< stiffness_ratio (with bond_stiffness_ratio)
   bool free_tensile_strength = true;///< tensile_strength_MPa (cohesion scaled with it)

@@ -36,7 +36,7 @@ inline double sponge_rate_per_s(double d_m, double thickness_m, double peak_rate
   return peak_rate_per_s * ramp * ramp;
 }
 
-/// The held rows of a cut's workpiece (seed 000 Section 4: the disks whose centres lie within two largest
+/// The held rows of a cut's workpiece (Yang et al. 2018, Section 4: the disks whose centres lie within two largest
 /// radii of the left side or of the bottom are fixed): their inner lines, x = x_m and y = y_m.
 struct HeldRows {
   double x_m = 0, y_m = 0;

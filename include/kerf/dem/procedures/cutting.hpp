@@ -1,5 +1,5 @@
 #pragma once
-// Orthogonal cutting of a bonded-particle workpiece (seed 000, Section 4; physics-dem.md section 4).
+// Orthogonal cutting of a bonded-particle workpiece (Yang et al. 2018, Section 4; physics-dem.md section 4).
 //
 // The workpiece is a specimen whose left and bottom boundary disks are held (a prescribed-zero-velocity
 // group, as the tension grips use) and whose top is free. The tool is rigid: wall segments (rake face,
@@ -37,23 +37,23 @@ const EnumNames<GrooveShape>& groove_shape_names();
 
 struct CutParams {
   double depth_of_cut_m = 0.1e-3;
-  double speed_m_per_s = 1.0;   ///< the seed's 4.23 mm/s is scaled up (physics-dem.md section 4)
+  double speed_m_per_s = 1.0;   ///< the paper's 4.23 mm/s is scaled up (physics-dem.md section 4)
   double length_m = 0.5e-3;     ///< tool travel
-  double rake_deg = -15, clearance_deg = 15;  ///< seed 000 Section 4
+  double rake_deg = -15, clearance_deg = 15;  ///< Yang et al. 2018, Section 4
   double edge_radius_m = 0;     ///< 0: sharp edge
   int edge_segments = 4;        ///< wall segments approximating a rounded edge
   /// Tool-workpiece Coulomb friction on every tool face; negative (the default): the workpiece material's
-  /// particle friction mu, as for any disk-wall contact (PFC's default). Not given by seed 000.
+  /// particle friction mu, as for any disk-wall contact (PFC's default). Not given by Yang et al. 2018.
   double tool_friction_coefficient = -1;
   /// Height of the rake face's top above the tool tip; 0 (the default): 3 depths of cut, room for the chip.
-  /// Seed 000 does not give its tool's size: a fixed height is one tool for every depth of cut.
+  /// Yang et al. 2018 does not give its tool's size: a fixed height is one tool for every depth of cut.
   double rake_face_height_m = 0;
   GrooveShape groove_shape = GrooveShape::none;
   double groove_depth_m = 0.1e-3, groove_pitch_m = 0.2e-3, groove_width_m = 0.06e-3;
   double groove_bottom_width_m = 0.03e-3;  ///< trapezoidal only: width at the groove bottom
   /// The laser-affected layer along each groove's walls and bottom (apply_groove_damage): joints whose
   /// midpoint lies within this distance of the groove's outline are pre-broken, each with probability
-  /// groove_damage_broken_fraction. 0 (the default): pristine glass up to the groove, as seed 000's DEM.
+  /// groove_damage_broken_fraction. 0 (the default): pristine glass up to the groove, as Yang et al. 2018's DEM.
   double groove_damage_depth_m = 0;
   double groove_damage_broken_fraction = 1;
   /// Part of the travel excluded from the mean forces (the entry), as a fraction of the travel.
@@ -281,7 +281,7 @@ inline std::array<double, 2> tool_force_components(double fx_on_tool_n, double f
   return {fx_on_tool_n, fy_on_tool_n};
 }
 
-/// The travel before a cut's forces are steady: the entry at the free edge. Measured on the seed-000 workpiece
+/// The travel before a cut's forces are steady: the entry at the free edge. Measured on the Yang et al. 2018 workpiece
 /// (1 mm x 1 mm, cuts 0.1 mm deep: the main force over the first 0.3 mm of travel is half that over the next
 /// 0.3 mm, in each packing; docs/dem.md, "How long a cut must be"); means that start earlier hold the entry.
 inline constexpr double kEntryTravelM = 0.3e-3;

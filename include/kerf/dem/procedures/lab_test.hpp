@@ -1,5 +1,5 @@
 #pragma once
-// The calibration tests of seed 000, Section 3 (physics-dem.md section 3): direct tension (a row of
+// The calibration tests of Yang et al. 2018, Section 3 (physics-dem.md section 3): direct tension (a row of
 // particles at top and bottom as grips, moved apart) and unconfined compression (rigid platens moved
 // together), each side at a constant speed, until the stress has fallen to a fraction of its peak.
 // Stress = platen (grip) force / (width t); axial strain = relative displacement / initial height;
