@@ -4,8 +4,8 @@
     python3 analysis/paired_glasses.py BASE.csv OTHER.csv [--domain default] [--depth 0.1]
                                     [--base-domain large] [--base-depth 0.2]
 
-BASE and OTHER are records of `kerf-dem study` (data/studies/results/*.csv with the seed-000 study's columns:
-domain, surface, depth_of_cut_mm, seed, main_force_N, thrust_force_N, ...), e.g. seed000_steady.csv and
+BASE and OTHER are records of `kerf-dem study` (data/studies/results/*.csv with the columns of the Yang et al. 2018
+study: domain, surface, depth_of_cut_mm, seed, main_force_N, thrust_force_N, ...), e.g. seed000_steady.csv and
 seed000_softening_pairs.csv. Cuts pair by (domain, surface, depth, seed): a packing does not depend on the material. --base-domain and --base-depth
 pair OTHER's cuts in --domain at --depth with BASE's in another domain or at another depth, packing by packing (the
 same seed is the same packing in every window and at every depth): how the window or the depth moves one glass's cut,

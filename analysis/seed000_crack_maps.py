@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Where the seed-000 steady cuts leave their cracks (issue 41 item 4): maps from the cuts' own cracks.csv.
+"""Where the steady cuts of the Yang et al. 2018 study leave their cracks (issue 41 item 4): maps from the cuts'
+own cracks.csv.
 
 Reads the output folders of `kerf-dem study data/studies/seed000_steady.json` and, optionally, of
 `data/studies/seed000_groove_damage.json` (their items/condition_C_seed_S/ folders: summary.json and cracks.csv;

@@ -9,7 +9,7 @@ the record of the same cuts without the law (the key at 0), drawn right of the l
 (regular, rectangular): the main and thrust force per mm of width over the packings with their 95 % intervals (Student
 t), the groove effect (rectangular / regular main and thrust, Fieller's interval as in
 validation/soda_lime_cutting_steady/trends.py), the subsurface cracks and the deepest one; the experiments' levels and
-groove effect (seed 000 Table 6, per mm of width) beside them.
+groove effect (Yang et al. 2018, Table 6, per mm of width) beside them.
 """
 import argparse
 import csv
@@ -138,7 +138,7 @@ def plot(rows, exp, label, where, path):
     axes[1].set_ylim(0.1, 4)  # a ratio's unbounded or near-zero interval end leaves the axis
     axes[2].set_ylim(bottom=0)
     fig.suptitle(f"Steady cut, {where}; bars: 95 % intervals over packings (a bar at the axis' edge goes on beyond "
-                 "it); open markers: the law off; lines without markers: seed 000's experiments", fontsize=9)
+                 "it); open markers: the law off; lines without markers: Yang et al. 2018's experiments", fontsize=9)
     fig.tight_layout()
     tmp = path.with_name(path.stem + ".tmp" + path.suffix)
     fig.savefig(tmp, dpi=130)

@@ -2,8 +2,8 @@
 """The scaling model of `kerf-dem study` over MPI ranks (docs/cluster.md), on paper: an event simulation of
 the study's scheduler (dem/study/study_scheduler.cpp, StudyScheduler) with W worker ranks, fed with measured per-item times.
 
-Item times: the 12 seed-000 cuts of docs/performance-dem-study.csv (one thread each, measured 2026-11-22),
-taken in a fixed shuffled cycle. Coordinator: a serial cost per message and a round-trip latency per item,
+Item times: the 12 cuts of the Yang et al. 2018 study in docs/performance-dem-study.csv (one thread each, measured
+2026-11-22), taken in a fixed shuffled cycle. Coordinator: a serial cost per message and a round-trip latency per item,
 measured with `bench/study_throughput.json`'s synthetic twin (docs/performance.md, "Studies").
 
 Studies modelled:

@@ -80,7 +80,8 @@ int main(int argc, char** argv) {
     if (which == steady_case)
       throw kerf::InputError("case", which,
                              "k9_trepanning, soda_lime_cutting, soda_lime_cutting_cut_fitted or all (the steady case's "
-                             "acceptance is the seed-000 study's record: bash scripts/validate.sh " + steady_case + ")");
+                             "acceptance is the record of the Yang et al. 2018 study: bash scripts/validate.sh " +
+                                 steady_case + ")");
     bool passed = true;
     if (which == "k9_trepanning") passed = run_k9(out);
     if (cutting) passed = run_cutting(out, which, replicates);

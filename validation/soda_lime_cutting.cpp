@@ -230,13 +230,14 @@ Json comparison_document(const fs::path& experiments, const fs::path& kerf_csv, 
   };
   Json doc{{"title", title}, {"conditions", conditions}, {"quantities", quantities}};
   if (against_paper_dem) {
-    doc["description"] = "kerf-dem (mean of the replicates) against the paper's DEM replicates (seed 000 Table 4); both 1 mm wide.";
+    doc["description"] =
+        "kerf-dem (mean of the replicates) against the paper's DEM replicates (Yang et al. 2018, Table 4); both 1 mm wide.";
     doc["views"] = Json::array({"as_published"});
     doc["measured"] = set(experiments, "paper's DEM (Table 4)", "paper_dem");
     doc["predictions"] = Json::array({set(kerf_csv, "kerf-dem", "kerf_dem")});
   } else {
-    doc["description"] = "Experiments (seed 000 Table 6, 25.4 mm wide) against the paper's DEM (Table 4, 1 mm) and kerf-dem "
-                         "(1 mm): the paper's direct comparison and the per-unit-width one.";
+    doc["description"] = "Experiments (Yang et al. 2018, Table 6, 25.4 mm wide) against the paper's DEM (Table 4, 1 mm) "
+                         "and kerf-dem (1 mm): the paper's direct comparison and the per-unit-width one.";
     doc["views"] = Json::array({"as_published", "per_unit_width"});
     doc["measured"] = set(experiments, "experiment (Table 6)", "experiment");
     doc["predictions"] = Json::array({set(experiments, "paper's DEM (Table 4)", "paper_dem"), set(kerf_csv, "kerf-dem", "kerf_dem")});
@@ -370,8 +371,8 @@ std::string replicates_report(const Spec& spec, const std::map<std::string, Cond
                               std::vector<std::string>& failures, Json& summary) {
   std::string md = fmt::format(
       "kerf-dem, scene `{}` ({} replicates per condition, packing seeds 1..{}); forces per **1 mm** width (the DEM's "
-      "out-of-plane thickness) unless stated. Experiments: seed 000 Table 6, **25.4 mm** wide; the paper's DEM: "
-      "Table 4, 1 mm.\n\n",
+      "out-of-plane thickness) unless stated. Experiments: Yang et al. 2018, Table 6, **25.4 mm** wide; the paper's "
+      "DEM: Table 4, 1 mm.\n\n",
       spec.scene.filename().string(), spec.replicates, spec.replicates);
   if (!spec.note.empty()) md += spec.note + "\n\n";
   md +=
@@ -660,10 +661,11 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
   const fs::path means_csv = fs::absolute(out_dir / "kerf_dem_means.csv");
   std::map<std::string, Comparison> comparisons;
   for (const auto& [name, against_dem] : std::vector<std::pair<std::string, bool>>{{"vs_experiment", false}, {"vs_paper_dem", true}}) {
-    const Json doc = comparison_document(fs::absolute(spec.experiments), means_csv,
-                                         against_dem ? "Soda-lime glass, orthogonal cutting: kerf-dem vs the paper's DEM (seed 000)"
-                                                     : "Soda-lime glass, orthogonal cutting: experiment vs the paper's DEM and kerf-dem (seed 000)",
-                                         against_dem);
+    const Json doc = comparison_document(
+        fs::absolute(spec.experiments), means_csv,
+        against_dem ? "Soda-lime glass, orthogonal cutting: kerf-dem vs the paper's DEM (Yang et al. 2018)"
+                    : "Soda-lime glass, orthogonal cutting: experiment vs the paper's DEM and kerf-dem (Yang et al. 2018)",
+        against_dem);
     write_file_atomically(out_dir / (name + ".json"), doc.dump(2) + "\n");
     const Comparison& comparison = comparisons[name] = run_comparison(parse_comparison_config(doc, out_dir));
     for (const auto& f : write_report(comparison, out_dir / name)) v.files.push_back(f);
@@ -675,7 +677,7 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
 
   // 4. The trends, the bands where there are, and the expected physics.
   Json summary_doc;
-  std::string md = "# Validation: soda-lime glass, orthogonal cutting (seed 000)\n\n" +
+  std::string md = "# Validation: soda-lime glass, orthogonal cutting (Yang et al. 2018)\n\n" +
                    replicates_report(spec, results, vs_experiment, vs_dem, v.failures, summary_doc);
   md += "\nReports through the report layer: [vs_experiment/report.md](vs_experiment/report.md) (the paper's direct "
         "comparison and the per-unit-width one), [vs_paper_dem/report.md](vs_paper_dem/report.md). Per-replicate "

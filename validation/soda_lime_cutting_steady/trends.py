@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""The seed-000 trends from a record of steady cuts (issue 41): does the DEM reproduce what the experiments show,
-and is each trend the same in the two domains?
+"""The Yang et al. 2018 trends from a record of steady cuts (issue 41): does the DEM reproduce what the experiments
+show, and is each trend the same in the two domains?
 
     PYTHONPATH=build/python python3 validation/soda_lime_cutting_steady/trends.py [RECORD.csv ...] [--out DIR]
         [--experiments CSV] [--report]
@@ -382,8 +382,8 @@ def plot(all_trends, path):
             ax.axvline(1, color="grey", lw=0.5)
         ax.grid(axis="x", lw=0.3)
     handles = [plt.Line2D([], [], marker=m, color=c, ls="", label=s) for s, (m, c) in STYLE.items()]
-    fig.suptitle("seed-000 trends: kerf's steady cut in two domains against the experiments and the paper's DEM "
-                 "(95 % intervals; a bar at the axis' edge goes on beyond it)", y=0.99, fontsize=10)
+    fig.suptitle("Yang et al. 2018 trends: kerf's steady cut in two domains against the experiments and the paper's "
+                 "DEM (95 % intervals; a bar at the axis' edge goes on beyond it)", y=0.99, fontsize=10)
     fig.legend(handles=handles, loc="upper center", ncol=4, frameon=False, bbox_to_anchor=(0.5, 0.955))
     fig.tight_layout(rect=(0, 0, 1, 0.91))
     fig.savefig(path)
@@ -481,7 +481,7 @@ def report(rows, cuts, record_path, floors=None, src=None, pending=None):
                 if isinstance(r.get("cpu_time_s"), float)) / 3600
     dates = [r.get("date") for v in cuts.values() for r in v.values() if isinstance(r.get("date"), str)]
     latest = f", the latest recorded {max(dates)}" if dates else ""
-    md = ["# Validation: soda-lime glass, the seed-000 trends in the steady cut", "",
+    md = ["# Validation: soda-lime glass, the Yang et al. 2018 trends in the steady cut", "",
           f"From the record `{record_path}` alone ({n_cuts} cuts{latest}, {cpu_h:.1f} CPU-hours; `kerf-dem study "
           "data/studies/seed000_steady.json` adds to it, this report is `python3 validation/soda_lime_cutting_steady/trends.py --report`).",
           "", "## What is compared, and why", "",
@@ -492,8 +492,8 @@ def report(rows, cuts, record_path, floors=None, src=None, pending=None):
           "- **Two domains.** `default`: the scene's window (7, 3, 4, 4 depths of cut); `large`: a window fixed in "
           "millimetres (1.4, 0.7, 1.0, 0.8 mm). A trend the two domains give alike (its difference's interval holds "
           "0, within +-50 % of the large domain's value) does not depend on the window.",
-          "- **Against the experiments** (seed 000 Table 6, 25.4 mm wide; per mm of width for the levels): each "
-          "kerf trend's 95 % interval (Fieller's, packings as the samples) and the experiments' (their three "
+          "- **Against the experiments** (Yang et al. 2018, Table 6, 25.4 mm wide; per mm of width for the levels): "
+          "each kerf trend's 95 % interval (Fieller's, packings as the samples) and the experiments' (their three "
           "tests); the verdict is on the difference: *differs* when its 95 % interval excludes 0 (resolved), *agrees* "
           "when it holds 0 and lies within +-50 % of the experiments' value (narrow enough to have seen a difference "
           "that matters), *not resolved* when it is wider, or when no interval can be formed. The paper's DEM is "
