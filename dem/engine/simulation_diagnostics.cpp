@@ -181,6 +181,51 @@ int Simulation::n_contacts_of(std::size_t u) const {
   return n;
 }
 
+Simulation::DiskStresses Simulation::disk_stresses() const {
+  const std::size_t n = p_.size();
+  DiskStresses out{std::vector<std::array<double, 3>>(n, {0, 0, 0}), std::vector<double>(n, 0.0)};
+  // f (x) arm, symmetrised, on disk u (its volume divides at the end).
+  const auto add = [&](std::size_t u, double fx, double fy, double ax, double ay) {
+    auto& s = out.stress_pa[u];
+    s[0] += fx * ax, s[1] += fy * ay, s[2] += 0.5 * (fx * ay + fy * ax);
+    out.force_sum_n[u] += std::hypot(fx, fy);
+  };
+  // A disk pair: o is the force on j; i gets -o at r_i along the centre line, j gets o at -r_j along it.
+  const auto pair = [&](const std::array<double, 4>& o, std::size_t i, std::size_t j) {
+    if (o[0] == 0 && o[1] == 0) return;
+    const double lx = p_.x[j] - p_.x[i], ly = p_.y[j] - p_.y[i], l = std::hypot(lx, ly);
+    if (!(l > 0)) return;
+    const double nx = lx / l, ny = ly / l;
+    add(i, -o[0], -o[1], p_.radius[i] * nx, p_.radius[i] * ny);
+    add(j, o[0], o[1], -p_.radius[j] * nx, -p_.radius[j] * ny);
+  };
+  for (std::size_t b = 0; b < b_.size(); ++b)
+    if (b_.active[b]) pair(b_.out[b], static_cast<std::size_t>(b_.i[b]), static_cast<std::size_t>(b_.j[b]));
+  for (std::size_t k = 0; k < pairs_.size(); ++k)
+    pair(pair_out_[k], static_cast<std::size_t>(pairs_[k].i), static_cast<std::size_t>(pairs_[k].j));
+  for (std::size_t k = 0; k < wall_contacts_.size(); ++k) {
+    const auto& o = wall_out_[k];
+    if (o[0] == 0 && o[1] == 0) continue;
+    const auto u = static_cast<std::size_t>(wall_contacts_[k][1]);
+    const auto q = closest_on_segment(walls_[static_cast<std::size_t>(wall_contacts_[k][0])], p_.x[u], p_.y[u]);
+    add(u, o[0], o[1], q[0] - p_.x[u], q[1] - p_.y[u]);
+  }
+  for (std::size_t u = 0; u < n; ++u) {
+    const double v = M_PI * p_.radius[u] * p_.radius[u] * opt_.thickness_m;
+    for (double& c : out.stress_pa[u]) c /= v;
+  }
+  return out;
+}
+
+std::array<double, 2> Simulation::joint_force(std::size_t b) const {
+  const auto i = static_cast<std::size_t>(b_.i[b]), j = static_cast<std::size_t>(b_.j[b]);
+  const double lx = p_.x[j] - p_.x[i], ly = p_.y[j] - p_.y[i], l = std::hypot(lx, ly);
+  if (!(l > 0)) return {0, 0};
+  const double nx = lx / l, ny = ly / l;
+  const auto& o = b_.out[b];  // the force on j: along -n when the joint pulls (tension)
+  return {-(o[0] * nx + o[1] * ny), o[1] * nx - o[0] * ny};
+}
+
 std::array<double, 3> Simulation::average_stress(double area_m2) const {
   // sigma = (1/V) sum over particles and their contacts of f_on_p (x) (x_c - x_p); for a disk pair this is
   // -(1/V) f_on_j (x) (x_j - x_i), independent of where the contact point lies.

@@ -114,10 +114,28 @@ void write_vtp_frame(const std::filesystem::path& path, const Simulation& sim, c
     f.array<double>("displacement_m", 3, n,
                     [&](std::size_t i, int c) { return c < 2 ? extra.displacement_m[2 * i + static_cast<std::size_t>(c)] : 0.0; });
   f.array<std::int32_t>("broken_joints", 1, n, [&](std::size_t i, int) { return broken[i]; });
+  // Force chains (issue 55 item 6): each disk's average stress from the forces on it, as a 3 x 3 tensor (z row and
+  // column 0; ParaView's tensor glyphs and eigenvectors take 9 components), its pressure, the forces' sum.
+  const Simulation::DiskStresses stresses = sim.disk_stresses();
+  f.array<double>("stress_MPa", 9, n, [&](std::size_t i, int c) {
+    const auto& s = stresses.stress_pa[i];
+    constexpr int kIndex[9] = {0, 2, -1, 2, 1, -1, -1, -1, -1};  // xx xy . / xy yy . / . . .
+    return kIndex[c] < 0 ? 0.0 : units::pa_to_mpa(s[static_cast<std::size_t>(kIndex[c])]);
+  });
+  f.array<double>("pressure_MPa", 1, n, [&](std::size_t i, int) {
+    return -0.5 * units::pa_to_mpa(stresses.stress_pa[i][0] + stresses.stress_pa[i][1]);
+  });
+  f.array<double>("contact_force_sum_N", 1, n, [&](std::size_t i, int) { return stresses.force_sum_n[i]; });
   f.tag("</PointData>\n<CellData Scalars=\"intact_elements\">");
   f.array<std::int32_t>("intact_elements", 1, n + nl,
                         [&](std::size_t c, int) { return c < n ? -1 : b.n_bonded_elements(lines[c - n]); });
   f.array<std::int64_t>("bond", 1, n + nl, [&](std::size_t c, int) { return c < n ? std::int64_t{-1} : static_cast<std::int64_t>(lines[c - n]); });
+  // Each joint's force: along its centre line (tension positive) and across it; 0 on the disks' vertex cells.
+  std::vector<std::array<double, 2>> joint_forces(nl);
+  for (std::size_t k = 0; k < nl; ++k) joint_forces[k] = sim.joint_force(lines[k]);
+  for (std::size_t part : {0u, 1u})
+    f.array<double>(part == 0 ? "joint_normal_force_N" : "joint_shear_force_N", 1, n + nl,
+                    [&](std::size_t c, int) { return c < n ? 0.0 : joint_forces[c - n][part]; });
   f.tag("</CellData>");
   f.verts(n);
   f.lines(nl, [&](std::size_t k, int end) { return end == 0 ? b.i[lines[k]] : b.j[lines[k]]; });

@@ -72,6 +72,29 @@ assert 0.5 * spec["width_mm"] < xy[:, 0].max() - xy[:, 0].min() < 2 * spec["widt
 assert disks.GetNumberOfVerts() == n and disks.GetNumberOfLines() > 0
 intact = np_of(disks.GetCellData().GetArray("intact_elements"))
 assert (intact[:n] == -1).all() and (intact[n:] >= 0).all() and intact[n:].max() >= 1
+# Force chains (issue 55 item 6): each disk's stress tensor (symmetric, z row and column 0), its pressure, the sum
+# of the forces on it; each joint's normal and shear force (0 on the disks' vertex cells). The joints' normal forces
+# bound the disks' sums from below: a disk's sum holds at least its largest joint's force.
+stress = np_of(pd.GetArray("stress_MPa"))
+assert stress.shape == (n, 9), stress.shape
+assert (stress[:, 1] == stress[:, 3]).all() and (stress[:, [2, 5, 6, 7, 8]] == 0).all()
+pressure = np_of(pd.GetArray("pressure_MPa"))
+assert np.allclose(pressure, -0.5 * (stress[:, 0] + stress[:, 4]), rtol=1e-12, atol=1e-12 * abs(stress).max())
+force_sum = np_of(pd.GetArray("contact_force_sum_N"))
+assert (force_sum >= 0).all() and (force_sum > 0).mean() > 0.5, (force_sum > 0).mean()
+cd = disks.GetCellData()
+normal, shear = (np_of(cd.GetArray(k)) for k in ("joint_normal_force_N", "joint_shear_force_N"))
+assert normal.shape == shear.shape == (disks.GetNumberOfCells(),)
+assert (normal[:n] == 0).all() and (shear[:n] == 0).all() and (normal[n:] != 0).mean() > 0.5
+lines = np_of(disks.GetLines().GetConnectivityArray()).reshape(-1, 2)
+largest = np.zeros(n)
+for (i, j), f, s in zip(lines, normal[n:], shear[n:]):
+    largest[i] = max(largest[i], np.hypot(f, s)); largest[j] = max(largest[j], np.hypot(f, s))
+assert (force_sum >= largest * (1 - 1e-9)).all(), "a disk's force sum below one of its joints' forces"
+# Stress of the scale of its forces: |sigma| <= sum |f| r / (pi r^2 t) per disk (t = the specimen's thickness).
+t_mm = spec.get("thickness_mm", 1.0)
+bound = force_sum / (np.pi * radius * t_mm)  # N/mm^2 = MPa
+assert (np.abs(stress[:, [0, 4, 1]]).max(axis=1) <= bound * (1 + 1e-9)).all()
 
 walls = read(last[1])
 assert walls.GetNumberOfLines() >= 2 and walls.GetNumberOfPoints() == 2 * walls.GetNumberOfLines()

@@ -22,6 +22,16 @@ Material glass(double damping = 0.0) {
   return m;
 }
 
+/// Two disks of 10 um 20 um apart, jointed, initialised.
+Simulation jointed_pair() {
+  Simulation sim(glass(), {});
+  sim.add_particle(0, 0, 10e-6);
+  sim.add_particle(20e-6, 0, 10e-6);
+  sim.install_bond(0, 1);
+  sim.initialise();
+  return sim;
+}
+
 /// A small jointed cluster: a perturbed triangular lattice of nx x ny disks with radii 8-10 um.
 Simulation cluster(const Material& m, int nx, int ny, unsigned seed) {
   SimulationOptions options;
@@ -67,11 +77,7 @@ TEST_CASE("engine: contact forces sum to zero and conserve angular momentum", "[
 }
 
 TEST_CASE("engine: a rigid-body rotation produces no force and keeps a preload's magnitude", "[simulation]") {
-  Simulation sim(glass(), {});
-  sim.add_particle(0, 0, 10e-6);
-  sim.add_particle(20e-6, 0, 10e-6);
-  sim.install_bond(0, 1);
-  sim.initialise();
+  Simulation sim = jointed_pair();
   auto& p = sim.particles();
   p.group[0] = p.group[1] = 1;  // kinematics prescribed by the test
   sim.invalidate_neighbours();
@@ -323,4 +329,64 @@ TEST_CASE("simulation: a wall contact's load is k_n times its overlap, and ties 
   CHECK(sim.tied_to_held() == std::vector<std::uint8_t>{1, 1, 0});
   sim.particles().group[0] = 0;
   CHECK(sim.tied_to_held() == std::vector<std::uint8_t>{0, 0, 0});
+}
+
+TEST_CASE("engine: a disk's stress from its contacts is the closed form, rotates as a tensor, and sums the forces",
+          "[simulation][stress]") {
+  // Three equal disks in a row, pressed together by their overlaps (unjointed contacts): the middle one carries
+  // the contact force F on opposite sides, sigma_nn = -2 F / (pi R t) along the row, 0 across it; an end disk
+  // carries F once, half that. The row turned by an angle a: sigma' = Q sigma Q^T. Thickness 2 mm: the stress
+  // does not depend on it (F doubles with it).
+  const double radius = 10e-6, overlap = 0.2e-6;
+  for (const double angle_deg : {0.0, 30.0, 90.0}) {
+    const double a = angle_deg * M_PI / 180, c = std::cos(a), s = std::sin(a);
+    SimulationOptions options;
+    options.thickness_m = 2e-3;
+    Simulation sim(glass(), options);
+    const double pitch = 2 * radius - overlap;
+    for (int k = 0; k < 3; ++k) sim.add_particle(k * pitch * c, k * pitch * s, radius);
+    sim.initialise();
+    sim.evaluate_forces();
+    const auto& p = sim.particles();
+    const double force = std::hypot(p.fx[0], p.fy[0]);  // the end disk: one contact
+    REQUIRE(force > 0);
+    CHECK_THAT(p.fx[0] * c + p.fy[0] * s, WithinRel(-force, 1e-12));  // pushed outwards: compression
+    const auto stresses = sim.disk_stresses();
+    const double sigma_nn = -2 * force / (M_PI * radius * options.thickness_m);  // the middle disk, along the row
+    const double scale = std::abs(sigma_nn);
+    const auto& mid = stresses.stress_pa[1];
+    CHECK_THAT(mid[0], WithinAbs(sigma_nn * c * c, 1e-12 * scale));
+    CHECK_THAT(mid[1], WithinAbs(sigma_nn * s * s, 1e-12 * scale));
+    CHECK_THAT(mid[2], WithinAbs(sigma_nn * c * s, 1e-12 * scale));
+    for (int end : {0, 2}) {
+      const auto& e = stresses.stress_pa[static_cast<std::size_t>(end)];
+      CHECK_THAT(e[0], WithinAbs(0.5 * sigma_nn * c * c, 1e-12 * scale));
+      CHECK_THAT(e[1], WithinAbs(0.5 * sigma_nn * s * s, 1e-12 * scale));
+      CHECK_THAT(e[2], WithinAbs(0.5 * sigma_nn * c * s, 1e-12 * scale));
+    }
+    CHECK_THAT(stresses.force_sum_n[1], WithinRel(2 * force, 1e-12));
+    CHECK_THAT(stresses.force_sum_n[0], WithinRel(force, 1e-12));
+  }
+}
+
+TEST_CASE("engine: a joint's force is tension positive along its centre line, its shear across it",
+          "[simulation][stress]") {
+  Simulation sim = jointed_pair();
+  auto& p = sim.particles();
+  const auto& b = sim.bonds();
+  const double kn_area = b.geometry[0].normal_stiffness * 2 * b.geometry[0].half_length_m * b.geometry[0].thickness_m;
+  for (const double gap : {1e-9, -1e-9}) {
+    p.x[1] = 20e-6 + gap;
+    sim.evaluate_forces();
+    const auto f = sim.joint_force(0);
+    CHECK_THAT(f[0], WithinRel(kn_area * gap, 1e-9));  // stretched: tension, positive; pressed: negative
+    CHECK_THAT(f[1], WithinAbs(0.0, 1e-12 * kn_area * 1e-9));
+    // The disks' stresses: uniaxial along x, tension positive for a stretched joint, equal on both disks.
+    const auto st = sim.disk_stresses();
+    const double sigma = kn_area * gap * 10e-6 / (M_PI * 10e-6 * 10e-6 * sim.options().thickness_m);
+    for (std::size_t i : {0u, 1u}) {
+      CHECK_THAT(st.stress_pa[i][0], WithinRel(sigma, 1e-9));
+      CHECK_THAT(st.stress_pa[i][1], WithinAbs(0.0, 1e-12 * std::abs(sigma)));
+    }
+  }
 }

@@ -214,6 +214,18 @@ class Simulation {
   int n_contacts_of(std::size_t i) const;
   /// Average (Love) stress of the assembly over `area_m2`: sigma = -(1/V) sum f (x) l, tension positive [Pa].
   std::array<double, 3> average_stress(double area_m2) const;  // xx, yy, xy
+  /// Per disk, from the forces of the last evaluation: the 2D Love-Weber average stress over the disk's own volume
+  /// (pi r^2 thickness), sigma = (1/V) sum_c f_c (x) (x_c - x_p) symmetrised, over its joints, its touching
+  /// contacts and its wall contacts, the contact point on its rim along the centre line (a wall's: the closest
+  /// point), tension positive [Pa]; and the sum of those forces' magnitudes [N]: force chains (issue 55 item 6).
+  struct DiskStresses {
+    std::vector<std::array<double, 3>> stress_pa;  ///< xx, yy, xy
+    std::vector<double> force_sum_n;
+  };
+  DiskStresses disk_stresses() const;
+  /// Joint b's force of the last evaluation: along its centre line, tension positive, and across it (the
+  /// component on disk j along the centre line turned +90 degrees) [N].
+  std::array<double, 2> joint_force(std::size_t b) const;
   /// Number of touching unjointed disk-disk contacts.
   int n_touching_pairs() const;
   /// The complete state (particles, joints, contact lists with their shear springs, neighbour reference

@@ -29,8 +29,11 @@ struct FrameDiskArrays {
 };
 /// Disks (point data: id, the disk's index, the same in every frame of a run; radius_mm, velocity_m_per_s,
 /// spin_rad_per_s, group: 0 free, 1 and 2 velocity prescribed; held: 1 when group > 0; displacement_m, a
-/// 3-vector with z = 0, when `extra` has it; broken_joints, the disk's joints that are broken, inactive)
-/// and active joints (cell data: intact_elements, bond; -1 for the disks' vertex cells).
+/// 3-vector with z = 0, when `extra` has it; broken_joints, the disk's joints that are broken, inactive;
+/// stress_MPa, the disk's average stress (Simulation::disk_stresses) as a 3 x 3 tensor, tension positive;
+/// pressure_MPa, minus the mean of its xx and yy, compression positive; contact_force_sum_N, the sum of the forces'
+/// magnitudes on it) and active joints (cell data: intact_elements, bond, -1 for the disks' vertex cells;
+/// joint_normal_force_N, tension positive, and joint_shear_force_N, Simulation::joint_force, 0 for the disks).
 void write_vtp_frame(const std::filesystem::path& path, const Simulation& sim, const FrameDiskArrays& extra = {});
 /// The enabled walls (platens, the tool's faces) as lines (cell data: wall, the index; force_N, the force of
 /// the disks on it; velocity_m_per_s).
