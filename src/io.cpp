@@ -1,6 +1,7 @@
 #include "kerf/io.hpp"
 
 #include <fmt/format.h>
+#include <fcntl.h>
 #include <signal.h>
 #include <unistd.h>
 
@@ -330,6 +331,39 @@ std::string csv_line(const std::vector<std::string>& fields) {
 
 bool is_terminal(std::FILE* stream) { return ::isatty(::fileno(stream)) == 1; }
 
+GrowingFile::GrowingFile(const fs::path& path, std::string_view head) : path_(path) {
+  fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  if (fd_ < 0) throw OutputError(path.string(), fmt::format("cannot open it: {}", std::strerror(errno)));
+  record_output(path);
+  append(head);
+}
+
+GrowingFile::~GrowingFile() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+void GrowingFile::append(std::string_view text) {
+  while (!text.empty()) {  // one write() for a piece below the pipe/page size; a short write goes on from there
+    const ::ssize_t n = ::write(fd_, text.data(), text.size());
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) throw OutputError(path_.string(), fmt::format("the write failed: {}", std::strerror(errno)));
+    text.remove_prefix(static_cast<std::size_t>(n));
+  }
+}
+
+double eta_seconds(double done_before, double done, double total, double elapsed_s) {
+  const double rate = elapsed_s > 0 ? (done - done_before) / elapsed_s : 0.0;  // this process's
+  if (!(rate > 0) || !std::isfinite(rate)) return std::nan("");
+  return std::max(0.0, total - std::min(done, total)) / rate;
+}
+
+std::string eta_text(double seconds) {
+  if (!std::isfinite(seconds)) return "";
+  if (seconds < 120) return fmt::format("ETA {:.0f} s", seconds);
+  if (seconds < 7200) return fmt::format("ETA {:.0f} min", seconds / 60);
+  return fmt::format("ETA {:.1f} h", seconds / 3600);
+}
+
 Progress::Progress(std::string label, std::size_t total, std::string unit)
     : label_(std::move(label)),
       unit_(std::move(unit)),
@@ -364,9 +398,10 @@ void Progress::draw(bool final_line) {
   const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   const double fraction = total_ ? static_cast<double>(done_) / static_cast<double>(total_) : 1.0;
   const double rate = elapsed_s > 0 ? static_cast<double>(done_ - done_before_) / elapsed_s : 0.0;  // this process's
-  const double eta_s = rate > 0 ? static_cast<double>(total_ - std::min(done_, total_)) / rate : 0.0;
-  fmt::print(stderr, "\r{}: {:5.1f}%  {}/{} {}  {:.3g} {}/s  ETA {:.0f} s   {}", label_, 100.0 * fraction, done_,
-             total_, unit_, rate, unit_, eta_s, final_line ? "\n" : "");
+  const std::string eta = eta_text(eta_seconds(static_cast<double>(done_before_), static_cast<double>(done_),
+                                               static_cast<double>(total_), elapsed_s));
+  fmt::print(stderr, "\r{}: {:5.1f}%  {}/{} {}  {:.3g} {}/s  {}   {}", label_, 100.0 * fraction, done_, total_,
+             unit_, rate, unit_, eta.empty() ? "ETA ?" : eta, final_line ? "\n" : "");
   std::fflush(stderr);
 }
 

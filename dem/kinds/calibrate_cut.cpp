@@ -158,6 +158,8 @@ class CalibrateCutKind final : public SceneKind {
                               {"relative_error_percent", 100 * (b.main_force_n / fit.target_main_force_n - 1)},
                               {"evaluations", evaluations},
                               {"calibrated_material", material}};
+    name_cut_forces(summary["results"]);
+    for (auto& e : summary["results"]["evaluations"]) name_cut_forces(e);
     summary["wall_time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     write_summary(run.options, run.doc, summary);
     std::cout << fmt::format("cut calibration {} after {} evaluations: bond strengths x {:.4g}, main force {:.4g} +- {:.2g} N "

@@ -21,6 +21,23 @@
 
 namespace kerf::dem::kinds {
 
+void name_cut_forces(Json& results) {
+  const Json width = results.value("width_mm", Json());
+  const auto name = [&](Json& r) {
+    std::vector<std::pair<std::string, Json>> canonical;
+    for (const auto& [key, value] : r.items())
+      if (key.rfind("main_force", 0) == 0) canonical.emplace_back("cutting_force" + key.substr(10), value);
+    for (auto& [key, value] : canonical) r[key] = std::move(value);
+    if (!width.is_number() || !(width.get<double>() > 0)) return;
+    for (const char* force : {"cutting_force", "thrust_force"})
+      if (r.contains(std::string(force) + "_N") && r[std::string(force) + "_N"].is_number())
+        r[std::string(force) + "_N_per_mm"] = r[std::string(force) + "_N"].get<double>() / width.get<double>();
+  };
+  name(results);
+  if (results.contains("travel_windows") && results["travel_windows"].is_array())
+    for (auto& w : results["travel_windows"]) name(w);
+}
+
 ProgressTarget progress_target(const RunOptions& options) { return {options.show_progress, options.on_progress, ""}; }
 
 CheckpointSchedule::CheckpointSchedule(const RunOptions& options)

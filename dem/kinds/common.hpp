@@ -81,6 +81,12 @@ StartedSources start_specimen_sources(const SceneCommon& scene, const std::strin
 /// summary is written once, by its kind, never read back to be completed.
 void write_summary(const RunOptions& options, const Json& scene, Json summary);
 
+/// A cut's results under kerf-forces' names (issue 55 item 5): every `main_force...` key copied as
+/// `cutting_force...` (the old name is kept, deprecated, until 0.3.0), and `cutting_force_N_per_mm`,
+/// `thrust_force_N_per_mm`: the forces divided by the cut's width `width_mm` (the specimen's thickness), per mm of
+/// width at any thickness. The `travel_windows` rows too, by the results' width.
+void name_cut_forces(Json& results);
+
 /// When a run writes its next checkpoint (RunOptions): every checkpoint_every samples, and at the first
 /// sample after checkpoint_every_s of wall time since the last one (or the start).
 class CheckpointSchedule {

@@ -79,8 +79,23 @@ Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& d
   const double steps = cut.length_m / (cut.speed_m_per_s * run.result().time_step_s);
   StageProgress progress(tp.progress, "cut", n * steps, "particle-steps");
   if (tp.sample_index > 0) progress.resume_at(n * cut.sample_every_steps * tp.sample_index, cut_sample(run));
+  // forces.csv as the cut goes (docs/dem.md, "A running cut's forces.csv"): whole rows, each sample's as it
+  // comes; from a checkpoint, the rows of its samples again (a killed run's later rows are dropped, the resumed
+  // run computes them anew). The finished cut replaces it whole below, with the same bytes.
+  std::optional<GrowingFile> running_forces;
+  std::size_t rows_written = 0;
+  const auto write_rows = [&] {
+    std::string rows;
+    const auto& samples = run.result().samples;
+    for (; rows_written < samples.size(); ++rows_written)
+      rows += cut_forces_csv_row(samples[rows_written], run.result().width_m);
+    if (!rows.empty()) running_forces->append(rows);
+  };
+  running_forces.emplace(out / "forces.csv", cut_forces_csv_header());
+  write_rows();
   while (run.advance()) {
     ++tp.sample_index;
+    write_rows();
     progress.advance(n * cut.sample_every_steps, cut_sample(run));
     if (frame_every > 0 && tp.sample_index % frame_every == 0) write_frame(run.simulation());
     if (checkpoints.due(tp.sample_index))
@@ -89,6 +104,7 @@ Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& d
                              std::string(), run.serialize(), options.provenance});
   }
   progress.finish(cut_sample(run));  // the last sample (advance returned false)
+  running_forces.reset();
   if (frame_every > 0) write_frame(run.simulation());
   const CutResult& res = run.result();
   summary["cut"] = cut_params_to_json(cut);
@@ -153,6 +169,7 @@ Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& d
       summary["results"][key] = value;
   }
   if (res.edge_recorded) add_edge_results(res.edge, summary["results"]);
+  name_cut_forces(summary["results"]);
   summary["n_particles"] = res.n_particles;
   summary["steps"] = res.steps;
   summary["wall_time_s"] = res.wall_time_s;
@@ -180,7 +197,7 @@ Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& d
   remove_checkpoint(out);  // finished: nothing to resume
 #pragma omp critical(kerf_dem_stdout)
   std::cout << fmt::format(
-      "cut: main force {:.3g} N (std {:.2g}), thrust force {:.3g} N (std {:.2g}) per {:g} mm width, "
+      "cut: cutting force {:.3g} N (std {:.2g}), thrust force {:.3g} N (std {:.2g}) per {:g} mm width, "
       "means over {:.4g}-{:.4g} mm of travel{}; {} tensile + {} shear cracks ({} chip, {} "
       "subsurface, damage depth {:.1f} um); {} steps, {:.1f} s -> {}\n",
       res.main_force_n, res.main_force_std_n, res.thrust_force_n, res.thrust_force_std_n, units::m_to_mm(res.width_m),
@@ -320,6 +337,8 @@ SceneOutcome run_cut_replicates(const Json& cut_scene, const std::string& scene_
                                                          : std::string("no steady verdict"));
     break;
   }
+  name_cut_forces(stats);
+  for (auto& row : list) name_cut_forces(row);
   summary["cut"] = cut_params_to_json(cut);
   summary["replicates"] = list;
   summary["results"] = stats;
@@ -328,7 +347,7 @@ SceneOutcome run_cut_replicates(const Json& cut_scene, const std::string& scene_
   summary["wall_time_s_sum_over_replicates"] = wall;
   write_summary(options, cut_scene, summary);
   std::cout << fmt::format(
-      "cut, {} replicates: main force {:.3g} N (replicate std {:.2g}), thrust force {:.3g} N "
+      "cut, {} replicates: cutting force {:.3g} N (replicate std {:.2g}), thrust force {:.3g} N "
       "(replicate std {:.2g}) per {:g} mm width{} -> {}\n",
       replicates, stats["main_force_N"].get<double>(), stats["main_force_replicate_std_N"].get<double>(),
       stats["thrust_force_N"].get<double>(), stats["thrust_force_replicate_std_N"].get<double>(),

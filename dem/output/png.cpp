@@ -88,7 +88,7 @@ void write_cut_forces_png(const std::filesystem::path& path, const CutResult& re
   // Per mm of width, whatever the specimen's thickness: the force on the tool divided by the width it cuts.
   const double width_mm = units::m_to_mm(result.width_m);
   fig.y_label = "force per unit width (N/mm)";
-  PlotSeries main{"main force", {}, {}, {}, {}, SeriesStyle::line, 0, 0};
+  PlotSeries main{"cutting force", {}, {}, {}, {}, SeriesStyle::line, 0, 0};
   PlotSeries thrust{"thrust force", {}, {}, {}, {}, SeriesStyle::line, 1, 0};
   for (const auto& s : result.samples) {
     main.x.push_back(units::m_to_mm(s.travel_m)), main.y.push_back(s.main_force_n / width_mm);

@@ -5,6 +5,8 @@
 
 #include <algorithm>
 
+#include "kerf/io.hpp"
+
 namespace kerf::dem {
 
 RunLog::RunLog(std::ostream& out, int every) : out_(out), every_(std::max(1, every)), start_(Clock::now()) {}
@@ -20,7 +22,7 @@ void RunLog::report(const ProgressUpdate& u) {
   Stage& s = it->second;
   if (is_new || s.done) s = Stage{now, now};  // a stage run again starts afresh
   if (u.resumed) {  // where a checkpoint left it: the work before is not this process's, nor in its rates
-    s.last_line_done = u.done;
+    s.last_line_done = s.done_before = u.done;
     if (u.sample) s.last_line_step = s.first_step = u.sample->step;
     line(fmt::format("{}: resumed at step {}{} ({:.0f} %)", u.stage, s.first_step,
                      u.sample && u.sample->travel_mm ? fmt::format(" travel {:.4g} mm", *u.sample->travel_mm) : "",
@@ -50,7 +52,7 @@ void RunLog::report(const ProgressUpdate& u) {
     if (x.travel_mm) text += fmt::format(" travel {:.4g} mm", *x.travel_mm);
     if (x.strain) text += fmt::format(" strain {:.4g}", *x.strain);
     if (x.stress_MPa) text += fmt::format(" stress {:.4g} MPa", *x.stress_MPa);
-    if (x.main_force_N) text += fmt::format(" main {:.4g} N", *x.main_force_N);
+    if (x.main_force_N) text += fmt::format(" cutting {:.4g} N", *x.main_force_N);
     if (x.thrust_force_N) text += fmt::format(" thrust {:.4g} N", *x.thrust_force_N);
     text += fmt::format(" cracks {}", x.cracks);
   } else {
@@ -58,6 +60,10 @@ void RunLog::report(const ProgressUpdate& u) {
   }
   text += fmt::format(" | {:.3g} {}/s | {:.0f} %", rate, u.sample ? "particle-steps" : u.unit,
                       u.total > 0 ? 100 * u.done / u.total : 100.0);
+  // The time left at the stage's rate so far, as the terminal's progress says it (kerf::eta_seconds).
+  const double stage_s = std::chrono::duration<double>(now - s.start).count();
+  const std::string eta = end ? "" : eta_text(eta_seconds(s.done_before, u.done, u.total, stage_s));
+  if (!eta.empty()) text += " | " + eta;
   line(text);
   s.last_line = now;
   s.last_line_done = u.done;

@@ -957,11 +957,21 @@ CutRun CutRun::deserialize(std::string_view bytes) {
   return run;
 }
 
+std::string cut_forces_csv_header() {
+  return csv_line({"tool_travel_mm", "time_s", "cutting_force_N", "thrust_force_N", "cutting_force_N_per_mm",
+                   "thrust_force_N_per_mm", "main_force_N"});
+}
+
+std::string cut_forces_csv_row(const CutSample& s, double width_m) {
+  const double width_mm = units::m_to_mm(width_m);
+  return csv_line({csv_number(units::m_to_mm(s.travel_m)), csv_number(s.time_s), csv_number(s.main_force_n),
+                   csv_number(s.thrust_force_n), csv_number(s.main_force_n / width_mm),
+                   csv_number(s.thrust_force_n / width_mm), csv_number(s.main_force_n)});
+}
+
 std::string cut_forces_csv(const CutResult& res) {
-  std::string out = csv_line({"tool_travel_mm", "time_s", "main_force_N", "thrust_force_N"});
-  for (const auto& s : res.samples)
-    out += csv_line({csv_number(units::m_to_mm(s.travel_m)), csv_number(s.time_s), csv_number(s.main_force_n),
-                     csv_number(s.thrust_force_n)});
+  std::string out = cut_forces_csv_header();
+  for (const auto& s : res.samples) out += cut_forces_csv_row(s, res.width_m);
   return out;
 }
 

@@ -42,7 +42,7 @@ std::vector<std::string> result_names(const Json& list, const std::string& where
   std::vector<std::string> names;
   for (const Json& name : list) {
     if (!name.is_string() || name.get<std::string>().empty())
-      throw InputError(where, json_value_text(name), "a result name, e.g. main_force_N");
+      throw InputError(where, json_value_text(name), "a result name, e.g. cutting_force_N");
     names.push_back(name.get<std::string>());
   }
   return names;
@@ -182,14 +182,14 @@ std::string study_keys_markdown() {
          "| `record.file` | - | a CSV file name | none | one row per finished item, written as each finishes and "
          "reused by a rerun on any machine (relative to the study file; e.g. `results/NAME.csv`) |\n"
          "| `record.results` | - | a non-empty list of result names | required with `record.file` | the summary "
-         "results each row carries (e.g. `main_force_N`) |\n"
+         "results each row carries (e.g. `cutting_force_N`) |\n"
          "| `description` | - | a text | none | free text, copied into summary.json |\n";
 }
 
 std::string study_replicates_keys_markdown() {
   return fields_markdown(study_replicates_fields()) +
          "| `results` | - | a non-empty list of result names | none | adaptive: the summary results (e.g. "
-         "`main_force_N`) whose relative standard error must meet the target |\n";
+         "`cutting_force_N`) whose relative standard error must meet the target |\n";
 }
 
 StudySpec read_study(const Json& doc, const fs::path& study_file) {

@@ -80,6 +80,30 @@ std::string csv_number(double value);
 /// Joins fields (already escaped) with commas and a trailing newline.
 std::string csv_line(const std::vector<std::string>& fields);
 
+/// A file that readers may watch grow (a running cut's forces.csv): created, or emptied, with its head, then
+/// appended to in whole pieces, each by one write() straight to the operating system, so that a reader sees whole
+/// rows only. Listed in the run's manifest like every output. Not all-or-nothing: the finished run replaces it
+/// whole (write_file_atomically), with the same bytes. Throws OutputError.
+class GrowingFile {
+ public:
+  GrowingFile(const std::filesystem::path& path, std::string_view head);
+  ~GrowingFile();
+  GrowingFile(const GrowingFile&) = delete;
+  GrowingFile& operator=(const GrowingFile&) = delete;
+  void append(std::string_view text);
+
+ private:
+  std::filesystem::path path_;
+  int fd_ = -1;
+};
+
+/// Seconds left at this process's rate (one rule for the terminal's progress and the log lines): `done` of
+/// `total` units done, `done_before` of them before this process began (a resume), `elapsed_s` since it began;
+/// NaN while no rate is known.
+double eta_seconds(double done_before, double done, double total, double elapsed_s);
+/// "ETA 42 s", "ETA 12 min", "ETA 3.4 h" (whole seconds below 2 minutes, whole minutes below 2 hours); "" for NaN.
+std::string eta_text(double seconds);
+
 /// Progress (percent, rate, ETA) on stderr, redrawn at most a few times a second, and only when stderr
 /// is a terminal: quiet in pipes, files and CI.
 class Progress {

@@ -24,6 +24,23 @@ from kerf.stats import mean_of
 GROOVED = ("rectangular", "trapezoidal")
 
 
+def both_names(values):
+    """`values` (a dict: a record's row, a summary's results) with the cutting force under both its names (issue 55
+    item 5): kerf-dem 0.1.0 wrote `main_force_*`; 0.2.0 writes `cutting_force_*` (kerf-forces' name) and, until 0.3.0,
+    `main_force_*` beside it. Whichever a record holds, a row read here has both."""
+    for key in list(values):
+        for old, new in (("main_force", "cutting_force"), ("cutting_force", "main_force")):
+            if key.startswith(old):
+                values.setdefault(new + key[len(old):], values[key])
+    return values
+
+
+def cutting_force_column(names):
+    """The cutting force's column among a forces.csv's `names`: cutting_force_N, or main_force_N in a cut written
+    before 0.2.0."""
+    return "cutting_force_N" if "cutting_force_N" in names else "main_force_N"
+
+
 def read_record(path, cuts=None):
     """{(domain, surface, depth_mm): {seed: row}} with numbers as floats, added to `cuts` where given (records merge:
     one model choice's cuts spread over two studies). Two cuts of one (domain, surface, depth) on one packing, in this
@@ -39,6 +56,7 @@ def read_record(path, cuts=None):
                     values[k] = float(v)
                 except (TypeError, ValueError):
                     values[k] = v
+            both_names(values)
             seed = int(float(row["seed"]))
             mine = cuts.setdefault(key, {})
             if seed in mine:
@@ -57,7 +75,8 @@ def read_records(paths):
 
 
 def per_width(row, force):
-    """A record row's `force` ('main', 'thrust') per mm of its width (width_mm; 1 mm where it has none)."""
+    """A record row's `force` ('cutting' or its old name 'main', 'thrust') per mm of its width (width_mm; 1 mm where it
+    has none)."""
     width = row.get("width_mm", 1.0)
     width = width if isinstance(width, float) and math.isfinite(width) and width > 0 else 1.0
     return row[f"{force}_force_N"] / width
@@ -72,7 +91,7 @@ def read_experiments(path):
             key = (row["source"], row["surface"], round(float(row["depth_of_cut_mm"]), 6))
             width = float(row["width_mm"])
             d = out.setdefault(key, {"main": [], "thrust": []})
-            d["main"].append(float(row["main_force_N"]) / width)
+            d["main"].append(float(row[cutting_force_column(row)]) / width)
             d["thrust"].append(float(row["thrust_force_N"]) / width)
     return out
 
@@ -116,7 +135,8 @@ def item_dirs(spec):
 def contact_statistics(item_dir, steady_from_mm):
     """Share of the steady samples with a main force > 0, mean main force over them, and its 99th percentile."""
     with open(item_dir / "forces.csv", newline="") as f:
-        main = [float(r["main_force_N"]) for r in csv.DictReader(f) if float(r["tool_travel_mm"]) >= steady_from_mm]
+        main = [float(r[cutting_force_column(r)]) for r in csv.DictReader(f)
+                if float(r["tool_travel_mm"]) >= steady_from_mm]
     touching = [x for x in main if x > 0]
     p99 = sorted(main)[min(len(main) - 1, int(0.99 * len(main)))]
     return len(touching) / len(main), statistics.mean(touching) if touching else 0.0, p99
@@ -125,7 +145,7 @@ def contact_statistics(item_dir, steady_from_mm):
 def record_of(item_dir):
     """A finished study item's record (RECORD_FIELDS)."""
     s = json.loads((item_dir / "summary.json").read_text())
-    r = s["results"]
+    r = both_names(s["results"])
     w = s.get("active_window")
     window = s["cut"].get("active_window", {"enabled": False})
     share, in_contact, p99 = contact_statistics(item_dir, r["steady_from_travel_mm"])
@@ -151,6 +171,7 @@ def read_set(spec):
         with open(path, newline="") as f:
             rows = [{k: v if k in TEXT_FIELDS else float(v) if v != "" else math.nan for k, v in row.items()}
                     for row in csv.DictReader(f)]
+        rows = [both_names(r) for r in rows]
         rows = [r for r in rows if (condition is None or r["condition"] == int(condition))
                 and (seeds is None or seeds[0] <= r["seed"] <= seeds[1])]
     else:
@@ -205,6 +226,6 @@ def intermittency(item_dir, steady_from_mm):
     samples in which the tool touches (|main force| above 0.1 N), contact, and the share of the main force's sum
     carried by the largest 5 % of the samples, top5."""
     forces = np.genfromtxt(item_dir / "forces.csv", delimiter=",", names=True)
-    main_force = forces["main_force_N"][forces["tool_travel_mm"] >= steady_from_mm]
+    main_force = forces[cutting_force_column(forces.dtype.names)][forces["tool_travel_mm"] >= steady_from_mm]
     largest = np.sort(main_force)[::-1][: len(main_force) // 20]
     return {"contact": float(np.mean(np.abs(main_force) > 0.1)), "top5": float(largest.sum() / main_force.sum())}

@@ -51,7 +51,8 @@ assert cut_line_um < floor_um, (cut_line_um, floor_um)
 assert abs(w["damage_depth_limit_um"] - cut_line_um) <= s["specimen"]["radius_max_um"], w
 assert r["subsurface_damage_depth_um"] <= w["damage_depth_limit_um"], (r, w)
 PY
-head -1 "$work/c1/forces.csv" | grep -qx "tool_travel_mm,time_s,main_force_N,thrust_force_N" || fail "forces.csv header"
+head -1 "$work/c1/forces.csv" | grep -qx "tool_travel_mm,time_s,cutting_force_N,thrust_force_N,cutting_force_N_per_mm,thrust_force_N_per_mm,main_force_N" ||
+  fail "forces.csv header"
 head -1 "$work/c1/cracks.csv" | grep -qx "time_s,x_mm,y_mm,orientation_deg,length_um,mode,bond,element,place" || fail "cracks.csv header"
 grep -q ",chip$" "$work/c1/cracks.csv" || fail "no chip cracks in cracks.csv"
 result() { sed -n '/^  "results": {/,/^  }/p' "$1/summary.json" | grep -o "\"$2\": [-0-9.e+]*" | head -1 | awk '{print $2}'; }

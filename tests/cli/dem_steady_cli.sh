@@ -22,7 +22,7 @@ assert "the cut travels" in r["not_steady_reason"] and "within the entry" in r["
 # The range averaged over: from entry_fraction x length to the last sample of forces.csv.
 assert abs(r["steady_from_travel_mm"] - 0.25 * 0.1) < 1e-12, r["steady_from_travel_mm"]
 assert abs(r["steady_to_travel_mm"] - travel[-1]) < 1e-9, (r["steady_to_travel_mm"], travel[-1])
-last = [line for line in open(sys.argv[3]) if line.startswith("cut: main force")][-1]
+last = [line for line in open(sys.argv[3]) if line.startswith("cut: cutting force")][-1]
 want = "means over {:.4g}-{:.4g} mm of travel (NOT STEADY: {})".format(
     r["steady_from_travel_mm"], r["steady_to_travel_mm"], r["not_steady_reason"])
 assert want in last, (want, last)

@@ -50,3 +50,25 @@ def test_a_reference_is_the_mean_of_its_tests_per_mm_and_grooved_for_both_groove
         assert math.isclose(e.se, statistics.stdev([2.0, 2.5, 3.0]) / 25.4 / math.sqrt(3), rel_tol=1e-12)
         assert e.dof == 2 and e.n == 3
     assert kr.reference(table, "experiment", "regular", 0.1, "main") is None
+
+
+def test_the_cutting_force_is_read_under_either_name(tmp_path):
+    # kerf-dem 0.1.0's records name it main_force_N; 0.2.0 writes cutting_force_N beside it, 0.3.0 only the latter
+    # (issue 55 item 5): a record of either kind reads the same, under both names, per mm alike.
+    for name, column in (("old.csv", "main_force_N"), ("new.csv", "cutting_force_N")):
+        with open(tmp_path / name, "w", newline="") as f:
+            w = csv.writer(f)
+            w.writerow(["domain", "surface", "depth_of_cut_mm", "seed", column, column.replace("_N", "_sem_N"),
+                        "thrust_force_N", "width_mm"])
+            w.writerow(["default", "regular", 0.1, 1, 0.8, 0.05, 0.4, 2.0])
+    for name in ("old.csv", "new.csv"):
+        row = kr.read_record(tmp_path / name)[("default", "regular", 0.1)][1]
+        assert row["cutting_force_N"] == row["main_force_N"] == 0.8, (name, row)
+        assert row["cutting_force_sem_N"] == row["main_force_sem_N"] == 0.05, (name, row)
+        assert kr.per_width(row, "cutting") == kr.per_width(row, "main") == 0.4
+    # A cut's forces.csv: the cutting force's column whichever the file has.
+    assert kr.cutting_force_column(["tool_travel_mm", "main_force_N"]) == "main_force_N"
+    assert kr.cutting_force_column(["tool_travel_mm", "cutting_force_N", "main_force_N"]) == "cutting_force_N"
+    # A row that has both keeps each (no overwrite): the new name's value stays the new name's.
+    both = kr.both_names({"cutting_force_N": 1.0, "main_force_N": 2.0})
+    assert both == {"cutting_force_N": 1.0, "main_force_N": 2.0}

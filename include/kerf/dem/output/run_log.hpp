@@ -9,9 +9,12 @@
 //   log.finish(omp_get_max_threads());  // "performance: ..."
 //
 // The lines (numbers in %g-like form; a field is left out when the stage does not measure it):
-//   cut: step 2500 time 1.25e-05 s travel 0.025 mm main 1.23 N thrust 0.456 N cracks 12 | 1.1e+06 particle-steps/s | 31
-//   % tension: step 4000 time 4e-05 s strain 0.000123 stress 12.3 MPa cracks 3 | 9.8e+05 particle-steps/s | 14 %
-//   specimen genesis: 4000 of 10500 steps | 2300 steps/s | 38 %
+//   cut: step 2500 time 1.25e-05 s travel 0.025 mm cutting 1.23 N thrust 0.456 N cracks 12 | 1.1e+06 particle-steps/s
+//   | 31 % | ETA 4 min
+//   tension: step 4000 time 4e-05 s strain 0.000123 stress 12.3 MPa cracks 3 | 9.8e+05 particle-steps/s | 14 %
+//   | ETA 50 s
+//   specimen genesis: 4000 of 10500 steps | 2300 steps/s | 38 % | ETA 3 s
+//   (the ETA: the time left at the stage's rate so far, as on a terminal; none on a stage's last line)
 //   cut: done: 8000 steps of 1755 particles in 10.2 s, 1.38e+06 particle-steps/s
 //   cut: resumed at step 5000 travel 0.05 mm (62 %)      (a stage resumed from a checkpoint; its rates and its
 //   cut: done: 3000 steps since the resume at step 5000 of 1755 particles in ...   done line count from there)
@@ -43,6 +46,7 @@ class RunLog {
   struct Stage {
     Clock::time_point start, last_line;
     double last_line_done = 0;        ///< at the last line: units done
+    double done_before = 0;           ///< units a checkpoint had done (a resumed stage): not in its ETA's rate
     std::int64_t last_line_step = 0;  ///< and steps
     std::int64_t first_step = 0;      ///< where a resumed stage began (its checkpoint's step); 0 otherwise
     long reports = 0;

@@ -378,7 +378,12 @@ class CutRun {
   void observe_edge();
 };
 
-/// "tool_travel_mm,time_s,main_force_N,thrust_force_N".
+/// A cut's forces.csv: "tool_travel_mm,time_s,cutting_force_N,thrust_force_N,cutting_force_N_per_mm,
+/// thrust_force_N_per_mm,main_force_N", one row per sample; the forces over the cut's width (the specimen's
+/// thickness), the _per_mm ones divided by it; main_force_N, the cutting force's old name, is deprecated (removed in
+/// 0.3.0). The header and one row, as cut_forces_csv writes them (a running cut's file grows by whole rows).
 std::string cut_forces_csv(const CutResult& result);
+std::string cut_forces_csv_header();
+std::string cut_forces_csv_row(const CutSample& sample, double width_m);
 
 }  // namespace kerf::dem
