@@ -3,9 +3,9 @@
 # own Python (pvpython, Debian's paraview package 5.11, under a virtual X server) runs the docs' recipe
 # (tools/paraview/render_frames.py: result.pvd loaded, the disks coloured by the magnitude of displacement_m
 # and by broken_joints, the joints, the tool, the cracks coloured by place) and renders a PNG, which must exist
-# and not be blank: many colours, the colour maps' among them. Labelled "long" (ParaView is a large package:
-# scripts/install-deps.sh --long installs it; scripts/test.sh --long passes that). KERF_PARAVIEW_PNG=FILE keeps
-# a copy of the picture.
+# and not be blank: many colours, the colour maps' among them; then ParaView's reader finds the force-chain
+# arrays. Labelled "long" (ParaView is a large package: scripts/install-deps.sh --long installs it;
+# scripts/test.sh --long passes that). KERF_PARAVIEW_PNG=FILE keeps a copy of the picture.
 # Usage: vtk_paraview.sh <dir of built programs> <source dir>
 source "$(dirname "$0")/../cli/lib/dem_common.sh" "$@"
 
@@ -54,4 +54,25 @@ for name, half in (("left (displacement)", rgb[:, : w // 2]), ("right (broken jo
     assert (spread > 60).mean() > 0.01, f"{name}: almost no coloured pixels"
 print(f"ParaView picture {w} x {h}: ok")
 PY
+# ParaView's own reader finds the force-chain arrays (issue 55 item 6): each disk's stress tensor, pressure and
+# force sum, each joint's normal and shear force (of both signs in a cut).
+cat >"$work/chains.py" <<'PVPY'
+import sys
+from paraview.simple import PVDReader, servermanager
+reader = PVDReader(FileName=f"{sys.argv[1]}/result.pvd")
+reader.UpdatePipeline(max(reader.TimestepValues))
+data = servermanager.Fetch(reader)
+while not hasattr(data, "GetPointData"):  # the particles part: the first block, down to its data set
+    data = data.GetBlock(0)
+points, cells = data.GetPointData(), data.GetCellData()
+for name in ("stress_MPa", "pressure_MPa", "contact_force_sum_N"):
+    assert points.GetArray(name) is not None, name
+assert points.GetArray("stress_MPa").GetNumberOfComponents() == 9
+for name in ("joint_normal_force_N", "joint_shear_force_N"):
+    array = cells.GetArray(name)
+    assert array is not None and array.GetRange()[0] < 0 < array.GetRange()[1], (name, array and array.GetRange())
+print("ParaView reads the force-chain arrays")
+PVPY
+xvfb-run -a pvpython "$work/chains.py" "$work/c" >"$work/pv_chains.out" 2>&1 ||
+  fail "pvpython, force chains: $(grep -v '^ *[0-9]* *0x' "$work/pv_chains.out" | tail -10)"
 echo "vtk_paraview: ok"
