@@ -2,8 +2,8 @@
 
 #include <map>
 
-#include "kerf/analytic/evaluate.hpp"
-#include "kerf/analytic/scene.hpp"
+#include "kerf/analytic/kinds/evaluate.hpp"
+#include "kerf/analytic/kinds/scene.hpp"
 
 namespace kerf {
 

@@ -5,8 +5,8 @@
 #include <cstdio>
 #include <string>
 
-#include "kerf/analytic/evaluate.hpp"
-#include "kerf/analytic/predict.hpp"
+#include "kerf/analytic/kinds/evaluate.hpp"
+#include "kerf/analytic/kinds/predict.hpp"
 #include "kerf/analytic/registry.hpp"
 
 using kerf::Json;

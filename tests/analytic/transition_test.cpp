@@ -1,12 +1,12 @@
-#include "kerf/analytic/transition.hpp"
+#include "kerf/analytic/forces/transition.hpp"
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
 
-#include "kerf/analytic/glass_edge.hpp"
-#include "kerf/analytic/predict.hpp"
-#include "kerf/analytic/scene.hpp"
+#include "kerf/analytic/forces/glass_edge.hpp"
+#include "kerf/analytic/kinds/predict.hpp"
+#include "kerf/analytic/kinds/scene.hpp"
 #include "kerf/error.hpp"
 #include "kerf/units.hpp"
 
