@@ -9,6 +9,7 @@
 
 #include "kerf/analytic/forces/critical_depth.hpp"
 #include "kerf/analytic/forces/merchant.hpp"
+#include "kerf/analytic/registry.hpp"
 #include "kerf/error.hpp"
 #include "kerf/io.hpp"
 #include "kerf/units.hpp"

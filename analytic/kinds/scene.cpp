@@ -53,21 +53,6 @@ ChoiceField<S> mapped_choice(std::string_view key, std::span<const std::string_v
           [=](S& s, int k) { at(s) = *parse(names[static_cast<std::size_t>(k)]); }};
 }
 
-/// The names a registry kind holds, as the field tables keep them (views of the registry's lines).
-std::span<const std::string_view> registry_names(std::string_view kind) {
-  static std::mutex mutex;
-  static std::map<std::string, std::vector<std::string_view>, std::less<>> by_kind;
-  std::lock_guard lock(mutex);
-  auto it = by_kind.find(kind);
-  if (it == by_kind.end()) {
-    std::vector<std::string_view> names;
-    for (const auto& m : analytic_models())
-      if (m.kind == kind) names.push_back(m.name);
-    it = by_kind.emplace(std::string(kind), std::move(names)).first;
-  }
-  return it->second;
-}
-
 /// The enum value a registry line of `Kind` constructs.
 template <class E>
 std::optional<E> registered(std::string_view kind, std::string_view name) {
@@ -85,7 +70,7 @@ constexpr char kDeformation[] = "deformation", kShearAngle[] = "shear_angle", kC
 
 template <class E, const char* Kind, class At>
 ChoiceField<AnalyticScene> model_choice(std::string_view doc, At at) {
-  return mapped_choice<AnalyticScene, E>(Kind, registry_names(Kind), doc, at, &registered_as<E, Kind>);
+  return mapped_choice<AnalyticScene, E>(Kind, analytic_model_names(Kind), doc, at, &registered_as<E, Kind>);
 }
 
 std::optional<QuadratureRule> quadrature_rule(std::string_view name) { return quadrature_rule_from_name(name); }
@@ -177,19 +162,6 @@ const FieldTable<MeasuredForces>& measured_fields() {
 }
 
 // ---- models
-/// The force lines that carry a model of this kind (their `orthogonal` member), in registry order: `auto`,
-/// `merchant`, `liu_li`, `oxley` and any registered later (before the first scene is read). `trepanning` is not
-/// one: it is a scene kind of its own that the same key chooses (parse_scene).
-std::span<const std::string_view> orthogonal_force_names() {
-  static const std::vector<std::string_view> names = [] {
-    std::vector<std::string_view> list;
-    for (const auto& m : analytic_models())
-      if (m.kind == "force" && m.orthogonal) list.push_back(m.name);
-    return list;
-  }();
-  return names;
-}
-
 /// models.force: a registered model, or "auto" (the cheapest valid one, chosen once the scene is read).
 ChoiceField<AnalyticScene> force_field() {
   const auto names = orthogonal_force_names();
@@ -215,7 +187,7 @@ constexpr EnumNames<ShearAngleModel> kContactShearAngleNames{kContactShearAngleN
 std::span<const std::string_view> contact_length_names() {
   static const auto names = [] {
     std::vector<std::string> text;
-    for (const auto& base : registry_names("contact_length"))
+    for (const auto& base : analytic_model_names("contact_length"))
       for (const char* suffix : {"", "_mep", "_mssp"}) text.push_back(std::string(base) + suffix);
     return text;
   }();
@@ -258,7 +230,7 @@ NameListField<AnalyticScene> contact_length_field() {
 const FieldTable<AnalyticScene>& models_fields() {
   static const FieldTable<AnalyticScene> table{
       force_field(),
-      NameListField<AnalyticScene>{"flow_stress", registry_names("flow_stress"), "the terms of Shao et al. 2013's Eq. 8 to add, or one "
+      NameListField<AnalyticScene>{"flow_stress", analytic_model_names("flow_stress"), "the terms of Shao et al. 2013's Eq. 8 to add, or one "
                                    "hardness term for a glass or ceramic (the default for a material with a hardness "
                                    "and no johnson_cook group: hardness with its constraint factor, else hardness_marsh)",
                                    [](const AnalyticScene& s) { return s.flow_stress_terms; },
@@ -452,7 +424,11 @@ void read_models(ObjectReader& root, AnalyticScene& scene) {
   if (models.has("force") && models.get("force").is_string()) {
     const std::string name = models.get("force").get<std::string>();
     const auto* line = registered_line(analytic_models(), "force", name);
-    if (!line) throw InputError(models.key_path("force"), name, describe_choices(name, analytic_model_names("force")));
+    if (!line) {
+      const auto names = analytic_model_names("force");
+      throw InputError(models.key_path("force"), name,
+                       describe_choices(name, std::vector<std::string>(names.begin(), names.end())));
+    }
     if (!line->orthogonal) {
       throw InputError("models.force", name,
                        "an orthogonal-cut model here (" + name + " is a scene kind of its own, read by parse_scene)");

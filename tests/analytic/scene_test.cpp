@@ -9,6 +9,7 @@
 
 #include "kerf/analytic/kinds/material_models.hpp"
 #include "kerf/analytic/kinds/predict.hpp"
+#include "kerf/analytic/registry.hpp"
 #include "kerf/error.hpp"
 #include "kerf/io.hpp"
 #include "kerf/json_reader.hpp"

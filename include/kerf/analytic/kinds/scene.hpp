@@ -26,12 +26,12 @@
 #include "kerf/analytic/forces/transition.hpp"
 #include "kerf/analytic/kinds/material_models.hpp"
 #include "kerf/analytic/kinds/round_nose.hpp"
-#include "kerf/analytic/registry.hpp"
 #include "kerf/material.hpp"
 #include "kerf/units.hpp"
 
 namespace kerf {
 
+struct AnalyticModelInfo;  // registry.hpp
 struct AnalyticScene;
 struct Prediction;  // predict.hpp
 
