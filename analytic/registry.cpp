@@ -4,7 +4,9 @@
 #include <map>
 
 // The one file that sees every model: its lines name their entry points and enum values.
+#include "kerf/analytic/forces/transition_model.hpp"
 #include "kerf/analytic/kinds/evaluate.hpp"
+#include "kerf/analytic/kinds/predict.hpp"
 #include "kerf/analytic/kinds/scene.hpp"
 
 namespace kerf {

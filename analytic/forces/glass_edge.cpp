@@ -1,5 +1,6 @@
 #include "kerf/analytic/forces/glass_edge.hpp"
 
+#include "kerf/analytic/forces/transition_model.hpp"
 #include "kerf/analytic/kinds/predict.hpp"
 #include "kerf/analytic/kinds/scene.hpp"
 #include "kerf/units.hpp"
@@ -21,8 +22,9 @@ EdgeForce edge_force_per_width(const Json& material, const EdgeTool& tool) {
        {{"force", "transition"}, {"fracture", "none"}, {"transition", {{"ductile_layer_factor", tool.layer_factor}}}}}};
   const AnalyticScene scene = parse_analytic_scene(scene_document);
   const Prediction p = predict(scene);
-  return {.force = p.transition->layer,
-          .ductile_layer_m = p.transition->ductile_layer_m,
+  const TransitionDetails& details = *transition_details(p);
+  return {.force = details.layer,
+          .ductile_layer_m = details.ductile_layer_m,
           .critical_depth_m = *scene.critical_depth_m,
           .flow_stress_Pa = p.flow.total_Pa};
 }

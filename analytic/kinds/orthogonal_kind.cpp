@@ -82,15 +82,7 @@ void print_prediction(std::FILE* text, const std::string& scene_path, const Anal
       fmt::print(text, "ploughing part    none (models.ploughing = {})\n", ploughing_model_name(scene.ploughing));
     }
   }
-  if (p.transition) {
-    const auto& t = *p.transition;
-    fmt::print(text, "ductile layer     l = {:.4g} um ({} x d_c); the ductile model's part {:.6g} N cutting, {:.6g} N "
-                     "thrust\n",
-               m_to_um(t.ductile_layer_m), scene.transition.layer_factor, t.layer.cutting_N_per_m * p.width_m,
-               t.layer.thrust_N_per_m * p.width_m);
-    fmt::print(text, "fracture part     {:.6g} N cutting, {:.6g} N thrust ({})\n", t.fracture.cutting_N_per_m * p.width_m,
-               t.fracture.thrust_N_per_m * p.width_m, fracture_model_name(scene.transition.fracture));
-  }
+  if (scene.force_model().print) scene.force_model().print(text, scene, p);  // the model's own lines
   if (p.oxley) {
     fmt::print(text,
                "oxley             C0 = {:.4g}, delta = {:.4g}, interface T = {:.5g} K, contact length {:.6g} mm\n",

@@ -27,8 +27,6 @@ constexpr double kContactLengthValidatedThickness_m = 0.1e-3;
 constexpr const char* kContactLengthValidatedMaterial = "a2024_t351";
 // Two friction angles closer than this are the same (rounding of the closures' identities).
 constexpr double kSameAngle_rad = 1e-9;
-// The deepest cut the transition model was held against: Yang et al. 2018's Table 6 (0.1 and 0.2 mm).
-constexpr double kTransitionValidatedDepth_m = 0.2e-3;
 
 /// Shear-plane strain and Oxley's strain-rate estimate for a sharp tool (physics-analytic.md §3).
 DeformationState shear_plane_state(const AnalyticScene& scene, double shear_angle_rad) {
@@ -60,19 +58,19 @@ void check_shear_angle(double phi, const AnalyticScene& scene) {
                                units::rad_to_deg(scene.friction_angle_rad.value_or(0.0))));
 }
 
-/// Every force model but `transition` is a ductile-regime model: warn, and name the model to use, above the
-/// critical depth; `transition` warns beyond the depth it was held against.
+/// A ductile-regime force model warns, and names the model to use, above the critical depth; a model that spans
+/// the transition (its validated_depth_m) warns beyond the depth it was held against.
 void add_regime(const AnalyticScene& scene, Prediction& p) {
   if (!scene.critical_depth_m) return;
   const double depth = scene.uncut_chip_thickness_m, critical = *scene.critical_depth_m;
   const CuttingRegime regime = classify_regime(depth, critical);
   p.regime = cutting_regime_name(regime);
-  if (&scene.force_model() == &transition_force_model) {
-    if (depth > kTransitionValidatedDepth_m) {
+  if (const double held = scene.force_model().validated_depth_m; held > 0.0) {
+    if (depth > held) {
       p.within_model_range = false;
       p.warnings.push_back(fmt::format("uncut chip thickness {:.4g} um is beyond {:.3g} um, the deepest cut the "
-                                       "transition model was held against (docs/models.md)",
-                                       units::m_to_um(depth), units::m_to_um(kTransitionValidatedDepth_m)));
+                                       "{} model was held against (docs/models.md)",
+                                       units::m_to_um(depth), units::m_to_um(held), p.force_model));
     }
     return;
   }
@@ -252,105 +250,12 @@ DeformationState deformation_state(const AnalyticScene& scene, const OxleyResult
   return {};
 }
 
-/// Merchant and Liu-Li: the chip term of the Liu-Li integral (Merchant is its r = 0 limit, without the edge
-/// details), plus the wave model's ploughing term under a rounded edge.
-void predict_chip_forces(const AnalyticScene& scene, const OxleyResult* oxley, bool sharp, Prediction& p) {
-  const double t0 = scene.uncut_chip_thickness_m;
-  nominal_shear_angle(scene, p);
-
-  // One friction angle for the whole prediction: the closure's value at the nominal rake (the scene's beta for
-  // the constant closure). It sets the rake-face force, the stagnation angle, the contact lengths and the
-  // printed value, for Merchant and Liu-Li alike, so that Liu-Li's r -> 0 limit is Merchant on the same scene.
-  const double beta = prediction_friction_angle(scene, p.shear_angle_rad);
-  p.friction_angle_rad = beta;
-  p.has_friction = true;
-
-  p.state = deformation_state(scene, oxley, p.shear_angle_rad);
-  p.flow = flow_stress(scene.flow_stress, p.state, &p.guards);
-  const double k_s = p.flow.shear_Pa;
-
-  LiuLiParams params = scene.liu_li;
-  params.rake_rad = scene.rake_rad;
-  params.edge_radius_m = sharp ? 0.0 : scene.edge_radius_m;  // Merchant: r = 0
-  params.chip_ratio = p.chip_ratio;
-  params.friction_angle_rad = beta;
-  const LiuLiResult liu_li = liu_li_force_per_width(params, k_s, t0, &p.guards);
-  if (sharp) {
-    warn_if_edge_ignored(scene, "the sharp-tool model ignores it (use models.force = liu_li)", p);
-  } else {
-    p.liu_li = liu_li;
-  }
-  if (liu_li.rake_face_ploughs) {
-    p.warnings.push_back(fmt::format("rake {:.4g} deg lies below the {} cut-off {:.4g} deg: no chip forms, the whole "
-                                     "cut is ploughed (chip force zero)",
-                                     units::rad_to_deg(scene.rake_rad),
-                                     lower_limit_rule_name(scene.liu_li.lower_limit),
-                                     units::rad_to_deg(liu_li.cut_off_rad)));
-  }
-  // The ploughing term under the edge: the wave model on the chord of the arc below h_p = min(t0, h_s).
-  ForcePerWidth ploughing;
-  if (p.liu_li && scene.ploughing == PloughingModel::wave && params.edge_radius_m > 0.0) {
-    p.friction_factor = ploughing_friction_factor(scene, beta);
-    const EdgePloughingParams plough{.edge_radius_m = params.edge_radius_m, .friction_factor = p.friction_factor};
-    p.ploughing = edge_ploughing_force_per_width(plough, k_s, liu_li.ploughed_thickness_m, &p.guards);
-    ploughing = p.ploughing->force;
-  }
-  p.cutting_force_N = (liu_li.total.cutting_N_per_m + ploughing.cutting_N_per_m) * scene.width_m;
-  p.thrust_force_N = (liu_li.total.thrust_N_per_m + ploughing.thrust_N_per_m) * scene.width_m;
-
-  if (scene.friction_angle_rad && std::fabs(beta - *scene.friction_angle_rad) > kSameAngle_rad) {
-    p.warnings.push_back(fmt::format(
-        "the {} friction closure at the nominal rake gives beta = {:.4g} deg with this shear angle ({}); it is used "
-        "for the forces, the stagnation angle and the contact lengths, not the scene's {:.4g} deg ({})",
-        friction_closure_name(scene.liu_li.closure), units::rad_to_deg(beta),
-        scene.shear_angle == ShearAngleSource::chip_ratio ? "from cut.chip_ratio" : "from models.shear_angle",
-        units::rad_to_deg(*scene.friction_angle_rad), scene.friction_origin));
-  }
-  add_contact_lengths(scene, beta, p);
-}
-
 void predict_merchant_forces(const AnalyticScene& scene, const OxleyResult* oxley, Prediction& p) {
   predict_chip_forces(scene, oxley, true, p);
 }
 
 void predict_liu_li_forces(const AnalyticScene& scene, const OxleyResult* oxley, Prediction& p) {
   predict_chip_forces(scene, oxley, false, p);
-}
-
-/// models.force = transition: the ductile model (Liu-Li with an edge radius, Merchant without) at min(h, l), plus
-/// the fracture part above l (transition.hpp). Above l the shear angle, chip, state and edge details are the
-/// layer's.
-void predict_transition_forces(const AnalyticScene& scene, const OxleyResult* oxley, Prediction& p) {
-  if (!scene.critical_depth_m) {
-    throw InputError("material.brittle", fmt::format("(no hardness and toughness in material '{}')", scene.material->name),
-                     "a brittle material with elastic.youngs_modulus_GPa, brittle.hardness_GPa and "
-                     "brittle.fracture_toughness_MPa_sqrt_m: models.force = transition needs its critical depth");
-  }
-  const double layer = ductile_layer_m(scene.transition, *scene.critical_depth_m);
-  const double depth = scene.uncut_chip_thickness_m;
-  const bool sharp = scene.edge_radius_m == 0.0;
-  TransitionDetails details;
-  details.ductile_layer_m = layer;
-  if (depth <= layer) {
-    predict_chip_forces(scene, oxley, sharp, p);
-  } else {
-    AnalyticScene layer_scene = scene;
-    layer_scene.uncut_chip_thickness_m = layer;
-    predict_chip_forces(layer_scene, oxley, sharp, p);
-  }
-  details.layer = {p.cutting_force_N / scene.width_m, p.thrust_force_N / scene.width_m};
-  const BrittleProperties brittle = brittle_properties(*scene.material, "material");
-  details.fracture = fracture_force_per_width(scene.transition, brittle.fracture_toughness_Pa_sqrt_m, depth, layer,
-                                              scene.rake_rad, p.friction_angle_rad);
-  if (details.fracture.cutting_N_per_m > details.layer.cutting_N_per_m) {
-    p.warnings.push_back("the fracture part (zeta K_c sqrt(h) scaling) carries most of the force: on Yang et al. "
-                         "2018's soda-lime cuts at 0.1-0.2 mm it is 15-20 times the measured force "
-                         "(validation/glass_transition/README.md); models.fracture = none gives the edge's layer "
-                         "alone, a lower bound");
-  }
-  p.cutting_force_N += details.fracture.cutting_N_per_m * scene.width_m;
-  p.thrust_force_N += details.fracture.thrust_N_per_m * scene.width_m;
-  p.transition = details;
 }
 
 /// models.force = auto: the cheapest valid model for the scene as read.
@@ -408,12 +313,68 @@ void require_finite(const AnalyticScene& scene, const Prediction& p) {
 }
 }  // namespace
 
+// The chip term the Merchant, Liu-Li and transition units share (force_model.hpp); Merchant is its r = 0 limit,
+// without the edge details.
+void predict_chip_forces(const AnalyticScene& scene, const OxleyResult* oxley, bool sharp, Prediction& p) {
+  const double t0 = scene.uncut_chip_thickness_m;
+  nominal_shear_angle(scene, p);
+
+  // One friction angle for the whole prediction: the closure's value at the nominal rake (the scene's beta for
+  // the constant closure). It sets the rake-face force, the stagnation angle, the contact lengths and the
+  // printed value, for Merchant and Liu-Li alike, so that Liu-Li's r -> 0 limit is Merchant on the same scene.
+  const double beta = prediction_friction_angle(scene, p.shear_angle_rad);
+  p.friction_angle_rad = beta;
+  p.has_friction = true;
+
+  p.state = deformation_state(scene, oxley, p.shear_angle_rad);
+  p.flow = flow_stress(scene.flow_stress, p.state, &p.guards);
+  const double k_s = p.flow.shear_Pa;
+
+  LiuLiParams params = scene.liu_li;
+  params.rake_rad = scene.rake_rad;
+  params.edge_radius_m = sharp ? 0.0 : scene.edge_radius_m;  // Merchant: r = 0
+  params.chip_ratio = p.chip_ratio;
+  params.friction_angle_rad = beta;
+  const LiuLiResult liu_li = liu_li_force_per_width(params, k_s, t0, &p.guards);
+  if (sharp) {
+    warn_if_edge_ignored(scene, "the sharp-tool model ignores it (use models.force = liu_li)", p);
+  } else {
+    p.liu_li = liu_li;
+  }
+  if (liu_li.rake_face_ploughs) {
+    p.warnings.push_back(fmt::format("rake {:.4g} deg lies below the {} cut-off {:.4g} deg: no chip forms, the whole "
+                                     "cut is ploughed (chip force zero)",
+                                     units::rad_to_deg(scene.rake_rad),
+                                     lower_limit_rule_name(scene.liu_li.lower_limit),
+                                     units::rad_to_deg(liu_li.cut_off_rad)));
+  }
+  // The ploughing term under the edge: the wave model on the chord of the arc below h_p = min(t0, h_s).
+  ForcePerWidth ploughing;
+  if (p.liu_li && scene.ploughing == PloughingModel::wave && params.edge_radius_m > 0.0) {
+    p.friction_factor = ploughing_friction_factor(scene, beta);
+    const EdgePloughingParams plough{.edge_radius_m = params.edge_radius_m, .friction_factor = p.friction_factor};
+    p.ploughing = edge_ploughing_force_per_width(plough, k_s, liu_li.ploughed_thickness_m, &p.guards);
+    ploughing = p.ploughing->force;
+  }
+  p.cutting_force_N = (liu_li.total.cutting_N_per_m + ploughing.cutting_N_per_m) * scene.width_m;
+  p.thrust_force_N = (liu_li.total.thrust_N_per_m + ploughing.thrust_N_per_m) * scene.width_m;
+
+  if (scene.friction_angle_rad && std::fabs(beta - *scene.friction_angle_rad) > kSameAngle_rad) {
+    p.warnings.push_back(fmt::format(
+        "the {} friction closure at the nominal rake gives beta = {:.4g} deg with this shear angle ({}); it is used "
+        "for the forces, the stagnation angle and the contact lengths, not the scene's {:.4g} deg ({})",
+        friction_closure_name(scene.liu_li.closure), units::rad_to_deg(beta),
+        scene.shear_angle == ShearAngleSource::chip_ratio ? "from cut.chip_ratio" : "from models.shear_angle",
+        units::rad_to_deg(*scene.friction_angle_rad), scene.friction_origin));
+  }
+  add_contact_lengths(scene, beta, p);
+}
+
 // The built-in force models, as their registry lines (analytic/registry.cpp) carry them.
 const OrthogonalForceModel merchant_force_model{.predict = &predict_merchant_forces};
 const OrthogonalForceModel liu_li_force_model{.predict = &predict_liu_li_forces, .edge_columns = true};
 const OrthogonalForceModel oxley_force_model{.predict = &predict_oxley_forces, .solves_oxley = true};
 const OrthogonalForceModel auto_force_model{.choose = &choose_force_model};
-const OrthogonalForceModel transition_force_model{.predict = &predict_transition_forces, .edge_columns = true};
 
 Prediction predict(const AnalyticScene& scene) {
   Prediction p = predict_forces(scene);
@@ -494,15 +455,7 @@ void write_prediction_cells(const AnalyticScene& scene, const Prediction& p, Cel
     w.optional_number("oxley_residual", has, o.residual);
     w.optional_number("oxley_shear_angle_roots", has, o.shear_angle_roots);
   }
-  if (&scene.force_model() == &transition_force_model) {
-    const TransitionDetails t = p.transition.value_or(TransitionDetails{});
-    w.text("fracture_model", fracture_model_name(scene.transition.fracture));
-    w.number("ductile_layer_um", units::m_to_um(t.ductile_layer_m));
-    w.number("layer_cutting_force_N", t.layer.cutting_N_per_m * p.width_m);
-    w.number("layer_thrust_force_N", t.layer.thrust_N_per_m * p.width_m);
-    w.number("fracture_cutting_force_N", t.fracture.cutting_N_per_m * p.width_m);
-    w.number("fracture_thrust_force_N", t.fracture.thrust_N_per_m * p.width_m);
-  }
+  if (scene.force_model().write_cells) scene.force_model().write_cells(scene, p, w);  // the model's own
   if (scene.turning) {
     w.number("feed_um_per_rev", units::m_to_um(scene.turning->geometry.feed_m_per_rev));
     w.number("depth_of_cut_um", units::m_to_um(scene.turning->geometry.depth_of_cut_m));

@@ -4,6 +4,7 @@
 //
 //   kerf::Prediction p = kerf::predict(scene);
 //   auto row = kerf::prediction_columns(scene, p);   // [("cutting_force_N", "12.5"), ...] for CSV
+#include <any>
 #include <optional>
 #include <string>
 #include <utility>
@@ -25,13 +26,6 @@ struct OxleyDetails {
   double contact_length_m = 0.0;
   double residual = 0.0;  ///< the larger relative residual of the two Oxley conditions
   int shear_angle_roots = 0;  ///< branches found; the minimum-force one is reported
-};
-
-/// models.force = transition: the two parts of the totals (docs/models.md).
-struct TransitionDetails {
-  double ductile_layer_m = 0.0;  ///< l = lambda d_c
-  ForcePerWidth layer;           ///< the ductile model at min(h, l): the edge's part, depth-independent above l
-  ForcePerWidth fracture;        ///< zero at and below l
 };
 
 struct Prediction {
@@ -57,7 +51,8 @@ struct Prediction {
   std::optional<EdgePloughingResult> ploughing;
   double friction_factor = 0.0;  ///< the ploughing model's f (given, or sin(2 beta))
   std::optional<OxleyDetails> oxley;
-  std::optional<TransitionDetails> transition;
+  /// The force model's own details (its unit's write_cells and print read them: kinds/force_model.hpp).
+  std::any details;
   std::string regime;  ///< "ductile", "transition" or "brittle" against the critical depth; empty without one
   /// False where the force model does not hold (a ductile model above d_c; transition beyond 0.2 mm): the CSV's
   /// within_model_range, the figures' hollow points.
@@ -65,6 +60,10 @@ struct Prediction {
   Guards guards;
   std::vector<std::string> warnings;
 };
+
+/// The built-in force models of this file, named by their registry lines (the transition model's unit is its own:
+/// forces/transition_model.hpp).
+extern const OrthogonalForceModel merchant_force_model, liu_li_force_model, oxley_force_model, auto_force_model;
 
 /// Throws InputError for input the models cannot accept and ModelError when a solver fails.
 Prediction predict(const AnalyticScene& scene);

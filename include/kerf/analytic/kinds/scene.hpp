@@ -24,6 +24,7 @@
 #include "kerf/analytic/forces/ploughing.hpp"
 #include "kerf/analytic/forces/shear_angle.hpp"
 #include "kerf/analytic/forces/transition.hpp"
+#include "kerf/analytic/kinds/force_model.hpp"
 #include "kerf/analytic/kinds/material_models.hpp"
 #include "kerf/analytic/kinds/round_nose.hpp"
 #include "kerf/material.hpp"
@@ -32,31 +33,6 @@
 namespace kerf {
 
 struct AnalyticModelInfo;  // registry.hpp
-struct AnalyticScene;
-struct Prediction;  // predict.hpp
-
-/// A force model of the orthogonal kind (models.force merchant, liu_li, oxley, auto, or one registered later),
-/// as its registry line carries it (`orthogonal`, analytic/registry.cpp): the kind calls it and never asks
-/// which model a scene names. How to add one: docs/analytic-models.md.
-struct OrthogonalForceModel {
-  /// Fills p's forces, shear angle, friction angle, chip ratio and thickness, deformation state and flow stress
-  /// (and its own details: p.liu_li, p.ploughing), with its guards and warnings; p arrives with the width, the
-  /// thickness, the regime and the Oxley details set. `oxley`: the extended-Oxley solve at t0 where the scene
-  /// asked for one (force oxley or deformation oxley), else nullptr. Throws InputError / ModelError.
-  void (*predict)(const AnalyticScene& scene, const OxleyResult* oxley, Prediction& p) = nullptr;
-  /// The model is the extended-Oxley solve: the scene reads the material's johnson_cook, thermal and oxley
-  /// groups for it; it predicts its own friction angle (no friction data needed, the scene's is not used), its
-  /// flow stress is Johnson-Cook alone, and it ignores the edge (the ploughing columns stay empty).
-  bool solves_oxley = false;
-  /// The CSV carries the Liu-Li edge-integral and ploughing-model columns.
-  bool edge_columns = false;
-  /// `auto` only: picks the model for the scene as read (the name of another force line) and says why.
-  std::string_view (*choose)(const AnalyticScene& scene, std::string* reason) = nullptr;
-};
-
-/// The built-in models (analytic/kinds/predict.cpp), named by their registry lines.
-extern const OrthogonalForceModel merchant_force_model, liu_li_force_model, oxley_force_model, auto_force_model,
-    transition_force_model;
 
 /// r / t0 below which the edge changes the force by only a few percent: models.force = auto takes the
 /// sharp-tool model there, and the sharp-tool models warn above it.
@@ -122,7 +98,7 @@ struct AnalyticScene {
   std::optional<OxleyParams> oxley;
   OxleySolverOptions oxley_options;
 
-  /// The force model of `force`'s line.
+  /// The force model of `force`'s line (kinds/force_model.hpp).
   const OrthogonalForceModel& force_model() const;
 };
 
