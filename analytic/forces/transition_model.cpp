@@ -7,6 +7,7 @@
 #include "kerf/analytic/kinds/cells.hpp"
 #include "kerf/analytic/kinds/predict.hpp"
 #include "kerf/error.hpp"
+#include "kerf/field_table.hpp"
 #include "kerf/units.hpp"
 
 namespace kerf {
@@ -73,6 +74,17 @@ void print_transition(std::FILE* text, const AnalyticScene& scene, const Predict
 }
 
 }  // namespace
+
+const FieldTable<TransitionParams>& transition_fields() {
+  static const FieldTable<TransitionParams> table{
+      number_field("ductile_layer_factor", units::kSi("(times d_c)"), Range::positive(),
+                   "the layer the edge removes in the ductile mode above d_c, l = factor d_c",
+                   &TransitionParams::layer_factor),
+      number_field("fracture_coefficient", units::kNone, Range::non_negative(),
+                   "zeta of the fracture part zeta K_c (sqrt(h) - sqrt(l)) (docs/models.md)",
+                   &TransitionParams::fracture_coefficient)};
+  return table;
+}
 
 const OrthogonalForceModel transition_force_model{.predict = &predict_transition_forces,
                                                   .edge_columns = true,

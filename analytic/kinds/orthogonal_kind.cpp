@@ -13,6 +13,29 @@ namespace kerf {
 
 namespace {
 
+/// The Liu-Li edge integral's lines and the ploughing part under the edge (the chip term's details).
+void print_edge_details(std::FILE* text, const AnalyticScene& scene, const Prediction& p) {
+  using units::m_to_um;
+  using units::rad_to_deg;
+  const auto& l = *p.liu_li;
+  fmt::print(
+      text, "edge integral     from {:.4g} deg to {:.4g} deg (stagnation {:.4g} deg{}); ploughed layer {:.6g} um\n",
+      rad_to_deg(l.lower_limit_rad), rad_to_deg(l.upper_limit_rad), rad_to_deg(l.stagnation_angle_rad),
+      l.pole_rad ? fmt::format(", pole {:.4g} deg", rad_to_deg(*l.pole_rad)) : "", m_to_um(l.ploughed_thickness_m));
+  fmt::print(text,
+             "edge part         cutting {:.6g} N, thrust {:.6g} N (the thrust depends strongly on the lower limit)\n",
+             l.edge.cutting_N_per_m * p.width_m, l.edge.thrust_N_per_m * p.width_m);
+  if (p.ploughing) {
+    const auto& w = *p.ploughing;
+    fmt::print(text, "ploughing part    cutting {:.6g} N, thrust {:.6g} N (wave model, f = {:.4g}, chord {:.6g} um at "
+               "{:.4g} deg)\n",
+               w.force.cutting_N_per_m * p.width_m, w.force.thrust_N_per_m * p.width_m, p.friction_factor,
+               m_to_um(w.chord_m), rad_to_deg(w.factors.attack_angle_rad));
+  } else {
+    fmt::print(text, "ploughing part    none (models.ploughing = {})\n", ploughing_model_name(scene.ploughing));
+  }
+}
+
 void print_prediction(std::FILE* text, const std::string& scene_path, const AnalyticScene& scene, const Prediction& p) {
   using units::m_to_mm;
   using units::m_to_um;
@@ -63,25 +86,7 @@ void print_prediction(std::FILE* text, const std::string& scene_path, const Anal
     if (length_m) fmt::print(text, "{:<17} {:.6g} mm\n", name, m_to_mm(*length_m));
     if (!length_m) fmt::print(text, "{:<17} not applicable (see the warnings)\n", name);
   }
-  if (p.liu_li) {
-    const auto& l = *p.liu_li;
-    fmt::print(
-        text, "edge integral     from {:.4g} deg to {:.4g} deg (stagnation {:.4g} deg{}); ploughed layer {:.6g} um\n",
-        rad_to_deg(l.lower_limit_rad), rad_to_deg(l.upper_limit_rad), rad_to_deg(l.stagnation_angle_rad),
-        l.pole_rad ? fmt::format(", pole {:.4g} deg", rad_to_deg(*l.pole_rad)) : "", m_to_um(l.ploughed_thickness_m));
-    fmt::print(text,
-               "edge part         cutting {:.6g} N, thrust {:.6g} N (the thrust depends strongly on the lower limit)\n",
-               l.edge.cutting_N_per_m * p.width_m, l.edge.thrust_N_per_m * p.width_m);
-    if (p.ploughing) {
-      const auto& w = *p.ploughing;
-      fmt::print(text, "ploughing part    cutting {:.6g} N, thrust {:.6g} N (wave model, f = {:.4g}, chord {:.6g} um at "
-                 "{:.4g} deg)\n",
-                 w.force.cutting_N_per_m * p.width_m, w.force.thrust_N_per_m * p.width_m, p.friction_factor,
-                 m_to_um(w.chord_m), rad_to_deg(w.factors.attack_angle_rad));
-    } else {
-      fmt::print(text, "ploughing part    none (models.ploughing = {})\n", ploughing_model_name(scene.ploughing));
-    }
-  }
+  if (p.liu_li) print_edge_details(text, scene, p);
   if (scene.force_model().print) scene.force_model().print(text, scene, p);  // the model's own lines
   if (p.oxley) {
     fmt::print(text,

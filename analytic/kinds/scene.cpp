@@ -9,6 +9,7 @@
 #include <tuple>
 
 #include "kerf/analytic/forces/critical_depth.hpp"
+#include "kerf/analytic/forces/transition_model.hpp"
 #include "kerf/analytic/registry.hpp"
 #include "kerf/analytic/trepanning/trepanning_scene.hpp"
 #include "kerf/error.hpp"
@@ -272,17 +273,6 @@ const FieldTable<AnalyticScene>& models_fields() {
                    "shear angle (MEP or MSSP) of the contact-length names without a suffix",
                    &AnalyticScene::contact_shear_angle),
       contact_length_field()};
-  return table;
-}
-
-const FieldTable<TransitionParams>& transition_fields() {
-  static const FieldTable<TransitionParams> table{
-      number_field("ductile_layer_factor", units::kSi("(times d_c)"), Range::positive(),
-                   "the layer the edge removes in the ductile mode above d_c, l = factor d_c", 
-                   &TransitionParams::layer_factor),
-      number_field("fracture_coefficient", units::kNone, Range::non_negative(),
-                   "zeta of the fracture part zeta K_c (sqrt(h) - sqrt(l)) (docs/models.md)",
-                   &TransitionParams::fracture_coefficient)};
   return table;
 }
 

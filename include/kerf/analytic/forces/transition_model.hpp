@@ -6,7 +6,9 @@
 //   kerf::Prediction p = kerf::predict(scene);            // scene.force_model() == transition_force_model
 //   double l_m = kerf::transition_details(p)->ductile_layer_m;
 #include "kerf/analytic/forces/merchant.hpp"
+#include "kerf/analytic/forces/transition.hpp"
 #include "kerf/analytic/kinds/force_model.hpp"
+#include "kerf/field_table.hpp"
 
 namespace kerf {
 
@@ -18,6 +20,10 @@ struct TransitionDetails {
 };
 
 extern const OrthogonalForceModel transition_force_model;
+
+/// Its parameters' field table, the object models.transition (models.fracture, a choice among the registry's
+/// fracture lines, is read with the models section): the scene reads it, and `kerf-forces keys` lists it.
+const FieldTable<TransitionParams>& transition_fields();
 
 /// The details of a transition prediction; nullptr for a prediction of another model (or none yet).
 const TransitionDetails* transition_details(const Prediction& p);
