@@ -127,8 +127,8 @@ Comparison trepanning_comparison(const TrepanningValidation& v, const CaseInputs
   const std::string source = std::filesystem::path(table.source).filename().string();
   DataSet measured{"measured (Table 4, mean of two tests)", source, citations, bases, {}};
   DataSet fit{"kerf Eqs. 21–22, fitted", "",
-              {fmt::format("kerf: analytic/trepanning.cpp with K_F = {:.4f} GPa and K_M = {:.4f} GPa, fitted to the "
-                           "measured rows by {} least squares (GSL gsl_multifit_wlinear)",
+              {fmt::format("kerf: analytic/trepanning/trepanning.cpp with K_F = {:.4f} GPa and K_M = {:.4f} GPa, fitted "
+                           "to the measured rows by {} least squares (GSL gsl_multifit_wlinear)",
                            units::pa_to_gpa(v.measured_fit.groups.axial_group_Pa),
                            units::pa_to_gpa(v.measured_fit.groups.torque_group_Pa), weighting_name)},
               bases, {}};
