@@ -1,9 +1,13 @@
 #include "kerf/analytic/registry.hpp"
 
+#include <deque>
 #include <map>
 
-#include "kerf/analytic/evaluate.hpp"
-#include "kerf/analytic/scene.hpp"
+// The one file that sees every model: its lines name their entry points and enum values.
+#include "kerf/analytic/forces/transition_model.hpp"
+#include "kerf/analytic/kinds/evaluate.hpp"
+#include "kerf/analytic/kinds/predict.hpp"
+#include "kerf/analytic/kinds/scene.hpp"
 
 namespace kerf {
 
@@ -89,14 +93,33 @@ std::vector<AnalyticModelInfo>& registry() {
   return models;
 }
 
-/// The names by kind, in registry order (built at the first call, kept in step by register_analytic_model).
-std::map<std::string, std::vector<std::string>, std::less<>>& names_by_kind() {
-  static auto by_kind = [] {
-    std::map<std::string, std::vector<std::string>, std::less<>> table;
-    for (const auto& m : registry()) table[std::string(m.kind)].emplace_back(m.name);
-    return table;
+/// The names by kind, and the orthogonal force names, in registry order: built at the first call, kept in step by
+/// register_analytic_model. A list is never changed once handed out: a registration appends to a copy, and the
+/// old list stays (in `lists`, whose elements never move) for the spans that field tables hold.
+struct Names {
+  std::deque<std::vector<std::string_view>> lists;
+  std::map<std::string, const std::vector<std::string_view>*, std::less<>> by_kind;
+  const std::vector<std::string_view>* orthogonal = nullptr;
+
+  void add(const AnalyticModelInfo& m) {
+    append(by_kind[std::string(m.kind)], m.name);
+    if (m.kind == "force" && m.orthogonal) append(orthogonal, m.name);
+  }
+  void append(const std::vector<std::string_view>*& list, std::string_view name) {
+    std::vector<std::string_view> longer = list ? *list : std::vector<std::string_view>{};
+    longer.push_back(name);
+    list = &lists.emplace_back(std::move(longer));
+  }
+};
+
+Names& names() {
+  static Names all = [] {
+    Names n;
+    n.orthogonal = &n.lists.emplace_back();
+    for (const auto& m : registry()) n.add(m);
+    return n;
   }();
-  return by_kind;
+  return all;
 }
 }  // namespace
 
@@ -107,18 +130,19 @@ bool register_analytic_model(const AnalyticModelInfo& line) {
     throw std::logic_error("analytic registry: " + std::string(line.kind) + " '" + std::string(line.name) +
                            "' registered twice");
   }
-  auto& names = names_by_kind();  // built from the lines before this one
+  auto& lists = names();  // built from the lines before this one
   registry().push_back(line);
-  names[std::string(line.kind)].emplace_back(line.name);
+  lists.add(line);
   return true;
 }
 
-const std::vector<std::string>& analytic_model_names(std::string_view kind) {
-  static const std::vector<std::string> none;
-  const auto& by_kind = names_by_kind();
+std::span<const std::string_view> analytic_model_names(std::string_view kind) {
+  const auto& by_kind = names().by_kind;
   const auto it = by_kind.find(kind);
-  return it == by_kind.end() ? none : it->second;
+  return it == by_kind.end() ? std::span<const std::string_view>{} : *it->second;
 }
+
+std::span<const std::string_view> orthogonal_force_names() { return *names().orthogonal; }
 
 const AnalyticModelInfo* registered_line(const std::vector<AnalyticModelInfo>& registry, std::string_view kind,
                                          std::string_view name) {

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "kerf/analytic/liu_li.hpp"
+#include "kerf/analytic/forces/liu_li.hpp"
 #include "bench_util.hpp"
 #include "kerf/io.hpp"
 #include "kerf/units.hpp"

@@ -20,9 +20,9 @@
 #include <string>
 #include <vector>
 
-#include "kerf/analytic/oxley.hpp"
+#include "kerf/analytic/forces/oxley.hpp"
 #include "bench_util.hpp"
-#include "kerf/analytic/material_models.hpp"
+#include "kerf/analytic/kinds/material_models.hpp"
 #include "kerf/io.hpp"
 #include "kerf/units.hpp"
 

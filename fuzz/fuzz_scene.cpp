@@ -7,7 +7,7 @@
 #include <cstdlib>
 #include <string_view>
 
-#include "kerf/analytic/evaluate.hpp"
+#include "kerf/analytic/kinds/evaluate.hpp"
 #include "kerf/error.hpp"
 #include "kerf/json_reader.hpp"
 

@@ -24,11 +24,11 @@
 #include <utility>
 #include <vector>
 
-#include "kerf/analytic/evaluate.hpp"
-#include "kerf/analytic/scene.hpp"
+#include "kerf/analytic/kinds/evaluate.hpp"
+#include "kerf/analytic/kinds/scene.hpp"
 #include "kerf/analytic/registry.hpp"
-#include "kerf/analytic/scene_compare.hpp"
-#include "kerf/analytic/sweep.hpp"
+#include "kerf/analytic/sweep/scene_compare.hpp"
+#include "kerf/analytic/sweep/sweep.hpp"
 #include "kerf/csv_table.hpp"
 #include "kerf/dem/scene.hpp"
 #include "kerf/error.hpp"

@@ -20,7 +20,7 @@ const std::vector<std::string>& material_group_names() {
 }
 
 const std::vector<std::string>& material_group_keys(const std::string& group_name) {
-  // The keys of the analytic groups' field tables (analytic/material_models.cpp), written again here because
+  // The keys of the analytic groups' field tables (analytic/kinds/material_models.cpp), written again here because
   // the tables live in kerf_analytic, which links this library (kerf_core; kerf-dem loads materials without
   // it): tests/analytic/scene_test.cpp checks that the two lists hold the same keys. The "dem" group is
   // checked by the DEM's own reader (dem/laws/material.cpp), key by key.

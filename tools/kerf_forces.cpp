@@ -16,11 +16,11 @@
 #include <string>
 #include <vector>
 
-#include "kerf/analytic/evaluate.hpp"
+#include "kerf/analytic/kinds/evaluate.hpp"
+#include "kerf/analytic/kinds/scene.hpp"
 #include "kerf/analytic/registry.hpp"
-#include "kerf/analytic/scene.hpp"
-#include "kerf/analytic/scene_compare.hpp"
-#include "kerf/analytic/sweep.hpp"
+#include "kerf/analytic/sweep/scene_compare.hpp"
+#include "kerf/analytic/sweep/sweep.hpp"
 #include "kerf/comparison_config.hpp"
 #include "kerf/error.hpp"
 #include "kerf/io.hpp"

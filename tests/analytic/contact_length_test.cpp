@@ -1,9 +1,9 @@
-#include "kerf/analytic/contact_length.hpp"
+#include "kerf/analytic/forces/contact_length.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "kerf/analytic/shear_angle.hpp"
+#include "kerf/analytic/forces/shear_angle.hpp"
 #include "kerf/error.hpp"
 #include "kerf/units.hpp"
 

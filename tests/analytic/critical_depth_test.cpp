@@ -1,4 +1,4 @@
-#include "kerf/analytic/critical_depth.hpp"
+#include "kerf/analytic/forces/critical_depth.hpp"
 
 #include <catch2/catch.hpp>
 

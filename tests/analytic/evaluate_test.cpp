@@ -1,4 +1,4 @@
-#include "kerf/analytic/evaluate.hpp"
+#include "kerf/analytic/kinds/evaluate.hpp"
 
 #include <catch2/catch.hpp>
 #include <optional>

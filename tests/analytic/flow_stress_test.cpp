@@ -1,4 +1,4 @@
-#include "kerf/analytic/flow_stress.hpp"
+#include "kerf/analytic/flow_stress/flow_stress.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "kerf/analytic/hardness_flow.hpp"
+#include "kerf/analytic/flow_stress/hardness_flow.hpp"
 
 #include <catch2/catch.hpp>
 

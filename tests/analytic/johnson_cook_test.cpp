@@ -1,4 +1,4 @@
-#include "kerf/analytic/johnson_cook.hpp"
+#include "kerf/analytic/flow_stress/johnson_cook.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>

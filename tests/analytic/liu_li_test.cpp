@@ -1,10 +1,10 @@
-#include "kerf/analytic/liu_li.hpp"
+#include "kerf/analytic/forces/liu_li.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <numbers>
 
-#include "kerf/analytic/shear_angle.hpp"
+#include "kerf/analytic/forces/shear_angle.hpp"
 #include "kerf/error.hpp"
 #include "kerf/units.hpp"
 

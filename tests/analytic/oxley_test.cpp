@@ -1,4 +1,4 @@
-#include "kerf/analytic/oxley.hpp"
+#include "kerf/analytic/forces/oxley.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "kerf/analytic/ploughing.hpp"
+#include "kerf/analytic/forces/ploughing.hpp"
 
 #include <catch2/catch.hpp>
 #include <array>

@@ -1,4 +1,4 @@
-#include "kerf/analytic/quadrature.hpp"
+#include "kerf/analytic/forces/quadrature.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "kerf/analytic/contact_length.hpp"
-#include "kerf/analytic/scene.hpp"
+#include "kerf/analytic/forces/contact_length.hpp"
+#include "kerf/analytic/kinds/scene.hpp"
 
 using kerf::Json;
 

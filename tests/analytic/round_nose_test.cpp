@@ -1,4 +1,4 @@
-#include "kerf/analytic/round_nose.hpp"
+#include "kerf/analytic/kinds/round_nose.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>

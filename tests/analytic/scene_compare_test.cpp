@@ -1,4 +1,4 @@
-#include "kerf/analytic/scene_compare.hpp"
+#include "kerf/analytic/sweep/scene_compare.hpp"
 
 #include <catch2/catch.hpp>
 #include <fmt/format.h>
@@ -6,8 +6,8 @@
 #include <unistd.h>
 #include <fstream>
 
-#include "kerf/analytic/predict.hpp"
-#include "kerf/analytic/scene.hpp"
+#include "kerf/analytic/kinds/predict.hpp"
+#include "kerf/analytic/kinds/scene.hpp"
 #include "kerf/error.hpp"
 
 using Catch::Matchers::WithinAbs;

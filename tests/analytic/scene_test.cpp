@@ -1,4 +1,4 @@
-#include "kerf/analytic/scene.hpp"
+#include "kerf/analytic/kinds/scene.hpp"
 
 #include <catch2/catch.hpp>
 #include <algorithm>
@@ -7,8 +7,9 @@
 #include <map>
 #include <numbers>
 
-#include "kerf/analytic/material_models.hpp"
-#include "kerf/analytic/predict.hpp"
+#include "kerf/analytic/kinds/material_models.hpp"
+#include "kerf/analytic/kinds/predict.hpp"
+#include "kerf/analytic/registry.hpp"
 #include "kerf/error.hpp"
 #include "kerf/io.hpp"
 #include "kerf/json_reader.hpp"

@@ -1,12 +1,16 @@
-// A toy force model added to the orthogonal kind the way docs/analytic-models.md says: its predict function here
-// and one registry line (a test-only registration at start-up, before any scene is read) - nothing else in the
-// library changes - and the orthogonal scene reads its name, predicts with it and writes its row and report.
+// A toy force model added to the orthogonal kind the way docs/analytic-models.md says: its unit here (predict, its
+// own details, its CSV columns and report lines: kinds/force_model.hpp) and one registry line (a test-only
+// registration at start-up, before any scene is read) - nothing else in the library changes - and the orthogonal
+// scene reads its name, predicts with it and writes its row, its columns and its report.
+#include <fmt/format.h>
+
+#include <any>
 #include <catch2/catch.hpp>
 #include <cstdio>
 #include <string>
 
-#include "kerf/analytic/evaluate.hpp"
-#include "kerf/analytic/predict.hpp"
+#include "kerf/analytic/kinds/evaluate.hpp"
+#include "kerf/analytic/kinds/predict.hpp"
 #include "kerf/analytic/registry.hpp"
 
 using kerf::Json;
@@ -16,6 +20,11 @@ namespace {
 
 constexpr double kToySpecificForce_Pa = 2e9;  // F_c = k_c w t0 (no physics: it tests the plumbing)
 
+/// The toy's own details, kept in the prediction for its columns and report lines.
+struct ToyDetails {
+  double specific_force_Pa = 0.0;
+};
+
 void predict_toy(const kerf::AnalyticScene& scene, const kerf::OxleyResult*, kerf::Prediction& p) {
   p.cutting_force_N = kToySpecificForce_Pa * scene.width_m * scene.uncut_chip_thickness_m;
   p.thrust_force_N = 0.5 * p.cutting_force_N;
@@ -24,9 +33,24 @@ void predict_toy(const kerf::AnalyticScene& scene, const kerf::OxleyResult*, ker
   p.chip_thickness_m = scene.uncut_chip_thickness_m;
   p.state.temperature_K = scene.workpiece_temperature_K;
   p.warnings.push_back("toy force model");
+  p.details = ToyDetails{kToySpecificForce_Pa};
 }
 
-const kerf::OrthogonalForceModel toy_force_model{.predict = &predict_toy};
+double toy_specific_force_MPa(const kerf::Prediction& p) {
+  const auto* own = std::any_cast<ToyDetails>(&p.details);
+  return own ? own->specific_force_Pa * 1e-6 : 0.0;
+}
+
+void write_toy_cells(const kerf::AnalyticScene&, const kerf::Prediction& p, kerf::CellWriter& out) {
+  out.number("toy_specific_force_MPa", toy_specific_force_MPa(p));
+}
+
+void print_toy(std::FILE* text, const kerf::AnalyticScene&, const kerf::Prediction& p) {
+  fmt::print(text, "toy part          k_c = {:.6g} MPa\n", toy_specific_force_MPa(p));
+}
+
+const kerf::OrthogonalForceModel toy_force_model{
+    .predict = &predict_toy, .write_cells = &write_toy_cells, .print = &print_toy};
 
 // The one registry line (in the library it would be a line of analytic/registry.cpp).
 [[maybe_unused]] const bool registered = kerf::register_analytic_model(
@@ -63,6 +87,7 @@ TEST_CASE("A toy force model plugs into the orthogonal kind through one registry
   CHECK(column(row, "lower_limit_deg") == "(none)");
   CHECK(column(row, "strain_rate_constant_C0") == "(none)");
   CHECK(column(row, "warnings") == "toy force model");
+  CHECK(column(row, "toy_specific_force_MPa") == "2000");  // its own column, from its own details
 
   // The report names it; the key reference lists it with the other orthogonal models.
   auto scene_case = kerf::parse_scene(toy_scene(), nullptr);
@@ -75,12 +100,14 @@ TEST_CASE("A toy force model plugs into the orthogonal kind through one registry
   report.resize(std::fread(report.data(), 1, report.size(), text));
   std::fclose(text);
   CHECK_THAT(report, Contains("force model       toy_specific_force\n"));
+  CHECK_THAT(report, Contains("toy part          k_c = 2000 MPa\n"));  // its own line
   CHECK_THAT(kerf::analytic_scene_keys_markdown("models"), Contains("`transition`, `toy_specific_force` |"));
 
   // auto still chooses among the built-in models (the toy has no say in it).
   Json doc = toy_scene();
   doc["models"]["force"] = "auto";
   CHECK(kerf::parse_analytic_scene(doc).force->name == "liu_li");
+  CHECK(column(kerf::evaluate_scene_columns(doc, nullptr), "toy_specific_force_MPa") == "(none)");  // the toy's own
 }
 
 TEST_CASE("The models.force values of the orthogonal kind leave out the trepanning kind", "[registry][force]") {

@@ -6,9 +6,9 @@
 #include <cstdio>
 #include <string>
 
-#include "kerf/analytic/evaluate.hpp"
+#include "kerf/analytic/kinds/evaluate.hpp"
 #include "kerf/analytic/registry.hpp"
-#include "kerf/analytic/sweep.hpp"
+#include "kerf/analytic/sweep/sweep.hpp"
 #include "kerf/error.hpp"
 
 using kerf::Json;

@@ -1,12 +1,13 @@
-#include "kerf/analytic/transition.hpp"
+#include "kerf/analytic/forces/transition.hpp"
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
 
-#include "kerf/analytic/glass_edge.hpp"
-#include "kerf/analytic/predict.hpp"
-#include "kerf/analytic/scene.hpp"
+#include "kerf/analytic/forces/glass_edge.hpp"
+#include "kerf/analytic/forces/transition_model.hpp"
+#include "kerf/analytic/kinds/predict.hpp"
+#include "kerf/analytic/kinds/scene.hpp"
 #include "kerf/error.hpp"
 #include "kerf/units.hpp"
 
@@ -52,7 +53,7 @@ TEST_CASE("Transition model: the ductile model below the layer, continuous at it
     const auto ductile = predict_doc(glass_scene(0.5 * dc_um, r_um > 0.0 ? "liu_li" : "merchant", r_um));
     CHECK(below.cutting_force_N == ductile.cutting_force_N);
     CHECK(below.thrust_force_N == ductile.thrust_force_N);
-    CHECK(below.transition->fracture.cutting_N_per_m == 0.0);
+    CHECK(kerf::transition_details(below)->fracture.cutting_N_per_m == 0.0);
     // Through l: relative jump < 1e-9.
     const auto just_below = predict_doc(glass_scene(dc_um * (1.0 - 1e-12), "transition", r_um));
     const auto just_above = predict_doc(glass_scene(dc_um * (1.0 + 1e-12), "transition", r_um));
@@ -78,7 +79,7 @@ TEST_CASE("Transition model: finite and monotone from 10 nm to 0.2 mm, no fractu
                                  {"brittle", {{"hardness_GPa", 5.5}, {"fracture_toughness_MPa_sqrt_m", 7.5},
                                               {"constraint_factor", 1.7}}}};
   const auto p = predict_doc(tough);
-  CHECK(p.transition->fracture.cutting_N_per_m == 0.0);
+  CHECK(kerf::transition_details(p)->fracture.cutting_N_per_m == 0.0);
   tough["models"]["force"] = "merchant";
   CHECK(predict_doc(tough).cutting_force_N == p.cutting_force_N);
   // The layer alone (fracture none) above l: the force stops growing with the depth.
@@ -114,7 +115,7 @@ TEST_CASE("Edge force on the ductile layer: Merchant's closed form for a sharp e
   CHECK_THAT(f.flow_stress_Pa, WithinRel(5.5e9 / 1.7, 1e-15));
   // The same number as the transition model's edge part of a deep cut; the layer scales it linearly.
   const auto deep = predict_doc(glass_scene(100.0));
-  CHECK_THAT(deep.transition->layer.cutting_N_per_m, WithinRel(f.force.cutting_N_per_m, 1e-12));
+  CHECK_THAT(kerf::transition_details(deep)->layer.cutting_N_per_m, WithinRel(f.force.cutting_N_per_m, 1e-12));
   kerf::EdgeTool thicker = tool;
   thicker.layer_factor = 3.0;
   CHECK_THAT(kerf::edge_force_per_width(kerf::Json("soda_lime_glass"), thicker).force.cutting_N_per_m,

@@ -1,4 +1,4 @@
-#include "kerf/analytic/trepanning.hpp"
+#include "kerf/analytic/trepanning/trepanning.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>

@@ -1,9 +1,9 @@
-#include "kerf/analytic/trepanning_validation.hpp"
+#include "kerf/analytic/trepanning/trepanning_validation.hpp"
 
 #include <catch2/catch.hpp>
 #include <filesystem>
 
-#include "kerf/analytic/trepanning_scene.hpp"
+#include "kerf/analytic/trepanning/trepanning_scene.hpp"
 #include "kerf/error.hpp"
 
 using Catch::Matchers::WithinAbs;

@@ -14,7 +14,7 @@ unset KERF_DATA_DIR KERF_MATERIAL_PATH
 
 cmake --install "$build" --prefix "$work/prefix" >"$work/install.log" 2>&1 ||
   { cat "$work/install.log"; fail "cmake --install"; }
-for f in bin/kerf-forces bin/kerf-dem include/kerf/version.hpp include/kerf/analytic/evaluate.hpp \
+for f in bin/kerf-forces bin/kerf-dem include/kerf/version.hpp include/kerf/analytic/kinds/evaluate.hpp \
     lib/cmake/kerf/kerfConfig.cmake lib/cmake/kerf/kerfConfigVersion.cmake share/kerf/data/materials/psic.json; do
   [ -e "$work/prefix/$f" ] || fail "not installed: $f"
 done
@@ -30,7 +30,7 @@ target_link_libraries(app PRIVATE kerf::analytic kerf::dem)
 file(WRITE ${CMAKE_BINARY_DIR}/data_dir.txt "${kerf_DATA_DIR}")
 CMAKE
 cat >"$work/app/main.cpp" <<'CPP'
-#include <kerf/analytic/evaluate.hpp>
+#include <kerf/analytic/kinds/evaluate.hpp>
 #include <kerf/dem/scene.hpp>
 #include <kerf/json_reader.hpp>
 #include <kerf/version.hpp>

@@ -2,26 +2,28 @@
 // The registry of analytic models: one line per model, in analytic/registry.cpp. A scene names the models it
 // needs by these names; only those are built and run; an unknown name is an error listing the valid ones.
 // Each line carries the enum value its name constructs, so a scene maps a name to its model by the name and
-// the order of the lines changes nothing.
+// the order of the lines changes nothing. This header is a leaf (it includes no other analytic header, and names
+// the scene's types by declaration only): the scenes include it; registry.cpp, which sees every model to list it,
+// is the one file that includes the models.
 //
 //   for (const auto& m : kerf::analytic_models()) fmt::print("{}.{}: {}\n", m.kind, m.name, m.summary);
-//   auto names = kerf::analytic_model_names("force");   // {"auto", "merchant", "liu_li", "oxley", "trepanning"}
+//   auto names = kerf::analytic_model_names("force");   // {"auto", "merchant", "liu_li", "oxley", ...}
 //   auto rule = kerf::registered_model<kerf::ShearAngleSource>("shear_angle", "lee_shaffer");
+#include <memory>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
 
-#include <memory>
-
 #include "kerf/json_reader.hpp"
 
 namespace kerf {
 
-class AnalyticCase;           // evaluate.hpp
-class MaterialCache;          // scene.hpp
-struct OrthogonalForceModel;  // scene.hpp
+class AnalyticCase;           // kinds/evaluate.hpp
+class MaterialCache;          // kinds/scene.hpp
+struct OrthogonalForceModel;  // kinds/scene.hpp
 
 /// Builds the scene kind a force line names from a document (evaluate.hpp's parse_scene calls it).
 using SceneBuilder = std::unique_ptr<AnalyticCase> (*)(const Json& document, MaterialCache* cache);
@@ -43,8 +45,13 @@ const std::vector<AnalyticModelInfo>& analytic_models();
 /// `static const bool registered = kerf::register_analytic_model({...});` registers at start-up. A kind and name
 /// already registered is a std::logic_error.
 bool register_analytic_model(const AnalyticModelInfo& line);
-/// The names registered under one kind, in registry order (built once).
-const std::vector<std::string>& analytic_model_names(std::string_view kind);
+/// The names registered under one kind, in registry order: the one list of them (the scene's field tables and
+/// error messages read it). Built at the first call; a line registered later makes a new list, the old one staying
+/// valid for those who hold it (a field table built before the registration keeps the names it had).
+std::span<const std::string_view> analytic_model_names(std::string_view kind);
+/// The names of the force lines that carry a model of the orthogonal kind (their `orthogonal` member), in registry
+/// order: the values of the orthogonal scene's models.force (`trepanning`, a scene kind of its own, is not one).
+std::span<const std::string_view> orthogonal_force_names();
 
 /// The line of `kind` and `name` in `registry`; nullptr when none.
 const AnalyticModelInfo* registered_line(const std::vector<AnalyticModelInfo>& registry, std::string_view kind,

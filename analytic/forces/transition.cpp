@@ -1,0 +1,49 @@
+#include "kerf/analytic/forces/transition.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "kerf/error.hpp"
+#include "kerf/json_reader.hpp"
+#include "kerf/units.hpp"
+
+namespace kerf {
+
+std::string_view fracture_model_name(FractureModel model) {
+  return model == FractureModel::none ? "none" : "lefm_scratch";
+}
+
+void TransitionParams::validate(const std::string& path) const {
+  check_number(layer_factor, path + ".ductile_layer_factor", Range::positive(), "(times d_c)");
+  check_number(fracture_coefficient, path + ".fracture_coefficient", Range::non_negative(), "(-)");
+}
+
+double ductile_layer_m(const TransitionParams& params, double critical_depth_m) {
+  return params.layer_factor * critical_depth_m;
+}
+
+ForcePerWidth fracture_force_per_width(const TransitionParams& params, double toughness, double depth_m,
+                                       double layer_m, double rake_rad, double friction_angle_rad) {
+  params.validate("models.transition");
+  check_number(units::pa_to_mpa(toughness), "material.brittle.fracture_toughness_MPa_sqrt_m", Range::positive(),
+               "MPa m^0.5");
+  check_number(units::m_to_um(depth_m), "cut.uncut_chip_thickness_um", Range::non_negative(), "um");
+  const double inclination = friction_angle_rad - rake_rad;  // of the rake face's force from the cutting direction
+  if (!(std::fabs(inclination) < std::numbers::pi / 2.0)) {
+    throw InputError("cut.friction_angle_deg", fmt::format("{:.6g}", units::rad_to_deg(friction_angle_rad)),
+                     fmt::format("friction minus rake in (-90, 90) deg for the fracture part's thrust (rake {:.6g} "
+                                 "deg)",
+                                 units::rad_to_deg(rake_rad)));
+  }
+  if (params.fracture == FractureModel::none || depth_m <= layer_m) return {};
+  ForcePerWidth f;
+  // Huang & Detournay (2008): F / w = zeta K_c sqrt(h) in the brittle regime (zeta: Akono & Ulm 2011); the layer's
+  // share is the edge's.
+  f.cutting_N_per_m = params.fracture_coefficient * toughness * (std::sqrt(depth_m) - std::sqrt(layer_m));
+  f.thrust_N_per_m = f.cutting_N_per_m * std::tan(inclination);
+  return f;
+}
+
+}  // namespace kerf

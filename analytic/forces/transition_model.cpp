@@ -1,0 +1,97 @@
+#include "kerf/analytic/forces/transition_model.hpp"
+
+#include <fmt/format.h>
+
+#include "kerf/analytic/forces/critical_depth.hpp"
+#include "kerf/analytic/forces/transition.hpp"
+#include "kerf/analytic/kinds/cells.hpp"
+#include "kerf/analytic/kinds/predict.hpp"
+#include "kerf/error.hpp"
+#include "kerf/field_table.hpp"
+#include "kerf/units.hpp"
+
+namespace kerf {
+
+namespace {
+
+// The deepest cut the transition model was held against: Yang et al. 2018's Table 6 (0.1 and 0.2 mm).
+constexpr double kTransitionValidatedDepth_m = 0.2e-3;
+
+/// Above l the shear angle, chip, state and edge details are the layer's.
+void predict_transition_forces(const AnalyticScene& scene, const OxleyResult* oxley, Prediction& p) {
+  if (!scene.critical_depth_m) {
+    throw InputError("material.brittle", fmt::format("(no hardness and toughness in material '{}')", scene.material->name),
+                     "a brittle material with elastic.youngs_modulus_GPa, brittle.hardness_GPa and "
+                     "brittle.fracture_toughness_MPa_sqrt_m: models.force = transition needs its critical depth");
+  }
+  const double layer = ductile_layer_m(scene.transition, *scene.critical_depth_m);
+  const double depth = scene.uncut_chip_thickness_m;
+  const bool sharp = scene.edge_radius_m == 0.0;
+  TransitionDetails details;
+  details.ductile_layer_m = layer;
+  if (depth <= layer) {
+    predict_chip_forces(scene, oxley, sharp, p);
+  } else {
+    AnalyticScene layer_scene = scene;
+    layer_scene.uncut_chip_thickness_m = layer;
+    predict_chip_forces(layer_scene, oxley, sharp, p);
+  }
+  details.layer = {p.cutting_force_N / scene.width_m, p.thrust_force_N / scene.width_m};
+  const BrittleProperties brittle = brittle_properties(*scene.material, "material");
+  details.fracture = fracture_force_per_width(scene.transition, brittle.fracture_toughness_Pa_sqrt_m, depth, layer,
+                                              scene.rake_rad, p.friction_angle_rad);
+  if (details.fracture.cutting_N_per_m > details.layer.cutting_N_per_m) {
+    p.warnings.push_back("the fracture part (zeta K_c sqrt(h) scaling) carries most of the force: on Yang et al. "
+                         "2018's soda-lime cuts at 0.1-0.2 mm it is 15-20 times the measured force "
+                         "(validation/glass_transition/README.md); models.fracture = none gives the edge's layer "
+                         "alone, a lower bound");
+  }
+  p.cutting_force_N += details.fracture.cutting_N_per_m * scene.width_m;
+  p.thrust_force_N += details.fracture.thrust_N_per_m * scene.width_m;
+  p.details = details;
+}
+
+void write_transition_cells(const AnalyticScene& scene, const Prediction& p, CellWriter& w) {
+  const TransitionDetails* own = transition_details(p);
+  const TransitionDetails t = own ? *own : TransitionDetails{};
+  w.text("fracture_model", fracture_model_name(scene.transition.fracture));
+  w.number("ductile_layer_um", units::m_to_um(t.ductile_layer_m));
+  w.number("layer_cutting_force_N", t.layer.cutting_N_per_m * p.width_m);
+  w.number("layer_thrust_force_N", t.layer.thrust_N_per_m * p.width_m);
+  w.number("fracture_cutting_force_N", t.fracture.cutting_N_per_m * p.width_m);
+  w.number("fracture_thrust_force_N", t.fracture.thrust_N_per_m * p.width_m);
+}
+
+void print_transition(std::FILE* text, const AnalyticScene& scene, const Prediction& p) {
+  const TransitionDetails* t = transition_details(p);
+  if (!t) return;
+  fmt::print(text, "ductile layer     l = {:.4g} um ({} x d_c); the ductile model's part {:.6g} N cutting, {:.6g} N "
+                   "thrust\n",
+             units::m_to_um(t->ductile_layer_m), scene.transition.layer_factor, t->layer.cutting_N_per_m * p.width_m,
+             t->layer.thrust_N_per_m * p.width_m);
+  fmt::print(text, "fracture part     {:.6g} N cutting, {:.6g} N thrust ({})\n", t->fracture.cutting_N_per_m * p.width_m,
+             t->fracture.thrust_N_per_m * p.width_m, fracture_model_name(scene.transition.fracture));
+}
+
+}  // namespace
+
+const FieldTable<TransitionParams>& transition_fields() {
+  static const FieldTable<TransitionParams> table{
+      number_field("ductile_layer_factor", units::kSi("(times d_c)"), Range::positive(),
+                   "the layer the edge removes in the ductile mode above d_c, l = factor d_c",
+                   &TransitionParams::layer_factor),
+      number_field("fracture_coefficient", units::kNone, Range::non_negative(),
+                   "zeta of the fracture part zeta K_c (sqrt(h) - sqrt(l)) (docs/models.md)",
+                   &TransitionParams::fracture_coefficient)};
+  return table;
+}
+
+const OrthogonalForceModel transition_force_model{.predict = &predict_transition_forces,
+                                                  .edge_columns = true,
+                                                  .validated_depth_m = kTransitionValidatedDepth_m,
+                                                  .write_cells = &write_transition_cells,
+                                                  .print = &print_transition};
+
+const TransitionDetails* transition_details(const Prediction& p) { return std::any_cast<TransitionDetails>(&p.details); }
+
+}  // namespace kerf

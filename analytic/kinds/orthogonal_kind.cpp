@@ -1,0 +1,170 @@
+// The orthogonal-cutting scene kind (models.force merchant, liu_li, oxley or auto): scene.hpp parses it,
+// predict.hpp predicts it; this file puts it behind the AnalyticCase interface (evaluate.hpp) with its report.
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "kerf/analytic/forces/critical_depth.hpp"
+#include "kerf/analytic/kinds/evaluate.hpp"
+#include "kerf/analytic/kinds/predict.hpp"
+#include "kerf/units.hpp"
+
+namespace kerf {
+
+namespace {
+
+/// The Liu-Li edge integral's lines and the ploughing part under the edge (the chip term's details).
+void print_edge_details(std::FILE* text, const AnalyticScene& scene, const Prediction& p) {
+  using units::m_to_um;
+  using units::rad_to_deg;
+  const auto& l = *p.liu_li;
+  fmt::print(
+      text, "edge integral     from {:.4g} deg to {:.4g} deg (stagnation {:.4g} deg{}); ploughed layer {:.6g} um\n",
+      rad_to_deg(l.lower_limit_rad), rad_to_deg(l.upper_limit_rad), rad_to_deg(l.stagnation_angle_rad),
+      l.pole_rad ? fmt::format(", pole {:.4g} deg", rad_to_deg(*l.pole_rad)) : "", m_to_um(l.ploughed_thickness_m));
+  fmt::print(text,
+             "edge part         cutting {:.6g} N, thrust {:.6g} N (the thrust depends strongly on the lower limit)\n",
+             l.edge.cutting_N_per_m * p.width_m, l.edge.thrust_N_per_m * p.width_m);
+  if (p.ploughing) {
+    const auto& w = *p.ploughing;
+    fmt::print(text, "ploughing part    cutting {:.6g} N, thrust {:.6g} N (wave model, f = {:.4g}, chord {:.6g} um at "
+               "{:.4g} deg)\n",
+               w.force.cutting_N_per_m * p.width_m, w.force.thrust_N_per_m * p.width_m, p.friction_factor,
+               m_to_um(w.chord_m), rad_to_deg(w.factors.attack_angle_rad));
+  } else {
+    fmt::print(text, "ploughing part    none (models.ploughing = {})\n", ploughing_model_name(scene.ploughing));
+  }
+}
+
+void print_prediction(std::FILE* text, const std::string& scene_path, const AnalyticScene& scene, const Prediction& p) {
+  using units::m_to_mm;
+  using units::m_to_um;
+  using units::pa_to_mpa;
+  using units::rad_to_deg;
+  const double width_mm = m_to_mm(p.width_m);
+  fmt::print(text, "scene             {}\n", scene_path);
+  fmt::print(text, "material          {} ({})\n", scene.material->name, scene.material->title);
+  fmt::print(text, "force model       {}{}\n", p.force_model,
+             scene.force_choice_reason.empty() ? "" : " (auto: " + scene.force_choice_reason + ")");
+  fmt::print(text, "cut               t0 = {:.6g} um, width = {:.6g} mm, speed = {:.6g} m/min\n",
+             m_to_um(p.uncut_chip_thickness_m), width_mm, units::m_per_s_to_m_per_min(scene.speed_m_per_s));
+  fmt::print(text, "tool              rake = {:.6g} deg, edge radius = {:.6g} um\n", rad_to_deg(scene.rake_rad),
+             m_to_um(scene.edge_radius_m));
+  fmt::print(text, "cutting force     {:.6g} N  ({:.6g} N/mm)\n", p.cutting_force_N, p.cutting_force_N / width_mm);
+  fmt::print(text, "thrust force      {:.6g} N  ({:.6g} N/mm)\n", p.thrust_force_N, p.thrust_force_N / width_mm);
+  fmt::print(text, "shear angle       {:.4g} deg\n", rad_to_deg(p.shear_angle_rad));
+  if (p.has_friction) {
+    const bool own_friction = scene.force_model().solves_oxley;
+    const bool from_scene = scene.friction_angle_rad && !own_friction &&
+                            std::fabs(*scene.friction_angle_rad - p.friction_angle_rad) <= 1e-9;
+    fmt::print(text, "friction angle    {:.4g} deg (from {})\n", rad_to_deg(p.friction_angle_rad),
+               own_friction ? "the extended-Oxley solution"
+               : from_scene                             ? scene.friction_origin
+                                                        : fmt::format("the {} friction closure at the nominal rake",
+                                                                      friction_closure_name(scene.liu_li.closure)));
+  }
+  fmt::print(text, "chip ratio        {:.4g} (chip thickness {:.6g} um)\n", p.chip_ratio, m_to_um(p.chip_thickness_m));
+  if (scene.flow_stress.hardness) {
+    fmt::print(text, "flow stress       {:.6g} MPa (hardness {:.6g} MPa / constraint factor {:.4g}, {}); k_s = {:.6g} MPa\n",
+               pa_to_mpa(p.flow.total_Pa), pa_to_mpa(scene.flow_stress.hardness->hardness_Pa),
+               scene.flow_stress.hardness->hardness_Pa / p.flow.total_Pa,
+               constraint_model_name(scene.flow_stress.constraint), pa_to_mpa(p.flow.shear_Pa));
+  } else {
+    fmt::print(text,
+               "flow stress       {:.6g} MPa (JC {:.6g} + Hall-Petch {:.6g} + dislocation {:.6g}); k_s = {:.6g} MPa\n",
+               pa_to_mpa(p.flow.total_Pa), pa_to_mpa(p.flow.johnson_cook_Pa), pa_to_mpa(p.flow.hall_petch_Pa),
+               pa_to_mpa(p.flow.dislocation_Pa), pa_to_mpa(p.flow.shear_Pa));
+  }
+  fmt::print(text, "at                strain {:.4g}, strain rate {:.4g} 1/s, temperature {:.5g} K\n", p.state.strain,
+             p.state.strain_rate_per_s, p.state.temperature_K);
+  if (scene.critical_depth_m) {
+    fmt::print(text, "regime            {} (critical depth d_c = {:.3g} nm)\n", p.regime,
+               units::m_to_nm(*scene.critical_depth_m));
+  }
+  for (const auto& [column, length_m] : p.contact_lengths_m) {
+    const std::string name = column.substr(0, column.size() - 3);
+    if (length_m) fmt::print(text, "{:<17} {:.6g} mm\n", name, m_to_mm(*length_m));
+    if (!length_m) fmt::print(text, "{:<17} not applicable (see the warnings)\n", name);
+  }
+  if (p.liu_li) print_edge_details(text, scene, p);
+  if (scene.force_model().print) scene.force_model().print(text, scene, p);  // the model's own lines
+  if (p.oxley) {
+    fmt::print(text,
+               "oxley             C0 = {:.4g}, delta = {:.4g}, interface T = {:.5g} K, contact length {:.6g} mm\n",
+               p.oxley->strain_rate_constant_C0, p.oxley->delta, p.oxley->interface_temperature_K,
+               m_to_mm(p.oxley->contact_length_m));
+  }
+  const auto fired = p.guards.fired();
+  if (fired.empty()) fmt::print(text, "guards            none fired\n");
+  for (auto guard : fired)
+    fmt::print(text, "guard             {}: {}\n", guard_name(guard), guard_policy(guard));
+  for (const auto& w : p.warnings) fmt::print(text, "warning           {}\n", w);
+}
+
+class OrthogonalCase final : public AnalyticCase {
+ public:
+  OrthogonalCase(const Json& document, MaterialCache* cache) : scene_(parse_analytic_scene(document, cache)) {}
+
+  void predict() override { prediction_ = kerf::predict(scene_); }
+
+  void write_cells(CellWriter& out) const override {
+    if (prediction_) return write_prediction_cells(scene_, *prediction_, out);
+    write_prediction_cells(scene_, Prediction{}, out);
+  }
+
+  void print(std::FILE* text, const std::string& scene_path) const override {
+    print_prediction(text, scene_path, scene_, prediction_.value());
+  }
+
+  void print_regime(std::FILE* text, const std::string&) const override {
+    const auto properties = brittle_properties(*scene_.material, "material");
+    const double critical = critical_depth_m(properties);
+    const double depth = scene_.uncut_chip_thickness_m;
+    const auto regime = classify_regime(depth, critical);
+    fmt::print(text, "material          {} (E = {:.4g} GPa, H = {:.4g} GPa, K_c = {:.4g} MPa m^0.5)\n",
+               scene_.material->name, units::pa_to_gpa(properties.youngs_modulus_Pa),
+               units::pa_to_gpa(properties.hardness_Pa), units::pa_to_mpa(properties.fracture_toughness_Pa_sqrt_m));
+    fmt::print(text, "critical depth    d_c = 0.15 (E/H) (K_c/H)^2 = {:.4g} nm (Bifano, Dow & Scattergood 1991)\n",
+               units::m_to_nm(critical));
+    fmt::print(text, "uncut thickness   {:.4g} nm ({:.3g} d_c)\n", units::m_to_nm(depth), depth / critical);
+    fmt::print(text, "regime            {}\n", cutting_regime_name(regime));
+    switch (regime) {
+      case CuttingRegime::ductile:
+        fmt::print(text, "model to use      the ductile-regime analytic models (merchant, liu_li, oxley; "
+                         "transition reduces to them here)\n");
+        break;
+      case CuttingRegime::transition:
+        fmt::print(text, "model to use      models.force = transition (the ductile layer plus a fracture part); the "
+                         "ductile models alone overestimate the chip's integrity\n");
+        break;
+      case CuttingRegime::brittle:
+        fmt::print(text, "model to use      models.force = transition up to about 0.2 mm, the DEM (kerf-dem) for cuts "
+                         "of tens of um and more, or the trepanning model for abrasive drilling\n");
+        break;
+    }
+  }
+
+  std::vector<std::string> guard_names() const override {
+    std::vector<std::string> names;
+    if (prediction_)
+      for (auto guard : prediction_->guards.fired()) names.emplace_back(guard_name(guard));
+    return names;
+  }
+
+  std::string_view comparison_title() const override { return "Analytic force model"; }
+  std::optional<double> force_width_m() const override { return scene_.width_m; }
+
+  std::vector<std::string> warnings() const override { return prediction_ ? prediction_->warnings : std::vector<std::string>{}; }
+
+ private:
+  AnalyticScene scene_;
+  std::optional<Prediction> prediction_;
+};
+
+}  // namespace
+
+std::unique_ptr<AnalyticCase> build_orthogonal_scene(const Json& document, MaterialCache* cache) {
+  return std::make_unique<OrthogonalCase>(document, cache);
+}
+
+}  // namespace kerf

@@ -1,0 +1,31 @@
+#pragma once
+// models.force = transition as a unit of the orthogonal kind (kinds/force_model.hpp): the ductile model (Liu-Li with
+// an edge radius, Merchant without) at min(h, l), plus the fracture part above l (forces/transition.hpp, the
+// physics); its details, its CSV columns and its report lines. Its registry line: analytic/registry.cpp.
+//
+//   kerf::Prediction p = kerf::predict(scene);            // scene.force_model() == transition_force_model
+//   double l_m = kerf::transition_details(p)->ductile_layer_m;
+#include "kerf/analytic/forces/merchant.hpp"
+#include "kerf/analytic/forces/transition.hpp"
+#include "kerf/analytic/kinds/force_model.hpp"
+#include "kerf/field_table.hpp"
+
+namespace kerf {
+
+/// The two parts of the totals (docs/models.md).
+struct TransitionDetails {
+  double ductile_layer_m = 0.0;  ///< l = lambda d_c
+  ForcePerWidth layer;           ///< the ductile model at min(h, l): the edge's part, depth-independent above l
+  ForcePerWidth fracture;        ///< zero at and below l
+};
+
+extern const OrthogonalForceModel transition_force_model;
+
+/// Its parameters' field table, the object models.transition (models.fracture, a choice among the registry's
+/// fracture lines, is read with the models section): the scene reads it, and `kerf-forces keys` lists it.
+const FieldTable<TransitionParams>& transition_fields();
+
+/// The details of a transition prediction; nullptr for a prediction of another model (or none yet).
+const TransitionDetails* transition_details(const Prediction& p);
+
+}  // namespace kerf

@@ -1,0 +1,77 @@
+#pragma once
+// Runs the models a scene names and gathers one prediction: forces for the scene's width, the state the
+// flow stress was evaluated at, contact lengths, the Liu-Li or Oxley details, guards and validity warnings.
+//
+//   kerf::Prediction p = kerf::predict(scene);
+//   auto row = kerf::prediction_columns(scene, p);   // [("cutting_force_N", "12.5"), ...] for CSV
+#include <any>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "kerf/analytic/flow_stress/flow_stress.hpp"
+#include "kerf/analytic/forces/liu_li.hpp"
+#include "kerf/analytic/forces/ploughing.hpp"
+#include "kerf/analytic/guards.hpp"
+#include "kerf/analytic/kinds/cells.hpp"
+#include "kerf/analytic/kinds/scene.hpp"
+
+namespace kerf {
+
+struct OxleyDetails {
+  double strain_rate_constant_C0 = 0.0;
+  double delta = 0.0;
+  double interface_temperature_K = 0.0;
+  double contact_length_m = 0.0;
+  double residual = 0.0;  ///< the larger relative residual of the two Oxley conditions
+  int shear_angle_roots = 0;  ///< branches found; the minimum-force one is reported
+};
+
+struct Prediction {
+  std::string_view force_model;  ///< the name of the force model that ran (its registry line's)
+  double cutting_force_N = 0.0;
+  double thrust_force_N = 0.0;
+  double width_m = 0.0;
+  double uncut_chip_thickness_m = 0.0;
+  double shear_angle_rad = 0.0;
+  /// The one friction angle of the prediction: Oxley's lambda, or the friction closure's beta at the nominal rake
+  /// (the scene's for the constant closure); it sets the forces, stagnation angle and contact lengths.
+  double friction_angle_rad = 0.0;
+  bool has_friction = false;
+  double chip_ratio = 0.0;
+  double chip_thickness_m = 0.0;
+  DeformationState state;
+  FlowStress flow;
+  /// (column, value); no value where the model is not applicable (Guard::contact_length_not_applicable)
+  std::vector<std::pair<std::string, std::optional<double>>> contact_lengths_m;
+  std::optional<LiuLiResult> liu_li;  ///< the chip term (its total is the chip force alone)
+  /// The ploughing term under the edge (models.ploughing = wave with force liu_li and an edge radius): added to
+  /// the chip term in cutting_force_N and thrust_force_N.
+  std::optional<EdgePloughingResult> ploughing;
+  double friction_factor = 0.0;  ///< the ploughing model's f (given, or sin(2 beta))
+  std::optional<OxleyDetails> oxley;
+  /// The force model's own details (its unit's write_cells and print read them: kinds/force_model.hpp).
+  std::any details;
+  std::string regime;  ///< "ductile", "transition" or "brittle" against the critical depth; empty without one
+  /// False where the force model does not hold (a ductile model above d_c; transition beyond 0.2 mm): the CSV's
+  /// within_model_range, the figures' hollow points.
+  bool within_model_range = true;
+  Guards guards;
+  std::vector<std::string> warnings;
+};
+
+/// The built-in force models of this file, named by their registry lines (the transition model's unit is its own:
+/// forces/transition_model.hpp).
+extern const OrthogonalForceModel merchant_force_model, liu_li_force_model, oxley_force_model, auto_force_model;
+
+/// Throws InputError for input the models cannot accept and ModelError when a solver fails.
+Prediction predict(const AnalyticScene& scene);
+
+/// One CSV row: (column name with unit, formatted value). The column set depends only on the scene's
+/// model choices, so every row of a sweep has the same columns.
+Columns prediction_columns(const AnalyticScene& scene, const Prediction& p);
+/// The same row written cell by cell (what prediction_columns gathers; the sweep writes it straight to CSV).
+void write_prediction_cells(const AnalyticScene& scene, const Prediction& p, CellWriter& out);
+
+}  // namespace kerf
