@@ -11,6 +11,8 @@
 #     (data/scenes/dem_calibrate_toughness.json), so also its K_IC on the bundled toughness beam (damping 0.05,
 #     0.02 m/s, packings seeds 1-3, as calibrated) within 10 % of soda-lime glass's 0.77 MPa sqrt(m)
 #     (data/experiments/soda_lime_fracture.csv);
+#   - soda_lime_glass_sfj_undamped_cut: the same five targets with the beam undamped at 0.01 m/s, the state the steady
+#     cut uses its glass in (issue 54 item 1), so its K_IC on that beam within 10 % of 0.77 too;
 #   - soda_lime_glass_flawed_cut: the same as the steady cut's glass, with seeded flaws (200 um, one per mm^2;
 #     data/scenes/dem_calibrate_flawed.json).
 # The scenes run as shipped but without their half-speed rerun (a check of the loading speed, not of the
@@ -21,7 +23,7 @@ source "$(dirname "$0")/../cli/lib/dem_common.sh" "$@"
 # glass:loading speed (m/s):radius_min_um:radius_max_um:packings
 for entry in soda_lime_glass_fj:0.05:7.5:10:1 soda_lime_glass_fj_undamped:0.025:7.5:10:1 \
              soda_lime_glass_fj_undamped_cut:0.025:10:13:3 soda_lime_glass_sfj_cut:0.025:10:13:3 \
-             soda_lime_glass_flawed_cut:0.025:10:13:3; do
+             soda_lime_glass_sfj_undamped_cut:0.025:10:13:3 soda_lime_glass_flawed_cut:0.025:10:13:3; do
   IFS=: read -r glass speed rmin rmax packings <<<"$entry"
   echo "$glass (loading $speed m/s, radii $rmin-$rmax um, $packings packing(s)):"
   for seed in $(seq 1 "$packings"); do
@@ -54,13 +56,16 @@ for key, value in got.items():
 sys.exit(1 if bad else 0)
 PY
 done
-# The five-target glass's toughness, as calibrated (the calibration's beam: stopped once the load has halved).
-glass=soda_lime_glass_sfj_cut
-"$bin" run "$src/data/scenes/dem_toughness.json" --set material.base=$glass --set material.local_damping=0.05 \
-  --set toughness.speed_m_per_s=0.02 --set toughness.stop_fraction_of_peak=0.5 --set toughness.quasi_static_check=false \
-  --replicates 3 --threads "${KERF_LONG_THREADS:-1}" --out "$work/$glass/toughness" >"$work/$glass.toughness.out" 2>&1 ||
-  fail "$glass toughness: $(tail -5 "$work/$glass.toughness.out")"
-python3 - "$src/data/experiments/soda_lime_fracture.csv" "$work/$glass/toughness/summary.json" <<'PY' || fail "$glass misses K_IC"
+# The five-target glasses' toughness, each as calibrated (the calibration's beam: stopped once the load has halved):
+# glass:local damping on the beam:speed (m/s)
+for entry in soda_lime_glass_sfj_cut:0.05:0.02 soda_lime_glass_sfj_undamped_cut:0:0.01; do
+  IFS=: read -r glass damping speed <<<"$entry"
+  "$bin" run "$src/data/scenes/dem_toughness.json" --set material.base="$glass" --set material.local_damping="$damping" \
+    --set toughness.speed_m_per_s="$speed" --set toughness.stop_fraction_of_peak=0.5 \
+    --set toughness.quasi_static_check=false --replicates 3 --threads "${KERF_LONG_THREADS:-1}" \
+    --out "$work/$glass/toughness" >"$work/$glass.toughness.out" 2>&1 ||
+    fail "$glass toughness: $(tail -5 "$work/$glass.toughness.out")"
+  python3 - "$src/data/experiments/soda_lime_fracture.csv" "$work/$glass/toughness/summary.json" <<'PY' ||
 import csv, json, sys
 rows = [r for r in csv.DictReader(line for line in open(sys.argv[1]) if not line.startswith("#"))]
 target = float(next(r for r in rows if r["quantity"] == "fracture_toughness_mode_I")["value"])
@@ -68,4 +73,6 @@ got = json.load(open(sys.argv[2]))["results"]["fracture_toughness_MPa_sqrt_m"]
 print(f"fracture_toughness_MPa_sqrt_m: {got:.4g} against {target} ({100 * (got / target - 1):+.2f} %)")
 sys.exit(1 if abs(got / target - 1) > 0.10 else 0)
 PY
+    fail "$glass misses K_IC"
+done
 echo "shipped_glass: ok"
