@@ -14,6 +14,7 @@
 #include <initializer_list>
 #include <optional>
 #include <stdexcept>
+#include <limits>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -314,7 +315,10 @@ void put_fields(std::string& out, const std::array<SectionFields<S>, N>& section
             using F = std::decay_t<decltype(f)>;
             std::string key = std::string(sf.section) + "." + std::string(f.key);
             if constexpr (std::is_same_v<F, NumberField<S>>) {
-              if (f.has) throw std::logic_error("an optional number the checkpoints cannot store: " + key);
+              if (f.has && !f.has(s)) {  // an optional number left out: NaN, read back as the struct's default
+                numbers.emplace_back(std::move(key), std::numeric_limits<double>::quiet_NaN());
+                return;
+              }
             }
             if constexpr (kNumberInRecord<S, F>)
               numbers.emplace_back(std::move(key), static_cast<double>(f.get(s)));
@@ -359,7 +363,10 @@ void get_fields(In& io, const std::array<SectionFields<S>, N>& sections, S& s, c
             using F = std::decay_t<decltype(f)>;
             const std::string key = std::string(sf.section) + "." + std::string(f.key);
             if constexpr (kNumberInRecord<S, F>) {
-              if (const auto it = find(numbers, key); it != numbers.end()) set_from_record(f, s, it->second, corrupt);
+              const auto it = find(numbers, key);
+              if constexpr (std::is_same_v<F, NumberField<S>>)
+                if (it != numbers.end() && f.has && std::isnan(it->second)) return;  // left out: the default
+              if (it != numbers.end()) set_from_record(f, s, it->second, corrupt);
             } else if constexpr (std::is_same_v<F, ChoiceField<S>>) {
               if (const auto it = find(choices, key); it != choices.end()) {
                 const auto name = std::find(f.names.begin(), f.names.end(), it->second);

@@ -487,6 +487,14 @@ void Simulation::damped_half_kick(double dt) {
                     p_.vx.data(), p_.vy.data(), p_.omega.data());
 }
 
+void Simulation::set_disk_loads(std::vector<DiskLoad> loads) {
+  for (const DiskLoad& l : loads)
+    if (l.disk >= p_.size() || !std::isfinite(l.fx_n) || !std::isfinite(l.fy_n))
+      throw ModelError("dem", fmt::format("a disk load on disk {} of {} ({}, {} N): a disk that exists, finite forces",
+                                          l.disk, p_.size(), l.fx_n, l.fy_n));
+  disk_loads_ = std::move(loads);
+}
+
 void Simulation::absorb_disks() {
   const auto n = static_cast<std::int64_t>(p_.size());
   const std::uint8_t* __restrict group = p_.group.data();
@@ -551,6 +559,11 @@ void Simulation::step() {
     }
     if (!failure) {
       force_loops(counts);
+      if (!disk_loads_.empty()) {  // every thread takes the same branch; none when there are no loads
+#pragma omp barrier
+#pragma omp single
+        for (const DiskLoad& l : disk_loads_) p_.fx[l.disk] += l.fx_n, p_.fy[l.disk] += l.fy_n;
+      }
 #pragma omp single nowait
       {
         finish_forces(counts);

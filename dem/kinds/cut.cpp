@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "common.hpp"
+#include "kerf/analytic/forces/glass_edge.hpp"
 #include "kerf/dem/output/output.hpp"
 #include "kerf/dem/output/png.hpp"
 #include "kerf/dem/study/study.hpp"
@@ -56,6 +57,44 @@ void add_edge_results(const CutEdgeRecord& e, Json& r) {
       r[fmt::format("tied_share_{}_depth_{:g}_{:g}_um_steady", side == 0 ? "ahead" : "behind",
                     units::m_to_um(kTiedBandDepthM[band]), units::m_to_um(kTiedBandDepthM[band + 1]))] =
           share(e.profile.tied[side][band], e.profile.disks[side][band]);
+}
+
+/// The edge zone over the steady part (CutEdgeZoneRecord, docs/dem.md "The edge zone"): the share of the samples in
+/// which the edge met intact glass, the layer's force, the disks it removed, and the layer's energy (the tool's work
+/// on it less what its reaction did on the disks: dissipated below the disks' scale, part of energy_dissipated).
+void add_edge_zone_results(const CutParams& cut, const CutResult& res, Json& r) {
+  const CutEdgeZoneRecord& z = res.edge_zone;
+  r["edge_zone_samples_steady"] = z.samples;
+  r["edge_zone_intact_share_steady"] =
+      z.samples > 0 ? Json(static_cast<double>(z.intact_samples) / static_cast<double>(z.samples)) : Json();
+  r["edge_zone_cutting_force_N_per_mm"] = units::n_per_m_to_n_per_mm(cut.edge_cutting_force_n_per_m);
+  r["edge_zone_thrust_force_N_per_mm"] = units::n_per_m_to_n_per_mm(cut.edge_thrust_force_n_per_m);
+  r["edge_zone_removed_tied_disks"] = res.window.chips.edge_tied_disks;
+  r["edge_zone_removed_loose_disks"] = res.window.chips.edge_loose_disks;
+  r["edge_zone_removed_mass_kg"] = res.window.chips.edge_tied_mass_kg + res.window.chips.edge_loose_mass_kg;
+  if (res.energy_booked) {
+    r["energy_edge_zone_tool_work_steady_J"] = z.tool_work_j;
+    r["energy_edge_zone_reaction_work_steady_J"] = z.reaction_work_j;
+    r["energy_edge_layer_steady_J"] = z.tool_work_j - z.reaction_work_j;
+  }
+}
+
+/// The edge zone's force from the material's edge model when the scene does not give it (kerf::edge_force_per_width:
+/// the ductile layer of the material file's E, H and K_c, cut at the tool's rake with the zone's friction).
+void set_edge_zone_force(CutParams& cut, const Material& material) {
+  if (!cut.edge_zone || cut.edge_cutting_force_n_per_m >= 0) return;
+  const EdgeTool tool{units::deg_to_rad(cut.rake_deg), cut.edge_radius_m, cut.edge_friction_coefficient,
+                      cut.edge_layer_factor};
+  EdgeForce f;
+  try {
+    f = edge_force_per_width(Json(material.name), tool);
+  } catch (const InputError& e) {
+    throw InputError("edge_zone.cutting_force_N_per_mm", "(absent)",
+                     "a material file with the data of kerf-forces' edge model (material '" + material.name +
+                         "': " + e.what() + "), or the layer's cutting_force_N_per_mm and thrust_force_N_per_mm");
+  }
+  cut.edge_cutting_force_n_per_m = f.force.cutting_N_per_m;
+  cut.edge_thrust_force_n_per_m = f.force.thrust_N_per_m;
 }
 
 /// Runs (or continues, from a checkpoint) a cut to the end of its travel and writes the outputs; returns the
@@ -107,7 +146,7 @@ Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& d
   running_forces.reset();
   if (frame_every > 0) write_frame(run.simulation());
   const CutResult& res = run.result();
-  summary["cut"] = cut_params_to_json(cut);
+  summary["cut"] = cut_params_to_json(run.params());  // the cut's own: the edge zone's reach resolved
   summary["results"] =
       Json{{"main_force_N", res.main_force_n},
            {"thrust_force_N", res.thrust_force_n},
@@ -169,6 +208,7 @@ Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& d
       summary["results"][key] = value;
   }
   if (res.edge_recorded) add_edge_results(res.edge, summary["results"]);
+  if (cut.edge_zone) add_edge_zone_results(run.params(), res, summary["results"]);
   name_cut_forces(summary["results"]);
   summary["n_particles"] = res.n_particles;
   summary["steps"] = res.steps;
@@ -210,7 +250,10 @@ Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& d
 
 class CutKind final : public SceneKind {
  public:
-  void read(ObjectReader& root, const SceneCommon&) override { cut_ = read_cut_params(root); }
+  void read(ObjectReader& root, const SceneCommon& common) override {
+    cut_ = read_cut_params(root);
+    set_edge_zone_force(cut_, common.material);
+  }
   bool writes_checkpoints() const override { return true; }
 
   void check_options(const RunOptions& options, const SceneCommon& common) const override {

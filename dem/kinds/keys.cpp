@@ -30,6 +30,8 @@ const std::vector<SceneKeySection>& sections() {
       {"grooves", "cut, calibrate_cut", [] { return fields_markdown(groove_fields()); }},
       {"active_window", "cut: a steady-state cut, integrating only the disks around the tool",
        [] { return fields_markdown(active_window_fields()); }},
+      {"edge_zone", "cut, with an active window: the tool's edge as a sub-grid model (docs/dem.md, \"The edge zone\")",
+       [] { return fields_markdown(edge_zone_fields()); }},
       {"calibration", "calibrate", kinds::calibrate_keys_markdown},
       {"calibration.targets", "calibrate", kinds::calibrate_targets_keys_markdown},
       {"calibration.toughness",

@@ -303,6 +303,13 @@ Simulation CutWindow::crush(const Simulation& current, const std::vector<std::si
   return build(&current, x_built_m_);
 }
 
+Simulation CutWindow::remove_at_edge(const Simulation& current, const std::vector<std::size_t>& tied,
+                                     const std::vector<std::size_t>& loose) {
+  for (const auto u : tied) removed_[static_cast<std::size_t>(global_of_[u])] = 4;
+  for (const auto u : loose) removed_[static_cast<std::size_t>(global_of_[u])] = 5;
+  return build(&current, x_built_m_);
+}
+
 Simulation CutWindow::machined_workpiece() const {
   std::vector<std::uint8_t> keep(removed_.size());
   for (std::size_t g = 0; g < keep.size(); ++g) keep[g] = !removed_[g];
@@ -320,6 +327,8 @@ ChipAccount CutWindow::chips() const {
       ++a.particles, a.mass_kg += 1 / q.inv_mass[g];
       if (removed_[g] == 2) ++a.crushed_grains, a.crushed_mass_kg += 1 / q.inv_mass[g];
       if (removed_[g] == 3) ++a.crushed_tied_disks, a.crushed_tied_mass_kg += 1 / q.inv_mass[g];
+      if (removed_[g] == 4) ++a.edge_tied_disks, a.edge_tied_mass_kg += 1 / q.inv_mass[g];
+      if (removed_[g] == 5) ++a.edge_loose_disks, a.edge_loose_mass_kg += 1 / q.inv_mass[g];
     }
   const BondStore& b = full_.bonds();
   for (const auto& e : full_.cracks()) {

@@ -148,6 +148,36 @@ const FieldTable<CutParams>& active_window_fields() {
   return table;
 }
 
+const FieldTable<CutParams>& edge_zone_fields() {
+  using namespace units;
+  using P = CutParams;
+  // A force the scene may give; absent (negative in the struct) until the cut kind computes it from the material.
+  const auto given_force = [](std::string_view key, std::string_view doc, double P::*member) {
+    NumberField<P> f = number_field(key, kNPerMm, Range::non_negative(), doc, member);
+    f.has = [member](const P& p) { return p.*member >= 0; };
+    f.absent = "kerf-forces' edge model of the material";
+    return f;
+  };
+  static const FieldTable<CutParams> table{
+      bool_field("enabled",
+                 "the tool's edge as a sub-grid model: the ductile layer's force from the analytic side while the edge "
+                 "meets intact glass, the disks it reaches removed as its chip (windowed cuts)",
+                 &P::edge_zone),
+      number_field("radius_um", kUm, Range::non_negative(),
+                   "reach of the zone around the tool's tip (0: the workpiece's largest disk diameter)",
+                   &P::edge_zone_radius_m),
+      number_field("layer_factor", kNone, Range::positive(),
+                   "ductile layer l = layer_factor x d_c (Bifano's critical depth of the material)", &P::edge_layer_factor),
+      number_field("friction_coefficient", kNone, Range::non_negative(),
+                   "tool-glass friction of the layer's cut (0.15-0.4: docs/physics-glass-edge.md)",
+                   &P::edge_friction_coefficient),
+      given_force("cutting_force_N_per_mm", "the layer's cutting force per unit width (with thrust_force_N_per_mm)",
+                  &P::edge_cutting_force_n_per_m),
+      given_force("thrust_force_N_per_mm", "the layer's thrust force per unit width (with cutting_force_N_per_mm)",
+                  &P::edge_thrust_force_n_per_m)};
+  return table;
+}
+
 namespace {
 /// The relations between fields (each field's own range is its table's); errors name section.key.
 void check_cut_relations(const CutParams& p) {
@@ -170,6 +200,11 @@ void check_cut_relations(const CutParams& p) {
   const double tangent = p.edge_radius_m / std::tan(0.5 * wedge_angle_rad(p));
   require(tangent < std::min(rake_face_length_m(p), clearance_face_length_m(p)), "tool.edge_radius_um",
           units::m_to_um(p.edge_radius_m), "an edge radius whose rounding fits on both tool faces");
+  require(!p.edge_zone || p.active_window, "edge_zone.enabled", 1.0,
+          "false unless active_window.enabled (the zone removes disks through the window)");
+  require((p.edge_cutting_force_n_per_m < 0) == (p.edge_thrust_force_n_per_m < 0), "edge_zone.thrust_force_N_per_mm",
+          units::n_per_m_to_n_per_mm(p.edge_thrust_force_n_per_m),
+          "given together with edge_zone.cutting_force_N_per_mm, or both absent (the material's edge model)");
   if (p.active_window)
     require(p.window_shift_depths < p.window_ahead_depths, "active_window.shift_depths", p.window_shift_depths,
             "a shift below active_window.ahead_depths (" + format_value(p.window_ahead_depths) +
@@ -196,6 +231,7 @@ void validate_cut_params(const CutParams& p) {
   with_path("tool", [&] { check_fields(tool_fields(), tool); });
   if (p.groove_shape != GrooveShape::none) with_path("grooves", [&] { check_fields(groove_fields(), p); });
   if (p.active_window) with_path("active_window", [&] { check_fields(active_window_fields(), p); });
+  if (p.edge_zone) with_path("edge_zone", [&] { check_fields(edge_zone_fields(), p); });
   check_cut_relations(p);
 }
 
@@ -220,6 +256,10 @@ CutParams read_cut_params(ObjectReader& root) {
     p = read_fields(*window, active_window_fields(), p);
     window->finish();
   }
+  if (auto zone = root.find_object("edge_zone")) {
+    p = read_fields(*zone, edge_zone_fields(), p);
+    zone->finish();
+  }
   check_cut_relations(p);
   return p;
 }
@@ -238,6 +278,7 @@ Json cut_params_to_json(const CutParams& p) {
     j["grooves"].erase("damage_broken_fraction");
   }
   if (p.active_window) j["active_window"] = fields_to_json(active_window_fields(), p);
+  if (p.edge_zone) j["edge_zone"] = fields_to_json(edge_zone_fields(), p);  // only when on: other summaries unchanged
   return j;
 }
 
@@ -657,6 +698,12 @@ CutRun::CutRun(const Simulation& specimen, const CutParams& params)
   sim_.invalidate_neighbours();
   sim_.initialise();
   check_tool_speed(params_, sim_.time_step(), sim_.options().time_step_safety, b0.r_min);
+  if (params_.edge_zone) {
+    if (params_.edge_zone_radius_m == 0) params_.edge_zone_radius_m = 2 * b0.r_max;  // stored with the parameters
+    require(params_.edge_cutting_force_n_per_m >= 0, "edge_zone.cutting_force_N_per_mm",
+            units::n_per_m_to_n_per_mm(params_.edge_cutting_force_n_per_m),
+            "the layer's force per unit width, given or computed from the material by the cut kind, >= 0");
+  }
   sim_.cracks().clear();  // only the cut's cracks count
   t0_ = sim_.time();
   res_.n_particles = sim_.particles().size();
@@ -779,6 +826,13 @@ bool CutRun::advance() {
     const double x_edge = edge()[0];
     if (window_->due(x_edge)) take_window(window_->build(&sim_, x_edge));
   }
+  // The edge zone: the layer's force on the tool while the edge meets intact glass, its reaction on that glass.
+  const bool zone_on = params_.edge_zone && edge_zone_begin_sample();
+  const double t = sim_.options().thickness_m;
+  const double zone_fx = zone_on ? params_.edge_cutting_force_n_per_m * t : 0.0;
+  const double zone_fy = zone_on ? params_.edge_thrust_force_n_per_m * t : 0.0;
+  std::vector<std::array<double, 2>> loaded_at;
+  for (const auto& l : sim_.disk_loads()) loaded_at.push_back({sim_.particles().x[l.disk], sim_.particles().y[l.disk]});
   res_.particle_steps += static_cast<double>(sim_.particles().size()) * params_.sample_every_steps;
   double fx = 0, fy = 0;
   const auto& walls = sim_.walls();
@@ -788,7 +842,9 @@ bool CutRun::advance() {
       fx += walls[static_cast<std::size_t>(first_tool_wall_ + w)].fx;
       fy += walls[static_cast<std::size_t>(first_tool_wall_ + w)].fy;
     }
+    if (zone_on) fx += zone_fx, fy += zone_fy;
   }
+  const double reaction_work_j = zone_on ? edge_zone_reaction_work_j(loaded_at) : 0.0;
   if (window_ && (params_.window_grain_strength_pa > 0 || params_.window_tied_grain_strength_pa > 0)) crush_grains();
   const auto f = tool_force_components(fx / params_.sample_every_steps, fy / params_.sample_every_steps);
   const double elapsed = sim_.time() - t0_, travel = params_.speed_m_per_s * elapsed;
@@ -803,6 +859,15 @@ bool CutRun::advance() {
   }
   // The tool moves at -speed in x; the disks push it with fx each step: it does fx speed dt of work on them.
   books_.tool_work_j += fx * params_.speed_m_per_s * sim_.time_step();
+  if (params_.edge_zone && travel >= params_.entry_fraction * params_.length_m) {
+    CutEdgeZoneRecord& z = res_.edge_zone;
+    ++z.samples;
+    z.intact_samples += zone_on;
+    if (steady_booked_) {  // the books' steady part starts after its first sample
+      z.tool_work_j += zone_fx * params_.sample_every_steps * params_.speed_m_per_s * sim_.time_step();
+      z.reaction_work_j += reaction_work_j;
+    }
+  }
   if (books_kept_ && !steady_booked_ && travel >= params_.entry_fraction * params_.length_m) {
     books_steady_start_ = books_now();
     steady_booked_ = true;
@@ -813,12 +878,17 @@ bool CutRun::advance() {
   return !finished_;
 }
 
-void CutRun::observe_edge() {
-  const auto tip = edge();
-  const WorkpieceNow now = window_ ? window_->now(sim_) : workpiece_now(sim_);
+std::vector<std::uint8_t> CutRun::tied_of(const WorkpieceNow& now) const {
   std::vector<std::uint8_t> tied(sim_.particles().size());
   for (std::size_t u = 0; u < tied.size(); ++u)
     tied[u] = now.tied[window_ ? static_cast<std::size_t>(window_->workpiece_index(u)) : u];
+  return tied;
+}
+
+void CutRun::observe_edge() {
+  const auto tip = edge();
+  const WorkpieceNow now = window_ ? window_->now(sim_) : workpiece_now(sim_);
+  const std::vector<std::uint8_t> tied = tied_of(now);
   CutEdgeRecord& e = res_.edge;
   ++e.observations;
   switch (edge_meets(sim_, first_tool_wall_, n_tool_walls_, tip, tied)) {
@@ -849,10 +919,12 @@ void CutRun::finish() {
 
 namespace {
 
-constexpr std::string_view kCutMagic = "KERFCUTA";         // 3: tool_friction_coefficient, 4: rake_face_height_m,
+constexpr std::string_view kCutMagic = "KERFCUTB";         // 3: tool_friction_coefficient, 4: rake_face_height_m,
                                                            // 5: the active window, 6: its absorbing layer,
                                                            // 7: the held rows' layer, 8: the parameters by key,
-                                                           // 9: the energy books, A (10): the edge's record
+                                                           // 9: the energy books, A (10): the edge's record,
+                                                           // B (11): the edge zone's record
+constexpr std::string_view kCutMagicNoZone = "KERFCUTA";   // still read: no edge zone (its parameters are new too)
 constexpr std::string_view kCutMagicNoEdge = "KERFCUT9";   // still read: no edge record (the run keeps none)
 constexpr std::string_view kCutMagicNoBooks = "KERFCUT8";  // still read: no energy books (the run keeps none)
 constexpr std::string_view kCutMagicListed = "KERFCUT7";   // still read: the parameters listed by hand
@@ -867,9 +939,13 @@ struct Cut7In {
 };
 
 /// The cut's parameters by the keys of the scene sections that hold them.
-const std::array<serial::SectionFields<CutParams>, 4>& cut_sections() {
-  static const std::array<serial::SectionFields<CutParams>, 4> sections{
-      {{"cut", cut_fields()}, {"tool", tool_fields()}, {"grooves", groove_fields()}, {"active_window", active_window_fields()}}};
+const std::array<serial::SectionFields<CutParams>, 5>& cut_sections() {
+  static const std::array<serial::SectionFields<CutParams>, 5> sections{
+      {{"cut", cut_fields()},
+       {"tool", tool_fields()},
+       {"grooves", groove_fields()},
+       {"active_window", active_window_fields()},
+       {"edge_zone", edge_zone_fields()}}};
   return sections;
 }
 
@@ -908,7 +984,14 @@ std::string CutRun::serialize() const {
   io(sim_.serialize(), window_ ? window_->serialize() : std::string());
   book_fields(*this, io);
   edge_fields(*this, io);
+  zone_record_fields(*this, io);
   return out;
+}
+
+template <class Self, class Io>
+void CutRun::zone_record_fields(Self& run, Io& io) {
+  auto& z = run.res_.edge_zone;
+  io(z.samples, z.intact_samples, z.tool_work_j, z.reaction_work_j);
 }
 
 template <class Self, class Io>
@@ -925,10 +1008,10 @@ void CutRun::book_fields(Self& run, Io& io) {
 
 CutRun CutRun::deserialize(std::string_view bytes) {
   std::size_t version = 0;
-  serial::In io = serial::open_tagged(bytes, {kCutMagic, kCutMagicNoEdge, kCutMagicNoBooks, kCutMagicListed},
-                                      "cut checkpoint", &version);
+  serial::In io = serial::open_tagged(
+      bytes, {kCutMagic, kCutMagicNoZone, kCutMagicNoEdge, kCutMagicNoBooks, kCutMagicListed}, "cut checkpoint", &version);
   CutRun run;
-  if (version == 3) {
+  if (version == 4) {
     Cut7In listed{io};
     state_fields(run, listed);
   } else {
@@ -937,14 +1020,15 @@ CutRun CutRun::deserialize(std::string_view bytes) {
   }
   std::string state, window;
   io(state, window);
-  if (version <= 1)
+  if (version <= 2)
     book_fields(run, io);
   else
     run.books_kept_ = false;  // an older kerf kept no books: the finished run reports none
-  if (version == 0)
+  if (version <= 1)
     edge_fields(run, io);
   else
     run.edge_kept_ = false;  // nor the edge's record
+  if (version == 0) zone_record_fields(run, io);  // an older one has no edge zone (its parameters are off)
   io.expect_end("cut checkpoint");
   validate_cut_params(run.params_);
   run.sim_ = Simulation::deserialize(state);

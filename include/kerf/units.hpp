@@ -16,6 +16,8 @@ constexpr double mm_to_m(double mm) { return mm * 1e-3; }
 constexpr double m_to_nm(double m) { return m * 1e9; }
 constexpr double m_to_um(double m) { return m * 1e6; }
 constexpr double m_to_mm(double m) { return m * 1e3; }
+constexpr double n_per_mm_to_n_per_m(double f) { return f * 1e3; }  ///< a force per unit width
+constexpr double n_per_m_to_n_per_mm(double f) { return f * 1e-3; }
 
 constexpr double mpa_to_pa(double mpa) { return mpa * 1e6; }
 constexpr double gpa_to_pa(double gpa) { return gpa * 1e9; }

@@ -201,10 +201,11 @@ TEST_CASE("cut window: a cut resumed from a checkpoint without energy books (KER
   while (whole.advance()) {
   }
   for (std::size_t k = 0; k < whole.result().samples.size() / 2; ++k) half.advance();
-  // A KERFCUT8 state is a KERFCUTA one without the books and the edge's record at its end: two flags and two books of
-  // five numbers, then a flag, the last observation and the record.
+  // A KERFCUT8 state is a KERFCUTB one without the books, the edge's record and the edge zone's record at its end:
+  // two flags and two books of five numbers, then a flag, the last observation and the record, then the zone's.
   std::string old = half.serialize();
-  old.resize(old.size() - (2 + 10 * sizeof(double)) - (1 + sizeof(std::int64_t) + sizeof(CutEdgeRecord)));
+  old.resize(old.size() - (2 + 10 * sizeof(double)) - (1 + sizeof(std::int64_t) + sizeof(CutEdgeRecord)) -
+             sizeof(CutEdgeZoneRecord));
   old.replace(0, 8, "KERFCUT8");
   CutRun restored = CutRun::deserialize(old);
   while (restored.advance()) {

@@ -184,6 +184,17 @@ class Simulation {
   /// before, to the bit). A disk added later gets rate 0.
   void set_absorbing_rates(std::vector<double> rates_per_s);
   const std::vector<double>& absorbing_rates() const { return absorbing_rate_; }
+  /// A force on one disk from outside the model [N] (a cut's edge zone: the reaction of the tool's edge on the
+  /// glass it meets), added to its contact and joint forces at every step until the loads are set again.
+  struct DiskLoad {
+    std::size_t disk = 0;
+    double fx_n = 0, fy_n = 0;
+  };
+  /// The loads of the next steps (replacing any before; finite; a held disk's is ignored, as its other forces are);
+  /// empty, the default: none, and the step does what it did before, to the bit. Not saved with the state: its
+  /// owner sets them again (a disk added or removed changes the indices).
+  void set_disk_loads(std::vector<DiskLoad> loads);
+  const std::vector<DiskLoad>& disk_loads() const { return disk_loads_; }
   const SimulationOptions& options() const { return opt_; }
   double time_step() const { return dt_; }
   double time() const { return time_; }
@@ -329,6 +340,7 @@ class Simulation {
   std::vector<double> absorbing_rate_;   ///< per disk [1/s], or empty (set_absorbing_rates)
   std::vector<double> absorbing_decay_;  ///< exp(-rate dt) for absorbing_dt_ (derived, not saved)
   double absorbing_dt_ = 0;
+  std::vector<DiskLoad> disk_loads_;     ///< set_disk_loads (not saved)
   void absorb_disks();  ///< this thread's share of the decay (in the step's team)
   bool need_rebuild_ = true, need_breaks_ = false, initialised_ = false, dt_fixed_ = false;
   double dt_ = 0, time_ = 0, skin_ = 0, speed_limit_ = 0;

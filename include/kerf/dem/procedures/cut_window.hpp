@@ -88,6 +88,10 @@ struct ChipAccount {
   double crushed_mass_kg = 0;
   std::size_t crushed_tied_disks = 0;  ///< of the particles, those crushed while tied to the workpiece
   double crushed_tied_mass_kg = 0;
+  /// Of the particles, those the edge zone removed (CutWindow::remove_at_edge) as the ductile layer's chip and
+  /// powder: tied to the workpiece when reached, or loose, with their masses.
+  std::size_t edge_tied_disks = 0, edge_loose_disks = 0;
+  double edge_tied_mass_kg = 0, edge_loose_mass_kg = 0;
 };
 
 class CutWindow {
@@ -126,6 +130,10 @@ class CutWindow {
   /// in rebuilds()).
   Simulation crush(const Simulation& current, const std::vector<std::size_t>& grains,
                    const std::vector<std::size_t>& tied_disks = {});
+  /// Removes the running window's disks that the edge zone reached (indices in `current`): `tied` ones tied to the
+  /// workpiece, `loose` ones not, and rebuilds the window around the same edge (a rebuild: counted in rebuilds()).
+  Simulation remove_at_edge(const Simulation& current, const std::vector<std::size_t>& tied,
+                            const std::vector<std::size_t>& loose);
   std::size_t largest_window() const { return largest_window_; }
   /// The whole workpiece now, without changing anything: the running window's disks and joints as `current` (the
   /// window built last) has them, the others as the reservoir holds them. The window's held frame counts for
@@ -144,7 +152,8 @@ class CutWindow {
   double x_built_m_ = 0;           ///< the edge's x when the window was last built
   double max_displacement_m_ = 0;  ///< largest |x - x0| of a disk written back (widens the reservoir search)
   std::vector<double> x0_;         ///< each disk's x in the uncut workpiece
-  std::vector<std::uint8_t> removed_;                ///< per disk: removed as a chip (1), crushed (2), crushed tied (3)
+  std::vector<std::uint8_t> removed_;                ///< per disk: removed as a chip (1), crushed (2), crushed tied (3),
+                                                     ///< by the edge zone tied (4) or loose (5)
   std::vector<std::int32_t> global_of_, bond_global_of_;  ///< the window's disks and joints in the workpiece
   ContactSprings springs_;         ///< of the last sync, by workpiece index
   std::size_t rebuilds_ = 0, largest_window_ = 0;

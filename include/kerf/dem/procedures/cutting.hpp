@@ -94,6 +94,21 @@ struct CutParams {
   /// An absorbing layer along the workpiece's held rows (its left side and bottom, as rigid as the window's
   /// frame), with or without a window: its thickness in depths of cut (0: none), the same attenuation.
   double held_absorbing_depths = 0;
+  /// The edge zone (issue 54 item 4; section "edge_zone", windowed cuts only; off by default): the tool's edge as a
+  /// sub-grid model. Glass at the cut line meets the edge through a ductile layer about d_c thick, 100-300 times
+  /// below the disks (docs/physics-glass-edge.md), whose force per unit width comes from the analytic side
+  /// (kerf::edge_force_per_width: the layer lambda d_c cut at the tool's rake with friction mu). Within
+  /// `edge_zone_radius_m` of the tip (0: the workpiece's largest disk diameter): while a disk tied to the workpiece
+  /// straddles the cut line there (the intact glass the edge meets), the tool carries the layer's force and those
+  /// disks its reaction; a disk reaching below the cut line that the tool touches there leaves the model as the
+  /// layer's chip and powder (tied or loose alike: a rigid 20 um grain at the edge is the jams' artefact).
+  bool edge_zone = false;
+  double edge_zone_radius_m = 0;  ///< the cut resolves 0 to the largest diameter when it starts
+  double edge_layer_factor = 1;            ///< lambda = l / d_c (physics-glass-edge.md section 4: d_c)
+  double edge_friction_coefficient = 0.3;  ///< tool on glass at the edge (section 4: 0.15-0.4)
+  /// The layer's force per unit width [N/m], cutting and thrust; negative (the default): the cut kind computes them
+  /// from the material and the tool (kerf::edge_force_per_width) before the run starts.
+  double edge_cutting_force_n_per_m = -1, edge_thrust_force_n_per_m = -1;
 };
 
 /// The keys of the scene's "cut", "tool" and "grooves" sections (kerf/field_table.hpp).
@@ -101,6 +116,7 @@ const FieldTable<CutParams>& cut_fields();
 const FieldTable<CutParams>& tool_fields();
 const FieldTable<CutParams>& groove_fields();
 const FieldTable<CutParams>& active_window_fields();
+const FieldTable<CutParams>& edge_zone_fields();
 
 /// Checks every field's range and the cross-field constraints (groove narrower than its pitch, trapezoid bottom narrower than its
 /// top, the tool's wedge angle positive ...); InputError names the dotted key, value and expectation.
@@ -207,10 +223,33 @@ struct TiedProfile {
 /// (kTiedStretchM along x, the tool moving in -x) and in the bands below the cut line `y_cut_m`.
 void add_tied_profile(const WorkpieceNow& now, std::array<double, 2> tip_m, double y_cut_m, TiedProfile& into);
 
+/// The edge zone's disks at one moment (CutParams::edge_zone; indices of `sim`): those the edge has reached (a disk
+/// with a contact with one of the tool's walls within `reach_m` of the tip, free, reaching below the cut line:
+/// y - r < y_cut), tied or loose, and the footprint of the layer's reaction (free tied disks not reached that
+/// straddle the cut line, |y - y_cut| < r, with part of the disk ahead of the tip, x - r < x_tip, and their centre
+/// within reach_m + r of it). Sorted. "Tied" here is local: joined through intact joints to a held disk or to a disk
+/// more than `bulk_depth_m` below the cut line (the whole workpiece's test, CutWindow::now, costs a sample's steps).
+struct EdgeZoneSets {
+  std::vector<std::size_t> reached_tied, reached_loose, footprint;
+};
+EdgeZoneSets edge_zone_sets(const Simulation& sim, std::int32_t first_tool_wall, std::int32_t n_tool_walls,
+                            std::array<double, 2> tip_m, double y_cut_m, double reach_m, double bulk_depth_m);
+/// The edge zone's bulk: glass joined to a disk this many zone reaches below the cut line is tied.
+inline constexpr double kEdgeZoneBulkReaches = 5;
+
 /// The steady part's observations of the edge (a plain record of counts: stored in the cut's checkpoints).
 struct CutEdgeRecord {
   std::int64_t observations = 0, touches_tied = 0, touches_loose = 0;  ///< the rest touched nothing
   TiedProfile profile;
+};
+
+/// The edge zone over the steady part (CutParams::edge_zone; a plain record, stored in the cut's checkpoints): the
+/// samples, those in which the edge met intact glass (and carried the layer's force), and the energy over the
+/// energy books' steady part: the tool's work on the layer, and the reaction's work on the disks (what the DEM
+/// received; the rest, the layer's own, is dissipated in it, and counted in CutEnergy::dissipated_j).
+struct CutEdgeZoneRecord {
+  std::int64_t samples = 0, intact_samples = 0;
+  double tool_work_j = 0, reaction_work_j = 0;
 };
 
 /// Where the tool's work goes, booked as a cut runs (issue 41 item 4). The integrated disks (the whole workpiece,
@@ -274,6 +313,8 @@ struct CutResult {
   /// a kerf that records it (a cut resumed from an older checkpoint has none).
   bool edge_recorded = false;
   CutEdgeRecord edge;
+  /// The edge zone's steady record (CutParams::edge_zone; zero when off).
+  CutEdgeZoneRecord edge_zone;
 };
 
 /// {main, thrust} from the force the disks exert on the tool (cutting direction -x): main = F_x, thrust = F_y.
@@ -376,6 +417,15 @@ class CutRun {
   std::int64_t edge_last_step_ = -1;
   /// Observes what the edge meets now and the tied profile around it (res_.edge).
   void observe_edge();
+  /// Per disk of the running simulation: tied to the workpiece's held rows through the whole workpiece.
+  std::vector<std::uint8_t> tied_of(const WorkpieceNow& now) const;
+  /// The edge zone at a sample's start: removes the disks the edge has reached, then finds the intact glass it
+  /// meets and loads it with the layer's reaction (Simulation::set_disk_loads); returns whether it met any.
+  bool edge_zone_begin_sample();
+  /// The reaction's work over a sample on the loaded disks that were at `start_m` when it began.
+  double edge_zone_reaction_work_j(const std::vector<std::array<double, 2>>& start_m) const;
+  template <class Self, class Io>
+  static void zone_record_fields(Self& run, Io& io);
 };
 
 /// A cut's forces.csv: "tool_travel_mm,time_s,cutting_force_N,thrust_force_N,cutting_force_N_per_mm,

@@ -1,0 +1,201 @@
+// The edge zone of a windowed cut (issue 54 item 4; CutParams::edge_zone, docs/dem.md "The edge zone"), on the
+// constructed workpieces of cut_edge_test.cpp: off, the cut is today's to the bit; an intact block under the edge
+// carries the layer's force and its reaction, equal and opposite, a bed of loose disks none; the energy books
+// balance with the layer's energy as the only dissipation of a conservative block; a checkpoint round trip, and
+// an older state (KERFCUTA) read with the zone off; bad keys named.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdint>
+#include <string>
+
+#include "cut_blocks.hpp"
+#include "kerf/dem/procedures/cut_window.hpp"
+#include "kerf/dem/procedures/cutting.hpp"
+
+using namespace kerf::dem;
+using namespace kerf::dem::testing;
+using Catch::Matchers::WithinAbs;
+using Catch::Matchers::WithinRel;
+
+namespace {
+
+constexpr double kCuttingNPerM = 500, kThrustNPerM = 400;  // 0.5 and 0.4 N/mm: the order of the experiments' part
+
+CutParams zone_cut() {
+  CutParams p = block_cut(true);
+  p.edge_zone = true;
+  p.edge_cutting_force_n_per_m = kCuttingNPerM;
+  p.edge_thrust_force_n_per_m = kThrustNPerM;
+  return p;
+}
+
+struct ZoneRun {
+  CutResult result;
+  std::int64_t loaded_samples = 0;  ///< samples whose disks carried loads
+  std::int64_t loaded_booked = 0;   ///< those in the energy books' steady part (after the steady part's first sample)
+  double worst_sum_error = 0;       ///< the largest |sum of the loads + F t| over them, relative to F t
+};
+
+/// Runs a cut to its end, checking after each sample that the loads on the disks sum to minus the layer's force on
+/// the tool (Newton's third law).
+ZoneRun run_zone(const Simulation& workpiece, const CutParams& p) {
+  CutRun run(workpiece, p);
+  ZoneRun z;
+  const double t = workpiece.options().thickness_m;
+  bool counted = false;  // a steady sample came before this one
+  for (bool more = true; more;) {
+    const std::size_t before = run.result().samples.size();
+    more = run.advance();
+    if (run.result().samples.size() == before) break;
+    const auto& loads = run.simulation().disk_loads();
+    const bool booked = counted;
+    counted = counted || run.result().samples.back().travel_m >= p.entry_fraction * p.length_m;
+    if (loads.empty()) continue;
+    ++z.loaded_samples;
+    z.loaded_booked += booked;
+    double fx = 0, fy = 0;
+    for (const auto& l : loads) fx += l.fx_n, fy += l.fy_n;
+    z.worst_sum_error = std::max({z.worst_sum_error, std::abs(fx + p.edge_cutting_force_n_per_m * t) /
+                                                         (p.edge_cutting_force_n_per_m * t),
+                                  std::abs(fy + p.edge_thrust_force_n_per_m * t) / (p.edge_thrust_force_n_per_m * t)});
+  }
+  z.result = run.result();
+  return z;
+}
+
+}  // namespace
+
+TEST_CASE("edge zone: off, the cut is today's to the bit, whatever its other keys", "[edge_zone]") {
+  const Simulation specimen = quick_workpiece_specimen(0.6e-3, 0.25e-3, 7);
+  CutParams p = windowed(3, 2, 2, 2);
+  p.length_m = 0.1e-3;
+  CutParams keys = p;
+  keys.edge_cutting_force_n_per_m = kCuttingNPerM;
+  keys.edge_thrust_force_n_per_m = kThrustNPerM;
+  keys.edge_zone_radius_m = 30e-6;
+  const auto cut = [&](const CutParams& q) {
+    CutRun run(specimen, q);
+    while (run.advance()) {
+    }
+    return run.result();
+  };
+  const CutResult a = cut(p), b = cut(keys);
+  REQUIRE(a.samples.size() == b.samples.size());
+  for (std::size_t k = 0; k < a.samples.size(); ++k) {
+    CHECK(a.samples[k].main_force_n == b.samples[k].main_force_n);
+    CHECK(a.samples[k].thrust_force_n == b.samples[k].thrust_force_n);
+  }
+  CHECK(b.edge_zone.samples == 0);
+  CHECK(b.window.chips.edge_tied_disks + b.window.chips.edge_loose_disks == 0);
+}
+
+TEST_CASE("edge zone: an intact block carries the layer's force and its reaction, a loose bed neither",
+          "[edge_zone]") {
+  const Simulation block = hex_workpiece(conservative_material(), 0.6e-3, 0.25e-3);
+  const CutParams p = zone_cut();
+  const ZoneRun intact = run_zone(block, p);
+  const CutEdgeZoneRecord& z = intact.result.edge_zone;
+  INFO("steady samples " << z.samples << ", intact " << z.intact_samples << ", loaded " << intact.loaded_samples);
+  REQUIRE(z.samples > 10);
+  // The lattice's rows leave a tied disk across the cut line within a diameter of the tip at every moment (measured:
+  // all but the steady part's first sample).
+  CHECK(z.intact_samples >= z.samples - 1);
+  CHECK(intact.loaded_samples >= z.samples);
+  CHECK(intact.worst_sum_error < 1e-12);
+  CHECK(intact.result.window.chips.edge_tied_disks > 0);  // the disks the edge reached left as the layer's chip
+  CHECK(intact.result.window.chips.edge_loose_disks == 0);
+  CHECK(z.tool_work_j > 0);
+
+  // A bed of the default (damped, frictional) disks, which the tool pushes rather than scatters.
+  Simulation bed = hex_workpiece(Material{}, 0.6e-3, 0.25e-3);
+  unbond(bed, [](double, double) { return true; });
+  const ZoneRun loose = run_zone(bed, p);
+  CHECK(loose.result.edge_zone.samples > 10);
+  CHECK(loose.result.edge_zone.intact_samples == 0);
+  CHECK(loose.loaded_samples == 0);
+  CHECK(loose.result.edge_zone.tool_work_j == 0);
+  CHECK(loose.result.window.chips.edge_tied_disks == 0);
+  CHECK(loose.result.window.chips.edge_loose_disks > 0);  // reached fragments leave as powder
+}
+
+TEST_CASE("edge zone: the books balance, the tool's work on the layer its force times the travel in intact glass",
+          "[edge_zone]") {
+  // The tool's work on the layer is F t v dt per step of each sample in which the edge met intact glass (the books'
+  // steady part, which starts after its first sample); it enters the books with the walls' work, and the reaction's
+  // work on the disks is part of what the disks received. The disks the edge removes take their energy with them
+  // (as a crushed grain's), so the books balance as today's windowed cut does, to rounding. (On this unbreakable
+  // block, compressed as a whole by the tool, the dissipation the books find is a few per cent of the work: the
+  // integrator's error after the sudden release of the removed disks' joints, which the crushing of a disk shows
+  // alike; a fracturing glass holds far less.)
+  CutParams p = zone_cut();
+  p.tool_friction_coefficient = 0;
+  const Simulation block = hex_workpiece(conservative_material(), 0.6e-3, 0.25e-3);
+  const ZoneRun z = run_zone(block, p);
+  const CutResult& r = z.result;
+  REQUIRE(r.energy_booked);
+  const CutEnergy& e = r.energy;
+  CHECK_THAT(e.dissipated_j + e.left_kinetic_j + e.left_strain_j + e.stored_change_j, WithinRel(e.tool_work_j, 1e-12));
+  const double per_sample_j =
+      kCuttingNPerM * block.options().thickness_m * p.speed_m_per_s * r.time_step_s * p.sample_every_steps;
+  REQUIRE(z.loaded_booked > 10);
+  CHECK_THAT(r.edge_zone.tool_work_j, WithinRel(per_sample_j * static_cast<double>(z.loaded_booked), 1e-9));
+  CHECK(r.edge_zone.tool_work_j < e.tool_work_j);
+  CHECK(r.energy.left_strain_j > 0);  // the removed disks' joints and contacts
+}
+
+TEST_CASE("edge zone: resumed from its checkpoint, the cut and its record go on to the bit, a KERFCUTA state read",
+          "[edge_zone]") {
+  const Simulation block = quick_workpiece_specimen(0.6e-3, 0.25e-3, 7);
+  CutParams p = zone_cut();
+  CutRun whole(block, p), half(block, p);
+  while (whole.advance()) {
+  }
+  for (std::size_t k = 0; k < whole.result().samples.size() / 2; ++k) half.advance();
+  const std::string state = half.serialize();
+  CutRun restored = CutRun::deserialize(state);
+  while (restored.advance()) {
+  }
+  const CutEdgeZoneRecord &a = whole.result().edge_zone, &b = restored.result().edge_zone;
+  CHECK(restored.result().samples.back().main_force_n == whole.result().samples.back().main_force_n);
+  CHECK(b.samples == a.samples);
+  CHECK(b.intact_samples == a.intact_samples);
+  CHECK(b.tool_work_j == a.tool_work_j);
+  CHECK(b.reaction_work_j == a.reaction_work_j);
+  CHECK(restored.result().window.chips.edge_tied_disks == whole.result().window.chips.edge_tied_disks);
+  CHECK(restored.params().edge_zone_radius_m == whole.params().edge_zone_radius_m);
+
+  // A KERFCUTA state is a KERFCUTB one without the zone's record at its end (its parameters, stored by key, are
+  // read as their defaults when absent: the zone off).
+  CutParams off = p;
+  off.edge_zone = false;
+  CutRun whole_off(block, off), half_off(block, off);
+  while (whole_off.advance()) {
+  }
+  for (std::size_t k = 0; k < whole_off.result().samples.size() / 2; ++k) half_off.advance();
+  std::string old = half_off.serialize();
+  old.resize(old.size() - sizeof(CutEdgeZoneRecord));
+  old.replace(0, 8, "KERFCUTA");
+  CutRun older = CutRun::deserialize(old);
+  while (older.advance()) {
+  }
+  CHECK(older.result().samples.back().main_force_n == whole_off.result().samples.back().main_force_n);
+  CHECK(older.result().edge_zone.samples == 0);
+}
+
+TEST_CASE("edge zone: its keys are validated with their dotted names", "[edge_zone]") {
+  CutParams p = zone_cut();
+  p.active_window = false;
+  CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains("edge_zone.enabled"));
+  p = zone_cut();
+  p.edge_thrust_force_n_per_m = -1;  // the cutting force alone
+  CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains("edge_zone.thrust_force_N_per_mm"));
+  p = zone_cut();
+  p.edge_friction_coefficient = -0.1;
+  CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains("edge_zone.friction_coefficient = -0.1"));
+  p = zone_cut();
+  p.edge_cutting_force_n_per_m = p.edge_thrust_force_n_per_m = -1;  // neither given nor computed by a cut kind
+  CHECK_NOTHROW(validate_cut_params(p));
+  CHECK_THROWS_WITH(CutRun(hex_workpiece(Material{}, 0.6e-3, 0.25e-3), p),
+                    Catch::Contains("edge_zone.cutting_force_N_per_mm"));
+}
+
