@@ -22,7 +22,7 @@ import sys
 
 import numpy as np
 
-from kerf.records import condition_of, folders
+from kerf.records import condition_of, cutting_force, folders
 from kerf.stats import mean_of
 
 MEASURES = ("work_share_top_1pc", "travel_share_half_work", "peak_main_force_N", "main_force_N")
@@ -68,7 +68,7 @@ def cut_bursts(folder, to_travel_mm=None):
     bin_mm = 0.1 * summary["cut"]["cut"]["depth_of_cut_mm"]
     top, half = concentration(work_bins(travel, main, bin_mm))
     seed = summary.get("study_item", {}).get("scene", {}).get("specimen", {}).get("seed", summary["specimen"]["seed"])
-    mean = summary["results"]["main_force_N"] if to_travel_mm is None else float(main.mean())
+    mean = cutting_force(summary["results"]) if to_travel_mm is None else float(main.mean())
     measures = {"work_share_top_1pc": top, "travel_share_half_work": half,
                 "peak_main_force_N": float(main.max()), "main_force_N": mean}
     return condition_of(summary), seed, measures

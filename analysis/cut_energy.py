@@ -29,7 +29,7 @@ import csv
 import json
 import sys
 
-from kerf.records import condition_of, folders
+from kerf.records import condition_of, cutting_force, folders
 from kerf.stats import mean_of
 
 def element_energy_j(material, mode, length_m, joint_length_m, thickness_m):
@@ -60,7 +60,7 @@ def cut_energy(folder):
                 energy[row["place"]] += element_energy_j(material, row["mode"], float(row["length_um"]) * 1e-6,
                                                          joint_m, thickness_m)
     key = condition_of(summary)
-    work_j = results["main_force_N"] * travel_m
+    work_j = cutting_force(results) * travel_m
     if "energy_tool_work_steady_J" in results:  # the books: their own work (the same samples, to one)
         work_j = results["energy_tool_work_steady_J"]
         joints = energy["chip"] + energy["subsurface"]

@@ -17,7 +17,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from kerf.records import intermittency  # noqa: E402
+from kerf.records import cutting_force, intermittency  # noqa: E402
 
 
 def items(study_dir):
@@ -33,7 +33,7 @@ def items(study_dir):
                 "speed": scene["cut"]["cut"]["speed_m_per_s"],
                 "alpha": material["local_damping"],
                 "beta": material.get("viscous_damping_ratio", 0.0),
-                "main": float(row["main_force_N"]), "main_sem": float(row["main_force_sem_N"]),
+                "main": float(cutting_force(row)), "main_sem": float(cutting_force(row, "sem_N")),
                 "thrust": float(row["thrust_force_N"]), "thrust_sem": float(row["thrust_force_sem_N"]),
             })
             rows[-1].update(intermittency(study_dir / "items" / name, float(row["steady_from_travel_mm"])))

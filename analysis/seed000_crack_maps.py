@@ -27,6 +27,8 @@ import numpy as np
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+from kerf.records import cutting_force  # noqa: E402
+
 # The steady study's conditions at 0.1 mm in the default window and the groove-damage study's layers (their
 # condition numbers in data/studies/seed000_steady.json and seed000_groove_damage.json).
 STEADY = {"regular": 1, "rectangular, pristine": 2, "trapezoidal, pristine": 3}
@@ -100,7 +102,7 @@ def depth_profile(study, damage, out):
             depth_um = (r["cut_line_y_mm"] - xy[:, 1]) * 1000
             h, _ = np.histogram(depth_um, bins=edges)
             hists.append(h / (r["steady_machined_to_x_mm"] - r["steady_machined_from_x_mm"]) / 10.0)
-            forces.append(r["main_force_N"] / summary["results"]["width_mm"])
+            forces.append(cutting_force(r) / summary["results"]["width_mm"])
         mean = np.mean(hists, axis=0)
         centres = 0.5 * (edges[1:] + edges[:-1])
         left.plot(centres, mean, style, label=f"{label}: {len(found)} packings, main {np.mean(forces):.2f} N/mm")

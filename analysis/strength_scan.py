@@ -31,7 +31,7 @@ def point_rows(strength, cuts, domain, depth):
     means = {}
     for surface in SURFACES:
         runs = list(cuts.get((domain, surface, round(depth, 6)), {}).values())
-        for quantity, values in (("main_force_N_per_mm", [per_width(r, "main") for r in runs]),
+        for quantity, values in (("main_force_N_per_mm", [per_width(r, "cutting") for r in runs]),
                                  ("thrust_force_N_per_mm", [per_width(r, "thrust") for r in runs]),
                                  ("cracks_subsurface", [r.get("cracks_subsurface_steady", math.nan) for r in runs]),
                                  ("deepest_subsurface_crack_um",

@@ -31,8 +31,9 @@ struct CutFit {
 
 const FieldTable<CutFit>& cut_fit_fields() {
   static const FieldTable<CutFit> table{
-      required_number_field("target_main_force_N", units::kSi("N"), Range::positive(),
-                            "the measured mean main force to meet", &CutFit::target_main_force_n),
+      required_number_field("target_cutting_force_N", units::kSi("N"), Range::positive(),
+                            "the measured mean cutting force to meet (its old name target_main_force_N is read too, "
+                            "deprecated until 0.3.0)", &CutFit::target_main_force_n),
       int_field("replicates", 2, 64, "packings per evaluation (seeds specimen.seed + 0, 1, ...)", &CutFit::replicates),
       number_field("tolerance_percent", units::kPercent, Range::open(0.0, 100.0),
                    "relative error of the mean main force for convergence", &CutFit::tolerance),
@@ -44,11 +45,30 @@ const FieldTable<CutFit>& cut_fit_fields() {
   return table;
 }
 
+/// The calibration section, its target_main_force_N (target_cutting_force_N's old name, issue 55 item 5; deprecated,
+/// removed in 0.3.0) renamed, with a warning; its value is checked under the name the user wrote.
+Json calibration_section(ObjectReader& root) {
+  const std::string old_key = "target_main_force_N", new_key = "target_cutting_force_N";
+  ObjectReader cal = root.get_object("calibration");
+  Json section = root.get("calibration");
+  if (!cal.has(old_key)) return section;
+  if (cal.has(new_key))
+    throw InputError(cal.key_path(old_key), json_value_text(section[old_key]),
+                     "no value beside calibration." + new_key + " (its old name)");
+  cal.get_number(old_key, Range::positive(), "N");
+  std::cerr << "kerf-dem: warning: calibration." << old_key << " is deprecated (removed in 0.3.0): call it calibration."
+            << new_key << "\n";
+  section[new_key] = section[old_key];
+  section.erase(old_key);
+  return section;
+}
+
 class CalibrateCutKind final : public SceneKind {
  public:
   void read(ObjectReader& root, const SceneCommon&) override {
     cut_ = read_cut_params(root);
-    ObjectReader cal = root.get_object("calibration");
+    const Json section = calibration_section(root);
+    ObjectReader cal(section, root.key_path("calibration"));
     fit_ = read_fields(cal, cut_fit_fields(), fit_);
     output_ = read_material_output(cal, "cut_calibrated");
     cal.finish();
@@ -150,7 +170,8 @@ class CalibrateCutKind final : public SceneKind {
     summary["cut"] = cut_params_to_json(cut_);
     write_material_output(output_, material, out, summary);
     summary["results"] = Json{{"converged", converged},
-                              {"target_main_force_N", fit.target_main_force_n},
+                              {"target_cutting_force_N", fit.target_main_force_n},
+                              {"target_main_force_N", fit.target_main_force_n},  // the old name, until 0.3.0
                               {"target_source", fit.target_source},
                               {"strength_factor", b.strength_factor},
                               {"main_force_N", b.main_force_n},

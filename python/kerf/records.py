@@ -35,6 +35,13 @@ def both_names(values):
     return values
 
 
+def cutting_force(values, unit="N"):
+    """The cutting force `cutting_force_<unit>` of `values` (a summary's results, a record's or an items.csv row, a
+    travel window), or `main_force_<unit>` in one written before 0.2.0 (unit "N", "sem_N", "N_per_mm", ...)."""
+    key = f"cutting_force_{unit}"
+    return values[key] if key in values else values[f"main_force_{unit}"]
+
+
 def cutting_force_column(names):
     """The cutting force's column among a forces.csv's `names`: cutting_force_N, or main_force_N in a cut written
     before 0.2.0."""
@@ -76,10 +83,10 @@ def read_records(paths):
 
 def per_width(row, force):
     """A record row's `force` ('cutting' or its old name 'main', 'thrust') per mm of its width (width_mm; 1 mm where it
-    has none)."""
+    has none). The cutting force is read as cutting_force_N, main_force_N in a row not read through both_names."""
     width = row.get("width_mm", 1.0)
     width = width if isinstance(width, float) and math.isfinite(width) and width > 0 else 1.0
-    return row[f"{force}_force_N"] / width
+    return cutting_force(row) / width if force in ("cutting", "main") else row[f"{force}_force_N"] / width
 
 
 def read_experiments(path):

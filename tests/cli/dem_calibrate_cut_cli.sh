@@ -8,7 +8,15 @@
 source "$(dirname "$0")/lib/dem_common.sh" "$@"
 
 scene="$src/data/scenes/dem_calibrate_cut.json"
-expect_input_error "calibration.target_main_force_N = -1" run "$scene" --set calibration.target_main_force_N=-1 --out "$work/x"
+expect_input_error "calibration.target_cutting_force_N = -1" run "$scene" --set calibration.target_cutting_force_N=-1 --out "$work/x"
+# target_main_force_N, the old name (issue 55 item 5), is read until 0.3.0 with a warning, its error under its own name;
+# both names at once are an error.
+sed 's/"target_cutting_force_N"/"target_main_force_N"/' "$scene" >"$work/old_name.json"
+expect_input_error "calibration.target_main_force_N = -1" run "$work/old_name.json" --set calibration.target_main_force_N=-1 \
+  --out "$work/x"
+expect_input_error "calibration.replicates = 1" run "$work/old_name.json" --set calibration.replicates=1 --out "$work/x"
+grep -qF "warning: calibration.target_main_force_N is deprecated" "$work/err" || fail "no warning for the old name"
+expect_input_error "calibration.target_main_force_N = 3" run "$scene" --set calibration.target_main_force_N=3 --out "$work/x"
 expect_input_error "calibration.replicates = 1" run "$scene" --set calibration.replicates=1 --out "$work/x"
 expect_input_error "--replicates = 2" run "$scene" --replicates 2 --out "$work/x"
 expect_input_error "--checkpoint-every" run "$scene" --checkpoint-every 5 --out "$work/x"
@@ -17,7 +25,7 @@ expect_input_error "--checkpoint-every" run "$scene" --checkpoint-every 5 --out 
 small=(--set specimen.width_mm=0.4 --set specimen.height_mm=0.25 --set specimen.growth_steps=2000
        --set specimen.relax_steps=500 --set cut.depth_of_cut_mm=0.05 --set cut.length_mm=0.04
        --set cut.speed_m_per_s=2 --set calibration.replicates=2 --set calibration.max_evaluations=3
-       --set calibration.target_main_force_N=3 --set calibration.tolerance_percent=1 --threads 1)
+       --set calibration.target_cutting_force_N=3 --set calibration.tolerance_percent=1 --threads 1)
 "$bin" run "$scene" "${small[@]}" --out "$work/full" >"$work/full.out" 2>&1
 rc=$?
 [ $rc -eq 0 ] || [ $rc -eq 3 ] || fail "calibrate_cut exit $rc: $(cat "$work/full.out")"

@@ -72,3 +72,8 @@ def test_the_cutting_force_is_read_under_either_name(tmp_path):
     # A row that has both keeps each (no overwrite): the new name's value stays the new name's.
     both = kr.both_names({"cutting_force_N": 1.0, "main_force_N": 2.0})
     assert both == {"cutting_force_N": 1.0, "main_force_N": 2.0}
+    # A summary's results, an items.csv row, a travel window read as they are (analysis/): the new name first.
+    assert kr.cutting_force({"main_force_N": 2.0}) == 2.0
+    assert kr.cutting_force({"cutting_force_N": 1.0, "main_force_N": 2.0}) == 1.0
+    assert kr.cutting_force({"main_force_sem_N": 0.1}, "sem_N") == 0.1
+    assert kr.per_width({"main_force_N": 0.8, "width_mm": 2.0}, "cutting") == 0.4
