@@ -54,6 +54,8 @@ constexpr double kMaxShearAngle = kPi / 3.0;  // 60 deg: tan(theta) = 1 + pi/2 -
 // ---------------------------------------------------------------------------------------------------------
 // Validation without building strings on the hot path: solve_oxley calls these once per solve.
 
+// The fields named are the arguments' own (params.*, cut.*, options.*, SI); the scene layer names its keys instead
+// (forces/oxley_model.cpp).
 void validate_all(const OxleyParams& params, const OxleyCut& cut, const OxleySolverOptions* options) {
   params.validate("params");
   cut.validate("cut");
