@@ -4,6 +4,9 @@
 #include <map>
 
 // The one file that sees every model: its lines name their entry points and enum values.
+#include "kerf/analytic/forces/auto_model.hpp"
+#include "kerf/analytic/forces/chip_term.hpp"
+#include "kerf/analytic/forces/oxley_model.hpp"
 #include "kerf/analytic/forces/transition_model.hpp"
 #include "kerf/analytic/kinds/evaluate.hpp"
 #include "kerf/analytic/kinds/predict.hpp"

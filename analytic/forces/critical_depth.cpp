@@ -69,8 +69,8 @@ void RegimeBand::validate(const std::string& path) const {
 
 CuttingRegime classify_regime(double depth_m, double critical_depth, const RegimeBand& band) {
   band.validate("regime");
-  check_number(units::m_to_um(depth_m), "cut.depth_um", Range::non_negative(), "um");
-  check_number(units::m_to_nm(critical_depth), "critical_depth_nm", Range::positive(), "nm");
+  check_number(depth_m, "depth_m", Range::non_negative(), "m");
+  check_number(critical_depth, "critical_depth_m", Range::positive(), "m");
   if (depth_m < critical_depth) return CuttingRegime::ductile;
   if (depth_m < band.brittle_factor * critical_depth) return CuttingRegime::transition;
   return CuttingRegime::brittle;

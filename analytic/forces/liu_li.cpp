@@ -106,10 +106,7 @@ std::optional<double> constant_closure_pole(const LiuLiParams& p, double g_max) 
 
 LiuLiResult liu_li_force_per_width(const LiuLiParams& p, double shear_flow_stress_Pa, double uncut_chip_thickness_m,
                                    Guards* guards) {
-  if (!(uncut_chip_thickness_m > 0.0) || !std::isfinite(uncut_chip_thickness_m)) {
-    throw InputError("cut.uncut_chip_thickness_um", format_value(units::m_to_um(uncut_chip_thickness_m)),
-                     "a positive value in um");
-  }
+  check_number(uncut_chip_thickness_m, "uncut_chip_thickness_m", Range::positive(), "m");  // its own name (SI)
   const double k_s = shear_flow_stress_Pa;
   const double r = p.edge_radius_m;
   LiuLiResult out;

@@ -54,18 +54,24 @@ constexpr double kMaxShearAngle = kPi / 3.0;  // 60 deg: tan(theta) = 1 + pi/2 -
 // ---------------------------------------------------------------------------------------------------------
 // Validation without building strings on the hot path: solve_oxley calls these once per solve.
 
+// The fields named are the arguments' own (params.*, cut.*, options.*, SI), under the arguments' names; the scene
+// layer names its keys instead (forces/oxley_model.cpp).
+constexpr const char* kCutArgument = "cut";
+
 void validate_all(const OxleyParams& params, const OxleyCut& cut, const OxleySolverOptions* options) {
   params.validate("params");
-  cut.validate("cut");
+  cut.validate(kCutArgument);
   if (options) options->validate("options");
   const auto& jc = params.johnson_cook;
   if (!(cut.workpiece_temperature_K < jc.melting_temperature_K)) {
-    throw InputError("cut.workpiece_temperature_K", format_value(cut.workpiece_temperature_K),
+    throw InputError(std::string(kCutArgument) + ".workpiece_temperature_K",
+                     format_value(cut.workpiece_temperature_K),
                      "a temperature below the Johnson-Cook melting temperature " +
                          format_value(jc.melting_temperature_K) + " K (the workpiece would be molten)");
   }
   if (params.policy.cold == ColdPolicy::error && cut.workpiece_temperature_K < jc.room_temperature_K) {
-    throw InputError("cut.workpiece_temperature_K", format_value(cut.workpiece_temperature_K),
+    throw InputError(std::string(kCutArgument) + ".workpiece_temperature_K",
+                     format_value(cut.workpiece_temperature_K),
                      "a temperature at or above the Johnson-Cook room temperature " +
                          format_value(jc.room_temperature_K) + " K (policy 'error')");
   }

@@ -47,7 +47,7 @@ double friction_factor_from_friction_angle(double friction_angle_rad) {
 }
 
 void EdgePloughingParams::validate() const {
-  check_number(units::m_to_um(edge_radius_m), "tool.edge_radius_um", Range::non_negative(), "um");
+  check_number(edge_radius_m, "edge_radius_m", Range::non_negative(), "m");
   check_number(friction_factor, "friction_factor", Range::closed(0.0, 1.0), "(tau/k)");
 }
 

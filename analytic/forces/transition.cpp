@@ -24,15 +24,16 @@ double ductile_layer_m(const TransitionParams& params, double critical_depth_m) 
   return params.layer_factor * critical_depth_m;
 }
 
+// Its own fields are named (params.*, fracture_toughness_Pa_sqrt_m, depth_m, friction_angle_rad); the transition
+// model's unit names the scene's keys instead (forces/transition_model.cpp).
 ForcePerWidth fracture_force_per_width(const TransitionParams& params, double toughness, double depth_m,
                                        double layer_m, double rake_rad, double friction_angle_rad) {
-  params.validate("models.transition");
-  check_number(units::pa_to_mpa(toughness), "material.brittle.fracture_toughness_MPa_sqrt_m", Range::positive(),
-               "MPa m^0.5");
-  check_number(units::m_to_um(depth_m), "cut.uncut_chip_thickness_um", Range::non_negative(), "um");
+  params.validate("params");
+  check_number(toughness, "fracture_toughness_Pa_sqrt_m", Range::positive(), "Pa m^0.5");
+  check_number(depth_m, "depth_m", Range::non_negative(), "m");
   const double inclination = friction_angle_rad - rake_rad;  // of the rake face's force from the cutting direction
   if (!(std::fabs(inclination) < std::numbers::pi / 2.0)) {
-    throw InputError("cut.friction_angle_deg", fmt::format("{:.6g}", units::rad_to_deg(friction_angle_rad)),
+    throw InputError("friction_angle_rad", format_value(friction_angle_rad),
                      fmt::format("friction minus rake in (-90, 90) deg for the fracture part's thrust (rake {:.6g} "
                                  "deg)",
                                  units::rad_to_deg(rake_rad)));

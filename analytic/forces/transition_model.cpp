@@ -2,10 +2,13 @@
 
 #include <fmt/format.h>
 
+#include "kerf/analytic/forces/chip_term.hpp"
 #include "kerf/analytic/forces/critical_depth.hpp"
 #include "kerf/analytic/forces/transition.hpp"
 #include "kerf/analytic/kinds/cells.hpp"
+#include "kerf/analytic/kinds/model_fields.hpp"
 #include "kerf/analytic/kinds/predict.hpp"
+#include "kerf/analytic/kinds/scene_keys.hpp"
 #include "kerf/error.hpp"
 #include "kerf/field_table.hpp"
 #include "kerf/units.hpp"
@@ -16,6 +19,18 @@ namespace {
 
 // The deepest cut the transition model was held against: Yang et al. 2018's Table 6 (0.1 and 0.2 mm).
 constexpr double kTransitionValidatedDepth_m = 0.2e-3;
+
+constexpr FieldUnit kMPaSqrtM{"MPa m^0.5", units::mpa_to_pa, units::pa_to_mpa};
+
+// fracture_force_per_width's own fields and the scene's keys that set them.
+constexpr SceneKeyOf kSceneKeys[] = {
+    {"params.ductile_layer_factor", "models.transition.ductile_layer_factor"},
+    {"params.fracture_coefficient", "models.transition.fracture_coefficient"},
+    {"fracture_toughness_Pa_sqrt_m", "material.brittle.fracture_toughness_MPa_sqrt_m", kMPaSqrtM, "Pa m^0.5"},
+    {"depth_m", "cut.uncut_chip_thickness_um", units::kUm, "m"},
+    {"friction_angle_rad", "cut.friction_angle_deg", units::kDeg, ""}};
+
+constexpr char kFracture[] = "fracture";
 
 /// Above l the shear angle, chip, state and edge details are the layer's.
 void predict_transition_forces(const AnalyticScene& scene, const OxleyResult* oxley, Prediction& p) {
@@ -38,8 +53,10 @@ void predict_transition_forces(const AnalyticScene& scene, const OxleyResult* ox
   }
   details.layer = {p.cutting_force_N / scene.width_m, p.thrust_force_N / scene.width_m};
   const BrittleProperties brittle = brittle_properties(*scene.material, "material");
-  details.fracture = fracture_force_per_width(scene.transition, brittle.fracture_toughness_Pa_sqrt_m, depth, layer,
-                                              scene.rake_rad, p.friction_angle_rad);
+  details.fracture = naming_scene_keys(kSceneKeys, [&] {
+    return fracture_force_per_width(scene.transition, brittle.fracture_toughness_Pa_sqrt_m, depth, layer,
+                                    scene.rake_rad, p.friction_angle_rad);
+  });
   if (details.fracture.cutting_N_per_m > details.layer.cutting_N_per_m) {
     p.warnings.push_back("the fracture part (zeta K_c sqrt(h) scaling) carries most of the force: on Yang et al. "
                          "2018's soda-lime cuts at 0.1-0.2 mm it is 15-20 times the measured force "
@@ -74,6 +91,14 @@ void print_transition(std::FILE* text, const AnalyticScene& scene, const Predict
 }
 
 }  // namespace
+
+const FieldTable<TransitionParams>& transition_model_fields() {
+  static const FieldTable<TransitionParams> table{model_choice<TransitionParams, FractureModel, kFracture>(
+      "the fracture part of models.force = transition above the ductile layer: the LEFM scratch scaling "
+      "zeta K_c sqrt(h) (Huang & Detournay 2008, Akono & Ulm 2011), or none (the edge's ductile layer alone)",
+      [](auto& s) -> auto& { return s.fracture; })};
+  return table;
+}
 
 const FieldTable<TransitionParams>& transition_fields() {
   static const FieldTable<TransitionParams> table{

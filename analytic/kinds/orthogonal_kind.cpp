@@ -1,10 +1,12 @@
-// The orthogonal-cutting scene kind (models.force merchant, liu_li, oxley or auto): scene.hpp parses it,
+// The orthogonal-cutting scene kind (models.force merchant, liu_li, oxley, transition or auto): scene.hpp parses it,
 // predict.hpp predicts it; this file puts it behind the AnalyticCase interface (evaluate.hpp) with its report.
 #include <fmt/format.h>
 
 #include <cmath>
 
+#include "kerf/analytic/forces/chip_term.hpp"
 #include "kerf/analytic/forces/critical_depth.hpp"
+#include "kerf/analytic/forces/oxley_model.hpp"
 #include "kerf/analytic/kinds/evaluate.hpp"
 #include "kerf/analytic/kinds/predict.hpp"
 #include "kerf/units.hpp"
@@ -12,29 +14,6 @@
 namespace kerf {
 
 namespace {
-
-/// The Liu-Li edge integral's lines and the ploughing part under the edge (the chip term's details).
-void print_edge_details(std::FILE* text, const AnalyticScene& scene, const Prediction& p) {
-  using units::m_to_um;
-  using units::rad_to_deg;
-  const auto& l = *p.liu_li;
-  fmt::print(
-      text, "edge integral     from {:.4g} deg to {:.4g} deg (stagnation {:.4g} deg{}); ploughed layer {:.6g} um\n",
-      rad_to_deg(l.lower_limit_rad), rad_to_deg(l.upper_limit_rad), rad_to_deg(l.stagnation_angle_rad),
-      l.pole_rad ? fmt::format(", pole {:.4g} deg", rad_to_deg(*l.pole_rad)) : "", m_to_um(l.ploughed_thickness_m));
-  fmt::print(text,
-             "edge part         cutting {:.6g} N, thrust {:.6g} N (the thrust depends strongly on the lower limit)\n",
-             l.edge.cutting_N_per_m * p.width_m, l.edge.thrust_N_per_m * p.width_m);
-  if (p.ploughing) {
-    const auto& w = *p.ploughing;
-    fmt::print(text, "ploughing part    cutting {:.6g} N, thrust {:.6g} N (wave model, f = {:.4g}, chord {:.6g} um at "
-               "{:.4g} deg)\n",
-               w.force.cutting_N_per_m * p.width_m, w.force.thrust_N_per_m * p.width_m, p.friction_factor,
-               m_to_um(w.chord_m), rad_to_deg(w.factors.attack_angle_rad));
-  } else {
-    fmt::print(text, "ploughing part    none (models.ploughing = {})\n", ploughing_model_name(scene.ploughing));
-  }
-}
 
 void print_prediction(std::FILE* text, const std::string& scene_path, const AnalyticScene& scene, const Prediction& p) {
   using units::m_to_mm;
@@ -56,12 +35,12 @@ void print_prediction(std::FILE* text, const std::string& scene_path, const Anal
   if (p.has_friction) {
     const bool own_friction = scene.force_model().solves_oxley;
     const bool from_scene = scene.friction_angle_rad && !own_friction &&
-                            std::fabs(*scene.friction_angle_rad - p.friction_angle_rad) <= 1e-9;
+                            std::fabs(*scene.friction_angle_rad - p.friction_angle_rad) <= kSameAngle_rad;
     fmt::print(text, "friction angle    {:.4g} deg (from {})\n", rad_to_deg(p.friction_angle_rad),
                own_friction ? "the extended-Oxley solution"
                : from_scene                             ? scene.friction_origin
                                                         : fmt::format("the {} friction closure at the nominal rake",
-                                                                      friction_closure_name(scene.liu_li.closure)));
+                                                                      friction_closure_name(scene.chip.liu_li.closure)));
   }
   fmt::print(text, "chip ratio        {:.4g} (chip thickness {:.6g} um)\n", p.chip_ratio, m_to_um(p.chip_thickness_m));
   if (scene.flow_stress.hardness) {
@@ -86,14 +65,9 @@ void print_prediction(std::FILE* text, const std::string& scene_path, const Anal
     if (length_m) fmt::print(text, "{:<17} {:.6g} mm\n", name, m_to_mm(*length_m));
     if (!length_m) fmt::print(text, "{:<17} not applicable (see the warnings)\n", name);
   }
-  if (p.liu_li) print_edge_details(text, scene, p);
+  print_edge_details(text, scene, p);                                         // chip_term.hpp
   if (scene.force_model().print) scene.force_model().print(text, scene, p);  // the model's own lines
-  if (p.oxley) {
-    fmt::print(text,
-               "oxley             C0 = {:.4g}, delta = {:.4g}, interface T = {:.5g} K, contact length {:.6g} mm\n",
-               p.oxley->strain_rate_constant_C0, p.oxley->delta, p.oxley->interface_temperature_K,
-               m_to_mm(p.oxley->contact_length_m));
-  }
+  print_oxley_details(text, p);                                               // oxley_model.hpp
   const auto fired = p.guards.fired();
   if (fired.empty()) fmt::print(text, "guards            none fired\n");
   for (auto guard : fired)

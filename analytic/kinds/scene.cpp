@@ -8,8 +8,11 @@
 #include <span>
 #include <tuple>
 
+#include "kerf/analytic/forces/chip_term.hpp"
 #include "kerf/analytic/forces/critical_depth.hpp"
+#include "kerf/analytic/forces/oxley_model.hpp"
 #include "kerf/analytic/forces/transition_model.hpp"
+#include "kerf/analytic/kinds/model_fields.hpp"
 #include "kerf/analytic/registry.hpp"
 #include "kerf/analytic/trepanning/trepanning_scene.hpp"
 #include "kerf/error.hpp"
@@ -33,53 +36,7 @@ std::shared_ptr<const MaterialRecord> MaterialCache::share(const Json& spec, con
 
 namespace {
 
-/// A number field whose SI value is reached through `at` (a member of a member): `[](auto& s) -> auto& {...}`.
-template <class S, class At>
-NumberField<S> number_at(std::string_view key, FieldUnit unit, Range range, std::string_view doc, At at,
-                         bool required = false) {
-  return {key, unit, range, doc, [at](const S& s) { return at(s); }, [at](S& s, double v) { at(s) = v; }, required, {}, {}};
-}
-
-/// A choice whose names map to an enum through `parse` (nullopt: a name the field handles by itself), the enum
-/// reached through `at`: the registry's names, the quadrature rules. The order of the names changes nothing.
-template <class S, class E, class At>
-ChoiceField<S> mapped_choice(std::string_view key, std::span<const std::string_view> names, std::string_view doc, At at,
-                             std::optional<E> (*parse)(std::string_view)) {
-  return {key, names, doc,
-          [=](const S& s) {
-            for (std::size_t k = 0; k < names.size(); ++k)
-              if (parse(names[k]) == at(s)) return static_cast<int>(k);
-            return 0;
-          },
-          [=](S& s, int k) { at(s) = *parse(names[static_cast<std::size_t>(k)]); }};
-}
-
-/// The enum value a registry line of `Kind` constructs.
-template <class E>
-std::optional<E> registered(std::string_view kind, std::string_view name) {
-  const auto id = registered_id(analytic_models(), kind, name);
-  return id ? std::optional<E>(static_cast<E>(*id)) : std::nullopt;
-}
-
-template <class E, const char* Kind>
-std::optional<E> registered_as(std::string_view name) {
-  return registered<E>(Kind, name);
-}
-
-constexpr char kDeformation[] = "deformation", kShearAngle[] = "shear_angle", kClosure[] = "friction_closure",
-               kLowerLimit[] = "lower_limit", kPloughing[] = "ploughing", kFracture[] = "fracture";
-
-template <class E, const char* Kind, class At>
-ChoiceField<AnalyticScene> model_choice(std::string_view doc, At at) {
-  return mapped_choice<AnalyticScene, E>(Kind, analytic_model_names(Kind), doc, at, &registered_as<E, Kind>);
-}
-
-std::optional<QuadratureRule> quadrature_rule(std::string_view name) { return quadrature_rule_from_name(name); }
-
-std::span<const std::string_view> quadrature_names() {
-  static const std::vector<std::string_view> names(quadrature_rule_names().begin(), quadrature_rule_names().end());
-  return names;
-}
+constexpr char kDeformation[] = "deformation", kShearAngle[] = "shear_angle";
 
 const FieldUnit kUmPerRev{"um/rev", units::um_to_m, units::m_to_um};
 const FieldUnit kMPerMin{"m/min", units::m_per_min_to_m_per_s, units::m_per_s_to_m_per_min};
@@ -228,63 +185,35 @@ NameListField<AnalyticScene> contact_length_field() {
           }};
 }
 
+/// The models section: the scene's own choices, then each model's keys from its unit's table (the chip term's, the
+/// transition model's, the Oxley solve's), then the contact lengths (read after contact_shear_angle, which they use).
 const FieldTable<AnalyticScene>& models_fields() {
-  static const FieldTable<AnalyticScene> table{
-      force_field(),
-      NameListField<AnalyticScene>{"flow_stress", analytic_model_names("flow_stress"), "the terms of Shao et al. 2013's Eq. 8 to add, or one "
-                                   "hardness term for a glass or ceramic (the default for a material with a hardness "
-                                   "and no johnson_cook group: hardness with its constraint factor, else hardness_marsh)",
-                                   [](const AnalyticScene& s) { return s.flow_stress_terms; },
-                                   [](AnalyticScene& s, const std::vector<std::string>& terms) { s.flow_stress_terms = terms; }},
-      model_choice<DeformationModel, kDeformation>(
-          "where the flow stress is evaluated: workpiece temperature with the shear-plane strain and Oxley's "
-          "strain-rate estimate (C0 = 5); the `cut` values; or zone AB of an extended-Oxley solve",
-          [](auto& s) -> auto& { return s.deformation; }),
-      model_choice<ShearAngleSource, kShearAngle>(
-          "nominal shear angle: MEP, MSSP or from `cut.chip_ratio` (the default when it is given); gives the chip "
-          "ratio for Liu-Li",
-          [](auto& s) -> auto& { return s.shear_angle; }),
-      model_choice<FrictionClosure, kClosure>(
-          "beta_k along the edge (Liu-Li); its value at the nominal rake is the prediction's one friction angle "
-          "(Merchant and Liu-Li: forces, stagnation angle, contact lengths, printed value); `constant` keeps the "
-          "scene's. With the chip ratio and a closure other than `constant`, no friction input is needed",
-          [](auto& s) -> auto& { return s.liu_li.closure; }),
-      model_choice<LowerLimitRule, kLowerLimit>(
-          "start of the edge integral (Liu-Li): the stagnation point -(pi/4 + beta/2), kept a margin above any "
-          "pole; or just above the pole (or -pi/2)",
-          [](auto& s) -> auto& { return s.liu_li.lower_limit; }),
-      model_choice<PloughingModel, kPloughing>(
-          "the force under the edge below the stagnation point (Liu-Li with an edge radius): the Challen-Oxley wave "
-          "model on the chord of the engaged arc, added to the chip term; `none`: no such force (0 N inside the "
-          "ploughed layer)",
-          [](auto& s) -> auto& { return s.ploughing; }),
-      model_choice<FractureModel, kFracture>(
-          "the fracture part of models.force = transition above the ductile layer: the LEFM scratch scaling "
-          "zeta K_c sqrt(h) (Huang & Detournay 2008, Akono & Ulm 2011), or none (the edge's ductile layer alone)",
-          [](auto& s) -> auto& { return s.transition.fracture; }),
-      number_at<AnalyticScene>("lower_limit_margin_deg", units::kDeg, Range::open(0.0, 45.0),
-                               "margin above the pole (and above -pi/2 for the Merchant closure, whose thrust diverges "
-                               "there)",
-                               [](auto& s) -> auto& { return s.liu_li.lower_limit_margin_rad; }),
-      number_at<AnalyticScene>("oxley_tolerance", units::kSi("(relative)"), Range::closed(1e-15, 1e-2),
-                               "relative tolerance of the extended-Oxley solver",
-                               [](auto& s) -> auto& { return s.oxley_options.tolerance; }),
-      choice_field("contact_shear_angle", kContactShearAngleNames,
-                   "shear angle (MEP or MSSP) of the contact-length names without a suffix",
-                   &AnalyticScene::contact_shear_angle),
-      contact_length_field()};
-  return table;
-}
-
-const FieldTable<QuadratureSettings>& quadrature_fields() {
-  static const FieldTable<QuadratureSettings> table{
-      mapped_choice<QuadratureSettings, QuadratureRule>("rule", quadrature_names(),
-                                                        "the rule (docs/performance.md: the cost and error of each)",
-                                                        [](auto& q) -> auto& { return q.rule; }, &quadrature_rule),
-      number_field("tolerance", units::kSi("(relative)"), Range::open(0.0, 1.0), "relative tolerance",
-                   &QuadratureSettings::relative_tolerance),
-      int_field("max_depth", 1, 20, "adaptive bisection depth (Boost) or 2^max_depth intervals (GSL)",
-                &QuadratureSettings::max_depth)};
+  static const FieldTable<AnalyticScene> table = [] {
+    FieldTable<AnalyticScene> out{
+        force_field(),
+        NameListField<AnalyticScene>{"flow_stress", analytic_model_names("flow_stress"), "the terms of Shao et al. 2013's Eq. 8 to add, or one "
+                                     "hardness term for a glass or ceramic (the default for a material with a hardness "
+                                     "and no johnson_cook group: hardness with its constraint factor, else hardness_marsh)",
+                                     [](const AnalyticScene& s) { return s.flow_stress_terms; },
+                                     [](AnalyticScene& s, const std::vector<std::string>& terms) { s.flow_stress_terms = terms; }},
+        model_choice<AnalyticScene, DeformationModel, kDeformation>(
+            "where the flow stress is evaluated: workpiece temperature with the shear-plane strain and Oxley's "
+            "strain-rate estimate (C0 = 5); the `cut` values; or zone AB of an extended-Oxley solve",
+            [](auto& s) -> auto& { return s.deformation; }),
+        model_choice<AnalyticScene, ShearAngleSource, kShearAngle>(
+            "nominal shear angle: MEP, MSSP or from `cut.chip_ratio` (the default when it is given); gives the chip "
+            "ratio for Liu-Li",
+            [](auto& s) -> auto& { return s.shear_angle; })};
+    for (const auto& models : {embedded_fields(chip_term_fields(), &AnalyticScene::chip),
+                               embedded_fields(transition_model_fields(), &AnalyticScene::transition),
+                               embedded_fields(oxley_model_fields(), &AnalyticScene::oxley)})
+      out.insert(out.end(), models.begin(), models.end());
+    out.push_back(choice_field("contact_shear_angle", kContactShearAngleNames,
+                               "shear angle (MEP or MSSP) of the contact-length names without a suffix",
+                               &AnalyticScene::contact_shear_angle));
+    out.push_back(contact_length_field());
+    return out;
+  }();
   return table;
 }
 
@@ -427,7 +356,7 @@ void read_models(ObjectReader& root, AnalyticScene& scene) {
   scene.flow_stress_named = models.has("flow_stress");
   read_fields_into(models, models_fields(), scene, SiCheck::on);
   if (auto quadrature = models.find_object("quadrature")) {
-    read_fields_into(*quadrature, quadrature_fields(), scene.liu_li.quadrature, SiCheck::on);
+    read_fields_into(*quadrature, quadrature_fields(), scene.chip.liu_li.quadrature, SiCheck::on);
     quadrature->finish();
   }
   if (auto transition = models.find_object("transition")) {
@@ -465,7 +394,7 @@ void resolve_force_model(AnalyticScene& scene) {
   // other than the constant one gives beta (which then also sets the stagnation angle and contact lengths).
   const bool needs_friction =
       !solves_oxley &&
-      (scene.shear_angle != ShearAngleSource::chip_ratio || scene.liu_li.closure == FrictionClosure::constant);
+      (scene.shear_angle != ShearAngleSource::chip_ratio || scene.chip.liu_li.closure == FrictionClosure::constant);
   if (needs_friction && !scene.friction_angle_rad) {
     throw InputError("cut.friction_angle_deg", "(missing)",
                      "a friction angle (or cut.friction_coefficient, or measured.cutting_force_N and "
@@ -474,7 +403,7 @@ void resolve_force_model(AnalyticScene& scene) {
   if (scene.shear_angle == ShearAngleSource::chip_ratio && !scene.chip_ratio) {
     throw InputError("cut.chip_ratio", "(missing)", "a chip ratio t0/t_chip for models.shear_angle = chip_ratio");
   }
-  scene.liu_li.friction_angle_rad = scene.friction_angle_rad.value_or(0.0);
+  scene.chip.liu_li.friction_angle_rad = scene.friction_angle_rad.value_or(0.0);
 }
 
 /// The flow-stress terms named (and the Johnson-Cook law Oxley needs), from the material; the workpiece
@@ -546,7 +475,7 @@ void resolve_deformation(const MaterialRecord& record, const CutKeys& keys, Anal
                      "johnson_cook alone with models.force = oxley (Oxley's solution uses the Johnson-Cook law; "
                      "use force merchant or liu_li with deformation oxley to add microstructure terms)");
   }
-  if (uses_oxley) scene.oxley = oxley_params_from_material(record, "material", scene.flow_stress.policy);
+  if (uses_oxley) scene.oxley.material = oxley_params_from_material(record, "material", scene.flow_stress.policy);
 }
 
 }  // namespace

@@ -75,10 +75,11 @@ ImpliedTrepanningMaterial implied_trepanning_material(const TrepanningGroups& gr
 
 void check_feed_plausible(const TrepanningTool& tool, const TrepanningCut& cut) {
   // Plausibility: the abrasive face cannot advance by more than its own wall width (D - d) / 2 per turn; the
-  // model's grits would then cut far deeper than any grit protrudes (docs/models.md, plausibility guards).
+  // model's grits would then cut far deeper than any grit protrudes (docs/models.md, plausibility guards). The cut's
+  // own keys are named (TrepanningCut::validate's); the scene adds its section.
   const double wall_m = 0.5 * (tool.outer_diameter_m - tool.inner_diameter_m);
   if (!std::isfinite(cut.feed_per_rev_m())) {  // a spindle speed so small that feed / speed overflows
-    throw InputError("cut.spindle_speed_rpm", format_value(cut.spindle_speed_rev_per_s * 60.0),
+    throw InputError("spindle_speed_rpm", format_value(cut.spindle_speed_rev_per_s * 60.0),
                      fmt::format("a spindle speed at which the feed per revolution is finite: at a feed of {} um/s "
                                  "it must be at least {:.6g} rpm for a feed per revolution below the cutter's wall "
                                  "width (D - d)/2 = {:.6g} um",
@@ -86,7 +87,7 @@ void check_feed_plausible(const TrepanningTool& tool, const TrepanningCut& cut) 
                                  60.0 * cut.feed_rate_m_per_s / wall_m, units::m_to_um(wall_m)));
   }
   if (cut.feed_per_rev_m() > wall_m) {
-    throw InputError("cut.feed_rate_um_per_s", format_value(units::m_to_um(cut.feed_rate_m_per_s)),
+    throw InputError("feed_rate_um_per_s", format_value(units::m_to_um(cut.feed_rate_m_per_s)),
                      fmt::format("a feed per revolution below the cutter's wall width (D - d)/2 = {:.6g} um; it gives "
                                  "{:.6g} um/rev at {:.6g} rpm",
                                  units::m_to_um(wall_m), units::m_to_um(cut.feed_per_rev_m()),
@@ -104,8 +105,8 @@ TrepanningForces trepanning_forces(const TrepanningTool& tool, const TrepanningC
   for (const auto& [name, value] : {std::pair<const char*, double>{"axial_force_N", forces.axial_force_N},
                                     {"torque_N_m", forces.torque_N_m}, {"feed_per_rev_um", forces.feed_per_rev_m}}) {
     if (!std::isfinite(value) || (value == 0.0 && cut.feed_rate_m_per_s > 0.0)) {
-      throw ModelError("trepanning", fmt::format("{} is {} for cut.feed_rate_um_per_s = {}, cut.spindle_speed_rpm = {}: "
-                                                 "the inputs lie beyond what a double holds",
+      throw ModelError("trepanning", fmt::format("{} is {} for a feed rate of {} um/s at {} rpm: the inputs lie "
+                                                 "beyond what a double holds",
                                                  name, value, format_value(units::m_to_um(cut.feed_rate_m_per_s)),
                                                  format_value(cut.spindle_speed_rev_per_s * 60.0)));
     }

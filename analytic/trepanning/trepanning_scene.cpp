@@ -118,7 +118,7 @@ TrepanningScene parse_trepanning_scene(const Json& document, MaterialCache* cach
   read_fields_into(cut, cut_fields(), scene.cut, SiCheck::on);
   cut.finish();
   scene.cut.validate("cut");
-  check_feed_plausible(scene.tool, scene.cut);
+  with_path("cut", [&] { check_feed_plausible(scene.tool, scene.cut); });
 
   ObjectReader models = root.get_object("models");
   models.get("force");  // required (an error naming it when missing); read with its table

@@ -227,8 +227,14 @@ FieldTable<S> fields_through(const FieldTable<B>& table, Part part, const FieldT
             g.key = f.key, g.lo = f.lo, g.hi = f.hi, g.doc = f.doc;
             g.get = [get = f.get, part](const S& s) { return get(part(s)); };
             g.set = [set = f.set, part](S& s, int v) { set(part(s), v); };
+          } else if constexpr (std::is_same_v<F, ChoiceField<B>>) {
+            auto& g = std::get<ChoiceField<S>>(out.emplace_back(std::in_place_type<ChoiceField<S>>));
+            g.key = f.key, g.names = f.names, g.doc = f.doc;
+            g.get = [get = f.get, part](const S& s) { return get(part(s)); };
+            g.set = [set = f.set, part](S& s, int v) { set(part(s), v); };
           } else {
-            throw std::logic_error(std::string(who) + ": number and integer fields only (" + std::string(f.key) + ")");
+            throw std::logic_error(std::string(who) + ": number, integer and choice fields only (" +
+                                   std::string(f.key) + ")");
           }
         },
         field);
@@ -239,8 +245,8 @@ FieldTable<S> fields_through(const FieldTable<B>& table, Part part, const FieldT
 }  // namespace detail
 
 /// The fields of a member struct (`member` of S, of type B, with its own table) as fields of S: one table
-/// written once and embedded in each struct that holds it (the bond laws' BondStiffnessStrength). Number and
-/// integer fields; then `own`, the fields S holds itself.
+/// written once and embedded in each struct that holds it (the bond laws' BondStiffnessStrength, an analytic
+/// model's parameters in its scene). Number, integer and choice fields; then `own`, the fields S holds itself.
 template <class S, class B>
 FieldTable<S> embedded_fields(const FieldTable<B>& table, B S::*member, const FieldTable<S>& own = {}) {
   return detail::fields_through(table, [member](auto& s) -> auto& { return s.*member; }, own, "embedded_fields");

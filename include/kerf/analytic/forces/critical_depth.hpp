@@ -51,8 +51,8 @@ struct RegimeBand {
   void validate(const std::string& path) const;
 };
 
-/// Classifies a depth of cut (or per-grit depth) against d_c. InputError for a negative or non-finite depth
-/// (field "cut.depth_um") or a non-positive d_c.
+/// Classifies a depth of cut (or per-grit depth) against d_c. InputError, naming its own field, for a negative or
+/// non-finite depth (depth_m) or a non-positive d_c (critical_depth_m).
 CuttingRegime classify_regime(double depth_m, double critical_depth_m, const RegimeBand& band = {});
 
 }  // namespace kerf

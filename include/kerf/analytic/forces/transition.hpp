@@ -35,8 +35,8 @@ inline constexpr double kAkonoUlmZeta = 1.4142135623730951;
 
 struct TransitionParams {
   FractureModel fracture = FractureModel::lefm_scratch;  ///< models.fracture
-  double layer_factor = 1.0;        ///< lambda = l / d_c > 0 (models.transition.ductile_layer_factor)
-  double fracture_coefficient = kAkonoUlmZeta;  ///< zeta >= 0 (models.transition.fracture_coefficient)
+  double layer_factor = 1.0;        ///< lambda = l / d_c > 0 (its key: ductile_layer_factor)
+  double fracture_coefficient = kAkonoUlmZeta;  ///< zeta >= 0 (its key: fracture_coefficient)
 
   void validate(const std::string& path) const;
 };
@@ -45,8 +45,9 @@ struct TransitionParams {
 double ductile_layer_m(const TransitionParams& params, double critical_depth_m);
 
 /// The fracture part per unit width (N/m): zero at and below the layer; rake alpha and friction angle beta in rad.
-/// InputError for a negative toughness or depth, or a rake and friction with beta - alpha outside (-pi/2, pi/2) (a
-/// rake above the friction angle gives a negative thrust, as Merchant's circle does).
+/// InputError, naming its own field (params.*, fracture_toughness_Pa_sqrt_m, depth_m, friction_angle_rad), for
+/// parameters out of range, a toughness <= 0, a negative depth, or a rake and friction with beta - alpha outside
+/// (-pi/2, pi/2) (a rake above the friction angle gives a negative thrust, as Merchant's circle does).
 ForcePerWidth fracture_force_per_width(const TransitionParams& params, double fracture_toughness_Pa_sqrt_m,
                                        double depth_m, double layer_m, double rake_rad, double friction_angle_rad);
 

@@ -21,8 +21,9 @@ struct TransitionDetails {
 
 extern const OrthogonalForceModel transition_force_model;
 
-/// Its parameters' field table, the object models.transition (models.fracture, a choice among the registry's
-/// fracture lines, is read with the models section): the scene reads it, and `kerf-forces keys` lists it.
+/// Its parameters' field tables: its key among the scene's `models` (fracture, a choice among the registry's
+/// fracture lines) and the object models.transition. The scene reads them, and `kerf-forces keys` lists them.
+const FieldTable<TransitionParams>& transition_model_fields();
 const FieldTable<TransitionParams>& transition_fields();
 
 /// The details of a transition prediction; nullptr for a prediction of another model (or none yet).

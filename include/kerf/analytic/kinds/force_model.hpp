@@ -42,8 +42,17 @@ struct OrthogonalForceModel {
   void (*print)(std::FILE* text, const AnalyticScene& scene, const Prediction& p) = nullptr;
 };
 
-/// The chip term of the Liu-Li integral that Merchant (its r = 0 limit, `sharp`), Liu-Li and the transition model
-/// share, plus the wave model's ploughing term under a rounded edge (kinds/predict.cpp).
-void predict_chip_forces(const AnalyticScene& scene, const OxleyResult* oxley, bool sharp, Prediction& p);
+// What the units share (kinds/predict.cpp); the chip term that Merchant, Liu-Li and the transition model share is a
+// unit of its own (forces/chip_term.hpp).
+
+/// Two friction angles closer than this are the same (rounding of the closures' identities).
+inline constexpr double kSameAngle_rad = 1e-9;
+
+/// Contact lengths (Berezvai et al. 2019, Eqs. 1-4) of the scene's requests with the prediction's own friction angle.
+/// A variant outside its domain is not applicable: its cell stays empty, the guard and a warning say why.
+void add_contact_lengths(const AnalyticScene& scene, double friction_angle_rad, Prediction& p);
+/// The sharp-tool models (Merchant, Oxley) ignore the edge: a warning, with `model_and_remedy`, when it is not small
+/// against t0.
+void warn_if_edge_ignored(const AnalyticScene& scene, const char* model_and_remedy, Prediction& p);
 
 }  // namespace kerf

@@ -12,21 +12,13 @@
 
 #include "kerf/analytic/flow_stress/flow_stress.hpp"
 #include "kerf/analytic/forces/liu_li.hpp"
+#include "kerf/analytic/forces/oxley_model.hpp"
 #include "kerf/analytic/forces/ploughing.hpp"
 #include "kerf/analytic/guards.hpp"
 #include "kerf/analytic/kinds/cells.hpp"
 #include "kerf/analytic/kinds/scene.hpp"
 
 namespace kerf {
-
-struct OxleyDetails {
-  double strain_rate_constant_C0 = 0.0;
-  double delta = 0.0;
-  double interface_temperature_K = 0.0;
-  double contact_length_m = 0.0;
-  double residual = 0.0;  ///< the larger relative residual of the two Oxley conditions
-  int shear_angle_roots = 0;  ///< branches found; the minimum-force one is reported
-};
 
 struct Prediction {
   std::string_view force_model;  ///< the name of the force model that ran (its registry line's)
@@ -45,12 +37,13 @@ struct Prediction {
   FlowStress flow;
   /// (column, value); no value where the model is not applicable (Guard::contact_length_not_applicable)
   std::vector<std::pair<std::string, std::optional<double>>> contact_lengths_m;
+  // The chip term's details (forces/chip_term.hpp: merchant, liu_li and the transition model's layer share it)
   std::optional<LiuLiResult> liu_li;  ///< the chip term (its total is the chip force alone)
   /// The ploughing term under the edge (models.ploughing = wave with force liu_li and an edge radius): added to
   /// the chip term in cutting_force_N and thrust_force_N.
   std::optional<EdgePloughingResult> ploughing;
   double friction_factor = 0.0;  ///< the ploughing model's f (given, or sin(2 beta))
-  std::optional<OxleyDetails> oxley;
+  std::optional<OxleyDetails> oxley;  ///< the Oxley solve's (forces/oxley_model.hpp: force or deformation oxley)
   /// The force model's own details (its unit's write_cells and print read them: kinds/force_model.hpp).
   std::any details;
   std::string regime;  ///< "ductile", "transition" or "brittle" against the critical depth; empty without one
@@ -60,10 +53,6 @@ struct Prediction {
   Guards guards;
   std::vector<std::string> warnings;
 };
-
-/// The built-in force models of this file, named by their registry lines (the transition model's unit is its own:
-/// forces/transition_model.hpp).
-extern const OrthogonalForceModel merchant_force_model, liu_li_force_model, oxley_force_model, auto_force_model;
 
 /// Throws InputError for input the models cannot accept and ModelError when a solver fails.
 Prediction predict(const AnalyticScene& scene);

@@ -18,12 +18,11 @@
 
 #include "kerf/analytic/flow_stress/flow_stress.hpp"
 #include "kerf/analytic/flow_stress/thermal.hpp"
+#include "kerf/analytic/forces/chip_term.hpp"
 #include "kerf/analytic/forces/contact_length.hpp"
-#include "kerf/analytic/forces/liu_li.hpp"
-#include "kerf/analytic/forces/oxley.hpp"
-#include "kerf/analytic/forces/ploughing.hpp"
+#include "kerf/analytic/forces/oxley_model.hpp"
 #include "kerf/analytic/forces/shear_angle.hpp"
-#include "kerf/analytic/forces/transition.hpp"
+#include "kerf/analytic/forces/transition_model.hpp"
 #include "kerf/analytic/kinds/force_model.hpp"
 #include "kerf/analytic/kinds/material_models.hpp"
 #include "kerf/analytic/kinds/round_nose.hpp"
@@ -85,18 +84,17 @@ struct AnalyticScene {
   bool flow_stress_named = false;  ///< the scene named models.flow_stress (else a glass takes its hardness term)
   DeformationModel deformation = DeformationModel::room_temperature;
   ShearAngleSource shear_angle = ShearAngleSource::merchant;
-  LiuLiParams liu_li;  ///< closure, lower limit, margin, quadrature (geometry filled at prediction)
-  PloughingModel ploughing = PloughingModel::wave;  ///< the force under the edge below the stagnation point
-  TransitionParams transition;  ///< models.force = transition: the ductile layer and the fracture part
   ShearAngleModel contact_shear_angle = ShearAngleModel::merchant;  ///< of contact-length names without a suffix
   std::vector<ContactLengthRequest> contact_lengths;
 
   /// Bifano's ductile-brittle critical depth, when the material has E, hardness and toughness.
   std::optional<double> critical_depth_m;
 
-  // Extended Oxley (filled when force or deformation is 'oxley')
-  std::optional<OxleyParams> oxley;
-  OxleySolverOptions oxley_options;
+  // The models' own parameters: each declared by its unit, read through its unit's field table (kinds/scene.cpp
+  // composes the `models` section of them) and validated there, once.
+  ChipTermParams chip;          ///< forces/chip_term.hpp: merchant, liu_li, the transition's layer (closure, ploughing)
+  TransitionParams transition;  ///< forces/transition_model.hpp: the ductile layer and the fracture part
+  OxleyModelParams oxley;       ///< forces/oxley_model.hpp: force or deformation oxley (the material's groups then)
 
   /// The force model of `force`'s line (kinds/force_model.hpp).
   const OrthogonalForceModel& force_model() const;

@@ -97,8 +97,9 @@ struct TrepanningForces {
   double feed_per_rev_m = 0.0; ///< f, Eq. 7
 };
 
-/// Plausibility guard: throws InputError (cut.feed_rate_um_per_s) when the feed per revolution exceeds the cutter's
-/// wall width (D - d) / 2. A trepanning scene applies it when read.
+/// Plausibility guard: throws InputError on the cut's own key (feed_rate_um_per_s; spindle_speed_rpm where the feed
+/// per revolution overflows) when the feed per revolution exceeds the cutter's wall width (D - d) / 2. A trepanning
+/// scene applies it when read, adding its section (`cut.`).
 void check_feed_plausible(const TrepanningTool& tool, const TrepanningCut& cut);
 
 /// Eqs. 21-22 from the lumped groups. Inputs are validated (InputError names tool.*, cut.*, groups.*).

@@ -1,0 +1,44 @@
+#pragma once
+// models.force = merchant and liu_li as units of the orthogonal kind (kinds/force_model.hpp): the chip term of the
+// Liu-Li integral (forces/liu_li.hpp, the physics; Merchant is its r = 0 limit) plus the wave model's ploughing term
+// under a rounded edge (forces/ploughing.hpp), which the transition model runs for its ductile layer. The unit owns
+// their parameters (the friction closure, the lower limit, the ploughing model, models.quadrature) with their field
+// tables, the edge's details (Prediction::liu_li, ploughing, friction_factor), its CSV columns and report lines.
+// Their registry lines: analytic/registry.cpp.
+//
+//   kerf::Prediction p = kerf::predict(scene);            // scene.force_model() == liu_li_force_model
+//   double h_s = p.liu_li->ploughed_thickness_m;
+#include <cstdio>
+
+#include "kerf/analytic/forces/liu_li.hpp"
+#include "kerf/analytic/forces/ploughing.hpp"
+#include "kerf/analytic/forces/quadrature.hpp"
+#include "kerf/analytic/kinds/force_model.hpp"
+#include "kerf/field_table.hpp"
+
+namespace kerf {
+
+/// The chip term's parameters in a scene.
+struct ChipTermParams {
+  LiuLiParams liu_li;  ///< closure, lower limit, margin and quadrature (the geometry is filled at each prediction)
+  PloughingModel ploughing = PloughingModel::wave;  ///< the force under the edge below the stagnation point
+};
+
+/// Its keys among the scene's `models` (friction_closure, lower_limit, ploughing, lower_limit_margin_deg) and the
+/// object models.quadrature: the scene reads them, and `kerf-forces keys` lists them.
+const FieldTable<ChipTermParams>& chip_term_fields();
+const FieldTable<QuadratureSettings>& quadrature_fields();
+
+extern const OrthogonalForceModel merchant_force_model, liu_li_force_model;
+
+/// The chip term the Merchant, Liu-Li and transition units share, with the ploughing term under a rounded edge;
+/// `sharp`: Merchant, the r = 0 limit, without the edge's details.
+void predict_chip_forces(const AnalyticScene& scene, const OxleyResult* oxley, bool sharp, Prediction& p);
+
+/// The edge integral's and the ploughing term's CSV columns (empty cells where the prediction has no edge): the kind
+/// writes them for a model that carries them (OrthogonalForceModel::edge_columns) and under `auto`.
+void write_edge_cells(const AnalyticScene& scene, const Prediction& p, CellWriter& w);
+/// The edge integral's lines and the ploughing part's of the text report, where the prediction has an edge.
+void print_edge_details(std::FILE* text, const AnalyticScene& scene, const Prediction& p);
+
+}  // namespace kerf

@@ -1,0 +1,56 @@
+#pragma once
+// models.force = oxley as a unit of the orthogonal kind (kinds/force_model.hpp), and the extended-Oxley solve a scene
+// asks for (force oxley, or deformation oxley under another force model): the solve (forces/oxley.hpp, the physics)
+// as a force model, its parameters and their field table, its details, its CSV columns and its report line. Its
+// registry line: analytic/registry.cpp.
+//
+//   kerf::Prediction p = kerf::predict(scene);            // scene.force_model() == oxley_force_model
+//   if (p.oxley) fmt::print("C0 = {}\n", p.oxley->strain_rate_constant_C0);
+#include <cstdio>
+#include <optional>
+
+#include "kerf/analytic/flow_stress/flow_stress.hpp"
+#include "kerf/analytic/forces/oxley.hpp"
+#include "kerf/analytic/kinds/force_model.hpp"
+#include "kerf/field_table.hpp"
+
+namespace kerf {
+
+/// A scene's Oxley parameters.
+struct OxleyModelParams {
+  /// The material's johnson_cook, thermal and oxley groups: read by the scene where its force or deformation model
+  /// solves Oxley (none: the scene solves none).
+  std::optional<OxleyParams> material;
+  OxleySolverOptions solver;  ///< models.oxley_tolerance; the search ranges are the solver's own
+};
+
+/// Its keys among the scene's `models` (oxley_tolerance): the scene reads them, and `kerf-forces keys` lists them.
+const FieldTable<OxleyModelParams>& oxley_model_fields();
+
+/// What a prediction keeps of the solve (Prediction::oxley): under force oxley and deformation oxley alike.
+struct OxleyDetails {
+  double strain_rate_constant_C0 = 0.0;
+  double delta = 0.0;
+  double interface_temperature_K = 0.0;
+  double contact_length_m = 0.0;
+  double residual = 0.0;  ///< the larger relative residual of the two Oxley conditions
+  int shear_angle_roots = 0;  ///< branches found; the minimum-force one is reported
+};
+
+extern const OrthogonalForceModel oxley_force_model;
+
+/// The extended-Oxley solve (sharp tool at t0) where the scene's force or deformation model needs it: its details,
+/// guards and a warning for several branches go into `p`; nullopt where the scene asked for none. An input the
+/// solver refuses names the scene's key; a solve without a physical solution is a ModelError.
+std::optional<OxleyResult> solve_scene_oxley(const AnalyticScene& scene, Prediction& p);
+
+/// The zone-AB state of a solve: where deformation oxley evaluates the flow stress.
+DeformationState shear_plane_state_of(const OxleyResult& oxley);
+
+/// The solve's CSV columns (empty cells where the prediction has none): the kind writes them where the scene
+/// solves Oxley or chooses its force model point by point.
+void write_oxley_cells(const Prediction& p, CellWriter& w);
+/// Its line of the text report, where the prediction has a solve.
+void print_oxley_details(std::FILE* text, const Prediction& p);
+
+}  // namespace kerf
