@@ -124,9 +124,9 @@ TEST_CASE("edge zone: the books balance, the tool's work on the layer its force 
   // steady part, which starts after its first sample); it enters the books with the walls' work, and the reaction's
   // work on the disks is part of what the disks received. The disks the edge removes take their energy with them
   // (as a crushed grain's), so the books balance as today's windowed cut does, to rounding. (On this unbreakable
-  // block, compressed as a whole by the tool, the dissipation the books find is a few per cent of the work: the
-  // integrator's error after the sudden release of the removed disks' joints, which the crushing of a disk shows
-  // alike; a fracturing glass holds far less.)
+  // block, compressed as a whole by the tool, the dissipation the books find is 4.5-9.6 % of the work: the
+  // integrator's error after the sudden release of the removed disks' joints; docs/notes/
+  // 2026-12-06-toughness-damping-and-edge.md, item 4.)
   CutParams p = zone_cut();
   p.tool_friction_coefficient = 0;
   const Simulation block = hex_workpiece(conservative_material(), 0.6e-3, 0.25e-3);
