@@ -106,29 +106,34 @@ std::vector<Simulation::WallContactLoad> Simulation::wall_contact_loads() const 
   return loads;
 }
 
-std::vector<std::uint8_t> Simulation::tied_to_held(std::span<const std::uint8_t> excluded) const {
-  const auto out = [&](std::size_t u) { return u < excluded.size() && excluded[u] != 0; };
-  // The joints with a bonded element per disk (CSR), each under both its disks.
-  std::vector<std::size_t> start(p_.size() + 1, 0);
+Simulation::JointGraph Simulation::intact_joint_graph() const {
+  JointGraph g;
+  g.start.assign(p_.size() + 1, 0);
   for (std::size_t b = 0; b < b_.size(); ++b)
     if (b_.active[b] && b_.n_bonded_elements(b) > 0)
-      ++start[static_cast<std::size_t>(b_.i[b]) + 1], ++start[static_cast<std::size_t>(b_.j[b]) + 1];
-  for (std::size_t u = 0; u < p_.size(); ++u) start[u + 1] += start[u];
-  std::vector<std::int32_t> other(start.back());
-  std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+      ++g.start[static_cast<std::size_t>(b_.i[b]) + 1], ++g.start[static_cast<std::size_t>(b_.j[b]) + 1];
+  for (std::size_t u = 0; u < p_.size(); ++u) g.start[u + 1] += g.start[u];
+  g.other.resize(g.start.back());
+  std::vector<std::size_t> fill(g.start.begin(), g.start.end() - 1);
   for (std::size_t b = 0; b < b_.size(); ++b)
     if (b_.active[b] && b_.n_bonded_elements(b) > 0) {
-      other[fill[static_cast<std::size_t>(b_.i[b])]++] = b_.j[b];
-      other[fill[static_cast<std::size_t>(b_.j[b])]++] = b_.i[b];
+      g.other[fill[static_cast<std::size_t>(b_.i[b])]++] = static_cast<std::size_t>(b_.j[b]);
+      g.other[fill[static_cast<std::size_t>(b_.j[b])]++] = static_cast<std::size_t>(b_.i[b]);
     }
+  return g;
+}
+
+std::vector<std::uint8_t> Simulation::tied_to_held(std::span<const std::uint8_t> excluded) const {
+  const auto out = [&](std::size_t u) { return u < excluded.size() && excluded[u] != 0; };
+  const JointGraph g = intact_joint_graph();
   // Breadth-first from every held disk.
   std::vector<std::uint8_t> tied(p_.size(), 0);
   std::vector<std::size_t> queue;
   for (std::size_t u = 0; u < p_.size(); ++u)
     if (p_.group[u] != 0 && !out(u)) tied[u] = 1, queue.push_back(u);
   for (std::size_t head = 0; head < queue.size(); ++head)
-    for (std::size_t k = start[queue[head]]; k < start[queue[head] + 1]; ++k) {
-      const auto v = static_cast<std::size_t>(other[k]);
+    for (std::size_t k = g.start[queue[head]]; k < g.start[queue[head] + 1]; ++k) {
+      const auto v = g.other[k];
       if (!tied[v] && !out(v)) tied[v] = 1, queue.push_back(v);
     }
   return tied;

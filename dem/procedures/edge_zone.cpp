@@ -22,21 +22,7 @@ namespace {
 class LocalTies {
  public:
   LocalTies(const Simulation& sim, double y_cut_m, double bulk_depth_m)
-      : p_(sim.particles()), y_bulk_m_(y_cut_m - bulk_depth_m), known_(p_.size(), 0) {
-    const BondStore& b = sim.bonds();
-    start_.assign(p_.size() + 1, 0);
-    for (std::size_t k = 0; k < b.size(); ++k)
-      if (b.active[k] && b.n_bonded_elements(k) > 0)
-        ++start_[static_cast<std::size_t>(b.i[k]) + 1], ++start_[static_cast<std::size_t>(b.j[k]) + 1];
-    for (std::size_t u = 0; u < p_.size(); ++u) start_[u + 1] += start_[u];
-    other_.resize(start_.back());
-    std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
-    for (std::size_t k = 0; k < b.size(); ++k)
-      if (b.active[k] && b.n_bonded_elements(k) > 0) {
-        other_[fill[static_cast<std::size_t>(b.i[k])]++] = static_cast<std::size_t>(b.j[k]);
-        other_[fill[static_cast<std::size_t>(b.j[k])]++] = static_cast<std::size_t>(b.i[k]);
-      }
-  }
+      : p_(sim.particles()), y_bulk_m_(y_cut_m - bulk_depth_m), known_(p_.size(), 0), g_(sim.intact_joint_graph()) {}
 
   bool tied(std::size_t start) {
     if (known_[start] == 0) {
@@ -49,8 +35,8 @@ class LocalTies {
           bulk = true;
           break;
         }
-        for (std::size_t k = start_[u]; k < start_[u + 1]; ++k) {
-          const std::size_t v = other_[k];
+        for (std::size_t k = g_.start[u]; k < g_.start[u + 1]; ++k) {
+          const std::size_t v = g_.other[k];
           if (known_[v] == 1) bulk = true;
           if (known_[v] != 0) continue;
           known_[v] = 3;
@@ -66,7 +52,7 @@ class LocalTies {
   const Particles& p_;
   double y_bulk_m_;
   std::vector<std::uint8_t> known_;
-  std::vector<std::size_t> start_, other_;
+  Simulation::JointGraph g_;
 };
 
 }  // namespace

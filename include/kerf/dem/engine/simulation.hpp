@@ -220,6 +220,11 @@ class Simulation {
   /// Per disk: 1 if a path of joints with a bonded element ties it to a held disk (group != 0), else 0. Disks with
   /// `excluded[u]` != 0 (when given: one flag per disk) are neither held nor on any path.
   std::vector<std::uint8_t> tied_to_held(std::span<const std::uint8_t> excluded = {}) const;
+  /// The joints with a bonded element, per disk (CSR): disk u's partners are other[start[u]] .. other[start[u+1]-1].
+  struct JointGraph {
+    std::vector<std::size_t> start, other;
+  };
+  JointGraph intact_joint_graph() const;
   /// Number of active joints and of touching unjointed contacts, per particle (mean coordination number).
   double coordination_number() const;
   int n_contacts_of(std::size_t i) const;
