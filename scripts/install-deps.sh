@@ -9,7 +9,7 @@
 set -euo pipefail
 packages=(build-essential cmake ninja-build pkg-config libeigen3-dev libgsl-dev libboost-dev libfmt-dev
   catch2 nlohmann-json3-dev libcli11-dev libplplot-dev plplot-driver-cairo python3
-  python3-dev python3-pybind11 python3-numpy python3-pytest python3-matplotlib
+  python3-dev python3-pybind11 python3-numpy python3-pil python3-pytest python3-matplotlib
   python3-venv python3-setuptools python3-wheel
   libopenmpi-dev openmpi-bin)
 vtk=(python3-vtk9 python3-paraview)  # either gives Python's vtk; the first is installed when neither is

@@ -173,19 +173,86 @@ void draw_markers(const Points& p, int marker, double radius_mm) {
   }
 }
 
-// Long (~120 lines) for a reason: one PLplot page drawn in the order PLplot's state machine needs (viewport, axes,
+/// PLplot's own choice of the major tick spacing and the labels' decimals on a linear axis (pldtik and pldprec in
+/// fixed form, which scale_by_a_power_of_ten leaves every axis in), so that the layout can make room for the
+/// labels before PLplot draws them: the spacing is then passed to plbox explicitly, the same as it would choose.
+struct AxisTicks {
+  double step = 1.0;
+  int subticks = 4;
+  int decimals = 0;
+};
+AxisTicks linear_ticks(double lo, double hi) {
+  double t1 = std::log10(std::fabs(hi - lo));
+  int np = static_cast<int>(std::floor(t1));
+  t1 -= np;
+  AxisTicks t;
+  double t2 = 2.0;
+  if (t1 > 0.7781512503) t2 = 2.0, t.subticks = 4;
+  else if (t1 > 0.4771212549) t2 = 1.0, t.subticks = 5;
+  else if (t1 > 0.1760912591) t2 = 5.0, t.subticks = 5, --np;
+  else t2 = 2.0, t.subticks = 4, --np;
+  t.step = t2 * std::pow(10.0, np);
+  t.decimals = std::max(-static_cast<int>(std::floor(std::log10(t.step))), 0);
+  return t;
+}
+
+/// The width of the widest tick label on [lo, hi], in character heights (digits 0.84, '.' 0.42, '-' 0.48: the
+/// advances of the cairo devices' sans font at PLplot's character height).
+double widest_tick_label(double lo, double hi, const AxisTicks& t) {
+  double widest = 0.0;
+  for (double k = std::ceil(lo / t.step - 1e-9); k <= std::floor(hi / t.step + 1e-9); k += 1.0) {
+    double width = 0.0;
+    for (char c : fmt::format("{:.{}f}", k * t.step, t.decimals)) width += c == '.' ? 0.42 : c == '-' ? 0.48 : 0.84;
+    widest = std::max(widest, width);
+  }
+  return widest;
+}
+
+/// A label's length in characters as drawn: UTF-8 code points, PLplot's #u and #d escapes left out.
+double drawn_length(const std::string& text) {
+  double n = 0.0;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '#' && i + 1 < text.size() && (text[i + 1] == 'u' || text[i + 1] == 'd')) ++i;
+    else if ((static_cast<unsigned char>(text[i]) & 0xC0) != 0x80) n += 1.0;
+  }
+  return n;
+}
+
+// Long (~140 lines) for a reason: one PLplot page drawn in the order PLplot's state machine needs (viewport, axes,
 // bands, series, error bars, legend); its pieces share that state rather than values.
 void draw(const FigureSpec& fig, const std::pair<double, double>& xr, const std::pair<double, double>& yr,
           const std::string& legend_where) {
   pladv(0);
   const bool legend_outside = fig.legend_position == "outside_right";
-  plvpor(0.12, legend_outside ? 0.62 : 0.96, 0.12, 0.91);
+  // Margins that hold every label inside the canvas (issue 55 item 4; tests/cli/figures_canvas.sh checks the
+  // canvas's edge), in character heights: the y axis title beyond its widest tick label, with room beyond it for a
+  // superscript ("strain (10^-6)"); the x axis title with room below it for a subscript ("a_c (mm)"); the last
+  // x tick label whole at the right edge.
+  PLFLT default_height = 0.0, char_mm = 0.0, page_x0 = 0.0, page_x1 = 0.0, page_y0 = 0.0, page_y1 = 0.0;
+  plgchr(&default_height, &char_mm);
+  plgspa(&page_x0, &page_x1, &page_y0, &page_y1);
+  const double page_w = (page_x1 - page_x0) / char_mm, page_h = (page_y1 - page_y0) / char_mm;  // in characters
+  const AxisTicks y_ticks = linear_ticks(yr.first, yr.second);
+  const double y_label_disp = std::max(4.6, 0.57 + widest_tick_label(yr.first, yr.second, y_ticks) + 1.15);
+  const double x_half_label = fig.x_log ? 1.0 : 0.5 * widest_tick_label(xr.first, xr.second, linear_ticks(xr.first, xr.second));
+  const double left = std::max(0.12, (y_label_disp + 1.25) / page_w);
+  // A legend beside the axes: 3 % and 7 % of the axes' width (its offset and its symbols' column), 2.56 characters of
+  // spacing and padding and 0.78 of a character per letter at the legend's size (0.8 of the axes'), within the canvas
+  // (but the axes at least a quarter of it wide).
+  double legend_letters = 0.0;
+  for (const auto& band : fig.bands) legend_letters = std::max(legend_letters, drawn_length(band.label));
+  for (const auto& s : fig.series) legend_letters = std::max(legend_letters, drawn_length(s.label));
+  const double legend_text = 0.8 * (2.56 + 0.78 * legend_letters) / page_w;
+  const double right = legend_outside ? std::clamp((0.995 + 0.1 * left - legend_text) / 1.1, left + 0.25, 0.62)
+                                      : std::min(0.96, 1.0 - (x_half_label + 0.25) / page_w);
+  const double bottom = std::max(0.12, (2.9 + 1.15 + 0.25) / page_h);
+  plvpor(left, right, bottom, 0.91);
   plwind(xr.first, xr.second, yr.first, yr.second);
 
   // Grid, then the bands, the data, and the frame on top.
   plcol0(kGrid);
   plwidth(1.0);
-  plbox(fig.x_log ? "gl" : "g", 0.0, 0, "g", 0.0, 0);
+  plbox(fig.x_log ? "gl" : "g", 0.0, 0, "g", y_ticks.step, y_ticks.subticks);
 
   for (const auto& band : fig.bands) {
     plcol0(band_index(band.color));
@@ -242,9 +309,9 @@ void draw(const FigureSpec& fig, const std::pair<double, double>& xr, const std:
   // the title or the canvas edge clips it.
   plsxax(12, 0);
   plsyax(12, 0);
-  plbox(fig.x_log ? "bcnstl" : "bcnst", 0.0, 0, "bcnstv", 0.0, 0);
+  plbox(fig.x_log ? "bcnstl" : "bcnst", 0.0, 0, "bcnstv", y_ticks.step, y_ticks.subticks);
   plmtex("b", 2.9, 0.5, 0.5, fig.x_label.c_str());
-  plmtex("l", 4.6, 0.5, 0.5, fig.y_label.c_str());
+  plmtex("l", y_label_disp, 0.5, 0.5, fig.y_label.c_str());
   plschr(0.0, 1.45);
   plmtex("t", 1.4, 0.5, 0.5, fig.title.c_str());
   plschr(0.0, 1.25);

@@ -343,7 +343,7 @@ void mark_critical_depth(const Columns& columns, const Bindings& bindings, Compa
     const std::string& key = spec.conditions[i].key;
     const bool marked = std::any_of(spec.marks.begin(), spec.marks.end(), [&](const auto& m) { return m.condition == key; });
     if (bindings.conditions[i].scene_path != "cut.uncut_chip_thickness_um" || marked) continue;
-    spec.marks.push_back({key, critical_nm * 1e-9, fmt::format("d_c = {:.3g} nm", critical_nm)});
+    spec.marks.push_back({key, critical_nm * 1e-9, fmt::format("d#dc#u = {:.3g} nm", critical_nm)});
   }
 }
 

@@ -232,7 +232,7 @@ void plot_sweep(const SweepGrid& grid, const std::vector<SweepRow>& rows, const 
       for (const auto& s : fig.series)
         for (double y : s.y) y_lo = std::min(y_lo, y), y_hi = std::max(y_hi, y);
       PlotSeries line;
-      line.label = fmt::format("d_c = {:.3g} nm", **found);
+      line.label = fmt::format("d#dc#u = {:.3g} nm", **found);
       line.style = SeriesStyle::line;
       line.color = 3;
       line.x = {**found * 1e-3, **found * 1e-3};

@@ -144,7 +144,7 @@ void write_load_deflection_png(const std::filesystem::path& path, const std::vec
                                const std::string& title) {
   FigureSpec fig;
   fig.title = title;
-  fig.x_label = "load-point deflection (um)";
+  fig.x_label = "load-point deflection (µm)";
   fig.y_label = results.empty() ? "load (N)" : fmt::format("load per {:g} mm thickness (N)", units::m_to_mm(results[0].thickness_m));
   double peak_max = 0;
   for (std::size_t k = 0; k < results.size(); ++k) {
@@ -164,12 +164,19 @@ void write_load_deflection_png(const std::filesystem::path& path, const std::vec
   for (std::size_t k = 0; k < results.size(); ++k) {
     const ToughnessResult& r = results[k];
     const std::string label =
-        k == 0 ? fmt::format("averaged peak {:.3g} N: K_IC {:.3g} MPa sqrt(m)", r.peak_load_n,
+        k == 0 ? fmt::format("averaged peak {:.3g} N: K#dIC#u {:.3g} MPa m#u1/2#d", r.peak_load_n,
                              units::pa_to_mpa(r.fracture_toughness_pa_sqrt_m))
                : std::string();
     // One packing: the peak in red, to stand out of its own curve.
     fig.series.push_back({label, {units::m_to_um(r.deflection_at_peak_m)}, {r.peak_load_n}, {}, {}, SeriesStyle::points,
                           results.size() == 1 ? 3 : static_cast<int>(k % 6), 3});
+  }
+  if (results.size() > 1) {  // the other packings' colours, said in the legend
+    PlotSeries others{results.size() == 2 ? "the second packing: the same"
+                                          : fmt::format("packings 2-{}: the same, a colour each", results.size()),
+                      {}, {}, {}, {}, SeriesStyle::line, 1, 0};
+    others.legend_only = true;
+    fig.series.push_back(others);
   }
   fig.x_min = 0;
   fig.y_min = 0;
