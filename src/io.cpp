@@ -69,16 +69,17 @@ extern "C" void remove_temporaries_and_die(int signal_number) {
   std::raise(signal_number);
 }
 
+// The first time over any handler but SIG_IGN (nohup: stay ignored); after that again wherever the default has come
+// back (a harness that restores the handlers it found, as Catch2 does after each test case), never over another.
 void install_signal_cleanup() {
-  static std::once_flag once;
-  std::call_once(once, [] {
-    for (int signal_number : {SIGINT, SIGTERM, SIGHUP}) {
-      struct sigaction previous {};
-      ::sigaction(signal_number, nullptr, &previous);
-      if (previous.sa_handler == SIG_IGN) continue;  // nohup: stay ignored
-      std::signal(signal_number, remove_temporaries_and_die);
-    }
-  });
+  static std::atomic<bool> first{true};
+  const bool once = first.exchange(false);
+  for (int signal_number : {SIGINT, SIGTERM, SIGHUP}) {
+    struct sigaction previous {};
+    ::sigaction(signal_number, nullptr, &previous);
+    if (previous.sa_handler == SIG_IGN || previous.sa_handler == remove_temporaries_and_die) continue;
+    if (once || previous.sa_handler == SIG_DFL) std::signal(signal_number, remove_temporaries_and_die);
+  }
 }
 
 /// Copies `text` and a newline into `buffer` (at most kNoteBytes in all); returns the size.

@@ -78,6 +78,9 @@ TEST_CASE("io: the temporary files of a killed writer are removed by SIGTERM and
   const fs::path dir = scratch("signal");
   const pid_t child = ::fork();
   if (child == 0) {
+    // Catch2 puts a handler of its own in place for each test case and restores the one it found afterwards (the
+    // default, over kerf's, when an earlier test case had installed it): the program's state is the default.
+    std::signal(SIGTERM, SIG_DFL);
     const fs::path temporary = kerf::TemporaryFile::reserve(dir / "big.csv");
     std::ofstream(temporary) << "partial";
     std::raise(SIGTERM);
