@@ -19,7 +19,7 @@ draw_figures "$bin_dir" "$root" "$work" || exit 1
 figures=(
   "forces_sweep|forces_sweep.png|forces_sweep.png|cutting (solid) and thrust (dashed) force against the first varied key on a log axis, a colour per value of the second; the critical depth d_c marked; hollow markers where the model is outside its range"
   "glass_sweep|glass_sweep.png|glass_sweep.png|glass from 10 nm to 0.2 mm with models.force = transition: the ductile layer below d_c, the layer and fracture above"
-  "materials_sweep|materials_sweep.png|materials_sweep.png|a categorical second key (two materials): the legend beside the axes names each value"
+  "materials_sweep|materials_sweep.png|materials_sweep.png|a categorical second key (two materials): the legend beside the axes names each value and marks each material's d_c"
   "compare|compare/parity_axial_force.png|compare_parity.png|parity plot: predicted against measured, y = x and a ±10 % band (rows outside the model's range, where there are any, hollow)"
   "compare|compare/axial_force_vs_feed_rate.png|compare_trend.png|a quantity against one condition: the measured points (one series per value of the other condition) and the model's line"
   "report|report/parity_main_force.png|report_parity.png|a comparison file's parity plot: two data sets held against each other, ±1 SD error bars on both"

@@ -144,7 +144,11 @@ void plot_sweep(const SweepGrid& grid, const std::vector<SweepRow>& rows, const 
   } catch (const std::exception&) {
     material = "material?";  // the scene's own errors are the sweep's to report, not the figure's
   }
-  fig.title = material;  // the scene's file name is the CSV's and the command's; the material is what a reader needs
+  // The scene's file name is the CSV's and the command's; the material is what a reader needs (the legend names each
+  // when they are swept).
+  const auto material_axis =
+      static_cast<std::size_t>(std::find(axis_paths.begin(), axis_paths.end(), "material") - axis_paths.begin());
+  fig.title = material_axis < axis_paths.size() ? "by material" : material;
   // The width the forces are for: the scene's, stated; per mm of width where the width is swept.
   const auto width_axis =
       static_cast<std::size_t>(std::find(axis_paths.begin(), axis_paths.end(), "cut.width_mm") - axis_paths.begin());
@@ -214,28 +218,34 @@ void plot_sweep(const SweepGrid& grid, const std::vector<SweepRow>& rows, const 
     }
   }
   if (fig.series.empty()) throw InputError("--plot", path, "a sweep with cutting_force_N or thrust_force_N values");
-  // The critical depth, where the first key is the depth of cut and the material has one.
+  // The critical depth, where the first key is the depth of cut and the material has one: a mark per value (per
+  // material, named, where the material is swept).
   if (axis_paths[0] == "cut.uncut_chip_thickness_um") {
     const auto critical = column_numbers(grid, rows, "critical_depth_nm");
-    const auto found = std::find_if(critical.begin(), critical.end(), [](const auto& v) { return v.has_value(); });
+    std::vector<std::pair<double, std::size_t>> marks;  // d_c [nm] and a point that has it
+    for (std::size_t i = 0; i < n_points; ++i)
+      if (critical[i] && std::none_of(marks.begin(), marks.end(), [&](const auto& m) { return m.first == *critical[i]; }))
+        marks.emplace_back(*critical[i], i);
     // Where it falls within the data's x range widened by its span (in decades on a log axis): a mark far
     // outside it would squeeze the data into a corner.
-    double x_lo = std::numeric_limits<double>::infinity(), x_hi = -x_lo;
-    for (const auto& s : fig.series)
+    double x_lo = std::numeric_limits<double>::infinity(), x_hi = -x_lo, y_lo = 0.0, y_hi = 0.0;
+    for (const auto& s : fig.series) {
       for (double x : s.x) x_lo = std::min(x_lo, x), x_hi = std::max(x_hi, x);
+      for (double y : s.y) y_lo = std::min(y_lo, y), y_hi = std::max(y_hi, y);
+    }
     const auto scale = [&](double x) { return x_log ? std::log10(x) : x; };
-    const bool near = found != critical.end() && x_hi >= x_lo &&
-                      std::fabs(scale(**found * 1e-3) - 0.5 * (scale(x_lo) + scale(x_hi))) <=
-                          1.5 * (scale(x_hi) - scale(x_lo));
-    if (near) {
-      double y_lo = 0.0, y_hi = 0.0;
-      for (const auto& s : fig.series)
-        for (double y : s.y) y_lo = std::min(y_lo, y), y_hi = std::max(y_hi, y);
+    int mark_color = 3;  // red, then purple, ... (the series take the palette from its start)
+    for (const auto& [dc_nm, point] : marks) {
+      if (!(x_hi >= x_lo) ||
+          std::fabs(scale(dc_nm * 1e-3) - 0.5 * (scale(x_lo) + scale(x_hi))) > 1.5 * (scale(x_hi) - scale(x_lo)))
+        continue;
       PlotSeries line;
-      line.label = fmt::format("d#dc#u = {:.3g} nm", **found);
+      line.label = fmt::format("d#dc#u = {:.3g} nm", dc_nm);
+      if (material_axis < axis_paths.size())
+        line.label += " (" + grid.axes()[material_axis].texts[grid.value_index(point, material_axis)] + ")";
       line.style = SeriesStyle::line;
-      line.color = 3;
-      line.x = {**found * 1e-3, **found * 1e-3};
+      line.color = mark_color++;
+      line.x = {dc_nm * 1e-3, dc_nm * 1e-3};
       line.y = {y_lo, y_hi};
       fig.series.push_back(std::move(line));
     }
