@@ -1,0 +1,44 @@
+"""analysis/edge_zone_pilot.py: a record with and without the edge zone, on synthetic rows with known answers."""
+import csv
+
+from repo_scripts import load
+
+ez = load("analysis/edge_zone_pilot.py")
+
+
+def write(path, forces):
+    """forces: {(surface, zone): [cutting per packing]}; the thrust is half the cutting force."""
+    with open(path, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=["surface", "edge_zone", "seed", "cutting_force_N_per_mm",
+                                          "thrust_force_N_per_mm", "edge_zone_intact_share_steady",
+                                          "tied_share_behind_depth_0_25_um_steady", "subsurface_damage_depth_steady_um"])
+        w.writeheader()
+        for (surface, zone), values in forces.items():
+            for seed, c in enumerate(values, start=1):
+                w.writerow({"surface": surface, "edge_zone": zone, "seed": seed, "cutting_force_N_per_mm": c,
+                            "thrust_force_N_per_mm": c / 2, "edge_zone_intact_share_steady": 0.5 if zone == "on" else "",
+                            "tied_share_behind_depth_0_25_um_steady": 0.8, "subsurface_damage_depth_steady_um": 200})
+
+
+def test_a_grooved_force_at_a_fixed_fraction_gives_that_groove_effect_exactly(tmp_path):
+    regular = [0.40, 0.50, 0.45, 0.55]
+    write(tmp_path / "r.csv", {("regular", "on"): regular, ("rectangular", "on"): [0.25 * x for x in regular],
+                               ("regular", "off"): regular, ("rectangular", "off"): [0.5 * x for x in regular]})
+    text = ez.report(ez.read(tmp_path / "r.csv"))
+    on = [l for l in text.splitlines() if l.startswith("groove effect") and "cutting" in l and "zone on" in l][0]
+    off = [l for l in text.splitlines() if l.startswith("groove effect") and "cutting" in l and "zone off" in l][0]
+    # independent means, so the interval is not degenerate, but it holds the exact ratio of the means
+    lo, hi = (float(x) for x in on.split("[")[1].rstrip("]").split(", "))
+    assert float(on.split(": ")[1].split()[0]) == 0.25 and lo < 0.25 < hi
+    assert float(off.split(": ")[1].split()[0]) == 0.5
+    assert "zone effect (on / off), cutting_force_N_per_mm, regular: 1 [" in text
+
+
+def test_the_table_has_a_row_per_surface_and_zone_with_its_packings(tmp_path):
+    write(tmp_path / "r.csv", {("regular", "on"): [0.4, 0.5], ("regular", "off"): [0.6]})
+    rows = [l for l in ez.report(ez.read(tmp_path / "r.csv")).splitlines() if l.startswith("| regular")]
+    assert len(rows) == 2
+    on = [r for r in rows if "| on |" in r][0]
+    off = [r for r in rows if "| off |" in r][0]
+    assert "| 2 |" in on and "0.45 [" in on and "0.5 [0.5, 0.5]" in on  # the zone's share: the same in both
+    assert "| 1 |" in off and "0.6 (n = 1)" in off and "| - |" in off  # one packing: no interval; no zone: no share
