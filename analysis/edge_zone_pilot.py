@@ -43,6 +43,8 @@ def estimate(rows, key):
 def interval(e, digits=3):
     if not math.isfinite(e.value):
         return "-"
+    if math.isinf(e.low) or math.isinf(e.high):
+        return f"{e.value:.{digits}g} (unbounded: the denominator is not resolved from zero)"
     if not e.resolved():
         return f"{e.value:.{digits}g} (n = {e.n})"
     return f"{e.value:.{digits}g} [{e.low:.{digits}g}, {e.high:.{digits}g}]"

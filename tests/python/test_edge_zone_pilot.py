@@ -42,3 +42,9 @@ def test_the_table_has_a_row_per_surface_and_zone_with_its_packings(tmp_path):
     off = [r for r in rows if "| off |" in r][0]
     assert "| 2 |" in on and "0.45 [" in on and "0.5 [0.5, 0.5]" in on  # the zone's share: the same in both
     assert "| 1 |" in off and "0.6 (n = 1)" in off and "| - |" in off  # one packing: no interval; no zone: no share
+
+
+def test_a_ratio_whose_denominator_is_not_resolved_from_zero_says_so(tmp_path):
+    write(tmp_path / "r.csv", {("regular", "on"): [0.01, -0.01, 0.02, -0.015], ("rectangular", "on"): [0.2, 0.3, 0.25, 0.2]})
+    line = [l for l in ez.report(ez.read(tmp_path / "r.csv")).splitlines() if "groove effect" in l and "cutting" in l][0]
+    assert "unbounded" in line
