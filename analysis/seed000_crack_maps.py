@@ -11,8 +11,8 @@ the record files do not hold the cracks). Two figures:
 - crack_depth.png: the subsurface cracks under the steady part of each cut per mm of cut and um of depth below
   the cut line, averaged over packings, and the cumulative count from below.
 Only the steady part is counted (summary.json's steady_machined_from_x_mm .. steady_machined_to_x_mm). Groove
-centres lie at the workpiece's right end - pitch/2 - k pitch (dem/procedures/cutting.cpp, groove_centres); the right end is
-taken as specimen.width_mm.
+centres lie at the workpiece's right end - pitch/2 - k pitch (dem/procedures/cut_geometry.cpp, groove_centres); the
+right end is taken as specimen.width_mm.
 
     python3 analysis/seed000_crack_maps.py --study /work/runs/seed000 --damage /work/runs/groove_damage --out DIR
 """
