@@ -16,8 +16,7 @@ constexpr GuardInfo kGuards[kGuardCount] = {
     {Guard::strain_rate_below_reference, "strain_rate_below_reference",
      "strain rate below the Johnson-Cook reference rate: policy 'clamp' uses no rate effect, 'power_law' "
      "uses (1 + rate/rate0)^C"},
-    {Guard::zero_strain, "zero_strain",
-     "zero plastic strain: stress is A; the hardening slope is infinite for n < 1"},
+    {Guard::zero_strain, "zero_strain", "zero plastic strain: stress is A; the hardening slope is infinite for n < 1"},
     {Guard::grain_below_critical_size, "grain_below_critical_size",
      "grain size below the critical size (inverse Hall-Petch range): Hall-Petch term capped at its value there"},
     {Guard::boundary_spacing_below_critical, "boundary_spacing_below_critical",

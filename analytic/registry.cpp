@@ -26,42 +26,55 @@ std::vector<AnalyticModelInfo>& registry() {
   static std::vector<AnalyticModelInfo> models = {
       // kind, name, summary, needs, the enum value the name constructs (none: handled by name); force lines:
       // the scene kind that runs the model and, for the orthogonal kind, the force model it runs
-      {"force", "auto", "the cheapest valid force model: oxley without friction data, merchant for a sharp edge "
-                        "(r < 5 % of t0), else liu_li", "as the chosen model", -1, &build_orthogonal_scene,
-       &auto_force_model},
+      {"force", "auto",
+       "the cheapest valid force model: oxley without friction data, merchant for a sharp edge "
+       "(r < 5 % of t0), else liu_li",
+       "as the chosen model", -1, &build_orthogonal_scene, &auto_force_model},
       {"force", "merchant", "sharp-tool Merchant force circle", "flow stress, friction, shear angle", -1,
        &build_orthogonal_scene, &merchant_force_model},
-      {"force", "liu_li", "Liu-Li edge-radius model, Shao et al. 2013, Eqs. 1-3", "flow stress, friction, shear angle or chip ratio",
-       -1, &build_orthogonal_scene, &liu_li_force_model},
+      {"force", "liu_li", "Liu-Li edge-radius model, Shao et al. 2013, Eqs. 1-3",
+       "flow stress, friction, shear angle or chip ratio", -1, &build_orthogonal_scene, &liu_li_force_model},
       {"force", "oxley", "extended Oxley theory with Johnson-Cook (Lalwani et al. 2009), sharp tool",
        "material johnson_cook, thermal and oxley groups", -1, &build_orthogonal_scene, &oxley_force_model},
-      {"force", "transition", "brittle materials across the ductile-brittle transition: the ductile model (liu_li, or "
-                              "merchant for a sharp edge) up to a layer of about d_c, then that layer at the edge "
-                              "plus a fracture part (models.fracture; docs/models.md); from 0.01 um to 0.2 mm",
+      {"force", "transition",
+       "brittle materials across the ductile-brittle transition: the ductile model (liu_li, or "
+       "merchant for a sharp edge) up to a layer of about d_c, then that layer at the edge "
+       "plus a fracture part (models.fracture; docs/models.md); from 0.01 um to 0.2 mm",
        "material E, hardness, toughness; friction; a flow stress (hardness for glasses)", -1, &build_orthogonal_scene,
        &transition_force_model},
-      {"force", "trepanning", "fixed-abrasive trepanning drill, axial force and torque (Yu et al. 2023, Eqs. 21-22; brittle "
-                              "regime)", "tool outer/inner diameter, cut feed rate and spindle speed, the two lumped "
-                              "groups or hardness, half angle and friction", -1, &build_trepanning_scene},
-      {"flow_stress", "johnson_cook", "Johnson-Cook, Shao et al. 2013, Eq. 9", "material johnson_cook group; a deformation state"},
-      {"flow_stress", "hall_petch", "Hall-Petch with K_HP from Shao et al. 2013's Eqs. 10-11", "material microstructure and elastic groups"},
-      {"flow_stress", "dislocation", "incidental-boundary strengthening, Shao et al. 2013, Eqs. 4-6", "material microstructure and elastic groups"},
-      {"flow_stress", "hardness", "glasses and ceramics: Y = H / C with the material's constraint factor C (Marsh 1964: "
-                                  "1.5-2 for glasses); alone, rate- and temperature-independent",
+      {"force", "trepanning",
+       "fixed-abrasive trepanning drill, axial force and torque (Yu et al. 2023, Eqs. 21-22; brittle "
+       "regime)",
+       "tool outer/inner diameter, cut feed rate and spindle speed, the two lumped "
+       "groups or hardness, half angle and friction",
+       -1, &build_trepanning_scene},
+      {"flow_stress", "johnson_cook", "Johnson-Cook, Shao et al. 2013, Eq. 9",
+       "material johnson_cook group; a deformation state"},
+      {"flow_stress", "hall_petch", "Hall-Petch with K_HP from Shao et al. 2013's Eqs. 10-11",
+       "material microstructure and elastic groups"},
+      {"flow_stress", "dislocation", "incidental-boundary strengthening, Shao et al. 2013, Eqs. 4-6",
+       "material microstructure and elastic groups"},
+      {"flow_stress", "hardness",
+       "glasses and ceramics: Y = H / C with the material's constraint factor C (Marsh 1964: "
+       "1.5-2 for glasses); alone, rate- and temperature-independent",
        "material brittle.hardness_GPa and brittle.constraint_factor, elastic group", id(ConstraintModel::given)},
       {"flow_stress", "hardness_marsh", "glasses and ceramics: Y from H / Y = 0.07 + 0.6 ln(E / Y) (Marsh 1964)",
        "material brittle.hardness_GPa, elastic group; H / E below 0.212", id(ConstraintModel::marsh)},
-      {"flow_stress", "hardness_johnson", "glasses and ceramics: Y from Johnson's expanding cavity, H / Y = (2/3)(1 + "
-                                          "ln(E* tan 19.7 deg / 3 Y)) (Johnson 1970)",
-       "material brittle.hardness_GPa, elastic group; H / E* below 0.0724 (not soda-lime glass)", id(ConstraintModel::johnson_cavity)},
-      {"deformation", "room_temperature", "T = workpiece temperature, shear-plane strain of the shear angle, "
-                                          "Oxley's strain-rate estimate with C0 = 5 unless cut.strain_rate_per_s is given", "",
-       id(DeformationModel::room_temperature)},
+      {"flow_stress", "hardness_johnson",
+       "glasses and ceramics: Y from Johnson's expanding cavity, H / Y = (2/3)(1 + "
+       "ln(E* tan 19.7 deg / 3 Y)) (Johnson 1970)",
+       "material brittle.hardness_GPa, elastic group; H / E* below 0.0724 (not soda-lime glass)",
+       id(ConstraintModel::johnson_cavity)},
+      {"deformation", "room_temperature",
+       "T = workpiece temperature, shear-plane strain of the shear angle, "
+       "Oxley's strain-rate estimate with C0 = 5 unless cut.strain_rate_per_s is given",
+       "", id(DeformationModel::room_temperature)},
       {"deformation", "given", "cut.strain, cut.strain_rate_per_s and cut.temperature_K as given", "those keys",
        id(DeformationModel::given)},
       {"deformation", "oxley", "zone AB strain, strain rate and temperature of an extended Oxley solve",
        "material johnson_cook, thermal and oxley groups", id(DeformationModel::oxley)},
-      {"shear_angle", "merchant", "minimum energy (MEP), Berezvai et al. 2019, Eq. 4", "friction", id(ShearAngleSource::merchant)},
+      {"shear_angle", "merchant", "minimum energy (MEP), Berezvai et al. 2019, Eq. 4", "friction",
+       id(ShearAngleSource::merchant)},
       {"shear_angle", "lee_shaffer", "maximum shear stress (MSSP), Berezvai et al. 2019, Eq. 4", "friction",
        id(ShearAngleSource::lee_shaffer)},
       {"shear_angle", "chip_ratio", "from a measured chip ratio, Shao et al. 2013, Eq. 3", "cut.chip_ratio",
@@ -72,26 +85,29 @@ std::vector<AnalyticModelInfo>& registry() {
        id(FrictionClosure::merchant)},
       {"friction_closure", "lee_shaffer", "phi_k + beta_k - gamma_k = pi/4 along the edge", "",
        id(FrictionClosure::lee_shaffer)},
-      {"lower_limit", "stagnation", "integrate from the stagnation point -(pi/4 + beta/2) (Son, Lim & Ahn 2005)", "friction",
-       id(LowerLimitRule::stagnation)},
+      {"lower_limit", "stagnation", "integrate from the stagnation point -(pi/4 + beta/2) (Son, Lim & Ahn 2005)",
+       "friction", id(LowerLimitRule::stagnation)},
       {"lower_limit", "pole", "integrate from just above the pole (or -pi/2)", "models.lower_limit_margin_deg",
        id(LowerLimitRule::pole)},
-      {"ploughing", "wave", "Challen-Oxley wave model (Wear 53, 1979) on the chord of the engaged arc below the "
-                            "stagnation point, as Waldorf, DeVor & Kapoor (1998) use it under a rounded edge",
+      {"ploughing", "wave",
+       "Challen-Oxley wave model (Wear 53, 1979) on the chord of the engaged arc below the "
+       "stagnation point, as Waldorf, DeVor & Kapoor (1998) use it under a rounded edge",
        "an edge radius; cut.friction_factor or a friction angle in [0, 45) deg", id(PloughingModel::wave)},
       {"ploughing", "none", "no force under the edge below the stagnation point (the ploughed layer is reported)", "",
        id(PloughingModel::none)},
-      {"fracture", "lefm_scratch", "F / w = zeta K_c (sqrt(h) - sqrt(l)) above the ductile layer l (Huang & "
-                                   "Detournay 2008; zeta = sqrt(2), Akono & Ulm 2011), thrust along the rake face's "
-                                   "friction", "material toughness",
-       id(FractureModel::lefm_scratch)},
+      {"fracture", "lefm_scratch",
+       "F / w = zeta K_c (sqrt(h) - sqrt(l)) above the ductile layer l (Huang & "
+       "Detournay 2008; zeta = sqrt(2), Akono & Ulm 2011), thrust along the rake face's "
+       "friction",
+       "material toughness", id(FractureModel::lefm_scratch)},
       {"fracture", "none", "no fracture part: the edge's ductile layer alone above l", "", id(FractureModel::none)},
-      {"contact_length", "altintas", "Altintas, Berezvai et al. 2019, Eq. 1 (suffix _mep or _mssp picks the shear angle)", "friction",
+      {"contact_length", "altintas",
+       "Altintas, Berezvai et al. 2019, Eq. 1 (suffix _mep or _mssp picks the shear angle)", "friction",
        id(ContactLengthModel::altintas)},
       {"contact_length", "vinogradov", "Vinogradov, Berezvai et al. 2019, Eq. 2 (suffix _mep or _mssp)", "friction",
        id(ContactLengthModel::vinogradov)},
-      {"contact_length", "lee_shaffer", "Lee and Shaffer, Berezvai et al. 2019, Eq. 3 (suffix _mep or _mssp)", "friction",
-       id(ContactLengthModel::lee_shaffer)},
+      {"contact_length", "lee_shaffer", "Lee and Shaffer, Berezvai et al. 2019, Eq. 3 (suffix _mep or _mssp)",
+       "friction", id(ContactLengthModel::lee_shaffer)},
   };
   return models;
 }
@@ -126,7 +142,9 @@ Names& names() {
 }
 }  // namespace
 
-const std::vector<AnalyticModelInfo>& analytic_models() { return registry(); }
+const std::vector<AnalyticModelInfo>& analytic_models() {
+  return registry();
+}
 
 bool register_analytic_model(const AnalyticModelInfo& line) {
   if (registered_line(registry(), line.kind, line.name)) {
@@ -145,7 +163,9 @@ std::span<const std::string_view> analytic_model_names(std::string_view kind) {
   return it == by_kind.end() ? std::span<const std::string_view>{} : *it->second;
 }
 
-std::span<const std::string_view> orthogonal_force_names() { return *names().orthogonal; }
+std::span<const std::string_view> orthogonal_force_names() {
+  return *names().orthogonal;
+}
 
 const AnalyticModelInfo* registered_line(const std::vector<AnalyticModelInfo>& registry, std::string_view kind,
                                          std::string_view name) {

@@ -2,9 +2,9 @@
 //
 //   build/bench/bench_analytic_liu_li [OUT.csv]     (CSV to the file, or to stdout)
 //
-// Rows: one per (quadrature rule, tolerance): thread CPU time per prediction (both forces) and the relative error of the
-// cutting and thrust forces against a reference (Boost Gauss-Kronrod at tolerance 1e-13, depth 20), over a
-// set of cases spanning the three friction closures, both lower-limit rules, blunt and sharp edges.
+// Rows: one per (quadrature rule, tolerance): thread CPU time per prediction (both forces) and the relative error of
+// the cutting and thrust forces against a reference (Boost Gauss-Kronrod at tolerance 1e-13, depth 20), over a set of
+// cases spanning the three friction closures, both lower-limit rules, blunt and sharp edges.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "kerf/analytic/forces/liu_li.hpp"
 #include "bench_util.hpp"
+#include "kerf/analytic/forces/liu_li.hpp"
 #include "kerf/io.hpp"
 #include "kerf/units.hpp"
 
@@ -31,8 +31,8 @@ struct Case {
 
 std::vector<Case> make_cases() {
   std::vector<Case> cases;
-  for (auto closure : {kerf::FrictionClosure::constant, kerf::FrictionClosure::merchant,
-                       kerf::FrictionClosure::lee_shaffer}) {
+  for (auto closure :
+       {kerf::FrictionClosure::constant, kerf::FrictionClosure::merchant, kerf::FrictionClosure::lee_shaffer}) {
     for (auto lower : {kerf::LowerLimitRule::stagnation, kerf::LowerLimitRule::pole}) {
       for (double rake_deg : {-30.0, -10.0, 0.0, 10.0}) {
         for (double ratio : {0.05, 0.3, 1.0, 3.0, 20.0}) {  // t0 / r
@@ -71,8 +71,8 @@ int main(int argc, char** argv) {
                                     "max_rel_error_cutting", "max_rel_error_thrust", "median_rel_error_cutting",
                                     "median_rel_error_thrust"});
   const std::vector<double> tolerances = {1e-3, 1e-4, 1e-6, 1e-8, 1e-10, 1e-12};
-  for (auto rule : {kerf::QuadratureRule::gauss_kronrod, kerf::QuadratureRule::tanh_sinh,
-                    kerf::QuadratureRule::gsl_qag, kerf::QuadratureRule::gauss_legendre}) {
+  for (auto rule : {kerf::QuadratureRule::gauss_kronrod, kerf::QuadratureRule::tanh_sinh, kerf::QuadratureRule::gsl_qag,
+                    kerf::QuadratureRule::gauss_legendre}) {
     for (double tolerance : tolerances) {
       if (rule == kerf::QuadratureRule::gauss_legendre && tolerance != tolerances.front()) continue;  // fixed rule
       std::vector<double> err_c, err_t;

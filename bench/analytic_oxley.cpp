@@ -20,8 +20,8 @@
 #include <string>
 #include <vector>
 
-#include "kerf/analytic/forces/oxley.hpp"
 #include "bench_util.hpp"
+#include "kerf/analytic/forces/oxley.hpp"
 #include "kerf/analytic/kinds/material_models.hpp"
 #include "kerf/io.hpp"
 #include "kerf/units.hpp"
@@ -32,8 +32,11 @@ using kerf::bench::relative_error;
 using kerf::bench::thread_cpu_seconds;
 
 kerf::OxleyCut cut(double v_m_per_min, double t1_mm, double rake_deg) {
-  return {.rake_rad = kerf::units::deg_to_rad(rake_deg), .uncut_chip_thickness_m = t1_mm * 1e-3, .width_m = 1.6e-3,
-          .speed_m_per_s = v_m_per_min / 60.0, .workpiece_temperature_K = 298.15};
+  return {.rake_rad = kerf::units::deg_to_rad(rake_deg),
+          .uncut_chip_thickness_m = t1_mm * 1e-3,
+          .width_m = 1.6e-3,
+          .speed_m_per_s = v_m_per_min / 60.0,
+          .workpiece_temperature_K = 298.15};
 }
 
 std::vector<kerf::OxleyCut> mix27() {
@@ -96,10 +99,10 @@ int main(int argc, char** argv) {
   // AISI 1045 from the bundled library (Jaspers & Dautzenberg 2002; Lalwani et al. 2009).
   const kerf::OxleyParams params =
       kerf::oxley_params_from_material(kerf::load_material(kerf::Json("aisi_1045"), "material"), "material");
-  std::string csv = kerf::csv_line({"case_set", "tolerance", "n_cases", "converged", "time_per_solve_us",
-                                    "solves_per_s", "wall_time_per_solve_us", "evaluations_per_solve",
-                                    "max_rel_error_Fc", "max_rel_error_Ft",
-                                    "max_rel_error_phi", "max_rel_error_delta", "max_rel_error_Tint"});
+  std::string csv =
+      kerf::csv_line({"case_set", "tolerance", "n_cases", "converged", "time_per_solve_us", "solves_per_s",
+                      "wall_time_per_solve_us", "evaluations_per_solve", "max_rel_error_Fc", "max_rel_error_Ft",
+                      "max_rel_error_phi", "max_rel_error_delta", "max_rel_error_Tint"});
   kerf::OxleySolverOptions reference_options;
   reference_options.tolerance = 1e-13;
   const auto add = [&](const std::string& name, const std::vector<kerf::OxleyCut>& cuts,
@@ -108,13 +111,12 @@ int main(int argc, char** argv) {
     for (const auto& c : cuts) reference.push_back(kerf::solve_oxley(params, c, reference_options));
     for (double tolerance : tolerances) {
       const Row row = measure(params, cuts, tolerance, reference);
-      csv += kerf::csv_line({name, fmt::format("{:g}", tolerance), fmt::format("{}", cuts.size()),
-                             fmt::format("{}", row.converged), fmt::format("{:.2f}", row.seconds_per_solve * 1e6),
-                             fmt::format("{:.0f}", 1.0 / row.seconds_per_solve),
-                             fmt::format("{:.2f}", row.wall_seconds_per_solve * 1e6),
-                             fmt::format("{:.1f}", row.evaluations_per_solve), fmt::format("{:.2g}", row.err_fc),
-                             fmt::format("{:.2g}", row.err_ft), fmt::format("{:.2g}", row.err_phi),
-                             fmt::format("{:.2g}", row.err_delta), fmt::format("{:.2g}", row.err_tint)});
+      csv += kerf::csv_line(
+          {name, fmt::format("{:g}", tolerance), fmt::format("{}", cuts.size()), fmt::format("{}", row.converged),
+           fmt::format("{:.2f}", row.seconds_per_solve * 1e6), fmt::format("{:.0f}", 1.0 / row.seconds_per_solve),
+           fmt::format("{:.2f}", row.wall_seconds_per_solve * 1e6), fmt::format("{:.1f}", row.evaluations_per_solve),
+           fmt::format("{:.2g}", row.err_fc), fmt::format("{:.2g}", row.err_ft), fmt::format("{:.2g}", row.err_phi),
+           fmt::format("{:.2g}", row.err_delta), fmt::format("{:.2g}", row.err_tint)});
     }
   };
   add("lalwani", {cut(200.0, 0.15, -7.0)}, {kerf::OxleySolverOptions{}.tolerance});

@@ -25,13 +25,14 @@
 // directory holding the cuts of another one is refused. Before the study machinery (2026-11-26) the built-in
 // case was built from SI literals, one ulp from the scene's radii: the published figures of
 // docs/performance.md from that build are statistically like, not equal to, a rerun of this one.
+#include <fmt/format.h>
+
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fmt/format.h>
 #include <fstream>
 #include <map>
 #include <string>
@@ -99,8 +100,8 @@ Stats stats_of(const std::vector<double>& v) {
   return {st.mean, st.standard_deviation, st.standard_deviation / std::sqrt(static_cast<double>(v.size()))};
 }
 
-/// The reference of each knob: the finest setting (lowest speed, smallest disks, smallest step); damping has none that is
-/// "converged" (it is a model parameter), so its changes are against the default 0.7.
+/// The reference of each knob: the finest setting (lowest speed, smallest disks, smallest step); damping has none that
+/// is "converged" (it is a model parameter), so its changes are against the default 0.7.
 double reference_value(const std::string& knob, const std::vector<double>& values) {
   if (knob == "damping") return 0.7;
   return *std::min_element(values.begin(), values.end());
@@ -128,7 +129,8 @@ int main(int argc, char** argv) {
   std::vector<std::string> knob_choices{"all"};
   for (const auto& k : knobs) knob_choices.push_back(k.name);
   app.add_option("--knob", knob, "speed, radius, damping, time_step or all")->check(CLI::IsMember(knob_choices));
-  app.add_option("--replicates", replicates, "packings per setting (seeds: the scene's + 0..N-1)")->check(CLI::Range(1, 100));
+  app.add_option("--replicates", replicates, "packings per setting (seeds: the scene's + 0..N-1)")
+      ->check(CLI::Range(1, 100));
   app.add_option("--threads", threads, "cuts run side by side")->check(CLI::Range(1, 256));
   app.add_option("--out-dir", out_dir, "output directory");
   app.add_option("--scene", scene_path,
@@ -136,7 +138,8 @@ int main(int argc, char** argv) {
                  "default: data/scenes/dem_cut.json at 0.25 m/s")
       ->check(CLI::ExistingFile);
   app.add_option("--speeds", speeds.values, "tool speeds, m/s")->check(CLI::PositiveNumber);
-  app.add_option("--radius-scales", radius_scales.values, "radius scales (1: the base case's radii)")->check(CLI::PositiveNumber);
+  app.add_option("--radius-scales", radius_scales.values, "radius scales (1: the base case's radii)")
+      ->check(CLI::PositiveNumber);
   app.add_option("--dampings", dampings.values, "local damping values")->check(CLI::Range(0.0, 0.99));
   app.add_option("--time-step-safeties", time_step_safeties.values,
                  "time-step safety factors f (engine.time_step_safety: dt = f * the critical-step estimate)")
@@ -169,8 +172,10 @@ int main(int argc, char** argv) {
       std::string recorded;
       std::getline(in, recorded);
       if (recorded != base_name)
-        throw InputError("--out-dir", out_dir, fmt::format("a directory without runs of another base case (it holds runs of '{}', "
-                                                            "this run's base is '{}')", recorded, base_name));
+        throw InputError("--out-dir", out_dir,
+                         fmt::format("a directory without runs of another base case (it holds runs of '{}', "
+                                     "this run's base is '{}')",
+                                     recorded, base_name));
     }
     write_file_atomically(base_file, base_name);
 
@@ -219,12 +224,12 @@ int main(int argc, char** argv) {
       }
 
     // runs.csv, summary and plots, one knob at a time, in the order the options list the values.
-    std::string runs = csv_line({"knob", "value", "replicate", "seed", "condition", "n_particles", "steps", "main_force_N",
-                                 "thrust_force_N", "cut_wall_s"});
-    std::string summary = csv_line({"knob", "value", "replicates", "n_particles", "main_force_N", "main_force_replicate_std_N",
-                                    "main_force_sem_N", "thrust_force_N", "thrust_force_replicate_std_N",
-                                    "thrust_force_sem_N", "main_force_change_vs_reference", "thrust_force_change_vs_reference",
-                                    "cut_wall_s_per_cut", "cost_vs_reference"});
+    std::string runs = csv_line({"knob", "value", "replicate", "seed", "condition", "n_particles", "steps",
+                                 "main_force_N", "thrust_force_N", "cut_wall_s"});
+    std::string summary = csv_line(
+        {"knob", "value", "replicates", "n_particles", "main_force_N", "main_force_replicate_std_N", "main_force_sem_N",
+         "thrust_force_N", "thrust_force_replicate_std_N", "thrust_force_sem_N", "main_force_change_vs_reference",
+         "thrust_force_change_vs_reference", "cut_wall_s_per_cut", "cost_vs_reference"});
     for (const auto& k : knobs) {
       if (!selected(k)) continue;
       struct Row {
@@ -241,9 +246,10 @@ int main(int argc, char** argv) {
           const Run& run = cut.at({c, r});
           fm.push_back(run.main_force_n), ft.push_back(run.thrust_force_n), cost.push_back(run.cut_wall_s);
           particles = run.n_particles;
-          runs += csv_line({k.name, csv_number(v), std::to_string(r + 1), std::to_string(dem::study_item(study, c, r).seed),
-                            std::to_string(c + 1), std::to_string(run.n_particles), std::to_string(run.steps),
-                            csv_number(run.main_force_n), csv_number(run.thrust_force_n), csv_number(run.cut_wall_s)});
+          runs +=
+              csv_line({k.name, csv_number(v), std::to_string(r + 1), std::to_string(dem::study_item(study, c, r).seed),
+                        std::to_string(c + 1), std::to_string(run.n_particles), std::to_string(run.steps),
+                        csv_number(run.main_force_n), csv_number(run.thrust_force_n), csv_number(run.cut_wall_s)});
         }
         rows.push_back({v, stats_of(fm), stats_of(ft), stats_of(cost), particles});
       }
@@ -262,9 +268,9 @@ int main(int argc, char** argv) {
         const double dt = ref_row == rows.end() ? NAN : r.thrust.mean / ref_row->thrust.mean - 1;
         const double dc = ref_row == rows.end() ? NAN : r.cost.mean / ref_row->cost.mean;
         summary += csv_line({k.name, csv_number(r.value), std::to_string(replicates), std::to_string(r.particles),
-                             csv_number(r.main.mean), csv_number(r.main.std), csv_number(r.main.sem), csv_number(r.thrust.mean),
-                             csv_number(r.thrust.std), csv_number(r.thrust.sem), csv_number(dm), csv_number(dt),
-                             csv_number(r.cost.mean), csv_number(dc)});
+                             csv_number(r.main.mean), csv_number(r.main.std), csv_number(r.main.sem),
+                             csv_number(r.thrust.mean), csv_number(r.thrust.std), csv_number(r.thrust.sem),
+                             csv_number(dm), csv_number(dt), csv_number(r.cost.mean), csv_number(dc)});
         main.x.push_back(r.value), main.y.push_back(r.main.mean), main.y_error.push_back(r.main.sem);
         thrust.x.push_back(r.value), thrust.y.push_back(r.thrust.mean), thrust.y_error.push_back(r.thrust.sem);
       }

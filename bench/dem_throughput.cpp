@@ -27,7 +27,8 @@ double time_steps(const Simulation& specimen, int threads, int steps) {
   Simulation sim = specimen;
   const auto& p = sim.particles();
   double y_min = 1e300, y_max = -1e300;
-  for (std::size_t i = 0; i < p.size(); ++i) y_min = std::min(y_min, p.y[i] - p.radius[i]), y_max = std::max(y_max, p.y[i] + p.radius[i]);
+  for (std::size_t i = 0; i < p.size(); ++i)
+    y_min = std::min(y_min, p.y[i] - p.radius[i]), y_max = std::max(y_max, p.y[i] + p.radius[i]);
   sim.add_wall({-1, y_min, 1, y_min, 0, 0.05});
   sim.add_wall({1, y_max, -1, y_max, 0, -0.05});
   sim.invalidate_neighbours();
@@ -61,7 +62,8 @@ int main(int argc, char** argv) {
   if (argc > 2 && std::string(argv[2]) == "paper") return 0;
   for (int n : {2000, 8000, 32000, 128000}) {
     SpecimenSpec s;
-    const double area = n * std::numbers::pi * (7.5e-6 * 7.5e-6 + 7.5e-6 * 10e-6 + 10e-6 * 10e-6) / 3 / s.packing_fraction;
+    const double area =
+        n * std::numbers::pi * (7.5e-6 * 7.5e-6 + 7.5e-6 * 10e-6 + 10e-6 * 10e-6) / 3 / s.packing_fraction;
     s.width_m = std::sqrt(area / 2);
     s.height_m = 2 * s.width_m;
     s.growth_steps = 1500;

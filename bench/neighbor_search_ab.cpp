@@ -33,10 +33,12 @@ namespace {
 using kerf::dem::CandidatePair;
 using Coordinates = std::span<const double>;
 // Not inlined, either of them: the library calls its search from another translation unit.
-[[gnu::noinline]] void old_search(Coordinates x, Coordinates y, Coordinates r, double skin, std::vector<CandidatePair>& out) {
+[[gnu::noinline]] void old_search(Coordinates x, Coordinates y, Coordinates r, double skin,
+                                  std::vector<CandidatePair>& out) {
   kerf::dem::old_grid::find_candidate_pairs(x, y, r, skin, out);
 }
-[[gnu::noinline]] void new_search(Coordinates x, Coordinates y, Coordinates r, double skin, std::vector<CandidatePair>& out) {
+[[gnu::noinline]] void new_search(Coordinates x, Coordinates y, Coordinates r, double skin,
+                                  std::vector<CandidatePair>& out) {
   kerf::dem::new_grid::find_candidate_pairs(x, y, r, skin, out);
 }
 
@@ -49,14 +51,15 @@ double cpu_seconds() {
 
 int main() {
   std::printf("strays,spread_m,pairs,old_ms_per_call,new_ms_per_call,new_over_old,same_pairs\n");
-  const std::array<std::pair<int, double>, 7> cases{{{0, 0}, {500, 0.005}, {2500, 0.025}, {2500, 0.2}, {8000, 0.01},
-                                                     {8000, 0.3}, {30000, 0.3}}};
+  const std::array<std::pair<int, double>, 7> cases{
+      {{0, 0}, {500, 0.005}, {2500, 0.025}, {2500, 0.2}, {8000, 0.01}, {8000, 0.3}, {30000, 0.3}}};
   for (const auto& [strays, spread] : cases) {
     std::mt19937_64 rng(1);
     std::uniform_real_distribution<double> u(0, 1);
     std::vector<double> x, y, r;
     for (int k = 0; k < 12000; ++k)
-      x.push_back(23e-6 * (k % 260) + 1e-6 * u(rng)), y.push_back(23e-6 * (k / 260)), r.push_back(10e-6 + 3e-6 * u(rng));
+      x.push_back(23e-6 * (k % 260) + 1e-6 * u(rng)), y.push_back(23e-6 * (k / 260)),
+          r.push_back(10e-6 + 3e-6 * u(rng));
     for (int k = 0; k < strays; ++k) {
       const double a = 1.5 * u(rng), d = spread * u(rng);
       x.push_back(3e-3 + d * std::cos(a)), y.push_back(1e-3 + d * std::sin(a)), r.push_back(10e-6 + 3e-6 * u(rng));

@@ -84,7 +84,8 @@ SceneOutcome run_scene(const Json& doc, const fs::path& scene_file, const RunOpt
   const Scene scene = read_scene(doc, scene_file.parent_path());
   scene.kind->check_options(options, scene.common);
   if (options.checkpoint_every > 0 && options.replicates > 1)
-    throw InputError("--checkpoint-every", std::to_string(options.checkpoint_every), "no checkpoints with --replicates");
+    throw InputError("--checkpoint-every", std::to_string(options.checkpoint_every),
+                     "no checkpoints with --replicates");
   const OutputManifest hold(options.out, /*fresh=*/true);  // writable? then the old outputs go, before any work
   RunOptions with_provenance_kept = options;               // the checkpoints keep it for a resume
   with_provenance_kept.provenance = run_provenance(options.command_line, scene_file.string(), options.overrides);

@@ -9,11 +9,11 @@
 #include <cstdint>
 #include <string>
 
-#include "kerf/dem/procedures/calibration.hpp"
 #include "kerf/dem/engine/checkpoint.hpp"
+#include "kerf/dem/engine/simulation.hpp"
+#include "kerf/dem/procedures/calibration.hpp"
 #include "kerf/dem/procedures/cutting.hpp"
 #include "kerf/dem/procedures/lab_test.hpp"
-#include "kerf/dem/engine/simulation.hpp"
 #include "kerf/error.hpp"
 
 namespace {

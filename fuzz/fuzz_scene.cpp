@@ -20,8 +20,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // The kind's forces (orthogonal: cutting and thrust; trepanning: axial force and torque) are written as
     // numbers: an empty cell is a force that was not finite.
     for (const auto& [name, cell] : kerf::scene_columns(*scene)) {
-      const bool force = name == "cutting_force_N" || name == "thrust_force_N" || name == "axial_force_N" ||
-                         name == "torque_N_m";
+      const bool force =
+          name == "cutting_force_N" || name == "thrust_force_N" || name == "axial_force_N" || name == "torque_N_m";
       if (force && cell.empty()) std::abort();
     }
   } catch (const kerf::InputError&) {

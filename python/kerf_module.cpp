@@ -50,7 +50,9 @@ std::string json_dumps(const py::handle& value) {
   return py::module_::import("json").attr("dumps")(value).cast<std::string>();
 }
 
-py::object json_to_python(const Json& value) { return py::module_::import("json").attr("loads")(value.dump()); }
+py::object json_to_python(const Json& value) {
+  return py::module_::import("json").attr("loads")(value.dump());
+}
 
 /// A scene given as a path or as a dict, with the keyword overrides applied; `file` is where it came from
 /// ("<dict>" inside the current directory for a dict).
@@ -352,8 +354,8 @@ py::dict compare(const py::object& scene, const py::object& experiments, const p
   if (!out.is_none()) {
     result.comparison.spec.description = fmt::format("Scene {} against {}.", input.file, csv);
     std::vector<std::string> files;
-    for (const auto& f : kerf::write_report(result.comparison, py::str(py::module_::import("os").attr("fspath")(out))
-                                                                  .cast<std::string>(),
+    for (const auto& f : kerf::write_report(result.comparison,
+                                            py::str(py::module_::import("os").attr("fspath")(out)).cast<std::string>(),
                                             result.report)) {
       files.push_back(f.string());
     }
@@ -460,8 +462,8 @@ PYBIND11_MODULE(kerf, m) {
   m.def("_models", &models);
   m.def("_scenes", &scenes);
   m.def("_scene_path", &scene_path, py::arg("name"));
-  m.def("_compare", &compare, py::arg("scene"), py::arg("experiments"), py::arg("map"), py::arg("fit"),
-        py::arg("pool"), py::arg("measured_width_mm"), py::arg("out"));
+  m.def("_compare", &compare, py::arg("scene"), py::arg("experiments"), py::arg("map"), py::arg("fit"), py::arg("pool"),
+        py::arg("measured_width_mm"), py::arg("out"));
   m.def("_dem_run", &dem_run, py::arg("scene"), py::arg("out"), py::arg("threads"), py::arg("replicates"),
         py::arg("checkpoint_every"), py::arg("progress"));
   m.def("_dem_kinds", &kerf::dem::scene_kind_names);

@@ -11,7 +11,8 @@ packages=(build-essential cmake ninja-build pkg-config libeigen3-dev libgsl-dev 
   catch2 nlohmann-json3-dev libcli11-dev libplplot-dev plplot-driver-cairo python3
   python3-dev python3-pybind11 python3-numpy python3-pil python3-pytest python3-matplotlib
   python3-venv python3-setuptools python3-wheel
-  libopenmpi-dev openmpi-bin)
+  libopenmpi-dev openmpi-bin
+  clang-format)  # tests/cli/format_check.sh: the layout of the C++ files (.clang-format)
 vtk=(python3-vtk9 python3-paraview)  # either gives Python's vtk; the first is installed when neither is
 case "${1:-}" in
   "") ;;

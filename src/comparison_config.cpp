@@ -67,7 +67,8 @@ SideSpec read_side(ObjectReader& side, const ComparisonSpec& spec, const std::fi
     const std::string path = side.key_path("width");
     if (width->is_string()) {
       if (width->get<std::string>() != "per_unit_width") {
-        throw InputError(path, width->get<std::string>(), R"("per_unit_width", {"mm": width} or {"column_mm": column})");
+        throw InputError(path, width->get<std::string>(),
+                         R"("per_unit_width", {"mm": width} or {"column_mm": column})");
       }
       basis = WidthBasis::per_unit_width();
     } else {

@@ -83,10 +83,13 @@ std::size_t CsvTable::column_index(std::string_view name) const {
   for (std::size_t i = 0; i < header.size(); ++i) {
     if (header[i] == name) return i;
   }
-  throw InputError(fmt::format("{}: column", source), std::string(name), "a column of the table: " + describe_choices(name, header));
+  throw InputError(fmt::format("{}: column", source), std::string(name),
+                   "a column of the table: " + describe_choices(name, header));
 }
 
-const std::string& CsvTable::text(std::size_t row, std::size_t column) const { return rows.at(row).at(column); }
+const std::string& CsvTable::text(std::size_t row, std::size_t column) const {
+  return rows.at(row).at(column);
+}
 
 std::string CsvTable::cell_location(std::size_t row, std::size_t column) const {
   return fmt::format("{}:{}: column {} '{}'", source, row_lines.at(row), column + 1, header.at(column));

@@ -50,7 +50,9 @@ ModelError::ModelError(const std::string& model, const std::string& reason)
 OutputError::OutputError(const std::string& path, const std::string& reason)
     : std::runtime_error(printable(fmt::format("cannot write '{}': {}", path, reason))) {}
 
-std::string format_value(double value) { return fmt::format("{:.6g}", value); }
+std::string format_value(double value) {
+  return fmt::format("{:.6g}", value);
+}
 
 int report_error(std::string_view program) {
   const auto line = [&](const char* what) { fmt::print(stderr, "{}: error: {}\n", program, printable(what)); };

@@ -1,7 +1,7 @@
 #include "kerf/io.hpp"
 
-#include <fmt/format.h>
 #include <fcntl.h>
+#include <fmt/format.h>
 #include <signal.h>
 #include <unistd.h>
 
@@ -256,7 +256,9 @@ void move_into_place(const fs::path& temporary, const fs::path& path) {
     fs::remove(temporary, ignored);
   }
   TemporaryFile::release(temporary);
-  if (error) throw OutputError(path.string(), fmt::format("cannot rename '{}' onto it: {}", temporary.string(), error.message()));
+  if (error)
+    throw OutputError(path.string(),
+                      fmt::format("cannot rename '{}' onto it: {}", temporary.string(), error.message()));
   record_output(path);
 }
 
@@ -272,7 +274,8 @@ void check_writable_directory(const fs::path& dir) {
   out.close();
   fs::remove(probe, error);
   TemporaryFile::release(probe);
-  if (!ok) throw OutputError(dir.string(), fmt::format("the directory is not writable ({})", std::strerror(probe_errno)));
+  if (!ok)
+    throw OutputError(dir.string(), fmt::format("the directory is not writable ({})", std::strerror(probe_errno)));
 }
 
 void check_writable_file(const fs::path& requested) {
@@ -330,7 +333,9 @@ std::string csv_line(const std::vector<std::string>& fields) {
   return line;
 }
 
-bool is_terminal(std::FILE* stream) { return ::isatty(::fileno(stream)) == 1; }
+bool is_terminal(std::FILE* stream) {
+  return ::isatty(::fileno(stream)) == 1;
+}
 
 GrowingFile::GrowingFile(const fs::path& path, std::string_view head) : path_(path) {
   fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
@@ -373,7 +378,9 @@ Progress::Progress(std::string label, std::size_t total, std::string unit)
       start_(std::chrono::steady_clock::now()),
       last_draw_(start_) {}
 
-Progress::~Progress() { finish(); }
+Progress::~Progress() {
+  finish();
+}
 
 void Progress::advance(std::size_t count) {
   done_ += count;
@@ -401,8 +408,8 @@ void Progress::draw(bool final_line) {
   const double rate = elapsed_s > 0 ? static_cast<double>(done_ - done_before_) / elapsed_s : 0.0;  // this process's
   const std::string eta = eta_text(eta_seconds(static_cast<double>(done_before_), static_cast<double>(done_),
                                                static_cast<double>(total_), elapsed_s));
-  fmt::print(stderr, "\r{}: {:5.1f}%  {}/{} {}  {:.3g} {}/s  {}   {}", label_, 100.0 * fraction, done_, total_,
-             unit_, rate, unit_, eta.empty() ? "ETA ?" : eta, final_line ? "\n" : "");
+  fmt::print(stderr, "\r{}: {:5.1f}%  {}/{} {}  {:.3g} {}/s  {}   {}", label_, 100.0 * fraction, done_, total_, unit_,
+             rate, unit_, eta.empty() ? "ETA ?" : eta, final_line ? "\n" : "");
   std::fflush(stderr);
 }
 

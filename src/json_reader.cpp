@@ -84,7 +84,8 @@ std::string describe_choices(std::string_view word, const std::vector<std::strin
 std::string json_value_text(const Json& value) {
   // The parser keeps documents shallow (kMaxJsonDepth) and strings are printed, never executed: invalid UTF-8
   // from a --set value is replaced rather than thrown over.
-  std::string text = value.is_string() ? value.get<std::string>() : value.dump(-1, ' ', false, Json::error_handler_t::replace);
+  std::string text =
+      value.is_string() ? value.get<std::string>() : value.dump(-1, ' ', false, Json::error_handler_t::replace);
   if (text.size() > 60) text = text.substr(0, 57) + "...";
   return text;
 }
@@ -99,7 +100,9 @@ std::string ObjectReader::key_path(std::string_view key) const {
   return path_.empty() ? std::string(key) : fmt::format("{}.{}", path_, key);
 }
 
-bool ObjectReader::has(std::string_view key) const { return object_.contains(key); }
+bool ObjectReader::has(std::string_view key) const {
+  return object_.contains(key);
+}
 
 bool ObjectReader::knows(std::string_view key) const {
   return std::find(known_.begin(), known_.end(), key) != known_.end();
@@ -123,7 +126,8 @@ const Json& ObjectReader::get(std::string_view key) {
     for (const auto& [name, ignored] : object_.items())
       if (!knows(name)) unread.push_back(name);
     std::string expected = "a value for this required key";
-    if (auto near = nearest_choice(key, unread)) expected += fmt::format(" (the scene has '{}': did you mean '{}'?)", *near, key);
+    if (auto near = nearest_choice(key, unread))
+      expected += fmt::format(" (the scene has '{}': did you mean '{}'?)", *near, key);
     throw InputError(key_path(key), "(missing)", expected);
   }
   return *value;
@@ -148,7 +152,8 @@ std::string not_a_number(const Json& value, const Range& range, std::string_view
 /// The number at `key` of `reader`, checked against `range`; the key's path is built only for a message.
 double as_number(const Json& value, const ObjectReader& reader, std::string_view key, const Range& range,
                  std::string_view unit) {
-  if (!value.is_number()) throw InputError(reader.key_path(key), json_value_text(value), not_a_number(value, range, unit));
+  if (!value.is_number())
+    throw InputError(reader.key_path(key), json_value_text(value), not_a_number(value, range, unit));
   const double number = value.get<double>();
   return range.contains(number) ? number : check_number(number, reader.key_path(key), range, unit);
 }
@@ -165,8 +170,7 @@ std::optional<double> ObjectReader::get_optional_number(std::string_view key, co
   return as_number(*value, *this, key, range, unit);
 }
 
-double ObjectReader::get_number_or(std::string_view key, double fallback, const Range& range,
-                                   std::string_view unit) {
+double ObjectReader::get_number_or(std::string_view key, double fallback, const Range& range, std::string_view unit) {
   return get_optional_number(key, range, unit).value_or(fallback);
 }
 
@@ -192,7 +196,7 @@ double ObjectReader::get_si_or(std::string_view key, double fallback, const Rang
 }
 
 std::optional<double> ObjectReader::get_optional_si(std::string_view key, const Range& range, std::string_view unit,
-                                                   double (*to_si)(double)) {
+                                                    double (*to_si)(double)) {
   const auto value = get_optional_number(key, range, unit);
   if (!value) return std::nullopt;
   return checked_si(*value, to_si, *this, key, unit);
@@ -239,7 +243,9 @@ std::string ObjectReader::get_choice_or(std::string_view key, std::string fallba
   return has(key) ? get_choice(key, choices) : std::move(fallback);
 }
 
-ObjectReader ObjectReader::get_object(std::string_view key) { return ObjectReader(get(key), key_path(key)); }
+ObjectReader ObjectReader::get_object(std::string_view key) {
+  return ObjectReader(get(key), key_path(key));
+}
 
 std::optional<ObjectReader> ObjectReader::find_object(std::string_view key) {
   const Json* value = find(key);
@@ -247,7 +253,9 @@ std::optional<ObjectReader> ObjectReader::find_object(std::string_view key) {
   return ObjectReader(*value, key_path(key));
 }
 
-void ObjectReader::ignore(std::string_view key) { mark_known(key); }
+void ObjectReader::ignore(std::string_view key) {
+  mark_known(key);
+}
 
 void ObjectReader::finish(const std::vector<std::string>& also_valid) const {
   for (const auto& [key, value] : object_.items()) {
@@ -364,7 +372,8 @@ Json parse_override_value(const std::string& text) {
 void apply_override(Json& document, const std::string& assignment, const std::string& option_name) {
   const auto eq = assignment.find('=');
   apply_override(document, assignment,
-                 parse_override_value(eq == std::string::npos ? std::string() : assignment.substr(eq + 1)), option_name);
+                 parse_override_value(eq == std::string::npos ? std::string() : assignment.substr(eq + 1)),
+                 option_name);
 }
 
 void apply_override(Json& document, const std::string& assignment, Json value, const std::string& option_name) {
@@ -402,7 +411,8 @@ void blame_the_key_set(const InputError& e, const std::vector<std::string>& assi
 
 Json read_json_file(const std::string& file_path) {
   std::error_code ignored;
-  if (std::filesystem::is_directory(file_path, ignored)) throw InputError("file", file_path, "a JSON file, not a directory");
+  if (std::filesystem::is_directory(file_path, ignored))
+    throw InputError("file", file_path, "a JSON file, not a directory");
   std::ifstream in(file_path);
   if (!in) throw InputError("file", file_path, "a readable JSON file");
   std::stringstream buffer;

@@ -1,6 +1,5 @@
 #include "kerf/plot.hpp"
 
-
 #include <fmt/format.h>
 #include <plplot.h>
 
@@ -11,9 +10,9 @@
 #include <limits>
 #include <mutex>
 #include <random>
-#include <utility>
 #include <stdexcept>
 #include <system_error>
+#include <utility>
 
 #include "kerf/error.hpp"
 #include "kerf/io.hpp"
@@ -36,9 +35,15 @@ constexpr std::array<std::array<int, 3>, 8> kPalette = {{{31, 119, 180},
 constexpr int kBandStart = kPaletteStart + static_cast<int>(kPalette.size());  // the same colours, translucent
 constexpr std::array<const char*, 10> kMarkers = {"●", "▲", "■", "◆", "▼", "○", "△", "□", "◇", "▽"};
 
-int palette_index(int color) { return kPaletteStart + std::abs(color) % static_cast<int>(kPalette.size()); }
-int band_index(int color) { return kBandStart + std::abs(color) % static_cast<int>(kPalette.size()); }
-const char* marker_glyph(int marker) { return kMarkers[static_cast<std::size_t>(std::abs(marker)) % kMarkers.size()]; }
+int palette_index(int color) {
+  return kPaletteStart + std::abs(color) % static_cast<int>(kPalette.size());
+}
+int band_index(int color) {
+  return kBandStart + std::abs(color) % static_cast<int>(kPalette.size());
+}
+const char* marker_glyph(int marker) {
+  return kMarkers[static_cast<std::size_t>(std::abs(marker)) % kMarkers.size()];
+}
 
 struct Extent {
   double lo = std::numeric_limits<double>::infinity(), hi = -std::numeric_limits<double>::infinity();
@@ -95,7 +100,8 @@ Points finite_points(const PlotSeries& s) {
 }
 
 /// The inside corner whose box (45 % of the width, 40 % of the height) holds the fewest points and bands.
-std::string best_corner(const FigureSpec& fig, const std::pair<double, double>& xr, const std::pair<double, double>& yr) {
+std::string best_corner(const FigureSpec& fig, const std::pair<double, double>& xr,
+                        const std::pair<double, double>& yr) {
   const std::array<std::string, 4> corners = {"top_left", "top_right", "bottom_right", "bottom_left"};
   std::array<int, 4> counts{};
   const auto count_point = [&](double x, double y) {
@@ -131,7 +137,8 @@ PLINT legend_position(const std::string& where) {
   if (where == "bottom_right") return inside | PL_POSITION_BOTTOM | PL_POSITION_RIGHT;
   if (where == "bottom_left") return inside | PL_POSITION_BOTTOM | PL_POSITION_LEFT;
   if (where == "top_left") return inside | PL_POSITION_TOP | PL_POSITION_LEFT;
-  throw InputError("figure.legend_position", where, "one of 'best', 'top_left', 'top_right', 'bottom_right', 'bottom_left', 'outside_right'");
+  throw InputError("figure.legend_position", where,
+                   "one of 'best', 'top_left', 'top_right', 'bottom_right', 'bottom_left', 'outside_right'");
 }
 
 /// Draws markers as polygons (exactly centred, unlike text glyphs): `marker` 0-4 filled, 5-9 hollow.
@@ -152,10 +159,18 @@ void draw_markers(const Points& p, int marker, double radius_mm) {
     case 0:
       for (int k = 0; k < 32; ++k) outline.emplace_back(std::cos(2 * pi * k / 32), std::sin(2 * pi * k / 32));
       break;
-    case 1: outline = {{0.0, 1.25}, {-1.1, -0.65}, {1.1, -0.65}}; break;
-    case 2: outline = {{-0.88, -0.88}, {0.88, -0.88}, {0.88, 0.88}, {-0.88, 0.88}}; break;
-    case 3: outline = {{0.0, 1.2}, {1.0, 0.0}, {0.0, -1.2}, {-1.0, 0.0}}; break;
-    default: outline = {{0.0, -1.25}, {-1.1, 0.65}, {1.1, 0.65}}; break;
+    case 1:
+      outline = {{0.0, 1.25}, {-1.1, -0.65}, {1.1, -0.65}};
+      break;
+    case 2:
+      outline = {{-0.88, -0.88}, {0.88, -0.88}, {0.88, 0.88}, {-0.88, 0.88}};
+      break;
+    case 3:
+      outline = {{0.0, 1.2}, {1.0, 0.0}, {0.0, -1.2}, {-1.0, 0.0}};
+      break;
+    default:
+      outline = {{0.0, -1.25}, {-1.1, 0.65}, {1.1, 0.65}};
+      break;
   }
   for (std::size_t k = 0; k < p.x.size(); ++k) {
     std::vector<PLFLT> px, py;
@@ -187,10 +202,14 @@ AxisTicks linear_ticks(double lo, double hi) {
   t1 -= np;
   AxisTicks t;
   double t2 = 2.0;
-  if (t1 > 0.7781512503) t2 = 2.0, t.subticks = 4;
-  else if (t1 > 0.4771212549) t2 = 1.0, t.subticks = 5;
-  else if (t1 > 0.1760912591) t2 = 5.0, t.subticks = 5, --np;
-  else t2 = 2.0, t.subticks = 4, --np;
+  if (t1 > 0.7781512503)
+    t2 = 2.0, t.subticks = 4;
+  else if (t1 > 0.4771212549)
+    t2 = 1.0, t.subticks = 5;
+  else if (t1 > 0.1760912591)
+    t2 = 5.0, t.subticks = 5, --np;
+  else
+    t2 = 2.0, t.subticks = 4, --np;
   t.step = t2 * std::pow(10.0, np);
   t.decimals = std::max(-static_cast<int>(std::floor(std::log10(t.step))), 0);
   return t;
@@ -212,8 +231,10 @@ double widest_tick_label(double lo, double hi, const AxisTicks& t) {
 double drawn_length(const std::string& text) {
   double n = 0.0;
   for (std::size_t i = 0; i < text.size(); ++i) {
-    if (text[i] == '#' && i + 1 < text.size() && (text[i + 1] == 'u' || text[i + 1] == 'd')) ++i;
-    else if ((static_cast<unsigned char>(text[i]) & 0xC0) != 0x80) n += 1.0;
+    if (text[i] == '#' && i + 1 < text.size() && (text[i + 1] == 'u' || text[i + 1] == 'd'))
+      ++i;
+    else if ((static_cast<unsigned char>(text[i]) & 0xC0) != 0x80)
+      n += 1.0;
   }
   return n;
 }
@@ -234,7 +255,8 @@ void draw(const FigureSpec& fig, const std::pair<double, double>& xr, const std:
   const double page_w = (page_x1 - page_x0) / char_mm, page_h = (page_y1 - page_y0) / char_mm;  // in characters
   const AxisTicks y_ticks = linear_ticks(yr.first, yr.second);
   const double y_label_disp = std::max(4.6, 0.57 + widest_tick_label(yr.first, yr.second, y_ticks) + 1.15);
-  const double x_half_label = fig.x_log ? 1.0 : 0.5 * widest_tick_label(xr.first, xr.second, linear_ticks(xr.first, xr.second));
+  const double x_half_label =
+      fig.x_log ? 1.0 : 0.5 * widest_tick_label(xr.first, xr.second, linear_ticks(xr.first, xr.second));
   const double left = std::max(0.12, (y_label_disp + 1.25) / page_w);
   // A legend beside the axes: 3 % and 7 % of the axes' width (its offset and its symbols' column), 2.56 characters of
   // spacing and padding and 0.78 of a character per letter at the legend's size (0.8 of the axes'), within the canvas
@@ -357,12 +379,11 @@ void draw(const FigureSpec& fig, const std::pair<double, double>& xr, const std:
   PLFLT legend_width = 0.0, legend_height = 0.0;
   plscol0a(0, 255, 255, 255, 0.9);
   plschr(0.0, 1.0);
-  pllegend(&legend_width, &legend_height, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX,
-           legend_position(legend_where), legend_outside ? 0.03 : 0.02, 0.02, 0.07, 0, kBlack, 1, 0, 0, static_cast<PLINT>(n),
-           opts.data(), 1.0, 1.0, 1.8, 0.0, text_colors.data(), text_ptrs.data(), box_colors.data(),
-           box_patterns.data(), box_scales.data(), box_widths.data(), line_colors.data(), line_styles.data(),
-           line_widths.data(), symbol_colors.data(), symbol_scales.data(), symbol_numbers.data(),
-           symbol_ptrs.data());
+  pllegend(&legend_width, &legend_height, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX, legend_position(legend_where),
+           legend_outside ? 0.03 : 0.02, 0.02, 0.07, 0, kBlack, 1, 0, 0, static_cast<PLINT>(n), opts.data(), 1.0, 1.0,
+           1.8, 0.0, text_colors.data(), text_ptrs.data(), box_colors.data(), box_patterns.data(), box_scales.data(),
+           box_widths.data(), line_colors.data(), line_styles.data(), line_widths.data(), symbol_colors.data(),
+           symbol_scales.data(), symbol_numbers.data(), symbol_ptrs.data());
   plschr(0.0, 1.25);
 }
 
@@ -445,7 +466,8 @@ FigureSpec with_log10_x(FigureSpec fig) {
   };
   for (std::size_t k = 0; k < fig.series.size(); ++k) {
     if (!fig.series[k].x_error.empty()) {
-      throw InputError(fmt::format("figure.series[{}].x_error", k), "(given)", "no x error bars on a logarithmic x axis");
+      throw InputError(fmt::format("figure.series[{}].x_error", k), "(given)",
+                       "no x error bars on a logarithmic x axis");
     }
     to_log(fig.series[k].x, fmt::format("figure.series[{}].x", k));
   }
@@ -480,8 +502,10 @@ void scale_by_a_power_of_ten(FigureSpec& fig, bool x) {
     scale(x ? s.x_error : s.y_error);
   }
   for (auto& b : fig.bands) {
-    if (x) scale(b.x);
-    else scale(b.y_low), scale(b.y_high);
+    if (x)
+      scale(b.x);
+    else
+      scale(b.y_low), scale(b.y_high);
   }
   for (auto* limit : x ? std::array{&fig.x_min, &fig.x_max} : std::array{&fig.y_min, &fig.y_max})
     if (*limit) **limit *= factor;

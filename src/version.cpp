@@ -14,7 +14,9 @@
 
 namespace kerf {
 
-std::string_view version() { return KERF_VERSION; }
+std::string_view version() {
+  return KERF_VERSION;
+}
 
 std::string_view git_commit() {
   return
@@ -31,8 +33,9 @@ std::string command_line(int argc, const char* const* argv) {
   std::string line;
   for (int i = 0; i < argc; ++i) {
     const std::string_view arg = argv[i];
-    const bool plain = !arg.empty() && arg.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
-                                                             "0123456789-_./=:,+@%") == std::string_view::npos;
+    const bool plain = !arg.empty() && arg.find_first_not_of(
+                                           "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                           "0123456789-_./=:,+@%") == std::string_view::npos;
     if (i) line += ' ';
     if (plain) {
       line += arg;
@@ -61,7 +64,8 @@ std::string file_hash_fnv1a64(const std::string& path) {
   return text_hash_fnv1a64(bytes);
 }
 
-Json run_provenance(const std::string& command, const std::string& scene_path, const std::vector<std::string>& overrides) {
+Json run_provenance(const std::string& command, const std::string& scene_path,
+                    const std::vector<std::string>& overrides) {
   const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
   std::tm utc{};
   gmtime_r(&now, &utc);

@@ -107,8 +107,9 @@ int main(int argc, char** argv) {
   run->add_option("--set", sets, "override a scene value: key.path=value (repeatable)");
   run->add_option("--out", out_dir, "output directory (default: out)");
   run->add_option("--threads", threads, "OpenMP threads (default: all)")->check(CLI::Range(1, 1024));
-  run->add_option("--checkpoint-every", options.checkpoint_every,
-                  "write DIR/checkpoint.bin every N samples (tension, compression, cut; calibrate: after every evaluation)")
+  run->add_option(
+         "--checkpoint-every", options.checkpoint_every,
+         "write DIR/checkpoint.bin every N samples (tension, compression, cut; calibrate: after every evaluation)")
       ->check(CLI::Range(1, 100000000));
   run->add_option("--log-every", log_every,
                   "when standard output is not a terminal: a log line every N samples of each stage (0: none; "
@@ -122,30 +123,35 @@ int main(int argc, char** argv) {
   resume->add_option("--log-every", log_every, "as for run: a log line every N samples when stdout is not a terminal")
       ->check(CLI::Range(0, 100000000));
   auto* keys = app.add_subcommand("keys", "print the Markdown key table of the scene sections (docs/dem-keys.md)");
-  keys->add_option("section", section, "one section (" + fmt::format("{}", fmt::join(kerf::dem::scene_sections(), ", ")) +
-                                            "; default: all)");
+  keys->add_option(
+      "section", section,
+      "one section (" + fmt::format("{}", fmt::join(kerf::dem::scene_sections(), ", ")) + "; default: all)");
   std::string study_path;
   kerf::dem::StudyOptions study_options;
   auto* study = app.add_subcommand(
-      "study", std::string("run a study: a scene under several conditions, each on several packings (") +
-                   (kerf::dem::study_mpi_built() ? "under mpirun -np N: across ranks" : "built without MPI: this machine") +
-                   ")");
+      "study",
+      std::string("run a study: a scene under several conditions, each on several packings (") +
+          (kerf::dem::study_mpi_built() ? "under mpirun -np N: across ranks" : "built without MPI: this machine") +
+          ")");
   study->add_option("study", study_path, "study JSON file (keys: kerf-dem keys study)")->required();
   study->add_option("--out", out_dir, "output directory (default: out); items are reused from it on a rerun");
   study->add_option("--threads", threads, "on one machine: threads in all, items side by side (default: all)")
       ->check(CLI::Range(1, 1024));
-  study->add_option("--threads-per-rank", study_options.threads_per_rank,
-                    "under mpirun: OpenMP threads of each worker rank (default: the cores the launcher gives it)")
+  study
+      ->add_option("--threads-per-rank", study_options.threads_per_rank,
+                   "under mpirun: OpenMP threads of each worker rank (default: the cores the launcher gives it)")
       ->check(CLI::Range(1, 1024));
   double checkpoint_minutes = study_options.checkpoint_every_s / 60;
-  study->add_option("--checkpoint-minutes", checkpoint_minutes,
-                    "items of tension, compression, calibrate and cut scenes: a checkpoint every M minutes in "
-                    "OUT/items/.partial-NAME, from which a rerun continues a killed item (default: 10; 0: none)")
+  study
+      ->add_option("--checkpoint-minutes", checkpoint_minutes,
+                   "items of tension, compression, calibrate and cut scenes: a checkpoint every M minutes in "
+                   "OUT/items/.partial-NAME, from which a rerun continues a killed item (default: 10; 0: none)")
       ->check(CLI::Range(0.0, 1e6));
   int study_log_every = 10000;
-  study->add_option("--log-every", study_log_every,
-                    "on one machine, when standard output is not a terminal: besides a line per finished item, a "
-                    "log line every N samples of each item's stages (0: none; default: 10000)")
+  study
+      ->add_option("--log-every", study_log_every,
+                   "on one machine, when standard output is not a terminal: besides a line per finished item, a "
+                   "log line every N samples of each item's stages (0: none; default: 10000)")
       ->check(CLI::Range(0, 100000000));
   const auto error = [](const std::string& what, int status) {
     std::cerr << kProgram << ": error: " << kerf::printable(what) << "\n";

@@ -84,10 +84,11 @@ int run_compare(const std::string& scene_path, const std::vector<std::string>& o
   print_metrics(result.comparison, 6);
   if (result.calibration) {
     const auto& c = *result.calibration;
-    fmt::print("fitted            K_F = {:.6g} MPa (leave-one-out mean |error| {:.2f} %), K_M = {:.6g} MPa "
-               "(leave-one-out {:.2f} %)\n",
-               kerf::units::pa_to_mpa(c.axial.value_Pa), c.axial.loo.mean_abs_error_percent,
-               kerf::units::pa_to_mpa(c.torque.value_Pa), c.torque.loo.mean_abs_error_percent);
+    fmt::print(
+        "fitted            K_F = {:.6g} MPa (leave-one-out mean |error| {:.2f} %), K_M = {:.6g} MPa "
+        "(leave-one-out {:.2f} %)\n",
+        kerf::units::pa_to_mpa(c.axial.value_Pa), c.axial.loo.mean_abs_error_percent,
+        kerf::units::pa_to_mpa(c.torque.value_Pa), c.torque.loo.mean_abs_error_percent);
   }
   if (!result.unused_columns.empty()) {
     fmt::print("unused columns    {} (neither a condition nor a quantity; --map binds them)\n",
@@ -178,8 +179,9 @@ int main(int argc, char** argv) {
   sweep->add_option("--vary", vary, "an axis: key.path=START:STOP:COUNT[:log] or key.path=A,B,C (repeatable)")
       ->required();
   sweep->add_option("--csv", csv, "CSV file to write")->required();
-  sweep->add_option("--plot", plot, "also a figure (.png or .svg with a PDF beside it, or .pdf): cutting and thrust force against the "
-                                    "first varied key, a line per value of the second");
+  sweep->add_option("--plot", plot,
+                    "also a figure (.png or .svg with a PDF beside it, or .pdf): cutting and thrust force against the "
+                    "first varied key, a line per value of the second");
   sweep->add_option("--threads", threads, "threads (default: all cores)")->check(CLI::Range(1, 1024));
 
   std::string experiments, out_dir;

@@ -41,7 +41,10 @@ bool run_cutting(const std::filesystem::path& out, const std::string& case_name,
   const kerf::CuttingValidation v = kerf::run_soda_lime_cutting_validation(out, case_name, replicates);
   for (const auto& file : v.files) fmt::print("wrote {}\n", file.string());
   for (const auto& failure : v.failures) fmt::print(stderr, "FAILED: {}\n", failure);
-  fmt::print("{}: {}\n", case_name, !v.judged ? "REPORTED (a reproduction: no pass or fail)" : v.passed() ? "PASSED" : "FAILED");
+  fmt::print("{}: {}\n", case_name,
+             !v.judged    ? "REPORTED (a reproduction: no pass or fail)"
+             : v.passed() ? "PASSED"
+                          : "FAILED");
   return v.passed();
 #else
   (void)out, (void)replicates;
@@ -54,13 +57,13 @@ bool run_cutting(const std::filesystem::path& out, const std::string& case_name,
 int main(int argc, char** argv) {
   const std::array<std::string, 2> cutting_cases{"soda_lime_cutting", "soda_lime_cutting_cut_fitted"};
   const std::string steady_case = "soda_lime_cutting_steady";
-  CLI::App app{"Regenerates kerf's validation reports end to end (exit 0: bands hold, or a reproduction without bands "
-                "reported; 1: they do not hold; 2: input error)"};
+  CLI::App app{
+      "Regenerates kerf's validation reports end to end (exit 0: bands hold, or a reproduction without bands "
+      "reported; 1: they do not hold; 2: input error)"};
   std::string which;
   std::filesystem::path out;
   int replicates = 0;
-  app.add_option("case", which,
-                 "the case: k9_trepanning, soda_lime_cutting, soda_lime_cutting_cut_fitted or all")
+  app.add_option("case", which, "the case: k9_trepanning, soda_lime_cutting, soda_lime_cutting_cut_fitted or all")
       ->required()
       ->check(CLI::IsMember(
           std::vector<std::string>{"k9_trepanning", cutting_cases[0], cutting_cases[1], steady_case, "all"}));

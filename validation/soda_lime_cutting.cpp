@@ -44,7 +44,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 struct Spec {
   fs::path scene, experiments;
-  std::string note;  ///< printed under the report's title (e.g. what a fitted material was fitted to)
+  std::string note;    ///< printed under the report's title (e.g. what a fitted material was fitted to)
   int replicates = 3;  ///< packings per condition
   std::vector<Condition> conditions;
   /// Whether validation.json gives pass/fail bands (the fitted case's); without them the case is a reproduction
@@ -80,7 +80,8 @@ Spec read_spec(const fs::path& case_dir) {
   if (a.has("regular_force_max_abs_error_vs_paper_dem_percent") || a.has("grooved_to_regular_main_force_ratio_max") ||
       a.has("fitted")) {
     s.bands = true;
-    s.regular_max_error_percent = a.get_number("regular_force_max_abs_error_vs_paper_dem_percent", Range::positive(), "%");
+    s.regular_max_error_percent =
+        a.get_number("regular_force_max_abs_error_vs_paper_dem_percent", Range::positive(), "%");
     s.grooved_ratio_max = a.get_number("grooved_to_regular_main_force_ratio_max", Range::positive(), "");
     if (auto fitted = a.find_object("fitted")) {
       s.fitted_depth_of_cut_mm = fitted->get_number("depth_of_cut_mm", Range::positive(), "mm");
@@ -184,7 +185,8 @@ ConditionResult collect(const Condition& c, const std::vector<Json>& items) {
 /// "main_force_per_width", ...): the report layer's means of the replicates, SI in that view's basis.
 const GroupComparison& group_of(const Comparison& comparison, const std::string& key, const std::string& surface,
                                 double depth_mm) {
-  const std::vector<ConditionValue> wanted{ConditionValue::label(surface), ConditionValue::number(units::mm_to_m(depth_mm))};
+  const std::vector<ConditionValue> wanted{ConditionValue::label(surface),
+                                           ConditionValue::number(units::mm_to_m(depth_mm))};
   for (const auto& g : comparison.result(key).groups)
     if (conditions_match(g.conditions, wanted, 1e-6)) return g;
   throw InputError("validation.experiments", fmt::format("{} {} mm", surface, depth_mm), "rows for this condition");
@@ -192,7 +194,8 @@ const GroupComparison& group_of(const Comparison& comparison, const std::string&
 
 /// The measured side's mean of one condition in a comparison (the experiments in vs_experiment, the paper's DEM in
 /// vs_paper_dem), SI in the basis of the result `key`.
-double reference_mean(const Comparison& comparison, const std::string& key, const std::string& surface, double depth_mm) {
+double reference_mean(const Comparison& comparison, const std::string& key, const std::string& surface,
+                      double depth_mm) {
   return group_of(comparison, key, surface, depth_mm).measured_stats.mean;
 }
 
@@ -206,7 +209,8 @@ ReferenceCells reference_cells(const Condition& c, const Comparison& vs_experime
   ReferenceCells cells;
   if (c.groove_shape == "trapezoidal") return cells;
   const auto pair = [&](const Comparison& comparison, const std::string& suffix, double scale, const char* format) {
-    return fmt::format(fmt::runtime(format), scale * reference_mean(comparison, "main_force" + suffix, c.surface, c.depth_of_cut_mm),
+    return fmt::format(fmt::runtime(format),
+                       scale * reference_mean(comparison, "main_force" + suffix, c.surface, c.depth_of_cut_mm),
                        scale * reference_mean(comparison, "thrust_force" + suffix, c.surface, c.depth_of_cut_mm));
   };
   cells.paper = pair(vs_dem, "", 1, "{:.2f} / {:.2f}");
@@ -218,34 +222,45 @@ ReferenceCells reference_cells(const Condition& c, const Comparison& vs_experime
 
 Json comparison_document(const fs::path& experiments, const fs::path& kerf_csv, const std::string& title,
                          bool against_paper_dem) {
-  const Json conditions = Json::array({Json{{"key", "surface"}, {"label", "Surface"}, {"text", true}},
-                                       Json{{"key", "depth_of_cut"}, {"label", "Depth of cut a#dc#u"}, {"unit", "mm"}}});
+  const Json conditions =
+      Json::array({Json{{"key", "surface"}, {"label", "Surface"}, {"text", true}},
+                   Json{{"key", "depth_of_cut"}, {"label", "Depth of cut a#dc#u"}, {"unit", "mm"}}});
   const Json quantities = Json::array({Json{{"key", "main_force"}, {"label", "Main force F#dc#u"}, {"unit", "N"}},
                                        Json{{"key", "thrust_force"}, {"label", "Thrust force F#dt#u"}, {"unit", "N"}}});
-  const Json columns{{"surface", "surface"}, {"depth_of_cut", "depth_of_cut_mm"}, {"main_force", "main_force_N"},
+  const Json columns{{"surface", "surface"},
+                     {"depth_of_cut", "depth_of_cut_mm"},
+                     {"main_force", "main_force_N"},
                      {"thrust_force", "thrust_force_N"}};
   const auto set = [&](const fs::path& file, const std::string& name, const std::string& source) {
-    return Json{{"file", file.string()}, {"name", name}, {"filter", {{"source", source}}},
-                {"width", {{"column_mm", "width_mm"}}}, {"columns", columns}};
+    return Json{{"file", file.string()},
+                {"name", name},
+                {"filter", {{"source", source}}},
+                {"width", {{"column_mm", "width_mm"}}},
+                {"columns", columns}};
   };
   Json doc{{"title", title}, {"conditions", conditions}, {"quantities", quantities}};
   if (against_paper_dem) {
     doc["description"] =
-        "kerf-dem (mean of the replicates) against the paper's DEM replicates (Yang et al. 2018, Table 4); both 1 mm wide.";
+        "kerf-dem (mean of the replicates) against the paper's DEM replicates (Yang et al. 2018, Table 4); both 1 mm "
+        "wide.";
     doc["views"] = Json::array({"as_published"});
     doc["measured"] = set(experiments, "paper's DEM (Table 4)", "paper_dem");
     doc["predictions"] = Json::array({set(kerf_csv, "kerf-dem", "kerf_dem")});
   } else {
-    doc["description"] = "Experiments (Yang et al. 2018, Table 6, 25.4 mm wide) against the paper's DEM (Table 4, 1 mm) "
-                         "and kerf-dem (1 mm): the paper's direct comparison and the per-unit-width one.";
+    doc["description"] =
+        "Experiments (Yang et al. 2018, Table 6, 25.4 mm wide) against the paper's DEM (Table 4, 1 mm) "
+        "and kerf-dem (1 mm): the paper's direct comparison and the per-unit-width one.";
     doc["views"] = Json::array({"as_published", "per_unit_width"});
     doc["measured"] = set(experiments, "experiment (Table 6)", "experiment");
-    doc["predictions"] = Json::array({set(experiments, "paper's DEM (Table 4)", "paper_dem"), set(kerf_csv, "kerf-dem", "kerf_dem")});
+    doc["predictions"] =
+        Json::array({set(experiments, "paper's DEM (Table 4)", "paper_dem"), set(kerf_csv, "kerf-dem", "kerf_dem")});
   }
   return doc;
 }
 
-std::string pct(double x) { return fmt::format("{:+.1f} %", 100 * x); }
+std::string pct(double x) {
+  return fmt::format("{:+.1f} %", 100 * x);
+}
 
 /// The condition with these grooves and depth of cut, or null.
 const ConditionResult* find_condition(const std::map<std::string, ConditionResult>& results, const std::string& shape,
@@ -256,7 +271,9 @@ const ConditionResult* find_condition(const std::map<std::string, ConditionResul
 }
 
 /// "0.123" with enough digits for a ratio or force; "—" for NaN (no standard error).
-std::string num(double x, int digits = 3) { return std::isfinite(x) ? fmt::format("{:.{}g}", x, digits) : "—"; }
+std::string num(double x, int digits = 3) {
+  return std::isfinite(x) ? fmt::format("{:.{}g}", x, digits) : "—";
+}
 
 /// One trend, a ratio of two condition means, against the experiments' same ratio: summary.json's row and the
 /// report's line. The ratio's standard error to first order (ratio_of), its 95 % interval value +- q standard
@@ -270,8 +287,8 @@ struct TrendCheck {
 };
 constexpr double kAgreementMargin = 0.5;
 
-TrendCheck trend_check(const std::string& id, const std::string& what, const Estimate& num_est,
-                       const Estimate& den_est, std::optional<double> experiment, std::optional<double> paper_dem) {
+TrendCheck trend_check(const std::string& id, const std::string& what, const Estimate& num_est, const Estimate& den_est,
+                       std::optional<double> experiment, std::optional<double> paper_dem) {
   const Estimate e = ratio_of(num_est, den_est);
   const double q = quantile95(e.degrees_of_freedom);
   const double lo = e.value - q * e.standard_error, hi = e.value + q * e.standard_error;
@@ -308,8 +325,8 @@ TrendCheck trend_check(const std::string& id, const std::string& what, const Est
       fmt::format("- {} **{}**: {:.3f} ± {} (95 % interval {} to {}{}); experiment {}, paper's DEM {}{}\n", verdict,
                   what, e.value, num(e.standard_error, 2), num(lo), num(hi),
                   std::isfinite(e.degrees_of_freedom) ? fmt::format(", df {:.1f}", e.degrees_of_freedom) : "",
-                  experiment ? fmt::format("{:.3f}", *experiment) : "—", paper_dem ? fmt::format("{:.3f}", *paper_dem) : "—",
-                  detail);
+                  experiment ? fmt::format("{:.3f}", *experiment) : "—",
+                  paper_dem ? fmt::format("{:.3f}", *paper_dem) : "—", detail);
   return {row, line, verdict};
 }
 
@@ -324,17 +341,17 @@ void seed000_trends(const std::map<std::string, ConditionResult>& results, const
   const auto force_of = [](const ConditionResult& r, const std::string& force) {
     return force == "main" ? r.main() : r.thrust();
   };
-  const auto reference_ratio = [&](const Comparison& comparison, const std::string& force, const std::string& num_surface,
-                                   double num_depth, const std::string& den_surface, double den_depth) {
+  const auto reference_ratio = [&](const Comparison& comparison, const std::string& force,
+                                   const std::string& num_surface, double num_depth, const std::string& den_surface,
+                                   double den_depth) {
     return reference_mean(comparison, force + "_force", num_surface, num_depth) /
            reference_mean(comparison, force + "_force", den_surface, den_depth);
   };
-  if (const auto *a = find_condition(results, "none", 0.1), *b = find_condition(results, "none", 0.2); a && b)
+  if (const auto* a = find_condition(results, "none", 0.1), *b = find_condition(results, "none", 0.2); a && b)
     for (const auto& force : forces)
       trend(fmt::format("depth_effect_regular_{}_force", force),
             fmt::format("depth effect: regular {} force, 0.2 mm / 0.1 mm", force), force_of(*b, force),
-            force_of(*a, force),
-            reference_ratio(vs_experiment, force, "regular", 0.2, "regular", 0.1),
+            force_of(*a, force), reference_ratio(vs_experiment, force, "regular", 0.2, "regular", 0.1),
             reference_ratio(vs_dem, force, "regular", 0.2, "regular", 0.1));
   for (double depth : {0.1, 0.2}) {
     const ConditionResult *regular = find_condition(results, "none", depth),
@@ -409,9 +426,11 @@ std::string replicates_report(const Spec& spec, const std::map<std::string, Cond
     const double exp_main = ref(vs_experiment, "main_force_per_width"),
                  exp_thrust = ref(vs_experiment, "thrust_force_per_width");
     const double dem_main = ref(vs_dem, "main_force"), dem_thrust = ref(vs_dem, "thrust_force");
-    const double kerf_main = r.main_n / units::mm_to_m(r.width_mm), kerf_thrust = r.thrust_n / units::mm_to_m(r.width_mm);
+    const double kerf_main = r.main_n / units::mm_to_m(r.width_mm),
+                 kerf_thrust = r.thrust_n / units::mm_to_m(r.width_mm);
     md += fmt::format(
-        "| {} | {:.2f} ± {:.2f} | {:.2f} ± {:.2f} | {} | {} | {} | {}, {} | {}, {} | {:.0f} + {:.0f} ({:.0f} / {:.0f}) | "
+        "| {} | {:.2f} ± {:.2f} | {:.2f} ± {:.2f} | {} | {} | {} | {}, {} | {}, {} | {:.0f} + {:.0f} ({:.0f} / {:.0f}) "
+        "| "
         "{:.0f} | {:.0f}, {:.0f} | {:.0f} |\n",
         c.name, r.main_n, r.main_std_n, r.thrust_n, r.thrust_std_n, paper, experiment, per_mm,
         num(kerf_main / exp_main, 2), num(kerf_thrust / exp_thrust, 2), num(r.main_n / dem_main, 2),
@@ -467,8 +486,11 @@ std::string replicates_report(const Spec& spec, const std::map<std::string, Cond
       const std::string spread = fmt::format("{:.4g} ± {:.2g} (standard error; {})", value, standard_error,
                                              resolved ? "resolved: 2 or more of them from the band's edge"
                                                       : "not resolved: within 2 of them of the band's edge");
-      Json row{
-          {"check", what}, {"value", value}, {"standard_error", standard_error}, {"band", band}, {"resolved", resolved}};
+      Json row{{"check", what},
+               {"value", value},
+               {"standard_error", standard_error},
+               {"band", band},
+               {"resolved", resolved}};
       if (fitted) {
         row["fitted"] = true;
         checks.push_back(row);
@@ -496,8 +518,8 @@ std::string replicates_report(const Spec& spec, const std::map<std::string, Cond
           // error = kerf / paper - 1: its standard error is the ratio's.
           const double error_se =
               ratio_of(label == "main" ? regular->main() : regular->thrust(), paper_mean).standard_error;
-          check(fmt::format("regular {} mm: {} force vs the paper's DEM mean ({:.2f} N), relative error", depth,
-                            label, paper),
+          check(fmt::format("regular {} mm: {} force vs the paper's DEM mean ({:.2f} N), relative error", depth, label,
+                            paper),
                 error, error_se, std::abs(error) - band, std::abs(error) <= band,
                 fmt::format("|error| <= {:g} %", spec.regular_max_error_percent),
                 label == spec.fitted_force && std::abs(depth - spec.fitted_depth_of_cut_mm) < 1e-9);
@@ -513,14 +535,18 @@ std::string replicates_report(const Spec& spec, const std::map<std::string, Cond
   }
   md += "\n## Expected physics and beyond the paper (reported, not bands)\n\n";
   Json physics = Json::object();
-  if (const auto *a = find_condition(results, "none", 0.1), *b = find_condition(results, "none", 0.2); a && b) {
+  if (const auto* a = find_condition(results, "none", 0.1), *b = find_condition(results, "none", 0.2); a && b) {
     const Estimate main = ratio_of(b->main(), a->main()), thrust = ratio_of(b->thrust(), a->thrust());
     md += fmt::format(
         "- Regular, 0.1 -> 0.2 mm: main force {} ± {:.0f} %, thrust {} ± {:.0f} % (standard errors; the "
         "paper's DEM: {}, {}).\n",
         pct(main.value - 1), 100 * main.standard_error, pct(thrust.value - 1), 100 * thrust.standard_error,
-        pct(reference_mean(vs_dem, "main_force", "regular", 0.2) / reference_mean(vs_dem, "main_force", "regular", 0.1) - 1),
-        pct(reference_mean(vs_dem, "thrust_force", "regular", 0.2) / reference_mean(vs_dem, "thrust_force", "regular", 0.1) - 1));
+        pct(reference_mean(vs_dem, "main_force", "regular", 0.2) /
+                reference_mean(vs_dem, "main_force", "regular", 0.1) -
+            1),
+        pct(reference_mean(vs_dem, "thrust_force", "regular", 0.2) /
+                reference_mean(vs_dem, "thrust_force", "regular", 0.1) -
+            1));
     physics["regular_main_force_change_0.1_to_0.2"] = b->main_n / a->main_n - 1;
   }
   for (double depth : {0.1, 0.2}) {
@@ -540,9 +566,10 @@ std::string replicates_report(const Spec& spec, const std::map<std::string, Cond
       physics[fmt::format("grooved_vs_regular_steady_subsurface_depth_change_{}", depth)] =
           rect->subsurface_steady_depth_um / regular->subsurface_steady_depth_um - 1;
     if (rect && trap) {
-      md += fmt::format("- {} mm, trapezoidal vs rectangular grooves (the paper's suspected cause of its thrust error): thrust "
-                        "{:.2f} vs {:.2f} N ({}), main {:.2f} vs {:.2f} N.\n",
-                        depth, trap->thrust_n, rect->thrust_n, pct(trap->thrust_n / rect->thrust_n - 1), trap->main_n, rect->main_n);
+      md += fmt::format(
+          "- {} mm, trapezoidal vs rectangular grooves (the paper's suspected cause of its thrust error): thrust "
+          "{:.2f} vs {:.2f} N ({}), main {:.2f} vs {:.2f} N.\n",
+          depth, trap->thrust_n, rect->thrust_n, pct(trap->thrust_n / rect->thrust_n - 1), trap->main_n, rect->main_n);
       physics[fmt::format("trapezoidal_vs_rectangular_thrust_change_{}", depth)] = trap->thrust_n / rect->thrust_n - 1;
     }
   }
@@ -557,8 +584,9 @@ std::string replicates_report(const Spec& spec, const std::map<std::string, Cond
   md += fmt::format("- Differs from the experiments, resolved: {}.\n", list("DISAGREES"));
   md += fmt::format("- Not resolved (no standard error, or an interval too wide to tell): {}.\n", list("UNRESOLVED"));
   if (!spec.bands)
-    md += "- No pass or fail: a reproduction of the paper's method (why: above). The acceptance of the trends is "
-          "`../soda_lime_cutting_steady/`'s.\n";
+    md +=
+        "- No pass or fail: a reproduction of the paper's method (why: above). The acceptance of the trends is "
+        "`../soda_lime_cutting_steady/`'s.\n";
   Json verdicts = Json::object();
   for (const char* v : {"AGREES", "DISAGREES", "UNRESOLVED"}) verdicts[v] = by_verdict[v];
   summary = Json{{"role", spec.bands ? "bands" : "reproduction"},
@@ -629,11 +657,11 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
   std::vector<std::string> header{"source", "surface", "groove_shape", "depth_of_cut_mm", "replicate", "seed"};
   header.insert(header.end(), kReplicateColumns.begin(), kReplicateColumns.end());
   std::string rows = csv_line(header);
-  std::string means = csv_line({"source", "surface", "groove_shape", "depth_of_cut_mm", "width_mm", "main_force_N",
-                                "main_force_replicate_std_N", "thrust_force_N", "thrust_force_replicate_std_N",
-                                "cracks_tensile", "cracks_shear", "cracks_chip", "cracks_subsurface",
-                                "subsurface_damage_depth_um", "cracks_subsurface_steady",
-                                "subsurface_damage_depth_steady_um"});
+  std::string means =
+      csv_line({"source", "surface", "groove_shape", "depth_of_cut_mm", "width_mm", "main_force_N",
+                "main_force_replicate_std_N", "thrust_force_N", "thrust_force_replicate_std_N", "cracks_tensile",
+                "cracks_shear", "cracks_chip", "cracks_subsurface", "subsurface_damage_depth_um",
+                "cracks_subsurface_steady", "subsurface_damage_depth_steady_um"});
   for (const auto& c : spec.conditions) {
     const ConditionResult& r = results.at(c.name);
     const std::string source = c.groove_shape == "trapezoidal" ? "kerf_dem_trapezoidal" : "kerf_dem";
@@ -660,11 +688,13 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
   // 3. Through the report layer: against the experiments (both width views) and against the paper's DEM.
   const fs::path means_csv = fs::absolute(out_dir / "kerf_dem_means.csv");
   std::map<std::string, Comparison> comparisons;
-  for (const auto& [name, against_dem] : std::vector<std::pair<std::string, bool>>{{"vs_experiment", false}, {"vs_paper_dem", true}}) {
+  for (const auto& [name, against_dem] :
+       std::vector<std::pair<std::string, bool>>{{"vs_experiment", false}, {"vs_paper_dem", true}}) {
     const Json doc = comparison_document(
         fs::absolute(spec.experiments), means_csv,
-        against_dem ? "Soda-lime glass, orthogonal cutting: kerf-dem vs the paper's DEM (Yang et al. 2018)"
-                    : "Soda-lime glass, orthogonal cutting: experiment vs the paper's DEM and kerf-dem (Yang et al. 2018)",
+        against_dem
+            ? "Soda-lime glass, orthogonal cutting: kerf-dem vs the paper's DEM (Yang et al. 2018)"
+            : "Soda-lime glass, orthogonal cutting: experiment vs the paper's DEM and kerf-dem (Yang et al. 2018)",
         against_dem);
     write_file_atomically(out_dir / (name + ".json"), doc.dump(2) + "\n");
     const Comparison& comparison = comparisons[name] = run_comparison(parse_comparison_config(doc, out_dir));
@@ -679,11 +709,12 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
   Json summary_doc;
   std::string md = "# Validation: soda-lime glass, orthogonal cutting (Yang et al. 2018)\n\n" +
                    replicates_report(spec, results, vs_experiment, vs_dem, v.failures, summary_doc);
-  md += "\nReports through the report layer: [vs_experiment/report.md](vs_experiment/report.md) (the paper's direct "
-        "comparison and the per-unit-width one), [vs_paper_dem/report.md](vs_paper_dem/report.md). Per-replicate "
-        "results: `kerf_dem_replicates.csv`; each run's forces, cracks and picture: "
-        "`study/items/condition_<c>_seed_<s>/` (the conditions in validation.json's order; `study/items.csv` lists "
-        "them).\n";
+  md +=
+      "\nReports through the report layer: [vs_experiment/report.md](vs_experiment/report.md) (the paper's direct "
+      "comparison and the per-unit-width one), [vs_paper_dem/report.md](vs_paper_dem/report.md). Per-replicate "
+      "results: `kerf_dem_replicates.csv`; each run's forces, cracks and picture: "
+      "`study/items/condition_<c>_seed_<s>/` (the conditions in validation.json's order; `study/items.csv` lists "
+      "them).\n";
   for (const char* name : {"regular_0.1", "grooved_0.1"}) {
     const auto r = results.find(name);
     if (r == results.end() || r->second.directories.empty()) continue;

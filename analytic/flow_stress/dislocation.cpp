@@ -29,7 +29,7 @@ double boundary_dislocation_density(const DislocationParams& d, Guards* guards) 
 }
 
 double dislocation_stress(const DislocationParams& d, Guards* guards) {
-  const double total_density = d.interior_density_per_m2 + boundary_dislocation_density(d, guards);  // Eq. 4
+  const double total_density = d.interior_density_per_m2 + boundary_dislocation_density(d, guards);       // Eq. 4
   return d.taylor_factor * d.alpha * d.shear_modulus_Pa * d.burgers_vector_m * std::sqrt(total_density);  // Eq. 6
 }
 

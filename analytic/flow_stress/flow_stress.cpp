@@ -27,7 +27,7 @@ FlowStress flow_stress(const FlowStressModel& model, const DeformationState& sta
     out.shear_Pa = out.total_Pa / std::sqrt(3.0);
     return out;
   }
-  const JohnsonCookParams* softening_law = model.johnson_cook         ? &*model.johnson_cook
+  const JohnsonCookParams* softening_law = model.johnson_cook        ? &*model.johnson_cook
                                            : model.thermal_softening ? &*model.thermal_softening
                                                                      : nullptr;
   const double melt_K = softening_law ? softening_law->melting_temperature_K : model.melting_temperature_K;

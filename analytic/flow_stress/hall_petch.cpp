@@ -14,7 +14,7 @@ void HallPetchParams::validate(const std::string& path) const {
   check_field(critical_grain_size_m * 1e9, path, "critical_grain_size_nm", Range::non_negative(), "nm");
   if (coefficient_Pa_sqrt_m) {
     check_field(*coefficient_Pa_sqrt_m * 1e-6, path, "hall_petch_coefficient_MPa_sqrt_m", Range::non_negative(),
-                 "MPa m^0.5");
+                "MPa m^0.5");
     return;
   }
   check_field(shear_modulus_Pa * 1e-9, path, "shear_modulus_GPa", Range::positive(), "GPa");
@@ -26,9 +26,8 @@ void HallPetchParams::validate(const std::string& path) const {
 double hall_petch_coefficient(const HallPetchParams& hp) {
   if (hp.coefficient_Pa_sqrt_m) return *hp.coefficient_Pa_sqrt_m;
   const double tau_b = hp.grain_boundary_stress_ratio * hp.shear_modulus_Pa;  // Eq. 11
-  return hp.taylor_factor *
-         std::sqrt(tau_b * 4.0 * hp.shear_modulus_Pa * hp.burgers_vector_m /
-                   ((1.0 - hp.poissons_ratio) * std::numbers::pi));  // Eq. 10
+  return hp.taylor_factor * std::sqrt(tau_b * 4.0 * hp.shear_modulus_Pa * hp.burgers_vector_m /
+                                      ((1.0 - hp.poissons_ratio) * std::numbers::pi));  // Eq. 10
 }
 
 double hall_petch_stress(const HallPetchParams& hp, Guards* guards) {

@@ -1,8 +1,8 @@
 #include "kerf/analytic/flow_stress/hardness_flow.hpp"
 
-#include <boost/math/tools/roots.hpp>
 #include <fmt/format.h>
 
+#include <boost/math/tools/roots.hpp>
 #include <cmath>
 #include <limits>
 
@@ -13,7 +13,9 @@
 namespace kerf {
 
 namespace {
-double johnson_tan_beta() { return std::tan(units::deg_to_rad(kVickersConeInclinationDeg)); }
+double johnson_tan_beta() {
+  return std::tan(units::deg_to_rad(kVickersConeInclinationDeg));
+}
 
 /// The modulus of each form: E for Marsh, E* = E / (1 - nu^2) for Johnson's cavity.
 double form_modulus_Pa(ConstraintModel model, double youngs_modulus_Pa, double poissons_ratio) {
@@ -31,19 +33,24 @@ double log_ratio_at_unit_constraint(ConstraintModel model) {
 
 std::string_view constraint_model_name(ConstraintModel model) {
   switch (model) {
-    case ConstraintModel::given: return "hardness";
-    case ConstraintModel::marsh: return "hardness_marsh";
-    case ConstraintModel::johnson_cavity: return "hardness_johnson";
+    case ConstraintModel::given:
+      return "hardness";
+    case ConstraintModel::marsh:
+      return "hardness_marsh";
+    case ConstraintModel::johnson_cavity:
+      return "hardness_johnson";
   }
   return "hardness";
 }
 
 double constraint_factor(ConstraintModel model, double modulus_over_yield, double) {
   switch (model) {
-    case ConstraintModel::marsh: return kMarshB + kMarshK * std::log(modulus_over_yield);
+    case ConstraintModel::marsh:
+      return kMarshB + kMarshK * std::log(modulus_over_yield);
     case ConstraintModel::johnson_cavity:
       return 2.0 / 3.0 * (1.0 + std::log(modulus_over_yield * johnson_tan_beta() / 3.0));
-    case ConstraintModel::given: break;
+    case ConstraintModel::given:
+      break;
   }
   throw std::logic_error("constraint_factor: the given form has no modulus dependence");
 }

@@ -18,7 +18,7 @@ void JohnsonCookParams::validate(const std::string& path) const {
   check_field(reference_strain_rate_per_s, path, "reference_strain_rate_per_s", Range::positive(), "1/s");
   check_field(room_temperature_K, path, "room_temperature_K", Range::positive(), "K");
   check_field(melting_temperature_K, path, "melting_temperature_K", Range::above(room_temperature_K),
-               "K (above room_temperature_K)");
+              "K (above room_temperature_K)");
   if (A_Pa + B_Pa <= 0.0) throw InputError(field("A_MPa"), "0", "A + B > 0 (a material with strength)");
 }
 
@@ -33,8 +33,8 @@ double johnson_cook_hardening(const JohnsonCookParams& jc, double strain, Guards
   return jc.A_Pa + jc.B_Pa * std::pow(strain, jc.n);
 }
 
-double johnson_cook_rate_factor(const JohnsonCookParams& jc, const JohnsonCookPolicy& policy,
-                                double strain_rate_per_s, Guards* guards) {
+double johnson_cook_rate_factor(const JohnsonCookParams& jc, const JohnsonCookPolicy& policy, double strain_rate_per_s,
+                                Guards* guards) {
   if (!(strain_rate_per_s >= 0.0) || !std::isfinite(strain_rate_per_s)) {
     throw InputError("strain_rate_per_s", format_value(strain_rate_per_s), "a finite, non-negative strain rate");
   }
@@ -51,8 +51,8 @@ double johnson_cook_rate_factor(const JohnsonCookParams& jc, const JohnsonCookPo
   return 1.0 + jc.C * std::log(ratio);
 }
 
-double johnson_cook_thermal_factor(const JohnsonCookParams& jc, const JohnsonCookPolicy& policy,
-                                   double temperature_K, Guards* guards) {
+double johnson_cook_thermal_factor(const JohnsonCookParams& jc, const JohnsonCookPolicy& policy, double temperature_K,
+                                   Guards* guards) {
   if (!std::isfinite(temperature_K) || temperature_K <= 0.0) {
     throw InputError("temperature_K", format_value(temperature_K), "a finite absolute temperature > 0 K");
   }
@@ -70,7 +70,8 @@ double johnson_cook_thermal_factor(const JohnsonCookParams& jc, const JohnsonCoo
     raise(guards, Guard::temperature_below_room);
     return 1.0;
   }
-  const double homologous = (temperature_K - jc.room_temperature_K) / (jc.melting_temperature_K - jc.room_temperature_K);
+  const double homologous =
+      (temperature_K - jc.room_temperature_K) / (jc.melting_temperature_K - jc.room_temperature_K);
   // m = 1 is the common case (steels, aluminium, SiC here); pow() is a fifth of an Oxley solve's time.
   return 1.0 - (jc.m == 1.0 ? homologous : std::pow(homologous, jc.m));
 }

@@ -34,7 +34,9 @@ constexpr SceneKeyOf kSceneKeys[] = {{"uncut_chip_thickness_m", "cut.uncut_chip_
 
 constexpr char kClosure[] = "friction_closure", kLowerLimit[] = "lower_limit", kPloughing[] = "ploughing";
 
-std::optional<QuadratureRule> quadrature_rule(std::string_view name) { return quadrature_rule_from_name(name); }
+std::optional<QuadratureRule> quadrature_rule(std::string_view name) {
+  return quadrature_rule_from_name(name);
+}
 
 std::span<const std::string_view> quadrature_names() {
   static const std::vector<std::string_view> names(quadrature_rule_names().begin(), quadrature_rule_names().end());
@@ -118,9 +120,12 @@ void nominal_shear_angle(const AnalyticScene& scene, Prediction& p) {
 /// The deformation state the flow stress is evaluated at, by models.deformation.
 DeformationState deformation_state(const AnalyticScene& scene, const OxleyResult* oxley, double shear_angle_rad) {
   switch (scene.deformation) {
-    case DeformationModel::given: return *scene.given_state;
-    case DeformationModel::room_temperature: return shear_plane_state(scene, shear_angle_rad);
-    case DeformationModel::oxley: return shear_plane_state_of(*oxley);
+    case DeformationModel::given:
+      return *scene.given_state;
+    case DeformationModel::room_temperature:
+      return shear_plane_state(scene, shear_angle_rad);
+    case DeformationModel::oxley:
+      return shear_plane_state_of(*oxley);
   }
   return {};
 }
@@ -151,18 +156,19 @@ const FieldTable<ChipTermParams>& chip_term_fields() {
           "model on the chord of the engaged arc, added to the chip term; `none`: no such force (0 N inside the "
           "ploughed layer)",
           [](auto& s) -> auto& { return s.ploughing; }),
-      number_at<ChipTermParams>("lower_limit_margin_deg", units::kDeg, Range::open(0.0, 45.0),
-                                "margin above the pole (and above -pi/2 for the Merchant closure, whose thrust diverges "
-                                "there)",
-                                [](auto& s) -> auto& { return s.liu_li.lower_limit_margin_rad; })};
+      number_at<ChipTermParams>(
+          "lower_limit_margin_deg", units::kDeg, Range::open(0.0, 45.0),
+          "margin above the pole (and above -pi/2 for the Merchant closure, whose thrust diverges "
+          "there)",
+          [](auto& s) -> auto& { return s.liu_li.lower_limit_margin_rad; })};
   return table;
 }
 
 const FieldTable<QuadratureSettings>& quadrature_fields() {
   static const FieldTable<QuadratureSettings> table{
-      mapped_choice<QuadratureSettings, QuadratureRule>("rule", quadrature_names(),
-                                                        "the rule (docs/performance.md: the cost and error of each)",
-                                                        [](auto& q) -> auto& { return q.rule; }, &quadrature_rule),
+      mapped_choice<QuadratureSettings, QuadratureRule>(
+          "rule", quadrature_names(), "the rule (docs/performance.md: the cost and error of each)",
+          [](auto& q) -> auto& { return q.rule; }, &quadrature_rule),
       number_field("tolerance", units::kSi("(relative)"), Range::open(0.0, 1.0), "relative tolerance",
                    &QuadratureSettings::relative_tolerance),
       int_field("max_depth", 1, 20, "adaptive bisection depth (Boost) or 2^max_depth intervals (GSL)",
@@ -198,19 +204,20 @@ void predict_chip_forces(const AnalyticScene& scene, const OxleyResult* oxley, b
     p.liu_li = liu_li;
   }
   if (liu_li.rake_face_ploughs) {
-    p.warnings.push_back(fmt::format("rake {:.4g} deg lies below the {} cut-off {:.4g} deg: no chip forms, the whole "
-                                     "cut is ploughed (chip force zero)",
-                                     units::rad_to_deg(scene.rake_rad),
-                                     lower_limit_rule_name(scene.chip.liu_li.lower_limit),
-                                     units::rad_to_deg(liu_li.cut_off_rad)));
+    p.warnings.push_back(
+        fmt::format("rake {:.4g} deg lies below the {} cut-off {:.4g} deg: no chip forms, the whole "
+                    "cut is ploughed (chip force zero)",
+                    units::rad_to_deg(scene.rake_rad), lower_limit_rule_name(scene.chip.liu_li.lower_limit),
+                    units::rad_to_deg(liu_li.cut_off_rad)));
   }
   // The ploughing term under the edge: the wave model on the chord of the arc below h_p = min(t0, h_s).
   ForcePerWidth ploughing;
   if (p.liu_li && scene.chip.ploughing == PloughingModel::wave && params.edge_radius_m > 0.0) {
     p.friction_factor = ploughing_friction_factor(scene, beta);
     const EdgePloughingParams plough{.edge_radius_m = params.edge_radius_m, .friction_factor = p.friction_factor};
-    p.ploughing = naming_scene_keys(
-        kSceneKeys, [&] { return edge_ploughing_force_per_width(plough, k_s, liu_li.ploughed_thickness_m, &p.guards); });
+    p.ploughing = naming_scene_keys(kSceneKeys, [&] {
+      return edge_ploughing_force_per_width(plough, k_s, liu_li.ploughed_thickness_m, &p.guards);
+    });
     ploughing = p.ploughing->force;
   }
   p.cutting_force_N = (liu_li.total.cutting_N_per_m + ploughing.cutting_N_per_m) * scene.width_m;
@@ -264,7 +271,8 @@ void print_edge_details(std::FILE* text, const AnalyticScene& scene, const Predi
              l.edge.cutting_N_per_m * p.width_m, l.edge.thrust_N_per_m * p.width_m);
   if (p.ploughing) {
     const auto& w = *p.ploughing;
-    fmt::print(text, "ploughing part    cutting {:.6g} N, thrust {:.6g} N (wave model, f = {:.4g}, chord {:.6g} um at "
+    fmt::print(text,
+               "ploughing part    cutting {:.6g} N, thrust {:.6g} N (wave model, f = {:.4g}, chord {:.6g} um at "
                "{:.4g} deg)\n",
                w.force.cutting_N_per_m * p.width_m, w.force.thrust_N_per_m * p.width_m, p.friction_factor,
                m_to_um(w.chord_m), rad_to_deg(w.factors.attack_angle_rad));

@@ -12,9 +12,12 @@ namespace kerf {
 
 std::string_view contact_length_model_name(ContactLengthModel model) {
   switch (model) {
-    case ContactLengthModel::altintas: return "altintas";
-    case ContactLengthModel::vinogradov: return "vinogradov";
-    case ContactLengthModel::lee_shaffer: return "lee_shaffer";
+    case ContactLengthModel::altintas:
+      return "altintas";
+    case ContactLengthModel::vinogradov:
+      return "vinogradov";
+    case ContactLengthModel::lee_shaffer:
+      return "lee_shaffer";
   }
   return "";
 }
@@ -26,9 +29,9 @@ double length_ratio(ContactLengthModel model, double shear_angle_rad, double fri
     return std::sin(shear_angle_rad + friction_angle_rad - rake_rad) /
            (std::sin(shear_angle_rad) * std::cos(friction_angle_rad));  // Eq. 1
   }
-  const double ratio = std::sin(quarter_pi) /
-                       (std::sin(shear_angle_rad) * std::sin(quarter_pi + shear_angle_rad - rake_rad));  // Eq. 2
-  return model == ContactLengthModel::lee_shaffer ? 2.0 * ratio : ratio;                               // Eq. 3
+  const double ratio =
+      std::sin(quarter_pi) / (std::sin(shear_angle_rad) * std::sin(quarter_pi + shear_angle_rad - rake_rad));  // Eq. 2
+  return model == ContactLengthModel::lee_shaffer ? 2.0 * ratio : ratio;                                       // Eq. 3
 }
 }  // namespace
 
@@ -39,10 +42,10 @@ std::optional<std::string> contact_length_outside_domain(ContactLengthModel mode
   }
   const double ratio = length_ratio(model, shear_angle_rad, friction_angle_rad, rake_rad);
   if (!std::isfinite(ratio) || ratio <= 0.0) {
-    return fmt::format("no positive length (L/h = {:.4g}) at shear angle {:.4g} deg, friction angle {:.4g} deg, "
-                       "rake {:.4g} deg",
-                       ratio, units::rad_to_deg(shear_angle_rad), units::rad_to_deg(friction_angle_rad),
-                       units::rad_to_deg(rake_rad));
+    return fmt::format(
+        "no positive length (L/h = {:.4g}) at shear angle {:.4g} deg, friction angle {:.4g} deg, "
+        "rake {:.4g} deg",
+        ratio, units::rad_to_deg(shear_angle_rad), units::rad_to_deg(friction_angle_rad), units::rad_to_deg(rake_rad));
   }
   return std::nullopt;
 }
@@ -50,7 +53,8 @@ std::optional<std::string> contact_length_outside_domain(ContactLengthModel mode
 double contact_length(ContactLengthModel model, double uncut_chip_thickness_m, double shear_angle_rad,
                       double friction_angle_rad, double rake_rad) {
   if (const auto why = contact_length_outside_domain(model, shear_angle_rad, friction_angle_rad, rake_rad)) {
-    throw InputError("contact_length", std::string(contact_length_model_name(model)), "a model inside its domain: " + *why);
+    throw InputError("contact_length", std::string(contact_length_model_name(model)),
+                     "a model inside its domain: " + *why);
   }
   return length_ratio(model, shear_angle_rad, friction_angle_rad, rake_rad) * uncut_chip_thickness_m;
 }

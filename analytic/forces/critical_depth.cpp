@@ -34,9 +34,10 @@ BrittleProperties brittle_properties(const MaterialRecord& material, const std::
   const Json& elastic = material.require_group("elastic", path, purpose);
   const auto e = elastic.find("youngs_modulus_GPa");
   if (e == elastic.end() || !e->is_number()) {
-    throw InputError(path + ".elastic.youngs_modulus_GPa",
-                     e == elastic.end() ? fmt::format("(missing in material '{}')", material.name) : json_value_text(*e),
-                     "a number: " + purpose + " needs it");
+    throw InputError(
+        path + ".elastic.youngs_modulus_GPa",
+        e == elastic.end() ? fmt::format("(missing in material '{}')", material.name) : json_value_text(*e),
+        "a number: " + purpose + " needs it");
   }
   p.youngs_modulus_Pa = units::gpa_to_pa(e->get<double>());
   material.require_group("brittle", path, purpose);
@@ -56,9 +57,12 @@ double critical_depth_m(const BrittleProperties& p) {
 
 std::string_view cutting_regime_name(CuttingRegime regime) {
   switch (regime) {
-    case CuttingRegime::ductile: return "ductile";
-    case CuttingRegime::transition: return "transition";
-    case CuttingRegime::brittle: return "brittle";
+    case CuttingRegime::ductile:
+      return "ductile";
+    case CuttingRegime::transition:
+      return "transition";
+    case CuttingRegime::brittle:
+      return "brittle";
   }
   return "brittle";
 }

@@ -12,7 +12,8 @@ EdgeForce edge_force_per_width(const Json& material, const EdgeTool& tool) {
   // layer's alone. The speed is a placeholder: the hardness flow stress is rate-independent.
   const Json scene_document = {
       {"material", material},
-      {"tool", {{"rake_deg", units::rad_to_deg(tool.rake_rad)}, {"edge_radius_um", units::m_to_um(tool.edge_radius_m)}}},
+      {"tool",
+       {{"rake_deg", units::rad_to_deg(tool.rake_rad)}, {"edge_radius_um", units::m_to_um(tool.edge_radius_m)}}},
       {"cut",
        {{"uncut_chip_thickness_um", 1000.0},
         {"width_mm", 1.0},

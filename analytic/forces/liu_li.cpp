@@ -1,7 +1,7 @@
 #include "kerf/analytic/forces/liu_li.hpp"
 
-#include <boost/math/tools/roots.hpp>
 #include <algorithm>
+#include <boost/math/tools/roots.hpp>
 #include <cmath>
 #include <numbers>
 
@@ -18,17 +18,22 @@ constexpr double kQuarterPi = std::numbers::pi / 4.0;
 
 std::string_view friction_closure_name(FrictionClosure closure) {
   switch (closure) {
-    case FrictionClosure::constant: return "constant";
-    case FrictionClosure::merchant: return "merchant";
-    case FrictionClosure::lee_shaffer: return "lee_shaffer";
+    case FrictionClosure::constant:
+      return "constant";
+    case FrictionClosure::merchant:
+      return "merchant";
+    case FrictionClosure::lee_shaffer:
+      return "lee_shaffer";
   }
   return "";
 }
 
 std::string_view lower_limit_rule_name(LowerLimitRule rule) {
   switch (rule) {
-    case LowerLimitRule::stagnation: return "stagnation";
-    case LowerLimitRule::pole: return "pole";
+    case LowerLimitRule::stagnation:
+      return "stagnation";
+    case LowerLimitRule::pole:
+      return "pole";
   }
   return "";
 }
@@ -50,9 +55,12 @@ double local_shear_angle(double chip_ratio, double local_rake_rad) {
 double local_friction_angle(FrictionClosure closure, double friction_angle_rad, double local_rake_rad,
                             double local_shear_angle_rad) {
   switch (closure) {
-    case FrictionClosure::constant: return friction_angle_rad;
-    case FrictionClosure::merchant: return kHalfPi + local_rake_rad - 2.0 * local_shear_angle_rad;
-    case FrictionClosure::lee_shaffer: return kQuarterPi + local_rake_rad - local_shear_angle_rad;
+    case FrictionClosure::constant:
+      return friction_angle_rad;
+    case FrictionClosure::merchant:
+      return kHalfPi + local_rake_rad - 2.0 * local_shear_angle_rad;
+    case FrictionClosure::lee_shaffer:
+      return kQuarterPi + local_rake_rad - local_shear_angle_rad;
   }
   return friction_angle_rad;
 }
@@ -80,7 +88,8 @@ struct EdgeIntegrand {
       case FrictionClosure::lee_shaffer:  // phi_k + beta_k - g = pi/4
         return {layer * std::numbers::sqrt2 * std::cos(kQuarterPi - phi),
                 layer * std::numbers::sqrt2 * std::sin(kQuarterPi - phi)};
-      case FrictionClosure::constant: break;
+      case FrictionClosure::constant:
+        break;
     }
     const double psi = p.friction_angle_rad - g;
     const double denominator = std::cos(phi + psi);
@@ -134,7 +143,8 @@ LiuLiResult liu_li_force_per_width(const LiuLiParams& p, double shear_flow_stres
   if (out.rake_face_ploughs) raise(guards, Guard::no_chip_on_rake_face);
 
   // Straight rake face above the arc: the sharp-tool force at the nominal rake (the r -> 0 limit).
-  const double rake_face_thickness = uncut_chip_thickness_m - (out.chip_on_edge_only ? uncut_chip_thickness_m : arc_height);
+  const double rake_face_thickness =
+      uncut_chip_thickness_m - (out.chip_on_edge_only ? uncut_chip_thickness_m : arc_height);
   if (rake_face_thickness > 0.0 && !out.rake_face_ploughs) {
     const double phi_nominal = local_shear_angle(p.chip_ratio, p.rake_rad);
     const double beta_nominal = local_friction_angle(p.closure, p.friction_angle_rad, p.rake_rad, phi_nominal);

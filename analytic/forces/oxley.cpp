@@ -64,14 +64,12 @@ void validate_all(const OxleyParams& params, const OxleyCut& cut, const OxleySol
   if (options) options->validate("options");
   const auto& jc = params.johnson_cook;
   if (!(cut.workpiece_temperature_K < jc.melting_temperature_K)) {
-    throw InputError(std::string(kCutArgument) + ".workpiece_temperature_K",
-                     format_value(cut.workpiece_temperature_K),
+    throw InputError(std::string(kCutArgument) + ".workpiece_temperature_K", format_value(cut.workpiece_temperature_K),
                      "a temperature below the Johnson-Cook melting temperature " +
                          format_value(jc.melting_temperature_K) + " K (the workpiece would be molten)");
   }
   if (params.policy.cold == ColdPolicy::error && cut.workpiece_temperature_K < jc.room_temperature_K) {
-    throw InputError(std::string(kCutArgument) + ".workpiece_temperature_K",
-                     format_value(cut.workpiece_temperature_K),
+    throw InputError(std::string(kCutArgument) + ".workpiece_temperature_K", format_value(cut.workpiece_temperature_K),
                      "a temperature at or above the Johnson-Cook room temperature " +
                          format_value(jc.room_temperature_K) + " K (policy 'error')");
   }
@@ -90,8 +88,8 @@ struct Context {
   const ThermalProperties& thermal;
   double eta, psi;
   double rake, cos_rake, t1, width, speed, T_w, T_melt;
-  double rho_V_t1;        // rho V t1: mass flow per unit width, for m_chip = rho V t1 w
-  double rel_tol;         // root finds in phi and C0
+  double rho_V_t1;  // rho V t1: mass flow per unit width, for m_chip = rho V t1 w
+  double rel_tol;   // root finds in phi and C0
   double temperature_rel_tol;
   int max_iterations;
   int n_evaluations = 0;  // shear-zone states evaluated
@@ -103,9 +101,18 @@ struct Context {
 };
 
 Context make_context(const OxleyParams& params, const OxleyCut& cut, const OxleySolverOptions& options) {
-  return Context{params.johnson_cook, params.policy, params.thermal, params.eta, params.psi,
-                 cut.rake_rad, std::cos(cut.rake_rad), cut.uncut_chip_thickness_m, cut.width_m,
-                 cut.speed_m_per_s, cut.workpiece_temperature_K, params.johnson_cook.melting_temperature_K,
+  return Context{params.johnson_cook,
+                 params.policy,
+                 params.thermal,
+                 params.eta,
+                 params.psi,
+                 cut.rake_rad,
+                 std::cos(cut.rake_rad),
+                 cut.uncut_chip_thickness_m,
+                 cut.width_m,
+                 cut.speed_m_per_s,
+                 cut.workpiece_temperature_K,
+                 params.johnson_cook.melting_temperature_K,
                  params.thermal.density_kg_per_m3 * cut.speed_m_per_s * cut.uncut_chip_thickness_m,
                  options.tolerance,
                  std::max(1e-2 * options.tolerance, 4.0 * std::numeric_limits<double>::epsilon()),
@@ -227,15 +234,15 @@ RootSearch root_near(F&& f, Point start, double slope, double lo, double hi, dou
 
 struct ShearPlane {
   double phi, sin_phi, tan_phi, cos_phi_rake;
-  double length;           // l_AB = t1 / sin(phi)                                          (O 1)
-  double shear_velocity;   // V_s = V cos(alpha) / cos(phi - alpha)                         (O 1)
-  double chip_velocity;    // V_c = V sin(phi) / cos(phi - alpha)                           (O 1)
-  double chip_thickness;   // t2 = t1 cos(phi - alpha) / sin(phi)                           (O 1)
-  double shear_strain;     // gamma_AB = cos(alpha) / (2 sin(phi) cos(phi - alpha))         (O 2)
-  double strain;           // eps_AB = gamma_AB / sqrt 3
-  double hardening;        // A + B eps_AB^n
-  double n_eq;             // n B eps^n / (A + B eps^n): the local hardening exponent        (O 5)
-  double tan_theta_0;      // 1 + pi/2 - 2 phi: tan(theta) at C0 = 0                        (O 5)
+  double length;          // l_AB = t1 / sin(phi)                                          (O 1)
+  double shear_velocity;  // V_s = V cos(alpha) / cos(phi - alpha)                         (O 1)
+  double chip_velocity;   // V_c = V sin(phi) / cos(phi - alpha)                           (O 1)
+  double chip_thickness;  // t2 = t1 cos(phi - alpha) / sin(phi)                           (O 1)
+  double shear_strain;    // gamma_AB = cos(alpha) / (2 sin(phi) cos(phi - alpha))         (O 2)
+  double strain;          // eps_AB = gamma_AB / sqrt 3
+  double hardening;       // A + B eps_AB^n
+  double n_eq;            // n B eps^n / (A + B eps^n): the local hardening exponent        (O 5)
+  double tan_theta_0;     // 1 + pi/2 - 2 phi: tan(theta) at C0 = 0                        (O 5)
 };
 
 ShearPlane shear_plane(const Context& c, double phi) {
@@ -271,8 +278,8 @@ Interval admissible_c0(const Context& c, const ShearPlane& s, double c0_min, dou
   const double n_eq = s.n_eq;
   const double d = s.phi - c.rake;  // lambda = theta - d
   if (n_eq > 0.0) {
-    hi = std::min(hi, 1.5 * s.tan_theta_0 / n_eq * (1.0 - margin));        // sin + C0 n cos / 3 > 0
-    if (d > 0.0) hi = std::min(hi, (s.tan_theta_0 + 1.0 / std::tan(d)) / n_eq * (1.0 - margin));  // lambda > -pi/2
+    hi = std::min(hi, 1.5 * s.tan_theta_0 / n_eq * (1.0 - margin));  // sin + C0 n cos / 3 > 0
+    if (d > 0.0) hi = std::min(hi, (s.tan_theta_0 + 1.0 / std::tan(d)) / n_eq * (1.0 - margin));   // lambda > -pi/2
     if (d < 0.0) lo = std::max(lo, (s.tan_theta_0 - 1.0 / std::tan(-d)) / n_eq * (1.0 + margin));  // lambda < pi/2
   } else {
     // No hardening: theta does not depend on C0; the state is defined for all C0 or for none.
@@ -287,18 +294,18 @@ Interval admissible_c0(const Context& c, const ShearPlane& s, double c0_min, dou
 
 struct Primary {
   double C0;
-  double strain_rate;       // epsdot_AB = C0 V_s / (sqrt 3 l_AB)                                 (O 2)
+  double strain_rate;  // epsdot_AB = C0 V_s / (sqrt 3 l_AB)                                 (O 2)
   double rate_factor;
   double T_AB, dT_SZ, beta;
-  double T_slope;           // d/dT of T - T_w - eta dT_SZ(T) at T_AB: the start of the neighbouring solve
+  double T_slope;  // d/dT of T - T_w - eta dT_SZ(T) at T_AB: the start of the neighbouring solve
   bool beta_clamped;
-  double k_AB;              // sigma_JC(eps_AB, epsdot_AB, T_AB) / sqrt 3                         (O 3)
-  double F_s;               // k_AB l_AB w                                                        (O 3)
-  double theta, R, lambda, F, N, F_c, F_t;                                                   // (O 5, O 6)
-  double sigma_tip;         // sigma_N' = k_AB (1 + pi/2 - 2 alpha - 2 C0 n_eq)                  (O 7)
-  double S;                 // sin(theta) + C0 n_eq cos(theta) / 3 (> 0 where admissible)
-  double h;                 // contact length                                                     (O 8)
-  double tau_int, sigma_N;  // F / (h w), N / (h w)                                               (O 9)
+  double k_AB;                              // sigma_JC(eps_AB, epsdot_AB, T_AB) / sqrt 3                         (O 3)
+  double F_s;                               // k_AB l_AB w                                                        (O 3)
+  double theta, R, lambda, F, N, F_c, F_t;  // (O 5, O 6)
+  double sigma_tip;                         // sigma_N' = k_AB (1 + pi/2 - 2 alpha - 2 C0 n_eq)                  (O 7)
+  double S;                                 // sin(theta) + C0 n_eq cos(theta) / 3 (> 0 where admissible)
+  double h;                                 // contact length                                                     (O 8)
+  double tau_int, sigma_N;                  // F / (h w), N / (h w)                                               (O 9)
 };
 
 // T_AB = T_w + eta dT_SZ(T_AB) (O 4) with dT_SZ = (1 - beta) F_s V_s / (m_chip c_p), K and c_p at T_AB.
@@ -395,9 +402,9 @@ Interface interface_zone(const Context& c, const ShearPlane& s, const Primary& p
   const double root = std::sqrt(R_T * s.chip_thickness / p.h);
   q.dT_M = q.dT_C * std::exp(std::numbers::ln10 * (0.06 - 0.195 * delta * root)) * root;  // 10^(...)
   q.T_int = c.T_w + p.dT_SZ + c.psi * q.dT_M;
-  q.k_chip = johnson_cook_stress(c.jc, c.policy, q.shear_strain / kSqrt3, q.strain_rate_shear / kSqrt3, q.T_int,
-                                 guards) /
-             kSqrt3;
+  q.k_chip =
+      johnson_cook_stress(c.jc, c.policy, q.shear_strain / kSqrt3, q.strain_rate_shear / kSqrt3, q.T_int, guards) /
+      kSqrt3;
   return q;
 }
 
@@ -707,8 +714,8 @@ OxleyResult solve_oxley(const OxleyParams& params, const OxleyCut& cut, const Ox
   // solution (a force scale 1000 times the largest plausible F_c), plus the residuals it misses by, so that
   // Brent is led towards the deltas that have a solution and a true solution wins wherever the range holds
   // one; Lalwani's and Pantalé's searches would pick the clamped state.
-  const double force_scale = 1e3 * (params.johnson_cook.A_Pa + params.johnson_cook.B_Pa) * cut.uncut_chip_thickness_m *
-                             cut.width_m;
+  const double force_scale =
+      1e3 * (params.johnson_cook.A_Pa + params.johnson_cook.B_Pa) * cut.uncut_chip_thickness_m * cut.width_m;
   const auto objective = [&](double delta) {
     const Solver::Root root = solver.at_delta(delta);
     const Solution& sol = solver.state(root.index);
@@ -726,9 +733,9 @@ OxleyResult solve_oxley(const OxleyParams& params, const OxleyCut& cut, const Ox
   for (int k = 0; k < n_scan; ++k) {
     const int i = n_scan - 1 - k;  // from delta_max down
     deltas[i] = i == 0 ? options.delta_min
-              : i == n_scan - 1
-                  ? options.delta_max
-                  : options.delta_min * std::pow(options.delta_max / options.delta_min, i / (n_scan - 1.0));
+                : i == n_scan - 1
+                    ? options.delta_max
+                    : options.delta_min * std::pow(options.delta_max / options.delta_min, i / (n_scan - 1.0));
     scores[i] = objective(deltas[i]);
   }
   for (int i = 1; i < n_scan; ++i) {
@@ -755,8 +762,9 @@ OxleyResult solve_oxley(const OxleyParams& params, const OxleyCut& cut, const Ox
   r.converged = sol.c0_bracketed && root.bracketed;
   r.shear_angle_roots = solver.full_roots();
   r.delta_at_bound = delta == options.delta_min || delta == options.delta_max;
-  r.shear_angle_at_bound = std::fabs(r.shear_angle_rad - options.phi_min_rad) <= 1e-9 ||
-                           std::fabs(r.shear_angle_rad - std::min(options.phi_max_rad, cut.rake_rad + kPi / 2.0)) <= 1e-6;
+  r.shear_angle_at_bound =
+      std::fabs(r.shear_angle_rad - options.phi_min_rad) <= 1e-9 ||
+      std::fabs(r.shear_angle_rad - std::min(options.phi_max_rad, cut.rake_rad + kPi / 2.0)) <= 1e-6;
   return r;
 }
 

@@ -21,11 +21,10 @@ namespace {
 constexpr FieldUnit kMPerMin{"m/min", units::m_per_min_to_m_per_s, units::m_per_s_to_m_per_min};
 
 // The OxleyCut's members (solve_oxley names them under its argument `cut`) and the scene's keys that set them.
-constexpr SceneKeyOf kSceneKeys[] = {
-    {"cut.uncut_chip_thickness_m", "cut.uncut_chip_thickness_um", units::kUm, "m"},
-    {"cut.width_m", "cut.width_mm", units::kMm, "m"},
-    {"cut.speed_m_per_s", "cut.speed_m_per_min", kMPerMin, "m/s"},
-    {"cut.workpiece_temperature_K", "cut.workpiece_temperature_K", units::kNone, ""}};
+constexpr SceneKeyOf kSceneKeys[] = {{"cut.uncut_chip_thickness_m", "cut.uncut_chip_thickness_um", units::kUm, "m"},
+                                     {"cut.width_m", "cut.width_mm", units::kMm, "m"},
+                                     {"cut.speed_m_per_s", "cut.speed_m_per_min", kMPerMin, "m/s"},
+                                     {"cut.workpiece_temperature_K", "cut.workpiece_temperature_K", units::kNone, ""}};
 
 /// Extended Oxley without a physical solution is a model failure (ModelError, exit 3) naming why: the solver's
 /// nearest state (a condition not met, phi or delta on a bound of its range, a zone at the melting temperature)
@@ -70,13 +69,14 @@ void predict_oxley_forces(const AnalyticScene& scene, const OxleyResult* solved,
   p.state = shear_plane_state_of(oxley);
   p.flow.johnson_cook_Pa = p.flow.total_Pa = oxley.shear_plane_flow_stress_Pa;
   p.flow.shear_Pa = oxley.shear_plane_shear_stress_Pa;
-  warn_if_edge_ignored(scene, "extended Oxley assumes a sharp tool (use models.force = liu_li with deformation = oxley)",
-                       p);
+  warn_if_edge_ignored(scene,
+                       "extended Oxley assumes a sharp tool (use models.force = liu_li with deformation = oxley)", p);
   if (scene.friction_angle_rad && std::fabs(*scene.friction_angle_rad - oxley.friction_angle_rad) > kSameAngle_rad) {
-    p.warnings.push_back(fmt::format("extended Oxley predicts its own friction angle {:.4g} deg; the scene's {:.4g} deg "
-                                     "({}) is not used",
-                                     units::rad_to_deg(oxley.friction_angle_rad),
-                                     units::rad_to_deg(*scene.friction_angle_rad), scene.friction_origin));
+    p.warnings.push_back(
+        fmt::format("extended Oxley predicts its own friction angle {:.4g} deg; the scene's {:.4g} deg "
+                    "({}) is not used",
+                    units::rad_to_deg(oxley.friction_angle_rad), units::rad_to_deg(*scene.friction_angle_rad),
+                    scene.friction_origin));
   }
   add_contact_lengths(scene, p.friction_angle_rad, p);
 }
@@ -84,10 +84,9 @@ void predict_oxley_forces(const AnalyticScene& scene, const OxleyResult* solved,
 }  // namespace
 
 const FieldTable<OxleyModelParams>& oxley_model_fields() {
-  static const FieldTable<OxleyModelParams> table{
-      number_at<OxleyModelParams>("oxley_tolerance", units::kSi("(relative)"), Range::closed(1e-15, 1e-2),
-                                  "relative tolerance of the extended-Oxley solver",
-                                  [](auto& s) -> auto& { return s.solver.tolerance; })};
+  static const FieldTable<OxleyModelParams> table{number_at<OxleyModelParams>(
+      "oxley_tolerance", units::kSi("(relative)"), Range::closed(1e-15, 1e-2),
+      "relative tolerance of the extended-Oxley solver", [](auto& s) -> auto& { return s.solver.tolerance; })};
   return table;
 }
 
@@ -109,13 +108,17 @@ std::optional<OxleyResult> solve_scene_oxley(const AnalyticScene& scene, Predict
   OxleyResult oxley = naming_scene_keys(kSceneKeys, [&] { return solve_oxley(params, cut, options); });
   refuse_unphysical_oxley(oxley, params, options);
   p.guards.merge(oxley.guards);
-  p.oxley = OxleyDetails{oxley.strain_rate_constant_C0, oxley.delta, oxley.interface_temperature_K,
-                         oxley.contact_length_m, std::max(oxley.residual_shear, oxley.residual_normal),
+  p.oxley = OxleyDetails{oxley.strain_rate_constant_C0,
+                         oxley.delta,
+                         oxley.interface_temperature_K,
+                         oxley.contact_length_m,
+                         std::max(oxley.residual_shear, oxley.residual_normal),
                          oxley.shear_angle_roots};
   if (oxley.shear_angle_roots > 1) {
-    p.warnings.push_back(fmt::format("extended Oxley: {} solutions in the shear angle; the minimum-force branch "
-                                     "(phi = {:.4g} deg) is reported",
-                                     oxley.shear_angle_roots, units::rad_to_deg(oxley.shear_angle_rad)));
+    p.warnings.push_back(
+        fmt::format("extended Oxley: {} solutions in the shear angle; the minimum-force branch "
+                    "(phi = {:.4g} deg) is reported",
+                    oxley.shear_angle_roots, units::rad_to_deg(oxley.shear_angle_rad)));
   }
   return oxley;
 }

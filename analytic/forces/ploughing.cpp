@@ -12,8 +12,10 @@ namespace kerf {
 
 std::string_view ploughing_model_name(PloughingModel model) {
   switch (model) {
-    case PloughingModel::none: return "none";
-    case PloughingModel::wave: return "wave";
+    case PloughingModel::none:
+      return "none";
+    case PloughingModel::wave:
+      return "wave";
   }
   return "";
 }

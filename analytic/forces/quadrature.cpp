@@ -4,10 +4,10 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_integration.h>
 
+#include <algorithm>
 #include <boost/math/quadrature/gauss.hpp>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <boost/math/quadrature/tanh_sinh.hpp>
-#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <optional>
@@ -65,7 +65,8 @@ QuadratureResult integrate_gsl(const Integrand& f, double a, double b, const Qua
     std::unique_ptr<gsl_integration_workspace, decltype(&gsl_integration_workspace_free)> ptr;
   };
   thread_local Workspace workspace{0, {nullptr, &gsl_integration_workspace_free}};
-  if (workspace.size < limit) workspace = {limit, {gsl_integration_workspace_alloc(limit), &gsl_integration_workspace_free}};
+  if (workspace.size < limit)
+    workspace = {limit, {gsl_integration_workspace_alloc(limit), &gsl_integration_workspace_free}};
   gsl_function function;
   function.function = [](double x, void* params) { return (*static_cast<const Integrand*>(params))(x); };
   function.params = const_cast<Integrand*>(&f);
@@ -98,7 +99,8 @@ QuadratureResult integrate(const Integrand& f, double a, double b, const Quadrat
       out.value = integrator.integrate(f, a, b, settings.relative_tolerance, &out.error_estimate);
       break;
     }
-    case QuadratureRule::gsl_qag: return integrate_gsl(f, a, b, settings);
+    case QuadratureRule::gsl_qag:
+      return integrate_gsl(f, a, b, settings);
     case QuadratureRule::gauss_legendre:
       out.value = boost::math::quadrature::gauss<double, 30>::integrate(f, a, b);
       break;
@@ -106,7 +108,9 @@ QuadratureResult integrate(const Integrand& f, double a, double b, const Quadrat
   return out;
 }
 
-double abs(const ValuePair& a) { return std::max(std::abs(a.first), std::abs(a.second)); }
+double abs(const ValuePair& a) {
+  return std::max(std::abs(a.first), std::abs(a.second));
+}
 
 QuadraturePairResult integrate_pair(const PairIntegrand& f, double a, double b, const QuadratureSettings& settings) {
   QuadraturePairResult out;

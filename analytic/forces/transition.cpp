@@ -26,8 +26,8 @@ double ductile_layer_m(const TransitionParams& params, double critical_depth_m) 
 
 // Its own fields are named (params.*, fracture_toughness_Pa_sqrt_m, depth_m, friction_angle_rad); the transition
 // model's unit names the scene's keys instead (forces/transition_model.cpp).
-ForcePerWidth fracture_force_per_width(const TransitionParams& params, double toughness, double depth_m,
-                                       double layer_m, double rake_rad, double friction_angle_rad) {
+ForcePerWidth fracture_force_per_width(const TransitionParams& params, double toughness, double depth_m, double layer_m,
+                                       double rake_rad, double friction_angle_rad) {
   params.validate("params");
   check_number(toughness, "fracture_toughness_Pa_sqrt_m", Range::positive(), "Pa m^0.5");
   check_number(depth_m, "depth_m", Range::non_negative(), "m");

@@ -35,7 +35,8 @@ constexpr char kFracture[] = "fracture";
 /// Above l the shear angle, chip, state and edge details are the layer's.
 void predict_transition_forces(const AnalyticScene& scene, const OxleyResult* oxley, Prediction& p) {
   if (!scene.critical_depth_m) {
-    throw InputError("material.brittle", fmt::format("(no hardness and toughness in material '{}')", scene.material->name),
+    throw InputError("material.brittle",
+                     fmt::format("(no hardness and toughness in material '{}')", scene.material->name),
                      "a brittle material with elastic.youngs_modulus_GPa, brittle.hardness_GPa and "
                      "brittle.fracture_toughness_MPa_sqrt_m: models.force = transition needs its critical depth");
   }
@@ -58,10 +59,11 @@ void predict_transition_forces(const AnalyticScene& scene, const OxleyResult* ox
                                     scene.rake_rad, p.friction_angle_rad);
   });
   if (details.fracture.cutting_N_per_m > details.layer.cutting_N_per_m) {
-    p.warnings.push_back("the fracture part (zeta K_c sqrt(h) scaling) carries most of the force: on Yang et al. "
-                         "2018's soda-lime cuts at 0.1-0.2 mm it is 15-20 times the measured force "
-                         "(validation/glass_transition/README.md); models.fracture = none gives the edge's layer "
-                         "alone, a lower bound");
+    p.warnings.push_back(
+        "the fracture part (zeta K_c sqrt(h) scaling) carries most of the force: on Yang et al. "
+        "2018's soda-lime cuts at 0.1-0.2 mm it is 15-20 times the measured force "
+        "(validation/glass_transition/README.md); models.fracture = none gives the edge's layer "
+        "alone, a lower bound");
   }
   p.cutting_force_N += details.fracture.cutting_N_per_m * scene.width_m;
   p.thrust_force_N += details.fracture.thrust_N_per_m * scene.width_m;
@@ -82,12 +84,14 @@ void write_transition_cells(const AnalyticScene& scene, const Prediction& p, Cel
 void print_transition(std::FILE* text, const AnalyticScene& scene, const Prediction& p) {
   const TransitionDetails* t = transition_details(p);
   if (!t) return;
-  fmt::print(text, "ductile layer     l = {:.4g} um ({} x d_c); the ductile model's part {:.6g} N cutting, {:.6g} N "
-                   "thrust\n",
+  fmt::print(text,
+             "ductile layer     l = {:.4g} um ({} x d_c); the ductile model's part {:.6g} N cutting, {:.6g} N "
+             "thrust\n",
              units::m_to_um(t->ductile_layer_m), scene.transition.layer_factor, t->layer.cutting_N_per_m * p.width_m,
              t->layer.thrust_N_per_m * p.width_m);
-  fmt::print(text, "fracture part     {:.6g} N cutting, {:.6g} N thrust ({})\n", t->fracture.cutting_N_per_m * p.width_m,
-             t->fracture.thrust_N_per_m * p.width_m, fracture_model_name(scene.transition.fracture));
+  fmt::print(text, "fracture part     {:.6g} N cutting, {:.6g} N thrust ({})\n",
+             t->fracture.cutting_N_per_m * p.width_m, t->fracture.thrust_N_per_m * p.width_m,
+             fracture_model_name(scene.transition.fracture));
 }
 
 }  // namespace
@@ -117,6 +121,8 @@ const OrthogonalForceModel transition_force_model{.predict = &predict_transition
                                                   .write_cells = &write_transition_cells,
                                                   .print = &print_transition};
 
-const TransitionDetails* transition_details(const Prediction& p) { return std::any_cast<TransitionDetails>(&p.details); }
+const TransitionDetails* transition_details(const Prediction& p) {
+  return std::any_cast<TransitionDetails>(&p.details);
+}
 
 }  // namespace kerf

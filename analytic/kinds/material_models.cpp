@@ -1,8 +1,8 @@
 #include "kerf/analytic/kinds/material_models.hpp"
 
-#include <optional>
-
 #include <fmt/format.h>
+
+#include <optional>
 
 #include "kerf/error.hpp"
 #include "kerf/field_table.hpp"
@@ -20,7 +20,8 @@ const FieldUnit kNm{"nm", units::nm_to_m, units::m_to_nm};
 template <class S, class At>
 NumberField<S> number_at(std::string_view key, FieldUnit unit, Range range, std::string_view doc, At at,
                          bool required = false) {
-  return {key, unit, range, doc, [at](const S& s) { return at(s); }, [at](S& s, double v) { at(s) = v; }, required, {}, {}};
+  return {key,      unit, range, doc, [at](const S& s) { return at(s); }, [at](S& s, double v) { at(s) = v; },
+          required, {},   {}};
 }
 
 const FieldTable<ElasticProperties>& elastic_fields() {
@@ -69,8 +70,8 @@ const FieldTable<ThermalKeys>& thermal_fields() {
                    "the temperature about which conductivity and specific heat are linear", &ThermalKeys::reference_K),
       required_number_field("conductivity_W_per_m_K", units::kSi("W/(m K)"), Range::positive(),
                             "thermal conductivity at the reference temperature", &ThermalKeys::conductivity),
-      number_field("conductivity_slope_W_per_m_K2", units::kSi("W/(m K^2)"), Range::any(),
-                   "its change per kelvin", &ThermalKeys::conductivity_slope),
+      number_field("conductivity_slope_W_per_m_K2", units::kSi("W/(m K^2)"), Range::any(), "its change per kelvin",
+                   &ThermalKeys::conductivity_slope),
       required_number_field("specific_heat_J_per_kg_K", units::kSi("J/(kg K)"), Range::positive(),
                             "specific heat at the reference temperature", &ThermalKeys::specific_heat),
       number_field("specific_heat_slope_J_per_kg_K2", units::kSi("J/(kg K^2)"), Range::any(), "its change per kelvin",
@@ -89,12 +90,17 @@ struct MicrostructureKeys {
 NumberField<MicrostructureKeys> both_terms_field(std::string_view key, FieldUnit unit, Range range,
                                                  std::string_view doc, double HallPetchParams::*hall_petch,
                                                  double DislocationParams::*dislocation, bool required = false) {
-  return {key, unit, range, doc,
+  return {key,
+          unit,
+          range,
+          doc,
           [hall_petch](const MicrostructureKeys& k) { return k.models.hall_petch.*hall_petch; },
           [hall_petch, dislocation](MicrostructureKeys& k, double v) {
             k.models.hall_petch.*hall_petch = k.models.dislocation.*dislocation = v;
           },
-          required, {}, {}};
+          required,
+          {},
+          {}};
 }
 
 template <class At>
@@ -109,13 +115,15 @@ const FieldTable<MicrostructureKeys>& microstructure_fields() {
                        &HallPetchParams::taylor_factor, &DislocationParams::taylor_factor),
       both_terms_field("burgers_vector_nm", kNm, Range::positive(), "Burgers vector b",
                        &HallPetchParams::burgers_vector_m, &DislocationParams::burgers_vector_m, true),
-      micro_field("grain_size_um", units::kUm, Range::positive(), "grain size D",
-                  [](auto& k) -> auto& { return k.models.hall_petch.grain_size_m; }, true),
+      micro_field(
+          "grain_size_um", units::kUm, Range::positive(), "grain size D",
+          [](auto& k) -> auto& { return k.models.hall_petch.grain_size_m; }, true),
       both_terms_field("critical_grain_size_nm", kNm, Range::non_negative(),
                        "grain size (and boundary spacing) below which the terms are capped",
                        &HallPetchParams::critical_grain_size_m, &DislocationParams::critical_spacing_m),
-      micro_field("grain_boundary_stress_ratio", units::kNone, Range::positive(), "tau_b / G (Shao et al. 2013, Eq. 11)",
-                  [](auto& k) -> auto& { return k.models.hall_petch.grain_boundary_stress_ratio; }),
+      micro_field(
+          "grain_boundary_stress_ratio", units::kNone, Range::positive(), "tau_b / G (Shao et al. 2013, Eq. 11)",
+          [](auto& k) -> auto& { return k.models.hall_petch.grain_boundary_stress_ratio; }),
       NumberField<MicrostructureKeys>{
           "hall_petch_coefficient_MPa_sqrt_m", FieldUnit{"MPa m^0.5", units::mpa_to_pa, units::pa_to_mpa},
           Range::non_negative(), "a measured Hall-Petch coefficient, which replaces Eqs. 10-11",
@@ -123,28 +131,30 @@ const FieldTable<MicrostructureKeys>& microstructure_fields() {
           [](MicrostructureKeys& k, double v) { k.models.hall_petch.coefficient_Pa_sqrt_m = v; }, false,
           [](const MicrostructureKeys& k) { return k.models.hall_petch.coefficient_Pa_sqrt_m.has_value(); },
           "none: Eqs. 10-11"},
-      micro_field("alpha", units::kNone, Range::positive(), "dislocation interaction constant",
-                  [](auto& k) -> auto& { return k.models.dislocation.alpha; }),
-      micro_field("boundary_constant_k", units::kNone, Range::positive(), "boundary constant k",
-                  [](auto& k) -> auto& { return k.models.dislocation.boundary_constant_k; }),
-      micro_field("misorientation_deg", units::kDeg, Range::closed(0.0, 90.0), "mean boundary misorientation",
-                  [](auto& k) -> auto& { return k.models.dislocation.misorientation_rad; }, true),
+      micro_field(
+          "alpha", units::kNone, Range::positive(), "dislocation interaction constant",
+          [](auto& k) -> auto& { return k.models.dislocation.alpha; }),
+      micro_field(
+          "boundary_constant_k", units::kNone, Range::positive(), "boundary constant k",
+          [](auto& k) -> auto& { return k.models.dislocation.boundary_constant_k; }),
+      micro_field(
+          "misorientation_deg", units::kDeg, Range::closed(0.0, 90.0), "mean boundary misorientation",
+          [](auto& k) -> auto& { return k.models.dislocation.misorientation_rad; }, true),
       optional_number_field("boundary_spacing_um", units::kUm, Range::positive(), "mean boundary spacing D_avg",
                             &MicrostructureKeys::boundary_spacing_m, "the grain size"),
-      micro_field("interior_dislocation_density_per_m2", units::kSi("1/m^2"), Range::non_negative(),
-                  "dislocation density inside the grains rho_0",
-                  [](auto& k) -> auto& { return k.models.dislocation.interior_density_per_m2; })};
+      micro_field(
+          "interior_dislocation_density_per_m2", units::kSi("1/m^2"), Range::non_negative(),
+          "dislocation density inside the grains rho_0",
+          [](auto& k) -> auto& { return k.models.dislocation.interior_density_per_m2; })};
   return table;
 }
 
 const FieldTable<OxleyHeatFactors>& oxley_fields() {
   static const FieldTable<OxleyHeatFactors> table{
       number_field("eta", units::kNone, Range::closed(0.0, 1.0),
-                   "Oxley's eta: T_AB = T_w + eta dT_SZ (the mean shear-plane temperature)",
-                   &OxleyHeatFactors::eta),
+                   "Oxley's eta: T_AB = T_w + eta dT_SZ (the mean shear-plane temperature)", &OxleyHeatFactors::eta),
       number_field("psi", units::kNone, Range::closed(0.0, 1.0),
-                   "Oxley's psi: T_int = T_w + dT_SZ + psi dT_M (mean over the contact)",
-                   &OxleyHeatFactors::psi)};
+                   "Oxley's psi: T_int = T_w + dT_SZ + psi dT_M (mean over the contact)", &OxleyHeatFactors::psi)};
   return table;
 }
 
@@ -152,16 +162,16 @@ const FieldUnit kMPaSqrtM{"MPa m^0.5", units::mpa_to_pa, units::pa_to_mpa};
 
 const FieldTable<BrittleGroup>& brittle_fields() {
   static const FieldTable<BrittleGroup> table{
-      optional_number_field("hardness_GPa", units::kGPa, Range::positive(), "hardness H",
-                            &BrittleGroup::hardness_Pa, "none"),
+      optional_number_field("hardness_GPa", units::kGPa, Range::positive(), "hardness H", &BrittleGroup::hardness_Pa,
+                            "none"),
       optional_number_field("fracture_toughness_MPa_sqrt_m", kMPaSqrtM, Range::positive(), "fracture toughness K_c",
                             &BrittleGroup::fracture_toughness_Pa_sqrt_m, "none"),
       optional_number_field("constraint_factor", units::kNone, Range::at_least(1.0),
                             "constraint factor C = H / Y of the hardness flow stress (models.flow_stress = hardness)",
                             &BrittleGroup::constraint_factor, "none"),
       optional_number_field("tensile_strength_MPa", units::kMPa, Range::positive(),
-                            "tensile strength (recorded: no analytic model reads it)", &BrittleGroup::tensile_strength_Pa,
-                            "none"),
+                            "tensile strength (recorded: no analytic model reads it)",
+                            &BrittleGroup::tensile_strength_Pa, "none"),
       optional_number_field("compressive_strength_MPa", units::kMPa, Range::positive(),
                             "unconfined compressive strength (recorded: no analytic model reads it)",
                             &BrittleGroup::compressive_strength_Pa, "none")};
@@ -174,15 +184,17 @@ const std::vector<SceneKeySection>& material_key_sections() {
   static const std::vector<SceneKeySection> list{
       {"material.elastic", "used by hall_petch, dislocation and the regime check",
        [] { return fields_markdown(elastic_fields()); }},
-      {"material.johnson_cook", "used by johnson_cook and oxley", [] { return fields_markdown(johnson_cook_fields()); }},
+      {"material.johnson_cook", "used by johnson_cook and oxley",
+       [] { return fields_markdown(johnson_cook_fields()); }},
       {"material.thermal", "used by oxley", [] { return fields_markdown(thermal_fields()); }},
       {"material.microstructure", "used by hall_petch and dislocation (with the elastic group)",
        [] { return fields_markdown(microstructure_fields()); }},
       {"material.oxley", "optional, used by oxley: the heat partition factors",
        [] { return fields_markdown(oxley_fields()); }},
-      {"material.brittle", "optional: hardness and toughness give the regime check's critical depth (with "
-                           "elastic.youngs_modulus_GPa) and the transition model's fracture part; the hardness is the "
-                           "trepanning model's default and, with the constraint factor, the hardness flow stress",
+      {"material.brittle",
+       "optional: hardness and toughness give the regime check's critical depth (with "
+       "elastic.youngs_modulus_GPa) and the transition model's fracture part; the hardness is the "
+       "trepanning model's default and, with the constraint factor, the hardness flow stress",
        [] { return fields_markdown(brittle_fields()); }}};
   return list;
 }

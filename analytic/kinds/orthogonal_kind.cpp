@@ -38,13 +38,14 @@ void print_prediction(std::FILE* text, const std::string& scene_path, const Anal
                             std::fabs(*scene.friction_angle_rad - p.friction_angle_rad) <= kSameAngle_rad;
     fmt::print(text, "friction angle    {:.4g} deg (from {})\n", rad_to_deg(p.friction_angle_rad),
                own_friction ? "the extended-Oxley solution"
-               : from_scene                             ? scene.friction_origin
-                                                        : fmt::format("the {} friction closure at the nominal rake",
-                                                                      friction_closure_name(scene.chip.liu_li.closure)));
+               : from_scene ? scene.friction_origin
+                            : fmt::format("the {} friction closure at the nominal rake",
+                                          friction_closure_name(scene.chip.liu_li.closure)));
   }
   fmt::print(text, "chip ratio        {:.4g} (chip thickness {:.6g} um)\n", p.chip_ratio, m_to_um(p.chip_thickness_m));
   if (scene.flow_stress.hardness) {
-    fmt::print(text, "flow stress       {:.6g} MPa (hardness {:.6g} MPa / constraint factor {:.4g}, {}); k_s = {:.6g} MPa\n",
+    fmt::print(text,
+               "flow stress       {:.6g} MPa (hardness {:.6g} MPa / constraint factor {:.4g}, {}); k_s = {:.6g} MPa\n",
                pa_to_mpa(p.flow.total_Pa), pa_to_mpa(scene.flow_stress.hardness->hardness_Pa),
                scene.flow_stress.hardness->hardness_Pa / p.flow.total_Pa,
                constraint_model_name(scene.flow_stress.constraint), pa_to_mpa(p.flow.shear_Pa));
@@ -65,13 +66,12 @@ void print_prediction(std::FILE* text, const std::string& scene_path, const Anal
     if (length_m) fmt::print(text, "{:<17} {:.6g} mm\n", name, m_to_mm(*length_m));
     if (!length_m) fmt::print(text, "{:<17} not applicable (see the warnings)\n", name);
   }
-  print_edge_details(text, scene, p);                                         // chip_term.hpp
+  print_edge_details(text, scene, p);                                        // chip_term.hpp
   if (scene.force_model().print) scene.force_model().print(text, scene, p);  // the model's own lines
-  print_oxley_details(text, p);                                               // oxley_model.hpp
+  print_oxley_details(text, p);                                              // oxley_model.hpp
   const auto fired = p.guards.fired();
   if (fired.empty()) fmt::print(text, "guards            none fired\n");
-  for (auto guard : fired)
-    fmt::print(text, "guard             {}: {}\n", guard_name(guard), guard_policy(guard));
+  for (auto guard : fired) fmt::print(text, "guard             {}: {}\n", guard_name(guard), guard_policy(guard));
   for (const auto& w : p.warnings) fmt::print(text, "warning           {}\n", w);
 }
 
@@ -104,16 +104,19 @@ class OrthogonalCase final : public AnalyticCase {
     fmt::print(text, "regime            {}\n", cutting_regime_name(regime));
     switch (regime) {
       case CuttingRegime::ductile:
-        fmt::print(text, "model to use      the ductile-regime analytic models (merchant, liu_li, oxley; "
-                         "transition reduces to them here)\n");
+        fmt::print(text,
+                   "model to use      the ductile-regime analytic models (merchant, liu_li, oxley; "
+                   "transition reduces to them here)\n");
         break;
       case CuttingRegime::transition:
-        fmt::print(text, "model to use      models.force = transition (the ductile layer plus a fracture part); the "
-                         "ductile models alone overestimate the chip's integrity\n");
+        fmt::print(text,
+                   "model to use      models.force = transition (the ductile layer plus a fracture part); the "
+                   "ductile models alone overestimate the chip's integrity\n");
         break;
       case CuttingRegime::brittle:
-        fmt::print(text, "model to use      models.force = transition up to about 0.2 mm, the DEM (kerf-dem) for cuts "
-                         "of tens of um and more, or the trepanning model for abrasive drilling\n");
+        fmt::print(text,
+                   "model to use      models.force = transition up to about 0.2 mm, the DEM (kerf-dem) for cuts "
+                   "of tens of um and more, or the trepanning model for abrasive drilling\n");
         break;
     }
   }
@@ -128,7 +131,9 @@ class OrthogonalCase final : public AnalyticCase {
   std::string_view comparison_title() const override { return "Analytic force model"; }
   std::optional<double> force_width_m() const override { return scene_.width_m; }
 
-  std::vector<std::string> warnings() const override { return prediction_ ? prediction_->warnings : std::vector<std::string>{}; }
+  std::vector<std::string> warnings() const override {
+    return prediction_ ? prediction_->warnings : std::vector<std::string>{};
+  }
 
  private:
   AnalyticScene scene_;

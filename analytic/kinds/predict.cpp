@@ -34,9 +34,10 @@ void add_regime(const AnalyticScene& scene, Prediction& p) {
   if (const double held = scene.force_model().validated_depth_m; held > 0.0) {
     if (depth > held) {
       p.within_model_range = false;
-      p.warnings.push_back(fmt::format("uncut chip thickness {:.4g} um is beyond {:.3g} um, the deepest cut the "
-                                       "{} model was held against (docs/models.md)",
-                                       units::m_to_um(depth), units::m_to_um(held), p.force_model));
+      p.warnings.push_back(
+          fmt::format("uncut chip thickness {:.4g} um is beyond {:.3g} um, the deepest cut the "
+                      "{} model was held against (docs/models.md)",
+                      units::m_to_um(depth), units::m_to_um(held), p.force_model));
     }
     return;
   }
@@ -68,13 +69,11 @@ Prediction predict_forces(const AnalyticScene& scene) {
 /// A force or state that overflowed (a width of 1e308 mm, a chip of 1e308 um) is refused by name, with the
 /// inputs it came from, instead of being written as inf or nan.
 void require_finite(const AnalyticScene& scene, const Prediction& p) {
-  const std::pair<const char*, double> results[] = {{"cutting_force_N", p.cutting_force_N},
-                                                    {"thrust_force_N", p.thrust_force_N},
-                                                    {"shear_angle_deg", p.shear_angle_rad},
-                                                    {"chip_thickness_um", p.chip_thickness_m},
-                                                    {"flow_stress_MPa", p.flow.total_Pa},
-                                                    {"strain_rate_per_s", p.state.strain_rate_per_s},
-                                                    {"temperature_K", p.state.temperature_K}};
+  const std::pair<const char*, double> results[] = {
+      {"cutting_force_N", p.cutting_force_N},  {"thrust_force_N", p.thrust_force_N},
+      {"shear_angle_deg", p.shear_angle_rad},  {"chip_thickness_um", p.chip_thickness_m},
+      {"flow_stress_MPa", p.flow.total_Pa},    {"strain_rate_per_s", p.state.strain_rate_per_s},
+      {"temperature_K", p.state.temperature_K}};
   for (const auto& [name, value] : results) {
     if (std::isfinite(value)) continue;
     throw ModelError("predict", fmt::format("{} is {} for cut.uncut_chip_thickness_um = {}, cut.width_mm = {}, "
@@ -168,13 +167,12 @@ void write_prediction_cells(const AnalyticScene& scene, const Prediction& p, Cel
   w.number("temperature_K", p.state.temperature_K);
   for (std::size_t i = 0; i < scene.contact_lengths.size(); ++i) {
     const bool has = i < p.contact_lengths_m.size() && p.contact_lengths_m[i].second.has_value();
-    w.optional_number(scene.contact_lengths[i].column, has,
-                      has ? units::m_to_mm(*p.contact_lengths_m[i].second) : 0.0);
+    w.optional_number(scene.contact_lengths[i].column, has, has ? units::m_to_mm(*p.contact_lengths_m[i].second) : 0.0);
   }
   // The columns follow the models the scene asked for ('auto' may choose differently point by point).
   if (scene.force_model().edge_columns || scene.force_auto) write_edge_cells(scene, p, w);  // chip_term.hpp
-  if (scene.oxley.material || scene.force_auto) write_oxley_cells(p, w);                // oxley_model.hpp
-  if (scene.force_model().write_cells) scene.force_model().write_cells(scene, p, w);  // the model's own
+  if (scene.oxley.material || scene.force_auto) write_oxley_cells(p, w);                    // oxley_model.hpp
+  if (scene.force_model().write_cells) scene.force_model().write_cells(scene, p, w);        // the model's own
   if (scene.turning) {
     w.number("feed_um_per_rev", units::m_to_um(scene.turning->geometry.feed_m_per_rev));
     w.number("depth_of_cut_um", units::m_to_um(scene.turning->geometry.depth_of_cut_m));

@@ -21,7 +21,9 @@
 
 namespace kerf {
 
-const OrthogonalForceModel& AnalyticScene::force_model() const { return *force->orthogonal; }
+const OrthogonalForceModel& AnalyticScene::force_model() const {
+  return *force->orthogonal;
+}
 
 std::shared_ptr<const MaterialRecord> MaterialCache::share(const Json& spec, const std::string& path) {
   const std::string key = spec.dump();
@@ -44,11 +46,13 @@ const FieldUnit kMPerMin{"m/min", units::m_per_min_to_m_per_s, units::m_per_s_to
 // ---- tool
 const FieldTable<AnalyticScene>& tool_fields() {
   static const FieldTable<AnalyticScene> table{
-      required_number_field("rake_deg", units::kDeg, Range::open(-90.0, 90.0), "nominal rake angle", &AnalyticScene::rake_rad),
+      required_number_field("rake_deg", units::kDeg, Range::open(-90.0, 90.0), "nominal rake angle",
+                            &AnalyticScene::rake_rad),
       number_field("edge_radius_um", units::kUm, Range::non_negative(), "cutting-edge radius r (0: sharp)",
                    &AnalyticScene::edge_radius_m),
       number_field("clearance_deg", units::kDeg, Range::open(0.0, 90.0),
-                   "clearance (relief) angle; recorded, not used by the ductile models", &AnalyticScene::clearance_rad)};
+                   "clearance (relief) angle; recorded, not used by the ductile models",
+                   &AnalyticScene::clearance_rad)};
   return table;
 }
 
@@ -62,8 +66,9 @@ struct CutKeys {
 
 const FieldTable<CutKeys>& cut_fields() {
   static const FieldTable<CutKeys> table{
-      optional_number_field("uncut_chip_thickness_um", units::kUm, Range::positive(), "uncut chip thickness t0 (orthogonal cut)",
-                            &CutKeys::uncut_chip_thickness_m, "required without `turning`"),
+      optional_number_field("uncut_chip_thickness_um", units::kUm, Range::positive(),
+                            "uncut chip thickness t0 (orthogonal cut)", &CutKeys::uncut_chip_thickness_m,
+                            "required without `turning`"),
       optional_number_field("width_mm", units::kMm, Range::positive(), "width of cut; forces are for this width",
                             &CutKeys::width_m, "required without `turning`"),
       required_number_field("speed_m_per_min", kMPerMin, Range::positive(), "cutting speed", &CutKeys::speed_m_per_s),
@@ -94,12 +99,15 @@ constexpr EnumNames<TurningThickness> kTurningThicknessNames{kTurningThicknessNa
 
 const FieldTable<TurningScene>& turning_fields() {
   static const FieldTable<TurningScene> table{
-      number_at<TurningScene>("feed_um_per_rev", kUmPerRev, Range::positive(), "feed per revolution",
-                              [](auto& t) -> auto& { return t.geometry.feed_m_per_rev; }, true),
-      number_at<TurningScene>("nose_radius_mm", units::kMm, Range::positive(), "tool nose radius",
-                              [](auto& t) -> auto& { return t.geometry.nose_radius_m; }, true),
-      number_at<TurningScene>("depth_of_cut_um", units::kUm, Range::positive(), "depth of cut (up to the nose radius)",
-                              [](auto& t) -> auto& { return t.geometry.depth_of_cut_m; }, true),
+      number_at<TurningScene>(
+          "feed_um_per_rev", kUmPerRev, Range::positive(), "feed per revolution",
+          [](auto& t) -> auto& { return t.geometry.feed_m_per_rev; }, true),
+      number_at<TurningScene>(
+          "nose_radius_mm", units::kMm, Range::positive(), "tool nose radius",
+          [](auto& t) -> auto& { return t.geometry.nose_radius_m; }, true),
+      number_at<TurningScene>(
+          "depth_of_cut_um", units::kUm, Range::positive(), "depth of cut (up to the nose radius)",
+          [](auto& t) -> auto& { return t.geometry.depth_of_cut_m; }, true),
       choice_field("chip_thickness", kTurningThicknessNames,
                    "the chip thickness the models use: area / engaged edge (`equivalent`) or the largest",
                    &TurningScene::thickness)};
@@ -191,11 +199,13 @@ const FieldTable<AnalyticScene>& models_fields() {
   static const FieldTable<AnalyticScene> table = [] {
     FieldTable<AnalyticScene> out{
         force_field(),
-        NameListField<AnalyticScene>{"flow_stress", analytic_model_names("flow_stress"), "the terms of Shao et al. 2013's Eq. 8 to add, or one "
-                                     "hardness term for a glass or ceramic (the default for a material with a hardness "
-                                     "and no johnson_cook group: hardness with its constraint factor, else hardness_marsh)",
-                                     [](const AnalyticScene& s) { return s.flow_stress_terms; },
-                                     [](AnalyticScene& s, const std::vector<std::string>& terms) { s.flow_stress_terms = terms; }},
+        NameListField<AnalyticScene>{
+            "flow_stress", analytic_model_names("flow_stress"),
+            "the terms of Shao et al. 2013's Eq. 8 to add, or one "
+            "hardness term for a glass or ceramic (the default for a material with a hardness "
+            "and no johnson_cook group: hardness with its constraint factor, else hardness_marsh)",
+            [](const AnalyticScene& s) { return s.flow_stress_terms; },
+            [](AnalyticScene& s, const std::vector<std::string>& terms) { s.flow_stress_terms = terms; }},
         model_choice<AnalyticScene, DeformationModel, kDeformation>(
             "where the flow stress is evaluated: workpiece temperature with the shear-plane strain and Oxley's "
             "strain-rate estimate (C0 = 5); the `cut` values; or zone AB of an extended-Oxley solve",
@@ -260,25 +270,26 @@ void parse_friction(const CutKeys& keys, ObjectReader& cut, ObjectReader& root, 
 const std::vector<SceneKeySection>& key_sections() {
   static const std::vector<SceneKeySection> list = [] {
     std::vector<SceneKeySection> out = material_key_sections();
-    out.insert(out.end(), {
-        {"tool", "the cutting tool", [] { return fields_markdown(tool_fields()); }},
-        {"cut", "an orthogonal cut (`uncut_chip_thickness_um`, `width_mm`) or a turning cut (`turning`)",
-         [] { return fields_markdown(cut_fields()); }},
-        {"cut.turning",
-         "optional, instead of `cut.uncut_chip_thickness_um` and `width_mm`: a round-nose turning cut, whose width "
-         "is chip area / thickness",
-         [] { return fields_markdown(turning_fields()); }},
-        {"measured",
-         "optional, top level: the friction angle is then beta = atan(F_thrust / F_cutting) + rake (Berezvai et al. "
-         "2019), in place of a friction value in `cut`",
-         [] { return fields_markdown(measured_fields()); }},
-        {"models", "the models to run; besides these, the objects `quadrature`, `transition` and `flow_stress_policy`",
-         [] { return fields_markdown(models_fields()); }},
-        {"models.quadrature", "optional: the Liu-Li integration", [] { return fields_markdown(quadrature_fields()); }},
-        {"models.transition", "optional: models.force = transition's ductile layer and fracture part",
-         [] { return fields_markdown(transition_fields()); }},
-        {"models.flow_stress_policy", "optional: the Johnson-Cook law outside its domain",
-         [] { return fields_markdown(flow_stress_policy_fields()); }}});
+    out.insert(
+        out.end(),
+        {{"tool", "the cutting tool", [] { return fields_markdown(tool_fields()); }},
+         {"cut", "an orthogonal cut (`uncut_chip_thickness_um`, `width_mm`) or a turning cut (`turning`)",
+          [] { return fields_markdown(cut_fields()); }},
+         {"cut.turning",
+          "optional, instead of `cut.uncut_chip_thickness_um` and `width_mm`: a round-nose turning cut, whose width "
+          "is chip area / thickness",
+          [] { return fields_markdown(turning_fields()); }},
+         {"measured",
+          "optional, top level: the friction angle is then beta = atan(F_thrust / F_cutting) + rake (Berezvai et al. "
+          "2019), in place of a friction value in `cut`",
+          [] { return fields_markdown(measured_fields()); }},
+         {"models", "the models to run; besides these, the objects `quadrature`, `transition` and `flow_stress_policy`",
+          [] { return fields_markdown(models_fields()); }},
+         {"models.quadrature", "optional: the Liu-Li integration", [] { return fields_markdown(quadrature_fields()); }},
+         {"models.transition", "optional: models.force = transition's ductile layer and fracture part",
+          [] { return fields_markdown(transition_fields()); }},
+         {"models.flow_stress_policy", "optional: the Johnson-Cook law outside its domain",
+          [] { return fields_markdown(flow_stress_policy_fields()); }}});
     for (const auto& s : trepanning_key_sections()) out.push_back(s);
     return out;
   }();
@@ -286,7 +297,9 @@ const std::vector<SceneKeySection>& key_sections() {
 }
 }  // namespace
 
-std::vector<std::string> analytic_scene_sections() { return key_section_names(key_sections()); }
+std::vector<std::string> analytic_scene_sections() {
+  return key_section_names(key_sections());
+}
 
 std::string analytic_scene_keys_markdown(const std::string& section) {
   return key_sections_markdown(key_sections(), section);
@@ -377,24 +390,23 @@ void resolve_force_model(AnalyticScene& scene) {
   if (scene.turning) {
     scene.turning->chip = round_nose_chip(scene.turning->geometry, nullptr);
     const auto& chip = scene.turning->chip;
-    scene.uncut_chip_thickness_m = scene.turning->thickness == TurningThickness::maximum ? chip.maximum_thickness_m
-                                                                                         : chip.equivalent_thickness_m;
+    scene.uncut_chip_thickness_m =
+        scene.turning->thickness == TurningThickness::maximum ? chip.maximum_thickness_m : chip.equivalent_thickness_m;
     scene.width_m = chip.area_m2 / scene.uncut_chip_thickness_m;
   }
 
   // models.force = "auto" (also when the scene names none): its line chooses the model.
   if (scene.force_auto) {
     const AnalyticModelInfo* chooser = scene.force ? scene.force : registered_line(analytic_models(), "force", "auto");
-    scene.force = registered_line(analytic_models(), "force",
-                                  chooser->orthogonal->choose(scene, &scene.force_choice_reason));
+    scene.force =
+        registered_line(analytic_models(), "force", chooser->orthogonal->choose(scene, &scene.force_choice_reason));
   }
   const bool solves_oxley = scene.force_model().solves_oxley;
 
   // Friction is needed by every model except oxley, unless the chip ratio gives the shear angle and a closure
   // other than the constant one gives beta (which then also sets the stagnation angle and contact lengths).
-  const bool needs_friction =
-      !solves_oxley &&
-      (scene.shear_angle != ShearAngleSource::chip_ratio || scene.chip.liu_li.closure == FrictionClosure::constant);
+  const bool needs_friction = !solves_oxley && (scene.shear_angle != ShearAngleSource::chip_ratio ||
+                                                scene.chip.liu_li.closure == FrictionClosure::constant);
   if (needs_friction && !scene.friction_angle_rad) {
     throw InputError("cut.friction_angle_deg", "(missing)",
                      "a friction angle (or cut.friction_coefficient, or measured.cutting_force_N and "
@@ -423,8 +435,9 @@ void resolve_flow_stress(const MaterialRecord& record, MaterialCache& materials,
     const auto* line = registered_line(analytic_models(), "flow_stress", term);
     if (!line || line->id < 0) continue;  // the metals' terms are handled by name below
     if (scene.flow_stress.hardness) {
-      throw InputError("models.flow_stress", term, "one hardness term at most (hardness, hardness_marsh or "
-                                                   "hardness_johnson)");
+      throw InputError("models.flow_stress", term,
+                       "one hardness term at most (hardness, hardness_marsh or "
+                       "hardness_johnson)");
     }
     scene.flow_stress.hardness = materials.derived(record, &hardness_flow_from_material);
     scene.flow_stress.constraint = static_cast<ConstraintModel>(line->id);
@@ -446,8 +459,10 @@ void resolve_flow_stress(const MaterialRecord& record, MaterialCache& materials,
   if (const Json* jc_group = record.group("johnson_cook"); jc_group && jc_group->contains("melting_temperature_K")) {
     scene.flow_stress.melting_temperature_K = jc_group->at("melting_temperature_K").get<double>();
     // The microstructural terms soften with the material's Johnson-Cook thermal factor (flow_stress.hpp).
-    if (!scene.flow_stress.johnson_cook && (has_term("hall_petch") || has_term("dislocation")) && jc_group->contains("m")) {
-      scene.flow_stress.thermal_softening = johnson_cook ? *johnson_cook : materials.derived(record, &johnson_cook_from_material);
+    if (!scene.flow_stress.johnson_cook && (has_term("hall_petch") || has_term("dislocation")) &&
+        jc_group->contains("m")) {
+      scene.flow_stress.thermal_softening =
+          johnson_cook ? *johnson_cook : materials.derived(record, &johnson_cook_from_material);
     }
   }
   scene.flow_stress.validate("models.flow_stress");
@@ -461,7 +476,9 @@ void resolve_deformation(const MaterialRecord& record, const CutKeys& keys, Anal
   const auto& [strain, strain_rate, temperature] = std::tie(keys.strain, keys.strain_rate_per_s, keys.temperature_K);
   if (scene.deformation == DeformationModel::given) {
     if (!strain || !strain_rate || !temperature) {
-      throw InputError(!strain ? "cut.strain" : !strain_rate ? "cut.strain_rate_per_s" : "cut.temperature_K",
+      throw InputError(!strain        ? "cut.strain"
+                       : !strain_rate ? "cut.strain_rate_per_s"
+                                      : "cut.temperature_K",
                        "(missing)", "a value: models.deformation = given needs strain, strain rate and temperature");
     }
     scene.given_state = DeformationState{*strain, *strain_rate, *temperature};

@@ -34,13 +34,22 @@ struct UnitSuffix {
 };
 const std::vector<UnitSuffix>& unit_suffixes() {
   // Longer suffixes first: "_um_per_s" before "_um", "_N_m" before "_N".
-  static const std::vector<UnitSuffix> suffixes = {
-      {"_um_per_s", "um/s", "speed"}, {"_mm_per_s", "mm/s", "speed"}, {"_m_per_s", "m/s", "speed"},
-      {"_um_s", "um/s", "speed"},     {"_mm_s", "mm/s", "speed"},     {"_m_per_min", "m/min", "speed"},
-      {"_rpm", "rpm", "rotation speed"}, {"_deg", "deg", "angle"},    {"_nm", "nm", "length"},
-      {"_um", "um", "length"},        {"_mm", "mm", "length"},        {"_N_m", "N m", "torque"},
-      {"_Nm", "N m", "torque"},       {"_kN", "kN", "force"},         {"_mN", "mN", "force"},
-      {"_N", "N", "force"}};
+  static const std::vector<UnitSuffix> suffixes = {{"_um_per_s", "um/s", "speed"},
+                                                   {"_mm_per_s", "mm/s", "speed"},
+                                                   {"_m_per_s", "m/s", "speed"},
+                                                   {"_um_s", "um/s", "speed"},
+                                                   {"_mm_s", "mm/s", "speed"},
+                                                   {"_m_per_min", "m/min", "speed"},
+                                                   {"_rpm", "rpm", "rotation speed"},
+                                                   {"_deg", "deg", "angle"},
+                                                   {"_nm", "nm", "length"},
+                                                   {"_um", "um", "length"},
+                                                   {"_mm", "mm", "length"},
+                                                   {"_N_m", "N m", "torque"},
+                                                   {"_Nm", "N m", "torque"},
+                                                   {"_kN", "kN", "force"},
+                                                   {"_mN", "mN", "force"},
+                                                   {"_N", "N", "force"}};
   return suffixes;
 }
 
@@ -69,14 +78,16 @@ Unit column_unit(const std::string& key, const std::string& column, const std::s
   const UnitSuffix* column_suffix = find_unit_suffix(column);
   if (!column_suffix || !key_unit) {
     if (key_unit && column != key) {
-      notes.push_back(fmt::format("CSV column {} names no unit: taken in {}, the unit of {}", column, key_unit->unit, key));
+      notes.push_back(
+          fmt::format("CSV column {} names no unit: taken in {}, the unit of {}", column, key_unit->unit, key));
     }
     return split_unit(key, "--map").second;
   }
   if (column_suffix->dimension != key_unit->dimension) {
-    throw InputError("--map", mapping,
-                     fmt::format("a CSV column in a unit of {} like {}'s {} (the column's name says {}, a unit of {})",
-                                 key_unit->dimension, key, key_unit->unit, column_suffix->unit, column_suffix->dimension));
+    throw InputError(
+        "--map", mapping,
+        fmt::format("a CSV column in a unit of {} like {}'s {} (the column's name says {}, a unit of {})",
+                    key_unit->dimension, key, key_unit->unit, column_suffix->unit, column_suffix->dimension));
   }
   if (column_suffix->unit != key_unit->unit) {
     notes.push_back(fmt::format("CSV column {} converted from {} to {}, the unit of {}", column, column_suffix->unit,
@@ -231,8 +242,7 @@ DataSet measured_data(const CsvTable& table, const Bindings& bindings, const std
   const std::optional<double> force_width_m = kind.force_width_m();
   const bool per_width = force_width_m.has_value();
   ComparisonSpec& spec = out.comparison.spec;
-  spec.title = fmt::format("{} against {}", kind.comparison_title(),
-                           experiments_csv.filename().string());
+  spec.title = fmt::format("{} against {}", kind.comparison_title(), experiments_csv.filename().string());
   CsvBinding measured_binding;
   measured_binding.name = experiments_csv.filename().string();
   for (const auto& c : conditions) {
@@ -249,11 +259,13 @@ DataSet measured_data(const CsvTable& table, const Bindings& bindings, const std
     out.notes.push_back("measured forces act over the width in the CSV column width_mm");
   } else if (options.measured_width_mm) {
     measured_basis = WidthBasis::total(*options.measured_width_mm * 1e-3);
-    out.notes.push_back(fmt::format("measured forces act over {} mm (--measured-width-mm)", *options.measured_width_mm));
+    out.notes.push_back(
+        fmt::format("measured forces act over {} mm (--measured-width-mm)", *options.measured_width_mm));
   } else if (per_width) {
-    out.notes.push_back(fmt::format("measured forces assumed to act over the scene's width, {} mm (the CSV has no "
-                                    "width_mm column; set --measured-width-mm otherwise)",
-                                    units::m_to_mm(scene_width_m)));
+    out.notes.push_back(
+        fmt::format("measured forces assumed to act over the scene's width, {} mm (the CSV has no "
+                    "width_mm column; set --measured-width-mm otherwise)",
+                    units::m_to_mm(scene_width_m)));
   }
   for (const auto& q : quantities) {
     const auto [key, unit] = split_unit(q.prediction_column, "--map");
@@ -265,9 +277,8 @@ DataSet measured_data(const CsvTable& table, const Bindings& bindings, const std
     out.notes.push_back(fmt::format("quantity {} <- CSV column {}", q.prediction_column, q.column));
   }
   DataSet measured = dataset_from_csv(table, spec, measured_binding);
-  const bool widths_differ =
-      per_width && (!measured_binding.width_column_mm.empty() ||
-                      std::abs(measured_basis.width_m - scene_width_m) > 1e-12 * scene_width_m);
+  const bool widths_differ = per_width && (!measured_binding.width_column_mm.empty() ||
+                                           std::abs(measured_basis.width_m - scene_width_m) > 1e-12 * scene_width_m);
   if (widths_differ) spec.views = {WidthView::as_published, WidthView::per_unit_width};
   return measured;
 }
@@ -314,15 +325,16 @@ void fit_lumped_groups(Json& document, const Bindings& bindings, const DataSet& 
       units::pa_to_mpa(fit.torque.standard_error_Pa), fit.torque.fit.mean_abs_error_percent,
       fit.torque.fit.max_abs_error_percent, fit.torque.fit.bias_percent, fit.torque.loo.mean_abs_error_percent,
       fit.torque.loo.max_abs_error_percent);
-  out.report.extra_summary["fit"] = {
-      {"axial_group_MPa", units::pa_to_mpa(fit.axial.value_Pa)},
-      {"torque_group_MPa", units::pa_to_mpa(fit.torque.value_Pa)},
-      {"axial_force", {{"mean_abs_error_percent", fit.axial.fit.mean_abs_error_percent},
-                       {"loo_mean_abs_error_percent", fit.axial.loo.mean_abs_error_percent},
-                       {"loo_max_abs_error_percent", fit.axial.loo.max_abs_error_percent}}},
-      {"torque", {{"mean_abs_error_percent", fit.torque.fit.mean_abs_error_percent},
-                  {"loo_mean_abs_error_percent", fit.torque.loo.mean_abs_error_percent},
-                  {"loo_max_abs_error_percent", fit.torque.loo.max_abs_error_percent}}}};
+  out.report.extra_summary["fit"] = {{"axial_group_MPa", units::pa_to_mpa(fit.axial.value_Pa)},
+                                     {"torque_group_MPa", units::pa_to_mpa(fit.torque.value_Pa)},
+                                     {"axial_force",
+                                      {{"mean_abs_error_percent", fit.axial.fit.mean_abs_error_percent},
+                                       {"loo_mean_abs_error_percent", fit.axial.loo.mean_abs_error_percent},
+                                       {"loo_max_abs_error_percent", fit.axial.loo.max_abs_error_percent}}},
+                                     {"torque",
+                                      {{"mean_abs_error_percent", fit.torque.fit.mean_abs_error_percent},
+                                       {"loo_mean_abs_error_percent", fit.torque.loo.mean_abs_error_percent},
+                                       {"loo_max_abs_error_percent", fit.torque.loo.max_abs_error_percent}}}};
 }
 
 /// A column's text, unquoted; empty when the row has no such column.
@@ -341,7 +353,8 @@ void mark_critical_depth(const Columns& columns, const Bindings& bindings, Compa
   const double critical_nm = std::stod(critical);
   for (std::size_t i = 0; i < bindings.conditions.size(); ++i) {
     const std::string& key = spec.conditions[i].key;
-    const bool marked = std::any_of(spec.marks.begin(), spec.marks.end(), [&](const auto& m) { return m.condition == key; });
+    const bool marked =
+        std::any_of(spec.marks.begin(), spec.marks.end(), [&](const auto& m) { return m.condition == key; });
     if (bindings.conditions[i].scene_path != "cut.uncut_chip_thickness_um" || marked) continue;
     spec.marks.push_back({key, critical_nm * 1e-9, fmt::format("d#dc#u = {:.3g} nm", critical_nm)});
   }
@@ -407,9 +420,10 @@ PredictedSet predictions(const Json& document, const Bindings& bindings, const D
 std::string matching_notes(const SceneComparison& out) {
   std::string notes = "\n## How the columns were matched\n\n";
   for (const auto& n : out.notes) notes += "- " + n + "\n";
-  notes += "\n## Regime and guards per row\n\nThe regime of each row's prediction against the ductile-brittle critical "
-           "depth (empty when the material has none) and the guards that fired (a force set by a guard's policy is "
-           "not the model's own).\n\n| CSV line | regime | guards | warnings |\n|---|---|---|---|\n";
+  notes +=
+      "\n## Regime and guards per row\n\nThe regime of each row's prediction against the ductile-brittle critical "
+      "depth (empty when the material has none) and the guards that fired (a force set by a guard's policy is "
+      "not the model's own).\n\n| CSV line | regime | guards | warnings |\n|---|---|---|---|\n";
   for (const auto& r : out.rows) {
     notes += fmt::format("| {} | {} | {} | {} |\n", r.line, r.regime.empty() ? "-" : r.regime,
                          r.guards.empty() ? "none" : fmt::format("{}", fmt::join(r.guards, ";")),
@@ -426,7 +440,8 @@ SceneComparison compare_scene(const Json& scene_document, const std::filesystem:
   const CsvTable table = read_csv_file(experiments_csv);
   MaterialCache materials;
   const auto kind = parse_scene(scene_document, &materials);
-  const Bindings bindings = bind_columns(table, scene_document, experiments_csv, options, scene_column_names(*kind), out);
+  const Bindings bindings =
+      bind_columns(table, scene_document, experiments_csv, options, scene_column_names(*kind), out);
   const DataSet measured = measured_data(table, bindings, experiments_csv, options, *kind, out);
   Json document = scene_document;
   if (options.fit) {

@@ -52,8 +52,10 @@ class Tally {
  public:
   void add(std::string_view item) {
     const auto it = std::find_if(counts_.begin(), counts_.end(), [&](const auto& c) { return c.first == item; });
-    if (it == counts_.end()) counts_.emplace_back(std::string(item), 1);
-    else ++it->second;
+    if (it == counts_.end())
+      counts_.emplace_back(std::string(item), 1);
+    else
+      ++it->second;
   }
   bool empty() const { return counts_.empty(); }
   std::size_t count(std::string_view item) const {
@@ -76,7 +78,8 @@ std::string sweep_summary(const SweepGrid& grid, const std::vector<SweepRow>& ro
   const auto index_of = [&](std::string_view name) {
     return static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
   };
-  const std::size_t regime_c = index_of("regime"), range_c = index_of("within_model_range"), guard_c = index_of("guards");
+  const std::size_t regime_c = index_of("regime"), range_c = index_of("within_model_range"),
+                    guard_c = index_of("guards");
   const auto unquoted = [](std::string_view field) {
     return field.size() >= 2 && field.front() == '"' ? field.substr(1, field.size() - 2) : field;
   };
@@ -120,8 +123,10 @@ void plot_sweep(const SweepGrid& grid, const std::vector<SweepRow>& rows, const 
   MaterialCache& materials = grid.materials();
   const std::size_t n_points = grid.size();
   if (grid.axes()[0].numbers.empty()) {
-    throw InputError("--plot", path, fmt::format("a numeric first --vary key to draw against ({} is categorical: "
-                                                 "put a numeric key first)", grid.axes()[0].key));
+    throw InputError("--plot", path,
+                     fmt::format("a numeric first --vary key to draw against ({} is categorical: "
+                                 "put a numeric key first)",
+                                 grid.axes()[0].key));
   }
   const bool x_log = grid.axes()[0].log_spacing;
   std::vector<std::string> axis_paths;
@@ -130,7 +135,8 @@ void plot_sweep(const SweepGrid& grid, const std::vector<SweepRow>& rows, const 
   const auto coordinate = [&](std::size_t i, std::size_t a) { return axis_values[a][grid.value_index(i, a)]; };
   // The two force columns' numbers, read once.
   std::vector<std::vector<std::optional<double>>> force_numbers;
-  for (const char* force : {"cutting_force_N", "thrust_force_N"}) force_numbers.push_back(column_numbers(grid, rows, force));
+  for (const char* force : {"cutting_force_N", "thrust_force_N"})
+    force_numbers.push_back(column_numbers(grid, rows, force));
   const auto in_range = column_texts(grid, rows, "within_model_range");
   const auto outside = [&](std::size_t i) { return in_range[i] && *in_range[i] == "no"; };
   FigureSpec fig;
@@ -153,7 +159,8 @@ void plot_sweep(const SweepGrid& grid, const std::vector<SweepRow>& rows, const 
   const auto width_axis =
       static_cast<std::size_t>(std::find(axis_paths.begin(), axis_paths.end(), "cut.width_mm") - axis_paths.begin());
   const Json* width = nullptr;
-  if (base.contains("cut") && base["cut"].is_object() && base["cut"].contains("width_mm")) width = &base["cut"]["width_mm"];
+  if (base.contains("cut") && base["cut"].is_object() && base["cut"].contains("width_mm"))
+    width = &base["cut"]["width_mm"];
   const bool per_mm = width_axis < axis_paths.size();
   if (per_mm) {
     fig.y_label = "force per mm of width (N/mm)";
@@ -170,7 +177,8 @@ void plot_sweep(const SweepGrid& grid, const std::vector<SweepRow>& rows, const 
   bool any_outside = false;
   for (std::size_t k = 0; k < n_second; ++k) {
     bool drawn = false;
-    for (const bool dashed : {false, true}) {  // the cutting force, then the thrust (a column the scene lacks: no values)
+    for (const bool dashed :
+         {false, true}) {  // the cutting force, then the thrust (a column the scene lacks: no values)
       PlotSeries series;
       series.style = dashed ? SeriesStyle::dashed_line : SeriesStyle::line;
       series.color = kColors[k];
@@ -182,7 +190,8 @@ void plot_sweep(const SweepGrid& grid, const std::vector<SweepRow>& rows, const 
       for (std::size_t i = 0; i < n_points; ++i) {
         if (axis_values.size() > 1 && grid.value_index(i, 1) != k) continue;
         bool first_of_the_rest = true;  // further axes: their first value
-        for (std::size_t a = 2; a < axis_values.size(); ++a) first_of_the_rest = first_of_the_rest && grid.value_index(i, a) == 0;
+        for (std::size_t a = 2; a < axis_values.size(); ++a)
+          first_of_the_rest = first_of_the_rest && grid.value_index(i, a) == 0;
         if (!first_of_the_rest) continue;
         const auto& value = force_numbers[dashed ? 1 : 0][i];
         if (!value) continue;  // refused, or no such column
@@ -206,10 +215,9 @@ void plot_sweep(const SweepGrid& grid, const std::vector<SweepRow>& rows, const 
       if (axis_values[1].empty()) {  // a categorical key: its value as written
         key.label = fmt::format("{} = {}", label, grid.axes()[1].texts[k]);
       } else {
-        key.label = open == std::string::npos
-                        ? fmt::format("{} = {:g}", label, axis_values[1][k])
-                        : fmt::format("{} = {:g} {}", label.substr(0, open), axis_values[1][k],
-                                      label.substr(open + 2, label.size() - open - 3));
+        key.label = open == std::string::npos ? fmt::format("{} = {:g}", label, axis_values[1][k])
+                                              : fmt::format("{} = {:g} {}", label.substr(0, open), axis_values[1][k],
+                                                            label.substr(open + 2, label.size() - open - 3));
       }
       key.style = SeriesStyle::line;
       key.color = kColors[k];
@@ -224,7 +232,8 @@ void plot_sweep(const SweepGrid& grid, const std::vector<SweepRow>& rows, const 
     const auto critical = column_numbers(grid, rows, "critical_depth_nm");
     std::vector<std::pair<double, std::size_t>> marks;  // d_c [nm] and a point that has it
     for (std::size_t i = 0; i < n_points; ++i)
-      if (critical[i] && std::none_of(marks.begin(), marks.end(), [&](const auto& m) { return m.first == *critical[i]; }))
+      if (critical[i] &&
+          std::none_of(marks.begin(), marks.end(), [&](const auto& m) { return m.first == *critical[i]; }))
         marks.emplace_back(*critical[i], i);
     // Where it falls within the data's x range widened by its span (in decades on a log axis): a mark far
     // outside it would squeeze the data into a corner.
@@ -286,10 +295,11 @@ std::vector<std::string> falling_force_warnings(const SweepGrid& grid, const std
       if (falls.empty()) continue;
       const std::size_t i = falls.front(), j = i - stride;
       const auto x = [&](std::size_t point) { return axes[a].numbers[grid.value_index(point, a)]; };
-      out.push_back(fmt::format("{} falls as cut.uncut_chip_thickness_um grows at {} point(s), first from {:.6g} N "
-                                "at {:.6g} um to {:.6g} N at {:.6g} um: the model may have changed branch or left "
-                                "its domain there",
-                                force, falls.size(), *values[j], x(j), *values[i], x(i)));
+      out.push_back(
+          fmt::format("{} falls as cut.uncut_chip_thickness_um grows at {} point(s), first from {:.6g} N "
+                      "at {:.6g} um to {:.6g} N at {:.6g} um: the model may have changed branch or left "
+                      "its domain there",
+                      force, falls.size(), *values[j], x(j), *values[i], x(i)));
     }
   }
   return out;

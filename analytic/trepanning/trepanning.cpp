@@ -65,7 +65,7 @@ ImpliedTrepanningMaterial implied_trepanning_material(const TrepanningGroups& gr
   check_number(units::pa_to_gpa(hardness_Pa), "hardness_GPa", Range::positive(), "GPa");
   ImpliedTrepanningMaterial m;
   m.hardness_Pa = hardness_Pa;
-  const double tan_phi = groups.axial_group_Pa / hardness_Pa;                                    // K_F = H tan(phi)
+  const double tan_phi = groups.axial_group_Pa / hardness_Pa;  // K_F = H tan(phi)
   m.half_angle_rad = std::atan(tan_phi);
   m.friction_coefficient = 2.0 * (groups.torque_group_Pa - hardness_Pa) / (kPi * groups.axial_group_Pa);  // K_M
   m.physical = m.friction_coefficient >= 0.0;
@@ -87,23 +87,25 @@ void check_feed_plausible(const TrepanningTool& tool, const TrepanningCut& cut) 
                                  60.0 * cut.feed_rate_m_per_s / wall_m, units::m_to_um(wall_m)));
   }
   if (cut.feed_per_rev_m() > wall_m) {
-    throw InputError("feed_rate_um_per_s", format_value(units::m_to_um(cut.feed_rate_m_per_s)),
-                     fmt::format("a feed per revolution below the cutter's wall width (D - d)/2 = {:.6g} um; it gives "
-                                 "{:.6g} um/rev at {:.6g} rpm",
-                                 units::m_to_um(wall_m), units::m_to_um(cut.feed_per_rev_m()),
-                                 cut.spindle_speed_rev_per_s * 60.0));
+    throw InputError(
+        "feed_rate_um_per_s", format_value(units::m_to_um(cut.feed_rate_m_per_s)),
+        fmt::format("a feed per revolution below the cutter's wall width (D - d)/2 = {:.6g} um; it gives "
+                    "{:.6g} um/rev at {:.6g} rpm",
+                    units::m_to_um(wall_m), units::m_to_um(cut.feed_per_rev_m()), cut.spindle_speed_rev_per_s * 60.0));
   }
 }
 
-TrepanningForces trepanning_forces(const TrepanningTool& tool, const TrepanningCut& cut, const TrepanningGroups& groups) {
+TrepanningForces trepanning_forces(const TrepanningTool& tool, const TrepanningCut& cut,
+                                   const TrepanningGroups& groups) {
   tool.validate("tool");
   cut.validate("cut");
   groups.validate("groups");
   const TrepanningForces forces{axial_regressor(tool, cut) * groups.axial_group_Pa,
-                                 torque_regressor(tool, cut) * groups.torque_group_Pa, cut.feed_per_rev_m()};
+                                torque_regressor(tool, cut) * groups.torque_group_Pa, cut.feed_per_rev_m()};
   // A product beyond a double (a feed of 1e308 um/s, a speed of 1e-320 rpm) is refused, not written as inf.
   for (const auto& [name, value] : {std::pair<const char*, double>{"axial_force_N", forces.axial_force_N},
-                                    {"torque_N_m", forces.torque_N_m}, {"feed_per_rev_um", forces.feed_per_rev_m}}) {
+                                    {"torque_N_m", forces.torque_N_m},
+                                    {"feed_per_rev_um", forces.feed_per_rev_m}}) {
     if (!std::isfinite(value) || (value == 0.0 && cut.feed_rate_m_per_s > 0.0)) {
       throw ModelError("trepanning", fmt::format("{} is {} for a feed rate of {} um/s at {} rpm: the inputs lie "
                                                  "beyond what a double holds",
@@ -135,12 +137,12 @@ TrepanningGritDiagnostics trepanning_grit_diagnostics(const TrepanningTool& tool
   const double D = tool.outer_diameter_m, d = tool.inner_diameter_m;
   const double a = grits.grit_width_m, C = grits.grit_density_per_m2, G = grits.shape_coefficient;
   TrepanningGritDiagnostics out;
-  out.face_area_m2 = kPi / 4.0 * (D * D - d * d) * G;       // Eq. 4
-  out.grit_count = out.face_area_m2 * C;                     // Eq. 2
-  out.grits_per_edge_set = (D - d) / (2.0 * a);              // Eq. 3
-  out.cutting_edges = out.grit_count / out.grits_per_edge_set;  // Eq. 1 (= pi a (D + d) C G / 2, Eq. 5)
+  out.face_area_m2 = kPi / 4.0 * (D * D - d * d) * G;              // Eq. 4
+  out.grit_count = out.face_area_m2 * C;                           // Eq. 2
+  out.grits_per_edge_set = (D - d) / (2.0 * a);                    // Eq. 3
+  out.cutting_edges = out.grit_count / out.grits_per_edge_set;     // Eq. 1 (= pi a (D + d) C G / 2, Eq. 5)
   out.feed_per_edge_m = cut.feed_per_rev_m() / out.cutting_edges;  // Eqs. 6-8
-  out.grit_depth_m = out.feed_per_edge_m;                            // Eq. 14
+  out.grit_depth_m = out.feed_per_edge_m;                          // Eq. 14
   const double g = out.grit_depth_m;
   out.implied_half_angle_rad = std::atan(a / (2.0 * g));  // Eq. 13: a = 2 g tan(phi)
   // Eq. 11 with tan(phi) = a / (2 g): F_an1 = (pi/2) g^2 tan^2(phi) H = (pi/4) g a (H tan(phi)); F_an2 = 0 (Eq. 17).

@@ -93,8 +93,10 @@ class TrepanningCase final : public AnalyticCase {
   bool fits_lumped_groups() const override { return true; }
 
   void print_regime(std::FILE* text, const std::string& scene_path) const override {
-    fmt::print(text, "{}: the trepanning model is a brittle-regime model (Yu et al. 2023); the depth each grit cuts "
-               "depends on the grit density, which the scene does not give\n", scene_path);
+    fmt::print(text,
+               "{}: the trepanning model is a brittle-regime model (Yu et al. 2023); the depth each grit cuts "
+               "depends on the grit density, which the scene does not give\n",
+               scene_path);
   }
 
  private:

@@ -12,8 +12,12 @@ namespace {
 
 const FieldUnit kUmPerS{"um/s", units::um_to_m, units::m_to_um};
 const FieldUnit kRpm{"rev/min", units::rpm_to_rev_per_s, units::rev_per_s_to_rpm};
-constexpr double per_mm2_to_per_m2(double n) { return 1e6 * n; }
-constexpr double per_m2_to_per_mm2(double n) { return 1e-6 * n; }
+constexpr double per_mm2_to_per_m2(double n) {
+  return 1e6 * n;
+}
+constexpr double per_m2_to_per_mm2(double n) {
+  return 1e-6 * n;
+}
 const FieldUnit kPerMm2{"1/mm^2", per_mm2_to_per_m2, per_m2_to_per_mm2};
 
 const FieldTable<TrepanningTool>& tool_fields() {
@@ -21,7 +25,8 @@ const FieldTable<TrepanningTool>& tool_fields() {
       required_number_field("outer_diameter_mm", units::kMm, Range::positive(), "cutter outer diameter D",
                             &TrepanningTool::outer_diameter_m),
       required_number_field("inner_diameter_mm", units::kMm, Range::non_negative(),
-                            "cutter inner diameter d, D > d (0: a solid core drill)", &TrepanningTool::inner_diameter_m)};
+                            "cutter inner diameter d, D > d (0: a solid core drill)",
+                            &TrepanningTool::inner_diameter_m)};
   return table;
 }
 
@@ -51,8 +56,8 @@ const FieldTable<TrepanningModels>& models_fields() {
 
 const FieldTable<TrepanningGroups>& groups_fields() {
   static const FieldTable<TrepanningGroups> table{
-      required_number_field("axial_group_MPa", units::kMPa, Range::positive(), "K_F = H tan(phi) (what `compare --fit` fits)",
-                            &TrepanningGroups::axial_group_Pa),
+      required_number_field("axial_group_MPa", units::kMPa, Range::positive(),
+                            "K_F = H tan(phi) (what `compare --fit` fits)", &TrepanningGroups::axial_group_Pa),
       required_number_field("torque_group_MPa", units::kMPa, Range::positive(), "K_M = H (1 + pi tan(phi) mu / 2)",
                             &TrepanningGroups::torque_group_Pa)};
   return table;
@@ -60,11 +65,11 @@ const FieldTable<TrepanningGroups>& groups_fields() {
 
 const FieldTable<TrepanningMaterial>& material_fields() {
   static const FieldTable<TrepanningMaterial> table{
-      NumberField<TrepanningMaterial>{
-          "hardness_GPa", units::kGPa, Range::positive(), "hardness H",
-          [](const TrepanningMaterial& m) { return m.hardness_Pa; },
-          [](TrepanningMaterial& m, double v) { m.hardness_Pa = v; }, false,
-          [](const TrepanningMaterial& m) { return m.hardness_Pa > 0.0; }, "the material's `brittle.hardness_GPa`"},
+      NumberField<TrepanningMaterial>{"hardness_GPa", units::kGPa, Range::positive(), "hardness H",
+                                      [](const TrepanningMaterial& m) { return m.hardness_Pa; },
+                                      [](TrepanningMaterial& m, double v) { m.hardness_Pa = v; }, false,
+                                      [](const TrepanningMaterial& m) { return m.hardness_Pa > 0.0; },
+                                      "the material's `brittle.hardness_GPa`"},
       required_number_field("half_angle_deg", units::kDeg, Range::open(0.0, 90.0), "abrasive grit half angle phi",
                             &TrepanningMaterial::half_angle_rad),
       required_number_field("friction_coefficient", units::kNone, Range::non_negative(), "friction coefficient mu",
@@ -107,7 +112,8 @@ TrepanningScene parse_trepanning_scene(const Json& document, MaterialCache* cach
   root.ignore("description");
   TrepanningScene scene;
   // A sweep's or a fit's points share one record: the file is read once.
-  scene.material = cache ? cache->get(root.get("material"), "material") : load_material(root.get("material"), "material");
+  scene.material =
+      cache ? cache->get(root.get("material"), "material") : load_material(root.get("material"), "material");
 
   ObjectReader tool = root.get_object("tool");
   read_fields_into(tool, tool_fields(), scene.tool, SiCheck::on);

@@ -40,7 +40,9 @@ std::vector<ConditionValue> conditions_of(const TrepanningCut& cut) {
   return {ConditionValue::number(cut.spindle_speed_rev_per_s), ConditionValue::number(cut.feed_rate_m_per_s)};
 }
 
-std::string pct(double v) { return fmt::format("{:.2f}", v); }
+std::string pct(double v) {
+  return fmt::format("{:.2f}", v);
+}
 
 }  // namespace
 
@@ -100,8 +102,10 @@ void check_acceptance(TrepanningValidation& v) {
     double value_percent, limit_percent;
   };
   const Band bands[] = {
-      {"theory column, axial force", "max", v.theory_fit.axial.fit.max_abs_error_percent, acc.theory_column_max_abs_error_percent},
-      {"theory column, torque", "max", v.theory_fit.torque.fit.max_abs_error_percent, acc.theory_column_max_abs_error_percent},
+      {"theory column, axial force", "max", v.theory_fit.axial.fit.max_abs_error_percent,
+       acc.theory_column_max_abs_error_percent},
+      {"theory column, torque", "max", v.theory_fit.torque.fit.max_abs_error_percent,
+       acc.theory_column_max_abs_error_percent},
       {"fitted axial force", "mean", v.measured_fit.axial.fit.mean_abs_error_percent, acc.axial_mean_abs_error_percent},
       {"fitted torque", "mean", v.measured_fit.torque.fit.mean_abs_error_percent, acc.torque_mean_abs_error_percent},
   };
@@ -126,14 +130,21 @@ Comparison trepanning_comparison(const TrepanningValidation& v, const CaseInputs
   const std::vector<std::string> citations = table.comments;
   const std::string source = std::filesystem::path(table.source).filename().string();
   DataSet measured{"measured (Table 4, mean of two tests)", source, citations, bases, {}};
-  DataSet fit{"kerf Eqs. 21–22, fitted", "",
-              {fmt::format("kerf: analytic/trepanning/trepanning.cpp with K_F = {:.4f} GPa and K_M = {:.4f} GPa, fitted "
-                           "to the measured rows by {} least squares (GSL gsl_multifit_wlinear)",
-                           units::pa_to_gpa(v.measured_fit.groups.axial_group_Pa),
-                           units::pa_to_gpa(v.measured_fit.groups.torque_group_Pa), weighting_name)},
-              bases, {}};
+  DataSet fit{
+      "kerf Eqs. 21–22, fitted",
+      "",
+      {fmt::format("kerf: analytic/trepanning/trepanning.cpp with K_F = {:.4f} GPa and K_M = {:.4f} GPa, fitted "
+                   "to the measured rows by {} least squares (GSL gsl_multifit_wlinear)",
+                   units::pa_to_gpa(v.measured_fit.groups.axial_group_Pa),
+                   units::pa_to_gpa(v.measured_fit.groups.torque_group_Pa), weighting_name)},
+      bases,
+      {}};
   DataSet loo{"kerf, leave-one-out", "", {"each row predicted with the groups fitted to the other rows"}, bases, {}};
-  DataSet paper{"paper's theory (Table 4)", source, {"the theoretical column of Table 4 (Eqs. 21–22 with the paper's unprinted H, φ, μ)"}, bases, {}};
+  DataSet paper{"paper's theory (Table 4)",
+                source,
+                {"the theoretical column of Table 4 (Eqs. 21–22 with the paper's unprinted H, φ, μ)"},
+                bases,
+                {}};
   for (std::size_t i = 0; i < measured_rows.size(); ++i) {
     const auto cond = conditions_of(measured_rows[i].cut);
     const std::size_t line = table.row_lines[i];
@@ -166,22 +177,25 @@ std::string calibration_markdown(const TrepanningValidation& v, const CaseInputs
   const TrepanningCalibration alternative = calibrate_trepanning(v.scene.tool, measured_rows, other);
   const auto [min_axial, max_axial] = std::minmax_element(m_axial.begin(), m_axial.end());
   md += fmt::format(
-      "The model is linear in each lumped group (F_n = (π/8) f (D − d) K_F, M = f (D² − d²) K_M / 16 with f = v_f / n), "
+      "The model is linear in each lumped group (F_n = (π/8) f (D − d) K_F, M = f (D² − d²) K_M / 16 with f = v_f / "
+      "n), "
       "so each group is an exact weighted linear least-squares fit through the origin (GSL `gsl_multifit_wlinear`). "
       "Weighting: **{}** residuals. Relative residuals (weights 1/y²) are kerf's default: the acceptance metric is a "
-      "relative error, the measured axial forces span {:.0f}–{:.0f} N, and a dynamometer's scatter grows with the load; "
+      "relative error, the measured axial forces span {:.0f}–{:.0f} N, and a dynamometer's scatter grows with the "
+      "load; "
       "ordinary (absolute) least squares lets the largest forces dominate. For comparison, {} residuals give "
       "K_F = {:.4f} GPa and K_M = {:.4f} GPa, with mean |error| {} % (axial) and {} % (torque).\n\n",
       weighting_name, *min_axial, *max_axial, residual_weighting_name(other),
       units::pa_to_gpa(alternative.groups.axial_group_Pa), units::pa_to_gpa(alternative.groups.torque_group_Pa),
       pct(alternative.axial.fit.mean_abs_error_percent), pct(alternative.torque.fit.mean_abs_error_percent));
-  md += "| group | fitted to | value (GPa) | standard error (GPa) | mean abs error (%) | max abs error (%) | bias (%) | "
-        "LOO mean abs error (%) | LOO max abs error (%) | LOO bias (%) |\n|---|---|---|---|---|---|---|---|---|---|\n";
+  md +=
+      "| group | fitted to | value (GPa) | standard error (GPa) | mean abs error (%) | max abs error (%) | bias (%) | "
+      "LOO mean abs error (%) | LOO max abs error (%) | LOO bias (%) |\n|---|---|---|---|---|---|---|---|---|---|\n";
   const auto row = [&](const char* name, const char* to, const GroupFit& g) {
     md += fmt::format("| {} | {} | {:.4f} | {:.4f} | {} | {} | {:+.2f} | {} | {} | {:+.2f} |\n", name, to,
-                      units::pa_to_gpa(g.value_Pa), units::pa_to_gpa(g.standard_error_Pa), pct(g.fit.mean_abs_error_percent),
-                      pct(g.fit.max_abs_error_percent), g.fit.bias_percent, pct(g.loo.mean_abs_error_percent),
-                      pct(g.loo.max_abs_error_percent), g.loo.bias_percent);
+                      units::pa_to_gpa(g.value_Pa), units::pa_to_gpa(g.standard_error_Pa),
+                      pct(g.fit.mean_abs_error_percent), pct(g.fit.max_abs_error_percent), g.fit.bias_percent,
+                      pct(g.loo.mean_abs_error_percent), pct(g.loo.max_abs_error_percent), g.loo.bias_percent);
   };
   row("K_F = H tan φ", "measured axial force", mf.axial);
   row("K_M = H (1 + π tan φ μ / 2)", "measured torque", mf.torque);
@@ -190,11 +204,12 @@ std::string calibration_markdown(const TrepanningValidation& v, const CaseInputs
   md += fmt::format(
       "\nThe paper's theory column against the measured rows: axial mean |error| {} % (max {} %), torque {} % "
       "(max {} %) — the paper quotes 5.0 % and 6.7 %.\n\n",
-      pct(v.paper_axial.mean_abs_error_percent), pct(v.paper_axial.max_abs_error_percent), pct(v.paper_torque.mean_abs_error_percent),
-      pct(v.paper_torque.max_abs_error_percent));
+      pct(v.paper_axial.mean_abs_error_percent), pct(v.paper_axial.max_abs_error_percent),
+      pct(v.paper_torque.mean_abs_error_percent), pct(v.paper_torque.max_abs_error_percent));
   const auto implied = [&](const char* which, const ImpliedTrepanningMaterial& m, const TrepanningGroups& g) {
     md += fmt::format(
-        "- {}: with H = {:.2f} GPa (material `{}`, brittle.hardness_GPa) the groups imply φ = {:.1f}° and μ = {:.3f}{}. "
+        "- {}: with H = {:.2f} GPa (material `{}`, brittle.hardness_GPa) the groups imply φ = {:.1f}° and μ = "
+        "{:.3f}{}. "
         "Non-negative friction needs H ≤ K_M = {:.2f} GPa; with φ = 60° they imply H = {:.2f} GPa and μ = {:.3f}.\n",
         which, units::pa_to_gpa(m.hardness_Pa), v.scene.material.name, units::rad_to_deg(m.half_angle_rad),
         m.friction_coefficient, m.physical ? "" : " (negative: not physical)",
@@ -205,22 +220,24 @@ std::string calibration_markdown(const TrepanningValidation& v, const CaseInputs
   md += "What the groups imply (only K_F and K_M are identifiable from forces):\n\n";
   implied("Fitted to the measured rows", v.implied_measured, mf.groups);
   implied("Fitted to the paper's theory column", v.implied_theory, tf.groups);
-  md += "\n### Leave-one-out\n\n| n#d0#u (rev/min) | v#df#u (µm/s) | K_F without the row (GPa) | axial LOO error (%) | "
-        "K_M without the row (GPa) | torque LOO error (%) |\n|---|---|---|---|---|---|\n";
+  md +=
+      "\n### Leave-one-out\n\n| n#d0#u (rev/min) | v#df#u (µm/s) | K_F without the row (GPa) | axial LOO error (%) | "
+      "K_M without the row (GPa) | torque LOO error (%) |\n|---|---|---|---|---|---|\n";
   for (std::size_t i = 0; i < measured_rows.size(); ++i) {
     md += fmt::format("| {:.4g} | {:.4g} | {:.4f} | {:+.2f} | {:.4f} | {:+.2f} |\n",
                       measured_rows[i].cut.spindle_speed_rev_per_s * 60.0,
-                      units::m_to_um(measured_rows[i].cut.feed_rate_m_per_s), units::pa_to_gpa(mf.axial.loo_value_Pa[i]),
-                      mf.axial.loo_error_percent[i], units::pa_to_gpa(mf.torque.loo_value_Pa[i]), mf.torque.loo_error_percent[i]);
+                      units::m_to_um(measured_rows[i].cut.feed_rate_m_per_s),
+                      units::pa_to_gpa(mf.axial.loo_value_Pa[i]), mf.axial.loo_error_percent[i],
+                      units::pa_to_gpa(mf.torque.loo_value_Pa[i]), mf.torque.loo_error_percent[i]);
   }
   md += fmt::format(
       "\n## Acceptance\n\n- theory column reproduced by one value of each group within {:.1f} %: axial max {} %, "
       "torque max {} %\n- fitted to the measured rows, mean |error| at most {:.1f} % (axial) and {:.1f} % (torque): "
       "{} % and {} %\n\n**{}**{}\n",
-      acc.theory_column_max_abs_error_percent, pct(tf.axial.fit.max_abs_error_percent), pct(tf.torque.fit.max_abs_error_percent),
-      acc.axial_mean_abs_error_percent, acc.torque_mean_abs_error_percent, pct(mf.axial.fit.mean_abs_error_percent),
-      pct(mf.torque.fit.mean_abs_error_percent), v.passed() ? "PASSED" : "FAILED",
-      v.passed() ? "" : ": " + [&] {
+      acc.theory_column_max_abs_error_percent, pct(tf.axial.fit.max_abs_error_percent),
+      pct(tf.torque.fit.max_abs_error_percent), acc.axial_mean_abs_error_percent, acc.torque_mean_abs_error_percent,
+      pct(mf.axial.fit.mean_abs_error_percent), pct(mf.torque.fit.mean_abs_error_percent),
+      v.passed() ? "PASSED" : "FAILED", v.passed() ? "" : ": " + [&] {
         std::string s;
         for (const auto& f : v.failures) s += (s.empty() ? "" : "; ") + f;
         return s;
@@ -240,31 +257,42 @@ Json calibration_summary(const TrepanningValidation& v, const std::string& weigh
   const auto fit_json = [](const GroupFit& g) {
     return Json{{"value_MPa", units::pa_to_mpa(g.value_Pa)},
                 {"standard_error_MPa", units::pa_to_mpa(g.standard_error_Pa)},
-                {"fit", {{"n", g.fit.n}, {"mean_abs_error_percent", g.fit.mean_abs_error_percent},
-                         {"max_abs_error_percent", g.fit.max_abs_error_percent}, {"bias_percent", g.fit.bias_percent}}},
-                {"leave_one_out", {{"n", g.loo.n}, {"mean_abs_error_percent", g.loo.mean_abs_error_percent},
-                                   {"max_abs_error_percent", g.loo.max_abs_error_percent}, {"bias_percent", g.loo.bias_percent},
-                                   {"error_percent", g.loo_error_percent}}}};
+                {"fit",
+                 {{"n", g.fit.n},
+                  {"mean_abs_error_percent", g.fit.mean_abs_error_percent},
+                  {"max_abs_error_percent", g.fit.max_abs_error_percent},
+                  {"bias_percent", g.fit.bias_percent}}},
+                {"leave_one_out",
+                 {{"n", g.loo.n},
+                  {"mean_abs_error_percent", g.loo.mean_abs_error_percent},
+                  {"max_abs_error_percent", g.loo.max_abs_error_percent},
+                  {"bias_percent", g.loo.bias_percent},
+                  {"error_percent", g.loo_error_percent}}}};
   };
   const auto implied_json = [](const ImpliedTrepanningMaterial& m) {
-    return Json{{"hardness_GPa", units::pa_to_gpa(m.hardness_Pa)},
-                {"half_angle_deg", units::rad_to_deg(m.half_angle_rad)},
-                {"friction_coefficient", m.friction_coefficient},
-                {"physical", m.physical},
-                {"max_hardness_for_non_negative_friction_GPa", units::pa_to_gpa(m.max_hardness_for_non_negative_friction_Pa)}};
+    return Json{
+        {"hardness_GPa", units::pa_to_gpa(m.hardness_Pa)},
+        {"half_angle_deg", units::rad_to_deg(m.half_angle_rad)},
+        {"friction_coefficient", m.friction_coefficient},
+        {"physical", m.physical},
+        {"max_hardness_for_non_negative_friction_GPa", units::pa_to_gpa(m.max_hardness_for_non_negative_friction_Pa)}};
   };
-  return {
-      {"calibration",
-       {{"weighting", weighting_name},
-        {"measured", {{"axial_group", fit_json(mf.axial)}, {"torque_group", fit_json(mf.torque)},
-                      {"implied", implied_json(v.implied_measured)}}},
-        {"theory_column", {{"axial_group", fit_json(tf.axial)}, {"torque_group", fit_json(tf.torque)},
-                           {"implied", implied_json(v.implied_theory)}}}}},
-      {"acceptance",
-       {{"theory_column_max_abs_error_percent", acc.theory_column_max_abs_error_percent},
-        {"fitted_mean_abs_error_percent", {{"axial_force", acc.axial_mean_abs_error_percent}, {"torque", acc.torque_mean_abs_error_percent}}},
-        {"passed", v.passed()},
-        {"failures", v.failures}}}};
+  return {{"calibration",
+           {{"weighting", weighting_name},
+            {"measured",
+             {{"axial_group", fit_json(mf.axial)},
+              {"torque_group", fit_json(mf.torque)},
+              {"implied", implied_json(v.implied_measured)}}},
+            {"theory_column",
+             {{"axial_group", fit_json(tf.axial)},
+              {"torque_group", fit_json(tf.torque)},
+              {"implied", implied_json(v.implied_theory)}}}}},
+          {"acceptance",
+           {{"theory_column_max_abs_error_percent", acc.theory_column_max_abs_error_percent},
+            {"fitted_mean_abs_error_percent",
+             {{"axial_force", acc.axial_mean_abs_error_percent}, {"torque", acc.torque_mean_abs_error_percent}}},
+            {"passed", v.passed()},
+            {"failures", v.failures}}}};
 }
 
 }  // namespace

@@ -20,7 +20,9 @@ namespace {
 constexpr std::string_view kMagic = "KERFCKP2";
 constexpr std::size_t kCrcBytes = sizeof(std::uint32_t);
 
-void put_u64(std::string& out, std::uint64_t n) { out.append(reinterpret_cast<const char*>(&n), sizeof n); }
+void put_u64(std::string& out, std::uint64_t n) {
+  out.append(reinterpret_cast<const char*>(&n), sizeof n);
+}
 
 /// The corruption of a checkpoint: exit 3 with what was found, never a crash or a different run.
 [[noreturn]] void damaged(const std::string& why) {
@@ -35,8 +37,13 @@ std::uint32_t crc32(std::string_view bytes) {
 }
 
 std::string Checkpoint::bytes() const {
-  const Json head{{"scene", scene}, {"summary", summary}, {"frames", frames}, {"sample_index", sample_index},
-                  {"checkpoint_every", checkpoint_every}, {"scene_dir", scene_dir}, {"provenance", provenance}};
+  const Json head{{"scene", scene},
+                  {"summary", summary},
+                  {"frames", frames},
+                  {"sample_index", sample_index},
+                  {"checkpoint_every", checkpoint_every},
+                  {"scene_dir", scene_dir},
+                  {"provenance", provenance}};
   const std::string head_text = head.dump(-1, ' ', false, Json::error_handler_t::replace);
   std::string out(kMagic);
   put_u64(out, 0);  // the length, below

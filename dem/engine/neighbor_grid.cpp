@@ -61,8 +61,8 @@ struct GridCells {
 };
 /// The strays and the grid's particles near its edge (`sparse`), and their cells.
 struct StrayCells {
-  const std::int32_t* sparse = nullptr;    ///< the points of `cells`
-  const std::int32_t* sparse_of = nullptr; ///< per particle: its index in `sparse`, or -1
+  const std::int32_t* sparse = nullptr;     ///< the points of `cells`
+  const std::int32_t* sparse_of = nullptr;  ///< per particle: its index in `sparse`, or -1
   const SparseCells* cells = nullptr;
 };
 
@@ -85,7 +85,8 @@ void grid_pairs(std::span<const double> x, std::span<const double> y, std::span<
       for (std::int64_t jy = std::max<std::int64_t>(cy - 1, 0); jy <= std::min(cy + 1, g.ny - 1); ++jy) {
         for (std::int64_t jx = std::max<std::int64_t>(cx - 1, 0); jx <= std::min(cx + 1, g.nx - 1); ++jx) {
           const auto c = static_cast<std::size_t>(jy * g.nx + jx);
-          for (std::int32_t k = g.start[c]; k < g.start[c + 1]; ++k) consider(i, g.members[static_cast<std::size_t>(k)]);
+          for (std::int32_t k = g.start[c]; k < g.start[c + 1]; ++k)
+            consider(i, g.members[static_cast<std::size_t>(k)]);
         }
       }
     }
@@ -94,7 +95,8 @@ void grid_pairs(std::span<const double> x, std::span<const double> y, std::span<
         const auto& range = s.cells->ranges[static_cast<std::size_t>(s.sparse_of[i])];
         for (std::size_t d = 0; d < 3; ++d)
           for (auto k = range[2 * d]; k < range[2 * d + 1]; ++k) {
-            const std::int32_t j = s.sparse[static_cast<std::size_t>(s.cells->keyed[static_cast<std::size_t>(k)].second)];
+            const std::int32_t j =
+                s.sparse[static_cast<std::size_t>(s.cells->keyed[static_cast<std::size_t>(k)].second)];
             if (g.cell_of[i] == kStray || g.cell_of[j] == kStray) consider(i, j);
           }
       }
@@ -156,7 +158,9 @@ void find_candidate_pairs(std::span<const double> x, std::span<const double> y, 
     }
   }
   if (!grid_fits) gx0 = gy0 = 0, gx1 = gy1 = -1;  // no grid: every particle a stray
-  const auto cells_along = [&](double extent) { return std::max<std::int64_t>(1, static_cast<std::int64_t>(std::floor(extent / cell) + 1.0)); };
+  const auto cells_along = [&](double extent) {
+    return std::max<std::int64_t>(1, static_cast<std::int64_t>(std::floor(extent / cell) + 1.0));
+  };
   const std::int64_t nx = cells_along(gx1 - gx0), ny = cells_along(gy1 - gy0);
   const double inv_x = static_cast<double>(nx) / (gx1 - gx0 + cell);
   const double inv_y = static_cast<double>(ny) / (gy1 - gy0 + cell);
@@ -177,18 +181,21 @@ void find_candidate_pairs(std::span<const double> x, std::span<const double> y, 
     }
     cell_of[i] = static_cast<std::int32_t>(index((y[i] - gy0) * inv_y, ny) * nx + index((x[i] - gx0) * inv_x, nx));
     ++start[static_cast<std::size_t>(cell_of[i]) + 1];
-    if (bulk_only && (x[i] < gx0 + reach_max || x[i] > gx1 - reach_max || y[i] < gy0 + reach_max || y[i] > gy1 - reach_max))
+    if (bulk_only &&
+        (x[i] < gx0 + reach_max || x[i] > gx1 - reach_max || y[i] < gy0 + reach_max || y[i] > gy1 - reach_max))
       sparse.push_back(static_cast<std::int32_t>(i));
   }
   for (std::size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
   std::vector<std::int32_t> fill(start.begin(), start.end() - 1), members(static_cast<std::size_t>(start.back()));
   for (std::size_t i = 0; i < n; ++i)
-    if (cell_of[i] != kStray) members[static_cast<std::size_t>(fill[static_cast<std::size_t>(cell_of[i])]++)] = static_cast<std::int32_t>(i);
+    if (cell_of[i] != kStray)
+      members[static_cast<std::size_t>(fill[static_cast<std::size_t>(cell_of[i])]++)] = static_cast<std::int32_t>(i);
   std::vector<std::int32_t> sparse_of;
   std::optional<SparseCells> strays;
   if (any_stray) {
     sparse_of.assign(n, -1);
-    for (std::size_t s = 0; s < sparse.size(); ++s) sparse_of[static_cast<std::size_t>(sparse[s])] = static_cast<std::int32_t>(s);
+    for (std::size_t s = 0; s < sparse.size(); ++s)
+      sparse_of[static_cast<std::size_t>(sparse[s])] = static_cast<std::int32_t>(s);
     strays.emplace(sparse, x, y, x_min, y_min, x_max - x_min, y_max - y_min, reach_max);
   }
 

@@ -12,9 +12,9 @@
 #include <cstdint>
 #include <cstring>
 #include <initializer_list>
+#include <limits>
 #include <optional>
 #include <stdexcept>
-#include <limits>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -22,9 +22,9 @@
 #include <variant>
 #include <vector>
 
+#include "../laws/legacy_laws.hpp"
 #include "kerf/dem/laws/contact_laws.hpp"
 #include "kerf/error.hpp"
-#include "../laws/legacy_laws.hpp"
 
 namespace kerf::dem::serial {
 
@@ -43,7 +43,9 @@ void put_vec(std::string& out, const std::vector<T>& v) {
   put_raw(out, static_cast<std::uint64_t>(v.size()));
   out.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
 }
-inline void put_str(std::string& out, const std::string& s) { put_vec(out, std::vector<char>(s.begin(), s.end())); }
+inline void put_str(std::string& out, const std::string& s) {
+  put_vec(out, std::vector<char>(s.begin(), s.end()));
+}
 
 template <class T>
 struct is_variant : std::false_type {};
@@ -184,8 +186,8 @@ void set_from_record(const F& f, S& s, double value, const Corrupt& corrupt) {
     f.set(s, value);
   } else if constexpr (std::is_same_v<F, IntField<S>>) {
     if (!(value >= f.lo && value <= f.hi) || value != std::trunc(value))
-      throw corrupt(std::string(f.key) + " is not an integer in [" + std::to_string(f.lo) + ", " + std::to_string(f.hi) +
-                    "]");
+      throw corrupt(std::string(f.key) + " is not an integer in [" + std::to_string(f.lo) + ", " +
+                    std::to_string(f.hi) + "]");
     f.set(s, static_cast<int>(value));
   } else {
     f.set(s, value != 0);
@@ -236,8 +238,8 @@ V law_from_record(const LawRecord& r) {
           std::visit(
               [&](const auto& f) {
                 using F = std::decay_t<decltype(f)>;
-                const auto it = std::find_if(r.values.begin(), r.values.end(),
-                                             [&](const auto& kv) { return kv.first == f.key; });
+                const auto it =
+                    std::find_if(r.values.begin(), r.values.end(), [&](const auto& kv) { return kv.first == f.key; });
                 if (it == r.values.end()) throw corrupt("no value for " + std::string(f.key));
                 ++used;
                 if constexpr (kNumberInRecord<P, F>) set_from_record(f, p, it->second, corrupt);
@@ -269,8 +271,8 @@ void put_law(std::string& out, const V& law) {
 /// The old formats' raw variant of list V (a bond or a contact law list), translated by name.
 template <class V>
 V get_legacy_law(In& io) {
-  using Legacy = std::conditional_t<BondLawParams<std::variant_alternative_t<0, V>>, legacy::BondLaw6,
-                                    legacy::ContactLaw6>;
+  using Legacy =
+      std::conditional_t<BondLawParams<std::variant_alternative_t<0, V>>, legacy::BondLaw6, legacy::ContactLaw6>;
   Legacy old;
   io.raw(old);
   // An index beyond its alternatives would make every visit undefined (found by fuzz_checkpoint behind a
@@ -290,7 +292,6 @@ V get_law(In& io) {
   for (auto& [key, value] : r.values) io(key, value);
   return law_from_record<V>(r);
 }
-
 
 // --- a parameter struct by the keys of its tables: each field as "section.key" with its value ---
 

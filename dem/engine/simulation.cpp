@@ -448,7 +448,8 @@ void Simulation::check_stability() const {
   for (std::int64_t ii = 0; ii < n; ++ii) {
     const auto u = static_cast<std::size_t>(ii);
     const double v2 = p_.vx[u] * p_.vx[u] + p_.vy[u] * p_.vy[u];
-    const bool finite = std::isfinite(v2) && std::isfinite(p_.x[u]) && std::isfinite(p_.y[u]) && std::isfinite(p_.omega[u]);
+    const bool finite =
+        std::isfinite(v2) && std::isfinite(p_.x[u]) && std::isfinite(p_.y[u]) && std::isfinite(p_.omega[u]);
     if (!finite || v2 > worst) {
       worst = finite ? v2 : std::numeric_limits<double>::infinity();
       worst_i = ii;

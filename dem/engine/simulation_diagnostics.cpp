@@ -22,7 +22,8 @@ std::array<double, 2> Simulation::group_force(std::uint8_t g) const {
 double Simulation::kinetic_energy() const {
   double e = 0;
   for (std::size_t u = 0; u < p_.size(); ++u)
-    e += 0.5 * ((p_.vx[u] * p_.vx[u] + p_.vy[u] * p_.vy[u]) / p_.inv_mass[u] + p_.omega[u] * p_.omega[u] / p_.inv_inertia[u]);
+    e += 0.5 *
+         ((p_.vx[u] * p_.vx[u] + p_.vy[u] * p_.vy[u]) / p_.inv_mass[u] + p_.omega[u] * p_.omega[u] / p_.inv_inertia[u]);
   return e;
 }
 

@@ -92,7 +92,8 @@ void Simulation::rebuild_neighbours() {
   for (std::size_t b = 0; b < b_.size(); ++b)
     if (b_.active[b]) put(b_.i[b], encode(b, kBond, 0)), put(b_.j[b], encode(b, kBond, 1));
   incidence_pair_begin_ = fill;
-  for (std::size_t k = 0; k < pairs_.size(); ++k) put(pairs_[k].i, encode(k, kPair, 0)), put(pairs_[k].j, encode(k, kPair, 1));
+  for (std::size_t k = 0; k < pairs_.size(); ++k)
+    put(pairs_[k].i, encode(k, kPair, 0)), put(pairs_[k].j, encode(k, kPair, 1));
   incidence_wall_begin_ = fill;
   for (std::size_t k = 0; k < wall_contacts_.size(); ++k) put(wall_contacts_[k][1], encode(k, kWall, 0));
 
@@ -114,7 +115,8 @@ ContactSprings Simulation::contact_springs() const {
 void Simulation::set_contact_springs(ContactSprings springs) {
   const auto n = static_cast<std::int32_t>(p_.size()), nw = static_cast<std::int32_t>(walls_.size());
   const auto valid = [&](std::int32_t u, std::int32_t limit) { return u >= 0 && u < limit; };
-  if (springs.pairs.size() != springs.pair_shear_n.size() || springs.wall_contacts.size() != springs.wall_shear_n.size() ||
+  if (springs.pairs.size() != springs.pair_shear_n.size() ||
+      springs.wall_contacts.size() != springs.wall_shear_n.size() ||
       !std::is_sorted(springs.pairs.begin(), springs.pairs.end()) ||
       !std::is_sorted(springs.wall_contacts.begin(), springs.wall_contacts.end()))
     throw ModelError("dem", "contact springs: lists of different lengths or not sorted");

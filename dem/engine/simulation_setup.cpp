@@ -29,16 +29,19 @@ void BondStore::copy_elements(std::size_t to, const BondStore& from, std::size_t
 
 Simulation::Simulation(const Material& material, const SimulationOptions& options)
     : material_(material), opt_(options), types_{ParticleType{material.density_kg_per_m3}} {
-  if (!(options.thickness_m > 0)) throw InputError("specimen.thickness_mm", format_value(options.thickness_m * 1e3), "a positive value in mm");
+  if (!(options.thickness_m > 0))
+    throw InputError("specimen.thickness_mm", format_value(options.thickness_m * 1e3), "a positive value in mm");
   if (!(options.time_step_safety > 0 && options.time_step_safety <= 1))
     throw InputError("engine.time_step_safety", format_value(options.time_step_safety), "a value in (0, 1]");
   b_.stride = std::visit([](const auto& law) { return bond_elements(law); }, material.joint);
-  b_.keeps_damage = std::visit([](const auto& law) { return BondLawWithDamage<std::decay_t<decltype(law)>>; }, material.joint);
+  b_.keeps_damage =
+      std::visit([](const auto& law) { return BondLawWithDamage<std::decay_t<decltype(law)>>; }, material.joint);
   speed_limit_ = options.speed_limit_m_per_s > 0 ? options.speed_limit_m_per_s : p_wave_speed_m_per_s(material);
 }
 
 double p_wave_speed_m_per_s(const Material& material) {
-  const double contact_modulus_pa = std::visit([](const auto& law) { return law.effective_modulus_pa; }, material.contact);
+  const double contact_modulus_pa =
+      std::visit([](const auto& law) { return law.effective_modulus_pa; }, material.contact);
   return std::sqrt(contact_modulus_pa / material.density_kg_per_m3);
 }
 
@@ -84,7 +87,8 @@ void Simulation::set_absorbing_rates(std::vector<double> rates_per_s) {
   if (!rates_per_s.empty() && rates_per_s.size() != p_.size())
     throw std::logic_error("Simulation::set_absorbing_rates: one rate per disk");
   for (double r : rates_per_s)
-    if (!(r >= 0 && std::isfinite(r))) throw std::logic_error("Simulation::set_absorbing_rates: a rate not finite and >= 0");
+    if (!(r >= 0 && std::isfinite(r)))
+      throw std::logic_error("Simulation::set_absorbing_rates: a rate not finite and >= 0");
   absorbing_rate_ = std::move(rates_per_s);
   absorbing_decay_.clear();
   absorbing_dt_ = 0;
@@ -115,8 +119,9 @@ int Simulation::install_bond(int i, int j, double ref_distance_m, double ref_rot
   b_.j.push_back(j);
   b_.ref_distance_m.push_back(ref_distance_m);
   b_.ref_rotation_rad.push_back(ref_rotation_rad);
-  b_.geometry.push_back(std::visit(
-      [&](const auto& law) { return bond_geometry(law, p_.radius[ui], p_.radius[uj], opt_.thickness_m); }, material_.joint));
+  b_.geometry.push_back(
+      std::visit([&](const auto& law) { return bond_geometry(law, p_.radius[ui], p_.radius[uj], opt_.thickness_m); },
+                 material_.joint));
   b_.active.push_back(1);
   for (int e = 0; e < b_.stride; ++e) {
     b_.shear_force_n.push_back(0.0);

@@ -26,10 +26,10 @@ std::size_t Simulation::memory_bytes() const {
 
 namespace {
 
-constexpr std::string_view kStateMagic = "KERFDEM8";  // 2: Wall::friction_coefficient; 3: the laws as variants;
-                                                      // 4: the viscous damping ratio; 5: skip_held_pairs;
-                                                      // 6: the absorbing rates; 7: the laws by name;
-                                                      // 8: the bonds' element damage
+constexpr std::string_view kStateMagic = "KERFDEM8";          // 2: Wall::friction_coefficient; 3: the laws as variants;
+                                                              // 4: the viscous damping ratio; 5: skip_held_pairs;
+                                                              // 6: the absorbing rates; 7: the laws by name;
+                                                              // 8: the bonds' element damage
 constexpr std::string_view kStateMagicNoDamage = "KERFDEM7";  // still read: no element damage (no law had one)
 constexpr std::string_view kStateMagicRawLaws = "KERFDEM6";   // still read: also the laws as raw variants of 4a34e1f
 
@@ -40,15 +40,15 @@ void Simulation::state_fields(Self& sim, Io& io, bool with_damage) {
   auto& p = sim.p_;
   auto& b = sim.b_;
   io(sim.types_);
-  for (auto* v : {&p.x, &p.y, &p.vx, &p.vy, &p.theta, &p.omega, &p.fx, &p.fy, &p.torque, &p.radius, &p.inv_mass,
-                  &p.inv_inertia})
+  for (auto* v :
+       {&p.x, &p.y, &p.vx, &p.vy, &p.theta, &p.omega, &p.fx, &p.fy, &p.torque, &p.radius, &p.inv_mass, &p.inv_inertia})
     io(*v);
   io(p.type, p.group);
   io(b.stride, b.i, b.j, b.ref_distance_m, b.ref_rotation_rad, b.geometry, b.active, b.shear_force_n, b.bonded,
      b.pending, b.out);
   io(sim.walls_, sim.cracks_, sim.pairs_, sim.pair_shear_, sim.pair_out_, sim.wall_contacts_, sim.wall_shear_,
-     sim.wall_out_, sim.incidence_start_, sim.incidence_, sim.incidence_pair_begin_,
-     sim.incidence_wall_begin_, sim.x_ref_, sim.y_ref_, sim.wall_ref_, sim.fixed_, sim.absorbing_rate_);
+     sim.wall_out_, sim.incidence_start_, sim.incidence_, sim.incidence_pair_begin_, sim.incidence_wall_begin_,
+     sim.x_ref_, sim.y_ref_, sim.wall_ref_, sim.fixed_, sim.absorbing_rate_);
   io(sim.need_rebuild_, sim.need_breaks_, sim.initialised_, sim.dt_fixed_);
   io(sim.dt_, sim.time_, sim.skin_, sim.speed_limit_, sim.steps_);
   if (with_damage) io(b.damage);  // last, so that the earlier formats are this one without it

@@ -158,10 +158,17 @@ std::vector<SpecimenSource> beam_sources(const SceneCommon& common, const Beam& 
 /// calibration_log.csv's columns: the four's, then (with a toughness test) the toughness's, so that a log
 /// without them reads as before.
 std::vector<std::string> log_header(bool toughness) {
-  std::vector<std::string> h{"evaluation",        "effective_modulus_GPa",      "stiffness_ratio",
-                             "tensile_strength_MPa", "cohesion_MPa",            "youngs_modulus_GPa",
-                             "poissons_ratio",    "macro_tensile_strength_MPa", "macro_compressive_strength_MPa",
-                             "max_error_percent", "wall_time_s"};
+  std::vector<std::string> h{"evaluation",
+                             "effective_modulus_GPa",
+                             "stiffness_ratio",
+                             "tensile_strength_MPa",
+                             "cohesion_MPa",
+                             "youngs_modulus_GPa",
+                             "poissons_ratio",
+                             "macro_tensile_strength_MPa",
+                             "macro_compressive_strength_MPa",
+                             "max_error_percent",
+                             "wall_time_s"};
   if (toughness)
     h.insert(h.end(), {"fracture_energy_J_per_m2", "macro_fracture_toughness_MPa_sqrt_m", "toughness_error_percent"});
   return h;
@@ -284,7 +291,8 @@ class CalibrateKind final : public SceneKind {
     const auto& t = spec_.targets;
     const std::int64_t seed = summary["specimen"]["seed"].get<std::int64_t>();
     std::string out = fmt::format(
-        "Calibrated by kerf-dem calibrate ({} evaluations, {}converged: max error {:.2f} % against targets E {:.1f} GPa, "
+        "Calibrated by kerf-dem calibrate ({} evaluations, {}converged: max error {:.2f} % against targets E {:.1f} "
+        "GPa, "
         "nu {:.3f}, sigma_t {:.1f} MPa, sigma_c {:.1f} MPa) on a {} specimen of {} disks{}.",
         r.log.size(), r.converged ? "" : "NOT ", 100 * r.max_relative_error, units::pa_to_gpa(t.youngs_modulus_pa),
         t.poissons_ratio, units::pa_to_mpa(t.tensile_strength_pa), units::pa_to_mpa(t.compressive_strength_pa),
@@ -319,8 +327,15 @@ class CalibrateKind final : public SceneKind {
       write_file_atomically(out / "calibration_log.csv", log);
       done.push_back(e);
       if (run.options.checkpoints())
-        write_checkpoint(out, {run.doc, summary, {}, static_cast<int>(done.size()), run.options.checkpoint_every,
-                               run.scene_dir, std::string(), serialize_evaluations(done), run.options.provenance});
+        write_checkpoint(out, {run.doc,
+                               summary,
+                               {},
+                               static_cast<int>(done.size()),
+                               run.options.checkpoint_every,
+                               run.scene_dir,
+                               std::string(),
+                               serialize_evaluations(done),
+                               run.options.provenance});
       print_evaluation(e, toughness);
     };
     const CalibrationResult r = calibrate(sources, common.material, spec_, on_evaluation, known, beams);
@@ -332,12 +347,9 @@ class CalibrateKind final : public SceneKind {
                                                 "kerf-dem calibrate (see description)");
     write_material_output(output_, material, out, summary);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    summary["results"] = Json{{"converged", r.converged},
-                              {"max_error_percent", 100 * r.max_relative_error},
-                              {"evaluations", r.log.size()},
-                              {"targets", macro_json(t)},
-                              {"achieved", macro_json(r.macro)},
-                              {"calibrated_material", material}};
+    summary["results"] = Json{{"converged", r.converged},        {"max_error_percent", 100 * r.max_relative_error},
+                              {"evaluations", r.log.size()},     {"targets", macro_json(t)},
+                              {"achieved", macro_json(r.macro)}, {"calibrated_material", material}};
     if (toughness) summary["results"]["toughness_error_percent"] = 100 * r.toughness_error;
     summary["n_particles"] = specimen.particles().size();
     summary["wall_time_s"] = wall;
@@ -352,7 +364,9 @@ class CalibrateKind final : public SceneKind {
 
 }  // namespace
 
-std::unique_ptr<SceneKind> make_calibrate_kind() { return std::make_unique<CalibrateKind>(); }
+std::unique_ptr<SceneKind> make_calibrate_kind() {
+  return std::make_unique<CalibrateKind>();
+}
 
 }  // namespace kerf::dem::kinds
 
@@ -361,7 +375,8 @@ namespace kerf::dem::kinds {
 std::string calibrate_keys_markdown() {
   return fields_markdown(calibration_fields()) +
          fields_markdown(material_output_fields(), {"calibrated", false}, false) +
-         "| `targets` | - | an object | Yang et al. 2018, Table 2 | the macro-properties to meet (`calibration.targets`) |\n"
+         "| `targets` | - | an object | Yang et al. 2018, Table 2 | the macro-properties to meet "
+         "(`calibration.targets`) |\n"
          "| `toughness` | - | an object | none | the fifth test, K_IC on a notched beam (`calibration.toughness`) |\n";
 }
 

@@ -33,7 +33,8 @@ const FieldTable<CutFit>& cut_fit_fields() {
   static const FieldTable<CutFit> table{
       required_number_field("target_cutting_force_N", units::kSi("N"), Range::positive(),
                             "the measured mean cutting force to meet (its old name target_main_force_N is read too, "
-                            "deprecated until 0.3.0)", &CutFit::target_main_force_n),
+                            "deprecated until 0.3.0)",
+                            &CutFit::target_main_force_n),
       int_field("replicates", 2, 64, "packings per evaluation (seeds specimen.seed + 0, 1, ...)", &CutFit::replicates),
       number_field("tolerance_percent", units::kPercent, Range::open(0.0, 100.0),
                    "relative error of the mean main force for convergence", &CutFit::tolerance),
@@ -79,8 +80,9 @@ class CalibrateCutKind final : public SceneKind {
       throw InputError("--checkpoint-every", std::to_string(options.checkpoint_every),
                        "no checkpoints for calibrate_cut (rerun the command: finished replicates are reused)");
     if (common.specimen_file)
-      throw InputError("specimen.file", *common.specimen_file,
-                       "a scene that generates its specimen (calibrate_cut runs replicates on packings specimen.seed + k)");
+      throw InputError(
+          "specimen.file", *common.specimen_file,
+          "a scene that generates its specimen (calibrate_cut runs replicates on packings specimen.seed + k)");
     SceneKind::check_options(options, common);
   }
 
@@ -93,9 +95,14 @@ class CalibrateCutKind final : public SceneKind {
     std::vector<CutCalibrationPoint> history;
     Json evaluations = Json::array();
     // calibration_log.csv: the evaluation's number, these fields of its summary row, and its wall time.
-    const std::vector<std::string> logged{"strength_factor",   "tensile_strength_MPa",       "cohesion_MPa",
-                                          "main_force_N",      "main_force_replicate_std_N", "thrust_force_N",
-                                          "thrust_force_replicate_std_N", "relative_error_percent"};
+    const std::vector<std::string> logged{"strength_factor",
+                                          "tensile_strength_MPa",
+                                          "cohesion_MPa",
+                                          "main_force_N",
+                                          "main_force_replicate_std_N",
+                                          "thrust_force_N",
+                                          "thrust_force_replicate_std_N",
+                                          "relative_error_percent"};
     std::vector<std::string> header{"evaluation"};
     header.insert(header.end(), logged.begin(), logged.end());
     header.push_back("wall_time_s");
@@ -106,13 +113,15 @@ class CalibrateCutKind final : public SceneKind {
     for (int k = 1; k <= fit.max_evaluations && !converged; ++k) {
       if (k > 1) s = next_strength_factor(history, fit.target_main_force_n);
       SceneCommon e = common;
-      e.material = scale_bond_strengths(common.material, s, fmt::format("{}_bond_strength_x{:.6g}", common.material.name, s));
+      e.material =
+          scale_bond_strengths(common.material, s, fmt::format("{}_bond_strength_x{:.6g}", common.material.name, s));
       const fs::path dir = out / fmt::format("evaluation_{}", k);
       fs::create_directories(dir);
-      std::cout << fmt::format("evaluation {}: bond strengths x {:.4g} (joint tensile strength {:.2f} MPa, joint "
-                               "cohesion {:.2f} MPa), {} replicates\n",
-                               k, s, units::pa_to_mpa(calibrated_params(e.material).tensile_strength_pa),
-                               units::pa_to_mpa(calibrated_params(e.material).cohesion_pa), fit.replicates)
+      std::cout << fmt::format(
+                       "evaluation {}: bond strengths x {:.4g} (joint tensile strength {:.2f} MPa, joint "
+                       "cohesion {:.2f} MPa), {} replicates\n",
+                       k, s, units::pa_to_mpa(calibrated_params(e.material).tensile_strength_pa),
+                       units::pa_to_mpa(calibrated_params(e.material).cohesion_pa), fit.replicates)
                 << std::flush;
       // The evaluation's cut: this scene as a cut with the scaled material, as its file will hold it.
       Json scene = run.doc;
@@ -124,12 +133,14 @@ class CalibrateCutKind final : public SceneKind {
       options.out = dir;
       options.provenance = Json();  // an evaluation's summary carries none: the calibration's is the run's
       const Json done =
-          run_cut_replicates(scene, run.scene_dir, cut_, fit.replicates, summary_head("cut", e.material), options).summary;
+          run_cut_replicates(scene, run.scene_dir, cut_, fit.replicates, summary_head("cut", e.material), options)
+              .summary;
       const Json& r = done["results"];
       const double force = r["main_force_N"].get<double>();
       const double error = force / fit.target_main_force_n - 1;
       history.push_back({s, force});
-      if (std::abs(error) < std::abs(history[best].main_force_n / fit.target_main_force_n - 1)) best = history.size() - 1;
+      if (std::abs(error) < std::abs(history[best].main_force_n / fit.target_main_force_n - 1))
+        best = history.size() - 1;
       converged = std::abs(error) <= fit.tolerance;
       const Json row{{"evaluation", k},
                      {"strength_factor", s},
@@ -147,8 +158,8 @@ class CalibrateCutKind final : public SceneKind {
       cells.push_back(csv_number(done["wall_time_s"].get<double>()));
       log += csv_line(cells);
       write_file_atomically(out / "calibration_log.csv", log);
-      std::cout << fmt::format("evaluation {}: main force {:.4g} N against {:.4g} N ({:+.1f} %, tolerance {:.0f} %)\n", k,
-                               force, fit.target_main_force_n, 100 * error, 100 * fit.tolerance)
+      std::cout << fmt::format("evaluation {}: main force {:.4g} N against {:.4g} N ({:+.1f} %, tolerance {:.0f} %)\n",
+                               k, force, fit.target_main_force_n, 100 * error, 100 * fit.tolerance)
                 << std::flush;
     }
     const CutCalibrationPoint& b = history[best];
@@ -183,10 +194,11 @@ class CalibrateCutKind final : public SceneKind {
     for (auto& e : summary["results"]["evaluations"]) name_cut_forces(e);
     summary["wall_time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     write_summary(run.options, run.doc, summary);
-    std::cout << fmt::format("cut calibration {} after {} evaluations: bond strengths x {:.4g}, main force {:.4g} +- {:.2g} N "
-                             "against {:.4g} N -> {}\n",
-                             converged ? "converged" : "did NOT converge", history.size(), b.strength_factor,
-                             b.main_force_n, sem, fit.target_main_force_n, (out / (output_.name + ".json")).string());
+    std::cout << fmt::format(
+        "cut calibration {} after {} evaluations: bond strengths x {:.4g}, main force {:.4g} +- {:.2g} N "
+        "against {:.4g} N -> {}\n",
+        converged ? "converged" : "did NOT converge", history.size(), b.strength_factor, b.main_force_n, sem,
+        fit.target_main_force_n, (out / (output_.name + ".json")).string());
     return {converged ? 0 : kExitModelError, summary, {}};
   }
 
@@ -198,7 +210,9 @@ class CalibrateCutKind final : public SceneKind {
 
 }  // namespace
 
-std::unique_ptr<SceneKind> make_calibrate_cut_kind() { return std::make_unique<CalibrateCutKind>(); }
+std::unique_ptr<SceneKind> make_calibrate_cut_kind() {
+  return std::make_unique<CalibrateCutKind>();
+}
 
 }  // namespace kerf::dem::kinds
 

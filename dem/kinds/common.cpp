@@ -38,7 +38,9 @@ void name_cut_forces(Json& results) {
     for (auto& w : results["travel_windows"]) name(w);
 }
 
-ProgressTarget progress_target(const RunOptions& options) { return {options.show_progress, options.on_progress, ""}; }
+ProgressTarget progress_target(const RunOptions& options) {
+  return {options.show_progress, options.on_progress, ""};
+}
 
 CheckpointSchedule::CheckpointSchedule(const RunOptions& options)
     : every_samples_(options.checkpoint_every),
@@ -60,7 +62,8 @@ namespace {
 std::mutex progress_callback_mutex;
 }  // namespace
 
-StageProgress::StageProgress(const ProgressTarget& target, const std::string& stage, double total, const std::string& unit)
+StageProgress::StageProgress(const ProgressTarget& target, const std::string& stage, double total,
+                             const std::string& unit)
     : callback_(target.callback), update_{target.prefix + stage, 0, total, unit, std::nullopt} {
   if (target.bar) bar_.emplace(update_.stage, static_cast<std::size_t>(total), unit);
   if (callback_) {
@@ -251,8 +254,10 @@ void write_frame_files(const fs::path& out, const FrameSource& frame, const Outp
     } else {
       progress.frame_reference_m = read_frame_reference(out);
       if (progress.frame_reference_m.empty())
-        std::cerr << fmt::format("kerf-dem: no {} in {} (a run begun by an earlier kerf): the frames' "
-                                 "displacement_m is NaN\n", kReferenceFile, out.string());
+        std::cerr << fmt::format(
+            "kerf-dem: no {} in {} (a run begun by an earlier kerf): the frames' "
+            "displacement_m is NaN\n",
+            kReferenceFile, out.string());
     }
   }
   const Particles& p = sim.particles();

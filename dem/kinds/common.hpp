@@ -4,15 +4,15 @@
 #include <array>
 #include <chrono>
 #include <filesystem>
-#include <optional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "kerf/dem/engine/simulation.hpp"
 #include "kerf/dem/procedures/cut_window.hpp"
 #include "kerf/dem/procedures/cutting.hpp"
 #include "kerf/dem/scene.hpp"
-#include "kerf/dem/engine/simulation.hpp"
 #include "kerf/io.hpp"
 
 namespace kerf::dem::kinds {

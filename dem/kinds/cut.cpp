@@ -1,5 +1,5 @@
-// Scene kind "cut": orthogonal cutting (seed 000 Section 4; kerf/dem/procedures/cutting.hpp), forces against tool travel
-// and cracks by mode and place; one run with checkpoints, or replicates on several packings side by side.
+// Scene kind "cut": orthogonal cutting (seed 000 Section 4; kerf/dem/procedures/cutting.hpp), forces against tool
+// travel and cracks by mode and place; one run with checkpoints, or replicates on several packings side by side.
 #include <fmt/format.h>
 #include <omp.h>
 
@@ -187,7 +187,9 @@ Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& d
     // Window ends to 1 pm, so that 3 x 0.1 mm reads 0.3, not 0.30000000000000004.
     windows.push_back({{"from_travel_mm", std::round(units::m_to_mm(w.from_m) * 1e9) / 1e9},
                        {"to_travel_mm", std::round(units::m_to_mm(w.to_m) * 1e9) / 1e9},
-                       {"main_force_N", w.main_force_n}, {"thrust_force_N", w.thrust_force_n}, {"samples", w.n_samples}});
+                       {"main_force_N", w.main_force_n},
+                       {"thrust_force_N", w.thrust_force_n},
+                       {"samples", w.n_samples}});
   summary["results"]["travel_windows"] = windows;
   if (cut.window_grain_strength_pa > 0) {  // crushing grains (active_window.grain_strength_MPa): how many, how much
     summary["results"]["grains_crushed"] = res.window.chips.crushed_grains;
@@ -215,18 +217,18 @@ Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& d
   summary["wall_time_s"] = res.wall_time_s;
   summary["particle_steps_per_s"] = res.particle_steps / res.wall_time_s;  // the disks integrated: a window's
   if (cut.active_window) {
-    summary["active_window"] = Json{{"rebuilds", res.window.rebuilds},
-                                    {"largest_window_particles", res.window.largest_window_particles},
-                                    {"mean_window_particles",
-                                     res.particle_steps / (static_cast<double>(res.samples.size() - 1) * cut.sample_every_steps)},
-                                    {"chip_particles_removed", res.window.chips.particles},
-                                    {"chip_mass_removed_kg", res.window.chips.mass_kg},
-                                    {"chip_cracks_removed", res.window.chips.cracks},
-                                    // Cracks are found only inside the window and above the workpiece's bottom
-                                    // (a window may reach below it): a damage depth near this is censored.
-                                    {"damage_depth_limit_um",
-                                     units::m_to_um(std::min(window_box_m(cut).below_m,
-                                                             res.y_cut_m - res.workpiece_box_m[2]))}};
+    summary["active_window"] =
+        Json{{"rebuilds", res.window.rebuilds},
+             {"largest_window_particles", res.window.largest_window_particles},
+             {"mean_window_particles",
+              res.particle_steps / (static_cast<double>(res.samples.size() - 1) * cut.sample_every_steps)},
+             {"chip_particles_removed", res.window.chips.particles},
+             {"chip_mass_removed_kg", res.window.chips.mass_kg},
+             {"chip_cracks_removed", res.window.chips.cracks},
+             // Cracks are found only inside the window and above the workpiece's bottom
+             // (a window may reach below it): a damage depth near this is censored.
+             {"damage_depth_limit_um",
+              units::m_to_um(std::min(window_box_m(cut).below_m, res.y_cut_m - res.workpiece_box_m[2]))}};
   }
   write_file_atomically(out / "forces.csv", cut_forces_csv(res));
   write_file_atomically(out / "cracks.csv", cracks_csv(run.cracks(), res.y_cut_m));
@@ -314,9 +316,10 @@ SceneOutcome run_cut_replicates(const Json& cut_scene, const std::string& scene_
       {"subsurface_damage_depth_steady_um", "subsurface_damage_depth_steady_replicate_std_um"},
       {"subsurface_damage_depth_steady_p95_um", "subsurface_damage_depth_steady_p95_replicate_std_um"}};
   const auto start = std::chrono::steady_clock::now();
-  const Json study_doc{{"description", fmt::format("{} replicates of a cut (kerf-dem run --replicates {})", replicates, replicates)},
-                       {"scene", cut_scene},
-                       {"replicates", {{"policy", "fixed"}, {"count", replicates}}}};
+  const Json study_doc{
+      {"description", fmt::format("{} replicates of a cut (kerf-dem run --replicates {})", replicates, replicates)},
+      {"scene", cut_scene},
+      {"replicates", {{"policy", "fixed"}, {"count", replicates}}}};
   const StudySpec spec = read_study(study_doc, fs::path(scene_dir) / "replicates.json");
   StudyOptions study;
   study.out = options.out / "replicates";
@@ -400,6 +403,8 @@ SceneOutcome run_cut_replicates(const Json& cut_scene, const std::string& scene_
   return {0, summary, std::move(done)};
 }
 
-std::unique_ptr<SceneKind> make_cut_kind() { return std::make_unique<CutKind>(); }
+std::unique_ptr<SceneKind> make_cut_kind() {
+  return std::make_unique<CutKind>();
+}
 
 }  // namespace kerf::dem::kinds

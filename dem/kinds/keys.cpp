@@ -5,10 +5,10 @@
 #include <utility>
 
 #include "common.hpp"
-#include "kerf/dem/procedures/lab_test.hpp"
 #include "kerf/dem/laws/material.hpp"
-#include "kerf/dem/study/study.hpp"
+#include "kerf/dem/procedures/lab_test.hpp"
 #include "kerf/dem/procedures/toughness.hpp"
+#include "kerf/dem/study/study.hpp"
 #include "kerf/error.hpp"
 #include "kerf/key_sections.hpp"
 
@@ -48,8 +48,12 @@ const std::vector<SceneKeySection>& sections() {
 
 }  // namespace
 
-std::vector<std::string> scene_sections() { return key_section_names(sections()); }
+std::vector<std::string> scene_sections() {
+  return key_section_names(sections());
+}
 
-std::string scene_keys_markdown(const std::string& section) { return key_sections_markdown(sections(), section); }
+std::string scene_keys_markdown(const std::string& section) {
+  return key_sections_markdown(sections(), section);
+}
 
 }  // namespace kerf::dem

@@ -1,12 +1,13 @@
 // Scene kinds "tension" and "compression": the calibration tests of Yang et al. 2018's Section 3 on a specimen, with
 // the quasi-static check (the same test at half the speed), checkpoints and VTK frames.
+#include "kerf/dem/procedures/lab_test.hpp"
+
 #include <fmt/format.h>
 
 #include <cmath>
 #include <iostream>
 
 #include "common.hpp"
-#include "kerf/dem/procedures/lab_test.hpp"
 #include "kerf/dem/output/output.hpp"
 #include "kerf/dem/output/png.hpp"
 #include "kerf/io.hpp"
@@ -22,8 +23,14 @@ constexpr double kQuasiStaticTolerancePercent = 2.0;
 
 /// A test's sample, for log lines (steps counted from the test's start, not the specimen's genesis).
 SampleState test_sample(const CurveSample& sample, double time_step_s, std::size_t n_particles) {
-  return {std::llround(sample.time_s / time_step_s), sample.time_s, n_particles,
-          sample.n_tension_cracks + sample.n_shear_cracks, {}, {}, {}, sample.axial_strain,
+  return {std::llround(sample.time_s / time_step_s),
+          sample.time_s,
+          n_particles,
+          sample.n_tension_cracks + sample.n_shear_cracks,
+          {},
+          {},
+          {},
+          sample.axial_strain,
           units::pa_to_mpa(sample.stress_pa)};
 }
 
@@ -34,7 +41,8 @@ LabTestResult run_test(const Simulation& specimen, const LoadingSpec& loading, c
   const double height = [&] {
     double lo = 1e300, hi = -1e300;
     const auto& p = specimen.particles();
-    for (std::size_t i = 0; i < p.size(); ++i) lo = std::min(lo, p.y[i] - p.radius[i]), hi = std::max(hi, p.y[i] + p.radius[i]);
+    for (std::size_t i = 0; i < p.size(); ++i)
+      lo = std::min(lo, p.y[i] - p.radius[i]), hi = std::max(hi, p.y[i] + p.radius[i]);
     return hi - lo;
   }();
   const double n = static_cast<double>(specimen.particles().size());
@@ -134,27 +142,30 @@ class LabTestKind final : public SceneKind {
       half.speed_m_per_s *= 0.5;
       half.quasi_static_check = false;  // this run is the check
       const LabTestResult slow = run_test(specimen, half, name() + " (quasi-static check, half speed)", tp.progress);
-      results["quasi_static_check"] = Json{
-          {"speed_m_per_s", half.speed_m_per_s},
-          {"peak_stress_MPa", units::pa_to_mpa(slow.peak_stress_pa)},
-          {"peak_change_percent", 100 * (slow.peak_stress_pa - res.peak_stress_pa) / res.peak_stress_pa},
-          {"youngs_modulus_change_percent", 100 * (slow.youngs_modulus_pa - res.youngs_modulus_pa) / res.youngs_modulus_pa},
-          {"wall_time_s", slow.wall_time_s}};
+      results["quasi_static_check"] =
+          Json{{"speed_m_per_s", half.speed_m_per_s},
+               {"peak_stress_MPa", units::pa_to_mpa(slow.peak_stress_pa)},
+               {"peak_change_percent", 100 * (slow.peak_stress_pa - res.peak_stress_pa) / res.peak_stress_pa},
+               {"youngs_modulus_change_percent",
+                100 * (slow.youngs_modulus_pa - res.youngs_modulus_pa) / res.youngs_modulus_pa},
+               {"wall_time_s", slow.wall_time_s}};
       const double change = results["quasi_static_check"]["peak_change_percent"].get<double>();
       const bool quasi_static = std::abs(change) <= kQuasiStaticTolerancePercent;
       results["quasi_static_check"]["tolerance_percent"] = kQuasiStaticTolerancePercent;
       results["quasi_static_check"]["verdict"] = quasi_static ? "quasi-static" : "rate-dependent";
-      std::cout << fmt::format("{}: quasi-static check: the peak changes {:+.2f} % at half the speed ({} m/s): {}\n", name(),
-                               change, half.speed_m_per_s,
-                               quasi_static ? fmt::format("quasi-static (within {} %)", kQuasiStaticTolerancePercent)
-                                            : fmt::format("RATE-DEPENDENT (more than {} %): lower loading.speed_m_per_s",
-                                                          kQuasiStaticTolerancePercent));
+      std::cout << fmt::format("{}: quasi-static check: the peak changes {:+.2f} % at half the speed ({} m/s): {}\n",
+                               name(), change, half.speed_m_per_s,
+                               quasi_static
+                                   ? fmt::format("quasi-static (within {} %)", kQuasiStaticTolerancePercent)
+                                   : fmt::format("RATE-DEPENDENT (more than {} %): lower loading.speed_m_per_s",
+                                                 kQuasiStaticTolerancePercent));
     }
     summary["results"] = results;
     summary["n_particles"] = res.n_particles;
     summary["steps"] = res.steps;
     summary["wall_time_s"] = res.wall_time_s;
-    summary["particle_steps_per_s"] = static_cast<double>(res.n_particles) * static_cast<double>(res.steps) / res.wall_time_s;
+    summary["particle_steps_per_s"] =
+        static_cast<double>(res.n_particles) * static_cast<double>(res.steps) / res.wall_time_s;
     write_file_atomically(out / "curve.csv", curve_csv(res));
     write_file_atomically(out / "cracks.csv", cracks_csv(run.simulation().cracks()));
     if (frame_every > 0) write_pvd(out / "result.pvd", tp.frames);
@@ -172,7 +183,11 @@ class LabTestKind final : public SceneKind {
 
 }  // namespace
 
-std::unique_ptr<SceneKind> make_tension_kind() { return std::make_unique<LabTestKind>(LabTest::tension); }
-std::unique_ptr<SceneKind> make_compression_kind() { return std::make_unique<LabTestKind>(LabTest::compression); }
+std::unique_ptr<SceneKind> make_tension_kind() {
+  return std::make_unique<LabTestKind>(LabTest::tension);
+}
+std::unique_ptr<SceneKind> make_compression_kind() {
+  return std::make_unique<LabTestKind>(LabTest::compression);
+}
 
 }  // namespace kerf::dem::kinds

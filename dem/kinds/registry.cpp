@@ -32,7 +32,8 @@ std::unique_ptr<SceneKind> make_scene_kind(const std::string& name, const std::s
   for (const auto& [known, factory] : kKinds)
     if (known == name) return factory();
   // A kind for the test suite only (a result of known distribution), not listed among the kinds.
-  if (const char* tests = std::getenv("KERF_DEM_TEST_KINDS"); tests && std::string_view(tests) == "1" && name == "synthetic")
+  if (const char* tests = std::getenv("KERF_DEM_TEST_KINDS");
+      tests && std::string_view(tests) == "1" && name == "synthetic")
     return kinds::make_synthetic_kind();
   throw InputError(path, name, describe_choices(name, scene_kind_names()));
 }

@@ -39,17 +39,20 @@ class SpecimenKind final : public SceneKind {
     summary["wall_time_s"] = genesis_s;
     summary["particle_steps_per_s"] = report.n_particles * static_cast<double>(report.genesis_steps) / genesis_s;
     write_summary(run.options, run.doc, summary);
-    std::cout << fmt::format("specimen: {} disks, {} joints, packing fraction {:.4f}, coordination {:.3f}, residual "
-                             "stress ({:.3g}, {:.3g}) MPa -> {}\n",
-                             report.n_particles, report.n_bonds, report.packing_fraction, report.coordination_number,
-                             units::pa_to_mpa(report.residual_stress_xx_pa), units::pa_to_mpa(report.residual_stress_yy_pa),
-                             (out / "specimen.json").string());
+    std::cout << fmt::format(
+        "specimen: {} disks, {} joints, packing fraction {:.4f}, coordination {:.3f}, residual "
+        "stress ({:.3g}, {:.3g}) MPa -> {}\n",
+        report.n_particles, report.n_bonds, report.packing_fraction, report.coordination_number,
+        units::pa_to_mpa(report.residual_stress_xx_pa), units::pa_to_mpa(report.residual_stress_yy_pa),
+        (out / "specimen.json").string());
     return {0, summary, {}};
   }
 };
 
 }  // namespace
 
-std::unique_ptr<SceneKind> make_specimen_kind() { return std::make_unique<SpecimenKind>(); }
+std::unique_ptr<SceneKind> make_specimen_kind() {
+  return std::make_unique<SpecimenKind>();
+}
 
 }  // namespace kerf::dem::kinds

@@ -42,8 +42,10 @@ class SyntheticKind final : public SceneKind {
     const double value = mean_ + std_ * z;
     std::this_thread::sleep_for(std::chrono::duration<double>(sleep_s_));
     if (value > fail_above_) throw ModelError("synthetic", fmt::format("value {} above fail_above", value));
-    Json summary{{"kind", "synthetic"}, {"seed", common.specimen.seed},
-                 {"results", {{"value", value}, {"value_squared", value * value}}}, {"wall_time_s", sleep_s_}};
+    Json summary{{"kind", "synthetic"},
+                 {"seed", common.specimen.seed},
+                 {"results", {{"value", value}, {"value_squared", value * value}}},
+                 {"wall_time_s", sleep_s_}};
     write_summary(run.options, run.doc, summary);
     return {0, summary, {}};
   }
@@ -54,6 +56,8 @@ class SyntheticKind final : public SceneKind {
 
 }  // namespace
 
-std::unique_ptr<SceneKind> make_synthetic_kind() { return std::make_unique<SyntheticKind>(); }
+std::unique_ptr<SceneKind> make_synthetic_kind() {
+  return std::make_unique<SyntheticKind>();
+}
 
 }  // namespace kerf::dem::kinds

@@ -1,6 +1,8 @@
-// Scene kind "toughness": the fracture-toughness test (kerf/dem/procedures/toughness.hpp), a single-edge-notched beam in
-// three-point bending on one packing or, with --replicates N, on packings specimen.seed + 0..N-1 one after the
-// other (mean and standard error), with the quasi-static check on the first packing.
+// Scene kind "toughness": the fracture-toughness test (kerf/dem/procedures/toughness.hpp), a single-edge-notched beam
+// in three-point bending on one packing or, with --replicates N, on packings specimen.seed + 0..N-1 one after the other
+// (mean and standard error), with the quasi-static check on the first packing.
+#include "kerf/dem/procedures/toughness.hpp"
+
 #include <fmt/format.h>
 
 #include <cmath>
@@ -10,7 +12,6 @@
 #include "common.hpp"
 #include "kerf/dem/output/output.hpp"
 #include "kerf/dem/output/png.hpp"
-#include "kerf/dem/procedures/toughness.hpp"
 #include "kerf/error.hpp"
 #include "kerf/io.hpp"
 #include "kerf/units.hpp"
@@ -52,24 +53,25 @@ std::string curve_csv(const std::vector<std::pair<std::uint64_t, const Toughness
 }
 
 Json result_json(const ToughnessResult& r) {
-  return Json{{"fracture_toughness_MPa_sqrt_m", units::pa_to_mpa(r.fracture_toughness_pa_sqrt_m)},
-              {"fracture_energy_J_per_m2", r.fracture_energy_j_per_m2},
-              {"work_of_fracture_J_per_m2", r.work_of_fracture_j_per_m2},
-              {"irwin_energy_J_per_m2", r.irwin_energy_j_per_m2},
-              {"peak_load_N", r.peak_load_n},
-              {"raw_peak_load_N", r.raw_peak_load_n},
-              {"raw_peak_toughness_MPa_sqrt_m", units::pa_to_mpa(r.raw_peak_toughness_pa_sqrt_m)},
-              {"deflection_at_peak_um", units::m_to_um(r.deflection_at_peak_m)},
-              {"external_work_J", r.external_work_j},
-              {"broken_through", r.through_sample >= 0},
-              {"deflection_broken_through_um",
-               r.through_sample >= 0 ? units::m_to_um(r.curve[static_cast<std::size_t>(r.through_sample)].deflection_m) : 0.0},
-              {"n_cracks", r.curve.back().n_cracks},
-              {"n_notch_disks_removed", r.n_notch_disks},
-              {"n_notch_joints_retired", r.n_notch_joints_retired},
-              {"stop_reason", r.stop_reason},
-              {"steps", r.steps},
-              {"wall_time_s", r.wall_time_s}};
+  return Json{
+      {"fracture_toughness_MPa_sqrt_m", units::pa_to_mpa(r.fracture_toughness_pa_sqrt_m)},
+      {"fracture_energy_J_per_m2", r.fracture_energy_j_per_m2},
+      {"work_of_fracture_J_per_m2", r.work_of_fracture_j_per_m2},
+      {"irwin_energy_J_per_m2", r.irwin_energy_j_per_m2},
+      {"peak_load_N", r.peak_load_n},
+      {"raw_peak_load_N", r.raw_peak_load_n},
+      {"raw_peak_toughness_MPa_sqrt_m", units::pa_to_mpa(r.raw_peak_toughness_pa_sqrt_m)},
+      {"deflection_at_peak_um", units::m_to_um(r.deflection_at_peak_m)},
+      {"external_work_J", r.external_work_j},
+      {"broken_through", r.through_sample >= 0},
+      {"deflection_broken_through_um",
+       r.through_sample >= 0 ? units::m_to_um(r.curve[static_cast<std::size_t>(r.through_sample)].deflection_m) : 0.0},
+      {"n_cracks", r.curve.back().n_cracks},
+      {"n_notch_disks_removed", r.n_notch_disks},
+      {"n_notch_joints_retired", r.n_notch_joints_retired},
+      {"stop_reason", r.stop_reason},
+      {"steps", r.steps},
+      {"wall_time_s", r.wall_time_s}};
 }
 
 class ToughnessKind final : public SceneKind {
@@ -79,8 +81,10 @@ class ToughnessKind final : public SceneKind {
       spec_ = read_fields(*t, toughness_fields(), ToughnessSpec{});
       t->finish();
     }
-    if (!common.specimen_file) check_toughness_spec(spec_, common.specimen);
-    else with_path("toughness", [&] { check_fields(toughness_fields(), spec_); });
+    if (!common.specimen_file)
+      check_toughness_spec(spec_, common.specimen);
+    else
+      with_path("toughness", [&] { check_fields(toughness_fields(), spec_); });
   }
 
   void check_options(const RunOptions& options, const SceneCommon& common) const override {
@@ -164,21 +168,23 @@ class ToughnessKind final : public SceneKind {
     summary["n_particles"] = r0.n_particles;
     summary["steps"] = r0.steps;
     summary["wall_time_s"] = total_wall_s;
-    summary["particle_steps_per_s"] = static_cast<double>(r0.n_particles) * static_cast<double>(r0.steps) / r0.wall_time_s;
+    summary["particle_steps_per_s"] =
+        static_cast<double>(r0.n_particles) * static_cast<double>(r0.steps) / r0.wall_time_s;
     std::vector<std::pair<std::uint64_t, const ToughnessResult*>> runs;
     for (std::size_t k = 0; k < results.size(); ++k) runs.emplace_back(seeds[k], &results[k]);
     write_file_atomically(out / "curve.csv", curve_csv(runs));
     write_file_atomically(out / "cracks.csv", cracks_csv(first_final->cracks()));
-    write_load_deflection_png(out / "curve.png", results,
-                              fmt::format("toughness: SENB, W {:.3g} mm, a/W {:.2f}{}",
-                                          units::m_to_mm(r0.depth_m), r0.notch_m / r0.depth_m,
-                                          packings > 1 ? fmt::format(", {} packings", packings) : std::string()));
+    write_load_deflection_png(
+        out / "curve.png", results,
+        fmt::format("toughness: SENB, W {:.3g} mm, a/W {:.2f}{}", units::m_to_mm(r0.depth_m), r0.notch_m / r0.depth_m,
+                    packings > 1 ? fmt::format(", {} packings", packings) : std::string()));
     write_specimen_png(out / "specimen.png", *first_final, "toughness (SENB), final state");
     // The crack's neighbourhood: W either side of the notch, the whole depth.
     const double xc = r0.notch_x_m;
     double y0 = 1e300, y1 = -1e300;
     const auto& p = first_final->particles();
-    for (std::size_t i = 0; i < p.size(); ++i) y0 = std::min(y0, p.y[i] - p.radius[i]), y1 = std::max(y1, p.y[i] + p.radius[i]);
+    for (std::size_t i = 0; i < p.size(); ++i)
+      y0 = std::min(y0, p.y[i] - p.radius[i]), y1 = std::max(y1, p.y[i] + p.radius[i]);
     write_specimen_png(out / "crack.png", *first_final, "toughness (SENB): the notch and the crack, final state",
                        std::array<double, 4>{xc - r0.depth_m, xc + r0.depth_m, y0, y1});
     write_summary(scene_run.options, scene_run.doc, summary);
@@ -217,11 +223,12 @@ class ToughnessKind final : public SceneKind {
     const ToughnessResult slow = run_one(specimen, half, "toughness (quasi-static check, half speed)", target, nullptr);
     const double change = 100 * (slow.peak_load_n - r.peak_load_n) / r.peak_load_n;
     const bool quasi_static = std::abs(change) <= kQuasiStaticTolerancePercent;
-    std::cout << fmt::format("toughness: quasi-static check: the peak load changes {:+.2f} % at half the speed ({} m/s): {}\n",
-                             change, half.speed_m_per_s,
-                             quasi_static ? fmt::format("quasi-static (within {} %)", kQuasiStaticTolerancePercent)
-                                          : fmt::format("RATE-DEPENDENT (more than {} %): lower toughness.speed_m_per_s",
-                                                        kQuasiStaticTolerancePercent));
+    std::cout << fmt::format(
+        "toughness: quasi-static check: the peak load changes {:+.2f} % at half the speed ({} m/s): {}\n", change,
+        half.speed_m_per_s,
+        quasi_static ? fmt::format("quasi-static (within {} %)", kQuasiStaticTolerancePercent)
+                     : fmt::format("RATE-DEPENDENT (more than {} %): lower toughness.speed_m_per_s",
+                                   kQuasiStaticTolerancePercent));
     return Json{{"speed_m_per_s", half.speed_m_per_s},
                 {"peak_load_N", slow.peak_load_n},
                 {"peak_change_percent", change},
@@ -237,6 +244,8 @@ class ToughnessKind final : public SceneKind {
 
 }  // namespace
 
-std::unique_ptr<SceneKind> make_toughness_kind() { return std::make_unique<ToughnessKind>(); }
+std::unique_ptr<SceneKind> make_toughness_kind() {
+  return std::make_unique<ToughnessKind>();
+}
 
 }  // namespace kerf::dem::kinds

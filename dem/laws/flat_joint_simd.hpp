@@ -24,8 +24,7 @@ inline v2d lane_abs(v2d v) {
 /// tests/dem/flat_joint_test.cpp checks the equality, on random joints and ulp by ulp across the envelopes.
 /// Requires p.n_elements == 2 and both elements bonded (the caller tests it).
 inline BondResult flat_joint_update_two_bonded(const FlatJointParams& p, const BondGeometry& geo,
-                                                    const BondKinematics& kin, double* shear_force_n,
-                                                    BreakMode* breaks) {
+                                               const BondKinematics& kin, double* shear_force_n, BreakMode* breaks) {
   const double le = 2.0 * geo.half_length_m / 2;
   const double area = le * geo.thickness_m;
   const double kn_t = geo.normal_stiffness * geo.thickness_m;
@@ -62,8 +61,8 @@ inline BondResult flat_joint_update_two_bonded(const FlatJointParams& p, const B
     const v2d shear_limit = p.bond.cohesion_pa - sigma * p.tan_friction_angle;
     for (int e = 0; e < 2; ++e) {
       breaks[e] = sigma[e] > p.bond.tensile_strength_pa ? BreakMode::tension
-                  : tau[e] >= shear_limit[e]       ? BreakMode::shear
-                                                   : BreakMode::none;
+                  : tau[e] >= shear_limit[e]            ? BreakMode::shear
+                                                        : BreakMode::none;
       r.n_breaking += breaks[e] != BreakMode::none;
       shear_force_n[e] = fs[e];
     }
@@ -77,9 +76,11 @@ inline BondResult flat_joint_update_two_bonded(const FlatJointParams& p, const B
 /// The flat joint's update as the engine calls it: the two-lane path for an intact two-element joint, the
 /// general update otherwise (bond_update of the public header). Always inlined: with a loop instantiation per
 /// damping choice (simulation.cpp) g++ called it out of line, 6-7 % of the throughput (docs/performance.md).
-[[gnu::always_inline]] inline BondResult bond_update_fast(const FlatJointParams& p, const BondGeometry& geo, const BondKinematics& kin,
-                                   double* shear_force_n, const std::uint8_t* bonded, BreakMode* breaks) {
-  if (p.n_elements == 2 && bonded[0] && bonded[1]) return flat_joint_update_two_bonded(p, geo, kin, shear_force_n, breaks);
+[[gnu::always_inline]] inline BondResult bond_update_fast(const FlatJointParams& p, const BondGeometry& geo,
+                                                          const BondKinematics& kin, double* shear_force_n,
+                                                          const std::uint8_t* bonded, BreakMode* breaks) {
+  if (p.n_elements == 2 && bonded[0] && bonded[1])
+    return flat_joint_update_two_bonded(p, geo, kin, shear_force_n, breaks);
   return bond_update(p, geo, kin, shear_force_n, bonded, breaks);
 }
 

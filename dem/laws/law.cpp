@@ -8,8 +8,8 @@ const FieldTable<BondStiffnessStrength>& BondStiffnessStrength::fields() {
   static const FieldTable<B> table{
       number_field("bond_effective_modulus_GPa", units::kGPa, Range::positive(),
                    "bond effective modulus Ebar* (k_n = Ebar* / (R1 + R2))", &B::effective_modulus_pa),
-      number_field("bond_stiffness_ratio", units::kNone, Range::positive(), "bond normal-to-shear stiffness ratio kappabar*",
-                   &B::stiffness_ratio),
+      number_field("bond_stiffness_ratio", units::kNone, Range::positive(),
+                   "bond normal-to-shear stiffness ratio kappabar*", &B::stiffness_ratio),
       number_field("tensile_strength_MPa", units::kMPa, Range::non_negative(),
                    "bond tensile strength sigma_c (largest normal stress of an element or at the bond's periphery)",
                    &B::tensile_strength_pa),

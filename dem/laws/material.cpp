@@ -53,7 +53,8 @@ Material read_material(const Json& object, const std::string& path) {
   m = read_fields(r, Material::fields(), m);
   m.contact = law_by_name<ContactLaw>(r.get_string_or("contact_model", std::string(law_name(m.contact))),
                                       r.key_path("contact_model"));
-  m.joint = law_by_name<BondLaw>(r.get_string_or("bond_model", std::string(law_name(m.joint))), r.key_path("bond_model"));
+  m.joint =
+      law_by_name<BondLaw>(r.get_string_or("bond_model", std::string(law_name(m.joint))), r.key_path("bond_model"));
   read_law(r, m.contact);
   read_law(r, m.joint);
   r.ignore("description");

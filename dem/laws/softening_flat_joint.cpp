@@ -53,7 +53,8 @@ double softening_flat_joint_bonded_energy(const SofteningFlatJointParams& p, con
     // open part at (1 - D) k_n, the shear at (1 - D) k_s.
     const ClosedPart part = element_closed_part(kin.gap_m, theta, -geo.half_length_m + e * le, le);
     const double gc = kin.gap_m - theta * part.start_m, gd = kin.gap_m - theta * part.end_m;
-    const double closed = part.end_m > part.start_m ? (part.end_m - part.start_m) * (gc * gc + gc * gd + gd * gd) / 3 : 0.0;
+    const double closed =
+        part.end_m > part.start_m ? (part.end_m - part.start_m) * (gc * gc + gc * gd + gd * gd) / 3 : 0.0;
     energy += 0.5 * geo.normal_stiffness * geo.thickness_m * (closed + (1 - d) * (all - closed));
     if (d < 1) energy += 0.5 * shear_force_n[e] * shear_force_n[e] / ((1 - d) * geo.shear_stiffness * area);
   }

@@ -17,7 +17,7 @@ namespace kerf::dem {
   if (p.n_elements == 2 && bonded[0] && bonded[1] && damage[0] == 0 && damage[1] == 0) {
     const double s0 = shear_force_n[0], s1 = shear_force_n[1];
     const BondResult r = flat_joint_update_two_bonded(p, geo, kin, shear_force_n, breaks);
-    if (r.n_breaking == 0) return r;  // within both envelopes: no damage, the flat joint's numbers
+    if (r.n_breaking == 0) return r;               // within both envelopes: no damage, the flat joint's numbers
     shear_force_n[0] = s0, shear_force_n[1] = s1;  // over one: the softening update decides from the same state
   }
   return bond_update(p, geo, kin, shear_force_n, bonded, breaks, damage);

@@ -1,14 +1,13 @@
 // VTK XML PolyData (binary, appended raw data) and CSV writers for DEM results.
 #include "kerf/dem/output/output.hpp"
 
-#include "kerf/dem/procedures/cutting.hpp"
-
 #include <fmt/format.h>
 
 #include <bit>
 #include <cstdint>
 #include <cstring>
 
+#include "kerf/dem/procedures/cutting.hpp"
 #include "kerf/io.hpp"
 #include "kerf/units.hpp"
 
@@ -16,11 +15,24 @@ namespace kerf::dem {
 
 namespace {
 
-template <class T> constexpr const char* vtk_type();
-template <> constexpr const char* vtk_type<double>() { return "Float64"; }
-template <> constexpr const char* vtk_type<std::int32_t>() { return "Int32"; }
-template <> constexpr const char* vtk_type<std::int64_t>() { return "Int64"; }
-template <> constexpr const char* vtk_type<std::uint8_t>() { return "UInt8"; }
+template <class T>
+constexpr const char* vtk_type();
+template <>
+constexpr const char* vtk_type<double>() {
+  return "Float64";
+}
+template <>
+constexpr const char* vtk_type<std::int32_t>() {
+  return "Int32";
+}
+template <>
+constexpr const char* vtk_type<std::int64_t>() {
+  return "Int64";
+}
+template <>
+constexpr const char* vtk_type<std::uint8_t>() {
+  return "UInt8";
+}
 
 /// A PolyData file with its arrays in one appended raw block: each array is a UInt64 byte count followed by
 /// the values in the machine's byte order (named in the header), as VTK's XML readers expect.
@@ -28,18 +40,19 @@ class VtpFile {
  public:
   /// Opens the piece: counts of points, vertex cells and line cells.
   VtpFile(std::size_t n_points, std::size_t n_verts, std::size_t n_lines) {
-    xml_ = fmt::format("<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"{}\" "
-                       "header_type=\"UInt64\">\n<PolyData>\n<Piece NumberOfPoints=\"{}\" NumberOfVerts=\"{}\" "
-                       "NumberOfLines=\"{}\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n",
-                       std::endian::native == std::endian::little ? "LittleEndian" : "BigEndian", n_points, n_verts,
-                       n_lines);
+    xml_ = fmt::format(
+        "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"{}\" "
+        "header_type=\"UInt64\">\n<PolyData>\n<Piece NumberOfPoints=\"{}\" NumberOfVerts=\"{}\" "
+        "NumberOfLines=\"{}\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n",
+        std::endian::native == std::endian::little ? "LittleEndian" : "BigEndian", n_points, n_verts, n_lines);
   }
   void tag(const std::string& text) { xml_ += text + "\n"; }
   /// One data array of `n` tuples of `components` values; `value(k, c)` gives component c of tuple k.
   template <class T, class F>
   void array(const char* name, int components, std::size_t n, F value) {
-    xml_ += fmt::format("<DataArray type=\"{}\" Name=\"{}\" NumberOfComponents=\"{}\" format=\"appended\" offset=\"{}\"/>\n",
-                        vtk_type<T>(), name, components, data_.size());
+    xml_ += fmt::format(
+        "<DataArray type=\"{}\" Name=\"{}\" NumberOfComponents=\"{}\" format=\"appended\" offset=\"{}\"/>\n",
+        vtk_type<T>(), name, components, data_.size());
     const std::uint64_t bytes = n * static_cast<std::uint64_t>(components) * sizeof(T);
     append(bytes);
     for (std::size_t k = 0; k < n; ++k)
@@ -56,7 +69,8 @@ class VtpFile {
   template <class F>
   void lines(std::size_t n, F ends) {
     tag("<Lines>");
-    array<std::int64_t>("connectivity", 1, 2 * n, [&](std::size_t k, int) { return ends(k / 2, static_cast<int>(k % 2)); });
+    array<std::int64_t>("connectivity", 1, 2 * n,
+                        [&](std::size_t k, int) { return ends(k / 2, static_cast<int>(k % 2)); });
     array<std::int64_t>("offsets", 1, n, [](std::size_t k, int) { return 2 * (k + 1); });
     tag("</Lines>");
   }
@@ -79,7 +93,9 @@ class VtpFile {
 template <class X, class Y>
 void points_mm(VtpFile& f, std::size_t n, X x, Y y) {
   f.tag("<Points>");
-  f.array<double>("position_mm", 3, n, [&](std::size_t k, int c) { return c == 0 ? units::m_to_mm(x(k)) : c == 1 ? units::m_to_mm(y(k)) : 0.0; });
+  f.array<double>("position_mm", 3, n, [&](std::size_t k, int c) {
+    return c == 0 ? units::m_to_mm(x(k)) : c == 1 ? units::m_to_mm(y(k)) : 0.0;
+  });
   f.tag("</Points>");
 }
 
@@ -99,20 +115,24 @@ void write_vtp_frame(const std::filesystem::path& path, const Simulation& sim, c
     }
   const std::size_t n = p.size(), nl = lines.size();
   VtpFile f(n, n, nl);
-  points_mm(f, n, [&](std::size_t i) { return p.x[i]; }, [&](std::size_t i) { return p.y[i]; });
+  points_mm(
+      f, n, [&](std::size_t i) { return p.x[i]; }, [&](std::size_t i) { return p.y[i]; });
   f.tag("<PointData Scalars=\"radius_mm\">");
   if (extra.id.empty())
     f.array<std::int64_t>("id", 1, n, [](std::size_t i, int) { return i; });
   else
     f.array<std::int64_t>("id", 1, n, [&](std::size_t i, int) { return extra.id[i]; });
   f.array<double>("radius_mm", 1, n, [&](std::size_t i, int) { return units::m_to_mm(p.radius[i]); });
-  f.array<double>("velocity_m_per_s", 3, n, [&](std::size_t i, int c) { return c == 0 ? p.vx[i] : c == 1 ? p.vy[i] : 0.0; });
+  f.array<double>("velocity_m_per_s", 3, n, [&](std::size_t i, int c) {
+    return c == 0 ? p.vx[i] : c == 1 ? p.vy[i] : 0.0;
+  });
   f.array<double>("spin_rad_per_s", 1, n, [&](std::size_t i, int) { return p.omega[i]; });
   f.array<std::int32_t>("group", 1, n, [&](std::size_t i, int) { return p.group[i]; });
   f.array<std::uint8_t>("held", 1, n, [&](std::size_t i, int) { return p.group[i] > 0 ? 1 : 0; });
   if (!extra.displacement_m.empty())
-    f.array<double>("displacement_m", 3, n,
-                    [&](std::size_t i, int c) { return c < 2 ? extra.displacement_m[2 * i + static_cast<std::size_t>(c)] : 0.0; });
+    f.array<double>("displacement_m", 3, n, [&](std::size_t i, int c) {
+      return c < 2 ? extra.displacement_m[2 * i + static_cast<std::size_t>(c)] : 0.0;
+    });
   f.array<std::int32_t>("broken_joints", 1, n, [&](std::size_t i, int) { return broken[i]; });
   // Force chains (issue 55 item 6): each disk's average stress from the forces on it, as a 3 x 3 tensor (z row and
   // column 0; ParaView's tensor glyphs and eigenvectors take 9 components), its pressure, the forces' sum.
@@ -129,7 +149,9 @@ void write_vtp_frame(const std::filesystem::path& path, const Simulation& sim, c
   f.tag("</PointData>\n<CellData Scalars=\"intact_elements\">");
   f.array<std::int32_t>("intact_elements", 1, n + nl,
                         [&](std::size_t c, int) { return c < n ? -1 : b.n_bonded_elements(lines[c - n]); });
-  f.array<std::int64_t>("bond", 1, n + nl, [&](std::size_t c, int) { return c < n ? std::int64_t{-1} : static_cast<std::int64_t>(lines[c - n]); });
+  f.array<std::int64_t>("bond", 1, n + nl, [&](std::size_t c, int) {
+    return c < n ? std::int64_t{-1} : static_cast<std::int64_t>(lines[c - n]);
+  });
   // Each joint's force: along its centre line (tension positive) and across it; 0 on the disks' vertex cells.
   std::vector<std::array<double, 2>> joint_forces(nl);
   for (std::size_t k = 0; k < nl; ++k) joint_forces[k] = sim.joint_force(lines[k]);
@@ -148,14 +170,23 @@ void write_walls_vtp(const std::filesystem::path& path, const std::vector<Wall>&
     if (walls[w].enabled) on.push_back(w);
   const std::size_t n = on.size();
   VtpFile f(2 * n, 0, n);
-  const auto end_x = [&](std::size_t k) { const Wall& w = walls[on[k / 2]]; return k % 2 == 0 ? w.x0 : w.x1; };
-  const auto end_y = [&](std::size_t k) { const Wall& w = walls[on[k / 2]]; return k % 2 == 0 ? w.y0 : w.y1; };
+  const auto end_x = [&](std::size_t k) {
+    const Wall& w = walls[on[k / 2]];
+    return k % 2 == 0 ? w.x0 : w.x1;
+  };
+  const auto end_y = [&](std::size_t k) {
+    const Wall& w = walls[on[k / 2]];
+    return k % 2 == 0 ? w.y0 : w.y1;
+  };
   points_mm(f, 2 * n, end_x, end_y);
   f.tag("<CellData Scalars=\"wall\">");
   f.array<std::int32_t>("wall", 1, n, [&](std::size_t k, int) { return static_cast<std::int32_t>(on[k]); });
-  f.array<double>("force_N", 3, n, [&](std::size_t k, int c) { return c == 0 ? walls[on[k]].fx : c == 1 ? walls[on[k]].fy : 0.0; });
-  f.array<double>("velocity_m_per_s", 3, n,
-                  [&](std::size_t k, int c) { return c == 0 ? walls[on[k]].vx : c == 1 ? walls[on[k]].vy : 0.0; });
+  f.array<double>("force_N", 3, n, [&](std::size_t k, int c) {
+    return c == 0 ? walls[on[k]].fx : c == 1 ? walls[on[k]].fy : 0.0;
+  });
+  f.array<double>("velocity_m_per_s", 3, n, [&](std::size_t k, int c) {
+    return c == 0 ? walls[on[k]].vx : c == 1 ? walls[on[k]].vy : 0.0;
+  });
   f.tag("</CellData>");
   f.lines(n, [](std::size_t k, int end) { return 2 * k + static_cast<std::size_t>(end); });
   f.write(path);
@@ -165,11 +196,13 @@ void write_cracks_vtp(const std::filesystem::path& path, const std::vector<Crack
                       std::optional<double> y_cut_m) {
   const std::size_t n = cracks.size();
   VtpFile f(n, n, 0);
-  points_mm(f, n, [&](std::size_t i) { return cracks[i].x_m; }, [&](std::size_t i) { return cracks[i].y_m; });
+  points_mm(
+      f, n, [&](std::size_t i) { return cracks[i].x_m; }, [&](std::size_t i) { return cracks[i].y_m; });
   f.tag("<PointData Scalars=\"mode\">");
   f.array<std::int32_t>("mode", 1, n, [&](std::size_t i, int) { return static_cast<std::int32_t>(cracks[i].mode); });
   f.array<double>("time_s", 1, n, [&](std::size_t i, int) { return cracks[i].time_s; });
-  f.array<double>("orientation_deg", 1, n, [&](std::size_t i, int) { return units::rad_to_deg(cracks[i].orientation_rad); });
+  f.array<double>("orientation_deg", 1, n,
+                  [&](std::size_t i, int) { return units::rad_to_deg(cracks[i].orientation_rad); });
   f.array<double>("length_um", 1, n, [&](std::size_t i, int) { return units::m_to_um(cracks[i].length_m); });
   f.array<std::int64_t>("bond", 1, n, [&](std::size_t i, int) { return cracks[i].bond; });
   f.array<std::int32_t>("element", 1, n, [&](std::size_t i, int) { return cracks[i].element; });
@@ -182,7 +215,8 @@ void write_cracks_vtp(const std::filesystem::path& path, const std::vector<Crack
   f.write(path);
 }
 
-void write_pvd(const std::filesystem::path& path, const std::vector<std::pair<double, std::vector<std::string>>>& frames) {
+void write_pvd(const std::filesystem::path& path,
+               const std::vector<std::pair<double, std::vector<std::string>>>& frames) {
   std::string out = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
   for (const auto& [time, files] : frames)
     for (std::size_t part = 0; part < files.size(); ++part) {
@@ -197,7 +231,8 @@ void write_pvd(const std::filesystem::path& path, const std::vector<std::pair<do
 }
 
 std::string curve_csv(const LabTestResult& r) {
-  std::string out = csv_line({"time_s", "axial_strain", "lateral_strain", "stress_MPa", "tension_cracks", "shear_cracks"});
+  std::string out =
+      csv_line({"time_s", "axial_strain", "lateral_strain", "stress_MPa", "tension_cracks", "shear_cracks"});
   for (const auto& s : r.curve)
     out += csv_line({csv_number(s.time_s), csv_number(s.axial_strain), csv_number(s.lateral_strain),
                      csv_number(units::pa_to_mpa(s.stress_pa)), std::to_string(s.n_tension_cracks),
@@ -211,9 +246,13 @@ std::string cracks_table(const std::vector<CrackEvent>& cracks, const double* y_
   if (y_cut_m) head.push_back("place");
   std::string out = csv_line(head);
   for (const auto& c : cracks) {
-    std::vector<std::string> row{csv_number(c.time_s), csv_number(units::m_to_mm(c.x_m)), csv_number(units::m_to_mm(c.y_m)),
-                                 csv_number(units::rad_to_deg(c.orientation_rad)), csv_number(units::m_to_um(c.length_m)),
-                                 c.mode == BreakMode::tension ? "tension" : "shear", std::to_string(c.bond),
+    std::vector<std::string> row{csv_number(c.time_s),
+                                 csv_number(units::m_to_mm(c.x_m)),
+                                 csv_number(units::m_to_mm(c.y_m)),
+                                 csv_number(units::rad_to_deg(c.orientation_rad)),
+                                 csv_number(units::m_to_um(c.length_m)),
+                                 c.mode == BreakMode::tension ? "tension" : "shear",
+                                 std::to_string(c.bond),
                                  std::to_string(c.element)};
     // Orthogonal cutting (Yang et al. 2018, Section 4): chip above the cut line, subsurface on or below it.
     if (y_cut_m) row.push_back(crack_place(c.y_m, *y_cut_m));
@@ -223,8 +262,12 @@ std::string cracks_table(const std::vector<CrackEvent>& cracks, const double* y_
 }
 }  // namespace
 
-std::string cracks_csv(const std::vector<CrackEvent>& cracks) { return cracks_table(cracks, nullptr); }
+std::string cracks_csv(const std::vector<CrackEvent>& cracks) {
+  return cracks_table(cracks, nullptr);
+}
 
-std::string cracks_csv(const std::vector<CrackEvent>& cracks, double y_cut_m) { return cracks_table(cracks, &y_cut_m); }
+std::string cracks_csv(const std::vector<CrackEvent>& cracks, double y_cut_m) {
+  return cracks_table(cracks, &y_cut_m);
+}
 
 }  // namespace kerf::dem

@@ -29,7 +29,7 @@ void RunLog::report(const ProgressUpdate& u) {
                      u.total > 0 ? 100 * u.done / u.total : 100.0));
     return;
   }
-  if (u.done == 0 && u.done != u.total) return;                           // the start
+  if (u.done == 0 && u.done != u.total) return;  // the start
   ++s.reports;
   if (u.sample) {
     s.steps = u.sample->step - s.first_step;  // this process's
@@ -40,10 +40,10 @@ void RunLog::report(const ProgressUpdate& u) {
   // The rate since the previous line: of particle-steps when the stage has samples (its end jumps `done` to
   // the total), else of the stage's unit.
   const double since = std::chrono::duration<double>(now - s.last_line).count();
-  const double rate =
-      since <= 0 ? 0
-      : u.sample ? static_cast<double>(u.sample->step - s.last_line_step) * static_cast<double>(u.sample->n_particles) / since
-                 : (u.done - s.last_line_done) / since;
+  const double rate = since <= 0 ? 0
+                      : u.sample ? static_cast<double>(u.sample->step - s.last_line_step) *
+                                       static_cast<double>(u.sample->n_particles) / since
+                                 : (u.done - s.last_line_done) / since;
   std::string text = u.stage + ":";
   if (u.sample) {
     const SampleState& x = *u.sample;

@@ -44,7 +44,8 @@ MacroProperties mean_macro_properties(std::span<const SpecimenSource> sources, c
     sum.compressive_strength_pa += one.compressive_strength_pa;
   }
   const double n = static_cast<double>(sources.size());
-  return {sum.youngs_modulus_pa / n, sum.poissons_ratio / n, sum.tensile_strength_pa / n, sum.compressive_strength_pa / n};
+  return {sum.youngs_modulus_pa / n, sum.poissons_ratio / n, sum.tensile_strength_pa / n,
+          sum.compressive_strength_pa / n};
 }
 
 double mean_fracture_toughness(std::span<const SpecimenSource> beams, const Material& m,
@@ -73,11 +74,11 @@ struct Context {
   const CalibrationSpec* spec;
   const std::function<void(const CalibrationEvaluation&)>* on_evaluation;
   const std::vector<CalibrationEvaluation>* known;  ///< answers from an interrupted run
-  Material current;  ///< E* and sigma_c here carry the proportional corrections
+  Material current;                                 ///< E* and sigma_c here carry the proportional corrections
   CalibrationResult result;
   bool done = false;
-  int repeats = 0;  ///< evaluations answered from this run's own log (no new information)
-  int best = 0;     ///< the best evaluation's index in result.log
+  int repeats = 0;             ///< evaluations answered from this run's own log (no new information)
+  int best = 0;                ///< the best evaluation's index in result.log
   double ln_lambda_start = 0;  ///< ln lambda of the start (with free_fracture_energy)
 
   bool toughness_target() const { return spec->toughness && spec->targets.fracture_toughness_pa_sqrt_m > 0; }
@@ -237,7 +238,9 @@ Material material_at(const Context& ctx, const Vars& x) {
   return m;
 }
 
-double ln_strength_ratio(const MacroProperties& p) { return std::log(p.compressive_strength_pa / p.tensile_strength_pa); }
+double ln_strength_ratio(const MacroProperties& p) {
+  return std::log(p.compressive_strength_pa / p.tensile_strength_pa);
+}
 
 /// The response each variable steers: ln nu, ln R, ln(K_IC / sigma_t) (0 without a toughness).
 Vars responses(const MacroProperties& p) {
@@ -368,8 +371,12 @@ struct Reduced {
   }
 };
 
-int reduced_f(const gsl_vector* x, void* params, gsl_vector* f) { return static_cast<Reduced*>(params)->residual(x, f); }
-int reduced_df(const gsl_vector*, void* params, gsl_matrix* j) { return static_cast<Reduced*>(params)->jacobian(j); }
+int reduced_f(const gsl_vector* x, void* params, gsl_vector* f) {
+  return static_cast<Reduced*>(params)->residual(x, f);
+}
+int reduced_df(const gsl_vector*, void* params, gsl_matrix* j) {
+  return static_cast<Reduced*>(params)->jacobian(j);
+}
 int reduced_fdf(const gsl_vector* x, void* params, gsl_vector* f, gsl_matrix* j) {
   auto* r = static_cast<Reduced*>(params);
   const int status = r->residual(x, f);

@@ -5,9 +5,9 @@
 #include <limits>
 #include <numbers>
 
+#include "cut_internal.hpp"
 #include "kerf/dem/procedures/cutting.hpp"
 #include "kerf/units.hpp"
-#include "cut_internal.hpp"
 
 namespace kerf::dem {
 
@@ -79,8 +79,7 @@ std::vector<double> groove_centres(const CutParams& p, double x_left_m, double x
   // The laser treats the whole top surface, not only the tool's path: a groove ahead of the tool's end
   // still stops a crack, and the workpiece does not change with the travel (seed 000 Section 4: grooves on
   // the top surface).
-  for (double c = x_right_m - 0.5 * p.groove_pitch_m; c - half > x_left_m; c -= p.groove_pitch_m)
-    out.push_back(c);
+  for (double c = x_right_m - 0.5 * p.groove_pitch_m; c - half > x_left_m; c -= p.groove_pitch_m) out.push_back(c);
   return out;
 }
 

@@ -17,7 +17,9 @@ inline void require(bool ok, const std::string& key, double value, const std::st
 }
 
 /// Wedge angle between the rake and clearance faces [rad]: 90 deg - rake - clearance.
-inline double wedge_angle_rad(const CutParams& p) { return units::deg_to_rad(90.0 - p.rake_deg - p.clearance_deg); }
+inline double wedge_angle_rad(const CutParams& p) {
+  return units::deg_to_rad(90.0 - p.rake_deg - p.clearance_deg);
+}
 
 /// Face lengths [m]: the rake face reaches tool.rake_face_height_mm above the tip (default 3 depths of cut,
 /// room for the chip), the clearance face is 2 depths of cut long.

@@ -4,10 +4,10 @@
 #include <cmath>
 #include <string>
 
+#include "cut_internal.hpp"
 #include "kerf/dem/procedures/cutting.hpp"
 #include "kerf/error.hpp"
 #include "kerf/units.hpp"
-#include "cut_internal.hpp"
 
 namespace kerf::dem {
 
@@ -51,8 +51,8 @@ const FieldTable<CutParams>& tool_fields() {
       number_field("friction_coefficient", kNone, Range::non_negative(),
                    "tool-workpiece Coulomb friction; absent (-1): the material's particle friction",
                    &P::tool_friction_coefficient),
-      number_field("rake_face_height_mm", kMm, Range::non_negative(),
-                   "rake-face top above the tip; 0: 3 depths of cut", &P::rake_face_height_m)};
+      number_field("rake_face_height_mm", kMm, Range::non_negative(), "rake-face top above the tip; 0: 3 depths of cut",
+                   &P::rake_face_height_m)};
   return table;
 }
 
@@ -99,10 +99,11 @@ const FieldTable<CutParams>& active_window_fields() {
                    "absorbing layer inside the window's ahead, behind and lower edges, in depths of cut (0: none; the "
                    "held frame is rigid and reflects the waves an undamped cut sends out)",
                    &P::window_absorbing_depths),
-      number_field("absorbing_attenuation", kNone, Range::positive(),
-                   "e-folds by which the absorbing layer (and cut.held_absorbing_depths') attenuates a p-wave's amplitude "
-                   "through it and back",
-                   &P::window_absorbing_attenuation),
+      number_field(
+          "absorbing_attenuation", kNone, Range::positive(),
+          "e-folds by which the absorbing layer (and cut.held_absorbing_depths') attenuates a p-wave's amplitude "
+          "through it and back",
+          &P::window_absorbing_attenuation),
       bool_field("remove_loose_fragments",
                  "a bound, not a model of glass: at each rebuild remove every disk above the cut line that no intact "
                  "joint path ties to the held rows (every loose fragment gone at once)",
@@ -137,7 +138,8 @@ const FieldTable<CutParams>& edge_zone_fields() {
                    "reach of the zone around the tool's tip (0: the workpiece's largest disk diameter)",
                    &P::edge_zone_radius_m),
       number_field("layer_factor", kNone, Range::positive(),
-                   "ductile layer l = layer_factor x d_c (Bifano's critical depth of the material)", &P::edge_layer_factor),
+                   "ductile layer l = layer_factor x d_c (Bifano's critical depth of the material)",
+                   &P::edge_layer_factor),
       number_field("friction_coefficient", kNone, Range::non_negative(),
                    "tool-glass friction of the layer's cut (0.15-0.4: docs/physics-glass-edge.md)",
                    &P::edge_friction_coefficient),
@@ -180,10 +182,10 @@ void check_cut_relations(const CutParams& p) {
             "a shift below active_window.ahead_depths (" + format_value(p.window_ahead_depths) +
                 "): the tool must not leave the window between two rebuilds");
   if (p.active_window)
-    require(p.window_absorbing_depths <
-                std::min({p.window_ahead_depths, p.window_behind_depths, p.window_below_depths}),
-            "active_window.absorbing_depths", p.window_absorbing_depths,
-            "a layer thinner than the window's ahead, behind and below depths");
+    require(
+        p.window_absorbing_depths < std::min({p.window_ahead_depths, p.window_behind_depths, p.window_below_depths}),
+        "active_window.absorbing_depths", p.window_absorbing_depths,
+        "a layer thinner than the window's ahead, behind and below depths");
   if (p.groove_shape == GrooveShape::none) return;
   require(p.groove_width_m < p.groove_pitch_m, "grooves.width_mm", units::m_to_mm(p.groove_width_m),
           "a positive width below grooves.pitch_mm (" + format_value(units::m_to_mm(p.groove_pitch_m)) + " mm)");

@@ -74,7 +74,8 @@ void steady_statistics(CutResult& res, double from_travel_m) {
   const BatchMeans bm = batch_means(main), bt = batch_means(thrust);
   res.main_force_sem_n = bm.best_standard_error(&res.main_force_sem_method);
   res.thrust_force_sem_n = bt.best_standard_error(&res.thrust_force_sem_method);
-  res.main_force_inefficiency = bm.statistical_inefficiency, res.thrust_force_inefficiency = bt.statistical_inefficiency;
+  res.main_force_inefficiency = bm.statistical_inefficiency,
+  res.thrust_force_inefficiency = bt.statistical_inefficiency;
   res.main_force_batch_samples = bm.batch_length, res.thrust_force_batch_samples = bt.batch_length;
   // Steady: the means start after the entry (to 1e-4 of it: a scene's entry_fraction x length rounds) and each
   // has a standard error.

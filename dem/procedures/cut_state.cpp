@@ -4,9 +4,9 @@
 #include <string_view>
 #include <type_traits>
 
+#include "../engine/serial.hpp"
 #include "kerf/dem/procedures/cutting.hpp"
 #include "kerf/error.hpp"
-#include "../engine/serial.hpp"
 
 namespace kerf::dem {
 
@@ -33,12 +33,11 @@ struct Cut7In {
 
 /// The cut's parameters by the keys of the scene sections that hold them.
 const std::array<serial::SectionFields<CutParams>, 5>& cut_sections() {
-  static const std::array<serial::SectionFields<CutParams>, 5> sections{
-      {{"cut", cut_fields()},
-       {"tool", tool_fields()},
-       {"grooves", groove_fields()},
-       {"active_window", active_window_fields()},
-       {"edge_zone", edge_zone_fields()}}};
+  static const std::array<serial::SectionFields<CutParams>, 5> sections{{{"cut", cut_fields()},
+                                                                         {"tool", tool_fields()},
+                                                                         {"grooves", groove_fields()},
+                                                                         {"active_window", active_window_fields()},
+                                                                         {"edge_zone", edge_zone_fields()}}};
   return sections;
 }
 
@@ -101,8 +100,9 @@ void CutRun::book_fields(Self& run, Io& io) {
 
 CutRun CutRun::deserialize(std::string_view bytes) {
   std::size_t version = 0;
-  serial::In io = serial::open_tagged(
-      bytes, {kCutMagic, kCutMagicNoZone, kCutMagicNoEdge, kCutMagicNoBooks, kCutMagicListed}, "cut checkpoint", &version);
+  serial::In io =
+      serial::open_tagged(bytes, {kCutMagic, kCutMagicNoZone, kCutMagicNoEdge, kCutMagicNoBooks, kCutMagicListed},
+                          "cut checkpoint", &version);
   CutRun run;
   if (version == 4) {
     Cut7In listed{io};
@@ -120,7 +120,7 @@ CutRun CutRun::deserialize(std::string_view bytes) {
   if (version <= 1)
     edge_fields(run, io);
   else
-    run.edge_kept_ = false;  // nor the edge's record
+    run.edge_kept_ = false;                       // nor the edge's record
   if (version == 0) zone_record_fields(run, io);  // an older one has no edge zone (its parameters are off)
   io.expect_end("cut checkpoint");
   validate_cut_params(run.params_);

@@ -6,9 +6,9 @@
 #include <limits>
 #include <numeric>
 
+#include "../engine/serial.hpp"
 #include "kerf/dem/procedures/specimen.hpp"
 #include "kerf/error.hpp"
-#include "../engine/serial.hpp"
 
 namespace kerf::dem {
 
@@ -43,7 +43,8 @@ void CutWindow::index_reservoir() {
   frame_m_ = 4 * *r_max;
   skin_m_ = full_.options().skin_m > 0 ? full_.options().skin_m : 0.3 * *r_min;  // as Simulation::initialise
   local_of_.assign(p.size(), -1);
-  for (std::size_t u = 0; u < global_of_.size(); ++u) local_of_[static_cast<std::size_t>(global_of_[u])] = static_cast<std::int32_t>(u);
+  for (std::size_t u = 0; u < global_of_.size(); ++u)
+    local_of_[static_cast<std::size_t>(global_of_[u])] = static_cast<std::int32_t>(u);
   by_x0_.resize(p.size());
   std::iota(by_x0_.begin(), by_x0_.end(), 0);
   std::sort(by_x0_.begin(), by_x0_.end(), [&](std::int32_t a, std::int32_t b) {
@@ -189,7 +190,8 @@ Simulation CutWindow::build(const Simulation* current, double x_edge_m) {
     const double x = q.x[g], y = q.y[g];
     const bool boundary = q.group[g] != 0;  // the workpiece's held left side and bottom
     const bool in_box = x >= x0 && x <= x1 && y >= y0 && y <= y1;
-    const bool was_free = current && local_of_[g] >= 0 && current->particles().group[static_cast<std::size_t>(local_of_[g])] == 0;
+    const bool was_free =
+        current && local_of_[g] >= 0 && current->particles().group[static_cast<std::size_t>(local_of_[g])] == 0;
     if (was_free && !in_box && y > y_cut_m_ + r_max_m_) {
       removed_[g] = 1;
       continue;
@@ -259,7 +261,8 @@ Simulation CutWindow::build(const Simulation* current, double x_edge_m) {
   }
   for (std::size_t k = 0; k < springs_.wall_contacts.size(); ++k) {
     const auto lu = local_of_[static_cast<std::size_t>(springs_.wall_contacts[k][1])];
-    if (lu >= 0) s.wall_contacts.push_back({springs_.wall_contacts[k][0], lu}), s.wall_shear_n.push_back(springs_.wall_shear_n[k]);
+    if (lu >= 0)
+      s.wall_contacts.push_back({springs_.wall_contacts[k][0], lu}), s.wall_shear_n.push_back(springs_.wall_shear_n[k]);
   }
   sim.set_contact_springs(std::move(s));
   sim.set_time_step(full_.time_step());
@@ -358,7 +361,8 @@ CutWindow CutWindow::deserialize(std::string_view bytes) {
   w.full_ = Simulation::deserialize(full);
   const std::size_t n = w.full_.particles().size();
   const auto in_range = [&](const std::vector<std::int32_t>& v, std::size_t limit) {
-    return std::all_of(v.begin(), v.end(), [&](std::int32_t k) { return k >= 0 && static_cast<std::size_t>(k) < limit; });
+    return std::all_of(v.begin(), v.end(),
+                       [&](std::int32_t k) { return k >= 0 && static_cast<std::size_t>(k) < limit; });
   };
   if (n == 0 || w.x0_.size() != n || w.removed_.size() != n || !in_range(w.global_of_, n) ||
       !in_range(w.bond_global_of_, w.full_.bonds().size()) ||

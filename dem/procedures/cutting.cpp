@@ -11,10 +11,10 @@
 #include <numbers>
 #include <string>
 
+#include "cut_internal.hpp"
 #include "kerf/dem/procedures/specimen.hpp"
 #include "kerf/error.hpp"
 #include "kerf/units.hpp"
-#include "cut_internal.hpp"
 
 namespace kerf::dem {
 
@@ -67,13 +67,16 @@ void check_cut_fits_workpiece(const CutParams& p, const Bounds& b) {
                 " mm, the distance from the held bottom rows to the cut line)");
   const double width = b.x_max - b.x_min, max_travel = width - 2.5 * b.r_max - layer_m;
   require(p.length_m <= max_travel, "cut.length_mm", units::m_to_mm(p.length_m),
-          "a travel of at most " + format_value(units::m_to_mm(max_travel)) + " mm: further on, the tool would reach the held left disks" +
+          "a travel of at most " + format_value(units::m_to_mm(max_travel)) +
+              " mm: further on, the tool would reach the held left disks" +
               (layer_m > 0 ? " (or their absorbing layer)" : "") + " of the " + format_value(units::m_to_mm(width)) +
               " mm long workpiece");
 }
 
 /// The held rows of the workpiece cut from a specimen of bounds `b` (make_workpiece).
-HeldRows held_rows_of(const Bounds& b) { return {b.x_min + 2 * b.r_max, b.y_min + 2 * b.r_max}; }
+HeldRows held_rows_of(const Bounds& b) {
+  return {b.x_min + 2 * b.r_max, b.y_min + 2 * b.r_max};
+}
 
 /// A groove pattern that removes no disk is not a grooved workpiece: either no groove lies on the surface
 /// (the pitch) or none is wide enough to hold a disk's centre (the width).
@@ -396,9 +399,14 @@ void CutRun::observe_edge() {
   CutEdgeRecord& e = res_.edge;
   ++e.observations;
   switch (edge_meets(sim_, first_tool_wall_, n_tool_walls_, tip, tied)) {
-    case EdgeMeets::tied: ++e.touches_tied; break;
-    case EdgeMeets::loose: ++e.touches_loose; break;
-    case EdgeMeets::nothing: break;
+    case EdgeMeets::tied:
+      ++e.touches_tied;
+      break;
+    case EdgeMeets::loose:
+      ++e.touches_loose;
+      break;
+    case EdgeMeets::nothing:
+      break;
   }
   add_tied_profile(now, tip, res_.y_cut_m, e.profile);
 }

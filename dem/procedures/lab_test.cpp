@@ -7,9 +7,9 @@
 #include <cstring>
 #include <type_traits>
 
+#include "../engine/serial.hpp"
 #include "kerf/error.hpp"
 #include "kerf/units.hpp"
-#include "../engine/serial.hpp"
 
 namespace kerf::dem {
 
@@ -76,8 +76,10 @@ LabTestRun::LabTestRun(const Simulation& specimen, const LoadingSpec& spec) : si
     double y_top = 0, y_bottom = 0;
     int n_top = 0, n_bottom = 0;
     for (std::size_t i = 0; i < n; ++i) {
-      if (p.y[i] < y_min + 2 * r_max) p.group[i] = 1, y_bottom += p.y[i], ++n_bottom;
-      else if (p.y[i] > y_max - 2 * r_max) p.group[i] = 2, y_top += p.y[i], ++n_top;
+      if (p.y[i] < y_min + 2 * r_max)
+        p.group[i] = 1, y_bottom += p.y[i], ++n_bottom;
+      else if (p.y[i] > y_max - 2 * r_max)
+        p.group[i] = 2, y_top += p.y[i], ++n_top;
       if (p.group[i]) p.vx[i] = p.omega[i] = 0, p.vy[i] = p.group[i] == 1 ? -v : v;
     }
     if (n_top == 0 || n_bottom == 0) throw ModelError("dem", "tension test: no grip particles found");
@@ -163,8 +165,8 @@ void LabTestRun::state_fields(Self& run, Io& io) {
   auto& spec = run.spec_;
   auto& r = run.res_;
   std::string test = lab_test_names().name(spec.test);  // by name, as before the enum
-  io(test, spec.speed_m_per_s, spec.stop_fraction, spec.max_strain, spec.sample_every_steps,
-     spec.quasi_static_check, r.curve);
+  io(test, spec.speed_m_per_s, spec.stop_fraction, spec.max_strain, spec.sample_every_steps, spec.quasi_static_check,
+     r.curve);
   io(r.peak_stress_pa, r.strain_at_peak, r.width_m, r.height_m, r.speed_m_per_s, r.time_step_s, r.wall_time_s,
      run.side0_, run.t0_);
   io(r.steps, r.n_particles, r.stop_reason, run.left_, run.right_, run.counted_, run.n_tension_, run.n_shear_,

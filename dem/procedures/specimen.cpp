@@ -37,8 +37,8 @@ const FieldTable<SpecimenSpec>& specimen_fields() {
                   [](S& s, int v) { s.seed = static_cast<std::uint64_t>(v); }},
       number_field("packing_fraction", kNone, Range::closed(0.5, 0.9),
                    "disk area fraction that sets the number of disks (random)", &S::packing_fraction),
-      number_field("compaction_pressure_MPa", kMPa, Range::positive(), "isotropic pressure of the frictionless compaction",
-                   &S::compaction_pressure_pa),
+      number_field("compaction_pressure_MPa", kMPa, Range::positive(),
+                   "isotropic pressure of the frictionless compaction", &S::compaction_pressure_pa),
       number_field("compaction_modulus_GPa", kGPa, Range::positive(),
                    "E* of the compaction's frictionless reference contact (the same for every material)",
                    &S::compaction_modulus_pa),
@@ -62,7 +62,8 @@ void check_specimen_relations(const SpecimenSpec& s) {
     throw InputError("radius_max_um", format_value(m_to_um(s.radius_max_m)),
                      "at most 1/8 of the specimen's smaller side in um");
   const double area = s.width_m * s.height_m;
-  const double mean_r2 = (s.radius_min_m * s.radius_min_m + s.radius_min_m * s.radius_max_m + s.radius_max_m * s.radius_max_m) / 3;
+  const double mean_r2 =
+      (s.radius_min_m * s.radius_min_m + s.radius_min_m * s.radius_max_m + s.radius_max_m * s.radius_max_m) / 3;
   if (area * s.packing_fraction / (std::numbers::pi * mean_r2) > 5e6)
     throw InputError("radius_min_um", format_value(m_to_um(s.radius_min_m)),
                      "radii large enough for at most 5 million disks in the specimen, in um");
@@ -111,7 +112,9 @@ EngineSettings read_engine_settings(ObjectReader& scene_root) {
   return e;
 }
 
-Json specimen_spec_to_json(const SpecimenSpec& s) { return fields_to_json(specimen_fields(), s); }
+Json specimen_spec_to_json(const SpecimenSpec& s) {
+  return fields_to_json(specimen_fields(), s);
+}
 
 Json specimen_report_to_json(const SpecimenReport& r) {
   return Json{{"n_particles", r.n_particles},
@@ -190,9 +193,8 @@ CompactedPacking compact_random(const SpecimenSpec& spec, const GenesisProgress&
   std::vector<std::size_t> order(n);
   std::iota(order.begin(), order.end(), 0);
   const auto row_of = [&](std::size_t k) { return static_cast<long>(y[k] / (2 * b)); };
-  std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) {
-    return row_of(i) != row_of(j) ? row_of(i) < row_of(j) : x[i] < x[j];
-  });
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t i, std::size_t j) { return row_of(i) != row_of(j) ? row_of(i) < row_of(j) : x[i] < x[j]; });
 
   // docs/physics-dem.md section 2: frictionless compaction, here through a reference contact of the spec's,
   // so that the packing does not depend on the material (the density only scales time: not a choice).
@@ -311,7 +313,8 @@ Simulation make_specimen(const Material& material, const SpecimenSpec& spec, Spe
   return finish_specimen(compact_packing(spec, progress), material, spec, report, progress);
 }
 
-SpecimenSource SpecimenSource::genesis(CompactedPacking packing, const SpecimenSpec& spec, const EngineSettings& engine) {
+SpecimenSource SpecimenSource::genesis(CompactedPacking packing, const SpecimenSpec& spec,
+                                       const EngineSettings& engine) {
   if (packing.disks.bonds().size() != 0)
     throw ModelError("specimen", "a compacted packing has no joints (a checkpoint of an older kerf-dem?)");
   return {std::move(packing), spec, engine, true};
@@ -323,7 +326,8 @@ SpecimenSource SpecimenSource::saved(Simulation specimen, const EngineSettings& 
 
 Simulation SpecimenSource::for_material(const Material& material) const {
   SpecimenReport report;
-  Simulation sim = genesis_ ? finish_specimen(packing_, material, spec_, report) : with_material(packing_.disks, material);
+  Simulation sim =
+      genesis_ ? finish_specimen(packing_, material, spec_, report) : with_material(packing_.disks, material);
   engine_.apply_to(sim);
   return sim;
 }
@@ -389,8 +393,13 @@ void save_specimen(const std::string& file_path, const Simulation& sim, const Sp
       if (b.keeps_damage) damage.push_back(b.damage[k * stride + e]);
     }
   }
-  j["bonds"] = Json{{"n_elements", b.stride}, {"i", i}, {"j", jj}, {"ref_distance_m", d0}, {"ref_rotation_rad", rot0},
-                    {"element_bonded", bonded}, {"element_shear_force_N", shear}};
+  j["bonds"] = Json{{"n_elements", b.stride},
+                    {"i", i},
+                    {"j", jj},
+                    {"ref_distance_m", d0},
+                    {"ref_rotation_rad", rot0},
+                    {"element_bonded", bonded},
+                    {"element_shear_force_N", shear}};
   if (b.keeps_damage) j["bonds"]["element_damage"] = damage;  // a law with element damage (softening flat joint)
   write_file_atomically(file_path, j.dump());
 }
@@ -441,7 +450,8 @@ Simulation load_specimen(const std::string& file_path, const Material& material,
       for (std::size_t e = 0; e < stride; ++e) {
         sim.bonds().bonded[id * stride + e] = static_cast<std::uint8_t>(bonded.at(k * stride + e));
         sim.bonds().shear_force_n[id * stride + e] = shear.at(k * stride + e);
-        if (sim.bonds().keeps_damage && !damage.empty()) sim.bonds().damage[id * stride + e] = damage.at(k * stride + e);
+        if (sim.bonds().keeps_damage && !damage.empty())
+          sim.bonds().damage[id * stride + e] = damage.at(k * stride + e);
       }
     }
     sim.initialise();

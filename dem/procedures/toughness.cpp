@@ -23,22 +23,24 @@ constexpr double kMinLigamentDiameters = 4;
 const FieldTable<ToughnessSpec>& toughness_fields() {
   using T = ToughnessSpec;
   static const FieldTable<ToughnessSpec> table{
-      number_field("notch_depth_mm", units::kMm, Range::positive(),
-                   "depth a of the notch (a slot one disk wide: the disks within R_max of the notch line removed) from the "
-                   "beam's tension face at "
-                   "mid-span; a / W in [0.1, 0.8] with W = specimen.height_mm",
-                   &T::notch_depth_m),
+      number_field(
+          "notch_depth_mm", units::kMm, Range::positive(),
+          "depth a of the notch (a slot one disk wide: the disks within R_max of the notch line removed) from the "
+          "beam's tension face at "
+          "mid-span; a / W in [0.1, 0.8] with W = specimen.height_mm",
+          &T::notch_depth_m),
       number_field("roller_radius_mm", units::kMm, Range::positive(),
                    "radius of the three rigid rollers (walls; below W / 2); the span is S = 4 W (ASTM E399)",
                    &T::roller_radius_m),
       number_field("speed_m_per_s", units::kSi("m/s"), Range{0.0, 10.0, true, false},
                    "speed of the load roller (the supports stand still)", &T::speed_m_per_s),
-      number_field("stop_fraction_of_peak", units::kNone, Range::open(0.0, 1.0),
-                   "stop once the load has stayed below this fraction of the peak over peak_window_um (the ligament broken "
-                   "through)",
-                   &T::stop_fraction),
-      number_field("max_deflection_um", units::kUm, Range::positive(),
-                   "stop anyway at this load-point deflection", &T::max_deflection_m),
+      number_field(
+          "stop_fraction_of_peak", units::kNone, Range::open(0.0, 1.0),
+          "stop once the load has stayed below this fraction of the peak over peak_window_um (the ligament broken "
+          "through)",
+          &T::stop_fraction),
+      number_field("max_deflection_um", units::kUm, Range::positive(), "stop anyway at this load-point deflection",
+                   &T::max_deflection_m),
       number_field("peak_window_um", units::kUm, Range::positive(),
                    "K_IC from the peak of the load averaged over this much deflection (centred moving average; the "
                    "load on a rigid roller rings in an undamped glass)",
@@ -134,7 +136,8 @@ ToughnessRun::ToughnessRun(const Simulation& specimen, const ToughnessSpec& spec
     const double s = (xc - p.x[i]) / (p.x[j] - p.x[i]);
     if (p.y[i] + s * (p.y[j] - p.y[i]) >= y_notch_top) continue;
     b.active[k] = 0;
-    for (int e = 0; e < b.stride; ++e) b.bonded[k * static_cast<std::size_t>(b.stride) + static_cast<std::size_t>(e)] = 0;
+    for (int e = 0; e < b.stride; ++e)
+      b.bonded[k * static_cast<std::size_t>(b.stride) + static_cast<std::size_t>(e)] = 0;
     ++res_.n_notch_joints_retired;
   }
   // The rollers: arcs touching the nearest disk (load roller above mid-span, supports below at +- S/2).
@@ -247,7 +250,8 @@ void ToughnessRun::finish() {
     while (hi < c.size() && c[hi].deflection_m <= c[k].deflection_m + half) sum += c[hi++].load_n;
     while (c[lo].deflection_m < c[k].deflection_m - half) sum -= c[lo++].load_n;
     c[k].smoothed_load_n = sum / static_cast<double>(hi - lo);
-    if (c[k].smoothed_load_n > r.peak_load_n) r.peak_load_n = c[k].smoothed_load_n, r.deflection_at_peak_m = c[k].deflection_m;
+    if (c[k].smoothed_load_n > r.peak_load_n)
+      r.peak_load_n = c[k].smoothed_load_n, r.deflection_at_peak_m = c[k].deflection_m;
   }
   r.fracture_toughness_pa_sqrt_m = senb_stress_intensity(r.peak_load_n, r.span_m, r.thickness_m, r.depth_m, r.notch_m);
   r.raw_peak_toughness_pa_sqrt_m =
@@ -257,8 +261,9 @@ void ToughnessRun::finish() {
   // residual stresses): the rest of the load roller's work was dissipated (joints broken, friction).
   // At the sample the crack broke through the ligament (the end when it did not): later work goes into the
   // hinge the broken halves make under the load roller (friction, contacts), not into the crack.
-  const ToughnessSample &start = r.curve.front(),
-                        &end = r.through_sample >= 0 ? r.curve[static_cast<std::size_t>(r.through_sample)] : r.curve.back();
+  const ToughnessSample &start = r.curve.front(), &end = r.through_sample >= 0
+                                                             ? r.curve[static_cast<std::size_t>(r.through_sample)]
+                                                             : r.curve.back();
   const double kept =
       end.stored_elastic_energy_j - start.stored_elastic_energy_j + end.kinetic_energy_j - start.kinetic_energy_j;
   r.fracture_energy_j_per_m2 = (end.external_work_j - kept) / ligament_area;

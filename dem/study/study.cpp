@@ -3,7 +3,6 @@
 // study_file.cpp (the study file), study_item.cpp (one item), study_scheduler.cpp (what runs next, the progress),
 // study_outputs.cpp (tables and plots), study_record.cpp (the record of finished items).
 #include "kerf/dem/study/study.hpp"
-#include "kerf/dem/study/study_record.hpp"
 
 #include <fmt/format.h>
 #include <omp.h>
@@ -18,6 +17,7 @@
 #include <thread>
 
 #include "kerf/dem/study/study_mpi.hpp"
+#include "kerf/dem/study/study_record.hpp"
 #include "kerf/error.hpp"
 #include "kerf/io.hpp"
 
@@ -39,8 +39,8 @@ StudyOutcome run_study_local(const StudySpec& spec, const StudyOptions& options)
   const std::unique_ptr<StudyRecord> record = open_study_record(spec);
   StudyRecord* const recorded = record.get();
   std::mutex mutex;
-  std::exception_ptr failure;   // a bug or no memory: rethrown
-  std::exception_ptr stopped;   // stop_at_first_failure: the first failed item's error, rethrown
+  std::exception_ptr failure;  // a bug or no memory: rethrown
+  std::exception_ptr stopped;  // stop_at_first_failure: the first failed item's error, rethrown
   const int max_levels = omp_get_max_active_levels();
   omp_set_max_active_levels(2);
 #pragma omp parallel num_threads(side_by_side)
@@ -84,9 +84,9 @@ StudyOutcome finish_study(const StudySpec& spec, const StudyScheduler& scheduler
                           double wall_time_s, int workers, const std::string& where) {
   StudyOutcome outcome{0, write_study_outputs(spec, scheduler, options, wall_time_s, workers)};
   const std::size_t failed = outcome.summary["items_failed"].get<std::size_t>();
-  std::cout << fmt::format("study: {} items ({} failed, {} reused){} in {:.1f} s -> {}\n",
-                           outcome.summary["items"].get<std::size_t>(), failed,
-                           outcome.summary["items_reused"].get<std::size_t>(), where, wall_time_s, options.out.string());
+  std::cout << fmt::format(
+      "study: {} items ({} failed, {} reused){} in {:.1f} s -> {}\n", outcome.summary["items"].get<std::size_t>(),
+      failed, outcome.summary["items_reused"].get<std::size_t>(), where, wall_time_s, options.out.string());
   if (failed > 0) outcome.exit_status = kExitModelError;
   return outcome;
 }

@@ -55,7 +55,8 @@ void read_base_scene(ObjectReader& root, const fs::path& study_file, const fs::p
     fs::path path = scene.get<std::string>();
     if (path.is_relative()) path = study_dir / path;
     std::error_code error;
-    if (!fs::is_regular_file(path, error)) throw InputError("scene", scene.get<std::string>(), "an existing scene file");
+    if (!fs::is_regular_file(path, error))
+      throw InputError("scene", scene.get<std::string>(), "an existing scene file");
     s.base = read_json_file(path.string());
     s.scene_path = path.string();
     s.scene_dir = fs::absolute(path).parent_path();
@@ -112,14 +113,14 @@ void read_condition_list(const Json& l, StudySpec& s) {
         if (!v.is_object()) throw InputError(where + ".tags", json_value_text(v), "an object of name: value");
         for (const auto& [name, t] : v.items()) {
           c.tags.emplace_back(name, scalar(t, where + ".tags." + name));
-          if (std::find(s.tag_names.begin(), s.tag_names.end(), name) == s.tag_names.end())
-            s.tag_names.push_back(name);
+          if (std::find(s.tag_names.begin(), s.tag_names.end(), name) == s.tag_names.end()) s.tag_names.push_back(name);
         }
         continue;
       }
       check_key_path(key, where);
       const Json value = scalar(v, where + "." + key);
-      if (std::find(s.varied_keys.begin(), s.varied_keys.end(), key) == s.varied_keys.end()) s.varied_keys.push_back(key);
+      if (std::find(s.varied_keys.begin(), s.varied_keys.end(), key) == s.varied_keys.end())
+        s.varied_keys.push_back(key);
       c.values.emplace_back(key, value);
     }
     s.conditions.push_back(std::move(c));
@@ -133,8 +134,7 @@ void read_replicates(ObjectReader& r, StudySpec& s) {
   for (const char* key : {"min_count", "max_count", "target_relative_sem_percent", "results"})
     if (!adaptive && r.has(key)) throw InputError(r.key_path(key), "(given)", "only with \"policy\": \"adaptive\"");
   if (adaptive && r.has("count")) throw InputError(r.key_path("count"), "(given)", "only with \"policy\": \"fixed\"");
-  if (const Json* results = r.find("results"))
-    s.replicates.results = result_names(*results, "replicates.results");
+  if (const Json* results = r.find("results")) s.replicates.results = result_names(*results, "replicates.results");
   if (adaptive && s.replicates.results.empty())
     throw InputError("replicates.results", "(missing)", "the results the adaptive target applies to");
   if (adaptive && s.replicates.min_count > s.replicates.max_count)
@@ -146,7 +146,9 @@ void read_replicates(ObjectReader& r, StudySpec& s) {
 }  // namespace
 
 /// A condition's value in a CSV cell or a label.
-std::string value_text(const Json& value) { return value.is_string() ? value.get<std::string>() : value.dump(); }
+std::string value_text(const Json& value) {
+  return value.is_string() ? value.get<std::string>() : value.dump();
+}
 
 const FieldTable<StudyReplicates>& study_replicates_fields() {
   static const FieldTable<StudyReplicates> table{
@@ -203,7 +205,8 @@ StudySpec read_study(const Json& doc, const fs::path& study_file) {
   if (auto conditions = root.find_object("conditions")) {
     const bool grid = conditions->has("grid"), list = conditions->has("list");
     if (grid == list)
-      throw InputError("conditions", json_value_text(doc.at("conditions")), "an object with either \"grid\" or \"list\"");
+      throw InputError("conditions", json_value_text(doc.at("conditions")),
+                       "an object with either \"grid\" or \"list\"");
     if (grid)
       read_condition_grid(conditions->get("grid"), s);
     else

@@ -26,7 +26,9 @@ namespace fs = std::filesystem;
 namespace {
 
 /// The --set text of a condition's value: a string as it is, anything else as JSON.
-std::string override_text(const std::string& key, const Json& value) { return key + "=" + value_text(value); }
+std::string override_text(const std::string& key, const Json& value) {
+  return key + "=" + value_text(value);
+}
 
 std::string host_name() {
   std::array<char, 256> name{};
@@ -47,9 +49,16 @@ std::string study_item_name(const StudyItem& item) {
 Json study_item_result_to_json(const StudyItemResult& r) {
   Json results = Json::array();
   for (const auto& [name, value] : r.results) results.push_back(Json::array({name, value}));
-  return Json{{"condition", r.item.condition}, {"replicate", r.item.replicate}, {"seed", r.item.seed},
-              {"ok", r.ok},           {"error", r.error},         {"results", results},
-              {"wall_time_s", r.wall_time_s}, {"host", r.host}, {"rank", r.rank}, {"reused", r.reused},
+  return Json{{"condition", r.item.condition},
+              {"replicate", r.item.replicate},
+              {"seed", r.item.seed},
+              {"ok", r.ok},
+              {"error", r.error},
+              {"results", results},
+              {"wall_time_s", r.wall_time_s},
+              {"host", r.host},
+              {"rank", r.rank},
+              {"reused", r.reused},
               {"resumed_from_sample", r.resumed_from_sample}};
 }
 
@@ -139,8 +148,10 @@ bool reuse_finished_item(const fs::path& summary_file, const Json& doc, StudyIte
       r.rank = mark.at("rank").get<int>();
       const int status = mark.value("exit_status", 0);
       r.ok = status == 0;
-      if (r.ok) r.results = numeric_results(old);
-      else r.error = failed_status_text(status);
+      if (r.ok)
+        r.results = numeric_results(old);
+      else
+        r.error = failed_status_text(status);
       return true;
     }
   } catch (const std::exception&) {
@@ -151,7 +162,9 @@ bool reuse_finished_item(const fs::path& summary_file, const Json& doc, StudyIte
 
 }  // namespace
 
-std::string study_scene_key(const Json& scene) { return text_hash_fnv1a64(without_description(scene).dump()); }
+std::string study_scene_key(const Json& scene) {
+  return text_hash_fnv1a64(without_description(scene).dump());
+}
 
 std::string study_item_scene_key(const StudySpec& spec, const StudyItem& item) {
   std::vector<std::string> overrides;
@@ -162,8 +175,8 @@ Json read_study_item_summary(const fs::path& out, const StudyItem& item) {
   return read_json_file((out / "items" / study_item_name(item) / "summary.json").string());
 }
 
-StudyItemResult run_study_item(const StudySpec& spec, const StudyItem& item, const fs::path& out, int threads,
-                               int rank, double checkpoint_every_s, const ProgressCallback& on_progress) {
+StudyItemResult run_study_item(const StudySpec& spec, const StudyItem& item, const fs::path& out, int threads, int rank,
+                               double checkpoint_every_s, const ProgressCallback& on_progress) {
   StudyItemResult r;
   r.item = item;
   r.host = host_name();
@@ -205,10 +218,14 @@ StudyItemResult run_study_item(const StudySpec& spec, const StudyItem& item, con
     r.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     Json summary = outcome.summary;
     summary["provenance"] = run_provenance(options.command_line, spec.scene_path, overrides);
-    summary["study_item"] = Json{{"condition", item.condition + 1}, {"replicate", item.replicate + 1},
-                                 {"seed", item.seed},        {"scene", doc},
-                                 {"wall_time_s", r.wall_time_s}, {"host", r.host},
-                                 {"rank", rank},             {"threads", std::max(1, threads)},
+    summary["study_item"] = Json{{"condition", item.condition + 1},
+                                 {"replicate", item.replicate + 1},
+                                 {"seed", item.seed},
+                                 {"scene", doc},
+                                 {"wall_time_s", r.wall_time_s},
+                                 {"host", r.host},
+                                 {"rank", rank},
+                                 {"threads", std::max(1, threads)},
                                  // This thread's CPU time: the item's, when it ran on one thread (this run's
                                  // part of a resumed item).
                                  {"cpu_time_s", threads <= 1 ? Json(thread_cpu_s() - cpu_start) : Json(nullptr)},
@@ -221,8 +238,10 @@ StudyItemResult run_study_item(const StudySpec& spec, const StudyItem& item, con
     // A run that finished with a status of its own (a calibration that did not converge) is kept, but its
     // results are not a sample of the condition.
     r.ok = outcome.exit_status == 0;
-    if (r.ok) r.results = numeric_results(summary);
-    else r.error = failed_status_text(outcome.exit_status);
+    if (r.ok)
+      r.results = numeric_results(summary);
+    else
+      r.error = failed_status_text(outcome.exit_status);
   } catch (const std::exception& e) {
     std::error_code ignored;
     // A checkpoint stays for the rerun (a run stopped by its caller, e.g. Ctrl-C in Python, continues there).

@@ -4,10 +4,10 @@
 // time); the coordinator answers kItem (the item) or kStop. A worker with no answer yet waits in a loop of
 // MPI_Iprobe and short sleeps (20 us doubling up to 0.5 ms), not in a blocking receive (Open MPI's spins a core).
 #include "kerf/dem/study/study_mpi.hpp"
-#include "kerf/dem/study/study_record.hpp"
 
 #include <cstdlib>
 
+#include "kerf/dem/study/study_record.hpp"
 #include "kerf/error.hpp"
 
 #if KERF_HAVE_MPI
@@ -169,7 +169,9 @@ void work(const StudySpec& spec, const StudyOptions& options, int rank, int thre
 
 }  // namespace
 
-bool study_mpi_built() { return true; }
+bool study_mpi_built() {
+  return true;
+}
 
 StudyOutcome run_study_mpi(const fs::path& study_file, const StudyOptions& options) {
   MpiSession mpi;
@@ -232,8 +234,12 @@ bool study_mpi_launched() {
 
 namespace kerf::dem {
 
-bool study_mpi_built() { return false; }
-bool study_mpi_launched() { return false; }
+bool study_mpi_built() {
+  return false;
+}
+bool study_mpi_launched() {
+  return false;
+}
 StudyOutcome run_study_mpi(const std::filesystem::path&, const StudyOptions&) {
   throw InputError("mpirun", "(launched)", "kerf built with MPI (CMake option KERF_WITH_MPI)");
 }

@@ -150,7 +150,8 @@ ConditionTables condition_tables(const StudySpec& spec, const StudyScheduler& sc
       const ResultStats st = stats_of(v);
       t.by_result[n].push_back(st);
       const double rel = st.sem / std::abs(st.mean) * 100;
-      const bool targeted = adaptive && std::find(policy.results.begin(), policy.results.end(), n) != policy.results.end();
+      const bool targeted =
+          adaptive && std::find(policy.results.begin(), policy.results.end(), n) != policy.results.end();
       const bool met = targeted && cfailed == 0 && std::isfinite(st.sem) &&
                        (st.sem == 0 || st.sem <= policy.target_relative_sem * std::abs(st.mean));
       std::vector<std::string> cells = condition_cells(spec, static_cast<int>(ci));

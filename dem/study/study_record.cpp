@@ -1,11 +1,11 @@
 #include "kerf/dem/study/study_record.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <filesystem>
 #include <initializer_list>
-
-#include <fmt/format.h>
 
 #include "kerf/csv_table.hpp"
 #include "kerf/error.hpp"
@@ -19,10 +19,12 @@ namespace {
 
 constexpr const char* kKeyColumn = "scene_fnv1a64";
 // After the condition, its tags, the seed and the named results.
-constexpr std::array<const char*, 8> kRunColumns{"cpu_time_s", "wall_time_s", "threads",    "host",
-                                                 "kerf_version", "git_commit", "date", kKeyColumn};
+constexpr std::array<const char*, 8> kRunColumns{"cpu_time_s",   "wall_time_s", "threads", "host",
+                                                 "kerf_version", "git_commit",  "date",    kKeyColumn};
 
-std::string cell_text(const Json& value) { return value.is_string() ? value.get<std::string>() : value.dump(); }
+std::string cell_text(const Json& value) {
+  return value.is_string() ? value.get<std::string>() : value.dump();
+}
 
 /// The value at `path` (dotted) of `j` as a cell: a number as csv_number, a text as it is, else empty.
 std::string summary_cell(const Json& j, std::initializer_list<const char*> path) {

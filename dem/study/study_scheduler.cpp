@@ -147,8 +147,8 @@ std::string duration_text(double s) {
 std::string StudyProgress::line(const StudyScheduler& s) const {
   std::string text = fmt::format("study: {} done, {} running, {} queued", s.done(), s.running(), s.queued());
   if (s.mean_item_wall_s() > 0) {
-    const double left = s.mean_item_wall_s() * (static_cast<double>(s.queued()) + 0.5 * static_cast<double>(s.running())) /
-                        workers_;
+    const double left =
+        s.mean_item_wall_s() * (static_cast<double>(s.queued()) + 0.5 * static_cast<double>(s.running())) / workers_;
     text += ", ETA " + duration_text(left);
   }
   return text;

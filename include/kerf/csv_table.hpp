@@ -32,10 +32,10 @@ struct CsvTable {
   std::string cell_location(std::size_t row, std::size_t column) const;
 };
 
-/// Parses CSV text (a leading UTF-8 byte-order mark and CRLF line ends are accepted). Blank lines are skipped; lines starting with '#' are comments; the first other line is
-/// the header. InputError (field "source:line" or "source:line:char") for an unterminated quote, text after
-/// a closing quote, a row with a different number of fields than the header, an empty or duplicate column name,
-/// or no header.
+/// Parses CSV text (a leading UTF-8 byte-order mark and CRLF line ends are accepted). Blank lines are skipped; lines
+/// starting with '#' are comments; the first other line is the header. InputError (field "source:line" or
+/// "source:line:char") for an unterminated quote, text after a closing quote, a row with a different number of fields
+/// than the header, an empty or duplicate column name, or no header.
 CsvTable parse_csv(std::string_view text, const std::string& source);
 
 /// Reads and parses a file (InputError naming the file when it cannot be read).

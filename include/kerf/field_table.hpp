@@ -21,13 +21,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <type_traits>
 #include <functional>
 #include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <utility>
 #include <variant>
 #include <vector>
@@ -47,9 +47,13 @@ struct FieldUnit {
 };
 
 namespace units {
-inline constexpr double identity(double v) { return v; }
+inline constexpr double identity(double v) {
+  return v;
+}
 inline constexpr FieldUnit kNone{"", identity, identity};
-inline constexpr FieldUnit kSi(std::string_view symbol) { return {symbol, identity, identity}; }
+inline constexpr FieldUnit kSi(std::string_view symbol) {
+  return {symbol, identity, identity};
+}
 inline constexpr FieldUnit kGPa{"GPa", gpa_to_pa, pa_to_gpa};
 inline constexpr FieldUnit kMPa{"MPa", mpa_to_pa, pa_to_mpa};
 inline constexpr FieldUnit kDeg{"deg", deg_to_rad, rad_to_deg};
@@ -144,9 +148,11 @@ using FieldTable = std::vector<Field<S>>;
 
 /// A number stored in SI in `member`.
 template <class S>
-NumberField<S> number_field(std::string_view key, FieldUnit unit, Range range, std::string_view doc, double S::*member) {
-  return {key, unit, range, doc, [member](const S& s) { return s.*member; }, [member](S& s, double v) { s.*member = v; },
-          false, {}, {}};
+NumberField<S> number_field(std::string_view key, FieldUnit unit, Range range, std::string_view doc,
+                            double S::*member) {
+  return {
+      key,   unit, range, doc, [member](const S& s) { return s.*member; }, [member](S& s, double v) { s.*member = v; },
+      false, {},   {}};
 }
 /// A number the user may leave out (no default): `absent` is what the key reference says then ("none").
 template <class S>
@@ -164,7 +170,8 @@ NumberField<S> optional_number_field(std::string_view key, FieldUnit unit, Range
 }
 /// A number the user must give (no default).
 template <class S>
-NumberField<S> required_number_field(std::string_view key, FieldUnit unit, Range range, std::string_view doc, double S::*member) {
+NumberField<S> required_number_field(std::string_view key, FieldUnit unit, Range range, std::string_view doc,
+                                     double S::*member) {
   NumberField<S> f = number_field(key, unit, range, doc, member);
   f.required = true;
   return f;
@@ -218,7 +225,8 @@ FieldTable<S> fields_through(const FieldTable<B>& table, Part part, const FieldT
           using F = std::decay_t<decltype(f)>;
           if constexpr (std::is_same_v<F, NumberField<B>>) {
             auto& g = std::get<NumberField<S>>(out.emplace_back(std::in_place_type<NumberField<S>>));
-            g.key = f.key, g.unit = f.unit, g.range = f.range, g.doc = f.doc, g.required = f.required, g.absent = f.absent;
+            g.key = f.key, g.unit = f.unit, g.range = f.range, g.doc = f.doc, g.required = f.required,
+            g.absent = f.absent;
             if (f.has) g.has = [has = f.has, part](const S& s) { return has(part(s)); };
             g.get = [get = f.get, part](const S& s) { return get(part(s)); };
             g.set = [set = f.set, part](S& s, double v) { set(part(s), v); };
@@ -249,19 +257,21 @@ FieldTable<S> fields_through(const FieldTable<B>& table, Part part, const FieldT
 /// model's parameters in its scene). Number, integer and choice fields; then `own`, the fields S holds itself.
 template <class S, class B>
 FieldTable<S> embedded_fields(const FieldTable<B>& table, B S::*member, const FieldTable<S>& own = {}) {
-  return detail::fields_through(table, [member](auto& s) -> auto& { return s.*member; }, own, "embedded_fields");
+  return detail::fields_through(
+      table, [member](auto& s) -> auto& { return s.*member; }, own, "embedded_fields");
 }
 
 /// The fields of a base struct B of S (a parameter struct that extends another: the softening flat joint is a
 /// flat joint with a fracture energy) as fields of S, then `own`: the base's table written once.
 template <class S, class B>
-  requires std::is_base_of_v<B, S>
-FieldTable<S> inherited_fields(const FieldTable<B>& table, const FieldTable<S>& own = {}) {
+requires std::is_base_of_v<B, S> FieldTable<S> inherited_fields(const FieldTable<B>& table,
+                                                                const FieldTable<S>& own = {}) {
   return detail::fields_through(
-      table,
-      [](auto& s) -> auto& {
-        if constexpr (std::is_const_v<std::remove_reference_t<decltype(s)>>) return static_cast<const B&>(s);
-        else return static_cast<B&>(s);
+      table, [](auto& s) -> auto& {
+        if constexpr (std::is_const_v<std::remove_reference_t<decltype(s)>>)
+          return static_cast<const B&>(s);
+        else
+          return static_cast<B&>(s);
       },
       own, "inherited_fields");
 }
@@ -283,11 +293,15 @@ void read_fields_into(ObjectReader& reader, const FieldTable<S>& table, S& s, Si
           const std::string key(f.key);
           if constexpr (std::is_same_v<F, NumberField<S>>) {
             if (si_check == SiCheck::on) {
-              if (f.required) f.set(s, reader.get_si(key, f.range, f.unit.symbol, f.unit.to_si));
-              else if (const auto v = reader.get_optional_si(key, f.range, f.unit.symbol, f.unit.to_si)) f.set(s, *v);
+              if (f.required)
+                f.set(s, reader.get_si(key, f.range, f.unit.symbol, f.unit.to_si));
+              else if (const auto v = reader.get_optional_si(key, f.range, f.unit.symbol, f.unit.to_si))
+                f.set(s, *v);
             } else {
-              if (f.required) f.set(s, f.unit.to_si(reader.get_number(key, f.range, f.unit.symbol)));
-              else if (const auto v = reader.get_optional_number(key, f.range, f.unit.symbol)) f.set(s, f.unit.to_si(*v));
+              if (f.required)
+                f.set(s, f.unit.to_si(reader.get_number(key, f.range, f.unit.symbol)));
+              else if (const auto v = reader.get_optional_number(key, f.range, f.unit.symbol))
+                f.set(s, f.unit.to_si(*v));
             }
           } else if constexpr (std::is_same_v<F, IntField<S>>) {
             f.set(s, reader.get_int_or(key, f.get(s), f.lo, f.hi));
@@ -358,11 +372,13 @@ void check_fields(const FieldTable<S>& table, const S& s) {
           if constexpr (std::is_same_v<F, NumberField<S>>) {
             if (f.has && !f.has(s)) return;
             const double v = f.unit.from_si(f.get(s));
-            if (!f.range.contains(v)) throw InputError(std::string(f.key), format_value(v), f.range.describe(f.unit.symbol));
+            if (!f.range.contains(v))
+              throw InputError(std::string(f.key), format_value(v), f.range.describe(f.unit.symbol));
           } else if constexpr (std::is_same_v<F, IntField<S>>) {
             const int v = f.get(s);
             if (v < f.lo || v > f.hi)
-              throw InputError(std::string(f.key), std::to_string(v), fmt::format("an integer in [{}, {}]", f.lo, f.hi));
+              throw InputError(std::string(f.key), std::to_string(v),
+                               fmt::format("an integer in [{}, {}]", f.lo, f.hi));
           } else if constexpr (std::is_same_v<F, ChoiceField<S>>) {
             const int v = f.get(s);
             if (v < 0 || static_cast<std::size_t>(v) >= f.names.size())
@@ -417,7 +433,7 @@ std::string fields_markdown(const FieldTable<S>& table, const S& defaults = S{},
           if constexpr (std::is_same_v<F, NumberField<S>>) {
             if (!f.unit.symbol.empty()) unit = std::string(f.unit.symbol);
             valid = f.range.describe("");
-            value = f.required                      ? "required"
+            value = f.required                  ? "required"
                     : f.has && !f.has(defaults) ? std::string(f.absent)
                                                 : format_value(f.unit.from_si(f.get(defaults)));
           } else if constexpr (std::is_same_v<F, IntField<S>>) {

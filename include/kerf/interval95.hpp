@@ -17,7 +17,7 @@ inline constexpr double kZ95 = 1.96;
 /// they are infinite (or undefined: no standard error).
 inline double quantile95(double degrees_of_freedom) {
   return std::isfinite(degrees_of_freedom) && degrees_of_freedom > 0 ? gsl_cdf_tdist_Pinv(0.975, degrees_of_freedom)
-                                                                      : kZ95;
+                                                                     : kZ95;
 }
 
 }  // namespace kerf

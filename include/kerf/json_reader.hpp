@@ -7,10 +7,10 @@
 //   kerf::ObjectReader tool(scene_json.at("tool"), "tool");
 //   double rake_deg = tool.get_number("rake_deg", kerf::Range::open(-90.0, 90.0), "deg");
 //   tool.finish();  // "tool.rake_dg = 5: expected a known key (did you mean 'rake_deg'?); ..."
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <set>
-#include <cmath>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -132,6 +132,8 @@ std::string json_value_text(const Json& value);
 
 /// A number for an output document, or null when it is not finite (a standard error a signal is too short
 /// for): JSON has no NaN or infinity.
-inline Json finite_or_null(double value) { return std::isfinite(value) ? Json(value) : Json(); }
+inline Json finite_or_null(double value) {
+  return std::isfinite(value) ? Json(value) : Json();
+}
 
 }  // namespace kerf

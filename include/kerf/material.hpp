@@ -28,8 +28,8 @@ const std::vector<std::string>& material_group_names();
 struct MaterialRecord {
   std::string name;
   std::string title;
-  std::string origin;  ///< the file it came from, or "inline"
-  Json groups = Json::object();  ///< group -> {key: number}; provenance stripped
+  std::string origin;                             ///< the file it came from, or "inline"
+  Json groups = Json::object();                   ///< group -> {key: number}; provenance stripped
   std::map<std::string, std::string> provenance;  ///< "group.key" -> "source: ..." or "assumed: ..."
 
   /// The group's object, or nullptr when the material has no such group.

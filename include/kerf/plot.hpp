@@ -1,7 +1,7 @@
 #pragma once
-// PNG figures (each with a PDF beside it) for the force reports, drawn with PLplot's cairo devices: points with error bars, lines,
-// shaded bands, a legend, axis labels with units. A figure is described by a FigureSpec and rendered in one
-// call; the file is written atomically (a temporary file beside it, then a rename).
+// PNG figures (each with a PDF beside it) for the force reports, drawn with PLplot's cairo devices: points with error
+// bars, lines, shaded bands, a legend, axis labels with units. A figure is described by a FigureSpec and rendered in
+// one call; the file is written atomically (a temporary file beside it, then a rename).
 //
 //   kerf::FigureSpec fig;
 //   fig.title = "Parity";
@@ -23,7 +23,7 @@ namespace kerf {
 enum class SeriesStyle { points, line, dashed_line, points_and_line };
 
 struct PlotSeries {
-  std::string label;           ///< legend text (empty: not in the legend)
+  std::string label;  ///< legend text (empty: not in the legend)
   std::vector<double> x, y;
   std::vector<double> x_error;  ///< half-widths of horizontal error bars (empty: none; NaN entries: none)
   std::vector<double> y_error;  ///< half-widths of vertical error bars
@@ -47,11 +47,11 @@ struct PlotBand {
 struct FigureSpec {
   std::string title;
   std::string x_label, y_label;
-  std::vector<PlotBand> bands;      ///< drawn first
-  std::vector<PlotSeries> series;   ///< drawn in order
+  std::vector<PlotBand> bands;                       ///< drawn first
+  std::vector<PlotSeries> series;                    ///< drawn in order
   std::optional<double> x_min, x_max, y_min, y_max;  ///< default: the data range with a margin
-  bool equal_axes = false;          ///< same range on both axes (parity plots)
-  bool x_log = false;               ///< a logarithmic x axis (every x positive; no x error bars)
+  bool equal_axes = false;                           ///< same range on both axes (parity plots)
+  bool x_log = false;                                ///< a logarithmic x axis (every x positive; no x error bars)
   /// best (the emptiest inside corner), top_left, top_right, bottom_right, bottom_left (inside the axes) or
   /// outside_right (beside a narrower plot)
   std::string legend_position = "best";
@@ -74,8 +74,8 @@ void draw_png_with_plplot(const std::filesystem::path& path, int width_px, int h
 /// that the legend covers none of the data; call once the series are in.
 void leave_room_for_legend(FigureSpec& figure);
 
-/// Renders the figure to a PNG (and the PDF beside it). Throws InputError for a figure that cannot be drawn (no finite points,
-/// mismatched sizes) and std::runtime_error when the file cannot be written.
+/// Renders the figure to a PNG (and the PDF beside it). Throws InputError for a figure that cannot be drawn (no finite
+/// points, mismatched sizes) and std::runtime_error when the file cannot be written.
 void render_png(const FigureSpec& figure, const std::filesystem::path& path);
 
 }  // namespace kerf

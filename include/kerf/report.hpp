@@ -81,9 +81,9 @@ struct ConditionSpec {
 };
 
 struct QuantitySpec {
-  std::string key;    ///< "axial_force": CSV headers axial_force_measured_N, ...
-  std::string label;  ///< "Axial force F#dn#u"
-  Unit unit;          ///< display unit of the quantity as published ("N", "N m")
+  std::string key;                                  ///< "axial_force": CSV headers axial_force_measured_N, ...
+  std::string label;                                ///< "Axial force F#dn#u"
+  Unit unit;                                        ///< display unit of the quantity as published ("N", "N m")
   Unit per_width_unit = {"N/mm", "N_per_mm", 1e3};  ///< display unit of the per-unit-width view
 };
 
@@ -103,7 +103,7 @@ struct ComparisonSpec {
   struct Mark {
     std::string condition;  ///< the condition's key
     double value_si = 0.0;
-    std::string label;      ///< the legend entry ("d_c = 36 nm")
+    std::string label;  ///< the legend entry ("d_c = 36 nm")
   };
   std::vector<Mark> marks;
   void validate() const;
@@ -127,11 +127,11 @@ struct DataSet {
 /// Which CSV columns hold a data set's conditions and quantities, and which rows belong to it.
 struct CsvBinding {
   std::string name;
-  std::vector<std::string> condition_columns;  ///< one per spec condition, in its units
-  std::vector<double> condition_si;            ///< SI size of each column's unit (numeric conditions)
-  std::vector<std::string> quantity_columns;   ///< one per spec quantity; "" when the set lacks it
-  std::vector<double> quantity_si;             ///< SI size of each column's unit
-  std::vector<WidthBasis> bases;               ///< one per spec quantity
+  std::vector<std::string> condition_columns;                   ///< one per spec condition, in its units
+  std::vector<double> condition_si;                             ///< SI size of each column's unit (numeric conditions)
+  std::vector<std::string> quantity_columns;                    ///< one per spec quantity; "" when the set lacks it
+  std::vector<double> quantity_si;                              ///< SI size of each column's unit
+  std::vector<WidthBasis> bases;                                ///< one per spec quantity
   std::vector<std::pair<std::string, std::string>> row_filter;  ///< keep rows whose column equals the text
   /// When set, a column holding each row's width (in mm): total bases take their width from it, and rows of
   /// one set must agree (InputError naming the cell otherwise).
@@ -151,29 +151,29 @@ struct PredictedSet {
 /// One set of conditions, measured (possibly replicated) and predicted.
 struct GroupComparison {
   std::vector<ConditionValue> conditions;
-  std::vector<double> measured;            ///< the replicates, SI in the view's basis
-  std::vector<std::size_t> measured_rows;  ///< their indices in the measured data set
-  std::vector<std::size_t> measured_lines; ///< their source lines
+  std::vector<double> measured;             ///< the replicates, SI in the view's basis
+  std::vector<std::size_t> measured_rows;   ///< their indices in the measured data set
+  std::vector<std::size_t> measured_lines;  ///< their source lines
   SampleStatistics measured_stats;
-  std::vector<double> predicted;           ///< predicted rows with these conditions (replicate runs)
+  std::vector<double> predicted;  ///< predicted rows with these conditions (replicate runs)
   SampleStatistics predicted_stats;
-  double error_percent = 0.0;                  ///< (predicted mean - measured mean) / measured mean
-  std::vector<double> row_error_percent;       ///< (predicted mean - replicate) / replicate, per measured row
-  bool has_scatter = false;                ///< two or more replicates
+  double error_percent = 0.0;                   ///< (predicted mean - measured mean) / measured mean
+  std::vector<double> row_error_percent;        ///< (predicted mean - replicate) / replicate, per measured row
+  bool has_scatter = false;                     ///< two or more replicates
   bool within_1sd = false, within_2sd = false;  ///< predicted mean inside mean +- 1 (2) SD; only with scatter
   bool outside_model_range = false;  ///< a predicted row of the group lies outside its model's range (figures: hollow)
 };
 
 struct QuantityComparison {
-  std::size_t quantity = 0;     ///< index into spec.quantities
-  std::size_t prediction = 0;   ///< index into the predictions
+  std::size_t quantity = 0;    ///< index into spec.quantities
+  std::size_t prediction = 0;  ///< index into the predictions
   WidthView view = WidthView::as_published;
-  std::string key;              ///< "axial_force", or "main_force_per_width" for the per-unit-width view
-  Unit unit;                    ///< display unit of this view
+  std::string key;                             ///< "axial_force", or "main_force_per_width" for the per-unit-width view
+  Unit unit;                                   ///< display unit of this view
   WidthBasis measured_basis, predicted_basis;  ///< of the values in this view
   std::vector<GroupComparison> groups;         ///< matched groups, in measured order
-  ErrorMetrics metrics;          ///< over the groups (vs the measured means)
-  ErrorMetrics row_metrics;      ///< over every measured row
+  ErrorMetrics metrics;                        ///< over the groups (vs the measured means)
+  ErrorMetrics row_metrics;                    ///< over every measured row
   std::size_t n_with_scatter = 0, n_within_1sd = 0, n_within_2sd = 0;
   std::vector<std::vector<ConditionValue>> unmatched;  ///< measured groups with no prediction
   std::string note;  ///< e.g. "width bases differ: compared as published, without scaling"

@@ -22,7 +22,7 @@
 namespace kerf {
 
 struct BatchMeans {
-  std::size_t n = 0;                    ///< samples
+  std::size_t n = 0;  ///< samples
   double mean = 0;
   double standard_error = 0;            ///< of the mean; NaN with fewer than kMinBatches batches
   double statistical_inefficiency = 1;  ///< g = 1 + 2 sum rho(t), in samples (1: uncorrelated)

@@ -29,6 +29,7 @@ std::string file_hash_fnv1a64(const std::string& path);
 
 /// version, git_commit, command_line, scene (path), scene_fnv1a64 (its hash), overrides, date (UTC, ISO 8601),
 /// host and threads (OpenMP's maximum).
-Json run_provenance(const std::string& command, const std::string& scene_path, const std::vector<std::string>& overrides);
+Json run_provenance(const std::string& command, const std::string& scene_path,
+                    const std::vector<std::string>& overrides);
 
 }  // namespace kerf

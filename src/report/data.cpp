@@ -6,7 +6,6 @@
 
 #include "kerf/error.hpp"
 #include "kerf/io.hpp"
-
 #include "report_internal.hpp"
 
 namespace kerf {
@@ -21,9 +20,12 @@ void WidthBasis::validate(const std::string& path) const {
 
 std::string WidthBasis::describe() const {
   switch (kind) {
-    case Kind::total: return fmt::format("total force over a {} mm width", number_text(width_m * 1e3));
-    case Kind::per_unit_width: return "force per unit width";
-    case Kind::not_applicable: break;
+    case Kind::total:
+      return fmt::format("total force over a {} mm width", number_text(width_m * 1e3));
+    case Kind::per_unit_width:
+      return "force per unit width";
+    case Kind::not_applicable:
+      break;
   }
   return "no width basis";
 }
@@ -31,28 +33,39 @@ std::string WidthBasis::describe() const {
 double to_per_unit_width(double value, const WidthBasis& from) {
   from.validate("width_basis");
   switch (from.kind) {
-    case WidthBasis::Kind::total: return value / from.width_m;
-    case WidthBasis::Kind::per_unit_width: return value;
-    case WidthBasis::Kind::not_applicable: break;
+    case WidthBasis::Kind::total:
+      return value / from.width_m;
+    case WidthBasis::Kind::per_unit_width:
+      return value;
+    case WidthBasis::Kind::not_applicable:
+      break;
   }
-  throw InputError("width_basis", from.describe(), "a force with a width basis (total over a width, or per unit width)");
+  throw InputError("width_basis", from.describe(),
+                   "a force with a width basis (total over a width, or per unit width)");
 }
 
 double convert_width_basis(double value, const WidthBasis& from, const WidthBasis& to) {
   const double per_width = to_per_unit_width(value, from);
   to.validate("width_basis");
   switch (to.kind) {
-    case WidthBasis::Kind::total: return per_width * to.width_m;
-    case WidthBasis::Kind::per_unit_width: return per_width;
-    case WidthBasis::Kind::not_applicable: break;
+    case WidthBasis::Kind::total:
+      return per_width * to.width_m;
+    case WidthBasis::Kind::per_unit_width:
+      return per_width;
+    case WidthBasis::Kind::not_applicable:
+      break;
   }
   throw InputError("width_basis", to.describe(), "a force with a width basis (total over a width, or per unit width)");
 }
 
 // ---- Conditions --------------------------------------------------------------------------------------
 
-ConditionValue ConditionValue::number(double si_value) { return {fmt::format("{}", si_value), si_value}; }
-ConditionValue ConditionValue::label(std::string text) { return {std::move(text), std::nullopt}; }
+ConditionValue ConditionValue::number(double si_value) {
+  return {fmt::format("{}", si_value), si_value};
+}
+ConditionValue ConditionValue::label(std::string text) {
+  return {std::move(text), std::nullopt};
+}
 
 bool conditions_match(const ConditionValue& a, const ConditionValue& b, double relative_tolerance) {
   if (a.si.has_value() != b.si.has_value()) return false;
@@ -69,7 +82,9 @@ bool conditions_match(const std::vector<ConditionValue>& a, const std::vector<Co
   return true;
 }
 
-std::string ConditionSpec::header() const { return unit.suffix.empty() ? key : key + "_" + unit.suffix; }
+std::string ConditionSpec::header() const {
+  return unit.suffix.empty() ? key : key + "_" + unit.suffix;
+}
 
 std::string_view width_view_name(WidthView view) {
   return view == WidthView::as_published ? "as_published" : "per_unit_width";
@@ -141,15 +156,16 @@ DataSet dataset_from_csv(const CsvTable& table, const ComparisonSpec& spec, cons
       }
     }
     for (std::size_t q = 0; q < spec.quantities.size(); ++q) {
-      row.values.push_back(b.quantity_columns[q].empty() ? kNaN : table.number(r, quantity_index[q]) * b.quantity_si[q]);
+      row.values.push_back(b.quantity_columns[q].empty() ? kNaN
+                                                         : table.number(r, quantity_index[q]) * b.quantity_si[q]);
     }
     if (has_width_column) {
       const double w = table.number(r, width_index) * 1e-3;
       if (!(w > 0.0) || (width_m && std::abs(*width_m - w) > 1e-9 * w)) {
-        throw InputError(table.cell_location(r, width_index), table.text(r, width_index),
-                         width_m ? fmt::format("the width of the other rows of '{}' ({} mm)", b.name,
-                                               number_text(*width_m * 1e3))
-                                 : std::string("a positive width in mm"));
+        throw InputError(
+            table.cell_location(r, width_index), table.text(r, width_index),
+            width_m ? fmt::format("the width of the other rows of '{}' ({} mm)", b.name, number_text(*width_m * 1e3))
+                    : std::string("a positive width in mm"));
       }
       width_m = w;
     }

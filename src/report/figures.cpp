@@ -6,7 +6,6 @@
 #include <limits>
 
 #include "kerf/error.hpp"
-
 #include "report_internal.hpp"
 
 namespace kerf::report_detail {
@@ -74,13 +73,14 @@ PlannedFigure parity_figure(const Comparison& c, const QuantityComparison& r) {
   fig.x_min = fig.y_min = lo;
   fig.x_max = fig.y_max = hi;
   fig.bands.push_back({"±10 %", {lo, hi}, {0.9 * lo, 0.9 * hi}, {1.1 * lo, 1.1 * hi}, 5});
-  fig.series.insert(fig.series.begin(), PlotSeries{"y = x", {lo, hi}, {lo, hi}, {}, {}, SeriesStyle::dashed_line, 5, 0});
+  fig.series.insert(fig.series.begin(),
+                    PlotSeries{"y = x", {lo, hi}, {lo, hi}, {}, {}, SeriesStyle::dashed_line, 5, 0});
   fig.legend_position = "outside_right";
   fig.width_px = 1500;
   fig.height_px = 1000;
-  pf.caption = fmt::format("Parity plot of {}{}: predicted against measured{}, with the line y = x and a ±10 % band.",
-                           plain(qs.label), view_text(r),
-                           r.n_with_scatter > 0 ? " (error bars: ±1 SD of the replicates)" : "");
+  pf.caption =
+      fmt::format("Parity plot of {}{}: predicted against measured{}, with the line y = x and a ±10 % band.",
+                  plain(qs.label), view_text(r), r.n_with_scatter > 0 ? " (error bars: ±1 SD of the replicates)" : "");
   return pf;
 }
 
@@ -150,7 +150,8 @@ PlotSeries predicted_series(const Comparison& c, const QuantityComparison& rr, s
   }
   // Predicted points with error bars sit beside the measured ones (dodged by 1.2 % of the range per
   // prediction) so that the bars stay readable; the tables and CSV carry the exact conditions.
-  const bool has_bars = std::any_of(line.y_error.begin(), line.y_error.end(), [](double e) { return std::isfinite(e); });
+  const bool has_bars =
+      std::any_of(line.y_error.begin(), line.y_error.end(), [](double e) { return std::isfinite(e); });
   const double dodge = has_bars ? 0.012 * (x_hi - x_lo) * static_cast<double>(rr.prediction + 1) : 0.0;
   for (auto& x : line.x) x += dodge;
   sort_by_x(line);
@@ -181,8 +182,9 @@ PlannedFigure condition_figure(const Comparison& c, const QuantityComparison& r,
     m.color = many_partitions ? static_cast<int>(pi) : 0;
     m.marker = static_cast<int>(pi);
     std::vector<std::size_t> order = part;
-    std::sort(order.begin(), order.end(),
-              [&](std::size_t a, std::size_t b) { return *r.groups[a].conditions[vc].si < *r.groups[b].conditions[vc].si; });
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return *r.groups[a].conditions[vc].si < *r.groups[b].conditions[vc].si;
+    });
     for (std::size_t gi : order) {
       const auto& g = r.groups[gi];
       m.x.push_back(*g.conditions[vc].si / cs.unit.si);
@@ -227,12 +229,13 @@ PlannedFigure condition_figure(const Comparison& c, const QuantityComparison& r,
   }
   if (y_top > 0.0) fig.y_max = y_top * (1.0 + 0.09 * static_cast<double>(fig.series.size()) + 0.08);
   fig.legend_position = "best";
-  pf.caption = fmt::format("{}{} against {}: measured{} and the model{}.", plain(qs.label), view_text(r),
-                           lower_first(plain(cs.label)), r.n_with_scatter > 0 ? " means with ±1 SD error bars" : " points",
-                           c.predictions.front().curve
-                               ? " line"
-                               : "'s predicted points (hollow; with replicate runs drawn slightly to the right, error "
-                                 "bars ±1 SD)");
+  pf.caption =
+      fmt::format("{}{} against {}: measured{} and the model{}.", plain(qs.label), view_text(r),
+                  lower_first(plain(cs.label)), r.n_with_scatter > 0 ? " means with ±1 SD error bars" : " points",
+                  c.predictions.front().curve
+                      ? " line"
+                      : "'s predicted points (hollow; with replicate runs drawn slightly to the right, error "
+                        "bars ±1 SD)");
   return pf;
 }
 

@@ -28,18 +28,19 @@ std::string data_section(const Comparison& c) {
   for (std::size_t p = 0; p < c.predictions.size(); ++p) {
     describe_set(c.predictions[p].data, c.predictions.size() > 1 ? fmt::format("Prediction {}", p + 1) : "Prediction");
   }
-  md += fmt::format("Rows are matched by their conditions ({}), numbers within a relative tolerance of {}. "
-                    "Errors are (predicted − measured) / measured; rows with the same conditions are replicates, "
-                    "compared through their mean, with ±1 SD (sample standard deviation) as the measured scatter.\n\n",
-                    [&] {
-                      std::string names;
-                      for (const auto& cs : spec.conditions) {
-                        names += (names.empty() ? "" : ", ") + plain(cs.label) +
-                                 (cs.numeric && !cs.unit.label.empty() ? " in " + cs.unit.label : "");
-                      }
-                      return names;
-                    }(),
-                    spec.relative_tolerance);
+  md += fmt::format(
+      "Rows are matched by their conditions ({}), numbers within a relative tolerance of {}. "
+      "Errors are (predicted − measured) / measured; rows with the same conditions are replicates, "
+      "compared through their mean, with ±1 SD (sample standard deviation) as the measured scatter.\n\n",
+      [&] {
+        std::string names;
+        for (const auto& cs : spec.conditions) {
+          names += (names.empty() ? "" : ", ") + plain(cs.label) +
+                   (cs.numeric && !cs.unit.label.empty() ? " in " + cs.unit.label : "");
+        }
+        return names;
+      }(),
+      spec.relative_tolerance);
   return md;
 }
 
@@ -56,7 +57,8 @@ std::string width_basis_section(const Comparison& c) {
     for (const auto& p : c.predictions) md += p.data.bases[q].describe() + " | ";
     std::string views;
     for (const auto& r : c.results) {
-      if (r.quantity == q && r.prediction == 0) views += (views.empty() ? "" : ", ") + std::string(width_view_name(r.view));
+      if (r.quantity == q && r.prediction == 0)
+        views += (views.empty() ? "" : ", ") + std::string(width_view_name(r.view));
     }
     md += views + " |\n";
   }
@@ -66,8 +68,9 @@ std::string width_basis_section(const Comparison& c) {
 
 /// "## Agreement": the metrics of every quantity, view and prediction.
 std::string agreement_section(const Comparison& c) {
-  std::string md = "## Agreement\n\n| quantity | view | prediction | n | mean abs error (%) | max abs error (%) | bias (%) | "
-                   "inside ±1 SD | inside ±2 SD |\n|---|---|---|---|---|---|---|---|---|\n";
+  std::string md =
+      "## Agreement\n\n| quantity | view | prediction | n | mean abs error (%) | max abs error (%) | bias (%) | "
+      "inside ±1 SD | inside ±2 SD |\n|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& r : c.results) {
     md += fmt::format("| {} ({}) | {} | {} | {} | {:.2f} | {:.2f} | {:+.2f} | {} | {} |\n",
                       plain(c.spec.quantities[r.quantity].label), r.unit.label, width_view_name(r.view),
@@ -97,7 +100,8 @@ std::string quantity_section(const Comparison& c, const QuantityComparison& r) {
   md += "\n";
   for (const auto& g : r.groups) {
     md += "| ";
-    for (std::size_t k = 0; k < spec.conditions.size(); ++k) md += condition_text(spec.conditions[k], g.conditions[k]) + " | ";
+    for (std::size_t k = 0; k < spec.conditions.size(); ++k)
+      md += condition_text(spec.conditions[k], g.conditions[k]) + " | ";
     md += fmt::format("{} | {} | {} | {} | {:+.2f} | {} |\n", number_text(g.measured_stats.mean / r.unit.si),
                       g.measured.size(),
                       g.has_scatter ? number_text(g.measured_stats.standard_deviation / r.unit.si) : "–",
@@ -140,7 +144,8 @@ std::string report_markdown(const Comparison& c, const ReportOptions& options,
       md += fmt::format("![{}]({})\n\n*{}*\n\n", plain(f.figure.title), f.file, f.caption);
     }
   }
-  if (!options.extra_markdown.empty()) md += options.extra_markdown + (options.extra_markdown.back() == '\n' ? "" : "\n");
+  if (!options.extra_markdown.empty())
+    md += options.extra_markdown + (options.extra_markdown.back() == '\n' ? "" : "\n");
   return md;
 }
 

@@ -6,7 +6,6 @@
 #include <cmath>
 
 #include "kerf/error.hpp"
-
 #include "report_internal.hpp"
 
 namespace kerf {
@@ -50,7 +49,8 @@ std::vector<std::vector<std::size_t>> replicate_groups(const ComparisonSpec& spe
   std::vector<std::vector<std::size_t>> groups;
   for (std::size_t i = 0; i < measured.rows.size(); ++i) {
     auto it = std::find_if(groups.begin(), groups.end(), [&](const auto& g) {
-      return conditions_match(measured.rows[g.front()].conditions, measured.rows[i].conditions, spec.relative_tolerance);
+      return conditions_match(measured.rows[g.front()].conditions, measured.rows[i].conditions,
+                              spec.relative_tolerance);
     });
     if (it == groups.end()) {
       groups.push_back({i});
@@ -89,7 +89,8 @@ GroupComparison compare_group(const ComparisonSpec& spec, const DataSet& measure
   gc.predicted_stats = sample_statistics(gc.predicted);
   const std::string field = fmt::format("{} at {}", key, conditions_text(spec, gc.conditions));
   gc.error_percent = relative_error_percent(gc.predicted_stats.mean, gc.measured_stats.mean, field);
-  for (double m : gc.measured) gc.row_error_percent.push_back(relative_error_percent(gc.predicted_stats.mean, m, field));
+  for (double m : gc.measured)
+    gc.row_error_percent.push_back(relative_error_percent(gc.predicted_stats.mean, m, field));
   gc.has_scatter = gc.measured.size() >= 2;
   if (gc.has_scatter) {
     const double distance = std::abs(gc.predicted_stats.mean - gc.measured_stats.mean);
@@ -117,12 +118,13 @@ QuantityComparison compare_view(const ComparisonSpec& spec, const DataSet& measu
   r.measured_basis = per_width ? WidthBasis::per_unit_width() : mb;
   r.predicted_basis = per_width ? WidthBasis::per_unit_width() : pb;
   if (!per_width && !bases_agree) {
-    r.note = fmt::format("The width bases differ (measured: {}; predicted: {}). This view compares the numbers "
-                         "directly, as published, without scaling.",
-                         mb.describe(), pb.describe());
+    r.note = fmt::format(
+        "The width bases differ (measured: {}; predicted: {}). This view compares the numbers "
+        "directly, as published, without scaling.",
+        mb.describe(), pb.describe());
   } else if (per_width && !bases_agree) {
-    r.note = fmt::format("Both sides divided by their widths (measured: {}; predicted: {}).", mb.describe(),
-                         pb.describe());
+    r.note =
+        fmt::format("Both sides divided by their widths (measured: {}; predicted: {}).", mb.describe(), pb.describe());
   }
   std::vector<double> group_errors, row_errors;
   for (const auto& g : groups) {
@@ -152,7 +154,6 @@ QuantityComparison compare_view(const ComparisonSpec& spec, const DataSet& measu
 }
 
 }  // namespace
-
 
 const QuantityComparison& Comparison::result(const std::string& key, std::size_t prediction) const {
   for (const auto& r : results) {

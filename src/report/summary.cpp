@@ -11,9 +11,12 @@ namespace {
 
 Json basis_json(const WidthBasis& b) {
   switch (b.kind) {
-    case WidthBasis::Kind::total: return {{"kind", "total"}, {"width_mm", b.width_m * 1e3}};
-    case WidthBasis::Kind::per_unit_width: return {{"kind", "per_unit_width"}};
-    case WidthBasis::Kind::not_applicable: break;
+    case WidthBasis::Kind::total:
+      return {{"kind", "total"}, {"width_mm", b.width_m * 1e3}};
+    case WidthBasis::Kind::per_unit_width:
+      return {{"kind", "per_unit_width"}};
+    case WidthBasis::Kind::not_applicable:
+      break;
   }
   return {{"kind", "not_applicable"}};
 }
@@ -54,17 +57,19 @@ Json summary_json(const Comparison& c, const ReportOptions& options) {
   Json predictions = Json::array();
   for (std::size_t p = 0; p < c.predictions.size(); ++p) {
     const auto& d = c.predictions[p].data;
-    predictions.push_back({{"name", d.name}, {"source", d.source}, {"citations", d.citations}, {"quantities", quantities_of(p)}});
+    predictions.push_back(
+        {{"name", d.name}, {"source", d.source}, {"citations", d.citations}, {"quantities", quantities_of(p)}});
   }
   Json conditions = Json::array();
   for (const auto& cs : spec.conditions) conditions.push_back(cs.header());
-  Json out = {{"title", spec.title},
-              {"measured", {{"name", c.measured.name}, {"source", c.measured.source}, {"citations", c.measured.citations}}},
-              {"conditions", conditions},
-              {"match_relative_tolerance", spec.relative_tolerance},
-              {"error_definition", "(predicted - measured) / measured, percent; replicates compared through their mean"},
-              {"quantities", quantities_of(0)},
-              {"predictions", predictions}};
+  Json out = {
+      {"title", spec.title},
+      {"measured", {{"name", c.measured.name}, {"source", c.measured.source}, {"citations", c.measured.citations}}},
+      {"conditions", conditions},
+      {"match_relative_tolerance", spec.relative_tolerance},
+      {"error_definition", "(predicted - measured) / measured, percent; replicates compared through their mean"},
+      {"quantities", quantities_of(0)},
+      {"predictions", predictions}};
   if (!options.extra_summary.empty()) out["extra"] = options.extra_summary;
   return out;
 }

@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "kerf/io.hpp"
-
 #include "report_internal.hpp"
 
 namespace kerf {
@@ -22,10 +21,11 @@ std::string comparison_csv(const Comparison& c) {
   }
   for (const auto* r : first) {
     const std::string& u = r->unit.suffix;
-    for (const std::string& col : {fmt::format("{}_measured_{}", r->key, u), fmt::format("{}_measured_mean_{}", r->key, u),
-                                   fmt::format("{}_measured_sd_{}", r->key, u), fmt::format("{}_n_replicates", r->key),
-                                   fmt::format("{}_predicted_{}", r->key, u), fmt::format("{}_error_percent", r->key),
-                                   fmt::format("{}_mean_error_percent", r->key)}) {
+    for (const std::string& col :
+         {fmt::format("{}_measured_{}", r->key, u), fmt::format("{}_measured_mean_{}", r->key, u),
+          fmt::format("{}_measured_sd_{}", r->key, u), fmt::format("{}_n_replicates", r->key),
+          fmt::format("{}_predicted_{}", r->key, u), fmt::format("{}_error_percent", r->key),
+          fmt::format("{}_mean_error_percent", r->key)}) {
       header.push_back(col);
     }
   }
@@ -40,7 +40,7 @@ std::string comparison_csv(const Comparison& c) {
       for (std::size_t k = 0; k < spec.conditions.size(); ++k) {
         const auto& cs = spec.conditions[k];
         fields.push_back(cs.numeric && row.conditions[k].si ? csv_number(*row.conditions[k].si / cs.unit.si)
-                                                             : csv_escape(row.conditions[k].text));
+                                                            : csv_escape(row.conditions[k].text));
       }
       for (const auto* first_r : first) {
         const QuantityComparison* r = nullptr;
@@ -61,9 +61,10 @@ std::string comparison_csv(const Comparison& c) {
         }
         if (!group) {
           const double v = row.values[first_r->quantity];
-          fields.push_back(std::isfinite(v) ? csv_number(view_value(v, c.measured.bases[first_r->quantity], first_r->view) /
-                                                          first_r->unit.si)
-                                            : "");
+          fields.push_back(
+              std::isfinite(v)
+                  ? csv_number(view_value(v, c.measured.bases[first_r->quantity], first_r->view) / first_r->unit.si)
+                  : "");
           for (int k = 0; k < 6; ++k) fields.emplace_back("");
           continue;
         }

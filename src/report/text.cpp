@@ -12,7 +12,9 @@ std::string plain(std::string text) {
   return text;
 }
 
-std::string number_text(double value) { return fmt::format("{:.4g}", value); }
+std::string number_text(double value) {
+  return fmt::format("{:.4g}", value);
+}
 
 std::string condition_text(const ConditionSpec& spec, const ConditionValue& value) {
   if (!spec.numeric || !value.si) return value.text;
@@ -36,7 +38,6 @@ std::string conditions_text(const ComparisonSpec& spec, const std::vector<Condit
   }
   return text;
 }
-
 
 double view_value(double value, const WidthBasis& basis, WidthView view) {
   return view == WidthView::as_published ? value : to_per_unit_width(value, basis);

@@ -6,7 +6,6 @@
 
 #include "kerf/error.hpp"
 #include "kerf/io.hpp"
-
 #include "report_internal.hpp"
 
 namespace kerf {

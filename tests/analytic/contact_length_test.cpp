@@ -42,7 +42,8 @@ TEST_CASE("Contact length is proportional to chip thickness and MSSP exceeds MEP
   for (auto model : {ContactLengthModel::altintas, ContactLengthModel::vinogradov, ContactLengthModel::lee_shaffer}) {
     const double l1 = kerf::contact_length(model, 0.05e-3, phi_mep, beta, a);
     CHECK_THAT(kerf::contact_length(model, 0.25e-3, phi_mep, beta, a), WithinRel(5.0 * l1, 1e-12));
-    CHECK(kerf::contact_length(model, 0.1e-3, phi_mssp, beta, a) > kerf::contact_length(model, 0.1e-3, phi_mep, beta, a));
+    CHECK(kerf::contact_length(model, 0.1e-3, phi_mssp, beta, a) >
+          kerf::contact_length(model, 0.1e-3, phi_mep, beta, a));
   }
 }
 

@@ -31,7 +31,8 @@ TEST_CASE("Bifano critical depth d_c = 0.15 (E/H)(K_c/H)^2", "[critical_depth]")
 
 TEST_CASE("Critical depths of the bundled brittle materials are tens of nanometres", "[critical_depth]") {
   // Material files: soda-lime E 71, H 5.5, K_c 0.75; K9 E 82, H 7.2, K_c 0.85; p-SiC E 410, H 24, K_c 3.5.
-  CHECK_THAT(critical_depth_nm_of("soda_lime_glass"), WithinRel(0.15 * (71 / 5.5) * (0.75e-3 / 5.5) * (0.75e-3 / 5.5) * 1e9, 1e-12));
+  CHECK_THAT(critical_depth_nm_of("soda_lime_glass"),
+             WithinRel(0.15 * (71 / 5.5) * (0.75e-3 / 5.5) * (0.75e-3 / 5.5) * 1e9, 1e-12));
   CHECK_THAT(critical_depth_nm_of("soda_lime_glass"), WithinRel(36.0, 0.01));
   CHECK_THAT(critical_depth_nm_of("k9_glass"), WithinRel(23.8, 0.01));
   CHECK_THAT(critical_depth_nm_of("psic"), WithinRel(54.5, 0.01));
@@ -56,12 +57,14 @@ TEST_CASE("Regime: ductile below d_c, transition up to 3 d_c, brittle beyond", "
 TEST_CASE("Missing material data is named by group and key", "[critical_depth][errors]") {
   const kerf::Json no_brittle = {{"name", "x"}, {"elastic", {{"youngs_modulus_GPa", 70}}}};
   CHECK(field_of_missing(no_brittle) == "material.brittle");
-  const kerf::Json no_toughness = {{"name", "x"}, {"elastic", {{"youngs_modulus_GPa", 70}}},
-                                   {"brittle", {{"hardness_GPa", 5.5}}}};
+  const kerf::Json no_toughness = {
+      {"name", "x"}, {"elastic", {{"youngs_modulus_GPa", 70}}}, {"brittle", {{"hardness_GPa", 5.5}}}};
   CHECK(field_of_missing(no_toughness) == "material.brittle.fracture_toughness_MPa_sqrt_m");
-  const kerf::Json no_elastic = {{"name", "x"}, {"brittle", {{"hardness_GPa", 5.5}, {"fracture_toughness_MPa_sqrt_m", 0.7}}}};
+  const kerf::Json no_elastic = {{"name", "x"},
+                                 {"brittle", {{"hardness_GPa", 5.5}, {"fracture_toughness_MPa_sqrt_m", 0.7}}}};
   CHECK(field_of_missing(no_elastic) == "material.elastic");
-  const kerf::Json zero_hardness = {{"name", "x"}, {"elastic", {{"youngs_modulus_GPa", 70}}},
+  const kerf::Json zero_hardness = {{"name", "x"},
+                                    {"elastic", {{"youngs_modulus_GPa", 70}}},
                                     {"brittle", {{"hardness_GPa", 0}, {"fracture_toughness_MPa_sqrt_m", 0.7}}}};
   CHECK(field_of_missing(zero_hardness) == "material.brittle.hardness_GPa");
 }

@@ -63,15 +63,21 @@ TEST_CASE("Dislocation strengthening follows Shao et al. 2013, Eqs. 4-6", "[disl
 
 TEST_CASE("The composite flow stress adds the named terms and k = sigma / sqrt(3)", "[flow_stress]") {
   kerf::FlowStressModel model;
-  model.johnson_cook = kerf::JohnsonCookParams{.A_Pa = 1e9, .B_Pa = 0.0, .n = 1.0, .C = 0.0, .m = 1.0,
-                                               .reference_strain_rate_per_s = 1.0, .room_temperature_K = 293.0,
+  model.johnson_cook = kerf::JohnsonCookParams{.A_Pa = 1e9,
+                                               .B_Pa = 0.0,
+                                               .n = 1.0,
+                                               .C = 0.0,
+                                               .m = 1.0,
+                                               .reference_strain_rate_per_s = 1.0,
+                                               .room_temperature_K = 293.0,
                                                .melting_temperature_K = 3000.0};
   model.hall_petch = sic_hall_petch(5e-6);
   model.dislocation = sic_dislocation(1e-6);
   const kerf::DeformationState state{0.5, 1e3, 293.0};
   const auto s = kerf::flow_stress(model, state, nullptr);
   CHECK_THAT(s.total_Pa, WithinRel(1e9 + kerf::hall_petch_stress(*model.hall_petch, nullptr) +
-                                       kerf::dislocation_stress(*model.dislocation, nullptr), 1e-14));
+                                       kerf::dislocation_stress(*model.dislocation, nullptr),
+                                   1e-14));
   CHECK_THAT(s.shear_Pa, WithinRel(s.total_Pa / std::sqrt(3.0), 1e-14));
   model.hall_petch.reset();
   CHECK(kerf::flow_stress(model, state, nullptr).hall_petch_Pa == 0.0);

@@ -1,7 +1,6 @@
 #include "kerf/analytic/flow_stress/hardness_flow.hpp"
 
 #include <catch2/catch.hpp>
-
 #include <cmath>
 
 #include "kerf/error.hpp"
@@ -11,7 +10,9 @@ using kerf::ConstraintModel;
 
 namespace {
 kerf::HardnessFlowParams glass(double hardness_GPa, double modulus_GPa = 71.0) {
-  return {.hardness_Pa = hardness_GPa * 1e9, .youngs_modulus_Pa = modulus_GPa * 1e9, .poissons_ratio = 0.23,
+  return {.hardness_Pa = hardness_GPa * 1e9,
+          .youngs_modulus_Pa = modulus_GPa * 1e9,
+          .poissons_ratio = 0.23,
           .constraint_factor = 1.7};
 }
 std::string field_of(const kerf::HardnessFlowParams& p, ConstraintModel model) {
@@ -72,7 +73,8 @@ TEST_CASE("Hardness flow stress: monotone in H, finite at the extremes, refused 
     CHECK_THAT(kerf::hardness_yield_stress_Pa(at_limit, model), WithinRel(at_limit.hardness_Pa, 1e-9));
     CHECK(field_of(glass(71.0 * largest * 1.001), model) == "material.brittle.hardness_GPa");
   }
-  CHECK_THAT(kerf::largest_hardness_over_modulus(ConstraintModel::marsh, 0.23), WithinRel(std::exp(-0.93 / 0.6), 1e-12));
+  CHECK_THAT(kerf::largest_hardness_over_modulus(ConstraintModel::marsh, 0.23),
+             WithinRel(std::exp(-0.93 / 0.6), 1e-12));
   // Soda-lime glass lies beyond Johnson's cavity model (it would need Y above H).
   CHECK(field_of(glass(5.5), ConstraintModel::johnson_cavity) == "material.brittle.hardness_GPa");
   // H -> E and beyond: bad input, named.

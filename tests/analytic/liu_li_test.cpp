@@ -24,9 +24,9 @@ LiuLiParams params(FrictionClosure closure, double rake_deg = 0.0, double radius
   p.friction_angle_rad = deg_to_rad(beta_deg);
   p.closure = closure;
   // The chip ratio of the matching shear-angle model at the nominal rake.
-  const double phi = kerf::shear_angle(closure == FrictionClosure::lee_shaffer ? kerf::ShearAngleModel::lee_shaffer
-                                                                               : kerf::ShearAngleModel::merchant,
-                                       p.rake_rad, p.friction_angle_rad);
+  const double phi = kerf::shear_angle(
+      closure == FrictionClosure::lee_shaffer ? kerf::ShearAngleModel::lee_shaffer : kerf::ShearAngleModel::merchant,
+      p.rake_rad, p.friction_angle_rad);
   p.chip_ratio = kerf::chip_ratio_from_shear_angle(phi, p.rake_rad);
   p.quadrature.relative_tolerance = 1e-12;
   return p;
@@ -40,8 +40,8 @@ TEST_CASE("Merchant closure: the edge cutting force equals its closed form", "[l
       const auto r = kerf::liu_li_force_per_width(p, kShearStress, t0_um * 1e-6, nullptr);
       const double g_top = r.upper_limit_rad, g_low = r.lower_limit_rad, rc = p.chip_ratio;
       // physics-analytic.md §2: F_c / (k_s r) = (2 / r_c) [(g_top - g_L) + r_c (cos g_top - cos g_L)]
-      const double closed = kShearStress * p.edge_radius_m * (2.0 / rc) *
-                            ((g_top - g_low) + rc * (std::cos(g_top) - std::cos(g_low)));
+      const double closed =
+          kShearStress * p.edge_radius_m * (2.0 / rc) * ((g_top - g_low) + rc * (std::cos(g_top) - std::cos(g_low)));
       CHECK_THAT(r.edge.cutting_N_per_m, WithinRel(closed, 1e-10));
     }
   }

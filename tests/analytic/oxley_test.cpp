@@ -25,8 +25,13 @@ constexpr double kZeroCelsius = 273.15;
 // same repository uses T_room = 273.15 K in the Johnson-Cook law, which gives phi = 18.77 deg and F_c = 571 N).
 kerf::OxleyParams aisi_1045() {
   kerf::OxleyParams p;
-  p.johnson_cook = {.A_Pa = 553.1e6, .B_Pa = 600.8e6, .n = 0.234, .C = 0.0134, .m = 1.0,
-                    .reference_strain_rate_per_s = 1.0, .room_temperature_K = 298.15,
+  p.johnson_cook = {.A_Pa = 553.1e6,
+                    .B_Pa = 600.8e6,
+                    .n = 0.234,
+                    .C = 0.0134,
+                    .m = 1.0,
+                    .reference_strain_rate_per_s = 1.0,
+                    .room_temperature_K = 298.15,
                     .melting_temperature_K = 1733.15};
   p.thermal = {.density_kg_per_m3 = 8000.0,
                .conductivity_W_per_m_K = {52.61, -0.0281, kZeroCelsius},
@@ -38,8 +43,11 @@ kerf::OxleyParams aisi_1045() {
 
 // The reference cut of Lalwani (2009) and Pantalé (2022): V = 200 m/min, t1 = 0.15 mm, w = 1.6 mm, rake -7 deg.
 kerf::OxleyCut reference_cut() {
-  return {.rake_rad = deg_to_rad(-7.0), .uncut_chip_thickness_m = 0.15e-3, .width_m = 1.6e-3,
-          .speed_m_per_s = 200.0 / 60.0, .workpiece_temperature_K = 298.15};
+  return {.rake_rad = deg_to_rad(-7.0),
+          .uncut_chip_thickness_m = 0.15e-3,
+          .width_m = 1.6e-3,
+          .speed_m_per_s = 200.0 / 60.0,
+          .workpiece_temperature_K = 298.15};
 }
 
 // A value read off a matplotlib SVG: linear map from two axis ticks (pixel position, value).
@@ -48,13 +56,35 @@ double from_plot(double pixel, double pixel_a, double value_a, double pixel_b, d
 }
 
 std::vector<double> all_numbers(const kerf::OxleyResult& r) {
-  return {r.shear_angle_rad, r.strain_rate_constant_C0, r.delta, r.cutting_force_N, r.thrust_force_N,
-          r.chip_thickness_m, r.contact_length_m, r.shear_force_N, r.resultant_force_N, r.friction_force_N,
-          r.normal_force_N, r.theta_rad, r.friction_angle_rad, r.shear_plane_strain, r.shear_plane_strain_rate_per_s,
-          r.shear_plane_temperature_K, r.shear_plane_flow_stress_Pa, r.shear_plane_shear_stress_Pa,
-          r.heat_partition, r.strain_hardening_index, r.tool_tip_normal_stress_Pa, r.interface_strain,
-          r.interface_strain_rate_per_s, r.interface_temperature_K, r.chip_temperature_K,
-          r.interface_shear_stress_Pa, r.interface_normal_stress_Pa, r.chip_shear_flow_stress_Pa, r.residual_shear,
+  return {r.shear_angle_rad,
+          r.strain_rate_constant_C0,
+          r.delta,
+          r.cutting_force_N,
+          r.thrust_force_N,
+          r.chip_thickness_m,
+          r.contact_length_m,
+          r.shear_force_N,
+          r.resultant_force_N,
+          r.friction_force_N,
+          r.normal_force_N,
+          r.theta_rad,
+          r.friction_angle_rad,
+          r.shear_plane_strain,
+          r.shear_plane_strain_rate_per_s,
+          r.shear_plane_temperature_K,
+          r.shear_plane_flow_stress_Pa,
+          r.shear_plane_shear_stress_Pa,
+          r.heat_partition,
+          r.strain_hardening_index,
+          r.tool_tip_normal_stress_Pa,
+          r.interface_strain,
+          r.interface_strain_rate_per_s,
+          r.interface_temperature_K,
+          r.chip_temperature_K,
+          r.interface_shear_stress_Pa,
+          r.interface_normal_stress_Pa,
+          r.chip_shear_flow_stress_Pa,
+          r.residual_shear,
           r.residual_normal};
 }
 
@@ -171,14 +201,14 @@ TEST_CASE("Oxley forces balance: one resultant, seen from the shear plane, the r
   CHECK_THAT(r.normal_force_N, WithinRel(R * std::cos(r.friction_angle_rad), 1e-14));
   CHECK_THAT(r.shear_force_N, WithinRel(R * std::cos(theta), 1e-14));
   // The same resultant in tool axes: F_c = F sin(a) + N cos(a), F_t = F cos(a) - N sin(a).
-  CHECK_THAT(r.cutting_force_N,
-             WithinRel(r.friction_force_N * std::sin(a) + r.normal_force_N * std::cos(a), 1e-13));
+  CHECK_THAT(r.cutting_force_N, WithinRel(r.friction_force_N * std::sin(a) + r.normal_force_N * std::cos(a), 1e-13));
   CHECK_THAT(r.thrust_force_N, WithinRel(r.friction_force_N * std::cos(a) - r.normal_force_N * std::sin(a), 1e-12));
   CHECK_THAT(std::hypot(r.cutting_force_N, r.thrust_force_N), WithinRel(R, 1e-14));
   CHECK_THAT(std::hypot(r.friction_force_N, r.normal_force_N), WithinRel(R, 1e-14));
   // Shear force from the flow stress on the shear plane, stresses from forces on the contact.
-  CHECK_THAT(r.shear_force_N, WithinRel(r.shear_plane_shear_stress_Pa * cut.uncut_chip_thickness_m /
-                                            std::sin(phi) * cut.width_m, 1e-14));
+  CHECK_THAT(
+      r.shear_force_N,
+      WithinRel(r.shear_plane_shear_stress_Pa * cut.uncut_chip_thickness_m / std::sin(phi) * cut.width_m, 1e-14));
   CHECK_THAT(r.interface_shear_stress_Pa, WithinRel(r.friction_force_N / (r.contact_length_m * cut.width_m), 1e-14));
   CHECK_THAT(r.interface_normal_stress_Pa, WithinRel(r.normal_force_N / (r.contact_length_m * cut.width_m), 1e-14));
   CHECK_THAT(r.shear_plane_flow_stress_Pa, WithinRel(std::sqrt(3.0) * r.shear_plane_shear_stress_Pa, 1e-14));
@@ -227,8 +257,11 @@ TEST_CASE("Oxley at the extremes: a finite result or a clean error, never NaN, n
     for (double v : {0.01, 1.0, 20.0}) {
       for (double rake_deg : {-30.0, 0.0, 30.0}) {
         for (double t_w : {298.15, t_melt - 1.0}) {
-          const kerf::OxleyCut cut{.rake_rad = deg_to_rad(rake_deg), .uncut_chip_thickness_m = t1, .width_m = 1e-3,
-                                   .speed_m_per_s = v, .workpiece_temperature_K = t_w};
+          const kerf::OxleyCut cut{.rake_rad = deg_to_rad(rake_deg),
+                                   .uncut_chip_thickness_m = t1,
+                                   .width_m = 1e-3,
+                                   .speed_m_per_s = v,
+                                   .workpiece_temperature_K = t_w};
           CAPTURE(t1, v, rake_deg, t_w);
           try {
             const kerf::OxleyResult r = kerf::solve_oxley(steel, cut);
@@ -341,15 +374,23 @@ TEST_CASE("Oxley with several roots takes the minimum-force solution", "[oxley]"
   const auto synthetic = [](double A_MPa, double B_MPa, double n, double C, double m, double T_melt, double rho,
                             kerf::LinearInTemperature K, kerf::LinearInTemperature cp) {
     kerf::OxleyParams p;
-    p.johnson_cook = {.A_Pa = A_MPa * 1e6, .B_Pa = B_MPa * 1e6, .n = n, .C = C, .m = m,
-                      .reference_strain_rate_per_s = 1.0, .room_temperature_K = 298.15,
+    p.johnson_cook = {.A_Pa = A_MPa * 1e6,
+                      .B_Pa = B_MPa * 1e6,
+                      .n = n,
+                      .C = C,
+                      .m = m,
+                      .reference_strain_rate_per_s = 1.0,
+                      .room_temperature_K = 298.15,
                       .melting_temperature_K = T_melt};
     p.thermal = {.density_kg_per_m3 = rho, .conductivity_W_per_m_K = K, .specific_heat_J_per_kg_K = cp};
     return p;
   };
   const auto cut = [](double v, double t1, double rake_deg) {
-    return kerf::OxleyCut{.rake_rad = deg_to_rad(rake_deg), .uncut_chip_thickness_m = t1, .width_m = 1e-3,
-                          .speed_m_per_s = v, .workpiece_temperature_K = 298.15};
+    return kerf::OxleyCut{.rake_rad = deg_to_rad(rake_deg),
+                          .uncut_chip_thickness_m = t1,
+                          .width_m = 1e-3,
+                          .speed_m_per_s = v,
+                          .workpiece_temperature_K = 298.15};
   };
   kerf::OxleySolverOptions plain;
   plain.phi_scan_points = 2;

@@ -1,7 +1,7 @@
 #include "kerf/analytic/forces/ploughing.hpp"
 
-#include <catch2/catch.hpp>
 #include <array>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <numbers>
 
@@ -19,12 +19,24 @@ constexpr double kPi = std::numbers::pi;
 struct Vec {
   double x = 0.0, y = 0.0;
 };
-Vec operator+(Vec a, Vec b) { return {a.x + b.x, a.y + b.y}; }
-Vec operator-(Vec a, Vec b) { return {a.x - b.x, a.y - b.y}; }
-Vec operator*(double s, Vec a) { return {s * a.x, s * a.y}; }
-double dot(Vec a, Vec b) { return a.x * b.x + a.y * b.y; }
-double norm(Vec a) { return std::sqrt(dot(a, a)); }
-Vec direction(double angle) { return {std::cos(angle), std::sin(angle)}; }
+Vec operator+(Vec a, Vec b) {
+  return {a.x + b.x, a.y + b.y};
+}
+Vec operator-(Vec a, Vec b) {
+  return {a.x - b.x, a.y - b.y};
+}
+Vec operator*(double s, Vec a) {
+  return {s * a.x, s * a.y};
+}
+double dot(Vec a, Vec b) {
+  return a.x * b.x + a.y * b.y;
+}
+double norm(Vec a) {
+  return std::sqrt(dot(a, a));
+}
+Vec direction(double angle) {
+  return {std::cos(angle), std::sin(angle)};
+}
 
 /// A symmetric 2D stress tensor and its traction on a plane of unit normal n.
 struct Stress {
@@ -158,7 +170,8 @@ TEST_CASE("Wave model: alpha = 0 is the flat rough punch", "[ploughing]") {
   CHECK_THAT(kerf::wave_model_force_factors(0.8, 0.0, nullptr).thrust, WithinAbs(3.8143, 5e-5));
 }
 
-TEST_CASE("Wave model: beyond alpha = eta the field is capped, reported, finite and continuous", "[ploughing][guards]") {
+TEST_CASE("Wave model: beyond alpha = eta the field is capped, reported, finite and continuous",
+          "[ploughing][guards]") {
   for (double f : {0.0, 0.4, 0.9}) {
     CAPTURE(f);
     const double eta = 0.5 * std::acos(f);

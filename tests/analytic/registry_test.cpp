@@ -1,7 +1,7 @@
 #include "kerf/analytic/registry.hpp"
 
-#include <catch2/catch.hpp>
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <set>
 #include <string>
 #include <vector>
@@ -46,8 +46,7 @@ TEST_CASE("The registry maps a name to its model by the name, not by the line's 
                 kerf::registered_model<kerf::ContactLengthModel>("contact_length", name, *list)) == name);
     }
     for (const char* name : {"none", "wave"}) {
-      CHECK(kerf::ploughing_model_name(kerf::registered_model<kerf::PloughingModel>("ploughing", name, *list)) ==
-            name);
+      CHECK(kerf::ploughing_model_name(kerf::registered_model<kerf::PloughingModel>("ploughing", name, *list)) == name);
     }
     CHECK(kerf::registered_model<kerf::ShearAngleSource>("shear_angle", "chip_ratio", *list) ==
           kerf::ShearAngleSource::chip_ratio);

@@ -12,7 +12,8 @@ TEST_CASE("Round-nose chip: area, edge length and thicknesses", "[round_nose]") 
   const kerf::RoundNoseTurning turn{.feed_m_per_rev = 0.25e-6, .nose_radius_m = 0.5e-3, .depth_of_cut_m = 10e-6};
   const auto chip = kerf::round_nose_chip(turn, nullptr);
   CHECK_THAT(chip.area_m2, WithinRel(2.5e-12, 1e-14));
-  CHECK_THAT(chip.engaged_edge_length_m, WithinRel(0.5e-3 * (std::acos(1.0 - 0.02) + std::asin(0.25e-6 / 1e-3)), 1e-14));
+  CHECK_THAT(chip.engaged_edge_length_m,
+             WithinRel(0.5e-3 * (std::acos(1.0 - 0.02) + std::asin(0.25e-6 / 1e-3)), 1e-14));
   // First order in f: t_max ~ f sin(kappa), sin(kappa) = sqrt(2 R a - a^2) / R; the next term is about
   // f / (2 sqrt(2 R a)) = 0.13 % smaller here.
   const double half_chord = std::sqrt(2 * 0.5e-3 * 10e-6 - 1e-10);

@@ -1,9 +1,10 @@
 #include "kerf/analytic/sweep/scene_compare.hpp"
 
-#include <catch2/catch.hpp>
 #include <fmt/format.h>
-#include <filesystem>
 #include <unistd.h>
+
+#include <catch2/catch.hpp>
+#include <filesystem>
 #include <fstream>
 
 #include "kerf/analytic/kinds/predict.hpp"

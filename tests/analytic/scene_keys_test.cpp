@@ -1,5 +1,7 @@
 // Physics functions name their own fields; the scene layer names the scene's keys (kinds/scene_keys.hpp, issue 56
 // item 3): the mapping, and the physics' own names where they are called without a scene.
+#include "kerf/analytic/kinds/scene_keys.hpp"
+
 #include <catch2/catch.hpp>
 #include <cmath>
 
@@ -7,7 +9,6 @@
 #include "kerf/analytic/forces/liu_li.hpp"
 #include "kerf/analytic/forces/ploughing.hpp"
 #include "kerf/analytic/forces/transition.hpp"
-#include "kerf/analytic/kinds/scene_keys.hpp"
 
 namespace {
 
@@ -36,8 +37,9 @@ TEST_CASE("A physics field is named by the scene's key, its value and unit the k
 
   // A value that is no number stays as it was; an expectation without the unit is kept.
   const kerf::InputError missing("friction_angle_rad", "(missing)", "a friction angle");
-  CHECK(std::string(kerf::at_scene_key(missing, kKeys).what()) == "cut.friction_angle_deg = (missing): expected a "
-                                                                   "friction angle");
+  CHECK(std::string(kerf::at_scene_key(missing, kKeys).what()) ==
+        "cut.friction_angle_deg = (missing): expected a "
+        "friction angle");
   // A field the scene did not set is left alone.
   const kerf::InputError other("attack_angle_deg", "-1", "a non-negative value in deg");
   CHECK(kerf::at_scene_key(other, kKeys).field() == "attack_angle_deg");
@@ -53,15 +55,16 @@ TEST_CASE("Physics functions throw on their own field names, the scene layer on 
 
   kerf::TransitionParams transition;
   transition.layer_factor = 0.0;
-  CHECK(message_of([&] { kerf::fracture_force_per_width(transition, 0.75e6, 1e-4, 1e-8, 0.0, 0.3); })
-            .starts_with("params.ductile_layer_factor = 0:"));
   CHECK(message_of([&] {
-          kerf::naming_scene_keys(kKeys, [&] {
-            return kerf::fracture_force_per_width(transition, 0.75e6, 1e-4, 1e-8, 0.0, 0.3);
-          });
+          kerf::fracture_force_per_width(transition, 0.75e6, 1e-4, 1e-8, 0.0, 0.3);
+        }).starts_with("params.ductile_layer_factor = 0:"));
+  CHECK(message_of([&] {
+          kerf::naming_scene_keys(
+              kKeys, [&] { return kerf::fracture_force_per_width(transition, 0.75e6, 1e-4, 1e-8, 0.0, 0.3); });
         }).starts_with("models.transition.ductile_layer_factor = 0:"));
 
-  CHECK(message_of([] { kerf::edge_ploughing_force_per_width({.edge_radius_m = -1e-6}, 1e9, 1e-7, nullptr); })
-            .starts_with("edge_radius_m = -1e-06:"));
+  CHECK(message_of([] {
+          kerf::edge_ploughing_force_per_width({.edge_radius_m = -1e-6}, 1e9, 1e-7, nullptr);
+        }).starts_with("edge_radius_m = -1e-06:"));
   CHECK(message_of([] { kerf::classify_regime(-1e-9, 36e-9); }).starts_with("depth_m = -1e-09:"));
 }

@@ -1,7 +1,7 @@
 #include "kerf/analytic/kinds/scene.hpp"
 
-#include <catch2/catch.hpp>
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -215,8 +215,8 @@ TEST_CASE("Oxley deformation works when the force model's flow stress leaves Joh
     "models": {"force": "liu_li", "deformation": "oxley", "flow_stress": ["hall_petch"]}
   })");
   doc["material"] = kerf::read_json_file(std::string(KERF_SOURCE_DIR) + "/data/materials/aisi_1045.json");
-  doc["material"]["microstructure"] = {{"grain_size_um", 20.0}, {"burgers_vector_nm", 0.248},
-                                       {"misorientation_deg", 2.0}};
+  doc["material"]["microstructure"] = {
+      {"grain_size_um", 20.0}, {"burgers_vector_nm", 0.248}, {"misorientation_deg", 2.0}};
   const auto scene = kerf::parse_analytic_scene(doc);
   CHECK_FALSE(scene.flow_stress.johnson_cook.has_value());
   REQUIRE(scene.oxley.material.has_value());
@@ -342,7 +342,8 @@ TEST_CASE("The stagnation cut-off holds for the whole tool: a rake face below it
     const auto p = kerf::predict(kerf::parse_analytic_scene(doc));
     REQUIRE(p.liu_li.has_value());
     const double edge = p.liu_li->edge.cutting_N_per_m * p.width_m;
-    if (previous_edge >= 0.0) CHECK(std::fabs(edge - previous_edge) < 0.01 * p.liu_li->rake_face.cutting_N_per_m * 2e-3 + 1e-3);
+    if (previous_edge >= 0.0)
+      CHECK(std::fabs(edge - previous_edge) < 0.01 * p.liu_li->rake_face.cutting_N_per_m * 2e-3 + 1e-3);
     previous_edge = edge;
     CHECK((p.liu_li->rake_face.cutting_N_per_m > 0.0) == (rake_deg > -55.0));
   }
@@ -372,8 +373,9 @@ TEST_CASE("Plausibility: a closure implying a negative friction angle is refused
   doc["tool"]["rake_deg"] = 0.0;
   doc["models"]["shear_angle"] = "chip_ratio";
   const auto scene = kerf::parse_analytic_scene(doc);
-  CHECK_THROWS_WITH(kerf::predict(scene),
-                    Contains("cut.chip_ratio = 3: expected a shear angle and friction closure giving a friction angle >= 0"));
+  CHECK_THROWS_WITH(
+      kerf::predict(scene),
+      Contains("cut.chip_ratio = 3: expected a shear angle and friction closure giving a friction angle >= 0"));
 }
 
 TEST_CASE("Plausibility: rake -89.9 deg cuts no chip instead of a 1000-fold thrust", "[scene][issue22]") {
@@ -433,10 +435,9 @@ TEST_CASE("Oxley mode reports its own friction angle and the contact lengths fro
   CHECK_THAT(p.thrust_force_N / p.cutting_force_N, WithinRel(std::tan(p.friction_angle_rad - a), 1e-9));
   const double phi_mep = std::numbers::pi / 4.0 - (p.friction_angle_rad - a) / 2.0;  // Berezvai et al. 2019, Eq. 4
   REQUIRE(p.contact_lengths_m.size() == 2);
-  CHECK_THAT(*p.contact_lengths_m[1].second,
-             WithinRel(150e-6 * std::sin(phi_mep + p.friction_angle_rad - a) /
-                           (std::sin(phi_mep) * std::cos(p.friction_angle_rad)),
-                       1e-12));  // altintas_mep, Berezvai et al. 2019, Eq. 1
+  CHECK_THAT(*p.contact_lengths_m[1].second, WithinRel(150e-6 * std::sin(phi_mep + p.friction_angle_rad - a) /
+                                                           (std::sin(phi_mep) * std::cos(p.friction_angle_rad)),
+                                                       1e-12));  // altintas_mep, Berezvai et al. 2019, Eq. 1
 }
 
 TEST_CASE("Oxley without a physical solution is a model failure naming why", "[scene][oxley][issue22]") {
@@ -471,7 +472,8 @@ kerf::Prediction predict_ploughing(double t0_um, double r_um, const char* plough
 }
 }  // namespace
 
-TEST_CASE("Ploughing: the total force is continuous where the chip starts at the stagnation height", "[scene][ploughing]") {
+TEST_CASE("Ploughing: the total force is continuous where the chip starts at the stagnation height",
+          "[scene][ploughing]") {
   // h_s = r (1 + sin g_s) does not depend on t0: read it off a thick cut.
   const double r_um = 0.2;
   const auto thick = predict_ploughing(1.0, r_um);
@@ -496,7 +498,8 @@ TEST_CASE("Ploughing: the total force is continuous where the chip starts at the
   CHECK_THAT(thick.ploughing->ploughed_height_m, WithinRel(h_s_um * 1e-6, 1e-12));
 }
 
-TEST_CASE("Ploughing: above the layer the chip term is unchanged and the ploughing term stays at h_s", "[scene][ploughing]") {
+TEST_CASE("Ploughing: above the layer the chip term is unchanged and the ploughing term stays at h_s",
+          "[scene][ploughing]") {
   for (double t0_um : {0.1, 0.3, 1.0, 5.0}) {
     CAPTURE(t0_um);
     const auto wave = predict_ploughing(t0_um, 0.2);
@@ -537,7 +540,8 @@ TEST_CASE("Ploughing: grows with the edge radius at a fixed thickness, vanishes 
   CHECK(predict_ploughing(0.1, 0.0).cutting_force_N == predict_ploughing(0.1, 0.0, "none").cutting_force_N);
 }
 
-TEST_CASE("Ploughing: a friction factor outside 0 <= f < 1 names its key, and a given one is used", "[scene][ploughing]") {
+TEST_CASE("Ploughing: a friction factor outside 0 <= f < 1 names its key, and a given one is used",
+          "[scene][ploughing]") {
   for (double f : {-0.1, 1.0, 1.5}) {
     CAPTURE(f);
     Json doc = orthogonal_scene();
@@ -571,7 +575,8 @@ TEST_CASE("The key reference comes from the tables the scenes are read with", "[
   // Defaults as printed are the ones a scene gets (the member initialisers, written once).
   CHECK_THAT(all, Contains("| `clearance_deg` | deg | a value in (0, 90) | 7 |"));
   // (the force models' list also holds the toy model of toy_force_model_test.cpp, registered in this program)
-  CHECK_THAT(all, Contains("| `force` | - | `auto`, `merchant`, `liu_li`, `oxley`") && Contains("| `auto` | the force model;"));
+  CHECK_THAT(all, Contains("| `force` | - | `auto`, `merchant`, `liu_li`, `oxley`") &&
+                      Contains("| `auto` | the force model;"));
   auto doc = orthogonal_scene();
   doc["models"].erase("force");
   const auto scene = kerf::parse_analytic_scene(doc);
@@ -593,8 +598,9 @@ TEST_CASE("The key reference comes from the tables the scenes are read with", "[
   CHECK(named.contact_lengths[1].model == kerf::ContactLengthModel::altintas);
   CHECK(named.contact_lengths[1].shear_angle == kerf::ShearAngleModel::lee_shaffer);
   doc["models"]["contact_length"] = Json::array({"altintas_mep", "vinogradov", "altintas_mep"});
-  CHECK_THROWS_WITH(kerf::parse_analytic_scene(doc), "models.contact_length = altintas_mep: expected each "
-                                                     "contact-length model named once");
+  CHECK_THROWS_WITH(kerf::parse_analytic_scene(doc),
+                    "models.contact_length = altintas_mep: expected each "
+                    "contact-length model named once");
   doc = orthogonal_scene();
   doc["models"]["force"] = "trepanning";
   CHECK_THROWS_WITH(kerf::parse_analytic_scene(doc), Contains("models.force = trepanning: expected an orthogonal-cut"));

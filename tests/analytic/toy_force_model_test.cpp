@@ -13,8 +13,8 @@
 #include "kerf/analytic/kinds/predict.hpp"
 #include "kerf/analytic/registry.hpp"
 
-using kerf::Json;
 using Catch::Matchers::Contains;
+using kerf::Json;
 
 namespace {
 
@@ -53,9 +53,9 @@ const kerf::OrthogonalForceModel toy_force_model{
     .predict = &predict_toy, .write_cells = &write_toy_cells, .print = &print_toy};
 
 // The one registry line (in the library it would be a line of analytic/registry.cpp).
-[[maybe_unused]] const bool registered = kerf::register_analytic_model(
-    {"force", "toy_specific_force", "test-only toy: F_c = k_c w t0", "cut", -1, &kerf::build_orthogonal_scene,
-     &toy_force_model});
+[[maybe_unused]] const bool registered =
+    kerf::register_analytic_model({"force", "toy_specific_force", "test-only toy: F_c = k_c w t0", "cut", -1,
+                                   &kerf::build_orthogonal_scene, &toy_force_model});
 
 Json toy_scene() {
   return Json::parse(R"({"material": "a2024_t351",

@@ -1,8 +1,8 @@
 // A toy scene kind added the way docs/analytic-models.md says: its own class and builder here, and one registry
 // line (a test-only registration) - nothing else in the library changes - and parse_scene, the CSV row, the
 // report and the sweep (with its unknown-key check and its error column) all run it.
-#include <catch2/catch.hpp>
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cstdio>
 #include <string>
 
@@ -56,9 +56,9 @@ std::unique_ptr<kerf::AnalyticCase> build_toy(const Json& document, kerf::Materi
 
 // The one registry line (in the library it would be a line of analytic/registry.cpp).
 void register_toy() {
-  static const bool registered = kerf::register_analytic_model(
-      {"force", "toy", "test-only toy: F = specific force x width x depth", "cut.width_mm, cut.depth_um", -1,
-       &build_toy});
+  static const bool registered =
+      kerf::register_analytic_model({"force", "toy", "test-only toy: F = specific force x width x depth",
+                                     "cut.width_mm, cut.depth_um", -1, &build_toy});
   (void)registered;
 }
 

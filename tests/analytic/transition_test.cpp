@@ -1,7 +1,6 @@
 #include "kerf/analytic/forces/transition.hpp"
 
 #include <catch2/catch.hpp>
-
 #include <cmath>
 
 #include "kerf/analytic/forces/glass_edge.hpp"
@@ -20,12 +19,19 @@ constexpr double kRake = -15.0, kMu = 0.3;
 kerf::Json glass_scene(double depth_um, const std::string& force = "transition", double edge_radius_um = 0.0) {
   return {{"material", "soda_lime_glass"},
           {"tool", {{"rake_deg", kRake}, {"edge_radius_um", edge_radius_um}}},
-          {"cut", {{"uncut_chip_thickness_um", depth_um}, {"width_mm", 1.0}, {"speed_m_per_min", 60.0},
-                   {"friction_coefficient", kMu}}},
+          {"cut",
+           {{"uncut_chip_thickness_um", depth_um},
+            {"width_mm", 1.0},
+            {"speed_m_per_min", 60.0},
+            {"friction_coefficient", kMu}}},
           {"models", {{"force", force}}}};
 }
-kerf::Prediction predict_doc(const kerf::Json& doc) { return kerf::predict(kerf::parse_analytic_scene(doc)); }
-double critical_depth_um() { return kerf::parse_analytic_scene(glass_scene(1.0)).critical_depth_m.value() * 1e6; }
+kerf::Prediction predict_doc(const kerf::Json& doc) {
+  return kerf::predict(kerf::parse_analytic_scene(doc));
+}
+double critical_depth_um() {
+  return kerf::parse_analytic_scene(glass_scene(1.0)).critical_depth_m.value() * 1e6;
+}
 }  // namespace
 
 TEST_CASE("Fracture part: zeta K_c (sqrt(h) - sqrt(l)), thrust along the rake face's friction", "[transition]") {
@@ -74,10 +80,10 @@ TEST_CASE("Transition model: finite and monotone from 10 nm to 0.2 mm, no fractu
   }
   // A tougher glass (K_c x10: d_c x100 = 3.6 um) cut at 1 um: no fracture part, the ductile model alone.
   kerf::Json tough = glass_scene(1.0);
-  tough["material"] = kerf::Json{{"name", "tough"},
-                                 {"elastic", {{"youngs_modulus_GPa", 71}, {"poissons_ratio", 0.23}}},
-                                 {"brittle", {{"hardness_GPa", 5.5}, {"fracture_toughness_MPa_sqrt_m", 7.5},
-                                              {"constraint_factor", 1.7}}}};
+  tough["material"] = kerf::Json{
+      {"name", "tough"},
+      {"elastic", {{"youngs_modulus_GPa", 71}, {"poissons_ratio", 0.23}}},
+      {"brittle", {{"hardness_GPa", 5.5}, {"fracture_toughness_MPa_sqrt_m", 7.5}, {"constraint_factor", 1.7}}}};
   const auto p = predict_doc(tough);
   CHECK(kerf::transition_details(p)->fracture.cutting_N_per_m == 0.0);
   tough["models"]["force"] = "merchant";
@@ -102,8 +108,8 @@ TEST_CASE("Transition model: a metal without toughness is refused, naming the gr
 }
 
 TEST_CASE("Edge force on the ductile layer: Merchant's closed form for a sharp edge", "[transition][glass_edge]") {
-  const kerf::EdgeTool tool{.rake_rad = kerf::units::deg_to_rad(kRake), .edge_radius_m = 0.0,
-                            .friction_coefficient = kMu};
+  const kerf::EdgeTool tool{
+      .rake_rad = kerf::units::deg_to_rad(kRake), .edge_radius_m = 0.0, .friction_coefficient = kMu};
   const kerf::EdgeForce f = kerf::edge_force_per_width(kerf::Json("soda_lime_glass"), tool);
   // Y = H / C = 5.5 GPa / 1.7, k = Y / sqrt(3); phi = pi/4 - (beta - alpha)/2 (Merchant's minimum energy).
   const double k = 5.5e9 / 1.7 / std::sqrt(3.0), a = tool.rake_rad, b = std::atan(kMu);

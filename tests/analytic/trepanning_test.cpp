@@ -18,10 +18,9 @@ struct Table4Row {
   double spindle_speed_rpm, feed_rate_um_s, axial_test_N, torque_test_Nm, axial_theory_N, torque_theory_Nm;
 };
 const std::vector<Table4Row> kTable4 = {
-    {90.5, 10, 210.5, 4.63, 220.1, 5.32},  {90.5, 12, 295.8, 6.54, 264.1, 6.38},
-    {90.5, 15, 322.6, 8.32, 330.1, 7.98},  {90.5, 18, 410.6, 8.82, 396.1, 9.57},
-    {90.5, 20, 420.7, 9.53, 440.1, 10.63}, {113.5, 20, 358.6, 8.72, 346.4, 8.37},
-    {144, 20, 290.3, 6.32, 274.7, 6.64},   {181, 20, 232.6, 5.54, 221.3, 5.35},
+    {90.5, 10, 210.5, 4.63, 220.1, 5.32}, {90.5, 12, 295.8, 6.54, 264.1, 6.38},  {90.5, 15, 322.6, 8.32, 330.1, 7.98},
+    {90.5, 18, 410.6, 8.82, 396.1, 9.57}, {90.5, 20, 420.7, 9.53, 440.1, 10.63}, {113.5, 20, 358.6, 8.72, 346.4, 8.37},
+    {144, 20, 290.3, 6.32, 274.7, 6.64},  {181, 20, 232.6, 5.54, 221.3, 5.35},
 };
 const kerf::TrepanningTool kPaperTool{0.132, 0.124};
 
@@ -39,13 +38,14 @@ std::vector<kerf::TrepanningObservation> observations(bool theory) {
 TEST_CASE("Eqs. 21-22 in SI equal the paper's unit form", "[trepanning]") {
   // The paper's form: F_n = 15 pi v_f tan(phi) (D - d) H / (2 n_0), M = 15 v_f (D^2 - d^2) H (1 + pi tan(phi) mu/2)
   // / (4 n_0) with v_f mm/s, n_0 rev/min, D, d mm, H N/mm^2 -> N and N mm.
-  const kerf::TrepanningMaterial m{.hardness_Pa = 6.0e9, .half_angle_rad = kerf::units::deg_to_rad(60.0),
-                                   .friction_coefficient = 0.1};
+  const kerf::TrepanningMaterial m{
+      .hardness_Pa = 6.0e9, .half_angle_rad = kerf::units::deg_to_rad(60.0), .friction_coefficient = 0.1};
   const double vf = 0.015, n0 = 113.5, D = 132.0, d = 124.0, H = 6000.0, t = std::tan(m.half_angle_rad);
   const auto f = kerf::trepanning_forces(kPaperTool, kerf::TrepanningCut::from_user_units(15.0, 113.5), m);
   const double pi = std::numbers::pi;
   CHECK_THAT(f.axial_force_N, WithinRel(15.0 * pi * vf * t * (D - d) * H / (2.0 * n0), 1e-12));
-  CHECK_THAT(f.torque_N_m * 1e3, WithinRel(15.0 * vf * (D * D - d * d) * H * (1.0 + pi * t * 0.1 / 2.0) / (4.0 * n0), 1e-12));
+  CHECK_THAT(f.torque_N_m * 1e3,
+             WithinRel(15.0 * vf * (D * D - d * d) * H * (1.0 + pi * t * 0.1 / 2.0) / (4.0 * n0), 1e-12));
   CHECK_THAT(f.feed_per_rev_m, WithinRel(60.0 * vf / n0 * 1e-3, 1e-12));  // Eq. 7, mm -> m
 }
 
@@ -75,8 +75,8 @@ TEST_CASE("The paper's theory column is one value of each lumped group", "[trepa
   CHECK_THAT(at_60.friction_coefficient, WithinAbs(0.010, 0.001));
   CHECK(at_60.physical);
   // Round trip: the implied material gives back the groups.
-  const auto back = kerf::TrepanningGroups::from_material(
-      {at_60.hardness_Pa, at_60.half_angle_rad, at_60.friction_coefficient});
+  const auto back =
+      kerf::TrepanningGroups::from_material({at_60.hardness_Pa, at_60.half_angle_rad, at_60.friction_coefficient});
   CHECK_THAT(back.axial_group_Pa, WithinRel(cal.groups.axial_group_Pa, 1e-12));
   CHECK_THAT(back.torque_group_Pa, WithinRel(cal.groups.torque_group_Pa, 1e-12));
 }
@@ -113,8 +113,9 @@ TEST_CASE("The relative fit minimises the squared relative residuals, the absolu
       double sum = 0.0;
       for (const auto& r : rows) {
         const double model = kerf::trepanning_forces(kPaperTool, r.cut, kerf::TrepanningGroups{k, 1e9}).axial_force_N;
-        const double residual = weighting == kerf::ResidualWeighting::relative ? (model - r.axial_force_N) / r.axial_force_N
-                                                                              : model - r.axial_force_N;
+        const double residual = weighting == kerf::ResidualWeighting::relative
+                                    ? (model - r.axial_force_N) / r.axial_force_N
+                                    : model - r.axial_force_N;
         sum += residual * residual;
       }
       return sum;
@@ -157,13 +158,15 @@ TEST_CASE("Force is linear in v_f / n_0 and torque scales with D^2 - d^2", "[tre
   const kerf::TrepanningTool wide{0.132, 0.116};  // wall 8 mm -> 16 mm
   const auto w = kerf::trepanning_forces(wide, kerf::TrepanningCut::from_user_units(10.0, 100.0), k);
   CHECK_THAT(w.axial_force_N, WithinRel(2.0 * base.axial_force_N, 1e-12));
-  CHECK_THAT(w.torque_N_m, WithinRel(base.torque_N_m * (0.132 * 0.132 - 0.116 * 0.116) / (0.132 * 0.132 - 0.124 * 0.124), 1e-12));
+  CHECK_THAT(w.torque_N_m,
+             WithinRel(base.torque_N_m * (0.132 * 0.132 - 0.116 * 0.116) / (0.132 * 0.132 - 0.124 * 0.124), 1e-12));
   // M / F_n = (K_M / K_F) 2 r / pi with r = (D + d) / 4: the grits' tangential force acts at the mean radius.
   CHECK_THAT(base.torque_N_m / base.axial_force_N,
              WithinRel(6.0 / 10.0 * 2.0 * kPaperTool.mean_radius_m() / std::numbers::pi, 1e-12));
   // A solid core drill (d = 0) is allowed; a vanishing wall gives vanishing force.
   CHECK(kerf::trepanning_forces({0.01, 0.0}, kerf::TrepanningCut::from_user_units(10.0, 100.0), k).axial_force_N > 0.0);
-  const auto thin = kerf::trepanning_forces({0.132, 0.132 - 1e-9}, kerf::TrepanningCut::from_user_units(10.0, 100.0), k);
+  const auto thin =
+      kerf::trepanning_forces({0.132, 0.132 - 1e-9}, kerf::TrepanningCut::from_user_units(10.0, 100.0), k);
   CHECK(thin.axial_force_N < 1e-6 * base.axial_force_N);
 }
 
@@ -191,9 +194,11 @@ TEST_CASE("Per-grit diagnostics (Eqs. 1-20) sum to the cutter's force and torque
   const double pi = std::numbers::pi, D = 0.132, d = 0.124;
   CHECK_THAT(g.face_area_m2, WithinRel(pi / 4 * (D * D - d * d) * 0.8, 1e-14));
   CHECK_THAT(g.cutting_edges, WithinRel(pi / 2 * 50e-6 * (D + d) * 20e6 * 0.8, 1e-12));  // Eq. 5
-  CHECK_THAT(g.feed_per_edge_m, WithinRel(120 * 20e-3 / (pi * 90.5 * 50e-3 * (132 + 124) * 20 * 0.8) * 1e-3, 1e-12));  // Eq. 8 (mm)
-  CHECK_THAT(g.grit_count * g.grit_normal_force_N, WithinRel(f.axial_force_N, 1e-12));                 // Eq. 21
-  CHECK_THAT(g.grit_count * g.grit_tangential_force_N * kPaperTool.mean_radius_m(), WithinRel(f.torque_N_m, 1e-12));  // Eq. 22
+  CHECK_THAT(g.feed_per_edge_m,
+             WithinRel(120 * 20e-3 / (pi * 90.5 * 50e-3 * (132 + 124) * 20 * 0.8) * 1e-3, 1e-12));  // Eq. 8 (mm)
+  CHECK_THAT(g.grit_count * g.grit_normal_force_N, WithinRel(f.axial_force_N, 1e-12));              // Eq. 21
+  CHECK_THAT(g.grit_count * g.grit_tangential_force_N * kPaperTool.mean_radius_m(),
+             WithinRel(f.torque_N_m, 1e-12));  // Eq. 22
   // Eq. 15 in the paper's units: F_an = 30 v_f tan(phi) H / (n_0 (D + d) C G), mm and N/mm^2.
   CHECK_THAT(g.grit_normal_force_N, WithinRel(30 * 20e-3 * 10.5e3 / (90.5 * (132 + 124) * 20 * 0.8), 1e-12));
   // Eq. 13 with Eq. 14: a = 2 g tan(phi).
@@ -226,20 +231,25 @@ TEST_CASE("Invalid trepanning input names the field", "[trepanning][errors]") {
         "cut.feed_rate_um_per_s");
   CHECK(field_of([&] { kerf::trepanning_forces(kPaperTool, kerf::TrepanningCut::from_user_units(NAN, 90.0), k); }) ==
         "cut.feed_rate_um_per_s");
-  CHECK(field_of([&] { kerf::trepanning_forces(kPaperTool, cut, kerf::TrepanningGroups{0.0, 6e9}); }) ==
-        "groups.axial_group_MPa");
-  CHECK(field_of([&] { kerf::trepanning_forces(kPaperTool, cut, kerf::TrepanningMaterial{7e9, 1.6, 0.1}); }) ==
-        "material.half_angle_deg");
-  CHECK(field_of([&] { kerf::trepanning_forces(kPaperTool, cut, kerf::TrepanningMaterial{7e9, 1.0, -0.1}); }) ==
-        "material.friction_coefficient");
-  CHECK(field_of([&] { kerf::trepanning_grit_diagnostics(kPaperTool, cut, k, {20e6, 1.5, 50e-6}); }) ==
-        "grits.shape_coefficient");
+  CHECK(field_of([&] {
+          kerf::trepanning_forces(kPaperTool, cut, kerf::TrepanningGroups{0.0, 6e9});
+        }) == "groups.axial_group_MPa");
+  CHECK(field_of([&] {
+          kerf::trepanning_forces(kPaperTool, cut, kerf::TrepanningMaterial{7e9, 1.6, 0.1});
+        }) == "material.half_angle_deg");
+  CHECK(field_of([&] {
+          kerf::trepanning_forces(kPaperTool, cut, kerf::TrepanningMaterial{7e9, 1.0, -0.1});
+        }) == "material.friction_coefficient");
+  CHECK(field_of([&] {
+          kerf::trepanning_grit_diagnostics(kPaperTool, cut, k, {20e6, 1.5, 50e-6});
+        }) == "grits.shape_coefficient");
   std::vector<kerf::TrepanningObservation> one{{cut, 100.0, 1.0}};
   CHECK(field_of([&] { kerf::calibrate_trepanning(kPaperTool, one); }) == "observations");
   std::vector<kerf::TrepanningObservation> bad{{cut, 100.0, 1.0}, {cut, 0.0, 1.0}};
   CHECK(field_of([&] { kerf::calibrate_trepanning(kPaperTool, bad); }) == "observations[1].axial_force_N");
-  CHECK_THROWS_WITH(kerf::trepanning_forces({0.124, 0.132}, cut, k),
-                    "tool.inner_diameter_mm = 132: expected a value in [0, 124) mm (at least 0 and below the outer diameter)");
+  CHECK_THROWS_WITH(
+      kerf::trepanning_forces({0.124, 0.132}, cut, k),
+      "tool.inner_diameter_mm = 132: expected a value in [0, 124) mm (at least 0 and below the outer diameter)");
 }
 
 TEST_CASE("Plausibility: a feed per revolution beyond the cutter's wall is refused", "[trepanning][issue22]") {

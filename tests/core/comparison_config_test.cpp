@@ -8,7 +8,8 @@
 using Catch::Matchers::WithinRel;
 
 namespace {
-const std::filesystem::path kFile = std::filesystem::path(KERF_SOURCE_DIR) / "data/comparisons/soda_lime_dem_vs_experiment.json";
+const std::filesystem::path kFile =
+    std::filesystem::path(KERF_SOURCE_DIR) / "data/comparisons/soda_lime_dem_vs_experiment.json";
 
 std::string field_of(const kerf::Json& doc) {
   try {

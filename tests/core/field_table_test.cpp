@@ -27,8 +27,7 @@ const kerf::FieldTable<Params>& table() {
   static const FieldTable<Params> t{
       number_field("modulus_GPa", units::kGPa, Range::positive(), "a modulus", &Params::modulus_pa),
       number_field("angle_deg", units::kDeg, Range::closed(0.0, 90.0), "an angle", &Params::angle_rad),
-      int_field("count", 1, 16, "a count", &Params::count),
-      bool_field("check", "a flag", &Params::check),
+      int_field("count", 1, 16, "a count", &Params::count), bool_field("check", "a flag", &Params::check),
       choice_field("shape", kShapes, "a shape", &Params::shape)};
   return t;
 }
@@ -47,8 +46,8 @@ TEST_CASE("field table: absent keys keep the struct's defaults, present ones are
   CHECK(d.modulus_pa == 70e9);
   CHECK(d.count == 2);
   CHECK(d.shape == Shape::none);
-  const Params p = read(kerf::Json{{"modulus_GPa", 2.5}, {"angle_deg", 30}, {"count", 5}, {"check", false},
-                                   {"shape", "trapezoidal"}});
+  const Params p = read(
+      kerf::Json{{"modulus_GPa", 2.5}, {"angle_deg", 30}, {"count", 5}, {"check", false}, {"shape", "trapezoidal"}});
   CHECK(p.modulus_pa == 2.5e9);
   CHECK(p.angle_rad == 30 * std::numbers::pi / 180);  // the conversion the unit names, to the bit
   CHECK(p.count == 5);
@@ -119,7 +118,9 @@ const kerf::FieldTable<Output>& output_table() {
   using namespace kerf;
   static const FieldTable<Output> t{
       text_field("name", "a file name", &Output::name,
-                 [](const std::string& n) { return n.empty() || n.find('/') != std::string::npos ? std::string("a file name") : std::string(); }),
+                 [](const std::string& n) {
+                   return n.empty() || n.find('/') != std::string::npos ? std::string("a file name") : std::string();
+                 }),
       FlagsField<Output>{"free", kFreeNames, "what may change", [](const Output& o) { return o.free; },
                          [](Output& o, unsigned f) { o.free = f; }}};
   return t;
@@ -150,14 +151,15 @@ TEST_CASE("field table: texts with their check, and sets of names as flags") {
   CHECK(back.free == o.free);
   const std::string md = kerf::fields_markdown(output_table());
   CHECK_THAT(md, Catch::Matchers::Contains("| `name` | - | a file name | `calibrated` | a file name |"));
-  CHECK_THAT(md, Catch::Matchers::Contains("| `free` | - | a list of `modulus`, `ratio`, `strength` | `modulus`, `strength` |"));
+  CHECK_THAT(md, Catch::Matchers::Contains(
+                     "| `free` | - | a list of `modulus`, `ratio`, `strength` | `modulus`, `strength` |"));
   CHECK(kerf::fields_markdown(output_table(), Output{}, false).rfind("| `name`", 0) == 0);  // rows only
 }
 
 namespace {
 struct Lists {
-  std::optional<double> ratio;       // optional, no default
-  double speed_m_per_s = 0.0;        // must convert to a normal SI value
+  std::optional<double> ratio;  // optional, no default
+  double speed_m_per_s = 0.0;   // must convert to a normal SI value
   std::vector<std::string> order = {"b"};
 };
 constexpr std::string_view kListNames[] = {"a", "b", "c"};
@@ -189,13 +191,15 @@ TEST_CASE("field table: optional numbers, ordered name lists, values that leave 
   // The order given is kept (a CSV's columns follow it); one name alone is a list of one.
   CHECK(read_lists({{"order", {"c", "a"}}}).order == std::vector<std::string>{"c", "a"});
   CHECK(read_lists({{"order", "c"}}).order == std::vector<std::string>{"c"});
-  CHECK_THROWS_WITH(read_lists({{"order", {"a", "d"}}}), Catch::Matchers::Contains("models.order = d: expected one of"));
+  CHECK_THROWS_WITH(read_lists({{"order", {"a", "d"}}}),
+                    Catch::Matchers::Contains("models.order = d: expected one of"));
   CHECK_THROWS_WITH(read_lists({{"order", {1}}}), Catch::Matchers::Contains("models.order = 1: expected one of"));
   CHECK_THROWS_WITH(read_lists({{"order", 3}}), "models.order = 3: expected a list of names");
   // With SiCheck::on (the analytic scenes) a value whose SI conversion underflows is refused, naming the key (as
   // ObjectReader::get_si does); off (the DEM's tables, the default) reads the plain conversion.
-  CHECK_THROWS_WITH(read_lists({{"speed_mm", 1e-320}}), Catch::Matchers::Contains("models.speed_mm = ") &&
-                                                            Catch::Matchers::Contains("stays a finite, non-zero number"));
+  CHECK_THROWS_WITH(
+      read_lists({{"speed_mm", 1e-320}}),
+      Catch::Matchers::Contains("models.speed_mm = ") && Catch::Matchers::Contains("stays a finite, non-zero number"));
   CHECK(read_lists({{"speed_mm", 1e-320}}, kerf::SiCheck::off).speed_m_per_s == kerf::units::mm_to_m(1e-320));
   CHECK(read_lists({{"speed_mm", 0}}).speed_m_per_s == 0.0);
   // Absent optional values: not checked, not written, documented by their text.

@@ -28,8 +28,8 @@ TEST_CASE("Every library material loads and every number carries its provenance"
 
 TEST_CASE("The bundled library holds the materials the toolkit promises", "[material]") {
   const auto names = kerf::library_material_names();
-  for (const char* required : {"aisi_1045", "ti6al4v", "a2024_t351", "ofhc_copper", "psic", "soda_lime_glass",
-                               "k9_glass"}) {
+  for (const char* required :
+       {"aisi_1045", "ti6al4v", "a2024_t351", "ofhc_copper", "psic", "soda_lime_glass", "k9_glass"}) {
     CHECK(std::find(names.begin(), names.end(), required) != names.end());
   }
 }

@@ -18,7 +18,8 @@ TEST_CASE("A figure renders to a PNG atomically", "[plot]") {
   fig.x_label = "x (mm)";
   fig.y_label = "F#dc#u (N)";
   fig.bands.push_back({"band", {0, 1}, {0, 0.5}, {0.5, 1.5}, 5});
-  fig.series.push_back({"points", {0.1, 0.5, 0.9}, {0.2, NAN, 1.0}, {}, {0.1, 0.1, NAN}, kerf::SeriesStyle::points, 0, 0});
+  fig.series.push_back(
+      {"points", {0.1, 0.5, 0.9}, {0.2, NAN, 1.0}, {}, {0.1, 0.1, NAN}, kerf::SeriesStyle::points, 0, 0});
   fig.series.push_back({"line", {0, 1}, {0, 1}, {}, {}, kerf::SeriesStyle::line, 1, 0});
   kerf::render_png(fig, dir / "figure.png");
   std::ifstream in(dir / "figure.png", std::ios::binary);

@@ -18,7 +18,8 @@ namespace {
 kerf::ComparisonSpec depth_spec() {
   kerf::ComparisonSpec spec;
   spec.title = "Hand-made";
-  spec.conditions = {{"surface", "Surface", {"", "", 1.0}, false}, {"depth_of_cut", "Depth of cut", {"mm", "mm", 1e-3}, true}};
+  spec.conditions = {{"surface", "Surface", {"", "", 1.0}, false},
+                     {"depth_of_cut", "Depth of cut", {"mm", "mm", 1e-3}, true}};
   spec.quantities = {{"main_force", "Main force F#dc#u", {"N", "N", 1.0}, {"N/mm", "N_per_mm", 1e3}}};
   return spec;
 }
@@ -26,7 +27,6 @@ kerf::ComparisonSpec depth_spec() {
 kerf::DataRow row(const std::string& surface, double depth_mm, double value, std::size_t line = 0) {
   return {{kerf::ConditionValue::label(surface), kerf::ConditionValue::number(depth_mm * 1e-3)}, {value}, line};
 }
-
 
 fs::path fresh_directory(const std::string& name) {
   const fs::path dir = fs::path(KERF_BINARY_DIR) / "test_output" / name;
@@ -57,11 +57,17 @@ TEST_CASE("Matching conditions: numbers within a relative tolerance, text exactl
 
 TEST_CASE("Replicates: group mean and SD, and whether the prediction lies in the scatter", "[report][replicates]") {
   const auto spec = depth_spec();
-  const kerf::DataSet measured{"measured", "", {"hand-made"}, {kerf::WidthBasis::total(1e-3)},
+  const kerf::DataSet measured{"measured",
+                               "",
+                               {"hand-made"},
+                               {kerf::WidthBasis::total(1e-3)},
                                {row("regular", 0.1, 10, 2), row("regular", 0.1, 12, 3), row("regular", 0.1, 14, 4),
                                 row("regular", 0.2, 20, 5), row("grooved", 0.1, 5, 6)}};
   // The grooved row has no prediction; 0.1 mm is predicted as 0.1000000001 mm (inside the tolerance).
-  const kerf::DataSet predicted{"model", "", {}, {kerf::WidthBasis::total(1e-3)},
+  const kerf::DataSet predicted{"model",
+                                "",
+                                {},
+                                {kerf::WidthBasis::total(1e-3)},
                                 {row("regular", 0.1000000001, 13), row("regular", 0.2, 22), row("regular", 0.3, 30)}};
   const auto c = kerf::compare(spec, measured, {{predicted, {}}});
   const auto& r = c.result("main_force");
@@ -102,8 +108,10 @@ TEST_CASE("Width bases convert through the force per unit width", "[report][widt
   using kerf::WidthBasis;
   CHECK_THAT(kerf::to_per_unit_width(25.4, WidthBasis::total(25.4e-3)), WithinRel(1000.0, 1e-14));  // N/m
   CHECK_THAT(kerf::to_per_unit_width(3.0, WidthBasis::per_unit_width()), WithinRel(3.0, 1e-15));
-  CHECK_THAT(kerf::convert_width_basis(25.4, WidthBasis::total(25.4e-3), WidthBasis::total(1e-3)), WithinRel(1.0, 1e-14));
-  CHECK_THAT(kerf::convert_width_basis(0.7, WidthBasis::per_unit_width(), WidthBasis::total(2e-3)), WithinRel(1.4e-3, 1e-14));
+  CHECK_THAT(kerf::convert_width_basis(25.4, WidthBasis::total(25.4e-3), WidthBasis::total(1e-3)),
+             WithinRel(1.0, 1e-14));
+  CHECK_THAT(kerf::convert_width_basis(0.7, WidthBasis::per_unit_width(), WidthBasis::total(2e-3)),
+             WithinRel(1.4e-3, 1e-14));
   CHECK_THROWS_AS(kerf::to_per_unit_width(1.0, WidthBasis::none()), kerf::InputError);
   CHECK_THROWS_AS(kerf::to_per_unit_width(1.0, WidthBasis::total(0.0)), kerf::InputError);
   CHECK(WidthBasis::total(25.4e-3).describe() == "total force over a 25.4 mm width");
@@ -111,10 +119,17 @@ TEST_CASE("Width bases convert through the force per unit width", "[report][widt
 
 TEST_CASE("Yang et al. 2018: experiment (25.4 mm) against the paper's DEM (1 mm) needs an explicit width view",
           "[report][width]") {
-  const auto table = kerf::read_csv_file(std::string(KERF_SOURCE_DIR) + "/data/experiments/soda_lime_orthogonal_cutting.csv");
+  const auto table =
+      kerf::read_csv_file(std::string(KERF_SOURCE_DIR) + "/data/experiments/soda_lime_orthogonal_cutting.csv");
   auto spec = depth_spec();
-  kerf::CsvBinding experiment{"experiment", {"surface", "depth_of_cut_mm"}, {1.0, 1e-3}, {"main_force_N"}, {1.0},
-                              {kerf::WidthBasis::total(0.0)}, {{"source", "experiment"}}, "width_mm"};
+  kerf::CsvBinding experiment{"experiment",
+                              {"surface", "depth_of_cut_mm"},
+                              {1.0, 1e-3},
+                              {"main_force_N"},
+                              {1.0},
+                              {kerf::WidthBasis::total(0.0)},
+                              {{"source", "experiment"}},
+                              "width_mm"};
   kerf::CsvBinding dem = experiment;
   dem.name = "paper's DEM";
   dem.row_filter = {{"source", "paper_dem"}};
@@ -146,7 +161,8 @@ TEST_CASE("Yang et al. 2018: experiment (25.4 mm) against the paper's DEM (1 mm)
   CHECK_FALSE(direct.note.empty());
   // Per unit width: 16.5 N / 25.4 mm against 14.977 N / 1 mm: the DEM is 23 times the experiment.
   CHECK_THAT(per_width.groups[0].measured_stats.mean, WithinRel(exp_mean / 25.4e-3, 1e-12));
-  CHECK_THAT(per_width.groups[0].error_percent, WithinRel(100.0 * (dem_mean / 1.0 - exp_mean / 25.4) / (exp_mean / 25.4), 1e-12));
+  CHECK_THAT(per_width.groups[0].error_percent,
+             WithinRel(100.0 * (dem_mean / 1.0 - exp_mean / 25.4) / (exp_mean / 25.4), 1e-12));
   CHECK(per_width.unit.label == "N/mm");
   const auto csv = kerf::comparison_csv(c);
   CHECK(csv.find("main_force_per_width_measured_N_per_mm") != std::string::npos);
@@ -157,19 +173,28 @@ TEST_CASE("Yang et al. 2018: experiment (25.4 mm) against the paper's DEM (1 mm)
 
 TEST_CASE("A width column that changes within one data set is refused, naming the cell", "[report][width][errors]") {
   const auto table = kerf::parse_csv("surface,depth_mm,width_mm,f_N\nregular,0.1,25.4,10\nregular,0.2,1,11\n", "w.csv");
-  const kerf::CsvBinding b{"mixed", {"surface", "depth_mm"}, {1.0, 1e-3}, {"f_N"}, {1.0}, {kerf::WidthBasis::total(0.0)}, {}, "width_mm"};
+  const kerf::CsvBinding b{"mixed", {"surface", "depth_mm"},        {1.0, 1e-3}, {"f_N"},
+                           {1.0},   {kerf::WidthBasis::total(0.0)}, {},          "width_mm"};
   CHECK_THROWS_WITH(kerf::dataset_from_csv(table, depth_spec(), b),
                     "w.csv:3: column 3 'width_mm' = 1: expected the width of the other rows of 'mixed' (25.4 mm)");
 }
 
 TEST_CASE("The report directory: summary, CSV and plots, written whole", "[report][files]") {
   const auto spec = depth_spec();
-  const kerf::DataSet measured{"measured", "hand.csv", {"Source: hand-made"}, {kerf::WidthBasis::total(1e-3)},
-                               {row("regular", 0.1, 10, 2), row("regular", 0.1, 12, 3), row("regular", 0.2, 20, 4),
-                                row("regular", 0.3, 28, 5)}};
-  const kerf::DataSet predicted{"model", "", {}, {kerf::WidthBasis::total(1e-3)},
+  const kerf::DataSet measured{
+      "measured",
+      "hand.csv",
+      {"Source: hand-made"},
+      {kerf::WidthBasis::total(1e-3)},
+      {row("regular", 0.1, 10, 2), row("regular", 0.1, 12, 3), row("regular", 0.2, 20, 4), row("regular", 0.3, 28, 5)}};
+  const kerf::DataSet predicted{"model",
+                                "",
+                                {},
+                                {kerf::WidthBasis::total(1e-3)},
                                 {row("regular", 0.1, 11), row("regular", 0.2, 19), row("regular", 0.3, 30)}};
-  kerf::ModelCurve curve = [](const std::vector<kerf::ConditionValue>& c) { return std::vector<double>{*c[1].si * 1e5}; };
+  kerf::ModelCurve curve = [](const std::vector<kerf::ConditionValue>& c) {
+    return std::vector<double>{*c[1].si * 1e5};
+  };
   const auto c = kerf::compare(spec, measured, {{predicted, curve}});
   const fs::path dir = fresh_directory("report_files");
   const auto files = kerf::write_report(c, dir);

@@ -11,9 +11,9 @@
 #include <cmath>
 #include <vector>
 
+#include "kerf/dem/engine/simulation.hpp"
 #include "kerf/dem/procedures/cut_window.hpp"
 #include "kerf/dem/procedures/cutting.hpp"
-#include "kerf/dem/engine/simulation.hpp"
 #include "quick_specimen.hpp"
 
 using namespace kerf::dem;
@@ -135,7 +135,7 @@ TEST_CASE("absorbing layer: a wave along an undamped chain keeps its energy off 
   for (int s = 0; s < steps; ++s) bare.step(), sponge.step();
   INFO("energy left: " << energy(bare) / e0 << " without the layer, " << energy(sponge) / e0 << " with it");
   CHECK_THAT(energy(bare), WithinRel(e0, 0.01));  // undamped and elastic: conserved, reflected by the held end
-  CHECK(energy(sponge) < 0.02 * e0);               // the layer took it out (3 e-folds each way: about e^-6)
+  CHECK(energy(sponge) < 0.02 * e0);              // the layer took it out (3 e-folds each way: about e^-6)
 }
 
 TEST_CASE("absorbing layer: the window ramps the rate from its ahead, behind and lower edges", "[absorbing_layer]") {
@@ -170,14 +170,17 @@ TEST_CASE("absorbing layer: the window ramps the rate from its ahead, behind and
   CHECK(inside > 20);
 }
 
-TEST_CASE("absorbing layer: a windowed cut with a layer differs from one without (it is applied)", "[absorbing_layer]") {
+TEST_CASE("absorbing layer: a windowed cut with a layer differs from one without (it is applied)",
+          "[absorbing_layer]") {
   // (Restored halfway, a cut with a layer goes on to the bit: cut_window_test.cpp.)
   const Simulation specimen = kerf::dem::testing::quick_workpiece_specimen(0.6e-3, 0.25e-3, 7);
   CutRun with(specimen, windowed_with_layer(1)), without(specimen, windowed_with_layer(0));
   REQUIRE(!with.simulation().absorbing_rates().empty());
   REQUIRE(without.simulation().absorbing_rates().empty());
-  while (with.advance()) {}
-  while (without.advance()) {}
+  while (with.advance()) {
+  }
+  while (without.advance()) {
+  }
   CHECK(without.result().main_force_n != with.result().main_force_n);
 }
 
@@ -191,7 +194,6 @@ TEST_CASE("absorbing layer: its keys are validated with their dotted names", "[a
   p = windowed_with_layer(-1);
   CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains("active_window.absorbing_depths = -1"));
 }
-
 
 TEST_CASE("absorbing layer along the held rows: every disk active, ramped from the held left side and bottom",
           "[absorbing_layer]") {
@@ -223,8 +225,10 @@ TEST_CASE("absorbing layer along the held rows: every disk active, ramped from t
     const double d = std::min(dx, dy);
     const double expected = d < layer ? peak * std::pow(1 - d / layer, 2) : 0.0;
     CHECK_THAT(rates[u], WithinRel(expected, 1e-12));
-    if (d >= layer) ++inside;
-    else (dx < dy ? in_left : in_bottom) += 1;
+    if (d >= layer)
+      ++inside;
+    else
+      (dx < dy ? in_left : in_bottom) += 1;
   }
   CHECK(in_left > 10);
   CHECK(in_bottom > 20);
@@ -276,8 +280,10 @@ TEST_CASE("absorbing layer along the held rows: applied, with every disk active"
   CutRun without(specimen, p);
   p.held_absorbing_depths = 1;
   CutRun with(specimen, p);
-  while (with.advance()) {}
-  while (without.advance()) {}
+  while (with.advance()) {
+  }
+  while (without.advance()) {
+  }
   CHECK(without.result().main_force_n != with.result().main_force_n);
   CHECK(std::isfinite(with.result().main_force_n));
 }
@@ -290,8 +296,8 @@ TEST_CASE("absorbing layer along the held rows: its key is validated against the
   // From the held bottom rows (about 26 um up) to the cut line (0.05 mm under the 0.25 mm top): about 0.17 mm,
   // 3.5 depths of cut; a layer that thick would reach the cut line.
   p.held_absorbing_depths = 3.6;
-  CHECK_THROWS_WITH(CutRun(specimen, p), Catch::Contains("cut.held_absorbing_depths = 3.6") &&
-                                             Catch::Contains("below the cut line"));
+  CHECK_THROWS_WITH(CutRun(specimen, p),
+                    Catch::Contains("cut.held_absorbing_depths = 3.6") && Catch::Contains("below the cut line"));
   // The tool must stop before the left side's layer: 0.6 mm less 2.5 largest radii and the layer.
   p.held_absorbing_depths = 2;
   p.length_m = 0.5e-3;

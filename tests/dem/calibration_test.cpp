@@ -22,7 +22,9 @@ using Catch::Matchers::WithinRel;
 
 namespace {
 
-SpecimenSpec tiny_spec() { return kerf::dem::testing::quick_random_spec(0.16e-3, 0.32e-3, 3); }
+SpecimenSpec tiny_spec() {
+  return kerf::dem::testing::quick_random_spec(0.16e-3, 0.32e-3, 3);
+}
 
 Simulation tiny_specimen() {
   SpecimenReport report;
@@ -55,14 +57,16 @@ LoadingSpec loading(LabTest test) {
 TEST_CASE("calibration: E follows E*, strengths follow (sigma_c, c)", "[calibration]") {
   const Simulation specimen = tiny_specimen();
   const Material base;
-  const MacroProperties a = measure_macro_properties(specimen, loading(LabTest::tension), loading(LabTest::compression));
+  const MacroProperties a =
+      measure_macro_properties(specimen, loading(LabTest::tension), loading(LabTest::compression));
   Material stiffer = base;
   std::get<LinearContactParams>(stiffer.contact).effective_modulus_pa *= 1.5;
   std::get<FlatJointParams>(stiffer.joint).bond.effective_modulus_pa *= 1.5;
-  std::get<FlatJointParams>(stiffer.joint).bond.tensile_strength_pa *= 1.5;  // same strain to failure: the time scale stays the same
+  std::get<FlatJointParams>(stiffer.joint).bond.tensile_strength_pa *=
+      1.5;  // same strain to failure: the time scale stays the same
   std::get<FlatJointParams>(stiffer.joint).bond.cohesion_pa *= 1.5;
-  const MacroProperties b =
-      measure_macro_properties(with_material(specimen, stiffer), loading(LabTest::tension), loading(LabTest::compression));
+  const MacroProperties b = measure_macro_properties(with_material(specimen, stiffer), loading(LabTest::tension),
+                                                     loading(LabTest::compression));
   CHECK_THAT(b.youngs_modulus_pa, WithinRel(1.5 * a.youngs_modulus_pa, 0.01));
   CHECK_THAT(b.poissons_ratio, WithinRel(a.poissons_ratio, 0.02));
   CHECK_THAT(b.tensile_strength_pa, WithinRel(1.5 * a.tensile_strength_pa, 0.03));
@@ -93,8 +97,10 @@ namespace {
 
 CalibrationSpec reachable_spec(std::span<const SpecimenSource> sources) {
   Material hidden;
-  std::get<LinearContactParams>(hidden.contact).effective_modulus_pa = std::get<FlatJointParams>(hidden.joint).bond.effective_modulus_pa = 80e9;
-  std::get<LinearContactParams>(hidden.contact).stiffness_ratio = std::get<FlatJointParams>(hidden.joint).bond.stiffness_ratio = 2.5;
+  std::get<LinearContactParams>(hidden.contact).effective_modulus_pa =
+      std::get<FlatJointParams>(hidden.joint).bond.effective_modulus_pa = 80e9;
+  std::get<LinearContactParams>(hidden.contact).stiffness_ratio =
+      std::get<FlatJointParams>(hidden.joint).bond.stiffness_ratio = 2.5;
   std::get<FlatJointParams>(hidden.joint).bond.tensile_strength_pa = 150e6;
   std::get<FlatJointParams>(hidden.joint).bond.cohesion_pa = 180e6;
   CalibrationSpec spec;
@@ -146,7 +152,8 @@ TEST_CASE("calibration: recovers reachable targets within 3 % on a small specime
     CHECK(known.back().wall_time_s == saved.back().wall_time_s);
     const CalibrationResult resumed = calibrate(sources, Material{}, spec, {}, known);
     check_same_log(r.log, resumed.log);
-    for (std::size_t i = 0; i < resumed.log.size(); ++i) CHECK(resumed.log[i].from_checkpoint == (i + 1 < r.log.size()));
+    for (std::size_t i = 0; i < resumed.log.size(); ++i)
+      CHECK(resumed.log[i].from_checkpoint == (i + 1 < r.log.size()));
     CHECK(resumed.converged);
     CHECK(same_micro_parameters(resumed.material, r.material));
   }
@@ -203,7 +210,8 @@ TEST_CASE("calibration: evaluations serialise bit-exactly, corrupt bytes are rej
   CHECK_THROWS_AS(deserialize_evaluations(std::string_view(bytes).substr(0, bytes.size() - 1)), kerf::ModelError);
   Material other = e.material;
   CHECK(same_micro_parameters(other, e.material));
-  std::get<FlatJointParams>(other.joint).bond.cohesion_pa = std::nextafter(std::get<FlatJointParams>(other.joint).bond.cohesion_pa, 1.0);
+  std::get<FlatJointParams>(other.joint).bond.cohesion_pa =
+      std::nextafter(std::get<FlatJointParams>(other.joint).bond.cohesion_pa, 1.0);
   CHECK_FALSE(same_micro_parameters(other, e.material));
 }
 

@@ -1,16 +1,16 @@
 #include "kerf/dem/engine/checkpoint.hpp"
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cstdint>
-#include <algorithm>
 #include <cstring>
 #include <new>
 #include <variant>
 
+#include "../../dem/engine/serial.hpp"
+#include "kerf/dem/engine/simulation.hpp"
 #include "kerf/dem/procedures/calibration.hpp"
 #include "kerf/dem/procedures/cutting.hpp"
-#include "kerf/dem/engine/simulation.hpp"
-#include "../../dem/engine/serial.hpp"
 #include "kerf/error.hpp"
 
 using kerf::dem::Checkpoint;
@@ -127,20 +127,21 @@ LawBytes law_bytes(const Material& m) {
   serial::put_law(out.records, m.contact);
   serial::put_law(out.records, m.joint);
   const auto& c = std::get<LinearContactParams>(m.contact);
-  const legacy::ContactLaw6 contact6 = legacy::Linear6{c.effective_modulus_pa, c.stiffness_ratio, c.friction_coefficient};
+  const legacy::ContactLaw6 contact6 =
+      legacy::Linear6{c.effective_modulus_pa, c.stiffness_ratio, c.friction_coefficient};
   alignas(legacy::BondLaw6) unsigned char joint6[sizeof(legacy::BondLaw6)];
   std::memset(joint6, 0xAA, sizeof joint6);  // the padding and the index's place told apart
   if (const auto* f = std::get_if<FlatJointParams>(&m.joint))
-    new (joint6) legacy::BondLaw6(legacy::FlatJoint6{
-        f->bond.effective_modulus_pa, f->bond.stiffness_ratio, f->bond.tensile_strength_pa, f->bond.cohesion_pa,
-        f->bond.friction_angle_rad, f->residual_friction_coefficient, f->n_elements, f->bond.radius_multiplier,
-        f->tan_friction_angle});
+    new (joint6) legacy::BondLaw6(legacy::FlatJoint6{f->bond.effective_modulus_pa, f->bond.stiffness_ratio,
+                                                     f->bond.tensile_strength_pa, f->bond.cohesion_pa,
+                                                     f->bond.friction_angle_rad, f->residual_friction_coefficient,
+                                                     f->n_elements, f->bond.radius_multiplier, f->tan_friction_angle});
   else {
     const auto& p = std::get<ParallelBondParams>(m.joint);
     const BondStiffnessStrength& b = p.bond;
-    new (joint6) legacy::BondLaw6(legacy::ParallelBond6{b.effective_modulus_pa, b.stiffness_ratio, b.tensile_strength_pa,
-                                                        b.cohesion_pa, b.friction_angle_rad, b.radius_multiplier,
-                                                        p.tan_friction_angle});
+    new (joint6) legacy::BondLaw6(legacy::ParallelBond6{b.effective_modulus_pa, b.stiffness_ratio,
+                                                        b.tensile_strength_pa, b.cohesion_pa, b.friction_angle_rad,
+                                                        b.radius_multiplier, p.tan_friction_angle});
   }
   serial::put_raw(out.raw, contact6);
   // The variant keeps its index in the first byte past its largest alternative.
@@ -214,8 +215,10 @@ TEST_CASE("checkpoint: a law record of an unknown name, a missing key or a value
   CHECK_THROWS_AS(serial::law_from_record<BondLaw>(r), kerf::ModelError);
 }
 
-TEST_CASE("checkpoint: engine states of KERFDEM7 (no element damage) and KERFDEM6 (also the laws as raw variants) "
-          "read the same state, and another version is refused naming it", "[checkpoint]") {
+TEST_CASE(
+    "checkpoint: engine states of KERFDEM7 (no element damage) and KERFDEM6 (also the laws as raw variants) "
+    "read the same state, and another version is refused naming it",
+    "[checkpoint]") {
   for (const BondLaw& joint : {BondLaw(odd_flat_joint()), BondLaw(odd_parallel_bond())}) {
     Simulation sim(odd_material(joint), SimulationOptions{});
     const int a = sim.add_particle(0, 0, 10e-6), b = sim.add_particle(19e-6, 0, 10e-6);
@@ -301,10 +304,11 @@ TEST_CASE("checkpoint: a calibration log of KERFCAL3 (the laws as raw variants) 
 namespace {
 using kerf::dem::CutParams;
 const std::array<kerf::dem::serial::SectionFields<CutParams>, 4>& cut_tables() {
-  static const std::array<kerf::dem::serial::SectionFields<CutParams>, 4> t{{{"cut", kerf::dem::cut_fields()},
-                                                                             {"tool", kerf::dem::tool_fields()},
-                                                                             {"grooves", kerf::dem::groove_fields()},
-                                                                             {"active_window", kerf::dem::active_window_fields()}}};
+  static const std::array<kerf::dem::serial::SectionFields<CutParams>, 4> t{
+      {{"cut", kerf::dem::cut_fields()},
+       {"tool", kerf::dem::tool_fields()},
+       {"grooves", kerf::dem::groove_fields()},
+       {"active_window", kerf::dem::active_window_fields()}}};
   return t;
 }
 /// Every field of the cut's tables as one text: key, then the value's bits (numbers) or index (choices).
@@ -312,18 +316,20 @@ std::string cut_fields_text(const CutParams& p) {
   std::string text;
   for (const auto& sf : cut_tables())
     for (const auto& field : sf.table)
-      std::visit([&](const auto& f) {
-        text += std::string(sf.section) + "." + std::string(f.key) + "=";
-        const auto v = f.get(p);
-        using V = std::decay_t<decltype(v)>;
-        if constexpr (std::is_same_v<V, double>) {
-          std::uint64_t bits = 0;
-          std::memcpy(&bits, &v, sizeof v);
-          text += std::to_string(bits) + ";";
-        } else if constexpr (std::is_integral_v<V>) {
-          text += std::to_string(static_cast<long long>(v)) + ";";
-        }  // no other kind of field in the cut's tables (put_fields would refuse one)
-      }, field);
+      std::visit(
+          [&](const auto& f) {
+            text += std::string(sf.section) + "." + std::string(f.key) + "=";
+            const auto v = f.get(p);
+            using V = std::decay_t<decltype(v)>;
+            if constexpr (std::is_same_v<V, double>) {
+              std::uint64_t bits = 0;
+              std::memcpy(&bits, &v, sizeof v);
+              text += std::to_string(bits) + ";";
+            } else if constexpr (std::is_integral_v<V>) {
+              text += std::to_string(static_cast<long long>(v)) + ";";
+            }  // no other kind of field in the cut's tables (put_fields would refuse one)
+          },
+          field);
   return text;
 }
 }  // namespace
@@ -338,14 +344,20 @@ TEST_CASE(
   int k = 0;
   for (const auto& sf : cut_tables())
     for (const auto& field : sf.table)
-      std::visit([&](const auto& f) {
-        using F = std::decay_t<decltype(f)>;
-        ++k;
-        if constexpr (std::is_same_v<F, kerf::NumberField<CutParams>>) f.set(p, 1e-3 * k + 1.0 / 3);
-        else if constexpr (std::is_same_v<F, kerf::IntField<CutParams>>) f.set(p, f.hi);
-        else if constexpr (std::is_same_v<F, kerf::BoolField<CutParams>>) f.set(p, !f.get(CutParams{}));
-        else if constexpr (std::is_same_v<F, kerf::ChoiceField<CutParams>>) f.set(p, static_cast<int>(f.names.size()) - 1);
-      }, field);
+      std::visit(
+          [&](const auto& f) {
+            using F = std::decay_t<decltype(f)>;
+            ++k;
+            if constexpr (std::is_same_v<F, kerf::NumberField<CutParams>>)
+              f.set(p, 1e-3 * k + 1.0 / 3);
+            else if constexpr (std::is_same_v<F, kerf::IntField<CutParams>>)
+              f.set(p, f.hi);
+            else if constexpr (std::is_same_v<F, kerf::BoolField<CutParams>>)
+              f.set(p, !f.get(CutParams{}));
+            else if constexpr (std::is_same_v<F, kerf::ChoiceField<CutParams>>)
+              f.set(p, static_cast<int>(f.names.size()) - 1);
+          },
+          field);
   REQUIRE(cut_fields_text(p) != cut_fields_text(CutParams{}));
   std::string bytes;
   serial::put_fields(bytes, cut_tables(), p);

@@ -47,7 +47,7 @@ inline void unbond(Simulation& sim, F cut) {
 /// Puts the default tool with its tip at `tip_m` (its lowest point; the front-most of them) and initialises; returns
 /// the tip as edge_meets takes it.
 inline std::array<double, 2> place_tool(Simulation& sim, std::array<double, 2> tip_m, std::int32_t& first_wall,
-                                 std::int32_t& n_walls) {
+                                        std::int32_t& n_walls) {
   CutParams p;
   auto outline = tool_outline(p, 0, tip_m[1]);
   double x_tip = outline[0][0], y_low = outline[0][1];

@@ -18,10 +18,13 @@ TEST_CASE("cut calibration: the strength factor scales both bond strengths and n
   CHECK(same_micro_parameters(same, m));
   const Material s = scale_bond_strengths(m, 1.5, "glass_x1.5");
   CHECK(s.name == "glass_x1.5");
-  CHECK(std::get<FlatJointParams>(s.joint).bond.tensile_strength_pa == 1.5 * std::get<FlatJointParams>(m.joint).bond.tensile_strength_pa);
-  CHECK(std::get<FlatJointParams>(s.joint).bond.cohesion_pa == 1.5 * std::get<FlatJointParams>(m.joint).bond.cohesion_pa);
+  CHECK(std::get<FlatJointParams>(s.joint).bond.tensile_strength_pa ==
+        1.5 * std::get<FlatJointParams>(m.joint).bond.tensile_strength_pa);
+  CHECK(std::get<FlatJointParams>(s.joint).bond.cohesion_pa ==
+        1.5 * std::get<FlatJointParams>(m.joint).bond.cohesion_pa);
   Material back = s;
-  std::get<FlatJointParams>(back.joint).bond.tensile_strength_pa = std::get<FlatJointParams>(m.joint).bond.tensile_strength_pa;
+  std::get<FlatJointParams>(back.joint).bond.tensile_strength_pa =
+      std::get<FlatJointParams>(m.joint).bond.tensile_strength_pa;
   std::get<FlatJointParams>(back.joint).bond.cohesion_pa = std::get<FlatJointParams>(m.joint).bond.cohesion_pa;
   CHECK(same_micro_parameters(back, m));  // moduli, stiffness ratios, friction, damping untouched
   CHECK_THROWS_AS(scale_bond_strengths(m, 0.0, "x"), kerf::ModelError);

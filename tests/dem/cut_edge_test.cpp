@@ -1,21 +1,21 @@
 // What a cut's edge meets (issue 54 item 2; kerf/dem/procedures/cutting.hpp, CutEdgeRecord): on constructed scenes
 // with known answers. An intact block under the edge is tied glass, a bed of loose disks is not, the air is nothing;
 // the tied share by depth ahead of and behind the tip on a block whose top layer ahead of the tip is unbonded; and
-// through whole cuts (an unbreakable block in an active window: every disk tied; a loose bed: none), resumed from a checkpoint
-// to the same counts, and from an older one (KERFCUT9) without a record.
+// through whole cuts (an unbreakable block in an active window: every disk tied; a loose bed: none), resumed from a
+// checkpoint to the same counts, and from an older one (KERFCUT9) without a record.
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <catch2/catch.hpp>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
 
+#include "cut_blocks.hpp"
 #include "kerf/dem/procedures/cut_window.hpp"
 #include "kerf/dem/procedures/cutting.hpp"
 #include "kerf/dem/procedures/specimen.hpp"
-#include "cut_blocks.hpp"
 
 using namespace kerf::dem;
 
@@ -70,12 +70,13 @@ TEST_CASE("cut edge: the tied share by depth below the cut line, ahead of and be
 namespace {
 
 /// Observations over the steady travel: one per kEdgeObserveTravelM.
-double expected_observations(const CutParams& p) { return (1 - p.entry_fraction) * p.length_m / kEdgeObserveTravelM; }
+double expected_observations(const CutParams& p) {
+  return (1 - p.entry_fraction) * p.length_m / kEdgeObserveTravelM;
+}
 
 }  // namespace
 
-TEST_CASE("cut edge: through a whole cut, an unbreakable block is tied glass, a loose bed none",
-          "[cut_edge]") {
+TEST_CASE("cut edge: through a whole cut, an unbreakable block is tied glass, a loose bed none", "[cut_edge]") {
   {
     const CutParams p = block_cut(true);
     CutRun run(hex_workpiece(kerf::dem::testing::conservative_material(), 0.6e-3, 0.25e-3), p);

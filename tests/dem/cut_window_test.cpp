@@ -60,7 +60,8 @@ TEST_CASE("cut window: the window's size does not grow with the workpiece: chips
   p.length_m = 0.2e-3;
   const auto cut = [&](double width_m) {
     CutRun run(quick_workpiece_specimen(width_m, 0.25e-3, 5), p);
-    while (run.advance()) {}
+    while (run.advance()) {
+    }
     return run;
   };
   const CutRun small = cut(0.6e-3), large = cut(1.2e-3);
@@ -73,7 +74,7 @@ TEST_CASE("cut window: the window's size does not grow with the workpiece: chips
   CHECK(count(a.window.largest_window_particles) < 0.7 * count(a.n_particles));
   const double steps_a = static_cast<double>(a.samples.size() - 1), steps_b = static_cast<double>(b.samples.size() - 1);
   CHECK(b.particle_steps / steps_b < 1.2 * a.particle_steps / steps_a);  // particle-steps per sample
-  CHECK(b.window.rebuilds >= 15);  // 0.2 mm of travel in shifts of 0.01 mm
+  CHECK(b.window.rebuilds >= 15);                                        // 0.2 mm of travel in shifts of 0.01 mm
 
   // The finished workpiece: disks far ahead of the window never moved; every disk at rest but the window's
   // own; the chip's disks are counted with their mass, and cracks of their joints among the cut's cracks.
@@ -125,12 +126,14 @@ TEST_CASE("cut window: restored halfway, a windowed cut goes on to the bit", "[c
     p.held_absorbing_depths = held_layer;
     CutRun whole(specimen, p);
     REQUIRE(whole.simulation().absorbing_rates().empty() == (layer == 0));
-    while (whole.advance()) {}
+    while (whole.advance()) {
+    }
     CutRun half(specimen, p);
     for (std::size_t k = 0; k < whole.result().samples.size() / 2; ++k) half.advance();
     CutRun restored = CutRun::deserialize(half.serialize());
     CHECK(restored.simulation().absorbing_rates() == half.simulation().absorbing_rates());
-    while (restored.advance()) {}
+    while (restored.advance()) {
+    }
     const CutResult &a = whole.result(), &b = restored.result();
     REQUIRE(a.samples.size() == b.samples.size());
     for (std::size_t k = 0; k < a.samples.size(); ++k) {
@@ -181,7 +184,8 @@ TEST_CASE("cut window: loose fragments above the cut line are removed at a rebui
     auto& b = w.bonds();
     for (std::size_t k = 0; k < b.size(); ++k)
       if (in[static_cast<std::size_t>(b.i[k])] != in[static_cast<std::size_t>(b.j[k])])
-        for (int e = 0; e < b.stride; ++e) b.bonded[k * static_cast<std::size_t>(b.stride) + static_cast<std::size_t>(e)] = 0;
+        for (int e = 0; e < b.stride; ++e)
+          b.bonded[k * static_cast<std::size_t>(b.stride) + static_cast<std::size_t>(e)] = 0;
     w.initialise();
     CutWindow window(std::move(w), window_box_m(p), y_top, y_cut);
     window.set_remove_loose_fragments(remove);
@@ -318,7 +322,7 @@ TEST_CASE("cut window: contacts between two held disks are left out when asked",
     sim.particles().group[static_cast<std::size_t>(b)] = 1;
     sim.initialise();
     INFO("skip_held_pairs " << skip);
-    CHECK(sim.n_touching_pairs() == (skip ? 1 : 2));  // held-held left out; held-free kept
+    CHECK(sim.n_touching_pairs() == (skip ? 1 : 2));             // held-held left out; held-free kept
     CHECK(sim.particles().fx[static_cast<std::size_t>(c)] < 0);  // the free disk is pushed off the held one
   }
 }

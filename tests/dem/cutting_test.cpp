@@ -56,11 +56,11 @@ TEST_CASE("cutting: groove outline membership", "[cutting]") {
 }
 
 TEST_CASE("cutting: distance to a groove's walls and bottom", "[cutting]") {
-  const CutParams rect = grooved(GrooveShape::rectangular);  // half-width 0.03 mm, depth 0.1 mm
-  CHECK(distance_to_groove_outline(rect, 0.01e-3, 0.05e-3) == 0);                          // inside
-  CHECK_THAT(distance_to_groove_outline(rect, 0.04e-3, 0.05e-3), WithinAbs(0.01e-3, 1e-12));  // beside a wall
+  const CutParams rect = grooved(GrooveShape::rectangular);        // half-width 0.03 mm, depth 0.1 mm
+  CHECK(distance_to_groove_outline(rect, 0.01e-3, 0.05e-3) == 0);  // inside
+  CHECK_THAT(distance_to_groove_outline(rect, 0.04e-3, 0.05e-3), WithinAbs(0.01e-3, 1e-12));   // beside a wall
   CHECK_THAT(distance_to_groove_outline(rect, -0.04e-3, 0.05e-3), WithinAbs(0.01e-3, 1e-12));  // symmetric
-  CHECK_THAT(distance_to_groove_outline(rect, 0, 0.12e-3), WithinAbs(0.02e-3, 1e-12));        // below the bottom
+  CHECK_THAT(distance_to_groove_outline(rect, 0, 0.12e-3), WithinAbs(0.02e-3, 1e-12));         // below the bottom
   CHECK_THAT(distance_to_groove_outline(rect, 0.06e-3, 0.14e-3), WithinAbs(0.05e-3, 1e-12));   // off the corner: 3-4-5
   // The inverted trapezoid: the wall from (0.03, 0) to (0.01, 0.1) mm. A point on the wall's outward normal
   // through its midpoint (0.02, 0.05), 0.01 mm out, is 0.01 mm from it.
@@ -111,8 +111,10 @@ TEST_CASE("cutting: the grooves' laser-affected layer breaks the joints near the
     const double x = 0.5 * (q.x[i] + q.x[j]), depth = y_top - 0.5 * (q.y[i] + q.y[j]);
     double d = 1;
     for (double c : centres) d = std::min(d, distance_to_groove_outline(g, x - c, depth));
-    if (d > g.groove_damage_depth_m) CHECK(b.n_bonded_elements(k) == pristine.bonds().n_bonded_elements(k));
-    else CHECK(b.n_bonded_elements(k) == 0);
+    if (d > g.groove_damage_depth_m)
+      CHECK(b.n_bonded_elements(k) == pristine.bonds().n_bonded_elements(k));
+    else
+      CHECK(b.n_bonded_elements(k) == 0);
   }
   // Half of them: a binomial share (6 sigma), the same joints on a second call, none when the share is 0.
   g.groove_damage_broken_fraction = 0.5;
@@ -137,7 +139,8 @@ TEST_CASE("cutting: grooves every pitch across the cut path", "[cutting]") {
   CutParams p = grooved(GrooveShape::rectangular);
   auto c = groove_centres(p, 0, 1e-3);
   REQUIRE(c.size() == 5);  // 0.9, 0.7, 0.5, 0.3, 0.1 mm: the last still right of the left edge
-  for (std::size_t k = 0; k < c.size(); ++k) CHECK_THAT(c[k], WithinAbs(0.9e-3 - 0.2e-3 * static_cast<double>(k), 1e-12));
+  for (std::size_t k = 0; k < c.size(); ++k)
+    CHECK_THAT(c[k], WithinAbs(0.9e-3 - 0.2e-3 * static_cast<double>(k), 1e-12));
   p.length_m = 0.3e-3;  // the whole surface is grooved, not only the tool's path
   CHECK(groove_centres(p, 0, 1e-3) == c);
   CHECK(groove_centres(p, 0.15e-3, 1e-3).size() == 4);  // 0.1 mm would reach past a left edge at 0.15 mm
@@ -161,7 +164,8 @@ TEST_CASE("cutting: tool faces have the rake and clearance angles, tip at the cu
   CHECK_THAT(angle_deg(v[1], v[2]), WithinAbs(15, 1e-9));
   // First contact with a workpiece whose top is one depth of cut above the tip: the rake face there,
   // 0.1 mm tan 15 deg ahead of the tip.
-  CHECK_THAT(leading_x_in_band(v, 0.5e-3, 0.6e-3), WithinAbs(v[1][0] - 0.1e-3 * std::tan(15 * std::numbers::pi / 180), 1e-12));
+  CHECK_THAT(leading_x_in_band(v, 0.5e-3, 0.6e-3),
+             WithinAbs(v[1][0] - 0.1e-3 * std::tan(15 * std::numbers::pi / 180), 1e-12));
   p.rake_deg = 10;
   p.clearance_deg = 7;
   const auto w = tool_outline(p, 0, 0);
@@ -222,8 +226,8 @@ TEST_CASE("cutting: force signs (material resisting the tool gives positive main
     // Tip 5 um below the disk's centre, rake face crossing y = 0 at x = 8 um: it overlaps the disk's right side.
     const double x_front = 8e-6 - 55e-6 * std::tan(15 * std::numbers::pi / 180);
     const auto v = tool_outline(p, x_front, -5e-6);
-    sim.add_wall({v[static_cast<std::size_t>(a)][0], v[static_cast<std::size_t>(a)][1], v[static_cast<std::size_t>(b)][0],
-                  v[static_cast<std::size_t>(b)][1], -1, 0});
+    sim.add_wall({v[static_cast<std::size_t>(a)][0], v[static_cast<std::size_t>(a)][1],
+                  v[static_cast<std::size_t>(b)][0], v[static_cast<std::size_t>(b)][1], -1, 0});
   }
   sim.initialise();
   sim.evaluate_forces();
@@ -301,11 +305,11 @@ TEST_CASE("cutting: mean forces per travel window", "[cutting]") {
   CHECK(n == static_cast<int>(samples.size()));  // every sample in exactly one window
   double direct = 0;
   for (const auto& s : samples) direct += s.main_force_n;
-  CHECK_THAT(sum, WithinRel(direct, 1e-12));      // the windows' weighted means give back the whole mean
+  CHECK_THAT(sum, WithinRel(direct, 1e-12));  // the windows' weighted means give back the whole mean
   CHECK(w[0].main_force_n == 1.0);
   CHECK(w[4].main_force_n == 3.0);
   CHECK_THAT(w[5].to_m, WithinAbs(0.6e-3, 1e-18));
-  CHECK(w[5].n_samples == 101);  // the sample at the end of the travel goes to the last window
+  CHECK(w[5].n_samples == 101);               // the sample at the end of the travel goes to the last window
   for (std::size_t k = 0; k < w.size(); ++k)  // a linear force: each window's mean is its mid-travel value
     CHECK_THAT(w[k].thrust_force_n, WithinAbs(0.1 * (static_cast<double>(k) + 0.5), 0.001));
   // A window longer than the travel: one window, the whole mean.
@@ -424,7 +428,8 @@ TEST_CASE("cutting: a small cut regression (forces, cracks, determinism, grooves
   p.length_m = 0.08e-3;
   const auto run = [&](const CutParams& params) {
     CutRun r(specimen, params);
-    while (r.advance()) {}
+    while (r.advance()) {
+    }
     return r.result();
   };
   const CutResult a = run(p);
@@ -461,7 +466,8 @@ TEST_CASE("cutting: a small cut regression (forces, cracks, determinism, grooves
   CutRun half(specimen, p);
   for (std::size_t k = 0; k < a.samples.size() / 2; ++k) half.advance();
   CutRun restored = CutRun::deserialize(half.serialize());
-  while (restored.advance()) {}
+  while (restored.advance()) {
+  }
   REQUIRE(restored.result().samples.size() == a.samples.size());
   CHECK(restored.result().samples.back().main_force_n == a.samples.back().main_force_n);
   CHECK(restored.result().main_force_n == a.main_force_n);
@@ -475,7 +481,8 @@ TEST_CASE("cutting: a small cut regression (forces, cracks, determinism, grooves
   CutRun smooth_half(specimen, frictionless);
   for (std::size_t k = 0; k < smooth.samples.size() / 2; ++k) smooth_half.advance();
   CutRun smooth_restored = CutRun::deserialize(smooth_half.serialize());
-  while (smooth_restored.advance()) {}
+  while (smooth_restored.advance()) {
+  }
   CHECK(smooth_restored.params().tool_friction_coefficient == 0.0);
   // ... and the rake face's height.
   CutParams short_rake = p;

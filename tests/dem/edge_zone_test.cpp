@@ -55,8 +55,8 @@ ZoneRun run_zone(const Simulation& workpiece, const CutParams& p) {
     z.loaded_booked += booked;
     double fx = 0, fy = 0;
     for (const auto& l : loads) fx += l.fx_n, fy += l.fy_n;
-    z.worst_sum_error = std::max({z.worst_sum_error, std::abs(fx + p.edge_cutting_force_n_per_m * t) /
-                                                         (p.edge_cutting_force_n_per_m * t),
+    z.worst_sum_error = std::max({z.worst_sum_error,
+                                  std::abs(fx + p.edge_cutting_force_n_per_m * t) / (p.edge_cutting_force_n_per_m * t),
                                   std::abs(fy + p.edge_thrust_force_n_per_m * t) / (p.edge_thrust_force_n_per_m * t)});
   }
   z.result = run.result();
@@ -89,8 +89,7 @@ TEST_CASE("edge zone: off, the cut is today's to the bit, whatever its other key
   CHECK(b.window.chips.edge_tied_disks + b.window.chips.edge_loose_disks == 0);
 }
 
-TEST_CASE("edge zone: an intact block carries the layer's force and its reaction, a loose bed neither",
-          "[edge_zone]") {
+TEST_CASE("edge zone: an intact block carries the layer's force and its reaction, a loose bed neither", "[edge_zone]") {
   const Simulation block = hex_workpiece(conservative_material(), 0.6e-3, 0.25e-3);
   const CutParams p = zone_cut();
   const ZoneRun intact = run_zone(block, p);
@@ -198,4 +197,3 @@ TEST_CASE("edge zone: its keys are validated with their dotted names", "[edge_zo
   CHECK_THROWS_WITH(CutRun(hex_workpiece(Material{}, 0.6e-3, 0.25e-3), p),
                     Catch::Contains("edge_zone.cutting_force_N_per_mm"));
 }
-

@@ -1,7 +1,6 @@
 // The flat-joint law driven through prescribed motions (MercuryDPM style): tension to failure, shear
 // failure on the Coulomb envelope, bending with partial damage, load-unload-reload, closed-form stiffness.
 #include "kerf/dem/laws/flat_joint.hpp"
-#include "../../dem/laws/flat_joint_simd.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -9,6 +8,7 @@
 #include <random>
 #include <vector>
 
+#include "../../dem/laws/flat_joint_simd.hpp"
 #include "kerf/error.hpp"
 
 using namespace kerf::dem;
@@ -49,8 +49,7 @@ bool same_bits(double a, double b) {
 /// state) and requires the same resultants, shear forces and break decisions to the bit; returns the general
 /// result.
 BondResult require_fast_path_equal(Joint& general, Joint& fast, const BondKinematics& kin) {
-  const BondResult a =
-      flat_joint_update(general.p, general.geo, kin, general.shear, general.bonded, general.breaks);
+  const BondResult a = flat_joint_update(general.p, general.geo, kin, general.shear, general.bonded, general.breaks);
   const BondResult b = flat_joint_update_two_bonded(fast.p, fast.geo, kin, fast.shear.data(), fast.breaks.data());
   REQUIRE(same_bits(a.normal_force_n, b.normal_force_n));
   REQUIRE(same_bits(a.shear_force_n, b.shear_force_n));
@@ -119,7 +118,8 @@ TEST_CASE("flat joint: shear breaks on the Coulomb envelope c - sigma tan(phi)",
       CHECK(j.breaks[0] == BreakMode::shear);
       CHECK(j.breaks[1] == BreakMode::shear);
       // Shear force opposes the displacement of disk 2.
-      CHECK_THAT(r.shear_force_n, WithinRel(-k * 1.5 * ds_break / n * j.geo.shear_stiffness * 2 * j.element_area(), 1e-9));
+      CHECK_THAT(r.shear_force_n,
+                 WithinRel(-k * 1.5 * ds_break / n * j.geo.shear_stiffness * 2 * j.element_area(), 1e-9));
     }
   }
   // It breaks at the first increment that reaches the envelope, not before.
@@ -127,7 +127,8 @@ TEST_CASE("flat joint: shear breaks on the Coulomb envelope c - sigma tan(phi)",
   j.apply_breaks();
   // Residual: Coulomb friction mu |F_n| after breakage.
   auto r = j.update(gap, 0, ds_break);
-  CHECK_THAT(std::abs(r.shear_force_n), WithinRel(j.p.residual_friction_coefficient * std::abs(r.normal_force_n), 1e-12));
+  CHECK_THAT(std::abs(r.shear_force_n),
+             WithinRel(j.p.residual_friction_coefficient * std::abs(r.normal_force_n), 1e-12));
 }
 
 TEST_CASE("flat joint: bending breaks the opening element only (partial damage)", "[flat_joint]") {
@@ -259,7 +260,8 @@ TEST_CASE("flat joint: the intact path decides breaks as the stress test does, u
     raw.bond.tensile_strength_pa = 200e6 * (1 + 0.9 * unit(rng));
     raw.bond.cohesion_pa = 113e6 * (1 + 0.9 * unit(rng));
     if (k % 5 == 1)
-      raw.bond.cohesion_pa = raw.bond.tensile_strength_pa * std::tan(raw.bond.friction_angle_rad) * (1 + 1e-9 * unit(rng));
+      raw.bond.cohesion_pa =
+          raw.bond.tensile_strength_pa * std::tan(raw.bond.friction_angle_rad) * (1 + 1e-9 * unit(rng));
     if (k % 5 == 2) raw.bond.cohesion_pa = 0;
     if (k % 5 == 3) raw.bond.tensile_strength_pa = 0;
     Joint general(raw, 10e-6 * (1.15 + 0.15 * unit(rng)), 10e-6 * (1.15 + 0.15 * unit(rng)));
@@ -267,11 +269,11 @@ TEST_CASE("flat joint: the intact path decides breaks as the stress test does, u
     const double kn_t_le = general.geo.normal_stiffness * general.geo.thickness_m * general.geo.half_length_m;
     const bool tension_scan = k % 2 == 0;
     // Tension: g_s such that sigma = sigma_c. Shear: sigma somewhere below sigma_c, |F_s| on the envelope.
-    const double sigma =
-        tension_scan ? general.p.bond.tensile_strength_pa : general.p.bond.tensile_strength_pa * (0.9 - 2 * std::abs(unit(rng)));
+    const double sigma = tension_scan ? general.p.bond.tensile_strength_pa
+                                      : general.p.bond.tensile_strength_pa * (0.9 - 2 * std::abs(unit(rng)));
     const double gap0 = sigma * area / kn_t_le;
-    const double shear0 =
-        std::max(0.0, general.p.bond.cohesion_pa - sigma * general.p.tan_friction_angle) * area * (unit(rng) < 0 ? -1 : 1);
+    const double shear0 = std::max(0.0, general.p.bond.cohesion_pa - sigma * general.p.tan_friction_angle) * area *
+                          (unit(rng) < 0 ? -1 : 1);
     bool seen_break = false, seen_intact = false;
     for (int m = -40; m <= 40; ++m) {
       Joint fast = general;

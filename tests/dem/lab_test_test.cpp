@@ -3,14 +3,13 @@
 #include "kerf/dem/procedures/lab_test.hpp"
 
 #include <catch2/catch.hpp>
-
-#include "quick_specimen.hpp"
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
 
 #include "kerf/dem/procedures/specimen.hpp"
 #include "kerf/io.hpp"
+#include "quick_specimen.hpp"
 
 using namespace kerf::dem;
 using Catch::Matchers::WithinAbs;
@@ -28,7 +27,8 @@ TEST_CASE("lab test: hexagonal specimen's E and nu match the lattice closed form
   // Plane stress, bonds K_n = E* t, K_s = K_n / kappa: E = 2 sqrt(3) E* (1 + 1/kappa) / (3 + 1/kappa),
   // nu = (kappa - 1) / (3 kappa + 1).
   const double kappa = std::get<FlatJointParams>(m.joint).bond.stiffness_ratio;
-  const double e_closed = 2 * std::sqrt(3.0) * std::get<FlatJointParams>(m.joint).bond.effective_modulus_pa * (1 + 1 / kappa) / (3 + 1 / kappa);
+  const double e_closed = 2 * std::sqrt(3.0) * std::get<FlatJointParams>(m.joint).bond.effective_modulus_pa *
+                          (1 + 1 / kappa) / (3 + 1 / kappa);
   const double nu_closed = (kappa - 1) / (3 * kappa + 1);
   // The load-bearing width of the lattice is (disks per row) 2R; the test divides by the outer width,
   // which the offset rows make R wider.
@@ -77,8 +77,9 @@ TEST_CASE("lab test: small random specimen regression", "[lab_test]") {
                        {"poissons_ratio", c.poissons_ratio},
                        {"compressive_strength_MPa", c.peak_stress_pa * 1e-6}};
   if (const char* env = std::getenv("KERF_REGENERATE_REFERENCE"); env && std::string(env) == "1") {
-    kerf::Json out{{"description", "tests/dem/lab_test_test.cpp 'small random specimen regression'; regenerate with "
-                                   "KERF_REGENERATE_REFERENCE=1 build/tests/kerf_dem_tests '[lab_test]'"},
+    kerf::Json out{{"description",
+                    "tests/dem/lab_test_test.cpp 'small random specimen regression'; regenerate with "
+                    "KERF_REGENERATE_REFERENCE=1 build/tests/kerf_dem_tests '[lab_test]'"},
                    {"relative_tolerance", 0.02},
                    {"values", now}};
     kerf::write_file_atomically(file, out.dump(2) + "\n");
@@ -152,8 +153,9 @@ TEST_CASE("lab test: a run made too long by a lowered engine.time_step_safety na
   const double dt = 1e-9, fits = kMaxRunSteps / 2, too_long = 2 * kMaxRunSteps;
   const double f0 = SimulationOptions{}.time_step_safety;
   // Fits at the default safety (steps scale as 1 / safety): the safety is named, with the smallest value that fits.
-  CHECK_THROWS_WITH(refuse_small_time_step_safety(too_long, dt, 0.5 * f0),
-                    Catch::Contains("engine.time_step_safety = ") && Catch::Contains("at least " + kerf::format_value(f0)));
+  CHECK_THROWS_WITH(
+      refuse_small_time_step_safety(too_long, dt, 0.5 * f0),
+      Catch::Contains("engine.time_step_safety = ") && Catch::Contains("at least " + kerf::format_value(f0)));
   // Within the limit, at or above the default, or too long even at the default: nothing (the caller names its speed).
   CHECK_NOTHROW(refuse_small_time_step_safety(fits, dt, 0.01 * f0));
   CHECK_NOTHROW(refuse_small_time_step_safety(too_long, dt, f0));

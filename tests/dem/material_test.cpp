@@ -19,7 +19,8 @@ using Catch::Matchers::WithinRel;
 
 TEST_CASE("material: keys carry units, converted to SI once", "[material]") {
   const Material m = read_material(kerf::Json::parse(R"({"effective_modulus_GPa": 90, "tensile_strength_MPa": 80,
-      "cohesion_MPa": 200, "friction_angle_deg": 30, "n_elements": 3, "stiffness_ratio": 2.5})"), "material");
+      "cohesion_MPa": 200, "friction_angle_deg": 30, "n_elements": 3, "stiffness_ratio": 2.5})"),
+                                   "material");
   CHECK(std::get<LinearContactParams>(m.contact).effective_modulus_pa == 90e9);
   CHECK(std::get<FlatJointParams>(m.joint).bond.tensile_strength_pa == 80e6);
   CHECK(std::get<FlatJointParams>(m.joint).bond.cohesion_pa == 200e6);
@@ -73,10 +74,12 @@ TEST_CASE("material: seeded flaws in SI, written only by a glass that has them",
 }
 
 TEST_CASE("material: a bundled material is the base that other keys override", "[material]") {
-  const Material m = read_material(kerf::Json::parse(R"({"base": "soda_lime_glass_fj", "local_damping": 0.5})"), "material");
+  const Material m =
+      read_material(kerf::Json::parse(R"({"base": "soda_lime_glass_fj", "local_damping": 0.5})"), "material");
   CHECK(m.name == "soda_lime_glass_fj");
   CHECK(m.local_damping == 0.5);
-  CHECK(std::get<FlatJointParams>(m.joint).bond.cohesion_pa > std::get<FlatJointParams>(m.joint).bond.tensile_strength_pa);  // calibrated: c / sigma_c > 1
+  CHECK(std::get<FlatJointParams>(m.joint).bond.cohesion_pa >
+        std::get<FlatJointParams>(m.joint).bond.tensile_strength_pa);  // calibrated: c / sigma_c > 1
 }
 
 TEST_CASE("contact laws: the registry constructs laws by name", "[material]") {
@@ -130,12 +133,15 @@ template <class V>
 std::vector<std::vector<std::string>> law_keys() {
   return [&]<std::size_t... I>(std::index_sequence<I...>) {
     return std::vector<std::vector<std::string>>{keys_of(std::variant_alternative_t<I, V>::fields())...};
-  }(std::make_index_sequence<std::variant_size_v<V>>{});
+  }
+  (std::make_index_sequence<std::variant_size_v<V>>{});
 }
 }  // namespace
 
-TEST_CASE("material: each key belongs to one law (issue 39): friction_coefficient is the contact's, "
-          "residual_friction_coefficient the flat joint's", "[material]") {
+TEST_CASE(
+    "material: each key belongs to one law (issue 39): friction_coefficient is the contact's, "
+    "residual_friction_coefficient the flat joint's",
+    "[material]") {
   // No key of a contact law is a key of a bond law or of the material itself, so no key sets two things.
   const std::vector<std::string> own = keys_of(Material::fields());
   for (const auto& contact : law_keys<ContactLaw>())
@@ -145,7 +151,8 @@ TEST_CASE("material: each key belongs to one law (issue 39): friction_coefficien
     }
   const Material m = read_material(kerf::Json::parse(R"({"friction_coefficient": 0.2})"), "material");
   CHECK(std::get<LinearContactParams>(m.contact).friction_coefficient == 0.2);
-  CHECK(std::get<FlatJointParams>(m.joint).residual_friction_coefficient == FlatJointParams{}.residual_friction_coefficient);
+  CHECK(std::get<FlatJointParams>(m.joint).residual_friction_coefficient ==
+        FlatJointParams{}.residual_friction_coefficient);
   const Material r = read_material(kerf::Json::parse(R"({"residual_friction_coefficient": 0.3})"), "material");
   CHECK(std::get<LinearContactParams>(r.contact).friction_coefficient == LinearContactParams{}.friction_coefficient);
   CHECK(std::get<FlatJointParams>(r.joint).residual_friction_coefficient == 0.3);

@@ -22,7 +22,8 @@ std::vector<CandidatePair> brute_force(const Cloud& c, double skin) {
   for (std::size_t i = 0; i < c.x.size(); ++i)
     for (std::size_t j = i + 1; j < c.x.size(); ++j) {
       const double dx = c.x[j] - c.x[i], dy = c.y[j] - c.y[i], reach = c.r[i] + c.r[j] + skin;
-      if (dx * dx + dy * dy < reach * reach) out.push_back({static_cast<std::int32_t>(i), static_cast<std::int32_t>(j)});
+      if (dx * dx + dy * dy < reach * reach)
+        out.push_back({static_cast<std::int32_t>(i), static_cast<std::int32_t>(j)});
     }
   return out;
 }
@@ -51,7 +52,9 @@ void require_same_as_brute_force(const Cloud& c, double skin) {
 
 TEST_CASE("neighbour grid: the pairs of brute force, near and far", "[neighbor_grid]") {
   const double skin = 3e-6;
-  SECTION("a packed assembly") { require_same_as_brute_force(lattice(40, 40, 1), skin); }
+  SECTION("a packed assembly") {
+    require_same_as_brute_force(lattice(40, 40, 1), skin);
+  }
   SECTION("fragments far away: a flying pair, a cluster and lone disks up to 1 m out") {
     Cloud c = lattice(40, 40, 2);
     c.add(0.05, 0.02, 12e-6);  // a pair 5 cm away, touching
@@ -62,7 +65,9 @@ TEST_CASE("neighbour grid: the pairs of brute force, near and far", "[neighbor_g
     c.add(2e-3, 0.9e-3, 12e-6);  // just outside the bulk, next to nothing
     require_same_as_brute_force(c, skin);
   }
-  SECTION("a long thin strip (the bulk itself is wide)") { require_same_as_brute_force(lattice(600, 3, 3), skin); }
+  SECTION("a long thin strip (the bulk itself is wide)") {
+    require_same_as_brute_force(lattice(600, 3, 3), skin);
+  }
   SECTION("many flown disks (more than the 5 % the bulk box leaves out)") {
     Cloud c = lattice(30, 30, 4);
     std::mt19937_64 rng(5);
@@ -77,7 +82,8 @@ TEST_CASE("neighbour grid: the pairs of brute force, near and far", "[neighbor_g
     std::mt19937_64 rng(7);
     std::uniform_real_distribution<double> far(-0.05, 0.05);
     for (int k = 0; k < 300; ++k) c.add(far(rng), far(rng), 12e-6);  // enough strays to shrink the grid to the bulk
-    for (int k = 0; k < 60; ++k) c.add(0.5e-3 + 22e-6 * k, 0.4e-3, 11e-6);  // a row of disks across the lattice's right side
+    for (int k = 0; k < 60; ++k)
+      c.add(0.5e-3 + 22e-6 * k, 0.4e-3, 11e-6);  // a row of disks across the lattice's right side
     require_same_as_brute_force(c, skin);
   }
   SECTION("40 % flown in a wide fan (no central part fits a grid: every disk a stray)") {

@@ -8,8 +8,8 @@
 #include <cmath>
 #include <random>
 
-#include "kerf/dem/laws/flat_joint.hpp"
 #include "kerf/dem/engine/simulation.hpp"
+#include "kerf/dem/laws/flat_joint.hpp"
 #include "kerf/error.hpp"
 
 using namespace kerf::dem;
@@ -25,8 +25,11 @@ struct Bond {
   std::uint8_t bonded = 1;
   BreakMode mode = BreakMode::none;
 
-  explicit Bond(const ParallelBondParams& raw = {}) : p(ParallelBondParams::validated(raw)), geo(bond_geometry(p, 10e-6, 10e-6, 1e-3)) {}
-  BondResult update(double gap, double rotation, double ds) { return bond_update(p, geo, {gap, rotation, ds}, &shear, &bonded, &mode); }
+  explicit Bond(const ParallelBondParams& raw = {})
+      : p(ParallelBondParams::validated(raw)), geo(bond_geometry(p, 10e-6, 10e-6, 1e-3)) {}
+  BondResult update(double gap, double rotation, double ds) {
+    return bond_update(p, geo, {gap, rotation, ds}, &shear, &bonded, &mode);
+  }
   double area() const { return 2 * geo.half_length_m * geo.thickness_m; }
   double inertia() const { return geo.thickness_m * std::pow(2 * geo.half_length_m, 3) / 12; }
 };
@@ -136,7 +139,8 @@ TEST_CASE("parallel bond: parameters are validated, errors name the key", "[para
   p.bond.friction_angle_rad = 2.0;
   CHECK_THROWS_AS(ParallelBondParams::validated(p), kerf::InputError);
   const Material m = read_material(kerf::Json::parse(R"({"bond_model": "parallel_bond", "tensile_strength_MPa": 90,
-      "friction_angle_deg": 30, "friction_coefficient": 0.4})"), "material");
+      "friction_angle_deg": 30, "friction_coefficient": 0.4})"),
+                                   "material");
   REQUIRE(std::holds_alternative<ParallelBondParams>(m.joint));
   CHECK(std::get<ParallelBondParams>(m.joint).bond.tensile_strength_pa == 90e6);
   CHECK_THAT(std::get<ParallelBondParams>(m.joint).tan_friction_angle, WithinRel(std::tan(M_PI / 6), 1e-15));
@@ -197,7 +201,8 @@ TEST_CASE("parallel bond: energy is conserved without damping, bond and contact 
     sim.initialise();
     sim.set_time_step(sim.time_step() * dt_fraction);
     auto& p = sim.particles();
-    for (std::size_t i = 0; i < p.size(); ++i) p.vx[i] = 0.02 * u(rng), p.vy[i] = 0.02 * u(rng), p.omega[i] = 200 * u(rng);
+    for (std::size_t i = 0; i < p.size(); ++i)
+      p.vx[i] = 0.02 * u(rng), p.vy[i] = 0.02 * u(rng), p.omega[i] = 200 * u(rng);
     const double e0 = sim.kinetic_energy() + sim.stored_elastic_energy();
     double worst = 0;
     const auto steps = static_cast<int>(std::lround(100 / dt_fraction));

@@ -3,11 +3,11 @@
 #include "kerf/dem/scene.hpp"
 
 #include <omp.h>
+#include <unistd.h>
 
 #include <catch2/catch.hpp>
 #include <cstdlib>
 #include <filesystem>
-#include <unistd.h>
 #include <set>
 
 #include "kerf/dem/procedures/cutting.hpp"
@@ -48,13 +48,13 @@ void check_same_json(const Json& a, const Json& b) {
 TEST_CASE("scene: the registry constructs every registered kind, an unknown kind lists the valid ones", "[scene]") {
   const std::vector<std::string> names = scene_kind_names();
   CHECK(names == std::vector<std::string>{"specimen", "tension", "compression", "calibrate", "cut", "calibrate_cut",
-                                             "toughness"});
+                                          "toughness"});
   for (const auto& name : names) CHECK(make_scene_kind(name) != nullptr);
   CHECK_THROWS_WITH(make_scene_kind("cutt"),
                     "kind = cutt: expected one of 'specimen', 'tension', 'compression', 'calibrate', 'cut', "
                     "'calibrate_cut', 'toughness' (did you mean 'cut'?)");
-  CHECK_THROWS_WITH(read_scene(Json{{"kind", "tensoin"}}, "."), Catch::Contains("kind = tensoin") &&
-                                                                   Catch::Contains("did you mean 'tension'?"));
+  CHECK_THROWS_WITH(read_scene(Json{{"kind", "tensoin"}}, "."),
+                    Catch::Contains("kind = tensoin") && Catch::Contains("did you mean 'tension'?"));
 }
 
 TEST_CASE("scene: a scene is read and checked before any genesis", "[scene]") {
@@ -71,11 +71,12 @@ TEST_CASE("scene: a scene is read and checked before any genesis", "[scene]") {
   CHECK_THROWS_WITH(read_scene(bad, "."), Catch::Contains("cut.length_mm"));
   bad = cut;
   bad["specimen"] = Json{{"radius_min_um", 10}, {"radius_max_um", 8}};
-  CHECK_THROWS_WITH(read_scene(bad, "."), Catch::StartsWith("specimen.radius_max_um = 8: expected a value >= radius_min_um"));
+  CHECK_THROWS_WITH(read_scene(bad, "."),
+                    Catch::StartsWith("specimen.radius_max_um = 8: expected a value >= radius_min_um"));
   bad = cut;
   bad["grooves"] = Json{{"shape", "trapezoid"}};
-  CHECK_THROWS_WITH(read_scene(bad, "."), Catch::Contains("grooves.shape = trapezoid") &&
-                                              Catch::Contains("did you mean 'trapezoidal'?"));
+  CHECK_THROWS_WITH(read_scene(bad, "."),
+                    Catch::Contains("grooves.shape = trapezoid") && Catch::Contains("did you mean 'trapezoidal'?"));
   bad = cut;
   bad["output"] = Json{{"frame_every_samples", -1}};
   CHECK_THROWS_AS(read_scene(bad, "."), kerf::InputError);
@@ -136,7 +137,8 @@ TEST_CASE("scene: field tables read the struct's defaults, check ranges and roun
   read_specimen_spec(r);
   CHECK_THROWS_WITH(r.finish(), Catch::Contains("specimen.seeed") && Catch::Contains("did you mean 'seed'?"));
   // Every section has a key table; an unknown one lists them.
-  for (const auto& section : scene_sections()) CHECK(scene_keys_markdown(section).find("| key | unit |") != std::string::npos);
+  for (const auto& section : scene_sections())
+    CHECK(scene_keys_markdown(section).find("| key | unit |") != std::string::npos);
   CHECK_THROWS_WITH(scene_keys_markdown("tol"), Catch::Contains("SECTION = tol") && Catch::Contains("'tool'"));
 }
 
@@ -165,8 +167,9 @@ TEST_CASE("scene: small cut regression through run_scene", "[scene][regression]"
   now["n_particles"] = done.summary.at("n_particles");
   std::filesystem::remove_all(options.out);
   if (const char* env = std::getenv("KERF_REGENERATE_REFERENCE"); env && std::string(env) == "1") {
-    const Json out{{"description", "tests/dem/scene_test.cpp 'small cut regression through run_scene'; regenerate with "
-                                   "KERF_REGENERATE_REFERENCE=1 build/tests/kerf_dem_tests '[regression]'"},
+    const Json out{{"description",
+                    "tests/dem/scene_test.cpp 'small cut regression through run_scene'; regenerate with "
+                    "KERF_REGENERATE_REFERENCE=1 build/tests/kerf_dem_tests '[regression]'"},
                    {"relative_tolerance", 0.02},
                    {"crack_count_tolerance", 3},
                    {"values", now}};
@@ -180,8 +183,10 @@ TEST_CASE("scene: small cut regression through run_scene", "[scene][regression]"
   CHECK(now.at("particles_removed_by_grooves") == ref.at("values").at("particles_removed_by_grooves"));
   for (const auto& [key, value] : ref.at("values").items()) {
     INFO(key);
-    if (key.rfind("cracks_", 0) == 0) CHECK_THAT(now.at(key).get<double>(), WithinAbs(value.get<double>(), cracks));
-    else CHECK_THAT(now.at(key).get<double>(), WithinRel(value.get<double>(), tol));
+    if (key.rfind("cracks_", 0) == 0)
+      CHECK_THAT(now.at(key).get<double>(), WithinAbs(value.get<double>(), cracks));
+    else
+      CHECK_THAT(now.at(key).get<double>(), WithinRel(value.get<double>(), tol));
   }
 }
 
@@ -203,7 +208,8 @@ TEST_CASE("scene: progress reaches the caller's callback, every stage to its end
   std::vector<ProgressUpdate> seen;
   options.on_progress = [&](const ProgressUpdate& u) { seen.push_back(u); };
   std::filesystem::remove_all(options.out);
-  const SceneOutcome done = run_scene(small_cut_scene(), std::string(KERF_SOURCE_DIR) + "/data/scenes/scene.json", options);
+  const SceneOutcome done =
+      run_scene(small_cut_scene(), std::string(KERF_SOURCE_DIR) + "/data/scenes/scene.json", options);
   std::filesystem::remove_all(options.out);
   // Every cut's summary carries the standard errors of its mean forces and how they were found.
   const Json& r = done.summary.at("results");

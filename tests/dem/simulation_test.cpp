@@ -310,7 +310,7 @@ TEST_CASE("simulation: a wall contact's load is k_n times its overlap, and ties 
   // bonded joints, and a joint with every element broken cuts the chain there.
   Simulation sim(Material{}, {});
   const double r = 10e-6, overlap = 0.2e-6;
-  sim.add_particle(0, r - overlap, r);  // on the wall y = 0
+  sim.add_particle(0, r - overlap, r);   // on the wall y = 0
   sim.add_particle(2 * r, r + 1e-6, r);  // clear of it
   sim.add_particle(4 * r, r + 1e-6, r);
   sim.add_wall(Wall{-1e-3, 0, 1e-3, 0});
@@ -322,7 +322,8 @@ TEST_CASE("simulation: a wall contact's load is k_n times its overlap, and ties 
   REQUIRE(loads.size() == 1);
   CHECK(loads[0].disk == 0);
   const auto& law = std::get<LinearContactParams>(sim.material().contact);
-  CHECK_THAT(loads[0].normal_force_n, WithinRel(linear_normal_stiffness(law, r, 0, sim.options().thickness_m) * overlap, 1e-9));
+  CHECK_THAT(loads[0].normal_force_n,
+             WithinRel(linear_normal_stiffness(law, r, 0, sim.options().thickness_m) * overlap, 1e-9));
   CHECK(sim.tied_to_held() == std::vector<std::uint8_t>{1, 1, 1});
   auto& b = sim.bonds();
   for (int e = 0; e < b.stride; ++e) b.bonded[static_cast<std::size_t>(b.stride + e)] = 0;  // joint 1-2 broken

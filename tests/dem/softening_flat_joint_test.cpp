@@ -4,8 +4,8 @@
 // pulled apart breaks at the softening opening, and a damaged state round-trips through a checkpoint.
 #include "kerf/dem/laws/softening_flat_joint.hpp"
 
-#include <catch2/catch.hpp>
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <cstring>
 #include <random>
@@ -74,7 +74,9 @@ struct Joint {
   double g0() const { return p.bond.tensile_strength_pa / geo.normal_stiffness; }
 };
 
-bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+bool same_bits(double a, double b) {
+  return std::memcmp(&a, &b, sizeof a) == 0;
+}
 
 }  // namespace
 
@@ -111,8 +113,8 @@ TEST_CASE("softening flat joint: opened to failure, a joint takes A (sigma_c^2 /
         // The trapezoid is exact but for the step holding the kink at g_0: an error below the slopes' jump dg^2.
         const double sigma = r.normal_force_n / j.joint_area();
         const double kink = (j.geo.normal_stiffness + j.p.bond.tensile_strength_pa / w_c) * j.joint_area() * dg * dg;
-        CHECK_THAT(work - j.energy(g), WithinAbs(0.5 * (j.p.bond.tensile_strength_pa * g - sigma * g0) * j.joint_area(),
-                                                 kink));
+        CHECK_THAT(work - j.energy(g),
+                   WithinAbs(0.5 * (j.p.bond.tensile_strength_pa * g - sigma * g0) * j.joint_area(), kink));
       }
     }
     REQUIRE(g_break > 0);
@@ -122,8 +124,9 @@ TEST_CASE("softening flat joint: opened to failure, a joint takes A (sigma_c^2 /
     // For G_f = 0 the force at the breaking step is still the bonded element's (the flat joint): take the work
     // to the strength, as the flat joint's element then drops its force.
     if (gf_j == 0) work -= 0.5 * (f_prev + j.p.bond.tensile_strength_pa * j.joint_area()) * (g_break - g0);
-    const double closed_form = j.joint_area() * (j.p.bond.tensile_strength_pa * j.p.bond.tensile_strength_pa /
-                                                     (2 * j.geo.normal_stiffness) + gf_j);
+    const double closed_form =
+        j.joint_area() *
+        (j.p.bond.tensile_strength_pa * j.p.bond.tensile_strength_pa / (2 * j.geo.normal_stiffness) + gf_j);
     CHECK_THAT(work, WithinRel(closed_form, 1e-3));
     j.apply_breaks();
     CHECK(j.energy(2 * gf) == 0);
@@ -131,8 +134,7 @@ TEST_CASE("softening flat joint: opened to failure, a joint takes A (sigma_c^2 /
   }
 }
 
-TEST_CASE("softening flat joint: unloading returns along the damaged secant, compression is undamaged",
-          "[softening]") {
+TEST_CASE("softening flat joint: unloading returns along the damaged secant, compression is undamaged", "[softening]") {
   Joint j(softening(2.0));
   const double g0 = j.g0(), gf = g0 + j.p.softening_opening_m;
   const double kappa = 0.5 * (g0 + gf);  // half-way down the softening branch
@@ -195,8 +197,9 @@ TEST_CASE("softening flat joint: before softening starts, the flat joint's stren
       CHECK(j.damage[0] == 0);
     }
   }
-  SECTION("random joints within the tensile strength, bonded or not: the flat joint's bits; the engine's fast "
-          "path gives the softening update's bits everywhere") {
+  SECTION(
+      "random joints within the tensile strength, bonded or not: the flat joint's bits; the engine's fast "
+      "path gives the softening update's bits everywhere") {
     std::mt19937_64 rng(20261129);
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
     int n_compared = 0, n_fast = 0;
@@ -304,8 +307,10 @@ TEST_CASE("softening flat joint: fracture_energy_J_per_m2 is validated and read 
   }
   CHECK_THROWS_WITH(kerf::with_path("material", [&] { return SofteningFlatJointParams::validated(p); }),
                     "material.fracture_energy_J_per_m2 = -1: expected a non-negative value in J/m^2");
-  const Material m = read_material(kerf::Json::parse(R"({"bond_model": "softening_flat_joint", "fracture_energy_J_per_m2": 4,
-      "tensile_strength_MPa": 80, "n_elements": 3, "residual_friction_coefficient": 0.3})"), "material");
+  const Material m =
+      read_material(kerf::Json::parse(R"({"bond_model": "softening_flat_joint", "fracture_energy_J_per_m2": 4,
+      "tensile_strength_MPa": 80, "n_elements": 3, "residual_friction_coefficient": 0.3})"),
+                    "material");
   REQUIRE(std::holds_alternative<SofteningFlatJointParams>(m.joint));
   const auto& s = std::get<SofteningFlatJointParams>(m.joint);
   CHECK(s.fracture_energy_j_per_m2 == 4);
@@ -314,7 +319,8 @@ TEST_CASE("softening flat joint: fracture_energy_J_per_m2 is validated and read 
   CHECK_THAT(s.softening_opening_m, WithinRel(2 * 4 / 80e6, 1e-15));
   CHECK_THAT(s.tan_friction_angle, WithinRel(std::tan(s.bond.friction_angle_rad), 1e-15));
   CHECK_THROWS_WITH(read_material(kerf::Json::parse(R"({"bond_model": "softening_flat_joint",
-      "fracture_energy_J_per_m2": -0.5})"), "material"),
+      "fracture_energy_J_per_m2": -0.5})"),
+                                  "material"),
                     Catch::Matchers::StartsWith("material.fracture_energy_J_per_m2 = -0.5"));
   // The flat joint has no fracture energy.
   CHECK_THROWS_WITH(read_material(kerf::Json::parse(R"({"fracture_energy_J_per_m2": 1})"), "material"),
@@ -345,7 +351,8 @@ TensionRun tension(const Simulation& specimen, const BondLaw& joint) {
 TEST_CASE("softening flat joint: with zero fracture energy, a tension test is the flat joint's to the bit",
           "[softening]") {
   SpecimenReport report;
-  const Simulation specimen = make_specimen(Material{}, kerf::dem::testing::quick_random_spec(0.2e-3, 0.4e-3, 5), report);
+  const Simulation specimen =
+      make_specimen(Material{}, kerf::dem::testing::quick_random_spec(0.2e-3, 0.4e-3, 5), report);
   REQUIRE(report.n_particles > 200);
   const TensionRun flat = tension(specimen, static_cast<const FlatJointParams&>(glass(0.0)));
   const TensionRun soft = tension(specimen, glass(0.0));
@@ -382,8 +389,10 @@ TEST_CASE("softening flat joint: with zero fracture energy, a tension test is th
   CHECK(softer.result.strain_at_peak > flat.result.strain_at_peak);
 }
 
-TEST_CASE("softening flat joint: through the engine, a bond pulled apart breaks at g_0 + w_c after taking its "
-          "work", "[softening]") {
+TEST_CASE(
+    "softening flat joint: through the engine, a bond pulled apart breaks at g_0 + w_c after taking its "
+    "work",
+    "[softening]") {
   Material m;
   m.joint = softening(4.0);
   Simulation sim(m, {});
@@ -417,7 +426,9 @@ TEST_CASE("softening flat joint: through the engine, a bond pulled apart breaks 
   CHECK(gap < gf + 2 * v * sim.time_step());
   CHECK_THAT(peak, WithinRel(joint.bond.tensile_strength_pa * area, 1e-3));
   CHECK_THAT(work, WithinRel(area * (joint.bond.tensile_strength_pa * joint.bond.tensile_strength_pa /
-                                         (2 * geo.normal_stiffness) + joint.fracture_energy_j_per_m2), 2e-3));
+                                         (2 * geo.normal_stiffness) +
+                                     joint.fracture_energy_j_per_m2),
+                             2e-3));
   CHECK(sim.bonds().damage == std::vector<double>{1.0, 1.0});
 }
 

@@ -59,13 +59,15 @@ TEST_CASE("specimen: hexagonal lattice stress under affine strain matches the cl
   }
   sim.evaluate_forces_with_increment();
   const double t = spec.thickness_m, R = 10e-6;
-  const double kn = std::get<FlatJointParams>(m.joint).bond.effective_modulus_pa * t, ks = kn / std::get<FlatJointParams>(m.joint).bond.stiffness_ratio;  // K_n = k_n 2R t
+  const double kn = std::get<FlatJointParams>(m.joint).bond.effective_modulus_pa * t,
+               ks = kn / std::get<FlatJointParams>(m.joint).bond.stiffness_ratio;  // K_n = k_n 2R t
   const double lambda = std::sqrt(3.0) / 4 * (kn - ks) / t, mu = std::sqrt(3.0) / 4 * (kn + ks) / t;
   // Stress of the interior disks (six joints each): sigma_p = -(1 / (2 A_p t)) sum f_on_j (x) (x_j - x_i),
   // A_p = 2 sqrt(3) R^2 (each joint shared by two disks).
   const auto& b = sim.bonds();
   std::vector<int> n_joints(sim.particles().size(), 0);
-  for (std::size_t k = 0; k < b.size(); ++k) ++n_joints[static_cast<std::size_t>(b.i[k])], ++n_joints[static_cast<std::size_t>(b.j[k])];
+  for (std::size_t k = 0; k < b.size(); ++k)
+    ++n_joints[static_cast<std::size_t>(b.i[k])], ++n_joints[static_cast<std::size_t>(b.j[k])];
   std::array<double, 3> s{0, 0, 0};
   int n_interior = 0;
   for (int v : n_joints) n_interior += v == 6;

@@ -1,11 +1,10 @@
-// The study's scheduler (dem/study/study_scheduler.cpp): which items it hands out and when a condition is done, driven here
-// with made-up results completed in shuffled orders by a varying number of workers, against the prefix rule
+// The study's scheduler (dem/study/study_scheduler.cpp): which items it hands out and when a condition is done, driven
+// here with made-up results completed in shuffled orders by a varying number of workers, against the prefix rule
 // computed independently; and the reading of study files.
 #include "kerf/dem/study/study.hpp"
 
-#include <catch2/catch.hpp>
-
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <map>
 #include <random>
@@ -65,16 +64,20 @@ std::vector<StudyItemResult> drive(StudyScheduler& s, int workers, std::uint64_t
   while (!s.finished()) {
     REQUIRE(++guard < 100000);
     while (static_cast<int>(in_flight.size()) < workers)
-      if (const auto item = s.next()) in_flight.push_back(*item);
-      else break;
+      if (const auto item = s.next())
+        in_flight.push_back(*item);
+      else
+        break;
     REQUIRE(!in_flight.empty());  // never stuck: something runs until the study is done
     const std::size_t k = std::uniform_int_distribution<std::size_t>(0, in_flight.size() - 1)(pick);
     StudyItemResult r;
     r.item = in_flight[k];
     in_flight.erase(in_flight.begin() + static_cast<std::ptrdiff_t>(k));
     r.ok = std::find(failing.begin(), failing.end(), r.item.seed) == failing.end();
-    if (r.ok) r.results = {{"x", value_of(r.item.condition, r.item.seed)}, {"y", 1.0}};
-    else r.error = "bad";
+    if (r.ok)
+      r.results = {{"x", value_of(r.item.condition, r.item.seed)}, {"y", 1.0}};
+    else
+      r.error = "bad";
     s.complete(r);
   }
   return s.table();
@@ -101,7 +104,8 @@ TEST_CASE("study: adaptive counts follow the prefix rule whatever the workers an
       for (std::size_t i = 0; i < table.size(); ++i) {  // condition-major, replicates in seed order
         const StudyItem& it = table[i].item;
         CHECK(it.seed == spec.base_seed + static_cast<std::uint64_t>(it.replicate));
-        if (i > 0 && table[i - 1].item.condition == it.condition) CHECK(it.replicate == table[i - 1].item.replicate + 1);
+        if (i > 0 && table[i - 1].item.condition == it.condition)
+          CHECK(it.replicate == table[i - 1].item.replicate + 1);
       }
       if (first.empty()) first = table;
       for (std::size_t i = 0; i < table.size(); ++i) CHECK(table[i].results == first[i].results);

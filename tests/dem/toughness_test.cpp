@@ -1,9 +1,8 @@
-// The fracture-toughness test (kerf/dem/procedures/toughness.hpp): Srawley's geometry factor against ASTM E399's table and
-// the edge-crack limit, the input relations, and a small notched beam broken in three-point bending.
+// The fracture-toughness test (kerf/dem/procedures/toughness.hpp): Srawley's geometry factor against ASTM E399's table
+// and the edge-crack limit, the input relations, and a small notched beam broken in three-point bending.
 #include "kerf/dem/procedures/toughness.hpp"
 
 #include <catch2/catch.hpp>
-
 #include <cmath>
 #include <numbers>
 
@@ -43,7 +42,8 @@ TEST_CASE("toughness: the notch, the span and the rollers are checked against th
   t.notch_depth_m = 0.2e-3;
   CHECK_NOTHROW(check_toughness_spec(t, beam));
   t.notch_depth_m = 0.6e-3;  // longer than the beam is deep
-  CHECK_THROWS_WITH(check_toughness_spec(t, beam), Contains("notch_depth_mm = 0.6") && Contains("shorter than the beam's depth"));
+  CHECK_THROWS_WITH(check_toughness_spec(t, beam),
+                    Contains("notch_depth_mm = 0.6") && Contains("shorter than the beam's depth"));
   t.notch_depth_m = -0.1e-3;
   CHECK_THROWS_WITH(check_toughness_spec(t, beam), Contains("notch_depth_mm = -0.1"));
   t.notch_depth_m = 0.2e-3;
@@ -99,7 +99,8 @@ TEST_CASE("toughness: a small notched beam breaks through its ligament, in equil
   CHECK(r.fracture_toughness_pa_sqrt_m > 0);
   // The averaged peak lies below the raw one (an average of samples), and K follows P.
   CHECK(r.peak_load_n <= r.raw_peak_load_n);
-  CHECK_THAT(r.raw_peak_toughness_pa_sqrt_m / r.fracture_toughness_pa_sqrt_m, WithinRel(r.raw_peak_load_n / r.peak_load_n, 1e-12));
+  CHECK_THAT(r.raw_peak_toughness_pa_sqrt_m / r.fracture_toughness_pa_sqrt_m,
+             WithinRel(r.raw_peak_load_n / r.peak_load_n, 1e-12));
   CHECK_THAT(r.irwin_energy_j_per_m2,
              WithinRel(r.fracture_toughness_pa_sqrt_m * r.fracture_toughness_pa_sqrt_m / t.youngs_modulus_pa, 1e-12));
 }

@@ -44,7 +44,8 @@ TEST_CASE("viscous damping: a bonded disk's free vibration decays as the damped 
     while (peak_gap.size() < 3 && sim.step_count() < 40000) {
       sim.step();
       const double gap = p.x[1] - 20e-6;
-      if (prev > prev2 && prev > gap && prev > 0) peak_gap.push_back(prev), peak_time.push_back(sim.time() - sim.time_step());
+      if (prev > prev2 && prev > gap && prev > 0)
+        peak_gap.push_back(prev), peak_time.push_back(sim.time() - sim.time_step());
       prev2 = prev, prev = gap;
     }
     REQUIRE(peak_gap.size() == 3);
@@ -84,6 +85,7 @@ TEST_CASE("viscous damping: a held disk's dashpot against another held disk does
   p.vx[1] = 0.01;
   sim.initialise();
   sim.run(10);
-  const double f_spring = linear_normal_stiffness(LinearContactParams{}, 10e-6, 10e-6, 1e-3) * (20e-6 - (p.x[1] - p.x[0]));
+  const double f_spring =
+      linear_normal_stiffness(LinearContactParams{}, 10e-6, 10e-6, 1e-3) * (20e-6 - (p.x[1] - p.x[0]));
   CHECK_THAT(sim.group_force(2)[0], WithinRel(f_spring, 1e-9));
 }

@@ -29,11 +29,11 @@ struct OrthogonalForceModel;  // kinds/scene.hpp
 using SceneBuilder = std::unique_ptr<AnalyticCase> (*)(const Json& document, MaterialCache* cache);
 
 struct AnalyticModelInfo {
-  std::string_view kind;     ///< the scene key under `models` ("force", "flow_stress", ...)
-  std::string_view name;     ///< the value a scene uses
-  std::string_view summary;  ///< what it is, with its source
-  std::string_view needs;    ///< what the scene and material must provide
-  int id = -1;               ///< the value of the kind's enum this name constructs; -1: none (handled by name)
+  std::string_view kind;         ///< the scene key under `models` ("force", "flow_stress", ...)
+  std::string_view name;         ///< the value a scene uses
+  std::string_view summary;      ///< what it is, with its source
+  std::string_view needs;        ///< what the scene and material must provide
+  int id = -1;                   ///< the value of the kind's enum this name constructs; -1: none (handled by name)
   SceneBuilder build = nullptr;  ///< force lines: the scene kind that runs this model (parse_scene)
   /// force lines of the orthogonal kind: the model that kind runs (nullptr: a scene kind of its own)
   const OrthogonalForceModel* orthogonal = nullptr;
@@ -68,7 +68,8 @@ template <class Enum>
 Enum registered_model(std::string_view kind, std::string_view name,
                       const std::vector<AnalyticModelInfo>& registry = analytic_models()) {
   const std::optional<int> id = registered_id(registry, kind, name);
-  if (!id) throw std::logic_error("analytic registry: no model '" + std::string(name) + "' of kind " + std::string(kind));
+  if (!id)
+    throw std::logic_error("analytic registry: no model '" + std::string(name) + "' of kind " + std::string(kind));
   return static_cast<Enum>(*id);
 }
 

@@ -13,8 +13,8 @@
 //   options.out = "out";
 //   SceneOutcome done = run_scene(doc, "scene.json", options);  // writes out/summary.json and the rest
 //   SceneOutcome again = resume_scene("out");                    // a run killed after a checkpoint
-#include <filesystem>
 #include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -49,10 +49,10 @@ struct SceneCommon {
 /// What the latest sample of a stage measured (for log lines). Only the fields of the stage's kind are set:
 /// a cut has travel and forces, a tension or compression test strain and stress.
 struct SampleState {
-  std::int64_t step = 0;     ///< time steps done in the stage
-  double time_s = 0;         ///< simulated time since the stage began; 0: not measured (a genesis)
+  std::int64_t step = 0;  ///< time steps done in the stage
+  double time_s = 0;      ///< simulated time since the stage began; 0: not measured (a genesis)
   std::size_t n_particles = 0;
-  int cracks = 0;            ///< broken flat-joint elements so far (tension + shear)
+  int cracks = 0;  ///< broken flat-joint elements so far (tension + shear)
   std::optional<double> travel_mm, main_force_N, thrust_force_N;  ///< cut: forces averaged over this sample
   std::optional<double> strain, stress_MPa;                       ///< tension, compression: axial
 };
@@ -63,8 +63,8 @@ struct SampleState {
 /// process: rates count from there).
 struct ProgressUpdate {
   std::string stage;
-  double done = 0, total = 0;  ///< in `unit`; done reaches total when the stage finishes
-  std::string unit;            ///< "steps", "particle-steps"
+  double done = 0, total = 0;         ///< in `unit`; done reaches total when the stage finishes
+  std::string unit;                   ///< "steps", "particle-steps"
   std::optional<SampleState> sample;  ///< the latest sample (none before the first, nor in a genesis)
   bool resumed = false;               ///< the start of a stage resumed from a checkpoint
 };
@@ -80,9 +80,9 @@ struct RunOptions {
   /// items; a calibration: one per evaluation); 0: none.
   double checkpoint_every_s = 0;
   bool checkpoints() const { return checkpoint_every > 0 || checkpoint_every_s > 0; }
-  int replicates = 1;        ///< cut scenes: packings specimen.seed + 0 .. replicates - 1
-  bool show_progress = true; ///< progress bars on stderr (drawn only when it is a terminal)
-  ProgressCallback on_progress;  ///< besides the bars (a notebook, a log); empty: none
+  int replicates = 1;                  ///< cut scenes: packings specimen.seed + 0 .. replicates - 1
+  bool show_progress = true;           ///< progress bars on stderr (drawn only when it is a terminal)
+  ProgressCallback on_progress;        ///< besides the bars (a notebook, a log); empty: none
   std::string command_line;            ///< what started the run, for summary.json's provenance
   std::vector<std::string> overrides;  ///< the --set assignments already applied to the scene, for the same
   /// The run's provenance block (run_scene and resume_scene set it), kept in its checkpoints so that a resume

@@ -18,14 +18,14 @@
 namespace kerf {
 
 struct DislocationParams {
-  double taylor_factor = 3.06;        ///< M
-  double alpha = 0.24;                ///< alpha, dislocation interaction constant
-  double shear_modulus_Pa = 0.0;      ///< G
-  double burgers_vector_m = 0.0;      ///< b
-  double boundary_constant_k = 3.0;   ///< k
-  double misorientation_rad = 0.0;    ///< theta_av
-  double boundary_spacing_m = 0.0;    ///< D_avg
-  double critical_spacing_m = 20e-9;  ///< below it the term is capped
+  double taylor_factor = 3.06;           ///< M
+  double alpha = 0.24;                   ///< alpha, dislocation interaction constant
+  double shear_modulus_Pa = 0.0;         ///< G
+  double burgers_vector_m = 0.0;         ///< b
+  double boundary_constant_k = 3.0;      ///< k
+  double misorientation_rad = 0.0;       ///< theta_av
+  double boundary_spacing_m = 0.0;       ///< D_avg
+  double critical_spacing_m = 20e-9;     ///< below it the term is capped
   double interior_density_per_m2 = 0.0;  ///< rho_0 (often negligible, Eq. 4)
 
   void validate(const std::string& path) const;

@@ -57,8 +57,8 @@ struct FlowStress {
   double hall_petch_Pa = 0.0;
   double dislocation_Pa = 0.0;
   double hardness_Pa = 0.0;  ///< Y = H / C (hardness_flow.hpp)
-  double total_Pa = 0.0;  ///< sigma (Eq. 8)
-  double shear_Pa = 0.0;  ///< k_s = sigma / sqrt(3) (Eq. 12)
+  double total_Pa = 0.0;     ///< sigma (Eq. 8)
+  double shear_Pa = 0.0;     ///< k_s = sigma / sqrt(3) (Eq. 12)
 };
 
 FlowStress flow_stress(const FlowStressModel& model, const DeformationState& state, Guards* guards);

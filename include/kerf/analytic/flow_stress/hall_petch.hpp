@@ -19,13 +19,13 @@
 namespace kerf {
 
 struct HallPetchParams {
-  double taylor_factor = 3.06;               ///< M
-  double shear_modulus_Pa = 0.0;             ///< G
-  double burgers_vector_m = 0.0;             ///< b
-  double poissons_ratio = 0.3;               ///< nu
+  double taylor_factor = 3.06;                 ///< M
+  double shear_modulus_Pa = 0.0;               ///< G
+  double burgers_vector_m = 0.0;               ///< b
+  double poissons_ratio = 0.3;                 ///< nu
   double grain_boundary_stress_ratio = 0.057;  ///< tau_b / G (Eq. 11)
-  double grain_size_m = 0.0;                 ///< D
-  double critical_grain_size_m = 20e-9;      ///< below it the term is capped
+  double grain_size_m = 0.0;                   ///< D
+  double critical_grain_size_m = 20e-9;        ///< below it the term is capped
   /// A measured Hall-Petch coefficient (Pa m^0.5) replaces Eqs. 10-11 when given.
   std::optional<double> coefficient_Pa_sqrt_m;
 

@@ -11,8 +11,8 @@
 // branch where H rises with Y); a material whose H / E needs C < 1 in that form is refused (InputError on
 // brittle.hardness_GPa, with the largest H / E the form allows: 0.212 for Marsh, 0.0724 (1 - nu^2)^-1 for
 // Johnson). Soda-lime glass (H / E* = 0.073) lies just beyond Johnson's reach: the cavity model does not hold
-// for glass, whose hardness is partly densification (docs/models.md). No rate or temperature dependence: a glass at room
-// temperature far below its transition temperature; kerf cites no source for one.
+// for glass, whose hardness is partly densification (docs/models.md). No rate or temperature dependence: a glass at
+// room temperature far below its transition temperature; kerf cites no source for one.
 //
 //   kerf::HardnessFlowParams glass{.hardness_Pa = 5.5e9, .youngs_modulus_Pa = 71e9, .poissons_ratio = 0.23,
 //                                  .constraint_factor = 1.7};
@@ -27,9 +27,9 @@ enum class ConstraintModel { given, marsh, johnson_cavity };
 std::string_view constraint_model_name(ConstraintModel model);  ///< "hardness", "hardness_marsh", ...
 
 struct HardnessFlowParams {
-  double hardness_Pa = 0.0;         ///< H > 0 (material brittle.hardness_GPa)
-  double youngs_modulus_Pa = 0.0;   ///< E > H (material elastic.youngs_modulus_GPa)
-  double poissons_ratio = 0.0;      ///< nu in [0, 0.5) (material elastic.poissons_ratio), for Johnson's E*
+  double hardness_Pa = 0.0;                 ///< H > 0 (material brittle.hardness_GPa)
+  double youngs_modulus_Pa = 0.0;           ///< E > H (material elastic.youngs_modulus_GPa)
+  double poissons_ratio = 0.0;              ///< nu in [0, 0.5) (material elastic.poissons_ratio), for Johnson's E*
   std::optional<double> constraint_factor;  ///< C = H / Y >= 1 (brittle.constraint_factor), for `given`
 
   /// Names path.brittle.hardness_GPa, path.elastic.youngs_modulus_GPa, path.brittle.constraint_factor.

@@ -17,11 +17,11 @@
 namespace kerf {
 
 struct JohnsonCookParams {
-  double A_Pa = 0.0;                  ///< yield stress
-  double B_Pa = 0.0;                  ///< hardening modulus
-  double n = 1.0;                     ///< hardening exponent
-  double C = 0.0;                     ///< strain-rate sensitivity
-  double m = 1.0;                     ///< thermal-softening exponent
+  double A_Pa = 0.0;  ///< yield stress
+  double B_Pa = 0.0;  ///< hardening modulus
+  double n = 1.0;     ///< hardening exponent
+  double C = 0.0;     ///< strain-rate sensitivity
+  double m = 1.0;     ///< thermal-softening exponent
   double reference_strain_rate_per_s = 1.0;
   double room_temperature_K = 293.15;
   double melting_temperature_K = 1700.0;

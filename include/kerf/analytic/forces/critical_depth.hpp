@@ -26,9 +26,9 @@
 namespace kerf {
 
 struct BrittleProperties {
-  double youngs_modulus_Pa = 0.0;               ///< E > 0 (material group elastic.youngs_modulus_GPa)
-  double hardness_Pa = 0.0;                     ///< H > 0 (brittle.hardness_GPa)
-  double fracture_toughness_Pa_sqrt_m = 0.0;    ///< K_c > 0 (brittle.fracture_toughness_MPa_sqrt_m)
+  double youngs_modulus_Pa = 0.0;             ///< E > 0 (material group elastic.youngs_modulus_GPa)
+  double hardness_Pa = 0.0;                   ///< H > 0 (brittle.hardness_GPa)
+  double fracture_toughness_Pa_sqrt_m = 0.0;  ///< K_c > 0 (brittle.fracture_toughness_MPa_sqrt_m)
 
   /// Names path.elastic.youngs_modulus_GPa, path.brittle.hardness_GPa, path.brittle.fracture_toughness_MPa_sqrt_m.
   void validate(const std::string& path) const;

@@ -16,14 +16,14 @@
 namespace kerf {
 
 struct EdgeTool {
-  double rake_rad = 0.0;             ///< in (-pi/2, pi/2)
-  double edge_radius_m = 0.0;        ///< >= 0; 0: a sharp edge (Merchant), else Liu-Li with the wave model
-  double friction_coefficient = 0.3; ///< >= 0, tool on glass (0.15-0.4: physics-glass-edge.md section 4)
-  double layer_factor = 1.0;         ///< lambda = l / d_c > 0
+  double rake_rad = 0.0;              ///< in (-pi/2, pi/2)
+  double edge_radius_m = 0.0;         ///< >= 0; 0: a sharp edge (Merchant), else Liu-Li with the wave model
+  double friction_coefficient = 0.3;  ///< >= 0, tool on glass (0.15-0.4: physics-glass-edge.md section 4)
+  double layer_factor = 1.0;          ///< lambda = l / d_c > 0
 };
 
 struct EdgeForce {
-  ForcePerWidth force;          ///< N/m: cutting along the cut, thrust into the workpiece
+  ForcePerWidth force;  ///< N/m: cutting along the cut, thrust into the workpiece
   double ductile_layer_m = 0.0;
   double critical_depth_m = 0.0;
   double flow_stress_Pa = 0.0;  ///< the hardness flow stress the layer was cut at

@@ -60,17 +60,17 @@ struct LiuLiParams {
 };
 
 struct LiuLiResult {
-  ForcePerWidth total;        ///< N per m of width
-  ForcePerWidth edge;         ///< the arc integral
-  ForcePerWidth rake_face;    ///< the straight rake face above the arc
+  ForcePerWidth total;      ///< N per m of width
+  ForcePerWidth edge;       ///< the arc integral
+  ForcePerWidth rake_face;  ///< the straight rake face above the arc
   double upper_limit_rad = 0.0;
-  double lower_limit_rad = 0.0;        ///< where the integral starts (clipped to the upper limit)
-  double cut_off_rad = 0.0;            ///< the lower limit before clipping: no chip forms at a local rake below it
-  double stagnation_angle_rad = 0.0;   ///< -(pi/4 + beta/2)
-  std::optional<double> pole_rad;      ///< the pole of the constant closure, if on the edge
-  double ploughed_thickness_m = 0.0;   ///< min(t0, r (1 + sin g_L)): below the lower limit
-  bool chip_on_edge_only = false;      ///< t0 <= r (1 + sin a)
-  bool rake_face_ploughs = false;      ///< the nominal rake lies at or below the lower limit: no chip at all
+  double lower_limit_rad = 0.0;       ///< where the integral starts (clipped to the upper limit)
+  double cut_off_rad = 0.0;           ///< the lower limit before clipping: no chip forms at a local rake below it
+  double stagnation_angle_rad = 0.0;  ///< -(pi/4 + beta/2)
+  std::optional<double> pole_rad;     ///< the pole of the constant closure, if on the edge
+  double ploughed_thickness_m = 0.0;  ///< min(t0, r (1 + sin g_L)): below the lower limit
+  bool chip_on_edge_only = false;     ///< t0 <= r (1 + sin a)
+  bool rake_face_ploughs = false;     ///< the nominal rake lies at or below the lower limit: no chip at all
   double quadrature_error_estimate = 0.0;
 };
 

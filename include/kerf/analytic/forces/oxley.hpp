@@ -54,10 +54,10 @@ struct OxleyParams {
 
 /// One orthogonal cut, SI units.
 struct OxleyCut {
-  double rake_rad = 0.0;                  ///< tool rake angle alpha
-  double uncut_chip_thickness_m = 0.0;    ///< t1
-  double width_m = 0.0;                   ///< w (forces are for this width)
-  double speed_m_per_s = 0.0;             ///< cutting speed V
+  double rake_rad = 0.0;                ///< tool rake angle alpha
+  double uncut_chip_thickness_m = 0.0;  ///< t1
+  double width_m = 0.0;                 ///< w (forces are for this width)
+  double speed_m_per_s = 0.0;           ///< cutting speed V
   double workpiece_temperature_K = 293.15;
 
   /// Throws InputError naming `path`.<field>: rake in (-pi/2, pi/2), t1 > 0, w > 0, V > 0, T > 0.
@@ -93,41 +93,41 @@ struct OxleySolverOptions {
 
 struct OxleyResult {
   // Unknowns.
-  double shear_angle_rad = 0.0;           ///< phi
-  double strain_rate_constant_C0 = 0.0;   ///< C0
-  double delta = 0.0;                     ///< secondary-zone thickness / chip thickness
+  double shear_angle_rad = 0.0;          ///< phi
+  double strain_rate_constant_C0 = 0.0;  ///< C0
+  double delta = 0.0;                    ///< secondary-zone thickness / chip thickness
   // Forces (for width_m) and geometry.
-  double cutting_force_N = 0.0;           ///< F_c = R cos(theta - phi)
-  double thrust_force_N = 0.0;            ///< F_t = R sin(theta - phi)
-  double chip_thickness_m = 0.0;          ///< t2 = t1 cos(phi - alpha) / sin(phi)
-  double contact_length_m = 0.0;          ///< h, tool-chip contact length
-  double shear_force_N = 0.0;             ///< F_s = k_AB l_AB w
-  double resultant_force_N = 0.0;         ///< R = F_s / cos(theta)
-  double friction_force_N = 0.0;          ///< F = R sin(lambda), along the rake face
-  double normal_force_N = 0.0;            ///< N = R cos(lambda), normal to the rake face
-  double theta_rad = 0.0;                 ///< angle between R and the shear plane
-  double friction_angle_rad = 0.0;        ///< lambda = theta + alpha - phi
+  double cutting_force_N = 0.0;     ///< F_c = R cos(theta - phi)
+  double thrust_force_N = 0.0;      ///< F_t = R sin(theta - phi)
+  double chip_thickness_m = 0.0;    ///< t2 = t1 cos(phi - alpha) / sin(phi)
+  double contact_length_m = 0.0;    ///< h, tool-chip contact length
+  double shear_force_N = 0.0;       ///< F_s = k_AB l_AB w
+  double resultant_force_N = 0.0;   ///< R = F_s / cos(theta)
+  double friction_force_N = 0.0;    ///< F = R sin(lambda), along the rake face
+  double normal_force_N = 0.0;      ///< N = R cos(lambda), normal to the rake face
+  double theta_rad = 0.0;           ///< angle between R and the shear plane
+  double friction_angle_rad = 0.0;  ///< lambda = theta + alpha - phi
   // Primary shear zone AB (equivalent strain and rate = shear value / sqrt 3).
   double shear_plane_strain = 0.0;
   double shear_plane_strain_rate_per_s = 0.0;
-  double shear_plane_temperature_K = 0.0;          ///< T_AB
-  double shear_plane_flow_stress_Pa = 0.0;         ///< Johnson-Cook sigma at AB
-  double shear_plane_shear_stress_Pa = 0.0;        ///< k_AB = sigma / sqrt 3
-  double heat_partition = 0.0;                     ///< beta_h, fraction of shear-zone heat into the work
-  double strain_hardening_index = 0.0;             ///< n_eq = n B eps^n / (A + B eps^n)
-  double tool_tip_normal_stress_Pa = 0.0;          ///< sigma_N' = k_AB (1 + pi/2 - 2 alpha - 2 C0 n_eq)
+  double shear_plane_temperature_K = 0.0;    ///< T_AB
+  double shear_plane_flow_stress_Pa = 0.0;   ///< Johnson-Cook sigma at AB
+  double shear_plane_shear_stress_Pa = 0.0;  ///< k_AB = sigma / sqrt 3
+  double heat_partition = 0.0;               ///< beta_h, fraction of shear-zone heat into the work
+  double strain_hardening_index = 0.0;       ///< n_eq = n B eps^n / (A + B eps^n)
+  double tool_tip_normal_stress_Pa = 0.0;    ///< sigma_N' = k_AB (1 + pi/2 - 2 alpha - 2 C0 n_eq)
   // Tool-chip interface.
   double interface_strain = 0.0;
   double interface_strain_rate_per_s = 0.0;
-  double interface_temperature_K = 0.0;            ///< T_int
-  double chip_temperature_K = 0.0;                 ///< T_c = T_w + dT_SZ + dT_C, mean chip temperature
-  double interface_shear_stress_Pa = 0.0;          ///< tau_int = F / (h w)
-  double interface_normal_stress_Pa = 0.0;         ///< sigma_N = N / (h w)
-  double chip_shear_flow_stress_Pa = 0.0;          ///< k_chip = sigma_JC(interface) / sqrt 3
+  double interface_temperature_K = 0.0;     ///< T_int
+  double chip_temperature_K = 0.0;          ///< T_c = T_w + dT_SZ + dT_C, mean chip temperature
+  double interface_shear_stress_Pa = 0.0;   ///< tau_int = F / (h w)
+  double interface_normal_stress_Pa = 0.0;  ///< sigma_N = N / (h w)
+  double chip_shear_flow_stress_Pa = 0.0;   ///< k_chip = sigma_JC(interface) / sqrt 3
   // Solver report.
-  double residual_shear = 0.0;   ///< |tau_int - k_chip| / max(|tau_int|, |k_chip|)
-  double residual_normal = 0.0;  ///< |sigma_N - sigma_N'| / max(|sigma_N|, |sigma_N'|)
-  bool converged = false;        ///< both conditions solved by a bracketed root (never true for evaluate_oxley)
+  double residual_shear = 0.0;     ///< |tau_int - k_chip| / max(|tau_int|, |k_chip|)
+  double residual_normal = 0.0;    ///< |sigma_N - sigma_N'| / max(|sigma_N|, |sigma_N'|)
+  bool converged = false;          ///< both conditions solved by a bracketed root (never true for evaluate_oxley)
   int n_function_evaluations = 0;  ///< evaluations of the shear-zone state (each solves its own T_AB)
   /// Branches: full solutions (both conditions bracketed) the cold phi search found at the first delta; the
   /// minimum-force one is followed. 0 when none was found there.

@@ -33,7 +33,7 @@ struct OxleyDetails {
   double delta = 0.0;
   double interface_temperature_K = 0.0;
   double contact_length_m = 0.0;
-  double residual = 0.0;  ///< the larger relative residual of the two Oxley conditions
+  double residual = 0.0;      ///< the larger relative residual of the two Oxley conditions
   int shear_angle_roots = 0;  ///< branches found; the minimum-force one is reported
 };
 

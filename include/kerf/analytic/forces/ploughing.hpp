@@ -45,7 +45,7 @@ struct WaveForceFactors {
   double attack_angle_rad = 0.0;  ///< the alpha used (capped at eta where the field does not exist)
   double wave_front_angle_rad = 0.0;
   double fan_angle_rad = 0.0;
-  bool capped = false;            ///< alpha > eta was asked for
+  bool capped = false;  ///< alpha > eta was asked for
 };
 
 /// The wave model's force factors (Challen & Oxley 1979) for friction factor f in [0, 1] and attack angle
@@ -66,10 +66,10 @@ struct EdgePloughingParams {
 };
 
 struct EdgePloughingResult {
-  ForcePerWidth force;              ///< N per m of width
-  double ploughed_height_m = 0.0;   ///< h_p, the height the chord rises by (at most the arc's 2 r)
-  double engaged_arc_rad = 0.0;     ///< theta_e, from the lowest point of the edge
-  double chord_m = 0.0;             ///< L
+  ForcePerWidth force;             ///< N per m of width
+  double ploughed_height_m = 0.0;  ///< h_p, the height the chord rises by (at most the arc's 2 r)
+  double engaged_arc_rad = 0.0;    ///< theta_e, from the lowest point of the edge
+  double chord_m = 0.0;            ///< L
   WaveForceFactors factors;
 };
 

@@ -50,9 +50,15 @@ struct ValuePair {
   ValuePair() = default;
   ValuePair(double a, double b) : first(a), second(b) {}
   ValuePair(double a) : first(a), second(a) {}  // NOLINT: implicit, as Boost writes K x = 0
-  ValuePair& operator+=(const ValuePair& o) { first += o.first; second += o.second; return *this; }
+  ValuePair& operator+=(const ValuePair& o) {
+    first += o.first;
+    second += o.second;
+    return *this;
+  }
   friend ValuePair operator+(ValuePair a, const ValuePair& b) { return a += b; }
-  friend ValuePair operator-(const ValuePair& a, const ValuePair& b) { return {a.first - b.first, a.second - b.second}; }
+  friend ValuePair operator-(const ValuePair& a, const ValuePair& b) {
+    return {a.first - b.first, a.second - b.second};
+  }
   friend ValuePair operator-(const ValuePair& a) { return {-a.first, -a.second}; }
   friend ValuePair operator*(const ValuePair& a, double k) { return {a.first * k, a.second * k}; }
   friend ValuePair operator*(double k, const ValuePair& a) { return a * k; }

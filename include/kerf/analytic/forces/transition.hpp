@@ -35,8 +35,8 @@ inline constexpr double kAkonoUlmZeta = 1.4142135623730951;
 
 struct TransitionParams {
   FractureModel fracture = FractureModel::lefm_scratch;  ///< models.fracture
-  double layer_factor = 1.0;        ///< lambda = l / d_c > 0 (its key: ductile_layer_factor)
-  double fracture_coefficient = kAkonoUlmZeta;  ///< zeta >= 0 (its key: fracture_coefficient)
+  double layer_factor = 1.0;                             ///< lambda = l / d_c > 0 (its key: ductile_layer_factor)
+  double fracture_coefficient = kAkonoUlmZeta;           ///< zeta >= 0 (its key: fracture_coefficient)
 
   void validate(const std::string& path) const;
 };

@@ -20,7 +20,8 @@ namespace kerf {
 template <class S, class At>
 NumberField<S> number_at(std::string_view key, FieldUnit unit, Range range, std::string_view doc, At at,
                          bool required = false) {
-  return {key, unit, range, doc, [at](const S& s) { return at(s); }, [at](S& s, double v) { at(s) = v; }, required, {}, {}};
+  return {key,      unit, range, doc, [at](const S& s) { return at(s); }, [at](S& s, double v) { at(s) = v; },
+          required, {},   {}};
 }
 
 /// A choice whose names map to an enum through `parse` (nullopt: a name the field handles by itself), the enum

@@ -42,7 +42,7 @@ struct Prediction {
   /// The ploughing term under the edge (models.ploughing = wave with force liu_li and an edge radius): added to
   /// the chip term in cutting_force_N and thrust_force_N.
   std::optional<EdgePloughingResult> ploughing;
-  double friction_factor = 0.0;  ///< the ploughing model's f (given, or sin(2 beta))
+  double friction_factor = 0.0;       ///< the ploughing model's f (given, or sin(2 beta))
   std::optional<OxleyDetails> oxley;  ///< the Oxley solve's (forces/oxley_model.hpp: force or deformation oxley)
   /// The force model's own details (its unit's write_cells and print read them: kinds/force_model.hpp).
   std::any details;

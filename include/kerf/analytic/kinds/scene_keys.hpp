@@ -3,8 +3,10 @@
 // "cut.workpiece_temperature_K" of an OxleyCut); the scene layer that called them names the scene's key instead,
 // with the value in the key's unit. A force model's unit lists the fields it passes from the scene:
 //
-//   constexpr kerf::SceneKeyOf kKeys[] = {{"uncut_chip_thickness_m", "cut.uncut_chip_thickness_um", kerf::units::kUm, "m"}};
-//   const auto r = kerf::naming_scene_keys(kKeys, [&] { return kerf::liu_li_force_per_width(params, k_s, t0, &guards); });
+//   constexpr kerf::SceneKeyOf kKeys[] = {
+//       {"uncut_chip_thickness_m", "cut.uncut_chip_thickness_um", kerf::units::kUm, "m"}};
+//   const auto r =
+//       kerf::naming_scene_keys(kKeys, [&] { return kerf::liu_li_force_per_width(params, k_s, t0, &guards); });
 //   // "cut.uncut_chip_thickness_um = -1: expected a positive value in um"
 #include <span>
 #include <string_view>
@@ -16,10 +18,10 @@ namespace kerf {
 
 /// A physics function's field and the scene key that sets it.
 struct SceneKeyOf {
-  std::string_view field;           ///< as the physics names it: "uncut_chip_thickness_m"
-  std::string_view key;             ///< the scene's key: "cut.uncut_chip_thickness_um"
-  FieldUnit unit = units::kNone;    ///< the key's unit: the value is converted from SI to it
-  std::string_view si_unit = "";    ///< the field's unit as its expectation ends ("in m"): becomes the key's
+  std::string_view field;         ///< as the physics names it: "uncut_chip_thickness_m"
+  std::string_view key;           ///< the scene's key: "cut.uncut_chip_thickness_um"
+  FieldUnit unit = units::kNone;  ///< the key's unit: the value is converted from SI to it
+  std::string_view si_unit = "";  ///< the field's unit as its expectation ends ("in m"): becomes the key's
 };
 
 /// `e` naming the scene key of its field (its value in the key's unit, an expectation that ends in the SI unit

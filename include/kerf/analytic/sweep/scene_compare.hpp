@@ -3,10 +3,10 @@
 //
 // Each measured row's conditions are written into the scene (a CSV column whose name ends in a unit, such as
 // depth_nm, is converted to the scene key's unit; a unit of another kind is refused; a column without a unit
-// suffix is taken in the key's unit), the scene is predicted, and the predicted quantities are compared with the measured ones. Columns
-// are matched by name: a CSV column named like a prediction column (cutting_force_N, thrust_force_N,
-// axial_force_N, torque_N_m) is a measured quantity; a CSV column named like a key of the scene's `tool` or
-// `cut` is a condition. `mappings` name the others: "cut.feed_rate_um_per_s=feed_rate_um_s" (a condition:
+// suffix is taken in the key's unit), the scene is predicted, and the predicted quantities are compared with the
+// measured ones. Columns are matched by name: a CSV column named like a prediction column (cutting_force_N,
+// thrust_force_N, axial_force_N, torque_N_m) is a measured quantity; a CSV column named like a key of the scene's
+// `tool` or `cut` is a condition. `mappings` name the others: "cut.feed_rate_um_per_s=feed_rate_um_s" (a condition:
 // scene key path = CSV column) or "axial_force_N=axial_force_test_N" (a quantity: prediction column = CSV
 // column). With `fit`, a trepanning scene's two lumped groups are fitted to the measured rows first (with
 // leave-one-out errors in the report).
@@ -41,18 +41,19 @@ struct SceneComparisonOptions {
 /// What the prediction of one measured row said besides its numbers.
 struct RowDiagnostics {
   std::size_t line = 0;  ///< the row's line in the CSV
-  std::string regime;    ///< "ductile", "transition", "brittle" (a grit's, for trepanning); empty without a critical depth
+  std::string
+      regime;  ///< "ductile", "transition", "brittle" (a grit's, for trepanning); empty without a critical depth
   std::vector<std::string> guards;    ///< the names of the guards that fired; empty when none
   std::vector<std::string> warnings;  ///< the prediction's validity warnings, one text each
 };
 
 struct SceneComparison {
   Comparison comparison;
-  ReportOptions report;                            ///< the fit and notes, for report.md and summary.json
+  ReportOptions report;                              ///< the fit and notes, for report.md and summary.json
   std::optional<TrepanningCalibration> calibration;  ///< with fit on a trepanning scene
-  std::vector<std::string> notes;                  ///< how columns were matched, what was assumed
-  std::vector<std::string> unused_columns;         ///< CSV columns bound to nothing
-  std::vector<RowDiagnostics> rows;                ///< per measured row, in the CSV's order
+  std::vector<std::string> notes;                    ///< how columns were matched, what was assumed
+  std::vector<std::string> unused_columns;           ///< CSV columns bound to nothing
+  std::vector<RowDiagnostics> rows;                  ///< per measured row, in the CSV's order
 };
 
 SceneComparison compare_scene(const Json& scene_document, const std::filesystem::path& experiments_csv,

@@ -24,12 +24,12 @@ namespace kerf {
 
 /// One varied key and its values.
 struct SweepAxis {
-  std::string key;                   ///< dotted scene key, "cut.uncut_chip_thickness_um"
-  std::string spec;                  ///< as the user gave it (the CLI's key=START:STOP:COUNT; messages)
-  std::vector<Json> values;          ///< the value each point sets
-  std::vector<std::string> texts;    ///< each value as written (messages name key=text)
-  std::vector<double> numbers;       ///< the values as numbers (the CLI grammar's; empty for other values)
-  bool log_spacing = false;          ///< START:STOP:COUNT:log (a figure draws this axis logarithmically)
+  std::string key;                 ///< dotted scene key, "cut.uncut_chip_thickness_um"
+  std::string spec;                ///< as the user gave it (the CLI's key=START:STOP:COUNT; messages)
+  std::vector<Json> values;        ///< the value each point sets
+  std::vector<std::string> texts;  ///< each value as written (messages name key=text)
+  std::vector<double> numbers;     ///< the values as numbers (the CLI grammar's; empty for other values)
+  bool log_spacing = false;        ///< START:STOP:COUNT:log (a figure draws this axis logarithmically)
 };
 
 /// The CLI's axis: key.path=START:STOP:COUNT[:log|:lin] (values rounded to 15 significant digits) or

@@ -42,8 +42,12 @@ struct TrepanningTool {
 };
 
 namespace units {
-constexpr double rpm_to_rev_per_s(double rpm) { return rpm / 60.0; }
-constexpr double rev_per_s_to_rpm(double rev_per_s) { return rev_per_s * 60.0; }
+constexpr double rpm_to_rev_per_s(double rpm) {
+  return rpm / 60.0;
+}
+constexpr double rev_per_s_to_rpm(double rev_per_s) {
+  return rev_per_s * 60.0;
+}
 }  // namespace units
 
 /// Feed rate and spindle speed. Scene keys cut.feed_rate_um_per_s, cut.spindle_speed_rpm.
@@ -86,15 +90,15 @@ struct ImpliedTrepanningMaterial {
   double hardness_Pa = 0.0;
   double half_angle_rad = 0.0;
   double friction_coefficient = 0.0;
-  bool physical = false;  ///< mu >= 0
+  bool physical = false;                                   ///< mu >= 0
   double max_hardness_for_non_negative_friction_Pa = 0.0;  ///< = K_M
 };
 ImpliedTrepanningMaterial implied_trepanning_material(const TrepanningGroups& groups, double hardness_Pa);
 
 struct TrepanningForces {
-  double axial_force_N = 0.0;  ///< F_n, Eq. 21
-  double torque_N_m = 0.0;     ///< M, Eq. 22
-  double feed_per_rev_m = 0.0; ///< f, Eq. 7
+  double axial_force_N = 0.0;   ///< F_n, Eq. 21
+  double torque_N_m = 0.0;      ///< M, Eq. 22
+  double feed_per_rev_m = 0.0;  ///< f, Eq. 7
 };
 
 /// Plausibility guard: throws InputError on the cut's own key (feed_rate_um_per_s; spindle_speed_rpm where the feed
@@ -103,7 +107,8 @@ struct TrepanningForces {
 void check_feed_plausible(const TrepanningTool& tool, const TrepanningCut& cut);
 
 /// Eqs. 21-22 from the lumped groups. Inputs are validated (InputError names tool.*, cut.*, groups.*).
-TrepanningForces trepanning_forces(const TrepanningTool& tool, const TrepanningCut& cut, const TrepanningGroups& groups);
+TrepanningForces trepanning_forces(const TrepanningTool& tool, const TrepanningCut& cut,
+                                   const TrepanningGroups& groups);
 /// Eqs. 21-22 from H, phi and mu.
 TrepanningForces trepanning_forces(const TrepanningTool& tool, const TrepanningCut& cut,
                                    const TrepanningMaterial& material);
@@ -114,7 +119,8 @@ struct TrepanningGritParams {
   double shape_coefficient = 1.0;    ///< G in (0, 1]: the fraction of the end face that carries grits
   double grit_width_m = 0.0;         ///< a > 0: cutting width of one grit (Eqs. 3, 13)
 
-  void validate(const std::string& path) const;  ///< names path.grit_density_per_mm2, .shape_coefficient, .grit_width_um
+  void validate(
+      const std::string& path) const;  ///< names path.grit_density_per_mm2, .shape_coefficient, .grit_width_um
 };
 
 struct TrepanningGritDiagnostics {
@@ -125,8 +131,9 @@ struct TrepanningGritDiagnostics {
   double feed_per_edge_m = 0.0;         ///< a_f = f / Z, Eqs. 6, 8
   double grit_depth_m = 0.0;            ///< g = a_f, Eq. 14
   double implied_half_angle_rad = 0.0;  ///< phi from a = 2 g tan(phi), Eq. 13
-  double grit_normal_force_N = 0.0;     ///< F_an = F_an1 = (pi/2) g^2 tan^2(phi) H = (pi/4) g a K_F, Eqs. 11, 15, 17, 19
-  double grit_tangential_force_N = 0.0; ///< F_at = F_at1 + F_at2 = g^2 tan(phi) K_M = (1/2) g a K_M, Eqs. 12, 16, 18, 20
+  double grit_normal_force_N = 0.0;  ///< F_an = F_an1 = (pi/2) g^2 tan^2(phi) H = (pi/4) g a K_F, Eqs. 11, 15, 17, 19
+  double grit_tangential_force_N =
+      0.0;  ///< F_at = F_at1 + F_at2 = g^2 tan(phi) K_M = (1/2) g a K_M, Eqs. 12, 16, 18, 20
 };
 
 /// Eqs. 1-20 for one cut. Consistency (tested): N_c F_an = F_n and N_c F_at r = M with r = (D + d) / 4.
@@ -155,11 +162,11 @@ std::string_view residual_weighting_name(ResidualWeighting weighting);
 
 /// The fit of one lumped group to one measured quantity (axial force or torque).
 struct GroupFit {
-  double value_Pa = 0.0;           ///< the fitted group
-  double standard_error_Pa = 0.0;  ///< from the weighted residuals (GSL covariance scaled by chi^2 / (n - 1))
-  std::vector<double> predicted;   ///< model at each row with the fitted group (N or N m)
-  std::vector<double> error_percent;   ///< (predicted - measured) / measured
-  ErrorMetrics fit;                ///< metrics of error_percent
+  double value_Pa = 0.0;              ///< the fitted group
+  double standard_error_Pa = 0.0;     ///< from the weighted residuals (GSL covariance scaled by chi^2 / (n - 1))
+  std::vector<double> predicted;      ///< model at each row with the fitted group (N or N m)
+  std::vector<double> error_percent;  ///< (predicted - measured) / measured
+  ErrorMetrics fit;                   ///< metrics of error_percent
   // Leave-one-out cross-validation: each row predicted by the group fitted to the other n - 1 rows.
   std::vector<double> loo_value_Pa;
   std::vector<double> loo_predicted;

@@ -14,14 +14,14 @@
 // brittle.hardness_GPa), and optionally `grits` for the per-grit diagnostics. Unknown keys are rejected with a
 // suggestion.
 //
-//   kerf::TrepanningScene s = kerf::parse_trepanning_scene(kerf::read_json_file("validation/k9_trepanning/scene.json"));
+//   kerf::TrepanningScene s =
+//       kerf::parse_trepanning_scene(kerf::read_json_file("validation/k9_trepanning/scene.json"));
 //   kerf::TrepanningForces f = kerf::trepanning_forces(s.tool, s.cut, s.groups);
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "kerf/analytic/kinds/key_sections.hpp"
-
 #include "kerf/analytic/trepanning/trepanning.hpp"
 #include "kerf/json_reader.hpp"
 #include "kerf/material.hpp"
@@ -39,7 +39,8 @@ struct TrepanningScene {
   /// models.trepanning.grits {grit_density_per_mm2, shape_coefficient, grit_width_um}: the per-grit diagnostics
   /// of Eqs. 1-20 (optional; the totals do not depend on them).
   std::optional<TrepanningGritParams> grits;
-  std::string groups_origin;  ///< "models.trepanning.axial_group_MPa/torque_group_MPa" or "hardness, half angle, friction"
+  std::string
+      groups_origin;  ///< "models.trepanning.axial_group_MPa/torque_group_MPa" or "hardness, half angle, friction"
 };
 
 /// Validates a scene document; InputError names the first bad field by its dotted path.

@@ -31,11 +31,11 @@ struct TrepanningAcceptance {
 struct TrepanningValidation {
   TrepanningScene scene;
   TrepanningAcceptance acceptance;
-  TrepanningCalibration measured_fit;  ///< groups fitted to the measured rows (with leave-one-out)
-  TrepanningCalibration theory_fit;    ///< groups fitted to the paper's theory column
+  TrepanningCalibration measured_fit;      ///< groups fitted to the measured rows (with leave-one-out)
+  TrepanningCalibration theory_fit;        ///< groups fitted to the paper's theory column
   ErrorMetrics paper_axial, paper_torque;  ///< the paper's theory column against the measured rows
   ImpliedTrepanningMaterial implied_measured, implied_theory;  ///< at the material's brittle.hardness_GPa
-  std::vector<std::string> failures;   ///< one line per missed acceptance band; empty when passed
+  std::vector<std::string> failures;         ///< one line per missed acceptance band; empty when passed
   std::vector<std::filesystem::path> files;  ///< the report files written
   bool passed() const { return failures.empty(); }
 };

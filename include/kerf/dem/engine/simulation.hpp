@@ -21,10 +21,10 @@
 #include <utility>
 #include <vector>
 
-#include "kerf/dem/laws/contact_laws.hpp"
-#include "kerf/dem/laws/material.hpp"
 #include "kerf/dem/engine/neighbor_grid.hpp"
 #include "kerf/dem/engine/team_governor.hpp"
+#include "kerf/dem/laws/contact_laws.hpp"
+#include "kerf/dem/laws/material.hpp"
 
 namespace kerf::dem {
 
@@ -38,8 +38,8 @@ struct Particles {
   std::vector<double> x, y, vx, vy, theta, omega;  ///< position [m], velocity [m/s], rotation [rad], spin [rad/s]
   std::vector<double> fx, fy, torque;              ///< force [N] and torque [N m] of the last evaluation
   std::vector<double> radius, inv_mass, inv_inertia;
-  std::vector<std::uint8_t> type;                  ///< index into the type table
-  std::vector<std::uint8_t> group;                 ///< 0: free; > 0: velocity prescribed, forces summed per group
+  std::vector<std::uint8_t> type;   ///< index into the type table
+  std::vector<std::uint8_t> group;  ///< 0: free; > 0: velocity prescribed, forces summed per group
   std::size_t size() const { return x.size(); }
 };
 
@@ -47,13 +47,13 @@ struct Particles {
 struct BondStore {
   int stride = 2;  ///< elements per bond (the bond law's bond_elements: N_r for the flat joint)
   std::vector<std::int32_t> i, j;
-  std::vector<double> ref_distance_m;   ///< centre distance at installation (zero gap there)
-  std::vector<double> ref_rotation_rad; ///< theta_j - theta_i at installation
+  std::vector<double> ref_distance_m;    ///< centre distance at installation (zero gap there)
+  std::vector<double> ref_rotation_rad;  ///< theta_j - theta_i at installation
   std::vector<BondGeometry> geometry;
-  std::vector<std::uint8_t> active;     ///< 0 once retired (broken, per the law): the unbonded contact rules
-  std::vector<double> shear_force_n;    ///< per element
-  std::vector<std::uint8_t> bonded;     ///< per element
-  std::vector<BreakMode> pending;       ///< per element, breaks found in this step's force loop
+  std::vector<std::uint8_t> active;        ///< 0 once retired (broken, per the law): the unbonded contact rules
+  std::vector<double> shear_force_n;       ///< per element
+  std::vector<std::uint8_t> bonded;        ///< per element
+  std::vector<BreakMode> pending;          ///< per element, breaks found in this step's force loop
   std::vector<std::array<double, 4>> out;  ///< per bond: force on j (x, y), torque on i, torque on j
   /// Whether the bond law keeps a damage per element (BondLawWithDamage: the softening flat joint); set from the
   /// law by the Simulation.
@@ -69,9 +69,9 @@ struct BondStore {
 
 /// A rigid wall: a line segment moving at a prescribed velocity. Disks touch it from either side.
 struct Wall {
-  double x0, y0, x1, y1;       ///< end points [m]
-  double vx = 0, vy = 0;       ///< prescribed velocity [m/s]
-  double fx = 0, fy = 0;       ///< force the disks exert on the wall [N], last evaluation
+  double x0, y0, x1, y1;  ///< end points [m]
+  double vx = 0, vy = 0;  ///< prescribed velocity [m/s]
+  double fx = 0, fy = 0;  ///< force the disks exert on the wall [N], last evaluation
   bool enabled = true;
   /// Coulomb friction of the disk-wall contacts (a tool face's own friction); negative: the material's mu.
   double friction_coefficient = -1;
@@ -139,12 +139,17 @@ class Simulation {
   /// Installs a joint whose zero-gap state is at the given centre distance and relative rotation (loading).
   int install_bond(int i, int j, double ref_distance_m, double ref_rotation_rad);
   /// Recomputes the time step for the current radii and contacts (genesis changes radii).
-  void refresh_time_step() { if (!dt_fixed_) dt_ = stable_time_step(); }
+  void refresh_time_step() {
+    if (!dt_fixed_) dt_ = stable_time_step();
+  }
   /// Installs joints at every pair whose surface gap is below `gap_m` (overlaps included).
   int install_bonds_within_gap(double gap_m);
   /// Builds the neighbour lists; computes the time step unless set_time_step was called.
   void initialise();
-  void set_time_step(double dt_s) { dt_ = dt_s; dt_fixed_ = true; }
+  void set_time_step(double dt_s) {
+    dt_ = dt_s;
+    dt_fixed_ = true;
+  }
   /// Changes f_safety (validated as engine.time_step_safety) and recomputes the step.
   void set_time_step_safety(double f);
   void set_min_parallel_items(std::int64_t n) { opt_.min_parallel_items = n; }
@@ -199,7 +204,10 @@ class Simulation {
   double time_step() const { return dt_; }
   double time() const { return time_; }
   std::int64_t step_count() const { return steps_; }
-  void set_clock(double time_s, std::int64_t steps) { time_ = time_s; steps_ = steps; }
+  void set_clock(double time_s, std::int64_t steps) {
+    time_ = time_s;
+    steps_ = steps;
+  }
 
   /// Sum of contact forces on the particles of prescribed-velocity group g [N].
   std::array<double, 2> group_force(std::uint8_t g) const;
@@ -341,12 +349,12 @@ class Simulation {
   std::vector<std::int32_t> incidence_pair_begin_, incidence_wall_begin_;
   // Positions at the last rebuild.
   std::vector<double> x_ref_, y_ref_, wall_ref_;
-  std::vector<std::int32_t> fixed_;  ///< indices of prescribed-velocity particles
+  std::vector<std::int32_t> fixed_;      ///< indices of prescribed-velocity particles
   std::vector<double> absorbing_rate_;   ///< per disk [1/s], or empty (set_absorbing_rates)
   std::vector<double> absorbing_decay_;  ///< exp(-rate dt) for absorbing_dt_ (derived, not saved)
   double absorbing_dt_ = 0;
-  std::vector<DiskLoad> disk_loads_;     ///< set_disk_loads (not saved)
-  void absorb_disks();  ///< this thread's share of the decay (in the step's team)
+  std::vector<DiskLoad> disk_loads_;  ///< set_disk_loads (not saved)
+  void absorb_disks();                ///< this thread's share of the decay (in the step's team)
   bool need_rebuild_ = true, need_breaks_ = false, initialised_ = false, dt_fixed_ = false;
   double dt_ = 0, time_ = 0, skin_ = 0, speed_limit_ = 0;
   std::int64_t steps_ = 0;

@@ -20,8 +20,8 @@ namespace kerf::dem {
 class TeamGovernor {
  public:
   struct Params {
-    double window_s = 0.25;  ///< wall time of one measured window
-    int probe_every = 16;    ///< windows of the current team between two probes (the first probe: after one)
+    double window_s = 0.25;     ///< wall time of one measured window
+    int probe_every = 16;       ///< windows of the current team between two probes (the first probe: after one)
     double switch_gain = 1.15;  ///< a probe's rate must exceed the current team's by this factor to switch
   };
   TeamGovernor() = default;

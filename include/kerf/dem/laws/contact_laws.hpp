@@ -62,9 +62,10 @@ concept BondLawWithDamage = requires(const P& p, const BondGeometry& g, const Bo
 /// engine after the loop), when a bond hands its pair to the unbonded contact, its time-step stiffness, strain
 /// energy and the place of a broken element (crack events).
 template <class P>
-concept BondLawParams = LawParams<P> && (BondLawWithoutDamage<P> != BondLawWithDamage<P>) &&
-                        requires(const P& p, const BondGeometry& g, const BondKinematics& k, const BondResult& r,
-                                 const std::uint8_t* bonded) {
+concept BondLawParams = LawParams<P> &&
+    (BondLawWithoutDamage<P> != BondLawWithDamage<P>)&&requires(const P& p, const BondGeometry& g,
+                                                                const BondKinematics& k, const BondResult& r,
+                                                                const std::uint8_t* bonded) {
   { p.bond } -> std::same_as<const BondStiffnessStrength&>;
   { bond_elements(p) } -> std::same_as<int>;
   { bond_keeps_contact(p) } -> std::same_as<bool>;
@@ -109,7 +110,8 @@ template <class V>
 std::vector<std::string> law_names() {
   return [&]<std::size_t... I>(std::index_sequence<I...>) {
     return std::vector<std::string>{std::string(std::variant_alternative_t<I, V>::kName)...};
-  }(std::make_index_sequence<std::variant_size_v<V>>{});
+  }
+  (std::make_index_sequence<std::variant_size_v<V>>{});
 }
 
 /// The law called `name` with its default parameters; InputError on `path` listing the valid names.
@@ -118,11 +120,10 @@ V law_by_name(const std::string& name, const std::string& path) {
   V law;
   bool found = false;
   [&]<std::size_t... I>(std::index_sequence<I...>) {
-    ((!found && std::variant_alternative_t<I, V>::kName == name
-          ? (law.template emplace<I>(), found = true)
-          : false),
+    ((!found && std::variant_alternative_t<I, V>::kName == name ? (law.template emplace<I>(), found = true) : false),
      ...);
-  }(std::make_index_sequence<std::variant_size_v<V>>{});
+  }
+  (std::make_index_sequence<std::variant_size_v<V>>{});
   if (!found) throw InputError(path, name, describe_choices(name, law_names<V>()));
   return law;
 }
@@ -162,7 +163,8 @@ std::string laws_markdown() {
                         std::variant_alternative_t<I, V>::kDescription,
                         fields_markdown(std::variant_alternative_t<I, V>::fields()))),
      ...);
-  }(std::make_index_sequence<std::variant_size_v<V>>{});
+  }
+  (std::make_index_sequence<std::variant_size_v<V>>{});
   return md;
 }
 

@@ -30,8 +30,8 @@ struct FlatJointParams {
   static constexpr std::string_view kName = "flat_joint";
   static constexpr std::string_view kDescription = "Potyondy's 2D flat joint (dem/laws/flat_joint)";
   BondStiffnessStrength bond;  ///< Ebar*, kappabar*, sigma_c, c, phi (bonded-element Coulomb envelope), lambda
-  double residual_friction_coefficient = 0.577;  ///< mu of unbonded elements (residual friction)
-  int n_elements = 2;                   ///< N_r >= 2 (else bending never enters the strength test)
+  double residual_friction_coefficient = 0.577;     ///< mu of unbonded elements (residual friction)
+  int n_elements = 2;                               ///< N_r >= 2 (else bending never enters the strength test)
   double tan_friction_angle = 0.46630765815499858;  ///< tan(phi), derived by validated() (hot loop)
 
   /// The keys, units, ranges and meanings of the parameters (the material's keys for this law).
@@ -129,11 +129,17 @@ inline double flat_joint_element_centroid(const BondGeometry& geo, int n_element
 // --- the law's functions for the engine (kerf/dem/laws/contact_laws.hpp, concept BondLawParams) ---
 
 /// State per bond: N_r elements (shear force and bonded flag each).
-inline int bond_elements(const FlatJointParams& p) { return p.n_elements; }
+inline int bond_elements(const FlatJointParams& p) {
+  return p.n_elements;
+}
 /// The flat joint replaces the unbonded contact of its pair: a broken element carries compression itself.
-constexpr bool bond_keeps_contact(const FlatJointParams&) { return false; }
+constexpr bool bond_keeps_contact(const FlatJointParams&) {
+  return false;
+}
 /// Broken elements stay in the joint (compression and friction), so a break does not end the joint.
-constexpr bool bond_retires_on_break(const FlatJointParams&) { return false; }
+constexpr bool bond_retires_on_break(const FlatJointParams&) {
+  return false;
+}
 
 inline BondResult bond_update(const FlatJointParams& p, const BondGeometry& geo, const BondKinematics& kin,
                               double* shear_force_n, const std::uint8_t* bonded, BreakMode* breaks) {

@@ -67,11 +67,17 @@ inline BondResult bond_update(const ParallelBondParams& p, const BondGeometry& g
 
 // --- the law's functions for the engine (kerf/dem/laws/contact_laws.hpp, concept BondLawParams) ---
 
-inline int bond_elements(const ParallelBondParams&) { return 1; }
+inline int bond_elements(const ParallelBondParams&) {
+  return 1;
+}
 /// The bond acts in parallel with the unbonded contact of its pair (Potyondy & Cundall's bonded-particle model).
-constexpr bool bond_keeps_contact(const ParallelBondParams&) { return true; }
+constexpr bool bond_keeps_contact(const ParallelBondParams&) {
+  return true;
+}
 /// A broken bond is removed from the model at once.
-constexpr bool bond_retires_on_break(const ParallelBondParams&) { return true; }
+constexpr bool bond_retires_on_break(const ParallelBondParams&) {
+  return true;
+}
 inline bool bond_retires(const ParallelBondParams&, const BondGeometry&, const BondKinematics&, const BondResult&,
                          double, const std::uint8_t* bonded) {
   return !bonded[0];

@@ -16,16 +16,16 @@
 #include <utility>
 #include <vector>
 
-#include "kerf/dem/procedures/lab_test.hpp"
 #include "kerf/dem/engine/simulation.hpp"
+#include "kerf/dem/procedures/lab_test.hpp"
 
 namespace kerf::dem {
 
 /// What a particle frame shows beside the simulation's own state, one entry per disk of `sim` (both empty: the
 /// disk's index in `sim` and no displacement array).
 struct FrameDiskArrays {
-  std::vector<std::int64_t> id;          ///< the disk's index in the run's workpiece (a windowed cut: not in its window)
-  std::vector<double> displacement_m;    ///< x, y per disk: since the run's first frame (NaN: not known)
+  std::vector<std::int64_t> id;        ///< the disk's index in the run's workpiece (a windowed cut: not in its window)
+  std::vector<double> displacement_m;  ///< x, y per disk: since the run's first frame (NaN: not known)
 };
 /// Disks (point data: id, the disk's index, the same in every frame of a run; radius_mm, velocity_m_per_s,
 /// spin_rad_per_s, group: 0 free, 1 and 2 velocity prescribed; held: 1 when group > 0; displacement_m, a
@@ -46,7 +46,8 @@ void write_cracks_vtp(const std::filesystem::path& path, const std::vector<Crack
 inline constexpr std::int32_t kCrackPlaceChip = 1, kCrackPlaceSubsurface = 2;
 /// A collection listing, per time, the files of that frame as parts 0, 1, ... each named by its file's
 /// prefix (frame_: "particles", walls_, cracks_).
-void write_pvd(const std::filesystem::path& path, const std::vector<std::pair<double, std::vector<std::string>>>& frames);
+void write_pvd(const std::filesystem::path& path,
+               const std::vector<std::pair<double, std::vector<std::string>>>& frames);
 
 /// "time_s,axial_strain,lateral_strain,stress_MPa,tension_cracks,shear_cracks".
 std::string curve_csv(const LabTestResult& result);

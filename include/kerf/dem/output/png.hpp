@@ -12,9 +12,9 @@
 #include <optional>
 #include <string>
 
+#include "kerf/dem/engine/simulation.hpp"
 #include "kerf/dem/procedures/cutting.hpp"
 #include "kerf/dem/procedures/lab_test.hpp"
-#include "kerf/dem/engine/simulation.hpp"
 #include "kerf/dem/procedures/toughness.hpp"
 
 namespace kerf::dem {

@@ -66,12 +66,12 @@ enum class CalibrationMethod { hybrid, secant };
 
 struct CalibrationSpec {
   MacroProperties targets{71e9, 0.23, 41e6, 330e6};  ///< Yang et al. 2018, Table 2
-  bool free_modulus = true;         ///< effective_modulus_GPa (with bond_effective_modulus_GPa)
-  bool free_stiffness_ratio = true; ///< stiffness_ratio (with bond_stiffness_ratio)
-  bool free_tensile_strength = true;///< tensile_strength_MPa (cohesion scaled with it)
-  bool free_cohesion = true;        ///< cohesion_MPa
-  double tolerance = 0.03;          ///< relative, on each of the four
-  int max_evaluations = 24;         ///< DEM evaluations (memoised repeats are free)
+  bool free_modulus = true;                          ///< effective_modulus_GPa (with bond_effective_modulus_GPa)
+  bool free_stiffness_ratio = true;                  ///< stiffness_ratio (with bond_stiffness_ratio)
+  bool free_tensile_strength = true;                 ///< tensile_strength_MPa (cohesion scaled with it)
+  bool free_cohesion = true;                         ///< cohesion_MPa
+  double tolerance = 0.03;                           ///< relative, on each of the four
+  int max_evaluations = 24;                          ///< DEM evaluations (memoised repeats are free)
   CalibrationMethod method = CalibrationMethod::hybrid;
   /// Packings a candidate is evaluated on (the scene's seed and the next ones): its macro-properties are their
   /// mean, so the calibration centres the population of specimens rather than one packing.
@@ -135,6 +135,5 @@ CalibrationResult calibrate(std::span<const SpecimenSource> sources, const Mater
 /// checkpoints of a calibration.
 std::string serialize_evaluations(const std::vector<CalibrationEvaluation>& log);
 std::vector<CalibrationEvaluation> deserialize_evaluations(std::string_view bytes);
-
 
 }  // namespace kerf::dem

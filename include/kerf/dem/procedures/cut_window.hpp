@@ -83,7 +83,7 @@ WorkpieceNow workpiece_now(const Simulation& sim);
 struct ChipAccount {
   std::size_t particles = 0;
   double mass_kg = 0;
-  int cracks = 0;  ///< crack events of joints with a removed disk at either end
+  int cracks = 0;                  ///< crack events of joints with a removed disk at either end
   std::size_t crushed_grains = 0;  ///< of the particles, those crushed (CutWindow::crush), with their mass
   double crushed_mass_kg = 0;
   std::size_t crushed_tied_disks = 0;  ///< of the particles, those crushed while tied to the workpiece
@@ -149,13 +149,13 @@ class CutWindow {
   Simulation full_{Material{}, SimulationOptions{}};
   CutWindowBox box_;
   double y_top_m_ = 0, y_cut_m_ = 0;
-  double x_built_m_ = 0;           ///< the edge's x when the window was last built
-  double max_displacement_m_ = 0;  ///< largest |x - x0| of a disk written back (widens the reservoir search)
-  std::vector<double> x0_;         ///< each disk's x in the uncut workpiece
-  std::vector<std::uint8_t> removed_;                ///< per disk: removed as a chip (1), crushed (2), crushed tied (3),
-                                                     ///< by the edge zone tied (4) or loose (5)
+  double x_built_m_ = 0;               ///< the edge's x when the window was last built
+  double max_displacement_m_ = 0;      ///< largest |x - x0| of a disk written back (widens the reservoir search)
+  std::vector<double> x0_;             ///< each disk's x in the uncut workpiece
+  std::vector<std::uint8_t> removed_;  ///< per disk: removed as a chip (1), crushed (2), crushed tied (3),
+                                       ///< by the edge zone tied (4) or loose (5)
   std::vector<std::int32_t> global_of_, bond_global_of_;  ///< the window's disks and joints in the workpiece
-  ContactSprings springs_;         ///< of the last sync, by workpiece index
+  ContactSprings springs_;                                ///< of the last sync, by workpiece index
   std::size_t rebuilds_ = 0, largest_window_ = 0;
   std::size_t cracks_synced_ = 0;  ///< the running window's cracks already moved to the workpiece's
   bool remove_loose_ = false;

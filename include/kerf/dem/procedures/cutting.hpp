@@ -5,9 +5,9 @@
 // group, as the tension grips use) and whose top is free. The tool is rigid: wall segments (rake face,
 // optional edge rounding, clearance face, a closing back face) whose lowest point lies `depth_of_cut`
 // below the top surface. It starts with its leading edge just right of the workpiece and moves in -x at
-// the cutting speed over `length`, so the chip flows up its rake face and the material is pushed towards the held left side.
-// Micro-grooves across the cut path are made as in the paper, by deleting the disks whose centres lie
-// inside each groove's outline (rectangular, or the inverted trapezoid of the real laser grooves).
+// the cutting speed over `length`, so the chip flows up its rake face and the material is pushed towards the held left
+// side. Micro-grooves across the cut path are made as in the paper, by deleting the disks whose centres lie inside each
+// groove's outline (rectangular, or the inverted trapezoid of the real laser grooves).
 //
 // Sign convention (tested): main force = force the tool exerts on the workpiece along the cutting
 // direction (-x), thrust force = force the tool exerts on the workpiece into it (-y). A tool pushing into
@@ -24,8 +24,8 @@
 #include <string_view>
 #include <vector>
 
-#include "kerf/dem/procedures/cut_window.hpp"
 #include "kerf/dem/engine/simulation.hpp"
+#include "kerf/dem/procedures/cut_window.hpp"
 #include "kerf/field_table.hpp"
 #include "kerf/json_reader.hpp"
 
@@ -37,11 +37,11 @@ const EnumNames<GrooveShape>& groove_shape_names();
 
 struct CutParams {
   double depth_of_cut_m = 0.1e-3;
-  double speed_m_per_s = 1.0;   ///< the paper's 4.23 mm/s is scaled up (physics-dem.md section 4)
-  double length_m = 0.5e-3;     ///< tool travel
+  double speed_m_per_s = 1.0;                 ///< the paper's 4.23 mm/s is scaled up (physics-dem.md section 4)
+  double length_m = 0.5e-3;                   ///< tool travel
   double rake_deg = -15, clearance_deg = 15;  ///< Yang et al. 2018, Section 4
-  double edge_radius_m = 0;     ///< 0: sharp edge
-  int edge_segments = 4;        ///< wall segments approximating a rounded edge
+  double edge_radius_m = 0;                   ///< 0: sharp edge
+  int edge_segments = 4;                      ///< wall segments approximating a rounded edge
   /// Tool-workpiece Coulomb friction on every tool face; negative (the default): the workpiece material's
   /// particle friction mu, as for any disk-wall contact (PFC's default). Not given by Yang et al. 2018.
   double tool_friction_coefficient = -1;
@@ -103,7 +103,7 @@ struct CutParams {
   /// disks its reaction; a disk reaching below the cut line that the tool touches there leaves the model as the
   /// layer's chip and powder (tied or loose alike: a rigid 20 um grain at the edge is the jams' artefact).
   bool edge_zone = false;
-  double edge_zone_radius_m = 0;  ///< the cut resolves 0 to the largest diameter when it starts
+  double edge_zone_radius_m = 0;           ///< the cut resolves 0 to the largest diameter when it starts
   double edge_layer_factor = 1;            ///< lambda = l / d_c (physics-glass-edge.md section 4: d_c)
   double edge_friction_coefficient = 0.3;  ///< tool on glass at the edge (section 4: 0.15-0.4)
   /// The layer's force per unit width [N/m], cutting and thrust; negative (the default): the cut kind computes them
@@ -118,8 +118,8 @@ const FieldTable<CutParams>& groove_fields();
 const FieldTable<CutParams>& active_window_fields();
 const FieldTable<CutParams>& edge_zone_fields();
 
-/// Checks every field's range and the cross-field constraints (groove narrower than its pitch, trapezoid bottom narrower than its
-/// top, the tool's wedge angle positive ...); InputError names the dotted key, value and expectation.
+/// Checks every field's range and the cross-field constraints (groove narrower than its pitch, trapezoid bottom
+/// narrower than its top, the tool's wedge angle positive ...); InputError names the dotted key, value and expectation.
 void validate_cut_params(const CutParams& params);
 /// The active window's box and the absorbing layers' thicknesses in metres (each extent in depths of cut times
 /// the depth of cut): the one place they are converted. The layers' rates need the material's wave speed and
@@ -181,8 +181,12 @@ struct CutWindowReport {
 };
 
 /// "chip" above the cut line (y > surface - depth of cut), else "subsurface".
-inline bool is_chip_crack(double y_m, double y_cut_m) { return y_m > y_cut_m; }
-inline const char* crack_place(double y_m, double y_cut_m) { return is_chip_crack(y_m, y_cut_m) ? "chip" : "subsurface"; }
+inline bool is_chip_crack(double y_m, double y_cut_m) {
+  return y_m > y_cut_m;
+}
+inline const char* crack_place(double y_m, double y_cut_m) {
+  return is_chip_crack(y_m, y_cut_m) ? "chip" : "subsurface";
+}
 /// Counts by mode and place; `steady_x_m` = {from, to} is the span of x machined during the steady part.
 CutCrackCounts count_cut_cracks(const std::vector<CrackEvent>& cracks, double y_cut_m,
                                 std::array<double, 2> steady_x_m);
@@ -331,7 +335,6 @@ inline constexpr double kEntryTravelM = 0.3e-3;
 /// standard errors of the means by batch means, the travel they cover, and whether they are steady: not when
 /// they start before kEntryTravelM, hold no sample, or a standard error cannot be computed (too few samples).
 void steady_statistics(CutResult& result, double from_travel_m);
-
 
 /// The travel [0, length] cut into consecutive windows of `window_m` (the last one shorter when the length
 /// is not a multiple of it, and holding every sample at or beyond `length`), with the mean forces in each.

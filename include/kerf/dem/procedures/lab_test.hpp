@@ -26,11 +26,11 @@ const EnumNames<LabTest>& lab_test_names();
 
 struct LoadingSpec {
   LabTest test = LabTest::compression;
-  double speed_m_per_s = 0.05;       ///< of each platen (grip)
-  double stop_fraction = 0.7;        ///< stop when the stress falls below this fraction of the peak
-  double max_strain = 0.02;          ///< stop anyway at this axial strain
+  double speed_m_per_s = 0.05;  ///< of each platen (grip)
+  double stop_fraction = 0.7;   ///< stop when the stress falls below this fraction of the peak
+  double max_strain = 0.02;     ///< stop anyway at this axial strain
   int sample_every_steps = 50;
-  bool quasi_static_check = true;    ///< rerun at half the speed and report the change of the peak
+  bool quasi_static_check = true;  ///< rerun at half the speed and report the change of the peak
 };
 
 /// The "loading" section's keys: speed_m_per_s, stop_fraction_of_peak, max_strain, sample_every_steps,

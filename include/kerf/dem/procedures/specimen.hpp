@@ -37,12 +37,12 @@ struct SpecimenSpec {
   double radius_min_m = 7.5e-6, radius_max_m = 10e-6;
   Packing packing = Packing::random;
   std::uint64_t seed = 1;
-  double packing_fraction = 0.85;           ///< area fraction used to choose the number of disks (random)
-  double compaction_pressure_pa = 3e6;      ///< isotropic pressure of the frictionless compaction
+  double packing_fraction = 0.85;       ///< area fraction used to choose the number of disks (random)
+  double compaction_pressure_pa = 3e6;  ///< isotropic pressure of the frictionless compaction
   /// E* of the compaction's reference contact (frictionless linear, kappa* kCompactionStiffnessRatio): a
   /// glass-like stiffness, the same for every material, so that the packing is the spec's alone.
   double compaction_modulus_pa = 90e9;
-  double installation_gap_m = 0.5e-6;       ///< joints at pairs whose surface gap is below this
+  double installation_gap_m = 0.5e-6;  ///< joints at pairs whose surface gap is below this
   int growth_steps = 6000, relax_steps = 2000;
 };
 

@@ -37,17 +37,17 @@ inline constexpr double kSenbSpanOverDepth = 4.0;
 inline constexpr double kSenbOverhangOverDepth = 0.1;
 
 struct ToughnessSpec {
-  double notch_depth_m = 0.2e-3;       ///< a, from the tension face
-  double roller_radius_m = 0.05e-3;    ///< of the three rigid rollers
-  double speed_m_per_s = 0.02;         ///< of the load roller (the supports stand still)
-  double stop_fraction = 0.05;         ///< stop once the load has stayed below this fraction of the peak over a peak window
-  double max_deflection_m = 20e-6;     ///< stop anyway at this load-point deflection
+  double notch_depth_m = 0.2e-3;     ///< a, from the tension face
+  double roller_radius_m = 0.05e-3;  ///< of the three rigid rollers
+  double speed_m_per_s = 0.02;       ///< of the load roller (the supports stand still)
+  double stop_fraction = 0.05;  ///< stop once the load has stayed below this fraction of the peak over a peak window
+  double max_deflection_m = 20e-6;  ///< stop anyway at this load-point deflection
   /// K_IC from the peak of the load averaged over this much deflection (a centred moving average): the load on
   /// a rigid roller rings in an undamped glass, by tens of per cent of the load in a W = 1 mm beam.
   double peak_window_m = 0.1e-6;
-  double youngs_modulus_pa = 71e9;     ///< E' of the 2D model, for K^2 / E' (the glass's calibrated E)
+  double youngs_modulus_pa = 71e9;  ///< E' of the 2D model, for K^2 / E' (the glass's calibrated E)
   int sample_every_steps = 50;
-  bool quasi_static_check = true;      ///< rerun at half the speed and report the change of the peak load
+  bool quasi_static_check = true;  ///< rerun at half the speed and report the change of the peak load
 };
 
 /// The "toughness" section's keys: notch_depth_mm, roller_radius_mm, speed_m_per_s, stop_fraction_of_peak,
@@ -84,8 +84,8 @@ struct ToughnessSample {
   double external_work_j;               ///< integral of the load over the deflection so far
   double stored_elastic_energy_j;       ///< Simulation::stored_elastic_energy (the rollers' contacts included)
   double kinetic_energy_j;
-  int n_cracks;                         ///< broken joint elements beyond the notch
-  double smoothed_load_n = 0;           ///< the load averaged over peak_window_um about this deflection (at the end)
+  int n_cracks;                ///< broken joint elements beyond the notch
+  double smoothed_load_n = 0;  ///< the load averaged over peak_window_um about this deflection (at the end)
 };
 
 struct ToughnessResult {
@@ -93,29 +93,29 @@ struct ToughnessResult {
   double peak_load_n = 0, deflection_at_peak_m = 0;  ///< of the smoothed load (K_IC's)
   double raw_peak_load_n = 0;                        ///< the largest sample's load, ringing included
   double depth_m = 0, length_m = 0, span_m = 0, thickness_m = 0, notch_m = 0;  ///< W, L, S, B, a (measured W)
-  double notch_x_m = 0;                      ///< where the notch (and the load roller) is: mid-length
-  double fracture_toughness_pa_sqrt_m = 0;   ///< K_IC from the peak of the smoothed load
-  double raw_peak_toughness_pa_sqrt_m = 0;   ///< K from the raw peak (ringing included), for comparison
-  double external_work_j = 0;                ///< W_ext, the load roller's work to the end
-  double fracture_energy_j_per_m2 = 0;       ///< G_c: (W_ext - dU - dK) / (B (W - a)), start to broken through
-  double crack_tip_y_m = -1e300;             ///< highest crack within W/2 of the notch's line
-  int through_sample = -1;                   ///< the sample at which the crack had crossed the ligament; -1: never
-  double work_of_fracture_j_per_m2 = 0;      ///< W_ext / (B (W - a)), to broken through
-  double irwin_energy_j_per_m2 = 0;          ///< K_IC^2 / E'
+  double notch_x_m = 0;                     ///< where the notch (and the load roller) is: mid-length
+  double fracture_toughness_pa_sqrt_m = 0;  ///< K_IC from the peak of the smoothed load
+  double raw_peak_toughness_pa_sqrt_m = 0;  ///< K from the raw peak (ringing included), for comparison
+  double external_work_j = 0;               ///< W_ext, the load roller's work to the end
+  double fracture_energy_j_per_m2 = 0;      ///< G_c: (W_ext - dU - dK) / (B (W - a)), start to broken through
+  double crack_tip_y_m = -1e300;            ///< highest crack within W/2 of the notch's line
+  int through_sample = -1;                  ///< the sample at which the crack had crossed the ligament; -1: never
+  double work_of_fracture_j_per_m2 = 0;     ///< W_ext / (B (W - a)), to broken through
+  double irwin_energy_j_per_m2 = 0;         ///< K_IC^2 / E'
   double speed_m_per_s = 0, time_step_s = 0, wall_time_s = 0;
   std::int64_t steps = 0;
   std::size_t n_particles = 0;
-  int n_notch_disks = 0;                     ///< disks removed to make the notch (a slot one disk wide)
-  int n_notch_joints_retired = 0;            ///< joints still crossing the notch's line, retired
+  int n_notch_disks = 0;           ///< disks removed to make the notch (a slot one disk wide)
+  int n_notch_joints_retired = 0;  ///< joints still crossing the notch's line, retired
   std::string stop_reason;
 };
 
 /// A test in progress, advanced one sample at a time.
 class ToughnessRun {
  public:
-  /// Sets up the beam on a copy of `specimen` (its lower face the tension face): the notch (disks removed) at mid-length, the
-  /// rollers (walls) touching it. InputError (naming "toughness.speed_m_per_s") if the run would take more
-  /// than kMaxRunSteps.
+  /// Sets up the beam on a copy of `specimen` (its lower face the tension face): the notch (disks removed) at
+  /// mid-length, the rollers (walls) touching it. InputError (naming "toughness.speed_m_per_s") if the run would take
+  /// more than kMaxRunSteps.
   ToughnessRun(const Simulation& specimen, const ToughnessSpec& spec);
   /// Runs one sample interval; returns false once the test has stopped.
   bool advance();

@@ -28,8 +28,8 @@
 //   StudyOutcome done = run_study_local(spec, options);  // writes items.csv, conditions.csv, summary.json, plots/
 #include <chrono>
 #include <cstdint>
-#include <filesystem>
 #include <exception>
+#include <filesystem>
 #include <map>
 #include <optional>
 #include <string>
@@ -72,18 +72,18 @@ struct StudyRecordSpec {
 
 struct StudySpec {
   std::string description;
-  std::string scene_path;             ///< where the base scene came from (the study file for an inline one)
-  std::filesystem::path scene_dir;    ///< absolute: resolves the scene's specimen.file
-  Json base;                          ///< the base scene with the study's `set` applied
-  std::vector<std::string> set;       ///< the study's overrides of every condition
+  std::string scene_path;           ///< where the base scene came from (the study file for an inline one)
+  std::filesystem::path scene_dir;  ///< absolute: resolves the scene's specimen.file
+  Json base;                        ///< the base scene with the study's `set` applied
+  std::vector<std::string> set;     ///< the study's overrides of every condition
   std::vector<std::string> varied_keys;
   std::vector<StudyCondition> conditions;
   StudyReplicates replicates;
   std::optional<StudyRecordSpec> record;
   std::vector<std::string> tag_names;  ///< every condition's tag names, in first-seen order
-  bool seeded = true;                 ///< the base scene generates its specimen (replicates differ in seed)
-  std::uint64_t base_seed = 0;        ///< the base scene's specimen.seed
-  Json document;                      ///< the study file as read (summary.json's provenance)
+  bool seeded = true;                  ///< the base scene generates its specimen (replicates differ in seed)
+  std::uint64_t base_seed = 0;         ///< the base scene's specimen.seed
+  Json document;                       ///< the study file as read (summary.json's provenance)
 };
 
 /// Reads and validates a study (InputError naming the key: "replicates.min_count", "conditions.grid", ...).
@@ -113,7 +113,7 @@ struct StudyItemResult {
   std::string host;
   int rank = 0;
   bool reused = false;  ///< found finished in DIR/items or in the record (wall time, host, rank: the original run's)
-  int resumed_from_sample = 0;  ///< > 0: continued from a killed run's checkpoint (wall time: this run's part)
+  int resumed_from_sample = 0;   ///< > 0: continued from a killed run's checkpoint (wall time: this run's part)
   std::exception_ptr exception;  ///< on this machine: what stopped the item (not sent between ranks)
 };
 Json study_item_result_to_json(const StudyItemResult& r);
@@ -131,7 +131,8 @@ std::string study_item_name(const StudyItem& item);
 /// again. Never throws for the item's own failures (bad override, bad scene, unstable run): they are the
 /// result's error. `on_progress`, if set, gets the item's progress reports, each stage named "NAME: stage".
 StudyItemResult run_study_item(const StudySpec& spec, const StudyItem& item, const std::filesystem::path& out,
-                               int threads, int rank, double checkpoint_every_s, const ProgressCallback& on_progress = {});
+                               int threads, int rank, double checkpoint_every_s,
+                               const ProgressCallback& on_progress = {});
 /// What an item's result depends on, as a key: the 64-bit FNV-1a (16 hex digits) of its scene (the base scene,
 /// the study's `set`, the condition's overrides, its packing seed), top-level description aside.
 std::string study_item_scene_key(const StudySpec& spec, const StudyItem& item);
@@ -180,10 +181,10 @@ class StudyScheduler {
 /// How to run a study (the command line's options).
 struct StudyOptions {
   std::filesystem::path out = "out";
-  int threads = 0;           ///< local: threads in all (0: OpenMP's maximum); items side by side, one thread each
-  int threads_per_rank = 0;  ///< MPI workers: OpenMP threads each (0: the cores the launcher gave the rank)
-  bool show_progress = true; ///< items done / running / queued and an ETA on stderr when it is a terminal
-  bool log_lines = false;    ///< a plain line on stdout per finished item (a batch job's log)
+  int threads = 0;            ///< local: threads in all (0: OpenMP's maximum); items side by side, one thread each
+  int threads_per_rank = 0;   ///< MPI workers: OpenMP threads each (0: the cores the launcher gave the rank)
+  bool show_progress = true;  ///< items done / running / queued and an ETA on stderr when it is a terminal
+  bool log_lines = false;     ///< a plain line on stdout per finished item (a batch job's log)
   std::string command_line;
   /// Local only: the first failed item stops the study (no new items; the items in flight finish) and its
   /// error is rethrown as it was (an input error stays one): `kerf-dem run --replicates`, where every item

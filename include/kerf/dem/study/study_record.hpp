@@ -18,6 +18,7 @@
 #include <optional>
 #include <string>
 #include <vector>
+
 #include "kerf/dem/study/study.hpp"
 
 namespace kerf::dem {
