@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+#include "aisi_1045.hpp"
 #include "kerf/error.hpp"
 
 using Catch::Matchers::WithinRel;
@@ -12,14 +13,7 @@ using kerf::Guards;
 namespace {
 // AISI 1045, Jaspers & Dautzenberg (2002).
 kerf::JohnsonCookParams aisi_1045() {
-  return {.A_Pa = 553.1e6,
-          .B_Pa = 600.8e6,
-          .n = 0.234,
-          .C = 0.0134,
-          .m = 1.0,
-          .reference_strain_rate_per_s = 1.0,
-          .room_temperature_K = 298.15,
-          .melting_temperature_K = 1733.15};
+  return kerf::testing::aisi_1045_johnson_cook();
 }
 }  // namespace
 

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "aisi_1045.hpp"
 #include "kerf/error.hpp"
 #include "kerf/units.hpp"
 
@@ -25,14 +26,7 @@ constexpr double kZeroCelsius = 273.15;
 // same repository uses T_room = 273.15 K in the Johnson-Cook law, which gives phi = 18.77 deg and F_c = 571 N).
 kerf::OxleyParams aisi_1045() {
   kerf::OxleyParams p;
-  p.johnson_cook = {.A_Pa = 553.1e6,
-                    .B_Pa = 600.8e6,
-                    .n = 0.234,
-                    .C = 0.0134,
-                    .m = 1.0,
-                    .reference_strain_rate_per_s = 1.0,
-                    .room_temperature_K = 298.15,
-                    .melting_temperature_K = 1733.15};
+  p.johnson_cook = kerf::testing::aisi_1045_johnson_cook();
   p.thermal = {.density_kg_per_m3 = 8000.0,
                .conductivity_W_per_m_K = {52.61, -0.0281, kZeroCelsius},
                .specific_heat_J_per_kg_K = {420.0, 0.504, kZeroCelsius}};
