@@ -132,18 +132,25 @@ Simulation make_workpiece(const Simulation& specimen, const CutParams& params, s
   return sim;
 }
 
-EdgeMeets edge_meets(const Simulation& sim, std::int32_t first_tool_wall, std::int32_t n_tool_walls,
-                     std::array<double, 2> tip_m, const std::vector<std::uint8_t>& tied) {
+std::vector<std::size_t> tool_contacts_near(const Simulation& sim, std::int32_t first_tool_wall,
+                                            std::int32_t n_tool_walls, std::array<double, 2> tip_m, double reach_m) {
   const Particles& p = sim.particles();
-  bool loose = false;
+  std::vector<std::size_t> near;
   for (const auto& c : sim.wall_contact_loads()) {
     if (c.wall < first_tool_wall || c.wall >= first_tool_wall + n_tool_walls) continue;
     const Wall& w = sim.walls()[static_cast<std::size_t>(c.wall)];
     const auto u = static_cast<std::size_t>(c.disk);
-    // The contact's point: the wall's closest point to the disk's centre.
     const double ex = w.x1 - w.x0, ey = w.y1 - w.y0, len2 = ex * ex + ey * ey;
     const double s = len2 > 0 ? std::clamp(((p.x[u] - w.x0) * ex + (p.y[u] - w.y0) * ey) / len2, 0.0, 1.0) : 0.0;
-    if (std::hypot(w.x0 + s * ex - tip_m[0], w.y0 + s * ey - tip_m[1]) > kEdgeZoneM) continue;
+    if (std::hypot(w.x0 + s * ex - tip_m[0], w.y0 + s * ey - tip_m[1]) <= reach_m) near.push_back(u);
+  }
+  return near;
+}
+
+EdgeMeets edge_meets(const Simulation& sim, std::int32_t first_tool_wall, std::int32_t n_tool_walls,
+                     std::array<double, 2> tip_m, const std::vector<std::uint8_t>& tied) {
+  bool loose = false;
+  for (const auto u : tool_contacts_near(sim, first_tool_wall, n_tool_walls, tip_m, kEdgeZoneM)) {
     if (tied[u]) return EdgeMeets::tied;
     loose = true;
   }
@@ -356,8 +363,9 @@ bool CutRun::advance() {
   const auto f = tool_force_components(fx / params_.sample_every_steps, fy / params_.sample_every_steps);
   const double elapsed = sim_.time() - t0_, travel = params_.speed_m_per_s * elapsed;
   res_.samples.push_back({travel, elapsed, f[0], f[1]});
+  const bool steady = travel >= params_.entry_fraction * params_.length_m;  // past the entry
   // What the edge meets: once per kEdgeObserveTravelM of travel over the steady part (it changes nothing).
-  if (edge_kept_ && travel >= params_.entry_fraction * params_.length_m) {
+  if (edge_kept_ && steady) {
     const auto step = static_cast<std::int64_t>(std::floor(travel / kEdgeObserveTravelM));
     if (step > edge_last_step_) {
       edge_last_step_ = step;
@@ -366,7 +374,7 @@ bool CutRun::advance() {
   }
   // The tool moves at -speed in x; the disks push it with fx each step: it does fx speed dt of work on them.
   books_.tool_work_j += fx * params_.speed_m_per_s * sim_.time_step();
-  if (params_.edge_zone && travel >= params_.entry_fraction * params_.length_m) {
+  if (params_.edge_zone && steady) {
     CutEdgeZoneRecord& z = res_.edge_zone;
     ++z.samples;
     z.intact_samples += zone_on;
@@ -375,7 +383,7 @@ bool CutRun::advance() {
       z.reaction_work_j += reaction_work_j;
     }
   }
-  if (books_kept_ && !steady_booked_ && travel >= params_.entry_fraction * params_.length_m) {
+  if (books_kept_ && !steady_booked_ && steady) {
     books_steady_start_ = books_now();
     steady_booked_ = true;
   }

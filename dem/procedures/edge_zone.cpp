@@ -31,7 +31,7 @@ class LocalTies {
       bool bulk = false;
       for (std::size_t head = 0; head < seen.size() && !bulk; ++head) {
         const std::size_t u = seen[head];
-        if (p_.group[u] != 0 || p_.y[u] < y_bulk_m_ || known_[u] == 1) {
+        if (p_.group[u] != 0 || p_.y[u] < y_bulk_m_) {
           bulk = true;
           break;
         }
@@ -63,15 +63,8 @@ EdgeZoneSets edge_zone_sets(const Simulation& sim, std::int32_t first_tool_wall,
   LocalTies ties(sim, y_cut_m, bulk_depth_m);
   EdgeZoneSets z;
   std::vector<std::uint8_t> reached(p.size(), 0);
-  for (const auto& c : sim.wall_contact_loads()) {
-    if (c.wall < first_tool_wall || c.wall >= first_tool_wall + n_tool_walls) continue;
-    const auto u = static_cast<std::size_t>(c.disk);
+  for (const auto u : tool_contacts_near(sim, first_tool_wall, n_tool_walls, tip_m, reach_m)) {
     if (p.group[u] != 0 || reached[u] || p.y[u] - p.radius[u] >= y_cut_m) continue;
-    // The contact's point: the wall's closest point to the disk's centre (as edge_meets).
-    const Wall& w = sim.walls()[static_cast<std::size_t>(c.wall)];
-    const double ex = w.x1 - w.x0, ey = w.y1 - w.y0, len2 = ex * ex + ey * ey;
-    const double s = len2 > 0 ? std::clamp(((p.x[u] - w.x0) * ex + (p.y[u] - w.y0) * ey) / len2, 0.0, 1.0) : 0.0;
-    if (std::hypot(w.x0 + s * ex - tip_m[0], w.y0 + s * ey - tip_m[1]) > reach_m) continue;
     reached[u] = 1;
     (ties.tied(u) ? z.reached_tied : z.reached_loose).push_back(u);
   }

@@ -211,6 +211,12 @@ inline constexpr std::array<double, 2> kTiedStretchM{0.05e-3, 0.3e-3};
 /// The depth bands below the cut line of the tied share (disk centres), [from, to): 0-25, 25-50, 50-100 um.
 inline constexpr std::array<double, 4> kTiedBandDepthM{0, 25e-6, 50e-6, 100e-6};
 
+/// The disks touching one of the tool's walls [first_tool_wall, + n_tool_walls) at a contact point (the wall's
+/// closest point to the disk's centre) within `reach_m` of the tip, in the order of the wall contacts (a disk
+/// touching two walls there, twice).
+std::vector<std::size_t> tool_contacts_near(const Simulation& sim, std::int32_t first_tool_wall,
+                                            std::int32_t n_tool_walls, std::array<double, 2> tip_m, double reach_m);
+
 /// What the edge touches at one moment: a tied disk if any, else a loose one if any, else nothing.
 enum class EdgeMeets { nothing, loose, tied };
 /// The disks whose contact with one of the tool's walls [first_tool_wall, + n_tool_walls) lies within kEdgeZoneM
