@@ -4,15 +4,18 @@ zone, the mean over the packings of the cutting and thrust force per mm of width
 which the zone met intact glass, the tied share of the glass behind the tool in the first 25 um below the cut line
 and the subsurface damage depth, each with its 95 % interval (Student t over the packings); then the groove effect
 (rectangular / regular, Fieller's interval) with the zone and without it, and the zone's effect (on / off) on each
-surface. Reads the record alone.
+surface. Reads the record alone. Given a second record of the same conditions at twice the depth of cut
+(data/studies/issue54_zone_pilot_02.json), also each surface's force split through the two depths, F = F0 + k h:
+F0 = 2 F(h) - F(2h), k = (F(2h) - F(h)) / h, and the depth effect F(2h) / F(h).
 
-    PYTHONPATH=build/python python3 analysis/edge_zone_pilot.py data/studies/results/issue54_zone_pilot.csv
+    PYTHONPATH=build/python python3 analysis/edge_zone_pilot.py data/studies/results/issue54_zone_pilot.csv \
+        [data/studies/results/issue54_zone_pilot_02.csv]
 """
 import csv
 import math
 import sys
 
-from kerf.stats import mean_of, ratio
+from kerf.stats import combination, mean_of, ratio
 
 QUANTITIES = [("cutting_force_N_per_mm", "cutting N/mm"), ("thrust_force_N_per_mm", "thrust N/mm"),
               ("edge_zone_intact_share_steady", "zone met intact"),
@@ -69,7 +72,29 @@ def report(groups):
     return "\n".join(lines)
 
 
+def split(shallow, deep, h_mm):
+    """Each (surface, zone) in both records: the force split through depths h and 2 h (independent packings)."""
+    lines = []
+    for key in sorted(set(shallow) & set(deep)):
+        for force in ("cutting_force_N_per_mm", "thrust_force_N_per_mm"):
+            f1, f2 = estimate(shallow[key], force), estimate(deep[key], force)
+            f0 = combination([(2.0, f1), (-1.0, f2)])
+            k = combination([(1.0 / h_mm, f2), (-1.0 / h_mm, f1)])
+            lines.append(f"{key[0]}, zone {key[1]}, {force}: at {h_mm:g} mm {interval(f1)}, at {2 * h_mm:g} mm "
+                         f"{interval(f2)}; depth effect {interval(ratio(f2, f1))}; F0 {interval(f0)} N/mm; "
+                         f"k {interval(k)} N/mm per mm")
+    return "\n".join(lines)
+
+
+def depth_of(path):
+    with open(path, newline="") as f:
+        return float(next(csv.DictReader(f))["depth_of_cut_mm"])
+
+
 if __name__ == "__main__":
-    if len(sys.argv) != 2:
+    if len(sys.argv) not in (2, 3):
         sys.exit(__doc__)
     print(report(read(sys.argv[1])))
+    if len(sys.argv) == 3:
+        print()
+        print(split(read(sys.argv[1]), read(sys.argv[2]), depth_of(sys.argv[1])))

@@ -48,3 +48,12 @@ def test_a_ratio_whose_denominator_is_not_resolved_from_zero_says_so(tmp_path):
     write(tmp_path / "r.csv", {("regular", "on"): [0.01, -0.01, 0.02, -0.015], ("rectangular", "on"): [0.2, 0.3, 0.25, 0.2]})
     line = [l for l in ez.report(ez.read(tmp_path / "r.csv")).splitlines() if "groove effect" in l and "cutting" in l][0]
     assert "unbounded" in line
+
+
+def test_a_force_with_a_known_depth_independent_part_is_split_into_it(tmp_path):
+    # F = 0.3 + 2 h (N/mm, h in mm) on every packing, with a packing spread added equally at both depths' means
+    spread = [-0.02, 0.01, 0.0, 0.01]
+    write(tmp_path / "a.csv", {("regular", "on"): [0.3 + 2 * 0.1 + d for d in spread]})
+    write(tmp_path / "b.csv", {("regular", "on"): [0.3 + 2 * 0.2 + d for d in spread]})
+    line = ez.split(ez.read(tmp_path / "a.csv"), ez.read(tmp_path / "b.csv"), 0.1).splitlines()[0]
+    assert "F0 0.3 [" in line and "k 2 [" in line and "depth effect 1.4 [" in line
