@@ -240,7 +240,10 @@ V law_from_record(const LawRecord& r) {
                 using F = std::decay_t<decltype(f)>;
                 const auto it =
                     std::find_if(r.values.begin(), r.values.end(), [&](const auto& kv) { return kv.first == f.key; });
-                if (it == r.values.end()) throw corrupt("no value for " + std::string(f.key));
+                if (it == r.values.end()) {
+                  if (legacy::key_added_later(f.key)) return;  // an older record: the default, that build's law
+                  throw corrupt("no value for " + std::string(f.key));
+                }
                 ++used;
                 if constexpr (kNumberInRecord<P, F>) set_from_record(f, p, it->second, corrupt);
               },

@@ -170,7 +170,7 @@ double Simulation::dashpot_coefficient(std::size_t i, std::int64_t j, double sti
 
 // Long (~90 lines) for a reason: the hot loop; its two passes over a block share the block and the disks'
 // pointers, and what it inlines was measured as it stands (docs/performance.md).
-template <class Law, bool kViscous, class... Damage>
+template <class Law, bool kViscous, bool kFactors, class... Damage>
 void Simulation::bond_loop(const Law& law, ForceCounts& counts, Damage*... damage) {
   const double dt = dt_;
   const int stride = b_.stride;
@@ -229,7 +229,9 @@ void Simulation::bond_loop(const Law& law, ForceCounts& counts, Damage*... damag
       const double nx = block.nx[q], ny = block.ny[q], sx = -ny, sy = nx, a1 = block.a1[q], a2 = block.a2[q];
       const std::size_t e0 = b * static_cast<std::size_t>(stride);
       const BondKinematics kin{block.gap[q], block.rotation[q], block.shear_increment[q]};
-      BondResult r = bond_update_fast(law, b_.geometry[b], kin, b_.shear_force_n.data() + e0, b_.bonded.data() + e0,
+      // Without strength factors the factor is the constant 1, which the compiler folds away (x * 1.0 is x).
+      const BondGeometry geo{b_.geometry[b], kFactors ? b_.strength_factor[b] : 1.0};
+      BondResult r = bond_update_fast(law, geo, kin, b_.shear_force_n.data() + e0, b_.bonded.data() + e0,
                                       b_.pending.data() + e0, (damage + e0)...);
       n_breaking += r.n_breaking;
       if constexpr (kViscous) {
@@ -237,7 +239,7 @@ void Simulation::bond_loop(const Law& law, ForceCounts& counts, Damage*... damag
         const auto i = static_cast<std::size_t>(b_.i[b]), j = static_cast<std::size_t>(b_.j[b]);
         const double dvx = vx[j] - vx[i], dvy = vy[j] - vy[i];
         const double vn = dvx * nx + dvy * ny, vs = dvx * sx + dvy * sy - a2 * om[j] - a1 * om[i];
-        const TimeStepStiffness k = bond_time_step_stiffness(law, b_.geometry[b]);
+        const TimeStepStiffness k = bond_time_step_stiffness(law, geo);
         r.normal_force_n += dashpot_coefficient(i, static_cast<std::int64_t>(j), k.normal) * vn;  // tension positive
         r.shear_force_n -= dashpot_coefficient(i, static_cast<std::int64_t>(j), k.shear) * vs;
       }
@@ -245,7 +247,7 @@ void Simulation::bond_loop(const Law& law, ForceCounts& counts, Damage*... damag
       out = {-r.normal_force_n * nx + r.shear_force_n * sx, -r.normal_force_n * ny + r.shear_force_n * sy,
              -a1 * r.shear_force_n - r.moment_nm, -a2 * r.shear_force_n + r.moment_nm};
       // The law says when a bond carries no force any more and hands its pair over to the unbonded contact.
-      if (bond_retires(law, b_.geometry[b], kin, r, block.surface_gap[q], b_.bonded.data() + e0)) {
+      if (bond_retires(law, geo, kin, r, block.surface_gap[q], b_.bonded.data() + e0)) {
         b_.active[b] = 0;
         out = {0, 0, 0, 0};
         ++n_retired;
@@ -338,10 +340,18 @@ void Simulation::wall_loop(const Law& law) {
 
 template <bool kViscous, class Law>
 void Simulation::bond_loop_of(const Law& law, ForceCounts& counts) {
-  if constexpr (BondLawWithDamage<Law>)
-    bond_loop<Law, kViscous>(law, counts, b_.damage.data());
-  else
-    bond_loop<Law, kViscous>(law, counts);
+  const bool factors = !b_.strength_factor.empty();  // Weibull joint strengths (a loop of their own: see bond_loop)
+  if constexpr (BondLawWithDamage<Law>) {
+    if (factors)
+      bond_loop<Law, kViscous, true>(law, counts, b_.damage.data());
+    else
+      bond_loop<Law, kViscous, false>(law, counts, b_.damage.data());
+  } else {
+    if (factors)
+      bond_loop<Law, kViscous, true>(law, counts);
+    else
+      bond_loop<Law, kViscous, false>(law, counts);
+  }
 }
 
 // Called by every thread of a team (or by one thread outside any): orphaned worksharing loops, each contact
@@ -423,8 +433,7 @@ void Simulation::apply_breaks_of(const Law& law) {
       const double d = std::hypot(dx, dy);
       const double nx = dx / d, ny = dy / d;
       const double a1 = p_.radius[i] + 0.5 * (d - p_.radius[i] - p_.radius[j]);
-      const auto& g = b_.geometry[b];
-      const ElementPlace place = bond_element_place(law, g, static_cast<int>(e));
+      const ElementPlace place = bond_element_place(law, b_.joint_geometry(b), static_cast<int>(e));
       const double xi = place.centroid_m;
       cracks_.push_back({time_, p_.x[i] + a1 * nx - xi * ny, p_.y[i] + a1 * ny + xi * nx, std::atan2(nx, -ny),
                          place.length_m, b_.pending[k], static_cast<std::int32_t>(b), static_cast<std::int32_t>(e)});

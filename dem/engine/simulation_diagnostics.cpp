@@ -42,10 +42,10 @@ double Simulation::joint_and_contact_energy() const {
           const double d = std::hypot(p_.x[j] - p_.x[i], p_.y[j] - p_.y[i]);
           const BondKinematics kin{d - b_.ref_distance_m[b], p_.theta[j] - p_.theta[i] - b_.ref_rotation_rad[b], 0};
           if constexpr (BondLawWithDamage<std::decay_t<decltype(law)>>)
-            e += bond_energy(law, b_.geometry[b], kin, b_.shear_force_n.data() + b * stride,
+            e += bond_energy(law, b_.joint_geometry(b), kin, b_.shear_force_n.data() + b * stride,
                              b_.bonded.data() + b * stride, b_.damage.data() + b * stride);
           else
-            e += bond_energy(law, b_.geometry[b], kin, b_.shear_force_n.data() + b * stride,
+            e += bond_energy(law, b_.joint_geometry(b), kin, b_.shear_force_n.data() + b * stride,
                              b_.bonded.data() + b * stride);
         }
       },

@@ -19,6 +19,10 @@ int BondStore::n_bonded_elements(std::size_t b) const {
 }
 
 void BondStore::copy_elements(std::size_t to, const BondStore& from, std::size_t k) {
+  if (!from.strength_factor.empty()) {
+    if (strength_factor.empty()) strength_factor.assign(size(), 1.0);
+    strength_factor[to] = from.strength_factor[k];
+  }
   const auto n = static_cast<std::size_t>(stride);
   for (std::size_t e = 0; e < n; ++e) {
     bonded[to * n + e] = from.bonded[k * n + e];
@@ -119,9 +123,12 @@ int Simulation::install_bond(int i, int j, double ref_distance_m, double ref_rot
   b_.j.push_back(j);
   b_.ref_distance_m.push_back(ref_distance_m);
   b_.ref_rotation_rad.push_back(ref_rotation_rad);
-  b_.geometry.push_back(
-      std::visit([&](const auto& law) { return bond_geometry(law, p_.radius[ui], p_.radius[uj], opt_.thickness_m); },
-                 material_.joint));
+  b_.geometry.push_back(std::visit(
+      [&](const auto& law) -> BondInterface {
+        return bond_geometry(law, p_.radius[ui], p_.radius[uj], opt_.thickness_m);
+      },
+      material_.joint));
+  if (!b_.strength_factor.empty()) b_.strength_factor.push_back(1.0);
   b_.active.push_back(1);
   for (int e = 0; e < b_.stride; ++e) {
     b_.shear_force_n.push_back(0.0);
@@ -163,7 +170,7 @@ double Simulation::stable_time_step() const {
       [&](const auto& law) {
         for (std::size_t b = 0; b < b_.size(); ++b) {
           if (!b_.active[b]) continue;
-          const TimeStepStiffness k = bond_time_step_stiffness(law, b_.geometry[b]);
+          const TimeStepStiffness k = bond_time_step_stiffness(law, b_.joint_geometry(b));
           for (auto u : {b_.i[b], b_.j[b]}) add(static_cast<std::size_t>(u), k);
         }
       },

@@ -47,8 +47,10 @@ inline BondResult flat_joint_update_two_bonded(const FlatJointParams& p, const B
   //   tension: fl(fn / A) > sigma_c needs fn / A > sigma_c (rounding is monotone and sigma_c a double);
   //   shear:   fl(|fs| / A) >= fl(c - fl(sigma) tan phi) needs |fs| >= c A - fn tan phi up to a few
   //            rounding errors of c A + |fn| tan phi (both sides times A > 0).
-  const double tension_bound = p.bond.tensile_strength_pa * area * (1.0 - 1e-12);
-  const double cohesion_force = p.bond.cohesion_pa * area;
+  const double sigma_c = p.bond.tensile_strength_pa * geo.strength_factor;  // as flat_joint_update forms them
+  const double cohesion = p.bond.cohesion_pa * geo.strength_factor;
+  const double tension_bound = sigma_c * area * (1.0 - 1e-12);
+  const double cohesion_force = cohesion * area;
   const v2d fn_tan = fn * p.tan_friction_angle;
   const v2d envelope_scale = cohesion_force + lane_abs(fn_tan);
   const auto below_envelopes = (fn < tension_bound) & (abs_fs + 1e-12 * envelope_scale < cohesion_force - fn_tan);
@@ -58,11 +60,11 @@ inline BondResult flat_joint_update_two_bonded(const FlatJointParams& p, const B
   } else {
     const v2d sigma = fn / area;
     const v2d tau = abs_fs / area;
-    const v2d shear_limit = p.bond.cohesion_pa - sigma * p.tan_friction_angle;
+    const v2d shear_limit = cohesion - sigma * p.tan_friction_angle;
     for (int e = 0; e < 2; ++e) {
-      breaks[e] = sigma[e] > p.bond.tensile_strength_pa ? BreakMode::tension
-                  : tau[e] >= shear_limit[e]            ? BreakMode::shear
-                                                        : BreakMode::none;
+      breaks[e] = sigma[e] > sigma_c         ? BreakMode::tension
+                  : tau[e] >= shear_limit[e] ? BreakMode::shear
+                                             : BreakMode::none;
       r.n_breaking += breaks[e] != BreakMode::none;
       shear_force_n[e] = fs[e];
     }

@@ -6,6 +6,7 @@
 // (serial.hpp). Internal to dem/; never written.
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <variant>
 #include <vector>
@@ -41,6 +42,12 @@ struct LawRecord {
   std::string name;
   std::vector<std::pair<std::string, double>> values;
 };
+
+/// Keys added to the bond laws' tables after the records began (KERFDEM7 / KERFCAL4): absent from an older record,
+/// they keep their defaults, which give the law of the build that wrote it (no Weibull strengths).
+inline bool key_added_later(std::string_view key) {
+  return key == "strength_weibull_modulus" || key == "strength_reference_half_length_um";
+}
 
 // The translations, keyed as this build's field tables key them. A key renamed in a law's table is renamed here.
 inline LawRecord record_of(const FlatJoint6& p) {

@@ -266,6 +266,27 @@ CompactedPacking compact_random(const SpecimenSpec& spec, const GenesisProgress&
   return out;
 }
 
+const BondStiffnessStrength& joint_bond(const Material& material) {
+  return std::visit([](const auto& law) -> const BondStiffnessStrength& { return law.bond; }, material.joint);
+}
+
+/// A specimen's joints carry the strength factors drawn for its material's Weibull modulus and reference
+/// half-length (draw_joint_strengths): another material takes them only with the same two (its strengths may
+/// differ, the factors being relative); InputError names the key otherwise.
+void check_same_strength_draw(const BondStiffnessStrength& drawn, const BondStiffnessStrength& wanted,
+                              const std::string& whose) {
+  if (wanted.strength_weibull_modulus != drawn.strength_weibull_modulus)
+    throw InputError("material.strength_weibull_modulus", format_value(wanted.strength_weibull_modulus),
+                     whose + " " + format_value(drawn.strength_weibull_modulus) +
+                         " (its joints' strengths were drawn with it; build the specimen again)");
+  if (drawn.strength_weibull_modulus != 0 &&
+      wanted.strength_reference_half_length_m != drawn.strength_reference_half_length_m)
+    throw InputError("material.strength_reference_half_length_um",
+                     format_value(units::m_to_um(wanted.strength_reference_half_length_m)),
+                     whose + " " + format_value(units::m_to_um(drawn.strength_reference_half_length_m)) +
+                         " (its joints' strengths were drawn with it; build the specimen again)");
+}
+
 /// The disks and joints of `source` with `material`'s laws and densities, at rest and in no group: the
 /// packing only (finish_specimen, with_material).
 Simulation copy_at_rest(const Simulation& source, const Material& material) {
@@ -288,12 +309,14 @@ Simulation finish_specimen(const CompactedPacking& packing, const Material& mate
   Simulation sim = copy_at_rest(packing.disks, material);  // no joints yet, no walls
   if (spec.packing == Packing::hexagonal) {
     sim.install_bonds_within_gap(1e-6 * 0.5 * (spec.radius_min_m + spec.radius_max_m));
+    draw_joint_strengths(sim, spec.seed);
     seed_flaws(sim, material, spec.seed);
     sim.initialise();
   } else {
     // 4. Joints, stress free, within the installation gap; 5. the walls are not copied; 6. relax with the
     // material's contact law (friction on) and damping.
     sim.install_bonds_within_gap(spec.installation_gap_m);
+    draw_joint_strengths(sim, spec.seed);
     seed_flaws(sim, material, spec.seed);
     sim.initialise();
     sim.run(spec.relax_steps);
@@ -337,6 +360,7 @@ Simulation with_material(const Simulation& specimen, const Material& material) {
   if (elements != specimen.bonds().stride)
     throw InputError("material.n_elements", std::to_string(elements),
                      "the specimen's element count " + std::to_string(specimen.bonds().stride));
+  check_same_strength_draw(joint_bond(specimen.material()), joint_bond(material), "the specimen's");
   Simulation sim = copy_at_rest(specimen, material);
   sim.initialise();
   return sim;
@@ -379,7 +403,7 @@ void save_specimen(const std::string& file_path, const Simulation& sim, const Sp
   j["material"] = material_to_json(sim.material());
   j["particles"] = Json{{"x_m", p.x}, {"y_m", p.y}, {"radius_m", p.radius}, {"theta_rad", p.theta}};
   std::vector<int> i, jj, bonded;
-  std::vector<double> d0, rot0, shear, damage;
+  std::vector<double> d0, rot0, shear, damage, factor;
   const auto stride = static_cast<std::size_t>(b.stride);
   for (std::size_t k = 0; k < b.size(); ++k) {
     if (!b.active[k]) continue;
@@ -387,6 +411,7 @@ void save_specimen(const std::string& file_path, const Simulation& sim, const Sp
     jj.push_back(b.j[k]);
     d0.push_back(b.ref_distance_m[k]);
     rot0.push_back(b.ref_rotation_rad[k]);
+    factor.push_back(b.joint_geometry(k).strength_factor);
     for (std::size_t e = 0; e < stride; ++e) {
       bonded.push_back(b.bonded[k * stride + e]);
       shear.push_back(b.shear_force_n[k * stride + e]);
@@ -401,6 +426,12 @@ void save_specimen(const std::string& file_path, const Simulation& sim, const Sp
                     {"element_bonded", bonded},
                     {"element_shear_force_N", shear}};
   if (b.keeps_damage) j["bonds"]["element_damage"] = damage;  // a law with element damage (softening flat joint)
+  const BondStiffnessStrength& bond = joint_bond(sim.material());
+  if (bond.strength_weibull_modulus != 0) {  // Weibull strengths: the factors drawn, and what they were drawn with
+    j["bonds"]["strength_factor"] = factor;
+    j["bonds"]["strength_weibull_modulus"] = bond.strength_weibull_modulus;
+    j["bonds"]["strength_reference_half_length_m"] = bond.strength_reference_half_length_m;  // SI: to the bit
+  }
   write_file_atomically(file_path, j.dump());
 }
 
@@ -439,12 +470,23 @@ Simulation load_specimen(const std::string& file_path, const Material& material,
     const auto bonded = b.at("element_bonded").get<std::vector<int>>();
     const auto shear = b.at("element_shear_force_N").get<std::vector<double>>();
     const auto damage = b.value("element_damage", std::vector<double>());  // absent: undamaged (or another law)
+    BondStiffnessStrength drawn;                                           // absent: uniform strengths (modulus 0)
+    drawn.strength_weibull_modulus = b.value("strength_weibull_modulus", 0.0);
+    drawn.strength_reference_half_length_m =
+        b.value("strength_reference_half_length_m", drawn.strength_reference_half_length_m);
+    check_same_strength_draw(drawn, joint_bond(material), file_path + "'s");
+    const auto factor = b.value("strength_factor", std::vector<double>());
     const auto stored = static_cast<std::size_t>(b.at("n_elements").get<int>());
     const auto stride = static_cast<std::size_t>(sim.bonds().stride);
     for (std::size_t k = 0; k < bi.size(); ++k) {
       if (bi[k] < 0 || bj[k] < 0 || static_cast<std::size_t>(std::max(bi[k], bj[k])) >= x.size())
         throw InputError(file_path + ": bonds", std::to_string(k), "particle indices within the file");
       const auto id = static_cast<std::size_t>(sim.install_bond(bi[k], bj[k], d0.at(k), rot0.at(k)));
+      if (!factor.empty()) {
+        auto& f = sim.bonds().strength_factor;
+        if (f.empty()) f.assign(sim.bonds().size(), 1.0);
+        f[id] = factor.at(k);
+      }
       // Element states carry over only when the element count is the same (else the joint starts intact).
       if (stored != stride) continue;
       for (std::size_t e = 0; e < stride; ++e) {

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# A checkpoint of an earlier kerf-dem still resumes, to the bit (issue 39 item 4): tests/dem/reference/kerfdem6_cut
+# Checkpoints of earlier kerf-dems still resume, to the bit (issue 39 item 4): tests/dem/reference/kerfdem6_cut
 # holds a checkpoint written by kerf 4a34e1f (its engine state "KERFDEM6" stores the laws as raw variants, index
 # included) of a tiny cut with the parallel bond, the second law of that build's list, and a friction coefficient
 # and a tensile strength of its own. Resumed by this build, the cut's forces and cracks are those of an
@@ -19,6 +19,18 @@ for f in forces.csv cracks.csv; do
 done
 grep -q '"bond_model": "parallel_bond"' "$work/old/summary.json" || fail "the resumed cut's material is not the parallel bond"
 
+# A checkpoint of the build before Weibull joint strengths (kerf a0ff3ea: engine state "KERFDEM8", its laws' records
+# without the Weibull keys, its joints' geometry without the strength factor) of a tiny cut with the softening flat
+# joint (element damage): resumed by this build, the forces and cracks of an uninterrupted run. Made as the one above.
+fixture8="$src/tests/dem/reference/kerfdem8_cut"
+cp -r "$fixture8" "$work/old8"
+chmod -R u+w "$work/old8"
+"$bin" resume "$work/old8" --threads 1 >/dev/null 2>"$work/err" || fail "resume of the a0ff3ea checkpoint: $(cat "$work/err")"
+"$bin" run "$fixture8/scene.json" --threads 1 --out "$work/full8" >/dev/null 2>"$work/err" || fail "run: $(cat "$work/err")"
+for f in forces.csv cracks.csv; do
+  cmp -s "$work/full8/$f" "$work/old8/$f" || fail "$f resumed from the a0ff3ea checkpoint differs from an uninterrupted run"
+done
+
 # The engine state's tag made "KERFDEM5" (the file's checksum made right): refused, naming the versions.
 python3 - "$fixture/checkpoint.bin" "$work/bad/checkpoint.bin" <<'PY'
 import os, sys, zlib
@@ -33,6 +45,6 @@ PY
 "$bin" resume "$work/bad" --threads 1 >/dev/null 2>"$work/err"
 status=$?
 [ $status -eq 3 ] || fail "an engine state of KERFDEM5: exit $status (expected 3): $(cat "$work/err")"
-grep -qF "another kerf-dem version (KERFDEM5, this one reads KERFDEM8 or KERFDEM7 or KERFDEM6)" "$work/err" ||
+grep -qF "another kerf-dem version (KERFDEM5, this one reads KERFDEM9 or KERFDEM8 or KERFDEM7 or KERFDEM6)" "$work/err" ||
   fail "the refusal does not name the versions: $(cat "$work/err")"
 echo "dem_old_checkpoint_cli: ok"

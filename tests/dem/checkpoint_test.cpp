@@ -116,16 +116,33 @@ ParallelBondParams odd_parallel_bond() {
   return ParallelBondParams::validated(p);
 }
 
-/// The material's two laws as records (this build) and as raw variants of 4a34e1f ("KERFDEM6", "KERFCAL3");
-/// `joint_index_at`: where in the raw bytes the joint variant keeps its index.
+/// A law's record as put_law writes it, without the keys added after "KERFDEM8" (as that format's builds wrote it).
+void put_record_before_weibull(std::string& out, legacy::LawRecord r) {
+  std::erase_if(r.values, [](const auto& kv) { return legacy::key_added_later(kv.first); });
+  serial::put_str(out, r.name);
+  serial::put_raw(out, static_cast<std::uint64_t>(r.values.size()));
+  for (const auto& [key, value] : r.values) {
+    serial::put_str(out, key);
+    serial::put_raw(out, value);
+  }
+}
+
+/// The material's two laws as records (this build; and as "KERFDEM8" and "KERFCAL5" wrote them, without the
+/// Weibull keys) and as raw variants of 4a34e1f ("KERFDEM6", "KERFCAL3"); `joint_index_at`: where in the raw bytes
+/// the joint variant keeps its index.
 struct LawBytes {
-  std::string records, raw;
+  std::string records, records8, raw;
   std::size_t joint_index_at;
 };
 LawBytes law_bytes(const Material& m) {
   LawBytes out;
   serial::put_law(out.records, m.contact);
   serial::put_law(out.records, m.joint);
+  const auto record = [](const auto& law) {
+    return std::visit([](const auto& p) { return serial::law_record(p); }, law);
+  };
+  put_record_before_weibull(out.records8, record(m.contact));
+  put_record_before_weibull(out.records8, record(m.joint));
   const auto& c = std::get<LinearContactParams>(m.contact);
   const legacy::ContactLaw6 contact6 =
       legacy::Linear6{c.effective_modulus_pa, c.stiffness_ratio, c.friction_coefficient};
@@ -151,8 +168,23 @@ LawBytes law_bytes(const Material& m) {
   return out;
 }
 
-/// An engine state of this build ("KERFDEM8") of a law without damage as "KERFDEM7" wrote it: the same bytes
-/// without the bonds' element damage at the end (an empty vector: its length, 0).
+/// An engine state of this build ("KERFDEM9") of a specimen without Weibull strengths as "KERFDEM8" wrote it: the
+/// laws' records without the Weibull keys, and no strength factors at the end (an empty vector: its length, 0).
+std::string as_kerfdem8(std::string now, const Simulation& sim) {
+  REQUIRE(now.substr(0, 8) == "KERFDEM9");
+  REQUIRE(sim.bonds().strength_factor.empty());
+  const LawBytes laws = law_bytes(sim.material());
+  const std::size_t at = now.find(laws.records);
+  REQUIRE(at != std::string::npos);
+  now.replace(at, laws.records.size(), laws.records8);
+  REQUIRE(now.substr(now.size() - 8) == std::string(8, '\0'));
+  now.resize(now.size() - 8);
+  now.replace(0, 8, "KERFDEM8");
+  return now;
+}
+
+/// An engine state of "KERFDEM8" of a law without damage as "KERFDEM7" wrote it: the same bytes without the bonds'
+/// element damage at the end (an empty vector: its length, 0).
 std::string as_kerfdem7(std::string now) {
   REQUIRE(now.substr(0, 8) == "KERFDEM8");
   REQUIRE(now.size() >= 16);
@@ -167,9 +199,11 @@ std::string as_kerfdem7(std::string now) {
 std::string with_raw_laws(std::string now, const Material& m, std::string_view old_tag,
                           std::size_t* joint_index_at = nullptr) {
   const LawBytes laws = law_bytes(m);
-  const std::size_t at = now.find(laws.records);
+  std::size_t at = now.find(laws.records);
+  std::size_t size = laws.records.size();
+  if (at == std::string::npos) at = now.find(laws.records8), size = laws.records8.size();  // a KERFDEM8 state's
   REQUIRE(at != std::string::npos);
-  now.replace(at, laws.records.size(), laws.raw);
+  now.replace(at, size, laws.raw);
   now.replace(0, old_tag.size(), old_tag);
   if (joint_index_at) *joint_index_at = at + laws.joint_index_at;
   return now;
@@ -216,8 +250,8 @@ TEST_CASE("checkpoint: a law record of an unknown name, a missing key or a value
 }
 
 TEST_CASE(
-    "checkpoint: engine states of KERFDEM7 (no element damage) and KERFDEM6 (also the laws as raw variants) "
-    "read the same state, and another version is refused naming it",
+    "checkpoint: engine states of KERFDEM8 (no strength factors), KERFDEM7 (also no element damage) and KERFDEM6 "
+    "(also the laws as raw variants) read the same state, and another version is refused naming it",
     "[checkpoint]") {
   for (const BondLaw& joint : {BondLaw(odd_flat_joint()), BondLaw(odd_parallel_bond())}) {
     Simulation sim(odd_material(joint), SimulationOptions{});
@@ -225,7 +259,11 @@ TEST_CASE(
     sim.install_bond(a, b);
     sim.initialise();
     sim.run(3);
-    const std::string v7 = as_kerfdem7(sim.serialize());
+    const std::string v8 = as_kerfdem8(sim.serialize(), sim);
+    const Simulation old8 = Simulation::deserialize(v8);
+    CHECK(same_micro_parameters(old8.material(), sim.material()));
+    CHECK(old8.serialize() == sim.serialize());  // the Weibull keys' defaults, every factor 1: this build's state
+    const std::string v7 = as_kerfdem7(v8);
     const Simulation old7 = Simulation::deserialize(v7);
     CHECK(same_micro_parameters(old7.material(), sim.material()));
     CHECK(old7.serialize() == sim.serialize());  // written again in this build's format, byte for byte
@@ -235,19 +273,28 @@ TEST_CASE(
   }
   const Simulation sim(odd_material(odd_parallel_bond()), SimulationOptions{});
   std::size_t index_at = 0;
-  std::string bad = with_raw_laws(as_kerfdem7(sim.serialize()), sim.material(), "KERFDEM6", &index_at);
+  std::string bad =
+      with_raw_laws(as_kerfdem7(as_kerfdem8(sim.serialize(), sim)), sim.material(), "KERFDEM6", &index_at);
   bad[index_at] = static_cast<char>(std::variant_size_v<legacy::BondLaw6>);
   CHECK_THROWS_WITH(Simulation::deserialize(bad), Catch::Matchers::Contains("an unknown law"));
   std::string older = sim.serialize();
   older.replace(0, 8, "KERFDEM5");
-  CHECK_THROWS_WITH(Simulation::deserialize(older),
-                    Catch::Matchers::Contains(
-                        "another kerf-dem version (KERFDEM5, this one reads KERFDEM8 or KERFDEM7 or KERFDEM6)"));
-  // A KERFDEM8 state whose damage does not match its elements (a flat joint's with damage) is corrupt.
+  CHECK_THROWS_WITH(
+      Simulation::deserialize(older),
+      Catch::Matchers::Contains(
+          "another kerf-dem version (KERFDEM5, this one reads KERFDEM9 or KERFDEM8 or KERFDEM7 or KERFDEM6)"));
+  // A state whose damage does not match its elements (a flat joint's with damage) is corrupt.
+  // (The damage is the last vector but one: the joints' strength factors follow it.)
   std::string damaged = sim.serialize();
-  damaged.resize(damaged.size() - 8);
+  damaged.resize(damaged.size() - 16);
   serial::put_vec(damaged, std::vector<double>{0.5});
+  serial::put_vec(damaged, std::vector<double>{});
   CHECK_THROWS_WITH(Simulation::deserialize(damaged), Catch::Matchers::Contains("element damage does not match"));
+  // Strength factors for joints that are not there: corrupt too.
+  std::string factors = sim.serialize();
+  factors.resize(factors.size() - 8);
+  serial::put_vec(factors, std::vector<double>{1.5});
+  CHECK_THROWS_WITH(Simulation::deserialize(factors), Catch::Matchers::Contains("strength factors do not match"));
 }
 
 namespace {

@@ -221,6 +221,7 @@ TEST_CASE("flat joint: the two-element intact path equals the general update to 
     raw.bond.radius_multiplier = 0.75 + 0.25 * std::abs(unit(rng));
     raw.bond.friction_angle_rad = 0.4 * (1 + unit(rng));
     Joint general(raw, 10e-6 * (1.15 + 0.15 * unit(rng)), 10e-6 * (1.15 + 0.15 * unit(rng)));
+    if (k % 3 != 0) general.geo.strength_factor = std::exp(0.5 * unit(rng));  // Weibull strengths: a joint's own
     Joint fast = general;
     const double R = general.geo.half_length_m;
     const double strain = 6e-3 * unit(rng);  // sigma = Ebar* g_s / (R1 + R2): sigma_c = 200 MPa near +4.3e-3
@@ -265,15 +266,17 @@ TEST_CASE("flat joint: the intact path decides breaks as the stress test does, u
     if (k % 5 == 2) raw.bond.cohesion_pa = 0;
     if (k % 5 == 3) raw.bond.tensile_strength_pa = 0;
     Joint general(raw, 10e-6 * (1.15 + 0.15 * unit(rng)), 10e-6 * (1.15 + 0.15 * unit(rng)));
+    if (k % 3 == 2) general.geo.strength_factor = 0.3 + 2 * std::abs(unit(rng));  // a joint's own strengths
+    const double w = general.geo.strength_factor;
     const double area = general.element_area();
     const double kn_t_le = general.geo.normal_stiffness * general.geo.thickness_m * general.geo.half_length_m;
     const bool tension_scan = k % 2 == 0;
-    // Tension: g_s such that sigma = sigma_c. Shear: sigma somewhere below sigma_c, |F_s| on the envelope.
-    const double sigma = tension_scan ? general.p.bond.tensile_strength_pa
-                                      : general.p.bond.tensile_strength_pa * (0.9 - 2 * std::abs(unit(rng)));
+    // Tension: g_s such that sigma = w sigma_c. Shear: sigma somewhere below it, |F_s| on the envelope.
+    const double sigma_c = general.p.bond.tensile_strength_pa * w, cohesion = general.p.bond.cohesion_pa * w;
+    const double sigma = tension_scan ? sigma_c : sigma_c * (0.9 - 2 * std::abs(unit(rng)));
     const double gap0 = sigma * area / kn_t_le;
-    const double shear0 = std::max(0.0, general.p.bond.cohesion_pa - sigma * general.p.tan_friction_angle) * area *
-                          (unit(rng) < 0 ? -1 : 1);
+    const double shear0 =
+        std::max(0.0, cohesion - sigma * general.p.tan_friction_angle) * area * (unit(rng) < 0 ? -1 : 1);
     bool seen_break = false, seen_intact = false;
     for (int m = -40; m <= 40; ++m) {
       Joint fast = general;

@@ -463,7 +463,7 @@ TEST_CASE("softening flat joint: a damaged state round-trips through the engine'
   CHECK(resumed.simulation().bonds().damage == run.simulation().bonds().damage);
   CHECK(resumed.simulation().cracks().size() == run.simulation().cracks().size());
   CHECK(resumed.result().peak_stress_pa == run.result().peak_stress_pa);
-  // The engine state alone too, with its damage (KERFDEM8).
+  // The engine state alone too, with its damage.
   const Simulation& s = run.simulation();
   CHECK(Simulation::deserialize(s.serialize()).bonds().damage == s.bonds().damage);
 }

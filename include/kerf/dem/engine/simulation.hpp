@@ -49,7 +49,14 @@ struct BondStore {
   std::vector<std::int32_t> i, j;
   std::vector<double> ref_distance_m;    ///< centre distance at installation (zero gap there)
   std::vector<double> ref_rotation_rad;  ///< theta_j - theta_i at installation
-  std::vector<BondGeometry> geometry;
+  std::vector<BondInterface> geometry;
+  /// Per bond, its strength factor w (Weibull joint strengths: draw_joint_strengths); empty when every factor is 1
+  /// (a material without a Weibull modulus), which the joint loop then does not read.
+  std::vector<double> strength_factor;
+  /// What bond b's law functions take: its interface and its strength factor.
+  BondGeometry joint_geometry(std::size_t b) const {
+    return {geometry[b], strength_factor.empty() ? 1.0 : strength_factor[b]};
+  }
   std::vector<std::uint8_t> active;        ///< 0 once retired (broken, per the law): the unbonded contact rules
   std::vector<double> shear_force_n;       ///< per element
   std::vector<std::uint8_t> bonded;        ///< per element
@@ -62,8 +69,9 @@ struct BondStore {
   std::vector<double> damage;
   std::size_t size() const { return i.size(); }
   int n_bonded_elements(std::size_t b) const;
-  /// Copies bond k's element states (bonded flags, shear forces, damage where both stores keep it) from `from`
-  /// into bond `to` of this store, both of the same stride (a specimen copied, a cut's window rebuilt).
+  /// Copies bond k's strength factor and element states (bonded flags, shear forces, damage where both stores keep
+  /// it) from `from` into bond `to` of this store, both of the same stride (a specimen copied, a cut's window
+  /// rebuilt).
   void copy_elements(std::size_t to, const BondStore& from, std::size_t k);
 };
 
@@ -297,8 +305,10 @@ class Simulation {
   /// kViscous: with the contact dashpots of Material::viscous_damping_ratio (an instantiation without them
   /// runs when the ratio is 0, so undamped runs are the same to the bit).
   /// `damage`: the bonds' element damage (BondStore::damage) for a law that has one (BondLawWithDamage), else
-  /// nothing (the loop then calls the law's update as before there was any).
-  template <class Law, bool kViscous, class... Damage>
+  /// nothing (the loop then calls the law's update as before there was any). kFactors: the joints have strength
+  /// factors (BondStore::strength_factor); without, a loop whose factor is the constant 1 (no memory read, no
+  /// multiplication left: the joint loop of the build before Weibull strengths, measured in docs/performance.md).
+  template <class Law, bool kViscous, bool kFactors, class... Damage>
   void bond_loop(const Law& law, ForceCounts& counts, Damage*... damage);
   /// bond_loop with the damage for a law that has one.
   template <bool kViscous, class Law>
@@ -322,9 +332,10 @@ class Simulation {
   void check_stability() const;
   double mass_of(double radius_m, std::uint8_t type) const;
   /// The state after the material and options, in checkpoint order: io(field...) writes or reads them.
-  /// `with_damage`: the bonds' element damage too (the formats since "KERFDEM8").
+  /// `version`: the format's index, 0 the newest ("KERFDEM9": the joints' strength factors last, after the element
+  /// damage), 1 "KERFDEM8" (no factors), 2 and 3 "KERFDEM7" and "KERFDEM6" (no damage either).
   template <class Self, class Io>
-  static void state_fields(Self& sim, Io& io, bool with_damage);
+  static void state_fields(Self& sim, Io& io, int version);
 
   Material material_;
   SimulationOptions opt_;

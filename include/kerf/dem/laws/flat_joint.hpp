@@ -48,9 +48,9 @@ BondGeometry bond_geometry(const FlatJointParams& p, double r1_m, double r2_m, d
 ///
 /// Bonded element: F_n,e = k_n A_e g_e (g_e = g_s - theta_b xi_e), M_e = -k_n theta_b t l_e^3 / 12,
 /// F_s,e -= k_s A_e d_s; it is over strength in tension if F_n,e / A_e > sigma_c, else in shear if
-/// |F_s,e| / A_e >= c - sigma tan(phi). Unbonded element: only the closed part of the gap carries load,
-/// F_n,e = k_n t int_e min(g(xi), 0) dxi, with Coulomb friction |F_s,e| <= mu |F_n,e|.
-/// `breaks[e]` is set for elements over strength; the caller applies them after the whole force loop
+/// |F_s,e| / A_e >= c - sigma tan(phi) (both strengths times the joint's factor w, BondGeometry). Unbonded element:
+/// only the closed part of the gap carries load, F_n,e = k_n t int_e min(g(xi), 0) dxi, with Coulomb friction |F_s,e|
+/// <= mu |F_n,e|. `breaks[e]` is set for elements over strength; the caller applies them after the whole force loop
 /// (docs/physics-dem.md section 1), so this function never changes `bonded`.
 /// Defined in the header so that the engine's joint loop inlines it: a cut runs 11-18 % faster than with the
 /// call (same results to the bit; docs/performance.md).
@@ -64,6 +64,8 @@ inline BondResult flat_joint_update(const FlatJointParams& p, const BondGeometry
   const double ks_area = geo.shear_stiffness * area;
   const double theta = kin.rotation_rad;
   const double tan_phi = p.tan_friction_angle;
+  const double sigma_c = p.bond.tensile_strength_pa * geo.strength_factor;  // this joint's strengths (w = 1: the
+  const double cohesion = p.bond.cohesion_pa * geo.strength_factor;         // material's, to the bit)
   BondResult r;
   for (int e = 0; e < nr; ++e) {
     const double a = -geo.half_length_m + e * le;
@@ -77,10 +79,10 @@ inline BondResult flat_joint_update(const FlatJointParams& p, const BondGeometry
       me = -kn_t * theta * le * le * le / 12.0;
       const double sigma = fn / area;
       const double tau = std::abs(fs) / area;
-      if (sigma > p.bond.tensile_strength_pa) {
+      if (sigma > sigma_c) {
         breaks[e] = BreakMode::tension;
         ++r.n_breaking;
-      } else if (tau >= p.bond.cohesion_pa - sigma * tan_phi) {
+      } else if (tau >= cohesion - sigma * tan_phi) {
         breaks[e] = BreakMode::shear;
         ++r.n_breaking;
       }

@@ -4,6 +4,7 @@
 // loops instantiated once per law (kerf/dem/laws/contact_laws.hpp lists the laws and the functions each supplies;
 // docs/dem-contact-laws.md says how to add one).
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 #include "kerf/field_table.hpp"
@@ -13,13 +14,22 @@ namespace kerf::dem {
 /// Break mode of a bond element, as recorded in crack events.
 enum class BreakMode : std::uint8_t { none = 0, tension = 1, shear = 2 };
 
-/// Per-bond constants fixed at installation. Every bond law of kerf bonds a 2D interface: a strip of
-/// half-length R across the contact, out-of-plane thickness t, with normal and shear stiffness per area.
-struct BondGeometry {
+/// Per-bond constants fixed at installation, as the engine stores them for every bond. Every bond law of kerf bonds
+/// a 2D interface: a strip of half-length R across the contact, out-of-plane thickness t, with normal and shear
+/// stiffness per area.
+struct BondInterface {
   double half_length_m;     ///< R = lambda min(R1, R2)
   double thickness_m;       ///< out-of-plane thickness t
   double normal_stiffness;  ///< k_n [Pa/m] (stress per gap length)
   double shear_stiffness;   ///< k_s [Pa/m]
+};
+
+/// What the law functions take: the interface and the joint's strength factor w, its strengths being w sigma_c and
+/// w c (Weibull-distributed joint strengths, drawn once per joint when a specimen is made: draw_joint_strengths;
+/// 1 for every joint of a material without a Weibull modulus). The engine keeps the factors apart from the
+/// interfaces (BondStore::strength_factor), and none without a modulus: its joint loop reads no more memory then.
+struct BondGeometry : BondInterface {
+  double strength_factor = 1.0;
 };
 
 /// The stiffness and strength every bond law of kerf has (the concept BondLawParams requires it as the member
@@ -32,6 +42,10 @@ struct BondStiffnessStrength {
   double cohesion_pa = 113e6;                      ///< c
   double friction_angle_rad = 0.4363323129985824;  ///< phi (25 deg) of the shear envelope c - sigma tan(phi)
   double radius_multiplier = 1.0;                  ///< lambda: R = lambda min(R1, R2)
+  /// m of the joints' Weibull-distributed strengths (0: every joint has sigma_c and c): a joint of half-length R
+  /// gets w sigma_c and w c, w drawn with mean (R_ref / R)^(1/m) (weibull_strength_factor).
+  double strength_weibull_modulus = 0;
+  double strength_reference_half_length_m = 10 * 1e-6;  ///< R_ref (10 um as the key reads it): mean strength sigma_c
 
   /// The keys of the block (each bond law's table embeds it: kerf::embedded_fields).
   static const FieldTable<BondStiffnessStrength>& fields();
@@ -44,10 +58,23 @@ inline BondGeometry interface_geometry(double effective_modulus_pa, double stiff
                                        double r1_m, double r2_m, double thickness_m) {
   const double r_min = r2_m > 0 ? std::min(r1_m, r2_m) : r1_m;
   const double kn = effective_modulus_pa / (r1_m + r2_m);
-  return {radius_multiplier * r_min, thickness_m, kn, kn / stiffness_ratio};
+  return {{radius_multiplier * r_min, thickness_m, kn, kn / stiffness_ratio}, 1.0};
 }
 inline BondGeometry interface_geometry(const BondStiffnessStrength& b, double r1_m, double r2_m, double thickness_m) {
   return interface_geometry(b.effective_modulus_pa, b.stiffness_ratio, b.radius_multiplier, r1_m, r2_m, thickness_m);
+}
+
+/// The strength factor w of a joint of half-length R (docs/physics-dem.md, "Weibull joint strengths"): the
+/// weakest-link law of a volume V, P_f(sigma) = 1 - exp(-(V / V_0) (sigma / sigma_0)^m), for a joint (V = 2 R t, t
+/// the same for all) drawn by inversion from a uniform U in (0, 1):
+///   w = (R_ref / R)^(1/m) (-ln U)^(1/m) / Gamma(1 + 1/m),
+/// so that joints of half-length R_ref have mean strength sigma_c; formed in logarithms (finite for every m > 0:
+/// a tiny m gives w = 0, the joint as weak as can be, never NaN). m = 0: 1 whatever U.
+inline double weibull_strength_factor(const BondStiffnessStrength& b, double half_length_m, double uniform) {
+  const double m = b.strength_weibull_modulus;
+  if (m == 0) return 1.0;
+  return std::exp((std::log(b.strength_reference_half_length_m / half_length_m) + std::log(-std::log(uniform))) / m -
+                  std::lgamma(1 + 1 / m));
 }
 
 /// Relative motion of a bonded interface since installation, in the contact frame (n from disk 1 to 2).

@@ -57,9 +57,10 @@ inline BondResult bond_update(const ParallelBondParams& p, const BondGeometry& g
   const double sigma_mean = res.normal_force_n / area;
   const double sigma_max = sigma_mean + std::abs(res.moment_nm) * r / inertia;
   const double tau_max = std::abs(res.shear_force_n) / area;
-  if (sigma_max > p.bond.tensile_strength_pa)
+  // This bond's strengths: the material's times its factor w (Weibull strengths; w = 1: the material's to the bit).
+  if (sigma_max > p.bond.tensile_strength_pa * geo.strength_factor)
     breaks[0] = BreakMode::tension;
-  else if (tau_max >= p.bond.cohesion_pa - sigma_mean * p.tan_friction_angle)
+  else if (tau_max >= p.bond.cohesion_pa * geo.strength_factor - sigma_mean * p.tan_friction_angle)
     breaks[0] = BreakMode::shear;
   res.n_breaking = breaks[0] != BreakMode::none;
   return res;

@@ -11,6 +11,7 @@
 //
 //   g_0 = sigma_c / k_n           the opening at the strength (per bond: k_n = Ebar* / (R1 + R2))
 //   w_c = 2 G_f / sigma_c         the softening opening (0 when sigma_c = 0: no strength, nothing to soften)
+// (sigma_c and c times the joint's strength factor w with Weibull strengths: g_0 w, w_c / w; G_f is the material's)
 //   g_f = g_0 + w_c               the opening at which the element carries no more tension
 //   D(g) = 0 for g <= g_0,   1 - g_0 (g_f - g) / (g w_c) for g_0 < g < g_f,   1 for g >= g_f
 //   D_e <- max(D_e, D(g_e))       (irreversible)
@@ -108,10 +109,11 @@ inline ElementLoad element_closed_load(double kn_t, double gap_m, double theta, 
   return {kn_t * integral, kn_t * (integral * (m - xi_e) - theta * (d - c) * (d - c) * (d - c) / 12.0)};
 }
 
-/// D(g) of the header for an element of a bond of normal stiffness k_n at opening g.
-inline double softening_damage(const SofteningFlatJointParams& p, double normal_stiffness, double opening_m) {
-  const double w_c = p.softening_opening_m;
-  const double g0 = p.bond.tensile_strength_pa / normal_stiffness, gf = g0 + w_c;
+/// D(g) of the header for an element of a bond of normal stiffness k_n and strength factor w at opening g: the
+/// joint's strength w sigma_c and softening opening 2 G_f / (w sigma_c) (its fracture energy is the material's).
+inline double softening_damage(const SofteningFlatJointParams& p, const BondGeometry& geo, double opening_m) {
+  const double w_c = p.softening_opening_m / geo.strength_factor;
+  const double g0 = p.bond.tensile_strength_pa * geo.strength_factor / geo.normal_stiffness, gf = g0 + w_c;
   if (!(opening_m > g0)) return 0.0;
   if (!(opening_m < gf)) return 1.0;
   return std::clamp(1.0 - g0 * (gf - opening_m) / (opening_m * w_c), 0.0, 1.0);
@@ -132,6 +134,8 @@ inline BondResult softening_flat_joint_update(const SofteningFlatJointParams& p,
   const double ks_area = geo.shear_stiffness * area;
   const double theta = kin.rotation_rad;
   const double tan_phi = p.tan_friction_angle;
+  const double sigma_c = p.bond.tensile_strength_pa * geo.strength_factor;  // this joint's strengths, as the flat
+  const double cohesion = p.bond.cohesion_pa * geo.strength_factor;         // joint forms them
   BondResult r;
   for (int e = 0; e < nr; ++e) {
     const double a = -geo.half_length_m + e * le;
@@ -144,20 +148,20 @@ inline BondResult softening_flat_joint_update(const SofteningFlatJointParams& p,
       fn = kn_t * le * (kin.gap_m - theta * xi_e);
       me = -kn_t * theta * le * le * le / 12.0;
       const double sigma = fn / area;
-      if (damage[e] == 0 && !(sigma > p.bond.tensile_strength_pa && p.softening_opening_m > 0)) {
+      if (damage[e] == 0 && !(sigma > sigma_c && p.softening_opening_m > 0)) {
         // Undamaged and within its tensile strength (or without softening): the flat joint's element.
         const double tau = std::abs(fs) / area;
-        if (sigma > p.bond.tensile_strength_pa) {
+        if (sigma > sigma_c) {
           breaks[e] = BreakMode::tension;
           ++r.n_breaking;
-        } else if (tau >= p.bond.cohesion_pa - sigma * tan_phi) {
+        } else if (tau >= cohesion - sigma * tan_phi) {
           breaks[e] = BreakMode::shear;
           ++r.n_breaking;
         }
       } else {
         // Softening: the damage from the largest opening, the open part at the secant stiffness.
         const double d_old = damage[e];
-        const double d = std::max(d_old, softening_damage(p, geo.normal_stiffness, kin.gap_m - theta * xi_e));
+        const double d = std::max(d_old, softening_damage(p, geo, kin.gap_m - theta * xi_e));
         damage[e] = d;
         const ClosedPart closed = element_closed_part(kin.gap_m, theta, a, le);
         const ElementLoad c = closed.end_m > closed.start_m ? element_closed_load(kn_t, kin.gap_m, theta, closed, xi_e)
@@ -169,7 +173,7 @@ inline BondResult softening_flat_joint_update(const SofteningFlatJointParams& p,
         if (d >= 1) {
           breaks[e] = BreakMode::tension;
           ++r.n_breaking;
-        } else if (std::abs(fs) / area >= (1 - d) * (p.bond.cohesion_pa - fn / area * tan_phi)) {
+        } else if (std::abs(fs) / area >= (1 - d) * (cohesion - fn / area * tan_phi)) {
           breaks[e] = BreakMode::shear;
           ++r.n_breaking;
         }

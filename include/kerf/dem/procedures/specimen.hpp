@@ -152,6 +152,12 @@ struct Flaw {
 /// when the material has none).
 std::vector<Flaw> seed_flaws(Simulation& sim, const Material& material, std::uint64_t seed);
 
+/// Draws every joint's strength factor (BondGeometry::strength_factor) from the material's Weibull modulus
+/// (weibull_strength_factor; nothing when the modulus is 0), a stream of `seed` apart from the packing's and the
+/// flaws'. The genesis (finish_specimen) calls it with the specimen's seed once the joints are installed; a copy of
+/// the specimen (a cut's window, with_material) carries the factors; a saved specimen stores them.
+void draw_joint_strengths(Simulation& sim, std::uint64_t seed);
+
 /// Saves particles, joints with their element states, the spec and the report as JSON
 /// (format "kerf-dem-specimen", version 1; documented in docs/dem.md).
 void save_specimen(const std::string& file_path, const Simulation& sim, const SpecimenSpec& spec,
