@@ -6,10 +6,15 @@ and the subsurface damage depth, each with its 95 % interval (Student t over the
 (rectangular / regular, Fieller's interval) with the zone and without it, and the zone's effect (on / off) on each
 surface. Reads the record alone. Given a second record of the same conditions at twice the depth of cut
 (data/studies/issue54_zone_pilot_02.json), also each surface's force split through the two depths, F = F0 + k h:
-F0 = 2 F(h) - F(2h), k = (F(2h) - F(h)) / h, and the depth effect F(2h) / F(h).
+F0 = 2 F(h) - F(2h), k = (F(2h) - F(h)) / h, and the depth effect F(2h) / F(h). Given with --against a record of
+the same conditions and packings with one change (another glass: data/studies/issue54_weibull_pilot.json against the
+zone pilot), the change's effect on each quantity, paired by packing: the mean of the per-packing differences (this
+record less the other) with its 95 % interval.
 
     PYTHONPATH=build/python python3 analysis/edge_zone_pilot.py data/studies/results/issue54_zone_pilot.csv \
         [data/studies/results/issue54_zone_pilot_02.csv]
+    PYTHONPATH=build/python python3 analysis/edge_zone_pilot.py data/studies/results/issue54_weibull_pilot.csv \
+        --against data/studies/results/issue54_zone_pilot.csv
 """
 import csv
 import math
@@ -86,12 +91,30 @@ def split(shallow, deep, h_mm):
     return "\n".join(lines)
 
 
+def paired(changed, baseline):
+    """Each (surface, zone) in both records: per quantity, the mean over the packings present in both (by seed) of
+    the difference changed - baseline."""
+    lines = ["| surface | zone | pairs | " + " | ".join(f"change in {label}" for _, label in QUANTITIES) + " |",
+             "|---|---|---|" + "---|" * len(QUANTITIES)]
+    for key in sorted(set(changed) & set(baseline)):
+        base = {r["seed"]: r for r in baseline[key]}
+        pairs = [(r, base[r["seed"]]) for r in changed[key] if r["seed"] in base]
+        cells = [interval(mean_of([number(a.get(q)) - number(b.get(q)) for a, b in pairs])) for q, _ in QUANTITIES]
+        lines.append(f"| {key[0]} | {key[1]} | {len(pairs)} | " + " | ".join(cells) + " |")
+    return "\n".join(lines)
+
+
 def depth_of(path):
     with open(path, newline="") as f:
         return float(next(csv.DictReader(f))["depth_of_cut_mm"])
 
 
 if __name__ == "__main__":
+    if len(sys.argv) == 4 and sys.argv[2] == "--against":
+        print(report(read(sys.argv[1])))
+        print()
+        print(paired(read(sys.argv[1]), read(sys.argv[3])))
+        sys.exit(0)
     if len(sys.argv) not in (2, 3):
         sys.exit(__doc__)
     print(report(read(sys.argv[1])))

@@ -57,3 +57,19 @@ def test_a_force_with_a_known_depth_independent_part_is_split_into_it(tmp_path):
     write(tmp_path / "b.csv", {("regular", "on"): [0.3 + 2 * 0.2 + d for d in spread]})
     line = ez.split(ez.read(tmp_path / "a.csv"), ez.read(tmp_path / "b.csv"), 0.1).splitlines()[0]
     assert "F0 0.3 [" in line and "k 2 [" in line and "depth effect 1.4 [" in line
+
+
+def test_a_change_that_adds_a_known_amount_to_every_packing_is_found_paired_exactly(tmp_path):
+    # The baseline's packings spread widely; the changed record adds 0.1 N/mm to each: a paired difference of 0.1
+    # with a zero-width interval (an unpaired one would be wide); a packing in one record only is left out.
+    base = [0.2, 0.9, 0.5, 1.3]
+    write(tmp_path / "base.csv", {("regular", "on"): base})
+    write(tmp_path / "new.csv", {("regular", "on"): [x + 0.1 for x in base] + [5.0]})
+    rows = ez.paired(ez.read(tmp_path / "new.csv"), ez.read(tmp_path / "base.csv")).splitlines()
+    row = [r for r in rows if r.startswith("| regular | on |")][0]
+    cells = [c.strip() for c in row.split("|")[1:-1]]
+    assert cells[2] == "4"  # the fifth packing has no partner
+    value, interval = cells[3].split(" [")
+    assert abs(float(value) - 0.1) < 1e-12
+    lo, hi = (float(x) for x in interval.rstrip("]").split(", "))
+    assert abs(lo - 0.1) < 1e-9 and abs(hi - 0.1) < 1e-9
