@@ -11,6 +11,7 @@
 
 #include "common.hpp"
 #include "kerf/dem/procedures/cut_calibration.hpp"
+#include "kerf/dem/procedures/cut_results.hpp"
 #include "kerf/error.hpp"
 #include "kerf/io.hpp"
 #include "kerf/units.hpp"
@@ -94,15 +95,13 @@ class CalibrateCutKind final : public SceneKind {
     const auto& fit = fit_;
     std::vector<CutCalibrationPoint> history;
     Json evaluations = Json::array();
+    // The replicated cut's results each evaluation reads and keeps (cut_results.hpp).
+    const std::string main_n(cut_keys::main_force_N), thrust_n(cut_keys::thrust_force_N);
+    const std::string main_std = replicate_spread_key(main_n), thrust_std = replicate_spread_key(thrust_n);
     // calibration_log.csv: the evaluation's number, these fields of its summary row, and its wall time.
-    const std::vector<std::string> logged{"strength_factor",
-                                          "tensile_strength_MPa",
-                                          "cohesion_MPa",
-                                          "main_force_N",
-                                          "main_force_replicate_std_N",
-                                          "thrust_force_N",
-                                          "thrust_force_replicate_std_N",
-                                          "relative_error_percent"};
+    const std::vector<std::string> logged{
+        "strength_factor", "tensile_strength_MPa",  "cohesion_MPa", main_n, main_std, thrust_n,
+        thrust_std,        "relative_error_percent"};
     std::vector<std::string> header{"evaluation"};
     header.insert(header.end(), logged.begin(), logged.end());
     header.push_back("wall_time_s");
@@ -136,7 +135,7 @@ class CalibrateCutKind final : public SceneKind {
           run_cut_replicates(scene, run.scene_dir, cut_, fit.replicates, summary_head("cut", e.material), options)
               .summary;
       const Json& r = done["results"];
-      const double force = r["main_force_N"].get<double>();
+      const double force = r[main_n].get<double>();
       const double error = force / fit.target_main_force_n - 1;
       history.push_back({s, force});
       if (std::abs(error) < std::abs(history[best].main_force_n / fit.target_main_force_n - 1))
@@ -146,10 +145,10 @@ class CalibrateCutKind final : public SceneKind {
                      {"strength_factor", s},
                      {"tensile_strength_MPa", units::pa_to_mpa(calibrated_params(e.material).tensile_strength_pa)},
                      {"cohesion_MPa", units::pa_to_mpa(calibrated_params(e.material).cohesion_pa)},
-                     {"main_force_N", force},
-                     {"main_force_replicate_std_N", r["main_force_replicate_std_N"]},
-                     {"thrust_force_N", r["thrust_force_N"]},
-                     {"thrust_force_replicate_std_N", r["thrust_force_replicate_std_N"]},
+                     {main_n, force},
+                     {main_std, r[main_std]},
+                     {thrust_n, r[thrust_n]},
+                     {thrust_std, r[thrust_std]},
                      {"relative_error_percent", 100 * error},
                      {"directory", dir.filename().string()}};
       evaluations.push_back(row);
@@ -165,7 +164,7 @@ class CalibrateCutKind final : public SceneKind {
     const CutCalibrationPoint& b = history[best];
     Material named = scale_bond_strengths(common.material, b.strength_factor, output_.name);
     named.name = output_.name;  // factor 1 keeps the base's name
-    const double sem = evaluations[best]["main_force_replicate_std_N"].get<double>() / std::sqrt(fit.replicates);
+    const double sem = evaluations[best][main_std].get<double>() / std::sqrt(fit.replicates);
     const std::string description = fmt::format(
         "{} with both bond strengths (joint tensile strength and cohesion) x {:.4g}, fitted by kerf-dem calibrate_cut "
         "to a mean main force of {:.4g} N{} ({} evaluations, {}converged: {:.4g} +- {:.2g} N, mean +- standard error "
@@ -185,7 +184,7 @@ class CalibrateCutKind final : public SceneKind {
                               {"target_main_force_N", fit.target_main_force_n},  // the old name, until 0.3.0
                               {"target_source", fit.target_source},
                               {"strength_factor", b.strength_factor},
-                              {"main_force_N", b.main_force_n},
+                              {main_n, b.main_force_n},
                               {"main_force_standard_error_N", sem},
                               {"relative_error_percent", 100 * (b.main_force_n / fit.target_main_force_n - 1)},
                               {"evaluations", evaluations},

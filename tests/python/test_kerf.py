@@ -13,6 +13,7 @@ import numpy as np
 import pytest
 
 import kerf
+from kerf.result_keys import CutResults as R
 
 SOURCE = pathlib.Path(__file__).resolve().parents[2]
 TOOLS = pathlib.Path(os.environ.get("KERF_TOOLS", SOURCE / "build" / "tools"))
@@ -196,8 +197,8 @@ def test_dem_run_small_cut(tmp_path):
     summary = done["summary"]
     assert summary["n_particles"] == reference["values"]["n_particles"]
     assert summary == json.loads((tmp_path / "cut" / "summary.json").read_text())
-    main = summary["results"]["main_force_N"]
-    assert main == pytest.approx(reference["values"]["main_force_N"], rel=reference["relative_tolerance"])
+    main = summary["results"][R.main_force_N]
+    assert main == pytest.approx(reference["values"][R.main_force_N], rel=reference["relative_tolerance"])
     forces, cracks = done["forces"], done["cracks"]
     with open(tmp_path / "cut" / "forces.csv", newline="") as f:
         rows = list(csv.reader(line for line in f if not line.startswith("#")))
