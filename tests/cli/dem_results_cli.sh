@@ -5,14 +5,12 @@
 # ends in its unit's suffix.
 # Usage: dem_results_cli.sh <dir of built programs> <source dir>
 source "$(dirname "$0")/lib/dem_common.sh" "$@"
+source "$(dirname "$0")/lib/generated.sh"
 
 "$bin" results >"$work/results.md" || fail "kerf-dem results failed"
-sed -n '/<!-- kerf-dem results: begin -->/,/<!-- kerf-dem results: end -->/p' "$src/docs/dem-keys.md" | sed '1d;$d' >"$work/doc.md"
-diff -u "$work/doc.md" "$work/results.md" >"$work/diff" ||
-  fail "docs/dem-keys.md's result tables differ from kerf-dem results: $(head -20 "$work/diff")"
+generated_block "$work/results.md" "$src/docs/dem-keys.md" "kerf-dem results"
 "$bin" results --python >"$work/result_keys.py" || fail "kerf-dem results --python failed"
-diff -u "$src/python/kerf/result_keys.py" "$work/result_keys.py" >"$work/diff" ||
-  fail "python/kerf/result_keys.py differs from kerf-dem results --python: $(head -20 "$work/diff")"
+generated_file "$work/result_keys.py" "$src/python/kerf/result_keys.py"
 for key in subsurface_damage_depth_steady_um steady_from_travel_mm edge_zone_cutting_force_N_per_mm damage_depth_limit_um; do
   grep -q "^| \`$key\` |" "$work/results.md" || fail "kerf-dem results: no row for $key"
 done

@@ -8,14 +8,12 @@ set -uo pipefail
 bin="$1/kerf-forces"; src="$2"
 work="$(mktemp -d)"; trap 'rm -rf "$work"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
+source "$(dirname "$0")/lib/generated.sh"
 
 "$bin" results >"$work/results.md" || fail "kerf-forces results failed"
-sed -n '/<!-- kerf-forces results: begin -->/,/<!-- kerf-forces results: end -->/p' "$src/docs/scenes.md" | sed '1d;$d' >"$work/doc.md"
-diff -u "$work/doc.md" "$work/results.md" >"$work/diff" ||
-  fail "docs/scenes.md's column table differs from kerf-forces results: $(head -20 "$work/diff")"
+generated_block "$work/results.md" "$src/docs/scenes.md" "kerf-forces results"
 "$bin" results --python >"$work/prediction_keys.py" || fail "kerf-forces results --python failed"
-diff -u "$src/python/kerf/prediction_keys.py" "$work/prediction_keys.py" >"$work/diff" ||
-  fail "python/kerf/prediction_keys.py differs from kerf-forces results --python: $(head -20 "$work/diff")"
+generated_file "$work/prediction_keys.py" "$src/python/kerf/prediction_keys.py"
 # A prediction's CSV header: the table's columns in its order (the models' own between them).
 (cd "$src" && "$bin" predict data/scenes/psic_orthogonal.json --csv "$work/p.csv" >/dev/null) || fail "predict failed"
 header=$(head -1 "$work/p.csv" | tr ',' '\n')
