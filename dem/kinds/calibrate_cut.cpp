@@ -179,16 +179,8 @@ class CalibrateCutKind final : public SceneKind {
     Json summary = summary_head("calibrate_cut", common.material);
     summary["cut"] = cut_params_to_json(cut_);
     write_material_output(output_, material, out, summary);
-    summary["results"] = Json{{"converged", converged},
-                              {"target_cutting_force_N", fit.target_main_force_n},
-                              {"target_main_force_N", fit.target_main_force_n},  // the old name, until 0.3.0
-                              {"target_source", fit.target_source},
-                              {"strength_factor", b.strength_factor},
-                              {main_n, b.main_force_n},
-                              {"main_force_standard_error_N", sem},
-                              {"relative_error_percent", 100 * (b.main_force_n / fit.target_main_force_n - 1)},
-                              {"evaluations", evaluations},
-                              {"calibrated_material", material}};
+    summary["results"] = results_to_json(calibrate_cut_results(), {converged, fit.target_main_force_n,
+                                                                   fit.target_source, b, sem, evaluations, material});
     name_cut_forces(summary["results"]);
     for (auto& e : summary["results"]["evaluations"]) name_cut_forces(e);
     summary["wall_time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -208,6 +200,31 @@ class CalibrateCutKind final : public SceneKind {
 };
 
 }  // namespace
+
+const ResultTable<CalibrateCutReport>& calibrate_cut_results() {
+  using R = CalibrateCutReport;
+  static const ResultTable<R> table{
+      result_value<R>("converged", "", "whether the best evaluation's main force is within the tolerance",
+                      [](const R& c) { return c.converged; }),
+      result_value<R>("target_cutting_force_N", "N",
+                      "the measured main force fitted to (calibration.target_main_force_N)",
+                      [](const R& c) { return c.target_main_force_n; }),
+      result_value<R>("target_main_force_N", "N", "target_cutting_force_N's old name (deprecated, until 0.3.0)",
+                      [](const R& c) { return c.target_main_force_n; }),
+      result_value<R>("target_source", "", "where the target comes from", [](const R& c) { return c.target_source; }),
+      result_value<R>("strength_factor", "", "the best factor of both bond strengths",
+                      [](const R& c) { return c.best.strength_factor; }),
+      result_value<R>(cut_keys::main_force_N, "N", "the best evaluation's mean main force over its replicates",
+                      [](const R& c) { return c.best.main_force_n; }),
+      result_value<R>("main_force_standard_error_N", "N", "its standard error (replicate std / sqrt(n))",
+                      [](const R& c) { return c.sem; }),
+      result_value<R>("relative_error_percent", "%", "its relative error against the target",
+                      [](const R& c) { return 100 * (c.best.main_force_n / c.target_main_force_n - 1); }),
+      result_value<R>("evaluations", "", "each evaluation's row (a list)", [](const R& c) { return c.evaluations; }),
+      result_value<R>("calibrated_material", "", "the calibrated material (as its file holds it)",
+                      [](const R& c) { return c.material; })};
+  return table;
+}
 
 std::unique_ptr<SceneKind> make_calibrate_cut_kind() {
   return std::make_unique<CalibrateCutKind>();

@@ -78,11 +78,21 @@ ResultField<R> result_if(ResultField<R> field, Present present) {
   return field;
 }
 
-/// The key suffix of a unit: "_um" for "um", "_N_per_mm" for "N/mm", "" for none.
+/// The key suffix of a unit: "_um" for "um", "_N_per_mm" for "N/mm", "_percent" for "%", "_MPa_sqrt_m" for
+/// "MPa sqrt(m)", "" for none.
 inline std::string result_unit_suffix(std::string_view unit) {
   if (unit.empty()) return "";
   std::string suffix = "_";
-  for (const char c : unit) suffix += c == '/' ? std::string("_per_") : std::string(1, c);
+  for (const char c : unit) {
+    if (c == '/')
+      suffix += "_per_";
+    else if (c == '%')
+      suffix += "percent";
+    else if (c == ' ' || c == '(')
+      suffix += '_';
+    else if (c != ')')
+      suffix += c;
+  }
   return suffix;
 }
 

@@ -112,6 +112,123 @@ class ActiveWindowResults:
     damage_depth_limit_um = "damage_depth_limit_um"
 
 
+class LabTestResults:
+    """results: tension, compression."""
+
+    youngs_modulus_GPa = "youngs_modulus_GPa"
+    poissons_ratio = "poissons_ratio"
+    tensile_strength_MPa = "tensile_strength_MPa"
+    compressive_strength_MPa = "compressive_strength_MPa"
+    strain_at_peak = "strain_at_peak"
+    n_tension_cracks = "n_tension_cracks"
+    n_shear_cracks = "n_shear_cracks"
+    stop_reason = "stop_reason"
+    speed_m_per_s = "speed_m_per_s"
+    specimen_width_mm = "specimen_width_mm"
+    gauge_length_mm = "gauge_length_mm"
+
+
+class LabTestCheckResults:
+    """results.quasi_static_check: tension, compression, with `loading.quasi_static_check`: the test again at half the speed."""
+
+    speed_m_per_s = "speed_m_per_s"
+    peak_stress_MPa = "peak_stress_MPa"
+    peak_change_percent = "peak_change_percent"
+    youngs_modulus_change_percent = "youngs_modulus_change_percent"
+    wall_time_s = "wall_time_s"
+    tolerance_percent = "tolerance_percent"
+    verdict = "verdict"
+
+
+class ToughnessResults:
+    """results: toughness: the means over the packings (`--replicates N`)."""
+
+    fracture_toughness_MPa_sqrt_m = "fracture_toughness_MPa_sqrt_m"
+    fracture_energy_J_per_m2 = "fracture_energy_J_per_m2"
+    work_of_fracture_J_per_m2 = "work_of_fracture_J_per_m2"
+    irwin_energy_J_per_m2 = "irwin_energy_J_per_m2"
+    fracture_energy_over_irwin_energy = "fracture_energy_over_irwin_energy"
+    youngs_modulus_for_irwin_GPa = "youngs_modulus_for_irwin_GPa"
+    packings = "packings"
+    depth_W_mm = "depth_W_mm"
+    span_S_mm = "span_S_mm"
+    length_mm = "length_mm"
+    thickness_B_mm = "thickness_B_mm"
+    notch_depth_a_mm = "notch_depth_a_mm"
+    notch_over_depth = "notch_over_depth"
+    geometry_factor = "geometry_factor"
+    speed_m_per_s = "speed_m_per_s"
+    peak_window_um = "peak_window_um"
+    per_packing = "per_packing"
+    fracture_toughness_sem_MPa_sqrt_m = "fracture_toughness_sem_MPa_sqrt_m"
+    fracture_energy_sem_J_per_m2 = "fracture_energy_sem_J_per_m2"
+    work_of_fracture_sem_J_per_m2 = "work_of_fracture_sem_J_per_m2"
+    irwin_energy_sem_J_per_m2 = "irwin_energy_sem_J_per_m2"
+
+
+class ToughnessPackingResults:
+    """results.per_packing: toughness: each packing's."""
+
+    fracture_toughness_MPa_sqrt_m = "fracture_toughness_MPa_sqrt_m"
+    fracture_energy_J_per_m2 = "fracture_energy_J_per_m2"
+    work_of_fracture_J_per_m2 = "work_of_fracture_J_per_m2"
+    irwin_energy_J_per_m2 = "irwin_energy_J_per_m2"
+    peak_load_N = "peak_load_N"
+    raw_peak_load_N = "raw_peak_load_N"
+    raw_peak_toughness_MPa_sqrt_m = "raw_peak_toughness_MPa_sqrt_m"
+    deflection_at_peak_um = "deflection_at_peak_um"
+    external_work_J = "external_work_J"
+    broken_through = "broken_through"
+    deflection_broken_through_um = "deflection_broken_through_um"
+    n_cracks = "n_cracks"
+    n_notch_disks_removed = "n_notch_disks_removed"
+    n_notch_joints_retired = "n_notch_joints_retired"
+    stop_reason = "stop_reason"
+    steps = "steps"
+    wall_time_s = "wall_time_s"
+
+
+class ToughnessCheckResults:
+    """results.quasi_static_check: toughness, with `toughness.quasi_static_check`: the first packing again at half the speed."""
+
+    speed_m_per_s = "speed_m_per_s"
+    peak_load_N = "peak_load_N"
+    peak_change_percent = "peak_change_percent"
+    fracture_toughness_MPa_sqrt_m = "fracture_toughness_MPa_sqrt_m"
+    fracture_energy_J_per_m2 = "fracture_energy_J_per_m2"
+    fracture_energy_change_percent = "fracture_energy_change_percent"
+    tolerance_percent = "tolerance_percent"
+    verdict = "verdict"
+    wall_time_s = "wall_time_s"
+
+
+class CalibrateResults:
+    """results: calibrate."""
+
+    converged = "converged"
+    max_error_percent = "max_error_percent"
+    evaluations = "evaluations"
+    targets = "targets"
+    achieved = "achieved"
+    calibrated_material = "calibrated_material"
+    toughness_error_percent = "toughness_error_percent"
+
+
+class CalibrateCutResults:
+    """results: calibrate_cut (each `main_force_*` also under its current name, `cutting_force_*`)."""
+
+    converged = "converged"
+    target_cutting_force_N = "target_cutting_force_N"
+    target_main_force_N = "target_main_force_N"
+    target_source = "target_source"
+    strength_factor = "strength_factor"
+    main_force_N = "main_force_N"
+    main_force_standard_error_N = "main_force_standard_error_N"
+    relative_error_percent = "relative_error_percent"
+    evaluations = "evaluations"
+    calibrated_material = "calibrated_material"
+
+
 class ForcesCsvColumns:
     """forces.csv: cut: one row per sample, as the cut goes (the columns in this order)."""
 

@@ -14,9 +14,10 @@ generated_file "$work/result_keys.py" "$src/python/kerf/result_keys.py"
 for key in subsurface_damage_depth_steady_um steady_from_travel_mm edge_zone_cutting_force_N_per_mm damage_depth_limit_um; do
   grep -q "^| \`$key\` |" "$work/results.md" || fail "kerf-dem results: no row for $key"
 done
-# A key's unit suffix is its unit's ("um" -> _um, "N/mm" -> _N_per_mm): the rows with a unit.
+# A key's unit suffix is its unit's ("um" -> _um, "N/mm" -> _N_per_mm, "%" -> _percent, "MPa sqrt(m)" -> _MPa_sqrt_m):
+# the rows with a unit.
 awk -F' [|] ' '/^[|] `[a-z]/ && $2 != "-" && $2 != "" {
-  n = split($1, keys, "`, `"); suffix = "_" $2; gsub("/", "_per_", suffix)
+  n = split($1, keys, "`, `"); suffix = "_" $2; gsub("/", "_per_", suffix); gsub("%", "percent", suffix); gsub(/[ (]/, "_", suffix); gsub(/\)/, "", suffix)
   for (i = 1; i <= n; i++) { k = keys[i]; gsub(/[|` ]/, "", k); if (k !~ suffix "$") print k " (" $2 ")" }
 }' "$work/results.md" >"$work/bad_suffix"
 [ ! -s "$work/bad_suffix" ] || fail "result keys without their unit's suffix: $(cat "$work/bad_suffix")"
