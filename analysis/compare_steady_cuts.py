@@ -23,6 +23,7 @@ import statistics
 import sys
 
 from kerf.records import RECORD_FIELDS, item_dirs, read_set, record_of
+from kerf.result_keys import CutResults as R
 from kerf.stats import known_mean, own_error, t95
 
 
@@ -67,8 +68,8 @@ def compare(base, other):
     for name, study in (("base", base), ("other", other)):
         mean = lambda k: known_mean(study[p][k] for p in pairs)  # noqa: E731
         print(f"{name}: {mean('disks'):.0f} disks integrated, steady damage depth "
-              f"{mean('subsurface_damage_depth_steady_um'):.0f} um (window floor {mean('damage_floor_um'):.0f} um), "
-              f"{mean('cracks_subsurface_steady'):.0f} steady subsurface cracks, {mean('wall_time_s'):.0f} s per cut; "
+              f"{mean(R.subsurface_damage_depth_steady_um):.0f} um (window floor {mean('damage_floor_um'):.0f} um), "
+              f"{mean(R.cracks_subsurface_steady):.0f} steady subsurface cracks, {mean('wall_time_s'):.0f} s per cut; "
               f"tool in contact in {100 * mean('contact_share'):.1f} % of the steady samples, main force "
               f"{mean('main_force_in_contact_N'):.2f} N while in contact, "
               f"99th percentile {mean('main_force_p99_N'):.2f} N "

@@ -23,9 +23,10 @@ import sys
 import numpy as np
 
 from kerf.records import condition_of, cutting_force, folders
+from kerf.result_keys import CutResults as R
 from kerf.stats import mean_of
 
-MEASURES = ("work_share_top_1pc", "travel_share_half_work", "peak_main_force_N", "main_force_N")
+MEASURES = ("work_share_top_1pc", "travel_share_half_work", "peak_main_force_N", R.main_force_N)
 
 
 def work_bins(travel_mm, main_force_n, bin_mm):
@@ -54,10 +55,10 @@ def steady_part(folder, to_travel_mm=None):
     summary = json.loads((folder / "summary.json").read_text())
     results = summary["results"]
     forces = np.loadtxt(folder / "forces.csv", delimiter=",", skiprows=1, ndmin=2)
-    end_mm = results["steady_to_travel_mm"]
+    end_mm = results[R.steady_to_travel_mm]
     if to_travel_mm is not None:
         end_mm = min(end_mm, to_travel_mm)
-    steady = (forces[:, 0] >= results["steady_from_travel_mm"]) & (forces[:, 0] <= end_mm)
+    steady = (forces[:, 0] >= results[R.steady_from_travel_mm]) & (forces[:, 0] <= end_mm)
     return summary, forces[steady, 0], forces[steady, 2]
 
 
@@ -70,7 +71,7 @@ def cut_bursts(folder, to_travel_mm=None):
     seed = summary.get("study_item", {}).get("scene", {}).get("specimen", {}).get("seed", summary["specimen"]["seed"])
     mean = cutting_force(summary["results"]) if to_travel_mm is None else float(main.mean())
     measures = {"work_share_top_1pc": top, "travel_share_half_work": half,
-                "peak_main_force_N": float(main.max()), "main_force_N": mean}
+                "peak_main_force_N": float(main.max()), R.main_force_N: mean}
     return condition_of(summary), seed, measures
 
 
@@ -140,7 +141,7 @@ def main(argv=None):
     for key, row in table(cuts).items():
         def fmt(e):
             return f"{e.value:.3g}" + (f" [{e.low:.3g}, {e.high:.3g}]" if e.resolved() else "")
-        print(f"  {' '.join(map(str, key))}: n {row['main_force_N'].n}, " +
+        print(f"  {' '.join(map(str, key))}: n {row[R.main_force_N].n}, " +
               ", ".join(f"{name} {fmt(e)}" for name, e in row.items()))
     return 0
 

@@ -30,6 +30,7 @@ import json
 import sys
 
 from kerf.records import condition_of, cutting_force, folders
+from kerf.result_keys import CutResults as R
 from kerf.stats import mean_of
 
 def element_energy_j(material, mode, length_m, joint_length_m, thickness_m):
@@ -49,8 +50,8 @@ def cut_energy(folder):
     summary = json.loads((folder / "summary.json").read_text())
     results, material, spec = summary["results"], summary["material"], summary["specimen"]
     scene = summary.get("study_item", {}).get("scene", {})
-    travel_m = (results["steady_to_travel_mm"] - results["steady_from_travel_mm"]) * 1e-3
-    lo, hi = sorted((results["steady_machined_from_x_mm"], results["steady_machined_to_x_mm"]))
+    travel_m = (results[R.steady_to_travel_mm] - results[R.steady_from_travel_mm]) * 1e-3
+    lo, hi = sorted((results[R.steady_machined_from_x_mm], results[R.steady_machined_to_x_mm]))
     thickness_m = spec["thickness_mm"] * 1e-3
     joint_m = (spec["radius_min_um"] + spec["radius_max_um"]) * 1e-6 * spec.get("radius_scale", 1.0)
     energy = {"chip": 0.0, "subsurface": 0.0}
@@ -61,12 +62,12 @@ def cut_energy(folder):
                                                          joint_m, thickness_m)
     key = condition_of(summary)
     work_j = cutting_force(results) * travel_m
-    if "energy_tool_work_steady_J" in results:  # the books: their own work (the same samples, to one)
-        work_j = results["energy_tool_work_steady_J"]
+    if R.energy_tool_work_steady_J in results:  # the books: their own work (the same samples, to one)
+        work_j = results[R.energy_tool_work_steady_J]
         joints = energy["chip"] + energy["subsurface"]
-        energy["friction"] = results["energy_dissipated_steady_J"] - joints
-        energy["carried_kinetic"] = results["energy_left_kinetic_steady_J"]
-        energy["carried_strain"] = results["energy_left_strain_steady_J"]
+        energy["friction"] = results[R.energy_dissipated_steady_J] - joints
+        energy["carried_kinetic"] = results[R.energy_left_kinetic_steady_J]
+        energy["carried_strain"] = results[R.energy_left_strain_steady_J]
     return key, scene.get("specimen", {}).get("seed", spec["seed"]), work_j, energy
 
 

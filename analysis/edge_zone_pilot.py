@@ -20,12 +20,13 @@ import csv
 import math
 import sys
 
+from kerf.result_keys import CutResults as R
 from kerf.stats import combination, mean_of, ratio
 
-QUANTITIES = [("cutting_force_N_per_mm", "cutting N/mm"), ("thrust_force_N_per_mm", "thrust N/mm"),
-              ("edge_zone_intact_share_steady", "zone met intact"),
-              ("tied_share_behind_depth_0_25_um_steady", "tied behind 0-25 um"),
-              ("subsurface_damage_depth_steady_um", "damage um")]
+QUANTITIES = [(R.cutting_force_N_per_mm, "cutting N/mm"), (R.thrust_force_N_per_mm, "thrust N/mm"),
+              (R.edge_zone_intact_share_steady, "zone met intact"),
+              (R.tied_share_behind_depth_0_25_um_steady, "tied behind 0-25 um"),
+              (R.subsurface_damage_depth_steady_um, "damage um")]
 
 
 def number(text):
@@ -65,7 +66,7 @@ def report(groups):
         cells = [interval(estimate(rows, key)) for key, _ in QUANTITIES]
         lines.append(f"| {surface} | {zone} | {len(rows)} | " + " | ".join(cells) + " |")
     lines.append("")
-    for force in ("cutting_force_N_per_mm", "thrust_force_N_per_mm"):
+    for force in (R.cutting_force_N_per_mm, R.thrust_force_N_per_mm):
         for zone in ("off", "on"):
             if ("rectangular", zone) in groups and ("regular", zone) in groups:
                 r = ratio(estimate(groups[("rectangular", zone)], force), estimate(groups[("regular", zone)], force))
@@ -81,7 +82,7 @@ def split(shallow, deep, h_mm):
     """Each (surface, zone) in both records: the force split through depths h and 2 h (independent packings)."""
     lines = []
     for key in sorted(set(shallow) & set(deep)):
-        for force in ("cutting_force_N_per_mm", "thrust_force_N_per_mm"):
+        for force in (R.cutting_force_N_per_mm, R.thrust_force_N_per_mm):
             f1, f2 = estimate(shallow[key], force), estimate(deep[key], force)
             f0 = combination([(2.0, f1), (-1.0, f2)])
             k = combination([(1.0 / h_mm, f2), (-1.0 / h_mm, f1)])

@@ -21,12 +21,13 @@ import pathlib
 import statistics
 
 from kerf.records import per_width, read_record
+from kerf.result_keys import CutResults as R
 from kerf.stats import difference, mean_of, ratio
 
-QUANTITIES = [("main_force_N", "main force (N/mm)"), ("thrust_force_N", "thrust force (N/mm)"),
-              ("cracks_subsurface_steady", "subsurface cracks"),
-              ("subsurface_damage_depth_steady_um", "deepest subsurface crack (um)"),
-              ("contact_share_steady", "share in contact")]
+QUANTITIES = [(R.main_force_N, "main force (N/mm)"), (R.thrust_force_N, "thrust force (N/mm)"),
+              (R.cracks_subsurface_steady, "subsurface cracks"),
+              (R.subsurface_damage_depth_steady_um, "deepest subsurface crack (um)"),
+              (R.contact_share_steady, "share in contact")]
 
 
 def paired(base, other, key, quantity, base_key=None):
@@ -65,7 +66,7 @@ def compare(base, other, domain, depth, base_domain=None, base_depth=None):
             r = paired_ratio(xs, ys)
             lines.append(f"  {surface:12s} seeds {seeds}: base {statistics.fmean(xs):.4g}, other {statistics.fmean(ys):.4g}, "
                          f"other / base {r.value:.3f} [{r.low:.3f}, {r.high:.3f}]")
-    for quantity in ("main_force_N", "thrust_force_N"):
+    for quantity in (R.main_force_N, R.thrust_force_N):
         _, base_g, other_g = pairs("rectangular", quantity)
         _, base_r, other_r = pairs("regular", quantity)
         if len(base_g) < 2 or len(base_r) < 2:

@@ -19,6 +19,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 from kerf.records import item_dirs  # noqa: E402
+from kerf.result_keys import ActiveWindowResults as W
+from kerf.result_keys import CutResults as R
 
 BIN_UM = 25.0
 
@@ -28,9 +30,9 @@ def profile(spec):
     for item in item_dirs(spec):
         s = json.loads((item / "summary.json").read_text())
         r = s["results"]
-        y_cut, x_from, x_to = r["cut_line_y_mm"], r["steady_machined_from_x_mm"], r["steady_machined_to_x_mm"]
+        y_cut, x_from, x_to = r[R.cut_line_y_mm], r[R.steady_machined_from_x_mm], r[R.steady_machined_to_x_mm]
         lo, hi = min(x_from, x_to), max(x_from, x_to)
-        floor = s.get("active_window", {}).get("damage_depth_limit_um")
+        floor = s.get("active_window", {}).get(W.damage_depth_limit_um)
         depths = []
         with open(item / "cracks.csv") as f:
             for row in csv.DictReader(f):

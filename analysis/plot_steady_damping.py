@@ -18,6 +18,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 from kerf.records import cutting_force, intermittency  # noqa: E402
+from kerf.result_keys import CutResults as R
 
 
 def items(study_dir):
@@ -34,9 +35,9 @@ def items(study_dir):
                 "alpha": material["local_damping"],
                 "beta": material.get("viscous_damping_ratio", 0.0),
                 "main": float(cutting_force(row)), "main_sem": float(cutting_force(row, "sem_N")),
-                "thrust": float(row["thrust_force_N"]), "thrust_sem": float(row["thrust_force_sem_N"]),
+                "thrust": float(row[R.thrust_force_N]), "thrust_sem": float(row[R.thrust_force_sem_N]),
             })
-            rows[-1].update(intermittency(study_dir / "items" / name, float(row["steady_from_travel_mm"])))
+            rows[-1].update(intermittency(study_dir / "items" / name, float(row[R.steady_from_travel_mm])))
     return rows
 
 

@@ -26,6 +26,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 from kerf.records import cutting_force, cutting_force_column, intermittency  # noqa: E402
+from kerf.result_keys import CutResults as R
+from kerf.result_keys import ForcesCsvColumns as F
 
 
 def items(study_dir):
@@ -37,11 +39,11 @@ def items(study_dir):
         results = summary["results"]
         r = {"speed": summary["cut"]["cut"]["speed_m_per_s"], "wall": summary["study_item"]["wall_time_s"],
              "density": summary["material"]["density_kg_per_m3"], "depth_m": summary["cut"]["cut"]["depth_of_cut_mm"] * 1e-3,
-             "windows": [cutting_force(w) for w in results["travel_windows"]]}
+             "windows": [cutting_force(w) for w in results[R.travel_windows]]}
         r["main"], r["main_sem"] = cutting_force(results), cutting_force(results, "sem_N")
-        r["thrust"], r["thrust_sem"] = results["thrust_force_N"], results["thrust_force_sem_N"]
-        r.update(intermittency(item_dir, results["steady_from_travel_mm"]))
-        r.update(impact_regularity(item_dir, results["steady_from_travel_mm"]))
+        r["thrust"], r["thrust_sem"] = results[R.thrust_force_N], results[R.thrust_force_sem_N]
+        r.update(intermittency(item_dir, results[R.steady_from_travel_mm]))
+        r.update(impact_regularity(item_dir, results[R.steady_from_travel_mm]))
         rows.append(r)
     return rows
 
@@ -52,8 +54,8 @@ def impact_regularity(item_dir, steady_from_mm, threshold_n=5.0, merge_mm=0.02):
     spacing (1 for impacts at random, a Poisson process) and the Fano factor of their count per mm of travel
     (variance / mean; 1 for Poisson, below 1 for impacts more regular than chance)."""
     forces = np.genfromtxt(item_dir / "forces.csv", delimiter=",", names=True)
-    steady = forces["tool_travel_mm"] >= steady_from_mm
-    travel, touching = forces["tool_travel_mm"][steady], forces[cutting_force_column(forces.dtype.names)][steady] > threshold_n
+    steady = forces[F.tool_travel_mm] >= steady_from_mm
+    travel, touching = forces[F.tool_travel_mm][steady], forces[cutting_force_column(forces.dtype.names)][steady] > threshold_n
     starts = travel[1:][touching[1:] & ~touching[:-1]]
     impacts = [starts[0]]
     for x in starts[1:]:

@@ -28,6 +28,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 from kerf.records import cutting_force  # noqa: E402
+from kerf.result_keys import ActiveWindowResults as W
+from kerf.result_keys import CutResults as R
 
 # The steady study's conditions at 0.1 mm in the default window and the groove-damage study's layers (their
 # condition numbers in data/studies/seed000_steady.json and seed000_groove_damage.json).
@@ -47,7 +49,7 @@ def steady_cracks(item, place):
     """(x_mm, y_mm) of the cracks of one place within the steady part, and the summary."""
     summary = json.loads((item / "summary.json").read_text())
     r = summary["results"]
-    x0, x1 = r["steady_machined_from_x_mm"], r["steady_machined_to_x_mm"]
+    x0, x1 = r[R.steady_machined_from_x_mm], r[R.steady_machined_to_x_mm]
     xy = [(float(row["x_mm"]), float(row["y_mm"])) for row in csv.DictReader((item / "cracks.csv").open())
           if row["place"] == place and x0 <= float(row["x_mm"]) <= x1]
     return np.array(xy).reshape(-1, 2), summary
@@ -64,7 +66,7 @@ def pitch_map(study, out):
             pitch_um = 1000 * grooves.get("pitch_mm", 0.2)
             right_mm = summary["specimen"]["width_mm"]
             phase_um = np.mod((right_mm - xy[:, 0]) * 1000, pitch_um)
-            depth_um = (summary["results"]["surface_y_mm"] - xy[:, 1]) * 1000
+            depth_um = (summary["results"][R.surface_y_mm] - xy[:, 1]) * 1000
             cut_um = 1000 * summary["cut"]["cut"]["depth_of_cut_mm"]
             ax.hist2d(phase_um, depth_um, bins=[40, 30], range=[[0, pitch_um], [-20, cut_um + 30]], cmap="magma_r")
             if grooves.get("shape", "none") != "none":
@@ -97,12 +99,12 @@ def depth_profile(study, damage, out):
         for item in found:
             xy, summary = steady_cracks(item, "subsurface")
             r = summary["results"]
-            floor_um = summary["active_window"]["damage_depth_limit_um"]
+            floor_um = summary["active_window"][W.damage_depth_limit_um]
             edges = np.arange(0.0, floor_um + 20.0, 10.0)
-            depth_um = (r["cut_line_y_mm"] - xy[:, 1]) * 1000
+            depth_um = (r[R.cut_line_y_mm] - xy[:, 1]) * 1000
             h, _ = np.histogram(depth_um, bins=edges)
-            hists.append(h / (r["steady_machined_to_x_mm"] - r["steady_machined_from_x_mm"]) / 10.0)
-            forces.append(cutting_force(r) / summary["results"]["width_mm"])
+            hists.append(h / (r[R.steady_machined_to_x_mm] - r[R.steady_machined_from_x_mm]) / 10.0)
+            forces.append(cutting_force(r) / summary["results"][R.width_mm])
         mean = np.mean(hists, axis=0)
         centres = 0.5 * (edges[1:] + edges[:-1])
         left.plot(centres, mean, style, label=f"{label}: {len(found)} packings, main {np.mean(forces):.2f} N/mm")

@@ -17,6 +17,7 @@ import math
 import pathlib
 
 from kerf.records import per_width, read_experiments, read_record, reference
+from kerf.result_keys import CutResults as R
 from kerf.stats import mean_of, ratio
 
 EXPERIMENTS = pathlib.Path(__file__).resolve().parents[1] / "data/experiments/soda_lime_orthogonal_cutting.csv"
@@ -32,10 +33,10 @@ def point_rows(strength, cuts, domain, depth):
     for surface in SURFACES:
         runs = list(cuts.get((domain, surface, round(depth, 6)), {}).values())
         for quantity, values in (("main_force_N_per_mm", [per_width(r, "cutting") for r in runs]),
-                                 ("thrust_force_N_per_mm", [per_width(r, "thrust") for r in runs]),
-                                 ("cracks_subsurface", [r.get("cracks_subsurface_steady", math.nan) for r in runs]),
+                                 (R.thrust_force_N_per_mm, [per_width(r, "thrust") for r in runs]),
+                                 ("cracks_subsurface", [r.get(R.cracks_subsurface_steady, math.nan) for r in runs]),
                                  ("deepest_subsurface_crack_um",
-                                  [r.get("subsurface_damage_depth_steady_um", math.nan) for r in runs])):
+                                  [r.get(R.subsurface_damage_depth_steady_um, math.nan) for r in runs])):
             e = mean_of(values)
             means[(quantity, surface)] = e
             rows.append([strength, quantity, surface, e.n, e.value, e.low, e.high])
@@ -96,8 +97,8 @@ def plot(rows, exp, label, where, path):
     panels = (
         (axes[0], [("main_force_N_per_mm", "regular", "regular main", "tab:blue", "o"),
                    ("main_force_N_per_mm", "rectangular", "rectangular main", "tab:orange", "s"),
-                   ("thrust_force_N_per_mm", "regular", "regular thrust", "tab:blue", "^"),
-                   ("thrust_force_N_per_mm", "rectangular", "rectangular thrust", "tab:orange", "v")],
+                   (R.thrust_force_N_per_mm, "regular", "regular thrust", "tab:blue", "^"),
+                   (R.thrust_force_N_per_mm, "rectangular", "rectangular thrust", "tab:orange", "v")],
          "force per mm of width (N/mm)", True),
         (axes[1], [("groove_effect_main", "rectangular/regular", "main", "tab:green", "o"),
                    ("groove_effect_thrust", "rectangular/regular", "thrust", "tab:purple", "^")],

@@ -38,6 +38,7 @@
 #include <string>
 #include <vector>
 
+#include "kerf/dem/procedures/cut_results.hpp"
 #include "kerf/dem/scene.hpp"
 #include "kerf/dem/study/study.hpp"
 #include "kerf/error.hpp"
@@ -53,6 +54,9 @@ using namespace kerf;
 using namespace kerf::dem;
 
 namespace {
+
+/// The cut's results as this bench reads and writes them: by their names in the cut's result table.
+namespace ck = kerf::dem::cut_keys;
 
 /// One knob: its name (--knob), what the plot calls it, the values to cut, and the overrides of one value.
 struct Knob {
@@ -219,17 +223,18 @@ int main(int argc, char** argv) {
       for (int k = 0; k < replicates; ++k) {
         const Json one = dem::read_study_item_summary(study_dir, dem::study_item(study, c, k));
         cut[{c, k}] = Run{one.at("n_particles").get<int>(), one.at("steps").get<std::int64_t>(),
-                          one.at("results").at("main_force_N").get<double>(),
-                          one.at("results").at("thrust_force_N").get<double>(), one.at("wall_time_s").get<double>()};
+                          one.at("results").at(ck::main_force_N).get<double>(),
+                          one.at("results").at(ck::thrust_force_N).get<double>(), one.at("wall_time_s").get<double>()};
       }
 
     // runs.csv, summary and plots, one knob at a time, in the order the options list the values.
     std::string runs = csv_line({"knob", "value", "replicate", "seed", "condition", "n_particles", "steps",
-                                 "main_force_N", "thrust_force_N", "cut_wall_s"});
-    std::string summary = csv_line(
-        {"knob", "value", "replicates", "n_particles", "main_force_N", "main_force_replicate_std_N", "main_force_sem_N",
-         "thrust_force_N", "thrust_force_replicate_std_N", "thrust_force_sem_N", "main_force_change_vs_reference",
-         "thrust_force_change_vs_reference", "cut_wall_s_per_cut", "cost_vs_reference"});
+                                 std::string(ck::main_force_N), std::string(ck::thrust_force_N), "cut_wall_s"});
+    std::string summary = csv_line({"knob", "value", "replicates", "n_particles", std::string(ck::main_force_N),
+                                    dem::replicate_spread_key(ck::main_force_N), std::string(ck::main_force_sem_N),
+                                    std::string(ck::thrust_force_N), dem::replicate_spread_key(ck::thrust_force_N),
+                                    std::string(ck::thrust_force_sem_N), "main_force_change_vs_reference",
+                                    "thrust_force_change_vs_reference", "cut_wall_s_per_cut", "cost_vs_reference"});
     for (const auto& k : knobs) {
       if (!selected(k)) continue;
       struct Row {

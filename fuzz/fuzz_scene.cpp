@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "kerf/analytic/kinds/evaluate.hpp"
+#include "kerf/analytic/kinds/predict.hpp"
 #include "kerf/error.hpp"
 #include "kerf/json_reader.hpp"
 
@@ -20,8 +21,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // The kind's forces (orthogonal: cutting and thrust; trepanning: axial force and torque) are written as
     // numbers: an empty cell is a force that was not finite.
     for (const auto& [name, cell] : kerf::scene_columns(*scene)) {
-      const bool force =
-          name == "cutting_force_N" || name == "thrust_force_N" || name == "axial_force_N" || name == "torque_N_m";
+      const bool force = name == kerf::prediction_keys::cutting_force_N ||
+                         name == kerf::prediction_keys::thrust_force_N || name == "axial_force_N" ||
+                         name == "torque_N_m";
       if (force && cell.empty()) std::abort();
     }
   } catch (const kerf::InputError&) {

@@ -5,6 +5,8 @@
 //                [--log-every N]   (log lines on stdout when it is not a terminal)
 //   kerf-dem resume DIR [--threads N]
 //   kerf-dem keys [SECTION]      the Markdown key table of every scene section (docs/dem-keys.md), or of one
+//   kerf-dem results [--python]  the Markdown table of the results each kind writes (docs/dem-keys.md), or the
+//                Python module of their keys (python/kerf/result_keys.py)
 //   kerf-dem study STUDY.json --out DIR [--threads N] [--threads-per-rank N] [--checkpoint-minutes M] [--log-every N]
 //                a study (kerf/dem/study/study.hpp); under `mpirun -np N` across ranks (built with MPI)
 //
@@ -126,6 +128,11 @@ int main(int argc, char** argv) {
   keys->add_option(
       "section", section,
       "one section (" + fmt::format("{}", fmt::join(kerf::dem::scene_sections(), ", ")) + "; default: all)");
+  bool results_python = false;
+  auto* results = app.add_subcommand(
+      "results", "print the Markdown table of the results each kind writes into summary.json (docs/dem-keys.md)");
+  results->add_flag("--python", results_python,
+                    "print them as the Python module kerf.result_keys instead (python/kerf/result_keys.py)");
   std::string study_path;
   kerf::dem::StudyOptions study_options;
   auto* study = app.add_subcommand(
@@ -166,6 +173,10 @@ int main(int argc, char** argv) {
   try {
     if (threads > 0) omp_set_num_threads(threads);
     if (keys->parsed()) return keys_command(section);
+    if (results->parsed()) {
+      std::cout << (results_python ? kerf::dem::result_keys_python() : kerf::dem::scene_results_markdown());
+      return 0;
+    }
     if (resume->parsed()) {
       note_how_to_continue(resume_dir, options);
       return with_log(log_every, [&](const kerf::dem::ProgressCallback& on_progress) {

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "kerf/analytic/kinds/evaluate.hpp"
+#include "kerf/analytic/kinds/predict.hpp"
 #include "kerf/analytic/kinds/scene.hpp"
 #include "kerf/analytic/registry.hpp"
 #include "kerf/analytic/sweep/scene_compare.hpp"
@@ -212,6 +213,12 @@ int main(int argc, char** argv) {
   keys->add_option("section", section,
                    "one section (" + fmt::format("{}", fmt::join(kerf::analytic_scene_sections(), ", ")) + ")");
 
+  bool results_python = false;
+  auto* results =
+      app.add_subcommand("results", "print the Markdown table of an orthogonal prediction's columns (docs/scenes.md)");
+  results->add_flag("--python", results_python,
+                    "print them as the Python module kerf.prediction_keys instead (python/kerf/prediction_keys.py)");
+
   const auto error = [](const std::string& what, int status) {
     fmt::print(stderr, "kerf-forces: error: {}\n", kerf::printable(what));
     return status;
@@ -242,6 +249,10 @@ int main(int argc, char** argv) {
     if (*materials) return list_materials();
     if (*keys) {
       fmt::print("{}", kerf::analytic_scene_keys_markdown(section));
+      return 0;
+    }
+    if (*results) {
+      fmt::print("{}", results_python ? kerf::prediction_keys_python() : kerf::prediction_columns_markdown());
       return 0;
     }
   } catch (const std::exception&) {

@@ -15,6 +15,7 @@
 #include <optional>
 
 #include "kerf/comparison_config.hpp"
+#include "kerf/dem/procedures/cut_results.hpp"
 #include "kerf/dem/scene.hpp"
 #include "kerf/dem/study/study.hpp"
 #include "kerf/error.hpp"
@@ -31,6 +32,9 @@ namespace kerf {
 namespace fs = std::filesystem;
 
 namespace {
+
+/// The cut's results as this validation reads and writes them: by their names in the cut's result table.
+namespace k = dem::cut_keys;
 
 struct Condition {
   std::string name, surface, groove_shape;
@@ -121,16 +125,16 @@ Estimate ratio_of(const Estimate& a, const Estimate& b) {
 /// The per-replicate columns of kerf_dem_replicates.csv after the condition's: each a result of the item's
 /// summary.json, but wall_time_s (the cut's own, genesis excluded; a reused item keeps that of the run that
 /// made it).
-const std::vector<std::string> kReplicateColumns{"width_mm",
-                                                 "main_force_N",
-                                                 "thrust_force_N",
-                                                 "cracks_tensile",
-                                                 "cracks_shear",
-                                                 "cracks_chip",
-                                                 "cracks_subsurface",
-                                                 "subsurface_damage_depth_um",
-                                                 "cracks_subsurface_steady",
-                                                 "subsurface_damage_depth_steady_um",
+const std::vector<std::string> kReplicateColumns{std::string(k::width_mm),
+                                                 std::string(k::main_force_N),
+                                                 std::string(k::thrust_force_N),
+                                                 std::string(k::cracks_tensile),
+                                                 std::string(k::cracks_shear),
+                                                 std::string(k::cracks_chip),
+                                                 std::string(k::cracks_subsurface),
+                                                 std::string(k::subsurface_damage_depth_um),
+                                                 std::string(k::cracks_subsurface_steady),
+                                                 std::string(k::subsurface_damage_depth_steady_um),
                                                  "wall_time_s"};
 
 /// Replicate results of one condition, from its study items' summaries.
@@ -162,22 +166,23 @@ ConditionResult collect(const Condition& c, const std::vector<Json>& items) {
     Json row{{"replicate", k + 1}, {"seed", item.at("seed")}};
     for (const auto& column : kReplicateColumns)
       row[column] = column == "wall_time_s" ? items[k].at("wall_time_s") : res.at(column);
-    main.push_back(row.at("main_force_N").get<double>());
-    thrust.push_back(row.at("thrust_force_N").get<double>());
-    r.cracks_tensile += row.at("cracks_tensile").get<double>() / n;
-    r.cracks_shear += row.at("cracks_shear").get<double>() / n;
-    r.cracks_chip += row.at("cracks_chip").get<double>() / n;
-    r.cracks_subsurface += row.at("cracks_subsurface").get<double>() / n;
-    r.subsurface_depth_um += row.at("subsurface_damage_depth_um").get<double>() / n;
-    r.cracks_subsurface_steady += row.at("cracks_subsurface_steady").get<double>() / n;
-    r.subsurface_steady_depth_um += row.at("subsurface_damage_depth_steady_um").get<double>() / n;
+    const auto value = [&row](std::string_view result) { return row.at(result).get<double>(); };
+    main.push_back(value(k::main_force_N));
+    thrust.push_back(value(k::thrust_force_N));
+    r.cracks_tensile += value(k::cracks_tensile) / n;
+    r.cracks_shear += value(k::cracks_shear) / n;
+    r.cracks_chip += value(k::cracks_chip) / n;
+    r.cracks_subsurface += value(k::cracks_subsurface) / n;
+    r.subsurface_depth_um += value(k::subsurface_damage_depth_um) / n;
+    r.cracks_subsurface_steady += value(k::cracks_subsurface_steady) / n;
+    r.subsurface_steady_depth_um += value(k::subsurface_damage_depth_steady_um) / n;
     r.wall_time_s += row.at("wall_time_s").get<double>();
     r.replicates.push_back(row);
   }
   const SampleStatistics m = sample_statistics(main), t = sample_statistics(thrust);
   r.main_n = m.mean, r.main_std_n = m.standard_deviation;
   r.thrust_n = t.mean, r.thrust_std_n = t.standard_deviation;
-  r.width_mm = r.replicates.at(0).at("width_mm").get<double>();
+  r.width_mm = r.replicates.at(0).at(k::width_mm).get<double>();
   return r;
 }
 
@@ -229,13 +234,13 @@ Json comparison_document(const fs::path& experiments, const fs::path& kerf_csv, 
                                        Json{{"key", "thrust_force"}, {"label", "Thrust force F#dt#u"}, {"unit", "N"}}});
   const Json columns{{"surface", "surface"},
                      {"depth_of_cut", "depth_of_cut_mm"},
-                     {"main_force", "main_force_N"},
-                     {"thrust_force", "thrust_force_N"}};
+                     {"main_force", std::string(k::main_force_N)},
+                     {"thrust_force", std::string(k::thrust_force_N)}};
   const auto set = [&](const fs::path& file, const std::string& name, const std::string& source) {
     return Json{{"file", file.string()},
                 {"name", name},
                 {"filter", {{"source", source}}},
-                {"width", {{"column_mm", "width_mm"}}},
+                {"width", {{"column_mm", std::string(k::width_mm)}}},
                 {"columns", columns}};
   };
   Json doc{{"title", title}, {"conditions", conditions}, {"quantities", quantities}};
@@ -657,11 +662,12 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
   std::vector<std::string> header{"source", "surface", "groove_shape", "depth_of_cut_mm", "replicate", "seed"};
   header.insert(header.end(), kReplicateColumns.begin(), kReplicateColumns.end());
   std::string rows = csv_line(header);
-  std::string means =
-      csv_line({"source", "surface", "groove_shape", "depth_of_cut_mm", "width_mm", "main_force_N",
-                "main_force_replicate_std_N", "thrust_force_N", "thrust_force_replicate_std_N", "cracks_tensile",
-                "cracks_shear", "cracks_chip", "cracks_subsurface", "subsurface_damage_depth_um",
-                "cracks_subsurface_steady", "subsurface_damage_depth_steady_um"});
+  std::string means = csv_line(
+      {"source", "surface", "groove_shape", "depth_of_cut_mm", std::string(k::width_mm), std::string(k::main_force_N),
+       dem::replicate_spread_key(k::main_force_N), std::string(k::thrust_force_N),
+       dem::replicate_spread_key(k::thrust_force_N), std::string(k::cracks_tensile), std::string(k::cracks_shear),
+       std::string(k::cracks_chip), std::string(k::cracks_subsurface), std::string(k::subsurface_damage_depth_um),
+       std::string(k::cracks_subsurface_steady), std::string(k::subsurface_damage_depth_steady_um)});
   for (const auto& c : spec.conditions) {
     const ConditionResult& r = results.at(c.name);
     const std::string source = c.groove_shape == "trapezoidal" ? "kerf_dem_trapezoidal" : "kerf_dem";

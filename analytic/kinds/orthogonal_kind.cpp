@@ -16,54 +16,58 @@ namespace kerf {
 namespace {
 
 void print_prediction(std::FILE* text, const std::string& scene_path, const AnalyticScene& scene, const Prediction& p) {
-  using units::m_to_mm;
-  using units::m_to_um;
-  using units::pa_to_mpa;
-  using units::rad_to_deg;
-  const double width_mm = m_to_mm(p.width_m);
+  namespace k = prediction_keys;
+  // The numbers as the CSV row holds them (prediction_results: each converted once, there).
+  const PredictionReport report{scene, p};
+  const auto value = [&report](std::string_view key) {
+    return result_of(prediction_results(), report, key).get<double>();
+  };
   fmt::print(text, "scene             {}\n", scene_path);
   fmt::print(text, "material          {} ({})\n", scene.material->name, scene.material->title);
   fmt::print(text, "force model       {}{}\n", p.force_model,
              scene.force_choice_reason.empty() ? "" : " (auto: " + scene.force_choice_reason + ")");
   fmt::print(text, "cut               t0 = {:.6g} um, width = {:.6g} mm, speed = {:.6g} m/min\n",
-             m_to_um(p.uncut_chip_thickness_m), width_mm, units::m_per_s_to_m_per_min(scene.speed_m_per_s));
-  fmt::print(text, "tool              rake = {:.6g} deg, edge radius = {:.6g} um\n", rad_to_deg(scene.rake_rad),
-             m_to_um(scene.edge_radius_m));
-  fmt::print(text, "cutting force     {:.6g} N  ({:.6g} N/mm)\n", p.cutting_force_N, p.cutting_force_N / width_mm);
-  fmt::print(text, "thrust force      {:.6g} N  ({:.6g} N/mm)\n", p.thrust_force_N, p.thrust_force_N / width_mm);
-  fmt::print(text, "shear angle       {:.4g} deg\n", rad_to_deg(p.shear_angle_rad));
+             value(k::uncut_chip_thickness_um), value(k::width_mm), value(k::speed_m_per_min));
+  fmt::print(text, "tool              rake = {:.6g} deg, edge radius = {:.6g} um\n", value(k::rake_deg),
+             value(k::edge_radius_um));
+  fmt::print(text, "cutting force     {:.6g} N  ({:.6g} N/mm)\n", value(k::cutting_force_N),
+             value(k::cutting_force_N_per_mm));
+  fmt::print(text, "thrust force      {:.6g} N  ({:.6g} N/mm)\n", value(k::thrust_force_N),
+             value(k::thrust_force_N_per_mm));
+  fmt::print(text, "shear angle       {:.4g} deg\n", value(k::shear_angle_deg));
   if (p.has_friction) {
     const bool own_friction = scene.force_model().solves_oxley;
     const bool from_scene = scene.friction_angle_rad && !own_friction &&
                             std::fabs(*scene.friction_angle_rad - p.friction_angle_rad) <= kSameAngle_rad;
-    fmt::print(text, "friction angle    {:.4g} deg (from {})\n", rad_to_deg(p.friction_angle_rad),
+    fmt::print(text, "friction angle    {:.4g} deg (from {})\n", value(k::friction_angle_deg),
                own_friction ? "the extended-Oxley solution"
                : from_scene ? scene.friction_origin
                             : fmt::format("the {} friction closure at the nominal rake",
                                           friction_closure_name(scene.chip.liu_li.closure)));
   }
-  fmt::print(text, "chip ratio        {:.4g} (chip thickness {:.6g} um)\n", p.chip_ratio, m_to_um(p.chip_thickness_m));
+  fmt::print(text, "chip ratio        {:.4g} (chip thickness {:.6g} um)\n", value(k::chip_ratio),
+             value(k::chip_thickness_um));
   if (scene.flow_stress.hardness) {
     fmt::print(text,
                "flow stress       {:.6g} MPa (hardness {:.6g} MPa / constraint factor {:.4g}, {}); k_s = {:.6g} MPa\n",
-               pa_to_mpa(p.flow.total_Pa), pa_to_mpa(scene.flow_stress.hardness->hardness_Pa),
+               value(k::flow_stress_MPa), units::pa_to_mpa(scene.flow_stress.hardness->hardness_Pa),
                scene.flow_stress.hardness->hardness_Pa / p.flow.total_Pa,
-               constraint_model_name(scene.flow_stress.constraint), pa_to_mpa(p.flow.shear_Pa));
+               constraint_model_name(scene.flow_stress.constraint), value(k::shear_flow_stress_MPa));
   } else {
     fmt::print(text,
                "flow stress       {:.6g} MPa (JC {:.6g} + Hall-Petch {:.6g} + dislocation {:.6g}); k_s = {:.6g} MPa\n",
-               pa_to_mpa(p.flow.total_Pa), pa_to_mpa(p.flow.johnson_cook_Pa), pa_to_mpa(p.flow.hall_petch_Pa),
-               pa_to_mpa(p.flow.dislocation_Pa), pa_to_mpa(p.flow.shear_Pa));
+               value(k::flow_stress_MPa), value(k::johnson_cook_stress_MPa), value(k::hall_petch_stress_MPa),
+               value(k::dislocation_stress_MPa), value(k::shear_flow_stress_MPa));
   }
-  fmt::print(text, "at                strain {:.4g}, strain rate {:.4g} 1/s, temperature {:.5g} K\n", p.state.strain,
-             p.state.strain_rate_per_s, p.state.temperature_K);
+  fmt::print(text, "at                strain {:.4g}, strain rate {:.4g} 1/s, temperature {:.5g} K\n", value(k::strain),
+             value(k::strain_rate_per_s), value(k::temperature_K));
   if (scene.critical_depth_m) {
     fmt::print(text, "regime            {} (critical depth d_c = {:.3g} nm)\n", p.regime,
-               units::m_to_nm(*scene.critical_depth_m));
+               result_of(prediction_verdict_results(), report, k::critical_depth_nm).get<double>());
   }
   for (const auto& [column, length_m] : p.contact_lengths_m) {
     const std::string name = column.substr(0, column.size() - 3);
-    if (length_m) fmt::print(text, "{:<17} {:.6g} mm\n", name, m_to_mm(*length_m));
+    if (length_m) fmt::print(text, "{:<17} {:.6g} mm\n", name, units::m_to_mm(*length_m));
     if (!length_m) fmt::print(text, "{:<17} not applicable (see the warnings)\n", name);
   }
   print_edge_details(text, scene, p);                                        // chip_term.hpp

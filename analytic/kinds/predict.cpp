@@ -69,11 +69,12 @@ Prediction predict_forces(const AnalyticScene& scene) {
 /// A force or state that overflowed (a width of 1e308 mm, a chip of 1e308 um) is refused by name, with the
 /// inputs it came from, instead of being written as inf or nan.
 void require_finite(const AnalyticScene& scene, const Prediction& p) {
-  const std::pair<const char*, double> results[] = {
-      {"cutting_force_N", p.cutting_force_N},  {"thrust_force_N", p.thrust_force_N},
-      {"shear_angle_deg", p.shear_angle_rad},  {"chip_thickness_um", p.chip_thickness_m},
-      {"flow_stress_MPa", p.flow.total_Pa},    {"strain_rate_per_s", p.state.strain_rate_per_s},
-      {"temperature_K", p.state.temperature_K}};
+  namespace k = prediction_keys;
+  const std::pair<std::string_view, double> results[] = {
+      {k::cutting_force_N, p.cutting_force_N},  {k::thrust_force_N, p.thrust_force_N},
+      {k::shear_angle_deg, p.shear_angle_rad},  {k::chip_thickness_um, p.chip_thickness_m},
+      {k::flow_stress_MPa, p.flow.total_Pa},    {k::strain_rate_per_s, p.state.strain_rate_per_s},
+      {k::temperature_K, p.state.temperature_K}};
   for (const auto& [name, value] : results) {
     if (std::isfinite(value)) continue;
     throw ModelError("predict", fmt::format("{} is {} for cut.uncut_chip_thickness_um = {}, cut.width_mm = {}, "
@@ -83,8 +84,9 @@ void require_finite(const AnalyticScene& scene, const Prediction& p) {
                                             format_value(units::m_per_s_to_m_per_min(scene.speed_m_per_s))));
   }
   if (!std::isfinite(p.cutting_force_N / units::m_to_mm(p.width_m)))
-    throw ModelError("predict", fmt::format("cutting_force_N_per_mm is not finite for cut.width_mm = {}",
-                                            format_value(units::m_to_mm(scene.width_m))));
+    throw ModelError("predict",
+                     fmt::format("{} is not finite for cut.width_mm = {}", prediction_keys::cutting_force_N_per_mm,
+                                 format_value(units::m_to_mm(scene.width_m))));
 }
 }  // namespace
 
@@ -126,45 +128,160 @@ Prediction predict(const AnalyticScene& scene) {
   return p;
 }
 
-// The CSV's column list, in column order, one cell a line: the shared columns, then each unit's (the chip term's
-// edge, the Oxley solve's, the force model's own), then the turning cut's and the verdicts.
-void write_prediction_cells(const AnalyticScene& scene, const Prediction& p, CellWriter& w) {
-  const double width_mm = units::m_to_mm(p.width_m);
+namespace {
 
-  // The inputs, converted back from SI (CellWriter::input rounds them to 15 significant digits).
-  w.text("force_model", p.force_model);
-  w.text("material", scene.material->name);
-  w.input("rake_deg", units::rad_to_deg(scene.rake_rad));
-  w.input("edge_radius_um", units::m_to_um(scene.edge_radius_m));
-  w.input("clearance_deg", units::rad_to_deg(scene.clearance_rad));
-  w.input("speed_m_per_min", units::m_per_s_to_m_per_min(scene.speed_m_per_s));
-  w.input("workpiece_temperature_K", scene.workpiece_temperature_K);
-  w.optional_number("scene_friction_angle_deg", scene.friction_angle_rad.has_value(),
-                    units::rad_to_deg(scene.friction_angle_rad.value_or(0.0)));
-  w.input("uncut_chip_thickness_um", units::m_to_um(p.uncut_chip_thickness_m));
-  w.input("width_mm", width_mm);
-  w.number("cutting_force_N", p.cutting_force_N);
-  w.number("thrust_force_N", p.thrust_force_N);
-  // The ploughing part of the totals (zero where the model adds none; empty for Oxley, which ignores the edge).
-  const bool chip_model = !scene.force_model().solves_oxley;
-  const ForcePerWidth plough = p.ploughing ? p.ploughing->force : ForcePerWidth{};
-  w.optional_number("ploughing_cutting_force_N", chip_model, plough.cutting_N_per_m * p.width_m);
-  w.optional_number("ploughing_thrust_force_N", chip_model, plough.thrust_N_per_m * p.width_m);
-  w.number("cutting_force_N_per_mm", p.cutting_force_N / width_mm);
-  w.number("thrust_force_N_per_mm", p.thrust_force_N / width_mm);
-  w.number("shear_angle_deg", units::rad_to_deg(p.shear_angle_rad));
-  w.optional_number("friction_angle_deg", p.has_friction, units::rad_to_deg(p.friction_angle_rad));
-  w.number("chip_ratio", p.chip_ratio);
-  w.number("chip_thickness_um", units::m_to_um(p.chip_thickness_m));
-  w.number("flow_stress_MPa", units::pa_to_mpa(p.flow.total_Pa));
-  w.number("shear_flow_stress_MPa", units::pa_to_mpa(p.flow.shear_Pa));
-  if (scene.flow_stress.johnson_cook) w.number("johnson_cook_stress_MPa", units::pa_to_mpa(p.flow.johnson_cook_Pa));
-  if (scene.flow_stress.hall_petch) w.number("hall_petch_stress_MPa", units::pa_to_mpa(p.flow.hall_petch_Pa));
-  if (scene.flow_stress.dislocation) w.number("dislocation_stress_MPa", units::pa_to_mpa(p.flow.dislocation_Pa));
-  if (scene.flow_stress.hardness) w.number("hardness_flow_stress_MPa", units::pa_to_mpa(p.flow.hardness_Pa));
-  w.number("strain", p.state.strain);
-  w.number("strain_rate_per_s", p.state.strain_rate_per_s);
-  w.number("temperature_K", p.state.temperature_K);
+namespace k = prediction_keys;
+using R = PredictionReport;
+
+/// An input echoed back (a CSV cell rounds it to 15 significant digits), already in its key's unit.
+template <class Get>
+ResultField<R> input_value(std::string_view key, std::string_view unit, std::string_view doc, Get get) {
+  ResultField<R> f = result_value<R>(key, unit, doc, get);
+  f.input_echo = true;
+  return f;
+}
+
+/// A number that is null (an empty cell) unless `has` holds.
+template <class Has, class Get>
+ResultField<R> optional_value(std::string_view key, std::string_view unit, std::string_view doc, Has has, Get get) {
+  return result_value<R>(key, unit, doc, [has, get](const R& r) { return has(r) ? Json(get(r)) : Json(); });
+}
+
+/// The row's cells of `table`: a null value is an empty cell, a text is escaped, an input rounded.
+void write_result_cells(const ResultTable<R>& table, const R& r, CellWriter& w) {
+  for (const auto& f : table) {
+    if (f.present && !f.present(r)) continue;
+    const Json v = f.get(r);
+    if (v.is_string())
+      w.text(f.key, v.get_ref<const std::string&>());
+    else if (v.is_null())
+      w.cell(f.key, {});
+    else if (f.input_echo)
+      w.input(f.key, v.get<double>());
+    else
+      w.number(f.key, v.get<double>());
+  }
+}
+
+/// The ploughing part of the totals (zero where the model adds none; null for Oxley, which ignores the edge).
+bool chip_model(const R& r) {
+  return !r.scene.force_model().solves_oxley;
+}
+ForcePerWidth plough(const R& r) {
+  return r.p.ploughing ? r.p.ploughing->force : ForcePerWidth{};
+}
+
+}  // namespace
+
+const ResultTable<PredictionReport>& prediction_results() {
+  static const ResultTable<R> table{
+      // The inputs, converted back from SI.
+      result_value<R>(k::force_model, "", "the force model that ran (models.force; auto's choice)",
+                      [](const R& r) { return std::string(r.p.force_model); }),
+      result_value<R>(k::material, "", "the material's name", [](const R& r) { return r.scene.material->name; }),
+      result_input<R>(k::rake_deg, units::kDeg, "tool rake angle", [](const R& r) { return r.scene.rake_rad; }),
+      result_input<R>(k::edge_radius_um, units::kUm, "tool edge radius",
+                      [](const R& r) { return r.scene.edge_radius_m; }),
+      result_input<R>(k::clearance_deg, units::kDeg, "tool clearance angle",
+                      [](const R& r) { return r.scene.clearance_rad; }),
+      input_value(k::speed_m_per_min, "m/min", "cutting speed",
+                  [](const R& r) { return units::m_per_s_to_m_per_min(r.scene.speed_m_per_s); }),
+      input_value(k::workpiece_temperature_K, "K", "workpiece temperature",
+                  [](const R& r) { return r.scene.workpiece_temperature_K; }),
+      optional_value(
+          k::scene_friction_angle_deg, "deg", "the scene's friction angle (empty: none given)",
+          [](const R& r) { return r.scene.friction_angle_rad.has_value(); },
+          [](const R& r) { return units::rad_to_deg(r.scene.friction_angle_rad.value_or(0.0)); }),
+      result_input<R>(k::uncut_chip_thickness_um, units::kUm, "uncut chip thickness t0",
+                      [](const R& r) { return r.p.uncut_chip_thickness_m; }),
+      result_input<R>(k::width_mm, units::kMm, "width of cut", [](const R& r) { return r.p.width_m; }),
+      // The forces over the width, their ploughing part, per mm of width.
+      result_value<R>(k::cutting_force_N, "N", "cutting force over the width",
+                      [](const R& r) { return r.p.cutting_force_N; }),
+      result_value<R>(k::thrust_force_N, "N", "thrust force over the width",
+                      [](const R& r) { return r.p.thrust_force_N; }),
+      optional_value(k::ploughing_cutting_force_N, "N", "the ploughing part of the cutting force (empty for Oxley)",
+                     chip_model, [](const R& r) { return plough(r).cutting_N_per_m * r.p.width_m; }),
+      optional_value(k::ploughing_thrust_force_N, "N", "the ploughing part of the thrust force (empty for Oxley)",
+                     chip_model, [](const R& r) { return plough(r).thrust_N_per_m * r.p.width_m; }),
+      result_value<R>(k::cutting_force_N_per_mm, "N/mm", "cutting force per mm of width",
+                      [](const R& r) { return r.p.cutting_force_N / units::m_to_mm(r.p.width_m); }),
+      result_value<R>(k::thrust_force_N_per_mm, "N/mm", "thrust force per mm of width",
+                      [](const R& r) { return r.p.thrust_force_N / units::m_to_mm(r.p.width_m); }),
+      // The chip.
+      result_number<R>(k::shear_angle_deg, units::kDeg, "shear angle", [](const R& r) { return r.p.shear_angle_rad; }),
+      optional_value(
+          k::friction_angle_deg, "deg", "the prediction's friction angle (empty: none)",
+          [](const R& r) { return r.p.has_friction; },
+          [](const R& r) { return units::rad_to_deg(r.p.friction_angle_rad); }),
+      result_value<R>(k::chip_ratio, "", "chip ratio t0 / t_c", [](const R& r) { return r.p.chip_ratio; }),
+      result_number<R>(k::chip_thickness_um, units::kUm, "chip thickness t_c",
+                       [](const R& r) { return r.p.chip_thickness_m; }),
+      // The flow stress, its parts (those of the scene's flow-stress model) and the state it was evaluated at.
+      result_number<R>(k::flow_stress_MPa, units::kMPa, "flow stress", [](const R& r) { return r.p.flow.total_Pa; }),
+      result_number<R>(k::shear_flow_stress_MPa, units::kMPa, "shear flow stress k_s",
+                       [](const R& r) { return r.p.flow.shear_Pa; }),
+      result_if(result_number<R>(k::johnson_cook_stress_MPa, units::kMPa, "its Johnson-Cook part",
+                                 [](const R& r) { return r.p.flow.johnson_cook_Pa; }),
+                [](const R& r) { return static_cast<bool>(r.scene.flow_stress.johnson_cook); }),
+      result_if(result_number<R>(k::hall_petch_stress_MPa, units::kMPa, "its Hall-Petch part",
+                                 [](const R& r) { return r.p.flow.hall_petch_Pa; }),
+                [](const R& r) { return static_cast<bool>(r.scene.flow_stress.hall_petch); }),
+      result_if(result_number<R>(k::dislocation_stress_MPa, units::kMPa, "its dislocation part",
+                                 [](const R& r) { return r.p.flow.dislocation_Pa; }),
+                [](const R& r) { return static_cast<bool>(r.scene.flow_stress.dislocation); }),
+      result_if(result_number<R>(k::hardness_flow_stress_MPa, units::kMPa, "the flow stress from the hardness",
+                                 [](const R& r) { return r.p.flow.hardness_Pa; }),
+                [](const R& r) { return static_cast<bool>(r.scene.flow_stress.hardness); }),
+      result_value<R>(k::strain, "", "effective strain", [](const R& r) { return r.p.state.strain; }),
+      result_value<R>(k::strain_rate_per_s, "1/s", "strain rate",
+                      [](const R& r) { return r.p.state.strain_rate_per_s; }),
+      result_value<R>(k::temperature_K, "K", "temperature", [](const R& r) { return r.p.state.temperature_K; })};
+  return table;
+}
+
+const ResultTable<PredictionReport>& prediction_verdict_results() {
+  const auto turning = [](const R& r) { return r.scene.turning.has_value(); };
+  static const ResultTable<R> table{
+      // A round-nose turning cut's chip.
+      result_if(result_number<R>(k::feed_um_per_rev, units::kUm, "turning: feed per revolution",
+                                 [](const R& r) { return r.scene.turning->geometry.feed_m_per_rev; }),
+                turning),
+      result_if(result_number<R>(k::depth_of_cut_um, units::kUm, "turning: depth of cut",
+                                 [](const R& r) { return r.scene.turning->geometry.depth_of_cut_m; }),
+                turning),
+      result_if(result_number<R>(k::maximum_chip_thickness_um, units::kUm, "turning: the chip's largest thickness",
+                                 [](const R& r) { return r.scene.turning->chip.maximum_thickness_m; }),
+                turning),
+      result_if(result_number<R>(k::equivalent_chip_thickness_um, units::kUm, "turning: the equivalent chip thickness",
+                                 [](const R& r) { return r.scene.turning->chip.equivalent_thickness_m; }),
+                turning),
+      result_if(result_number<R>(k::engaged_edge_length_mm, units::kMm, "turning: the engaged edge length",
+                                 [](const R& r) { return r.scene.turning->chip.engaged_edge_length_m; }),
+                turning),
+      // The verdicts.
+      optional_value(
+          k::critical_depth_nm, "nm", "the ductile-brittle critical depth d_c (empty without one)",
+          [](const R& r) { return r.scene.critical_depth_m.has_value(); },
+          [](const R& r) { return units::m_to_nm(r.scene.critical_depth_m.value_or(0.0)); }),
+      result_value<R>(k::regime, "", "ductile, transition or brittle against d_c (empty without one)",
+                      [](const R& r) { return r.p.regime; }),
+      result_value<R>(k::within_model_range, "", "yes, or no where the force model does not hold",
+                      [](const R& r) { return std::string(r.p.within_model_range ? "yes" : "no"); }),
+      result_value<R>(k::guards, "", "the guards that fired", [](const R& r) { return r.p.guards.names(); }),
+      result_value<R>(k::warnings, "", "the warnings, joined by '; '", [](const R& r) {
+        std::string warnings;
+        for (const auto& w_text : r.p.warnings) warnings += (warnings.empty() ? "" : "; ") + w_text;
+        return warnings;
+      })};
+  return table;
+}
+
+// The CSV's column list, in column order: the shared columns (prediction_results), then each unit's (the chip
+// term's edge, the Oxley solve's, the force model's own), then the turning cut's and the verdicts.
+void write_prediction_cells(const AnalyticScene& scene, const Prediction& p, CellWriter& w) {
+  const R report{scene, p};
+  write_result_cells(prediction_results(), report, w);
   for (std::size_t i = 0; i < scene.contact_lengths.size(); ++i) {
     const bool has = i < p.contact_lengths_m.size() && p.contact_lengths_m[i].second.has_value();
     w.optional_number(scene.contact_lengths[i].column, has, has ? units::m_to_mm(*p.contact_lengths_m[i].second) : 0.0);
@@ -173,21 +290,29 @@ void write_prediction_cells(const AnalyticScene& scene, const Prediction& p, Cel
   if (scene.force_model().edge_columns || scene.force_auto) write_edge_cells(scene, p, w);  // chip_term.hpp
   if (scene.oxley.material || scene.force_auto) write_oxley_cells(p, w);                    // oxley_model.hpp
   if (scene.force_model().write_cells) scene.force_model().write_cells(scene, p, w);        // the model's own
-  if (scene.turning) {
-    w.number("feed_um_per_rev", units::m_to_um(scene.turning->geometry.feed_m_per_rev));
-    w.number("depth_of_cut_um", units::m_to_um(scene.turning->geometry.depth_of_cut_m));
-    w.number("maximum_chip_thickness_um", units::m_to_um(scene.turning->chip.maximum_thickness_m));
-    w.number("equivalent_chip_thickness_um", units::m_to_um(scene.turning->chip.equivalent_thickness_m));
-    w.number("engaged_edge_length_mm", units::m_to_mm(scene.turning->chip.engaged_edge_length_m));
-  }
-  w.optional_number("critical_depth_nm", scene.critical_depth_m.has_value(),
-                    units::m_to_nm(scene.critical_depth_m.value_or(0.0)));
-  w.text("regime", p.regime);
-  w.text("within_model_range", p.within_model_range ? "yes" : "no");
-  w.text("guards", p.guards.names());
-  std::string warnings;
-  for (const auto& w_text : p.warnings) warnings += (warnings.empty() ? "" : "; ") + w_text;
-  w.text("warnings", warnings);
+  write_result_cells(prediction_verdict_results(), report, w);
+}
+
+std::string prediction_columns_markdown() {
+  return results_markdown(prediction_results()) +
+         "| ... | | the models' own columns: the scene's contact lengths (`cut.contact_lengths`), the chip term's "
+         "edge, "
+         "the Oxley solve's, the force model's |\n" +
+         results_markdown(prediction_verdict_results(), false);
+}
+
+std::string prediction_keys_python() {
+  std::vector<std::string> keys = result_keys(prediction_results());
+  for (auto& key : result_keys(prediction_verdict_results())) keys.push_back(std::move(key));
+  return "\"\"\"The columns of kerf-forces' orthogonal prediction (its CSV row, kerf.predict's dict), generated from "
+         "their result\ntable (kerf-forces results --python > python/kerf/prediction_keys.py; "
+         "tests/cli/forces_results_cli.sh checks it\nis current). The models' own columns (edge, Oxley, the force "
+         "model's) are not listed.\"\"\"\n" +
+         results_python_class("PredictionColumns",
+                              "The shared columns of an orthogonal prediction, in the row's order (the models' own "
+                              "between the flow state and the turning cut's).",
+                              keys) +
+         results_python_keys_function();
 }
 
 Columns prediction_columns(const AnalyticScene& scene, const Prediction& p) {

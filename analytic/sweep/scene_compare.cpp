@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "kerf/analytic/kinds/evaluate.hpp"
+#include "kerf/analytic/kinds/predict.hpp"
 #include "kerf/analytic/trepanning/trepanning.hpp"
 #include "kerf/analytic/trepanning/trepanning_scene.hpp"
 #include "kerf/comparison_config.hpp"
@@ -23,8 +24,10 @@ namespace {
 
 // Prediction columns that can be compared with measurements, and their units.
 const std::map<std::string, std::string>& comparable_quantities() {
-  static const std::map<std::string, std::string> quantities = {
-      {"cutting_force_N", "N"}, {"thrust_force_N", "N"}, {"axial_force_N", "N"}, {"torque_N_m", "N m"}};
+  static const std::map<std::string, std::string> quantities = {{std::string(prediction_keys::cutting_force_N), "N"},
+                                                                {std::string(prediction_keys::thrust_force_N), "N"},
+                                                                {"axial_force_N", "N"},
+                                                                {"torque_N_m", "N m"}};
   return quantities;
 }
 

@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "kerf/analytic/kinds/evaluate.hpp"
+#include "kerf/analytic/kinds/predict.hpp"
 #include "kerf/analytic/sweep/sweep.hpp"
 #include "kerf/comparison_config.hpp"
 #include "kerf/error.hpp"
@@ -135,7 +136,7 @@ void plot_sweep(const SweepGrid& grid, const std::vector<SweepRow>& rows, const 
   const auto coordinate = [&](std::size_t i, std::size_t a) { return axis_values[a][grid.value_index(i, a)]; };
   // The two force columns' numbers, read once.
   std::vector<std::vector<std::optional<double>>> force_numbers;
-  for (const char* force : {"cutting_force_N", "thrust_force_N"})
+  for (const std::string_view force : {prediction_keys::cutting_force_N, prediction_keys::thrust_force_N})
     force_numbers.push_back(column_numbers(grid, rows, force));
   const auto in_range = column_texts(grid, rows, "within_model_range");
   const auto outside = [&](std::size_t i) { return in_range[i] && *in_range[i] == "no"; };
@@ -289,7 +290,7 @@ std::vector<std::string> falling_force_warnings(const SweepGrid& grid, const std
     if (axes[a].key != "cut.uncut_chip_thickness_um") continue;
     const std::size_t stride = grid.stride(a);
     const std::size_t n_h = axes[a].values.size();
-    for (const char* force : {"cutting_force_N", "thrust_force_N"}) {
+    for (const std::string_view force : {prediction_keys::cutting_force_N, prediction_keys::thrust_force_N}) {
       const std::vector<std::optional<double>> values = column_numbers(grid, rows, force);
       const std::vector<std::size_t> falls = falling_points(values, stride, n_h);
       if (falls.empty()) continue;

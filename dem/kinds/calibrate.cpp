@@ -347,10 +347,7 @@ class CalibrateKind final : public SceneKind {
                                                 "kerf-dem calibrate (see description)");
     write_material_output(output_, material, out, summary);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    summary["results"] = Json{{"converged", r.converged},        {"max_error_percent", 100 * r.max_relative_error},
-                              {"evaluations", r.log.size()},     {"targets", macro_json(t)},
-                              {"achieved", macro_json(r.macro)}, {"calibrated_material", material}};
-    if (toughness) summary["results"]["toughness_error_percent"] = 100 * r.toughness_error;
+    summary["results"] = results_to_json(calibrate_results(), {r, t, material, toughness});
     summary["n_particles"] = specimen.particles().size();
     summary["wall_time_s"] = wall;
     write_summary(run.options, run.doc, summary);
@@ -371,6 +368,26 @@ std::unique_ptr<SceneKind> make_calibrate_kind() {
 }  // namespace kerf::dem::kinds
 
 namespace kerf::dem::kinds {
+
+const ResultTable<CalibrateReport>& calibrate_results() {
+  using R = CalibrateReport;
+  static const ResultTable<R> table{
+      result_value<R>("converged", "", "whether every target was met within the tolerance",
+                      [](const R& c) { return c.r.converged; }),
+      result_value<R>("max_error_percent", "%", "the largest relative error of the four lab-test properties",
+                      [](const R& c) { return 100 * c.r.max_relative_error; }),
+      result_value<R>("evaluations", "", "materials evaluated", [](const R& c) { return c.r.log.size(); }),
+      result_value<R>("targets", "", "the targets (calibration.targets' keys)",
+                      [](const R& c) { return macro_json(c.targets); }),
+      result_value<R>("achieved", "", "what the calibrated material gives (the same keys)",
+                      [](const R& c) { return macro_json(c.r.macro); }),
+      result_value<R>("calibrated_material", "", "the calibrated material (as its file holds it)",
+                      [](const R& c) { return c.material; }),
+      result_if(result_value<R>("toughness_error_percent", "%", "with a toughness target: K_IC's relative error",
+                                [](const R& c) { return 100 * c.r.toughness_error; }),
+                [](const R& c) { return c.toughness; })};
+  return table;
+}
 
 std::string calibrate_keys_markdown() {
   return fields_markdown(calibration_fields()) +

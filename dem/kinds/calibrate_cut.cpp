@@ -11,6 +11,7 @@
 
 #include "common.hpp"
 #include "kerf/dem/procedures/cut_calibration.hpp"
+#include "kerf/dem/procedures/cut_results.hpp"
 #include "kerf/error.hpp"
 #include "kerf/io.hpp"
 #include "kerf/units.hpp"
@@ -94,15 +95,13 @@ class CalibrateCutKind final : public SceneKind {
     const auto& fit = fit_;
     std::vector<CutCalibrationPoint> history;
     Json evaluations = Json::array();
+    // The replicated cut's results each evaluation reads and keeps (cut_results.hpp).
+    const std::string main_n(cut_keys::main_force_N), thrust_n(cut_keys::thrust_force_N);
+    const std::string main_std = replicate_spread_key(main_n), thrust_std = replicate_spread_key(thrust_n);
     // calibration_log.csv: the evaluation's number, these fields of its summary row, and its wall time.
-    const std::vector<std::string> logged{"strength_factor",
-                                          "tensile_strength_MPa",
-                                          "cohesion_MPa",
-                                          "main_force_N",
-                                          "main_force_replicate_std_N",
-                                          "thrust_force_N",
-                                          "thrust_force_replicate_std_N",
-                                          "relative_error_percent"};
+    const std::vector<std::string> logged{
+        "strength_factor", "tensile_strength_MPa",  "cohesion_MPa", main_n, main_std, thrust_n,
+        thrust_std,        "relative_error_percent"};
     std::vector<std::string> header{"evaluation"};
     header.insert(header.end(), logged.begin(), logged.end());
     header.push_back("wall_time_s");
@@ -136,7 +135,7 @@ class CalibrateCutKind final : public SceneKind {
           run_cut_replicates(scene, run.scene_dir, cut_, fit.replicates, summary_head("cut", e.material), options)
               .summary;
       const Json& r = done["results"];
-      const double force = r["main_force_N"].get<double>();
+      const double force = r[main_n].get<double>();
       const double error = force / fit.target_main_force_n - 1;
       history.push_back({s, force});
       if (std::abs(error) < std::abs(history[best].main_force_n / fit.target_main_force_n - 1))
@@ -146,10 +145,10 @@ class CalibrateCutKind final : public SceneKind {
                      {"strength_factor", s},
                      {"tensile_strength_MPa", units::pa_to_mpa(calibrated_params(e.material).tensile_strength_pa)},
                      {"cohesion_MPa", units::pa_to_mpa(calibrated_params(e.material).cohesion_pa)},
-                     {"main_force_N", force},
-                     {"main_force_replicate_std_N", r["main_force_replicate_std_N"]},
-                     {"thrust_force_N", r["thrust_force_N"]},
-                     {"thrust_force_replicate_std_N", r["thrust_force_replicate_std_N"]},
+                     {main_n, force},
+                     {main_std, r[main_std]},
+                     {thrust_n, r[thrust_n]},
+                     {thrust_std, r[thrust_std]},
                      {"relative_error_percent", 100 * error},
                      {"directory", dir.filename().string()}};
       evaluations.push_back(row);
@@ -165,7 +164,7 @@ class CalibrateCutKind final : public SceneKind {
     const CutCalibrationPoint& b = history[best];
     Material named = scale_bond_strengths(common.material, b.strength_factor, output_.name);
     named.name = output_.name;  // factor 1 keeps the base's name
-    const double sem = evaluations[best]["main_force_replicate_std_N"].get<double>() / std::sqrt(fit.replicates);
+    const double sem = evaluations[best][main_std].get<double>() / std::sqrt(fit.replicates);
     const std::string description = fmt::format(
         "{} with both bond strengths (joint tensile strength and cohesion) x {:.4g}, fitted by kerf-dem calibrate_cut "
         "to a mean main force of {:.4g} N{} ({} evaluations, {}converged: {:.4g} +- {:.2g} N, mean +- standard error "
@@ -180,16 +179,8 @@ class CalibrateCutKind final : public SceneKind {
     Json summary = summary_head("calibrate_cut", common.material);
     summary["cut"] = cut_params_to_json(cut_);
     write_material_output(output_, material, out, summary);
-    summary["results"] = Json{{"converged", converged},
-                              {"target_cutting_force_N", fit.target_main_force_n},
-                              {"target_main_force_N", fit.target_main_force_n},  // the old name, until 0.3.0
-                              {"target_source", fit.target_source},
-                              {"strength_factor", b.strength_factor},
-                              {"main_force_N", b.main_force_n},
-                              {"main_force_standard_error_N", sem},
-                              {"relative_error_percent", 100 * (b.main_force_n / fit.target_main_force_n - 1)},
-                              {"evaluations", evaluations},
-                              {"calibrated_material", material}};
+    summary["results"] = results_to_json(calibrate_cut_results(), {converged, fit.target_main_force_n,
+                                                                   fit.target_source, b, sem, evaluations, material});
     name_cut_forces(summary["results"]);
     for (auto& e : summary["results"]["evaluations"]) name_cut_forces(e);
     summary["wall_time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -209,6 +200,31 @@ class CalibrateCutKind final : public SceneKind {
 };
 
 }  // namespace
+
+const ResultTable<CalibrateCutReport>& calibrate_cut_results() {
+  using R = CalibrateCutReport;
+  static const ResultTable<R> table{
+      result_value<R>("converged", "", "whether the best evaluation's main force is within the tolerance",
+                      [](const R& c) { return c.converged; }),
+      result_value<R>("target_cutting_force_N", "N",
+                      "the measured main force fitted to (calibration.target_main_force_N)",
+                      [](const R& c) { return c.target_main_force_n; }),
+      result_value<R>("target_main_force_N", "N", "target_cutting_force_N's old name (deprecated, until 0.3.0)",
+                      [](const R& c) { return c.target_main_force_n; }),
+      result_value<R>("target_source", "", "where the target comes from", [](const R& c) { return c.target_source; }),
+      result_value<R>("strength_factor", "", "the best factor of both bond strengths",
+                      [](const R& c) { return c.best.strength_factor; }),
+      result_value<R>(cut_keys::main_force_N, "N", "the best evaluation's mean main force over its replicates",
+                      [](const R& c) { return c.best.main_force_n; }),
+      result_value<R>("main_force_standard_error_N", "N", "its standard error (replicate std / sqrt(n))",
+                      [](const R& c) { return c.sem; }),
+      result_value<R>("relative_error_percent", "%", "its relative error against the target",
+                      [](const R& c) { return 100 * (c.best.main_force_n / c.target_main_force_n - 1); }),
+      result_value<R>("evaluations", "", "each evaluation's row (a list)", [](const R& c) { return c.evaluations; }),
+      result_value<R>("calibrated_material", "", "the calibrated material (as its file holds it)",
+                      [](const R& c) { return c.material; })};
+  return table;
+}
 
 std::unique_ptr<SceneKind> make_calibrate_cut_kind() {
   return std::make_unique<CalibrateCutKind>();

@@ -15,6 +15,7 @@
 
 #include "kerf/dem/output/output.hpp"
 #include "kerf/dem/output/png.hpp"
+#include "kerf/dem/procedures/cut_results.hpp"
 #include "kerf/error.hpp"
 #include "kerf/io.hpp"
 #include "kerf/material.hpp"
@@ -22,20 +23,21 @@
 namespace kerf::dem::kinds {
 
 void name_cut_forces(Json& results) {
-  const Json width = results.value("width_mm", Json());
+  namespace k = cut_keys;
+  const Json width = results.value(k::width_mm, Json());
   const auto name = [&](Json& r) {
     std::vector<std::pair<std::string, Json>> canonical;
     for (const auto& [key, value] : r.items())
-      if (key.rfind("main_force", 0) == 0) canonical.emplace_back("cutting_force" + key.substr(10), value);
+      if (std::string current = cutting_force_name(key); !current.empty()) canonical.emplace_back(current, value);
     for (auto& [key, value] : canonical) r[key] = std::move(value);
     if (!width.is_number() || !(width.get<double>() > 0)) return;
-    for (const char* force : {"cutting_force", "thrust_force"})
-      if (r.contains(std::string(force) + "_N") && r[std::string(force) + "_N"].is_number())
-        r[std::string(force) + "_N_per_mm"] = r[std::string(force) + "_N"].get<double>() / width.get<double>();
+    for (const auto& [force, per_mm] : {std::pair{k::cutting_force_N, k::cutting_force_N_per_mm},
+                                        std::pair{k::thrust_force_N, k::thrust_force_N_per_mm}})
+      if (r.contains(force) && r[force].is_number()) r[per_mm] = r[force].get<double>() / width.get<double>();
   };
   name(results);
-  if (results.contains("travel_windows") && results["travel_windows"].is_array())
-    for (auto& w : results["travel_windows"]) name(w);
+  if (results.contains(k::travel_windows) && results[k::travel_windows].is_array())
+    for (auto& w : results[k::travel_windows]) name(w);
 }
 
 ProgressTarget progress_target(const RunOptions& options) {

@@ -3,6 +3,7 @@
 // VTK frames, the material a calibration writes, and the factories the kind registry calls.
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -10,10 +11,15 @@
 #include <vector>
 
 #include "kerf/dem/engine/simulation.hpp"
+#include "kerf/dem/procedures/calibration.hpp"
+#include "kerf/dem/procedures/cut_calibration.hpp"
 #include "kerf/dem/procedures/cut_window.hpp"
 #include "kerf/dem/procedures/cutting.hpp"
+#include "kerf/dem/procedures/lab_test.hpp"
+#include "kerf/dem/procedures/toughness.hpp"
 #include "kerf/dem/scene.hpp"
 #include "kerf/io.hpp"
+#include "kerf/result_table.hpp"
 
 namespace kerf::dem::kinds {
 
@@ -167,4 +173,72 @@ std::string calibrate_keys_markdown();
 std::string calibrate_targets_keys_markdown();
 std::string calibrate_toughness_keys_markdown();
 std::string calibrate_cut_keys_markdown();
+
+/// A finished tension or compression test as its results see it (kinds/lab_test.cpp).
+struct LabTestReport {
+  bool tension;
+  const LabTestResult& res;
+};
+/// A test's quasi-static check: the test again at `speed_m_per_s` (half the speed), `slow`, against `res`.
+template <class Result>
+struct QuasiStaticCheck {
+  double speed_m_per_s;
+  const Result& slow;
+  const Result& res;
+};
+/// The largest change of the peak at half the speed for which a test counts as quasi-static (docs/dem.md: 2.3 %
+/// in compression at 0.1 m/s was judged not quasi-static enough); the check's verdict on a change.
+inline constexpr double kQuasiStaticTolerancePercent = 2.0;
+inline const char* quasi_static_verdict(double change_percent) {
+  return std::abs(change_percent) <= kQuasiStaticTolerancePercent ? "quasi-static" : "rate-dependent";
+}
+using LabTestCheck = QuasiStaticCheck<LabTestResult>;
+/// summary.json's "results" of a tension or compression test, and of its "quasi_static_check".
+const ResultTable<LabTestReport>& lab_test_results();
+const ResultTable<LabTestCheck>& lab_test_check_results();
+
+/// A mean over packings and its standard error.
+struct MeanSem {
+  double mean, sem;
+};
+/// A toughness test over its packings as its results see them (kinds/toughness.cpp): the means of the packings'
+/// K_IC (in MPa sqrt(m)), G_c, work of fracture and Irwin energy, the first packing's beam, the spec, and each
+/// packing's results (toughness_packing_results).
+struct ToughnessReport {
+  MeanSem toughness_mpa_sqrt_m, fracture_energy, work_of_fracture, irwin_energy;
+  int packings;
+  const ToughnessResult& first;
+  const ToughnessSpec& spec;
+  const Json& per_packing;
+};
+using ToughnessCheck = QuasiStaticCheck<ToughnessResult>;  ///< the first packing's check
+/// summary.json's "results" of a toughness test, each of its "per_packing", and its "quasi_static_check".
+const ResultTable<ToughnessReport>& toughness_results();
+const ResultTable<ToughnessResult>& toughness_packing_results();
+const ResultTable<ToughnessCheck>& toughness_check_results();
+
+/// A finished calibration (kind calibrate) as its results see it: the result, the targets, the calibrated
+/// material's JSON and whether it had a toughness target.
+struct CalibrateReport {
+  const CalibrationResult& r;
+  const MacroProperties& targets;
+  const Json& material;
+  bool toughness;
+};
+/// summary.json's "results" of kind calibrate.
+const ResultTable<CalibrateReport>& calibrate_results();
+
+/// A finished cut calibration (kind calibrate_cut) as its results see it: whether it converged, the target main
+/// force and its source, the best evaluation, its standard error, every evaluation's row, the calibrated material.
+struct CalibrateCutReport {
+  bool converged;
+  double target_main_force_n;
+  const std::string& target_source;
+  const CutCalibrationPoint& best;
+  double sem;
+  const Json& evaluations;
+  const Json& material;
+};
+/// summary.json's "results" of kind calibrate_cut (before name_cut_forces adds the forces' current names).
+const ResultTable<CalibrateCutReport>& calibrate_cut_results();
 }  // namespace kerf::dem::kinds

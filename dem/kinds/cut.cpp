@@ -14,6 +14,7 @@
 #include "kerf/analytic/forces/glass_edge.hpp"
 #include "kerf/dem/output/output.hpp"
 #include "kerf/dem/output/png.hpp"
+#include "kerf/dem/procedures/cut_results.hpp"
 #include "kerf/dem/study/study.hpp"
 #include "kerf/error.hpp"
 #include "kerf/io.hpp"
@@ -24,6 +25,8 @@
 namespace kerf::dem::kinds {
 
 namespace {
+
+namespace k = cut_keys;
 
 /// The cut's latest sample, for log lines.
 SampleState cut_sample(const CutRun& run) {
@@ -38,45 +41,6 @@ SampleState cut_sample(const CutRun& run) {
     s.thrust_force_N = last.thrust_force_n;
   }
   return s;
-}
-
-/// What the edge met over the steady part (CutEdgeRecord, docs/dem.md "What the edge meets"): the shares of the
-/// observations in which the tool's boundary within 25 um of its tip touched tied glass, loose fragments or nothing,
-/// and the tied share of the disks by depth below the cut line 0.05-0.3 mm ahead of and behind the tip (null without
-/// an observation or a disk).
-void add_edge_results(const CutEdgeRecord& e, Json& r) {
-  const auto share = [](std::int64_t part, std::int64_t whole) {
-    return whole > 0 ? Json(static_cast<double>(part) / static_cast<double>(whole)) : Json();
-  };
-  r["edge_observations_steady"] = e.observations;
-  r["edge_touches_tied_share_steady"] = share(e.touches_tied, e.observations);
-  r["edge_touches_loose_share_steady"] = share(e.touches_loose, e.observations);
-  r["edge_touches_nothing_share_steady"] = share(e.observations - e.touches_tied - e.touches_loose, e.observations);
-  for (std::size_t side = 0; side < 2; ++side)
-    for (std::size_t band = 0; band < 3; ++band)
-      r[fmt::format("tied_share_{}_depth_{:g}_{:g}_um_steady", side == 0 ? "ahead" : "behind",
-                    units::m_to_um(kTiedBandDepthM[band]), units::m_to_um(kTiedBandDepthM[band + 1]))] =
-          share(e.profile.tied[side][band], e.profile.disks[side][band]);
-}
-
-/// The edge zone over the steady part (CutEdgeZoneRecord, docs/dem.md "The edge zone"): the share of the samples in
-/// which the edge met intact glass, the layer's force, the disks it removed, and the layer's energy (the tool's work
-/// on it less what its reaction did on the disks: dissipated below the disks' scale, part of energy_dissipated).
-void add_edge_zone_results(const CutParams& cut, const CutResult& res, Json& r) {
-  const CutEdgeZoneRecord& z = res.edge_zone;
-  r["edge_zone_samples_steady"] = z.samples;
-  r["edge_zone_intact_share_steady"] =
-      z.samples > 0 ? Json(static_cast<double>(z.intact_samples) / static_cast<double>(z.samples)) : Json();
-  r["edge_zone_cutting_force_N_per_mm"] = units::n_per_m_to_n_per_mm(cut.edge_cutting_force_n_per_m);
-  r["edge_zone_thrust_force_N_per_mm"] = units::n_per_m_to_n_per_mm(cut.edge_thrust_force_n_per_m);
-  r["edge_zone_removed_tied_disks"] = res.window.chips.edge_tied_disks;
-  r["edge_zone_removed_loose_disks"] = res.window.chips.edge_loose_disks;
-  r["edge_zone_removed_mass_kg"] = res.window.chips.edge_tied_mass_kg + res.window.chips.edge_loose_mass_kg;
-  if (res.energy_booked) {
-    r["energy_edge_zone_tool_work_steady_J"] = z.tool_work_j;
-    r["energy_edge_zone_reaction_work_steady_J"] = z.reaction_work_j;
-    r["energy_edge_layer_steady_J"] = z.tool_work_j - z.reaction_work_j;
-  }
 }
 
 /// The edge zone's force from the material's edge model when the scene does not give it (kerf::edge_force_per_width:
@@ -147,89 +111,14 @@ Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& d
   if (frame_every > 0) write_frame(run.simulation());
   const CutResult& res = run.result();
   summary["cut"] = cut_params_to_json(run.params());  // the cut's own: the edge zone's reach resolved
-  summary["results"] =
-      Json{{"main_force_N", res.main_force_n},
-           {"thrust_force_N", res.thrust_force_n},
-           {"main_force_std_N", res.main_force_std_n},
-           {"thrust_force_std_N", res.thrust_force_std_n},
-           // Standard errors of the two means from the force signal itself (null: the signal is too short).
-           {"main_force_sem_N", finite_or_null(res.main_force_sem_n)},
-           {"thrust_force_sem_N", finite_or_null(res.thrust_force_sem_n)},
-           {"main_force_sem_method", res.main_force_sem_method},
-           {"thrust_force_sem_method", res.thrust_force_sem_method},
-           {"main_force_inefficiency_samples", res.main_force_inefficiency},
-           {"thrust_force_inefficiency_samples", res.thrust_force_inefficiency},
-           {"main_force_batch_samples", res.main_force_batch_samples},
-           {"thrust_force_batch_samples", res.thrust_force_batch_samples},
-           {"steady_from_travel_mm", units::m_to_mm(res.steady_from_travel_m)},
-           {"steady_to_travel_mm", units::m_to_mm(res.steady_to_travel_m)},
-           {"steady_samples", res.n_steady_samples},
-           {"contact_share_steady", res.contact_share},
-           // Whether the means above are a steady cut's; if not, why (null when they are).
-           {"steady", res.steady},
-           {"not_steady_reason", res.steady ? Json() : Json(res.not_steady_reason)},
-           {"width_mm", units::m_to_mm(res.width_m)},
-           {"cracks_tensile", res.cracks.tensile},
-           {"cracks_shear", res.cracks.shear},
-           {"cracks_chip", res.cracks.chip},
-           {"cracks_subsurface", res.cracks.subsurface},
-           {"subsurface_damage_depth_um", units::m_to_um(res.cracks.subsurface_damage_depth_m)},
-           {"steady_machined_from_x_mm", units::m_to_mm(res.steady_machined_x_m[0])},
-           {"steady_machined_to_x_mm", units::m_to_mm(res.steady_machined_x_m[1])},
-           {"cracks_subsurface_steady", res.cracks.subsurface_steady},
-           {"subsurface_damage_depth_steady_um", units::m_to_um(res.cracks.subsurface_steady_damage_depth_m)},
-           {"subsurface_damage_depth_steady_p95_um", units::m_to_um(res.cracks.subsurface_steady_damage_depth_p95_m)},
-           {"surface_y_mm", units::m_to_mm(res.y_top_m)},
-           {"cut_line_y_mm", units::m_to_mm(res.y_cut_m)},
-           {"particles_removed_by_grooves", res.n_removed_by_grooves}};
-  Json windows = Json::array();
-  for (const auto& w : res.travel_windows)
-    // Window ends to 1 pm, so that 3 x 0.1 mm reads 0.3, not 0.30000000000000004.
-    windows.push_back({{"from_travel_mm", std::round(units::m_to_mm(w.from_m) * 1e9) / 1e9},
-                       {"to_travel_mm", std::round(units::m_to_mm(w.to_m) * 1e9) / 1e9},
-                       {"main_force_N", w.main_force_n},
-                       {"thrust_force_N", w.thrust_force_n},
-                       {"samples", w.n_samples}});
-  summary["results"]["travel_windows"] = windows;
-  if (cut.window_grain_strength_pa > 0) {  // crushing grains (active_window.grain_strength_MPa): how many, how much
-    summary["results"]["grains_crushed"] = res.window.chips.crushed_grains;
-    summary["results"]["grains_crushed_mass_kg"] = res.window.chips.crushed_mass_kg;
-  }
-  if (cut.window_tied_grain_strength_pa > 0) {  // the workpiece's own disks crushed (tied_grain_strength_MPa)
-    summary["results"]["tied_disks_crushed"] = res.window.chips.crushed_tied_disks;
-    summary["results"]["tied_disks_crushed_mass_kg"] = res.window.chips.crushed_tied_mass_kg;
-  }
-  if (res.energy_booked) {
-    // Where the tool's work went over the steady part (CutEnergy), per the cut's width like the forces' work.
-    const CutEnergy& e = res.energy;
-    for (const auto& [key, value] : {std::pair{"energy_tool_work_steady_J", e.tool_work_j},
-                                     {"energy_dissipated_steady_J", e.dissipated_j},
-                                     {"energy_left_kinetic_steady_J", e.left_kinetic_j},
-                                     {"energy_left_strain_steady_J", e.left_strain_j},
-                                     {"energy_stored_change_steady_J", e.stored_change_j}})
-      summary["results"][key] = value;
-  }
-  if (res.edge_recorded) add_edge_results(res.edge, summary["results"]);
-  if (cut.edge_zone) add_edge_zone_results(run.params(), res, summary["results"]);
+  const CutReport report{run.params(), res};
+  summary["results"] = results_to_json(cut_results(), report);  // cut_results.hpp: its keys, units, meanings
   name_cut_forces(summary["results"]);
   summary["n_particles"] = res.n_particles;
   summary["steps"] = res.steps;
   summary["wall_time_s"] = res.wall_time_s;
   summary["particle_steps_per_s"] = res.particle_steps / res.wall_time_s;  // the disks integrated: a window's
-  if (cut.active_window) {
-    summary["active_window"] =
-        Json{{"rebuilds", res.window.rebuilds},
-             {"largest_window_particles", res.window.largest_window_particles},
-             {"mean_window_particles",
-              res.particle_steps / (static_cast<double>(res.samples.size() - 1) * cut.sample_every_steps)},
-             {"chip_particles_removed", res.window.chips.particles},
-             {"chip_mass_removed_kg", res.window.chips.mass_kg},
-             {"chip_cracks_removed", res.window.chips.cracks},
-             // Cracks are found only inside the window and above the workpiece's bottom
-             // (a window may reach below it): a damage depth near this is censored.
-             {"damage_depth_limit_um",
-              units::m_to_um(std::min(window_box_m(cut).below_m, res.y_cut_m - res.workpiece_box_m[2]))}};
-  }
+  if (cut.active_window) summary["active_window"] = results_to_json(active_window_results(), report);
   write_file_atomically(out / "forces.csv", cut_forces_csv(res));
   write_file_atomically(out / "cracks.csv", cracks_csv(run.cracks(), res.y_cut_m));
   if (frame_every > 0) write_pvd(out / "result.pvd", tp.frames);
@@ -237,16 +126,20 @@ Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& d
   write_cut_forces_png(out / "forces.png", res);
   write_summary(options, doc, summary);
   remove_checkpoint(out);  // finished: nothing to resume
+  // The log line from the results as written (their table's units).
+  const Json& r = summary["results"];
+  const auto number = [&r](std::string_view key) { return r.at(key).get<double>(); };
+  const auto count = [&r](std::string_view key) { return r.at(key).get<long long>(); };
 #pragma omp critical(kerf_dem_stdout)
   std::cout << fmt::format(
       "cut: cutting force {:.3g} N (std {:.2g}), thrust force {:.3g} N (std {:.2g}) per {:g} mm width, "
       "means over {:.4g}-{:.4g} mm of travel{}; {} tensile + {} shear cracks ({} chip, {} "
       "subsurface, damage depth {:.1f} um); {} steps, {:.1f} s -> {}\n",
-      res.main_force_n, res.main_force_std_n, res.thrust_force_n, res.thrust_force_std_n, units::m_to_mm(res.width_m),
-      units::m_to_mm(res.steady_from_travel_m), units::m_to_mm(res.steady_to_travel_m),
-      res.steady ? "" : " (NOT STEADY: " + res.not_steady_reason + ")", res.cracks.tensile, res.cracks.shear,
-      res.cracks.chip, res.cracks.subsurface, units::m_to_um(res.cracks.subsurface_damage_depth_m), res.steps,
-      res.wall_time_s, out.string());
+      number(k::main_force_N), number(k::main_force_std_N), number(k::thrust_force_N), number(k::thrust_force_std_N),
+      number(k::width_mm), number(k::steady_from_travel_mm), number(k::steady_to_travel_mm),
+      r.at(k::steady) == true ? "" : " (NOT STEADY: " + r.at(k::not_steady_reason).get<std::string>() + ")",
+      count(k::cracks_tensile), count(k::cracks_shear), count(k::cracks_chip), count(k::cracks_subsurface),
+      number(k::subsurface_damage_depth_um), res.steps, res.wall_time_s, out.string());
   return summary;
 }
 
@@ -305,16 +198,9 @@ class CutKind final : public SceneKind {
 // spreads, errors of the means) in that summary's order.
 SceneOutcome run_cut_replicates(const Json& cut_scene, const std::string& scene_dir, const CutParams& cut,
                                 int replicates, Json summary, const RunOptions& options) {
-  // Each result with the name of its spread over the replicates.
-  const std::vector<std::pair<std::string, std::string>> keys{
-      {"main_force_N", "main_force_replicate_std_N"},
-      {"thrust_force_N", "thrust_force_replicate_std_N"},
-      {"cracks_tensile", "cracks_tensile_replicate_std"},
-      {"cracks_shear", "cracks_shear_replicate_std"},
-      {"subsurface_damage_depth_um", "subsurface_damage_depth_replicate_std_um"},
-      {"cracks_subsurface_steady", "cracks_subsurface_steady_replicate_std"},
-      {"subsurface_damage_depth_steady_um", "subsurface_damage_depth_steady_replicate_std_um"},
-      {"subsurface_damage_depth_steady_p95_um", "subsurface_damage_depth_steady_p95_replicate_std_um"}};
+  // Each replicated result with the name of its spread over the replicates (cut_results.hpp).
+  std::vector<std::pair<std::string, std::string>> keys;
+  for (const auto key : cut_replicated_results()) keys.emplace_back(key, replicate_spread_key(key));
   const auto start = std::chrono::steady_clock::now();
   const Json study_doc{
       {"description", fmt::format("{} replicates of a cut (kerf-dem run --replicates {})", replicates, replicates)},
@@ -336,17 +222,15 @@ SceneOutcome run_cut_replicates(const Json& cut_scene, const std::string& scene_
   std::vector<Json> done;
   Json list = Json::array();
   double wall = 0;
-  for (int k = 0; k < replicates; ++k) {
-    const StudyItem item = study_item(spec, 0, k);
+  for (int i = 0; i < replicates; ++i) {
+    const StudyItem item = study_item(spec, 0, i);
     done.push_back(read_study_item_summary(study.out, item));
     const Json& one = done.back();
-    Json row{{"replicate", k + 1},
+    Json row{{"replicate", i + 1},
              {"seed", one["study_item"]["seed"]},
              {"directory", (fs::path("replicates") / "items" / study_item_name(item)).generic_string()}};
-    for (const auto& key : keys) row[key.first] = one["results"][key.first];
-    for (const char* key : {"main_force_std_N", "thrust_force_std_N", "main_force_sem_N", "thrust_force_sem_N",
-                            "width_mm", "steady", "not_steady_reason"})
-      row[key] = one["results"].value(key, Json());
+    for (const auto& [result, spread] : keys) row[result] = one["results"][result];
+    for (const auto result : cut_replicate_row_results()) row[result] = one["results"].value(result, Json());
     row["wall_time_s"] = one["wall_time_s"];  // the cut's own (genesis excluded)
     wall += row["wall_time_s"].get<double>();
     list.push_back(row);
@@ -356,31 +240,30 @@ SceneOutcome run_cut_replicates(const Json& cut_scene, const std::string& scene_
   // (replicates[k].main_force_sem_N, from its force signal).
   const Json& table = ran.summary["conditions"][0]["results"];
   Json stats;
-  for (const auto& [key, spread] : keys) {
-    stats[key] = table[key]["mean"];
-    stats[spread] = table[key]["std"];  // replicates >= 2: a finite sample std
+  for (const auto& [result, spread] : keys) {
+    stats[result] = table[result]["mean"];
+    stats[spread] = table[result]["std"];  // replicates >= 2: a finite sample std
   }
-  stats["main_force_sem_N"] = table["main_force_N"]["sem"];
-  stats["thrust_force_sem_N"] = table["thrust_force_N"]["sem"];
+  stats[k::main_force_sem_N] = table[k::main_force_N]["sem"];
+  stats[k::thrust_force_sem_N] = table[k::thrust_force_N]["sem"];
   // And from the cuts' own signals, sqrt(sum sem_k^2) / n: the error of the mean of long steady cuts, which
   // (unlike the replicate spread of a few cuts) has many batches behind it; null when a cut has none.
-  for (const std::string force : {"main_force", "thrust_force"}) {
+  for (const auto& [sem, within] : {std::pair{k::main_force_sem_N, k::main_force_sem_within_cuts_N},
+                                    std::pair{k::thrust_force_sem_N, k::thrust_force_sem_within_cuts_N}}) {
     std::vector<double> sems;
-    for (const auto& row : list)
-      sems.push_back(row[force + "_sem_N"].is_number() ? row[force + "_sem_N"].get<double>() : std::nan(""));
-    stats[force + "_sem_within_cuts_N"] = finite_or_null(standard_error_of_mean(sems));
+    for (const auto& row : list) sems.push_back(row[sem].is_number() ? row[sem].get<double>() : std::nan(""));
+    stats[within] = finite_or_null(standard_error_of_mean(sems));
   }
-  stats["width_mm"] = list[0]["width_mm"];
+  stats[k::width_mm] = list[0][k::width_mm];
   // Steady when every replicate's means are; else the first replicate that is not, and why.
-  stats["steady"] = true;
-  stats["not_steady_reason"] = Json();
+  const std::string_view steady = k::steady, why = k::not_steady_reason;
+  stats[steady] = true;
+  stats[why] = Json();
   for (const auto& row : list) {
-    if (row["steady"] == true) continue;
-    stats["steady"] = false;
-    stats["not_steady_reason"] =
-        fmt::format("replicate {}: {}", row["replicate"].get<int>(),
-                    row["not_steady_reason"].is_string() ? row["not_steady_reason"].get<std::string>()
-                                                         : std::string("no steady verdict"));
+    if (row[steady] == true) continue;
+    stats[steady] = false;
+    stats[why] = fmt::format("replicate {}: {}", row["replicate"].get<int>(),
+                             row[why].is_string() ? row[why].get<std::string>() : std::string("no steady verdict"));
     break;
   }
   name_cut_forces(stats);
@@ -395,11 +278,10 @@ SceneOutcome run_cut_replicates(const Json& cut_scene, const std::string& scene_
   std::cout << fmt::format(
       "cut, {} replicates: cutting force {:.3g} N (replicate std {:.2g}), thrust force {:.3g} N "
       "(replicate std {:.2g}) per {:g} mm width{} -> {}\n",
-      replicates, stats["main_force_N"].get<double>(), stats["main_force_replicate_std_N"].get<double>(),
-      stats["thrust_force_N"].get<double>(), stats["thrust_force_replicate_std_N"].get<double>(),
-      stats["width_mm"].get<double>(),
-      stats["steady"] == true ? "" : " (NOT STEADY: " + stats["not_steady_reason"].get<std::string>() + ")",
-      options.out.string());
+      replicates, stats[k::main_force_N].get<double>(), stats[replicate_spread_key(k::main_force_N)].get<double>(),
+      stats[k::thrust_force_N].get<double>(), stats[replicate_spread_key(k::thrust_force_N)].get<double>(),
+      stats[k::width_mm].get<double>(),
+      stats[steady] == true ? "" : " (NOT STEADY: " + stats[why].get<std::string>() + ")", options.out.string());
   return {0, summary, std::move(done)};
 }
 

@@ -17,10 +17,6 @@ namespace kerf::dem::kinds {
 
 namespace {
 
-/// The largest change of the peak at half the speed for which a test counts as quasi-static (docs/dem.md: 2.3 %
-/// in compression at 0.1 m/s was judged not quasi-static enough).
-constexpr double kQuasiStaticTolerancePercent = 2.0;
-
 /// A test's sample, for log lines (steps counted from the test's start, not the specimen's genesis).
 SampleState test_sample(const CurveSample& sample, double time_step_s, std::size_t n_particles) {
   return {std::llround(sample.time_s / time_step_s),
@@ -127,32 +123,15 @@ class LabTestKind final : public SceneKind {
     const LabTestResult& res = run.result();
     if (frame_every > 0) write_frame(run.simulation());
     const bool tension = test_ == LabTest::tension;
-    Json results{{"youngs_modulus_GPa", units::pa_to_gpa(res.youngs_modulus_pa)},
-                 {"poissons_ratio", res.poissons_ratio},
-                 {tension ? "tensile_strength_MPa" : "compressive_strength_MPa", units::pa_to_mpa(res.peak_stress_pa)},
-                 {"strain_at_peak", res.strain_at_peak},
-                 {"n_tension_cracks", res.curve.back().n_tension_cracks},
-                 {"n_shear_cracks", res.curve.back().n_shear_cracks},
-                 {"stop_reason", res.stop_reason},
-                 {"speed_m_per_s", res.speed_m_per_s},
-                 {"specimen_width_mm", units::m_to_mm(res.width_m)},
-                 {"gauge_length_mm", units::m_to_mm(res.height_m)}};
+    Json results = results_to_json(lab_test_results(), {test_ == LabTest::tension, res});
     if (loading_.quasi_static_check) {
       LoadingSpec half = loading_;
       half.speed_m_per_s *= 0.5;
       half.quasi_static_check = false;  // this run is the check
       const LabTestResult slow = run_test(specimen, half, name() + " (quasi-static check, half speed)", tp.progress);
-      results["quasi_static_check"] =
-          Json{{"speed_m_per_s", half.speed_m_per_s},
-               {"peak_stress_MPa", units::pa_to_mpa(slow.peak_stress_pa)},
-               {"peak_change_percent", 100 * (slow.peak_stress_pa - res.peak_stress_pa) / res.peak_stress_pa},
-               {"youngs_modulus_change_percent",
-                100 * (slow.youngs_modulus_pa - res.youngs_modulus_pa) / res.youngs_modulus_pa},
-               {"wall_time_s", slow.wall_time_s}};
+      results["quasi_static_check"] = results_to_json(lab_test_check_results(), {half.speed_m_per_s, slow, res});
       const double change = results["quasi_static_check"]["peak_change_percent"].get<double>();
-      const bool quasi_static = std::abs(change) <= kQuasiStaticTolerancePercent;
-      results["quasi_static_check"]["tolerance_percent"] = kQuasiStaticTolerancePercent;
-      results["quasi_static_check"]["verdict"] = quasi_static ? "quasi-static" : "rate-dependent";
+      const bool quasi_static = results["quasi_static_check"]["verdict"] == "quasi-static";
       std::cout << fmt::format("{}: quasi-static check: the peak changes {:+.2f} % at half the speed ({} m/s): {}\n",
                                name(), change, half.speed_m_per_s,
                                quasi_static
@@ -182,6 +161,57 @@ class LabTestKind final : public SceneKind {
 };
 
 }  // namespace
+
+const ResultTable<LabTestReport>& lab_test_results() {
+  using R = LabTestReport;
+  static const ResultTable<R> table{
+      result_number<R>("youngs_modulus_GPa", units::kGPa, "Young's modulus E (secant at 50 % of the peak)",
+                       [](const R& r) { return r.res.youngs_modulus_pa; }),
+      result_value<R>("poissons_ratio", "", "Poisson's ratio nu (secant at 50 % of the peak)",
+                      [](const R& r) { return r.res.poissons_ratio; }),
+      result_if(result_number<R>("tensile_strength_MPa", units::kMPa, "tension: the peak stress",
+                                 [](const R& r) { return r.res.peak_stress_pa; }),
+                [](const R& r) { return r.tension; }),
+      result_if(result_number<R>("compressive_strength_MPa", units::kMPa, "compression: the peak stress",
+                                 [](const R& r) { return r.res.peak_stress_pa; }),
+                [](const R& r) { return !r.tension; }),
+      result_value<R>("strain_at_peak", "", "axial strain at the peak",
+                      [](const R& r) { return r.res.strain_at_peak; }),
+      result_value<R>("n_tension_cracks", "", "broken joint elements in tension at the end",
+                      [](const R& r) { return r.res.curve.back().n_tension_cracks; }),
+      result_value<R>("n_shear_cracks", "", "broken joint elements in shear at the end",
+                      [](const R& r) { return r.res.curve.back().n_shear_cracks; }),
+      result_value<R>("stop_reason", "", "why the test stopped", [](const R& r) { return r.res.stop_reason; }),
+      result_value<R>("speed_m_per_s", "m/s", "the platens' speed", [](const R& r) { return r.res.speed_m_per_s; }),
+      result_number<R>("specimen_width_mm", units::kMm, "the specimen's width",
+                       [](const R& r) { return r.res.width_m; }),
+      result_number<R>("gauge_length_mm", units::kMm, "the specimen's height between the platens",
+                       [](const R& r) { return r.res.height_m; })};
+  return table;
+}
+
+const ResultTable<LabTestCheck>& lab_test_check_results() {
+  using C = LabTestCheck;
+  const auto change = [](const C& c) {
+    return 100 * (c.slow.peak_stress_pa - c.res.peak_stress_pa) / c.res.peak_stress_pa;
+  };
+  static const ResultTable<C> table{
+      result_value<C>("speed_m_per_s", "m/s", "the check's speed (half the test's)",
+                      [](const C& c) { return c.speed_m_per_s; }),
+      result_number<C>("peak_stress_MPa", units::kMPa, "the check's peak stress",
+                       [](const C& c) { return c.slow.peak_stress_pa; }),
+      result_value<C>("peak_change_percent", "%", "the change of the peak at half the speed", change),
+      result_value<C>("youngs_modulus_change_percent", "%", "the change of E at half the speed",
+                      [](const C& c) {
+                        return 100 * (c.slow.youngs_modulus_pa - c.res.youngs_modulus_pa) / c.res.youngs_modulus_pa;
+                      }),
+      result_value<C>("wall_time_s", "s", "the check's wall time", [](const C& c) { return c.slow.wall_time_s; }),
+      result_value<C>("tolerance_percent", "%", "the largest change of the peak of a quasi-static test",
+                      [](const C&) { return kQuasiStaticTolerancePercent; }),
+      result_value<C>("verdict", "", "`quasi-static` within the tolerance, else `rate-dependent`",
+                      [change](const C& c) { return std::string(quasi_static_verdict(change(c))); })};
+  return table;
+}
 
 std::unique_ptr<SceneKind> make_tension_kind() {
   return std::make_unique<LabTestKind>(LabTest::tension);

@@ -20,10 +20,6 @@ namespace kerf::dem::kinds {
 
 namespace {
 
-/// As the tension and compression tests: the largest change of the peak at half the speed for which a test
-/// counts as quasi-static.
-constexpr double kQuasiStaticTolerancePercent = 2.0;
-
 SampleState toughness_sample(const ToughnessSample& s, double time_step_s, std::size_t n_particles) {
   SampleState state{std::llround(s.time_s / time_step_s), s.time_s, n_particles, s.n_cracks, {}, {}, {}, {}, {}};
   return state;
@@ -50,28 +46,6 @@ std::string curve_csv(const std::vector<std::pair<std::uint64_t, const Toughness
                          units::m_to_um(s.deflection_m), s.load_n, s.smoothed_load_n, s.support_load_n,
                          s.external_work_j, s.stored_elastic_energy_j, s.kinetic_energy_j, s.n_cracks);
   return out.str();
-}
-
-Json result_json(const ToughnessResult& r) {
-  return Json{
-      {"fracture_toughness_MPa_sqrt_m", units::pa_to_mpa(r.fracture_toughness_pa_sqrt_m)},
-      {"fracture_energy_J_per_m2", r.fracture_energy_j_per_m2},
-      {"work_of_fracture_J_per_m2", r.work_of_fracture_j_per_m2},
-      {"irwin_energy_J_per_m2", r.irwin_energy_j_per_m2},
-      {"peak_load_N", r.peak_load_n},
-      {"raw_peak_load_N", r.raw_peak_load_n},
-      {"raw_peak_toughness_MPa_sqrt_m", units::pa_to_mpa(r.raw_peak_toughness_pa_sqrt_m)},
-      {"deflection_at_peak_um", units::m_to_um(r.deflection_at_peak_m)},
-      {"external_work_J", r.external_work_j},
-      {"broken_through", r.through_sample >= 0},
-      {"deflection_broken_through_um",
-       r.through_sample >= 0 ? units::m_to_um(r.curve[static_cast<std::size_t>(r.through_sample)].deflection_m) : 0.0},
-      {"n_cracks", r.curve.back().n_cracks},
-      {"n_notch_disks_removed", r.n_notch_disks},
-      {"n_notch_joints_retired", r.n_notch_joints_retired},
-      {"stop_reason", r.stop_reason},
-      {"steps", r.steps},
-      {"wall_time_s", r.wall_time_s}};
 }
 
 class ToughnessKind final : public SceneKind {
@@ -121,7 +95,7 @@ class ToughnessKind final : public SceneKind {
         first_final.emplace(std::move(final_state));
         if (spec_.quasi_static_check) quasi_static = check_quasi_static(started.specimen, r, t);
       }
-      Json one = result_json(r);
+      Json one = results_to_json(toughness_packing_results(), r);
       one["seed"] = started.spec.seed;
       per_packing.push_back(one);
       results.push_back(r);
@@ -139,30 +113,10 @@ class ToughnessKind final : public SceneKind {
     const auto [g_mean, g_sem] = mean_and_sem(g_c);
     const auto [w_mean, w_sem] = mean_and_sem(wof);
     const auto [i_mean, i_sem] = mean_and_sem(irwin);
-    const ToughnessResult& r0 = results.front();
-    Json res{{"fracture_toughness_MPa_sqrt_m", k_mean},
-             {"fracture_energy_J_per_m2", g_mean},
-             {"work_of_fracture_J_per_m2", w_mean},
-             {"irwin_energy_J_per_m2", i_mean},
-             {"fracture_energy_over_irwin_energy", i_mean > 0 ? g_mean / i_mean : 0.0},
-             {"youngs_modulus_for_irwin_GPa", units::pa_to_gpa(spec_.youngs_modulus_pa)},
-             {"packings", packings},
-             {"depth_W_mm", units::m_to_mm(r0.depth_m)},
-             {"span_S_mm", units::m_to_mm(r0.span_m)},
-             {"length_mm", units::m_to_mm(r0.length_m)},
-             {"thickness_B_mm", units::m_to_mm(r0.thickness_m)},
-             {"notch_depth_a_mm", units::m_to_mm(r0.notch_m)},
-             {"notch_over_depth", r0.notch_m / r0.depth_m},
-             {"geometry_factor", senb_geometry_factor(r0.notch_m / r0.depth_m)},
-             {"speed_m_per_s", spec_.speed_m_per_s},
-             {"peak_window_um", units::m_to_um(spec_.peak_window_m)},
-             {"per_packing", per_packing}};
-    if (packings > 1) {
-      res["fracture_toughness_sem_MPa_sqrt_m"] = k_sem;
-      res["fracture_energy_sem_J_per_m2"] = g_sem;
-      res["work_of_fracture_sem_J_per_m2"] = w_sem;
-      res["irwin_energy_sem_J_per_m2"] = i_sem;
-    }
+    const ToughnessResult& r0 = results.front();  // the first packing's beam: its geometry, figures and counts
+    const ToughnessReport report{{k_mean, k_sem}, {g_mean, g_sem}, {w_mean, w_sem}, {i_mean, i_sem},
+                                 packings,        results.front(), spec_,           per_packing};
+    Json res = results_to_json(toughness_results(), report);
     if (!quasi_static.is_null()) res["quasi_static_check"] = quasi_static;
     summary["results"] = res;
     summary["n_particles"] = r0.n_particles;
@@ -221,28 +175,140 @@ class ToughnessKind final : public SceneKind {
     half.speed_m_per_s *= 0.5;
     half.quasi_static_check = false;  // this run is the check
     const ToughnessResult slow = run_one(specimen, half, "toughness (quasi-static check, half speed)", target, nullptr);
-    const double change = 100 * (slow.peak_load_n - r.peak_load_n) / r.peak_load_n;
-    const bool quasi_static = std::abs(change) <= kQuasiStaticTolerancePercent;
+    const Json check = results_to_json(toughness_check_results(), {half.speed_m_per_s, slow, r});
+    const double change = check["peak_change_percent"].get<double>();
+    const bool quasi_static = check["verdict"] == "quasi-static";
     std::cout << fmt::format(
         "toughness: quasi-static check: the peak load changes {:+.2f} % at half the speed ({} m/s): {}\n", change,
         half.speed_m_per_s,
         quasi_static ? fmt::format("quasi-static (within {} %)", kQuasiStaticTolerancePercent)
                      : fmt::format("RATE-DEPENDENT (more than {} %): lower toughness.speed_m_per_s",
                                    kQuasiStaticTolerancePercent));
-    return Json{{"speed_m_per_s", half.speed_m_per_s},
-                {"peak_load_N", slow.peak_load_n},
-                {"peak_change_percent", change},
-                {"fracture_toughness_MPa_sqrt_m", units::pa_to_mpa(slow.fracture_toughness_pa_sqrt_m)},
-                {"fracture_energy_J_per_m2", slow.fracture_energy_j_per_m2},
-                {"fracture_energy_change_percent",
-                 100 * (slow.fracture_energy_j_per_m2 - r.fracture_energy_j_per_m2) / r.fracture_energy_j_per_m2},
-                {"tolerance_percent", kQuasiStaticTolerancePercent},
-                {"verdict", quasi_static ? "quasi-static" : "rate-dependent"},
-                {"wall_time_s", slow.wall_time_s}};
+    return check;
   }
 };
 
 }  // namespace
+
+namespace {
+/// A fracture toughness in MPa sqrt(m), held in Pa sqrt(m).
+const FieldUnit kMPaSqrtM{"MPa sqrt(m)", units::mpa_to_pa, units::pa_to_mpa};
+}  // namespace
+
+const ResultTable<ToughnessResult>& toughness_packing_results() {
+  using T = ToughnessResult;
+  static const ResultTable<T> table{
+      result_number<T>("fracture_toughness_MPa_sqrt_m", kMPaSqrtM, "K_IC from the peak of the smoothed load",
+                       [](const T& r) { return r.fracture_toughness_pa_sqrt_m; }),
+      result_value<T>("fracture_energy_J_per_m2", "J/m2", "G_c: (W_ext - dU - dK) / (B (W - a)), to broken through",
+                      [](const T& r) { return r.fracture_energy_j_per_m2; }),
+      result_value<T>("work_of_fracture_J_per_m2", "J/m2", "W_ext / (B (W - a)), to broken through",
+                      [](const T& r) { return r.work_of_fracture_j_per_m2; }),
+      result_value<T>("irwin_energy_J_per_m2", "J/m2", "K_IC^2 / E'",
+                      [](const T& r) { return r.irwin_energy_j_per_m2; }),
+      result_value<T>("peak_load_N", "N", "the peak of the smoothed load", [](const T& r) { return r.peak_load_n; }),
+      result_value<T>("raw_peak_load_N", "N", "the largest sample's load, ringing included",
+                      [](const T& r) { return r.raw_peak_load_n; }),
+      result_number<T>("raw_peak_toughness_MPa_sqrt_m", kMPaSqrtM, "K from the raw peak, for comparison",
+                       [](const T& r) { return r.raw_peak_toughness_pa_sqrt_m; }),
+      result_number<T>("deflection_at_peak_um", units::kUm, "the deflection at the smoothed peak",
+                       [](const T& r) { return r.deflection_at_peak_m; }),
+      result_value<T>("external_work_J", "J", "the load roller's work to the end",
+                      [](const T& r) { return r.external_work_j; }),
+      result_value<T>("broken_through", "", "whether the crack crossed the ligament",
+                      [](const T& r) { return r.through_sample >= 0; }),
+      result_value<T>("deflection_broken_through_um", "um", "the deflection when it had (0: never)",
+                      [](const T& r) {
+                        return r.through_sample >= 0
+                                   ? units::m_to_um(r.curve[static_cast<std::size_t>(r.through_sample)].deflection_m)
+                                   : 0.0;
+                      }),
+      result_value<T>("n_cracks", "", "broken joint elements at the end",
+                      [](const T& r) { return r.curve.back().n_cracks; }),
+      result_value<T>("n_notch_disks_removed", "", "disks removed to make the notch",
+                      [](const T& r) { return r.n_notch_disks; }),
+      result_value<T>("n_notch_joints_retired", "", "joints still crossing the notch's line, retired",
+                      [](const T& r) { return r.n_notch_joints_retired; }),
+      result_value<T>("stop_reason", "", "why the test stopped", [](const T& r) { return r.stop_reason; }),
+      result_value<T>("steps", "", "time steps", [](const T& r) { return r.steps; }),
+      result_value<T>("wall_time_s", "s", "the test's wall time", [](const T& r) { return r.wall_time_s; })};
+  return table;
+}
+
+const ResultTable<ToughnessReport>& toughness_results() {
+  using R = ToughnessReport;
+  const auto sem = [](const R& r) { return r.packings > 1; };
+  static const ResultTable<R> table{
+      result_value<R>("fracture_toughness_MPa_sqrt_m", "MPa sqrt(m)", "K_IC, the mean over the packings",
+                      [](const R& r) { return r.toughness_mpa_sqrt_m.mean; }),
+      result_value<R>("fracture_energy_J_per_m2", "J/m2", "G_c, the mean over the packings",
+                      [](const R& r) { return r.fracture_energy.mean; }),
+      result_value<R>("work_of_fracture_J_per_m2", "J/m2", "the work of fracture, the mean over the packings",
+                      [](const R& r) { return r.work_of_fracture.mean; }),
+      result_value<R>("irwin_energy_J_per_m2", "J/m2", "K_IC^2 / E', the mean over the packings",
+                      [](const R& r) { return r.irwin_energy.mean; }),
+      result_value<R>(
+          "fracture_energy_over_irwin_energy", "", "G_c / (K_IC^2 / E') of the means",
+          [](const R& r) { return r.irwin_energy.mean > 0 ? r.fracture_energy.mean / r.irwin_energy.mean : 0.0; }),
+      result_number<R>("youngs_modulus_for_irwin_GPa", units::kGPa, "the E of E' (toughness.youngs_modulus_GPa)",
+                       [](const R& r) { return r.spec.youngs_modulus_pa; }),
+      result_value<R>("packings", "", "packings tested (--replicates)", [](const R& r) { return r.packings; }),
+      result_number<R>("depth_W_mm", units::kMm, "the beam's depth W (the first packing's, measured)",
+                       [](const R& r) { return r.first.depth_m; }),
+      result_number<R>("span_S_mm", units::kMm, "the span S", [](const R& r) { return r.first.span_m; }),
+      result_number<R>("length_mm", units::kMm, "the beam's length L", [](const R& r) { return r.first.length_m; }),
+      result_number<R>("thickness_B_mm", units::kMm, "the thickness B", [](const R& r) { return r.first.thickness_m; }),
+      result_number<R>("notch_depth_a_mm", units::kMm, "the notch's depth a",
+                       [](const R& r) { return r.first.notch_m; }),
+      result_value<R>("notch_over_depth", "", "a / W", [](const R& r) { return r.first.notch_m / r.first.depth_m; }),
+      result_value<R>("geometry_factor", "", "Srawley's geometry factor at a / W",
+                      [](const R& r) { return senb_geometry_factor(r.first.notch_m / r.first.depth_m); }),
+      result_value<R>("speed_m_per_s", "m/s", "the load roller's speed",
+                      [](const R& r) { return r.spec.speed_m_per_s; }),
+      result_number<R>("peak_window_um", units::kUm, "the smoothing window of the load's peak",
+                       [](const R& r) { return r.spec.peak_window_m; }),
+      result_value<R>("per_packing", "", "each packing's results (a list; their keys below)",
+                      [](const R& r) { return r.per_packing; }),
+      result_if(result_value<R>("fracture_toughness_sem_MPa_sqrt_m", "MPa sqrt(m)", "the standard error of K_IC's mean",
+                                [](const R& r) { return r.toughness_mpa_sqrt_m.sem; }),
+                sem),
+      result_if(result_value<R>("fracture_energy_sem_J_per_m2", "J/m2", "the standard error of G_c's mean",
+                                [](const R& r) { return r.fracture_energy.sem; }),
+                sem),
+      result_if(
+          result_value<R>("work_of_fracture_sem_J_per_m2", "J/m2", "the standard error of the work of fracture's mean",
+                          [](const R& r) { return r.work_of_fracture.sem; }),
+          sem),
+      result_if(result_value<R>("irwin_energy_sem_J_per_m2", "J/m2", "the standard error of K_IC^2 / E''s mean",
+                                [](const R& r) { return r.irwin_energy.sem; }),
+                sem)};
+  return table;
+}
+
+const ResultTable<ToughnessCheck>& toughness_check_results() {
+  using C = ToughnessCheck;
+  const auto change = [](const C& c) { return 100 * (c.slow.peak_load_n - c.res.peak_load_n) / c.res.peak_load_n; };
+  static const ResultTable<C> table{
+      result_value<C>("speed_m_per_s", "m/s", "the check's speed (half the test's)",
+                      [](const C& c) { return c.speed_m_per_s; }),
+      result_value<C>("peak_load_N", "N", "the check's peak load", [](const C& c) { return c.slow.peak_load_n; }),
+      result_value<C>("peak_change_percent", "%", "the change of the peak load at half the speed", change),
+      result_number<C>("fracture_toughness_MPa_sqrt_m", kMPaSqrtM, "the check's K_IC",
+                       [](const C& c) { return c.slow.fracture_toughness_pa_sqrt_m; }),
+      result_value<C>("fracture_energy_J_per_m2", "J/m2", "the check's G_c",
+                      [](const C& c) { return c.slow.fracture_energy_j_per_m2; }),
+      result_value<C>("fracture_energy_change_percent", "%", "the change of G_c at half the speed",
+                      [](const C& c) {
+                        return 100 * (c.slow.fracture_energy_j_per_m2 - c.res.fracture_energy_j_per_m2) /
+                               c.res.fracture_energy_j_per_m2;
+                      }),
+      result_value<C>("tolerance_percent", "%", "the largest change of the peak of a quasi-static test",
+                      [](const C&) { return kQuasiStaticTolerancePercent; }),
+      result_value<C>("verdict", "", "`quasi-static` within the tolerance, else `rate-dependent`",
+                      [change](const C& c) { return std::string(quasi_static_verdict(change(c))); }),
+      result_value<C>("wall_time_s", "s", "the check's wall time", [](const C& c) { return c.slow.wall_time_s; })};
+  return table;
+}
 
 std::unique_ptr<SceneKind> make_toughness_kind() {
   return std::make_unique<ToughnessKind>();

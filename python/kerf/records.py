@@ -19,6 +19,9 @@ import statistics
 
 import numpy as np
 
+from kerf.result_keys import ActiveWindowResults as W
+from kerf.result_keys import CutResults as R
+from kerf.result_keys import ForcesCsvColumns as F
 from kerf.stats import mean_of
 
 GROOVED = ("rectangular", "trapezoidal")
@@ -45,7 +48,7 @@ def cutting_force(values, unit="N"):
 def cutting_force_column(names):
     """The cutting force's column among a forces.csv's `names`: cutting_force_N, or main_force_N in a cut written
     before 0.2.0."""
-    return "cutting_force_N" if "cutting_force_N" in names else "main_force_N"
+    return F.cutting_force_N if F.cutting_force_N in names else F.main_force_N
 
 
 def read_record(path, cuts=None):
@@ -84,9 +87,11 @@ def read_records(paths):
 def per_width(row, force):
     """A record row's `force` ('cutting' or its old name 'main', 'thrust') per mm of its width (width_mm; 1 mm where it
     has none). The cutting force is read as cutting_force_N, main_force_N in a row not read through both_names."""
-    width = row.get("width_mm", 1.0)
+    width = row.get(R.width_mm, 1.0)
     width = width if isinstance(width, float) and math.isfinite(width) and width > 0 else 1.0
-    return cutting_force(row) / width if force in ("cutting", "main") else row[f"{force}_force_N"] / width
+    if force in ("cutting", "main"):
+        return cutting_force(row) / width
+    return row[{"thrust": R.thrust_force_N}[force]] / width
 
 
 def read_experiments(path):
@@ -96,10 +101,10 @@ def read_experiments(path):
     with open(path, newline="") as f:
         for row in csv.DictReader(line for line in f if not line.startswith("#")):
             key = (row["source"], row["surface"], round(float(row["depth_of_cut_mm"]), 6))
-            width = float(row["width_mm"])
+            width = float(row[R.width_mm])
             d = out.setdefault(key, {"main": [], "thrust": []})
             d["main"].append(float(row[cutting_force_column(row)]) / width)
-            d["thrust"].append(float(row["thrust_force_N"]) / width)
+            d["thrust"].append(float(row[R.thrust_force_N]) / width)
     return out
 
 
@@ -114,9 +119,9 @@ def reference(experiments, source, surface, depth, quantity):
 
 # Steady-cut sets compared packing by packing (analysis/compare_steady_cuts.py): one row per cut; a cell left empty
 # is not known (a record entered from the documentation).
-RECORD_FIELDS = ["condition", "seed", "speed_m_per_s", "window", "disks", "damage_floor_um", "main_force_N",
-                 "main_force_sem_N", "thrust_force_N", "thrust_force_sem_N", "steady_from_travel_mm",
-                 "subsurface_damage_depth_steady_um", "cracks_subsurface_steady", "wall_time_s", "contact_share",
+RECORD_FIELDS = ["condition", "seed", "speed_m_per_s", "window", "disks", "damage_floor_um", R.main_force_N,
+                 R.main_force_sem_N, R.thrust_force_N, R.thrust_force_sem_N, R.steady_from_travel_mm,
+                 R.subsurface_damage_depth_steady_um, R.cracks_subsurface_steady, "wall_time_s", "contact_share",
                  "main_force_in_contact_N", "main_force_p99_N", "source"]
 
 TEXT_FIELDS = {"window", "source"}
@@ -143,7 +148,7 @@ def contact_statistics(item_dir, steady_from_mm):
     """Share of the steady samples with a main force > 0, mean main force over them, and its 99th percentile."""
     with open(item_dir / "forces.csv", newline="") as f:
         main = [float(r[cutting_force_column(r)]) for r in csv.DictReader(f)
-                if float(r["tool_travel_mm"]) >= steady_from_mm]
+                if float(r[F.tool_travel_mm]) >= steady_from_mm]
     touching = [x for x in main if x > 0]
     p99 = sorted(main)[min(len(main) - 1, int(0.99 * len(main)))]
     return len(touching) / len(main), statistics.mean(touching) if touching else 0.0, p99
@@ -155,13 +160,13 @@ def record_of(item_dir):
     r = both_names(s["results"])
     w = s.get("active_window")
     window = s["cut"].get("active_window", {"enabled": False})
-    share, in_contact, p99 = contact_statistics(item_dir, r["steady_from_travel_mm"])
+    share, in_contact, p99 = contact_statistics(item_dir, r[R.steady_from_travel_mm])
     record = {"condition": s["study_item"]["condition"], "seed": s["study_item"]["seed"],
               "speed_m_per_s": s["cut"]["cut"]["speed_m_per_s"],
               "window": ", ".join(f"{window[k + '_depths']:g}" for k in ("ahead", "behind", "below", "above"))
               if window["enabled"] else "none",
-              "disks": w["mean_window_particles"] if w else s["n_particles"],
-              "damage_floor_um": w["damage_depth_limit_um"] if w else math.nan,
+              "disks": w[W.mean_window_particles] if w else s["n_particles"],
+              "damage_floor_um": w[W.damage_depth_limit_um] if w else math.nan,
               "wall_time_s": s["study_item"]["wall_time_s"], "contact_share": share,
               "main_force_in_contact_N": in_contact, "main_force_p99_N": p99,
               "source": f"kerf {s['provenance']['git_commit']}, {s['provenance']['date']}"}
@@ -233,6 +238,6 @@ def intermittency(item_dir, steady_from_mm):
     samples in which the tool touches (|main force| above 0.1 N), contact, and the share of the main force's sum
     carried by the largest 5 % of the samples, top5."""
     forces = np.genfromtxt(item_dir / "forces.csv", delimiter=",", names=True)
-    main_force = forces[cutting_force_column(forces.dtype.names)][forces["tool_travel_mm"] >= steady_from_mm]
+    main_force = forces[cutting_force_column(forces.dtype.names)][forces[F.tool_travel_mm] >= steady_from_mm]
     largest = np.sort(main_force)[::-1][: len(main_force) // 20]
     return {"contact": float(np.mean(np.abs(main_force) > 0.1)), "top5": float(largest.sum() / main_force.sum())}

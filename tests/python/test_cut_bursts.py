@@ -6,6 +6,8 @@ import pytest
 
 from repo_scripts import load
 
+from kerf.result_keys import CutResults as R
+
 cb = load("analysis/cut_bursts.py")
 
 
@@ -15,8 +17,8 @@ def write_cut(folder, force, travel_mm, seed=1, steady_from_mm=0.0):
     summary = {"material": {"name": "glass"}, "specimen": {"seed": seed},
                "cut": {"cut": {"depth_of_cut_mm": 0.1}, "grooves": {"shape": "none"},
                        "active_window": {"enabled": True, "ahead_depths": 7, "behind_depths": 3, "below_depths": 4}},
-               "results": {"main_force_N": float(np.mean(force)), "steady_from_travel_mm": steady_from_mm,
-                           "steady_to_travel_mm": float(travel_mm[-1])}}
+               "results": {R.main_force_N: float(np.mean(force)), R.steady_from_travel_mm: steady_from_mm,
+                           R.steady_to_travel_mm: float(travel_mm[-1])}}
     (folder / "summary.json").write_text(json.dumps(summary))
     rows = ["tool_travel_mm,time_s,main_force_N,thrust_force_N"]
     rows += [f"{x!r},0,{f!r},0" for x, f in zip(travel_mm, force)]
@@ -25,8 +27,8 @@ def write_cut(folder, force, travel_mm, seed=1, steady_from_mm=0.0):
 
 def test_a_steady_force_spreads_its_work_and_a_spiky_one_concentrates_it(tmp_path):
     travel = np.arange(0, 100000) * 1e-4  # 10 mm in 0.1 um samples: 1000 bins of 0.01 mm
-    write_cut(tmp_path / "steady", np.full(travel.size, 0.5), travel)
-    _, _, m = cb.cut_bursts(tmp_path / "steady")
+    write_cut(tmp_path / R.steady, np.full(travel.size, 0.5), travel)
+    _, _, m = cb.cut_bursts(tmp_path / R.steady)
     assert m["work_share_top_1pc"] == pytest.approx(0.01, rel=0.02)  # 10 bins of 1000
     assert m["travel_share_half_work"] == pytest.approx(0.5, abs=0.002)
     # A background of 0.1 N (1 N mm over the 10 mm) plus 10 spikes of 0.9 N mm each, each within one bin: the top 1 %
@@ -64,9 +66,9 @@ def test_a_cut_read_only_up_to_a_travel_keeps_that_part_alone(tmp_path):
     write_cut(tmp_path / "a", force, travel)
     _, _, part = cb.cut_bursts(tmp_path / "a", to_travel_mm=5.0 - 1e-9)
     _, _, whole = cb.cut_bursts(tmp_path / "a")
-    assert part["main_force_N"] == pytest.approx(0.1)
+    assert part[R.main_force_N] == pytest.approx(0.1)
     assert part["travel_share_half_work"] == pytest.approx(0.5, abs=0.005)
-    assert whole["main_force_N"] == pytest.approx(0.2, rel=1e-3)
+    assert whole[R.main_force_N] == pytest.approx(0.2, rel=1e-3)
     assert whole["travel_share_half_work"] == pytest.approx(1 / 3, abs=0.002)
 
 

@@ -4,6 +4,8 @@ import math
 
 from repo_scripts import load
 
+from kerf.result_keys import CutResults as R
+
 ce = load("analysis/cut_energy.py")
 
 MATERIAL = {"name": "glass", "bond_effective_modulus_GPa": 100.0, "bond_stiffness_ratio": 2.0,
@@ -18,8 +20,8 @@ def write_cut(folder, main_force_n=0.5, grooves="none", seed=1, material=MATERIA
                             "seed": seed},
                "cut": {"cut": {"depth_of_cut_mm": 0.1}, "grooves": {"shape": grooves},
                        "active_window": {"enabled": True, "ahead_depths": 7, "behind_depths": 3, "below_depths": 4}},
-               "results": {"main_force_N": main_force_n, "steady_from_travel_mm": 0.5, "steady_to_travel_mm": 1.5,
-                           "steady_machined_from_x_mm": 3.0, "steady_machined_to_x_mm": 2.0}}
+               "results": {R.main_force_N: main_force_n, R.steady_from_travel_mm: 0.5, R.steady_to_travel_mm: 1.5,
+                           R.steady_machined_from_x_mm: 3.0, R.steady_machined_to_x_mm: 2.0}}
     (folder / "summary.json").write_text(json.dumps(summary))
     rows = ["time_s,x_mm,y_mm,orientation_deg,length_um,mode,bond,element,place"]
     rows += [f"0,{2.0 + 0.1 * k},0.5,0,10,tension,{k},0,subsurface" for k in range(10)]  # inside
@@ -31,8 +33,8 @@ def write_cut(folder, main_force_n=0.5, grooves="none", seed=1, material=MATERIA
 def add_books(folder):
     """The cut's energy books: work 0.6 mJ, 0.5 dissipated, 0.09 carried off as kinetic and 0.01 as strain energy."""
     summary = json.loads((folder / "summary.json").read_text())
-    summary["results"].update({"energy_tool_work_steady_J": 0.6e-3, "energy_dissipated_steady_J": 0.5e-3,
-                               "energy_left_kinetic_steady_J": 0.09e-3, "energy_left_strain_steady_J": 0.01e-3})
+    summary["results"].update({R.energy_tool_work_steady_J: 0.6e-3, R.energy_dissipated_steady_J: 0.5e-3,
+                               R.energy_left_kinetic_steady_J: 0.09e-3, R.energy_left_strain_steady_J: 0.01e-3})
     (folder / "summary.json").write_text(json.dumps(summary))
 
 

@@ -3,21 +3,23 @@ import csv
 
 from repo_scripts import load
 
+from kerf.result_keys import CutResults as R
+
 ez = load("analysis/edge_zone_pilot.py")
 
 
 def write(path, forces):
     """forces: {(surface, zone): [cutting per packing]}; the thrust is half the cutting force."""
     with open(path, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=["surface", "edge_zone", "seed", "cutting_force_N_per_mm",
-                                          "thrust_force_N_per_mm", "edge_zone_intact_share_steady",
-                                          "tied_share_behind_depth_0_25_um_steady", "subsurface_damage_depth_steady_um"])
+        w = csv.DictWriter(f, fieldnames=["surface", "edge_zone", "seed", R.cutting_force_N_per_mm,
+                                          R.thrust_force_N_per_mm, R.edge_zone_intact_share_steady,
+                                          R.tied_share_behind_depth_0_25_um_steady, R.subsurface_damage_depth_steady_um])
         w.writeheader()
         for (surface, zone), values in forces.items():
             for seed, c in enumerate(values, start=1):
-                w.writerow({"surface": surface, "edge_zone": zone, "seed": seed, "cutting_force_N_per_mm": c,
-                            "thrust_force_N_per_mm": c / 2, "edge_zone_intact_share_steady": 0.5 if zone == "on" else "",
-                            "tied_share_behind_depth_0_25_um_steady": 0.8, "subsurface_damage_depth_steady_um": 200})
+                w.writerow({"surface": surface, "edge_zone": zone, "seed": seed, R.cutting_force_N_per_mm: c,
+                            R.thrust_force_N_per_mm: c / 2, R.edge_zone_intact_share_steady: 0.5 if zone == "on" else "",
+                            R.tied_share_behind_depth_0_25_um_steady: 0.8, R.subsurface_damage_depth_steady_um: 200})
 
 
 def test_a_grooved_force_at_a_fixed_fraction_gives_that_groove_effect_exactly(tmp_path):

@@ -13,6 +13,8 @@ import numpy as np
 import pytest
 
 import kerf
+from kerf.prediction_keys import PredictionColumns as P
+from kerf.result_keys import CutResults as R
 
 SOURCE = pathlib.Path(__file__).resolve().parents[2]
 TOOLS = pathlib.Path(os.environ.get("KERF_TOOLS", SOURCE / "build" / "tools"))
@@ -51,20 +53,20 @@ def test_predict_equals_the_cli(tmp_path):
             assert row[key] == float(text), key
         else:
             assert row[key] == text, key
-    assert row["cutting_force_N"] > 0
+    assert row[P.cutting_force_N] > 0
 
 
 def test_predict_overrides_dotted_and_double_underscore(tmp_path):
     dotted = kerf.predict(str(PSIC), **{"tool.edge_radius_um": 0.2})
     underscored = kerf.predict(PSIC, tool__edge_radius_um=0.2)
     cli = cli_predict_row(tmp_path, PSIC, "tool.edge_radius_um=0.2")
-    assert dotted["cutting_force_N"] == underscored["cutting_force_N"] == float(cli["cutting_force_N"])
-    assert dotted["cutting_force_N"] != kerf.predict(PSIC)["cutting_force_N"]
+    assert dotted[P.cutting_force_N] == underscored[P.cutting_force_N] == float(cli[P.cutting_force_N])
+    assert dotted[P.cutting_force_N] != kerf.predict(PSIC)[P.cutting_force_N]
 
 
 def test_predict_from_a_dict():
     scene = json.loads(PSIC.read_text())
-    assert kerf.predict(scene)["cutting_force_N"] == kerf.predict(PSIC)["cutting_force_N"]
+    assert kerf.predict(scene)[P.cutting_force_N] == kerf.predict(PSIC)[P.cutting_force_N]
 
 
 def test_input_error_carries_field_value_expected():
@@ -90,20 +92,20 @@ def test_sweep_columns_are_arrays():
     assert isinstance(table, dict)
     assert table["cut.uncut_chip_thickness_um"].dtype == np.float64
     assert list(table["cut.uncut_chip_thickness_um"]) == thickness
-    force = table["cutting_force_N"]
+    force = table[P.cutting_force_N]
     assert force.dtype == np.float64 and len(force) == 3
     assert all(np.diff(force) > 0)
     for i, t in enumerate(thickness):
-        assert force[i] == kerf.predict(ORTHOGONAL, **{"cut.uncut_chip_thickness_um": t})["cutting_force_N"]
+        assert force[i] == kerf.predict(ORTHOGONAL, **{"cut.uncut_chip_thickness_um": t})[P.cutting_force_N]
     assert all(e is None for e in table["error"])
 
 
 def test_sweep_grid_and_refused_points():
     table = kerf.sweep(ORTHOGONAL, vary={"tool.rake_deg": [0, 95], "tool.edge_radius_um": [0.1, 0.2, 0.3]}, frame=False)
-    assert len(table["cutting_force_N"]) == 6
+    assert len(table[P.cutting_force_N]) == 6
     assert list(table["tool.rake_deg"]) == [0, 0, 0, 95, 95, 95]
-    assert not any(math.isnan(f) for f in table["cutting_force_N"][:3])
-    assert all(math.isnan(f) for f in table["cutting_force_N"][3:])
+    assert not any(math.isnan(f) for f in table[P.cutting_force_N][:3])
+    assert all(math.isnan(f) for f in table[P.cutting_force_N][3:])
     assert all("tool.rake_deg = 95" in e for e in table["error"][3:])
 
 
@@ -127,7 +129,7 @@ def test_sweep_refuses_a_key_the_scene_does_not_read():
     assert "edge_radius_um" in str(caught.value)
     # A known key whose first value is refused is that point's error, as before.
     table = kerf.sweep(ORTHOGONAL, vary={"tool.rake_deg": [95, 0]}, frame=False)
-    assert math.isnan(table["cutting_force_N"][0]) and not math.isnan(table["cutting_force_N"][1])
+    assert math.isnan(table[P.cutting_force_N][0]) and not math.isnan(table[P.cutting_force_N][1])
 
 
 def test_sweep_is_the_cli_sweep():
@@ -147,7 +149,7 @@ def test_sweep_is_the_cli_sweep():
     assert len(rows) == len(table["error"]) == 6
     for i, row in enumerate(rows):
         assert (table["error"][i] or "") == row["error"]
-        for column in ("cutting_force_N", "thrust_force_N", "shear_angle_deg"):
+        for column in (P.cutting_force_N, P.thrust_force_N, P.shear_angle_deg):
             assert (math.isnan(table[column][i]) if row[column] == "" else table[column][i] == float(row[column]))
 
 
@@ -196,8 +198,8 @@ def test_dem_run_small_cut(tmp_path):
     summary = done["summary"]
     assert summary["n_particles"] == reference["values"]["n_particles"]
     assert summary == json.loads((tmp_path / "cut" / "summary.json").read_text())
-    main = summary["results"]["main_force_N"]
-    assert main == pytest.approx(reference["values"]["main_force_N"], rel=reference["relative_tolerance"])
+    main = summary["results"][R.main_force_N]
+    assert main == pytest.approx(reference["values"][R.main_force_N], rel=reference["relative_tolerance"])
     forces, cracks = done["forces"], done["cracks"]
     with open(tmp_path / "cut" / "forces.csv", newline="") as f:
         rows = list(csv.reader(line for line in f if not line.startswith("#")))
@@ -238,10 +240,10 @@ def test_ploughing_parts_beside_the_totals():
     inside = {"cut.uncut_chip_thickness_um": 0.01}
     wave = kerf.predict(ORTHOGONAL, **inside)
     none = kerf.predict(ORTHOGONAL, **inside, **{"models.ploughing": "none"})
-    assert none["cutting_force_N"] == 0 and none["ploughing_cutting_force_N"] == 0
-    assert wave["ploughing_cutting_force_N"] > 0 and wave["ploughing_thrust_force_N"] > 0
-    assert wave["cutting_force_N"] == wave["ploughing_cutting_force_N"]
-    assert wave["thrust_force_N"] == wave["ploughing_thrust_force_N"]
+    assert none[P.cutting_force_N] == 0 and none[P.ploughing_cutting_force_N] == 0
+    assert wave[P.ploughing_cutting_force_N] > 0 and wave[P.ploughing_thrust_force_N] > 0
+    assert wave[P.cutting_force_N] == wave[P.ploughing_cutting_force_N]
+    assert wave[P.thrust_force_N] == wave[P.ploughing_thrust_force_N]
     # Above it the totals are the chip term plus the ploughing term.
     above = {"cut.uncut_chip_thickness_um": 0.5}
     wave, none = kerf.predict(ORTHOGONAL, **above), kerf.predict(ORTHOGONAL, **above, **{"models.ploughing": "none"})

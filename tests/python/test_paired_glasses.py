@@ -3,6 +3,8 @@ import math
 
 from repo_scripts import load
 
+from kerf.result_keys import CutResults as R
+
 pg = load("analysis/paired_glasses.py")
 
 
@@ -11,9 +13,9 @@ def record(main, thrust, factor=1.0, groove_factor=1.0):
     out = {}
     for surface, f in (("regular", 1.0), ("rectangular", 0.6 * groove_factor)):
         out[("default", surface, 0.1)] = {
-            s: {"main_force_N": m * f * factor, "thrust_force_N": t * f * factor, "width_mm": 1.0,
-                "cracks_subsurface_steady": 1000.0 * s, "contact_share_steady": 0.05,
-                "subsurface_damage_depth_steady_um": 300.0}
+            s: {R.main_force_N: m * f * factor, R.thrust_force_N: t * f * factor, R.width_mm: 1.0,
+                R.cracks_subsurface_steady: 1000.0 * s, R.contact_share_steady: 0.05,
+                R.subsurface_damage_depth_steady_um: 300.0}
             for s, (m, t) in enumerate(zip(main, thrust), start=1)}
     return out
 
@@ -29,7 +31,7 @@ def test_a_glass_that_scales_every_force_has_that_paired_ratio_and_the_same_groo
 def test_a_glass_that_halves_the_grooved_force_halves_the_groove_effect():
     base = record([0.5, 0.4, 0.45], [0.4, 0.3, 0.5])
     other = record([0.5, 0.4, 0.45], [0.4, 0.3, 0.5], groove_factor=0.5)
-    _, b, o = pg.paired(base, other, ("default", "rectangular", 0.1), "main_force_N")
+    _, b, o = pg.paired(base, other, ("default", "rectangular", 0.1), R.main_force_N)
     assert all(math.isclose(y, 0.5 * x) for x, y in zip(b, o))
     assert "base 0.600" in pg.compare(base, other, "default", 0.1).splitlines()[-2]
     assert "other 0.300" in pg.compare(base, other, "default", 0.1).splitlines()[-2]
@@ -38,7 +40,7 @@ def test_a_glass_that_halves_the_grooved_force_halves_the_groove_effect():
 def test_only_the_packings_both_records_have_are_paired():
     base = record([0.5, 0.4, 0.45], [0.4, 0.3, 0.5])
     other = record([0.5, 0.4], [0.4, 0.3])
-    seeds, b, o = pg.paired(base, other, ("default", "regular", 0.1), "main_force_N")
+    seeds, b, o = pg.paired(base, other, ("default", "regular", 0.1), R.main_force_N)
     assert seeds == [1, 2] and b == o
 
 
@@ -47,8 +49,8 @@ def test_a_quantity_one_record_does_not_keep_pairs_no_packing():
     other = record([0.5, 0.4, 0.45], [0.4, 0.3, 0.5])
     for rows in other.values():
         for row in rows.values():
-            del row["subsurface_damage_depth_steady_um"]
-    assert pg.paired(base, other, ("default", "regular", 0.1), "subsurface_damage_depth_steady_um")[0] == []
+            del row[R.subsurface_damage_depth_steady_um]
+    assert pg.paired(base, other, ("default", "regular", 0.1), R.subsurface_damage_depth_steady_um)[0] == []
     assert "deepest subsurface crack (um):\nshare in contact:" in pg.compare(base, other, "default", 0.1)
 
 

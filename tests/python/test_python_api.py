@@ -14,6 +14,7 @@ import numpy as np
 import pytest
 
 import kerf
+from kerf.prediction_keys import PredictionColumns as P
 
 SOURCE = pathlib.Path(__file__).resolve().parents[2]
 ORTHOGONAL = SOURCE / "data" / "scenes" / "psic_orthogonal.json"
@@ -61,11 +62,11 @@ def test_predict_types_are_stable():
 def test_sweep_types_are_stable():
     table = kerf.sweep(ORTHOGONAL, vary={"tool.rake_deg": [0, 95], "tool.edge_radius_um": [0.1, 5]})
     assert isinstance(table, dict)
-    assert table["cutting_force_N"].dtype == np.float64
+    assert table[P.cutting_force_N].dtype == np.float64
     refused = [e is not None for e in table["error"]]
     assert refused == [False, False, True, True]
     assert all(isinstance(e, str) and e for e in table["error"][2:])
-    assert np.isnan(table["cutting_force_N"][2:]).all()
+    assert np.isnan(table[P.cutting_force_N][2:]).all()
     for column in ("guards", "warnings"):
         assert table[column].dtype == object and table[column].shape == (4,)
         assert all(isinstance(cell, list) for cell in table[column])
@@ -96,7 +97,7 @@ def test_scenes_and_scene_path():
     # The bundled scene, from the data kerf reads: the source tree's, or an installed copy (pip install .).
     assert kerf.scene_path("psic_orthogonal.json") == kerf.scene_path("psic_orthogonal")
     assert kerf.scene_path("psic_orthogonal.json").read_bytes() == ORTHOGONAL.read_bytes()
-    assert kerf.predict(kerf.scene_path("psic_orthogonal"))["cutting_force_N"] > 0
+    assert kerf.predict(kerf.scene_path("psic_orthogonal"))[P.cutting_force_N] > 0
     with pytest.raises(kerf.InputError, match="did you mean 'dem_cut'"):
         kerf.scene_path("dem_cutt")
 

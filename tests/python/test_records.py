@@ -5,13 +5,16 @@ import statistics
 
 import kerf.records as kr
 
+from kerf.result_keys import CutResults as R
+from kerf.result_keys import ForcesCsvColumns as F
+
 
 def test_two_cuts_of_one_condition_on_one_packing_are_an_error_not_a_silent_choice(tmp_path):
     # A record of two disk sizes, both regular 0.1 mm in the default window on packing 1: read as one condition,
     # one cut would replace the other.
     with open(tmp_path / "record.csv", "w", newline="") as f:
         w = csv.writer(f)
-        w.writerow(["domain", "surface", "depth_of_cut_mm", "seed", "radius_min_um", "main_force_N"])
+        w.writerow(["domain", "surface", "depth_of_cut_mm", "seed", "radius_min_um", R.main_force_N])
         w.writerow(["default", "regular", 0.1, 1, 10, 0.27])
         w.writerow(["default", "regular", 0.1, 1, 5, 0.37])
     try:
@@ -28,7 +31,7 @@ def test_records_merge_and_forces_are_per_mm_of_width(tmp_path):
     for name, rows in (("a.csv", [[1, 0.8, 2.0], [2, 0.9, 2.0]]), ("b.csv", [[3, 0.3, ""]])):
         with open(tmp_path / name, "w", newline="") as f:
             w = csv.writer(f)
-            w.writerow(["domain", "surface", "depth_of_cut_mm", "seed", "main_force_N", "width_mm"])
+            w.writerow(["domain", "surface", "depth_of_cut_mm", "seed", R.main_force_N, R.width_mm])
             for seed, force, width in rows:
                 w.writerow(["large", "rectangular", 0.2, seed, force, width])
     cuts = kr.read_records([tmp_path / "a.csv", tmp_path / "b.csv"])
@@ -55,25 +58,25 @@ def test_a_reference_is_the_mean_of_its_tests_per_mm_and_grooved_for_both_groove
 def test_the_cutting_force_is_read_under_either_name(tmp_path):
     # kerf-dem 0.1.0's records name it main_force_N; 0.2.0 writes cutting_force_N beside it, 0.3.0 only the latter
     # (issue 55 item 5): a record of either kind reads the same, under both names, per mm alike.
-    for name, column in (("old.csv", "main_force_N"), ("new.csv", "cutting_force_N")):
+    for name, column in (("old.csv", R.main_force_N), ("new.csv", R.cutting_force_N)):
         with open(tmp_path / name, "w", newline="") as f:
             w = csv.writer(f)
             w.writerow(["domain", "surface", "depth_of_cut_mm", "seed", column, column.replace("_N", "_sem_N"),
-                        "thrust_force_N", "width_mm"])
+                        R.thrust_force_N, R.width_mm])
             w.writerow(["default", "regular", 0.1, 1, 0.8, 0.05, 0.4, 2.0])
     for name in ("old.csv", "new.csv"):
         row = kr.read_record(tmp_path / name)[("default", "regular", 0.1)][1]
-        assert row["cutting_force_N"] == row["main_force_N"] == 0.8, (name, row)
-        assert row["cutting_force_sem_N"] == row["main_force_sem_N"] == 0.05, (name, row)
+        assert row[R.cutting_force_N] == row[R.main_force_N] == 0.8, (name, row)
+        assert row[R.cutting_force_sem_N] == row[R.main_force_sem_N] == 0.05, (name, row)
         assert kr.per_width(row, "cutting") == kr.per_width(row, "main") == 0.4
     # A cut's forces.csv: the cutting force's column whichever the file has.
-    assert kr.cutting_force_column(["tool_travel_mm", "main_force_N"]) == "main_force_N"
-    assert kr.cutting_force_column(["tool_travel_mm", "cutting_force_N", "main_force_N"]) == "cutting_force_N"
+    assert kr.cutting_force_column([F.tool_travel_mm, R.main_force_N]) == R.main_force_N
+    assert kr.cutting_force_column([F.tool_travel_mm, R.cutting_force_N, R.main_force_N]) == R.cutting_force_N
     # A row that has both keeps each (no overwrite): the new name's value stays the new name's.
-    both = kr.both_names({"cutting_force_N": 1.0, "main_force_N": 2.0})
-    assert both == {"cutting_force_N": 1.0, "main_force_N": 2.0}
+    both = kr.both_names({R.cutting_force_N: 1.0, R.main_force_N: 2.0})
+    assert both == {R.cutting_force_N: 1.0, R.main_force_N: 2.0}
     # A summary's results, an items.csv row, a travel window read as they are (analysis/): the new name first.
-    assert kr.cutting_force({"main_force_N": 2.0}) == 2.0
-    assert kr.cutting_force({"cutting_force_N": 1.0, "main_force_N": 2.0}) == 1.0
-    assert kr.cutting_force({"main_force_sem_N": 0.1}, "sem_N") == 0.1
-    assert kr.per_width({"main_force_N": 0.8, "width_mm": 2.0}, "cutting") == 0.4
+    assert kr.cutting_force({R.main_force_N: 2.0}) == 2.0
+    assert kr.cutting_force({R.cutting_force_N: 1.0, R.main_force_N: 2.0}) == 1.0
+    assert kr.cutting_force({R.main_force_sem_N: 0.1}, "sem_N") == 0.1
+    assert kr.per_width({R.main_force_N: 0.8, R.width_mm: 2.0}, "cutting") == 0.4

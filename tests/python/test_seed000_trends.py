@@ -9,6 +9,8 @@ import kerf.records as kr
 import kerf.stats as ks
 from repo_scripts import load
 
+from kerf.result_keys import CutResults as R
+
 st = load("validation/soda_lime_cutting_steady/trends.py")
 
 
@@ -17,8 +19,8 @@ def write_record(path, means, n=8, spread=0.02, seed=3):
     rng = random.Random(seed)
     with open(path, "w", newline="") as f:
         w = csv.writer(f)
-        w.writerow(["condition", "domain", "surface", "depth_of_cut_mm", "seed", "main_force_N", "thrust_force_N",
-                    "width_mm", "subsurface_damage_depth_steady_um", "cracks_subsurface_steady", "scene_fnv1a64"])
+        w.writerow(["condition", "domain", "surface", "depth_of_cut_mm", "seed", R.main_force_N, R.thrust_force_N,
+                    R.width_mm, R.subsurface_damage_depth_steady_um, R.cracks_subsurface_steady, "scene_fnv1a64"])
         for c, ((domain, surface, depth), m) in enumerate(means.items()):
             for k in range(n):
                 v = m * (1 + rng.gauss(0, spread))
@@ -30,8 +32,8 @@ def write_experiments(path, regular, grooved):
     with open(path, "w", newline="") as f:
         f.write("# synthetic\n")
         w = csv.writer(f)
-        w.writerow(["source", "surface", "depth_of_cut_mm", "replicate", "width_mm", "main_force_N",
-                    "thrust_force_N"])
+        w.writerow(["source", "surface", "depth_of_cut_mm", "replicate", R.width_mm, R.main_force_N,
+                    R.thrust_force_N])
         for surface, level in (("regular", regular), ("grooved", grooved)):
             for depth in (0.1, 0.2):
                 for k, e in enumerate((-0.02, 0.0, 0.02)):
@@ -175,13 +177,13 @@ def test_damage_floors_are_the_nearer_of_the_window_floor_and_the_workpiece_bott
 
 
 def test_report_marks_a_damage_depth_at_the_floor_censored():
-    cuts = {("large", "regular", 0.1): {1: {"subsurface_damage_depth_steady_um": 885.0},
-                                          2: {"subsurface_damage_depth_steady_um": 500.0}}}
+    cuts = {("large", "regular", 0.1): {1: {R.subsurface_damage_depth_steady_um: 885.0},
+                                          2: {R.subsurface_damage_depth_steady_um: 500.0}}}
     lines = st.damage_section(cuts, {("large", "regular", 0.1): (900.0, 26.0)})
     row = next(line for line in lines if line.startswith("| large | regular"))
     assert row.endswith("| 900 | 1 of 2 |")
     assert not any("Every cut's damage reaches it" in line for line in lines)
-    cuts[("large", "regular", 0.1)][2]["subsurface_damage_depth_steady_um"] = 880.0
+    cuts[("large", "regular", 0.1)][2][R.subsurface_damage_depth_steady_um] = 880.0
     assert any("Every cut's damage reaches it" in line for line in st.damage_section(
         cuts, {("large", "regular", 0.1): (900.0, 26.0)}))
 
@@ -190,9 +192,9 @@ def test_cost_follows_the_packing_spread_and_the_cut_time():
     # Main forces 0.9, 1.0, 1.1 N per mm: cv = 0.1 exactly; 10 % needs (0.1 / 0.1)^2 = 1 -> at least 2 packings,
     # 5 % needs 4; CPU 360 s per cut (median of 300, 360, 900) -> 0.2 and 0.4 CPU-hours.
     cuts = {("default", "regular", 0.1): {
-        k + 1: {"main_force_N": f, "width_mm": 1.0, "cpu_time_s": c} for k, (f, c) in
+        k + 1: {R.main_force_N: f, R.width_mm: 1.0, "cpu_time_s": c} for k, (f, c) in
         enumerate(((0.9, 300.0), (1.0, 360.0), (1.1, 900.0)))},
-        ("large", "regular", 0.1): {1: {"main_force_N": 1.0, "width_mm": 1.0, "cpu_time_s": 1000.0}}}
+        ("large", "regular", 0.1): {1: {R.main_force_N: 1.0, R.width_mm: 1.0, "cpu_time_s": 1000.0}}}
     by = {r["domain"]: r for r in st.costs(cuts)}
     d = by["default"]
     assert math.isclose(d["main_force_cv"], 0.1, rel_tol=1e-12)

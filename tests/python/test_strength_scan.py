@@ -7,10 +7,12 @@ import pytest
 
 from repo_scripts import load
 
+from kerf.result_keys import CutResults as R
+
 ss = load("analysis/strength_scan.py")
 
-COLUMNS = ["domain", "surface", "depth_of_cut_mm", "seed", "main_force_N", "thrust_force_N", "width_mm",
-           "cracks_subsurface_steady", "subsurface_damage_depth_steady_um"]
+COLUMNS = ["domain", "surface", "depth_of_cut_mm", "seed", R.main_force_N, R.thrust_force_N, R.width_mm,
+           R.cracks_subsurface_steady, R.subsurface_damage_depth_steady_um]
 
 
 def write_record(path, regular_main, groove_factor, width_mm=1.0):

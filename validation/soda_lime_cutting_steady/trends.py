@@ -45,6 +45,7 @@ import statistics
 import sys
 
 from kerf.records import GROOVED, per_width, read_experiments, read_records, reference
+from kerf.result_keys import CutResults as R
 from kerf.stats import combination, difference, mean_of, packings_factor, ratio, verdict
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
@@ -148,8 +149,8 @@ def trends(src):
         for surface in GROOVED:
             add(f"subsurface cracks under the steady cut, {surface} / regular at {depth} mm", "ratio",
                 [(surface, depth), ("regular", depth)],
-                lambda dom, s=surface, d=depth: ratio(src.kerf(dom, s, d, "cracks_subsurface_steady"),
-                                                     src.kerf(dom, "regular", d, "cracks_subsurface_steady")),
+                lambda dom, s=surface, d=depth: ratio(src.kerf(dom, s, d, R.cracks_subsurface_steady),
+                                                     src.kerf(dom, "regular", d, R.cracks_subsurface_steady)),
                 None)
     return out
 
@@ -183,7 +184,7 @@ def damage_section(cuts, floors):
           "censored |", "|---|---|---:|---:|---:|---:|---:|"]
     censored_all = True
     for key in sorted(cuts):
-        depths = [r.get("subsurface_damage_depth_steady_um", math.nan) for r in cuts[key].values()]
+        depths = [r.get(R.subsurface_damage_depth_steady_um, math.nan) for r in cuts[key].values()]
         depths = [d for d in depths if isinstance(d, float) and math.isfinite(d)]
         if not depths or key not in floors:
             continue

@@ -132,6 +132,11 @@ std::vector<std::string> scene_sections();
 /// The Markdown key table of one section (all of them when `section` is empty), as docs/dem-keys.md holds them;
 /// InputError listing the sections for an unknown one.
 std::string scene_keys_markdown(const std::string& section = "");
+/// The result tables of the kinds (kerf/result_table.hpp) as Markdown, as docs/dem-keys.md holds them: what each
+/// writes into summary.json (kerf-dem results).
+std::string scene_results_markdown();
+/// The result keys as the Python module kerf.result_keys (python/kerf/result_keys.py; kerf-dem results --python).
+std::string result_keys_python();
 
 struct Scene {
   std::string kind_name;

@@ -17,6 +17,7 @@
 #include "kerf/analytic/guards.hpp"
 #include "kerf/analytic/kinds/cells.hpp"
 #include "kerf/analytic/kinds/scene.hpp"
+#include "kerf/result_table.hpp"
 
 namespace kerf {
 
@@ -56,6 +57,66 @@ struct Prediction {
 
 /// Throws InputError for input the models cannot accept and ModelError when a solver fails.
 Prediction predict(const AnalyticScene& scene);
+
+/// The keys of an orthogonal prediction's row (its CSV, kerf.predict's dict) and report: one constant each.
+namespace prediction_keys {
+KERF_RESULT_KEY(force_model)
+KERF_RESULT_KEY(material)
+KERF_RESULT_KEY(rake_deg)
+KERF_RESULT_KEY(edge_radius_um)
+KERF_RESULT_KEY(clearance_deg)
+KERF_RESULT_KEY(speed_m_per_min)
+KERF_RESULT_KEY(workpiece_temperature_K)
+KERF_RESULT_KEY(scene_friction_angle_deg)
+KERF_RESULT_KEY(uncut_chip_thickness_um)
+KERF_RESULT_KEY(width_mm)
+KERF_RESULT_KEY(cutting_force_N)
+KERF_RESULT_KEY(thrust_force_N)
+KERF_RESULT_KEY(ploughing_cutting_force_N)
+KERF_RESULT_KEY(ploughing_thrust_force_N)
+KERF_RESULT_KEY(cutting_force_N_per_mm)
+KERF_RESULT_KEY(thrust_force_N_per_mm)
+KERF_RESULT_KEY(shear_angle_deg)
+KERF_RESULT_KEY(friction_angle_deg)
+KERF_RESULT_KEY(chip_ratio)
+KERF_RESULT_KEY(chip_thickness_um)
+KERF_RESULT_KEY(flow_stress_MPa)
+KERF_RESULT_KEY(shear_flow_stress_MPa)
+KERF_RESULT_KEY(johnson_cook_stress_MPa)
+KERF_RESULT_KEY(hall_petch_stress_MPa)
+KERF_RESULT_KEY(dislocation_stress_MPa)
+KERF_RESULT_KEY(hardness_flow_stress_MPa)
+KERF_RESULT_KEY(strain)
+KERF_RESULT_KEY(strain_rate_per_s)
+KERF_RESULT_KEY(temperature_K)
+KERF_RESULT_KEY(feed_um_per_rev)
+KERF_RESULT_KEY(depth_of_cut_um)
+KERF_RESULT_KEY(maximum_chip_thickness_um)
+KERF_RESULT_KEY(equivalent_chip_thickness_um)
+KERF_RESULT_KEY(engaged_edge_length_mm)
+KERF_RESULT_KEY(critical_depth_nm)
+KERF_RESULT_KEY(regime)
+KERF_RESULT_KEY(within_model_range)
+KERF_RESULT_KEY(guards)
+KERF_RESULT_KEY(warnings)
+}  // namespace prediction_keys
+
+/// A prediction as its row and report see it: the scene and the prediction.
+struct PredictionReport {
+  const AnalyticScene& scene;
+  const Prediction& p;
+};
+/// The row's columns before the models' own (the inputs echoed, the forces, the chip, the flow stress and its
+/// state), in order; a column the scene's models leave out is not present, an empty cell is null.
+const ResultTable<PredictionReport>& prediction_results();
+/// The row's columns after the models' own: the turning cut's, the critical depth and the verdicts.
+const ResultTable<PredictionReport>& prediction_verdict_results();
+
+/// The columns as a Markdown table (kerf-forces results; docs/scenes.md holds it).
+std::string prediction_columns_markdown();
+/// The columns as the Python module kerf.prediction_keys (kerf-forces results --python;
+/// python/kerf/prediction_keys.py).
+std::string prediction_keys_python();
 
 /// One CSV row: (column name with unit, formatted value). The column set depends only on the scene's
 /// model choices, so every row of a sweep has the same columns.

@@ -1,0 +1,124 @@
+"""No result key is written or read as a literal outside its table (issue 56 item 1): kerf-dem's cut results and
+kerf-forces' prediction columns are named once, in their result tables (dem/procedures/cut_results.cpp,
+analytic/kinds/predict.cpp), and read by name, through the constants of kerf/dem/procedures/cut_results.hpp and
+kerf/analytic/kinds/predict.hpp (C++) or kerf.result_keys and kerf.prediction_keys (Python, generated from the tables:
+tests/cli/dem_results_cli.sh, tests/cli/forces_results_cli.sh). A quoted key in any other C++, Python or shell source
+(comments aside) fails here unless the file is in ALLOWED below, with the keys it may quote and why. Data files
+(records, studies, docs) are not sources."""
+import importlib.util
+import pathlib
+import re
+
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+SOURCES = ("*.cpp", "*.hpp", "*.h", "*.py", "*.sh")
+# Names other parts of kerf also use for something else, not checked: input keys (specimen.width_mm, tool.rake_deg,
+# a law's friction_angle_deg, Johnson-Cook's strain_rate_per_s, the models' chip_ratio), the trepanning kind's own
+# columns (critical_depth_nm, regime, guards, warnings), plain words.
+SHARED = {"width_mm", "time_s", "samples", "steady", "force_model", "material", "rake_deg", "edge_radius_um",
+          "clearance_deg", "speed_m_per_min", "workpiece_temperature_K", "scene_friction_angle_deg",
+          "uncut_chip_thickness_um", "friction_angle_deg", "chip_ratio", "strain", "strain_rate_per_s", "temperature_K",
+          "feed_um_per_rev", "depth_of_cut_um", "critical_depth_nm", "regime", "within_model_range", "guards",
+          "warnings"}
+OUTPUT_TESTS = "an end-to-end test of the written output: the literal is the format users read, a rename must fail it"
+ALLOWED = {
+    # What the keys are written in, and generated from.
+    "python/kerf/result_keys.py": (None, "generated from the result tables (kerf-dem results --python)"),
+    "python/kerf/prediction_keys.py": (None, "generated from the result table (kerf-forces results --python)"),
+    # Input keys named as the results they stand for.
+    "analytic/kinds/scene.cpp": ({"cutting_force_N", "thrust_force_N"}, "compare's measured forces (input keys)"),
+    "dem/procedures/cut_params.cpp": ({"cutting_force_N_per_mm", "thrust_force_N_per_mm"},
+                                      "the edge zone's given layer forces (input keys)"),
+    # An error naming the quantity in the physics layer, which the prediction's table (kinds/) is built on.
+    "analytic/forces/merchant.cpp": ({"shear_angle_deg"}, "an InputError naming the shear angle"),
+    # Documentation in code.
+    "python/kerf_api.py": ({"cutting_force_N"}, "a docstring's example of kerf.predict"),
+    # A report that runs kerf-forces without the kerf module (its own interpreter's path only).
+    "validation/glass_transition/report.py": ({"cutting_force_N_per_mm", "thrust_force_N_per_mm"},
+                                              "reads kerf-forces' CSV without the kerf module"),
+    # Own outputs named after a result, not reads of one.
+    "analysis/strength_scan.py": ({"cracks_subsurface"}, "its own table's column (the steady count)"),
+    # The tests of the written format.
+    "tests/cli/*.sh": (None, OUTPUT_TESTS),
+    "tests/bench/*.sh": (None, OUTPUT_TESTS),
+    "tests/dem/*.cpp": (None, OUTPUT_TESTS),
+    "tests/core/*.cpp": (None, OUTPUT_TESTS),
+    "tests/analytic/*.cpp": (None, OUTPUT_TESTS),
+    "tests/release/*.sh": (None, OUTPUT_TESTS),
+    # This test.
+    "tests/python/test_result_key_literals.py": (None, "the test itself"),
+}
+
+
+def generated(name):
+    """A generated module of python/kerf/ (the source's: the build's copy may be older)."""
+    spec = importlib.util.spec_from_file_location(name, ROOT / "python" / "kerf" / f"{name}.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def result_keys():
+    dem, analytic = generated("result_keys"), generated("prediction_keys")
+    keys = set(analytic.keys(analytic.PredictionColumns))
+    for table in (dem.CutResults, dem.TravelWindowResults, dem.ActiveWindowResults, dem.ForcesCsvColumns):
+        keys |= set(dem.keys(table))
+    return keys
+
+
+def sources(root):
+    for pattern in SOURCES:
+        for path in root.rglob(pattern):
+            rel = path.relative_to(root)
+            if rel.parts[0].startswith(("build", ".")) or any(p.startswith(".") for p in rel.parts):
+                continue
+            yield rel
+
+
+def allowed(rel, key):
+    for pattern, (keys, _) in ALLOWED.items():
+        if rel.match(pattern) and (keys is None or key in keys):
+            return True
+    return False
+
+
+def code_of(rel, line):
+    """The line without its comment (a comment may quote a key: it neither writes nor reads one)."""
+    marker = "//" if rel.suffix in (".cpp", ".hpp", ".h") else "#"
+    stripped = line.lstrip()
+    if stripped.startswith(marker) or stripped.startswith("*"):
+        return ""
+    at = line.find(" " + marker + " ")
+    return line if at < 0 else line[:at]
+
+
+def offenders(keys, root=ROOT):
+    quoted = re.compile(r'''(["'])(%s)\1''' % "|".join(sorted(map(re.escape, keys), key=len, reverse=True)))
+    found = []
+    for rel in sources(root):
+        for number, line in enumerate((root / rel).read_text(errors="replace").splitlines(), 1):
+            for m in quoted.finditer(code_of(rel, line)):
+                if not allowed(rel, m.group(2)):
+                    found.append(f"{rel}:{number}: {m.group(2)}")
+    return found
+
+
+def test_no_result_key_literal_outside_its_table():
+    keys = result_keys() - SHARED
+    found = offenders(keys)
+    assert not found, ("result keys quoted outside their tables (use the constants of kerf/dem/procedures/"
+                       "cut_results.hpp or kerf/analytic/kinds/predict.hpp, or kerf.result_keys or kerf.prediction_keys; "
+                       "or list the file in ALLOWED with the reason):\n" + "\n".join(found))
+
+
+def test_the_check_finds_a_literal(tmp_path):
+    keys = result_keys() - SHARED
+    assert "subsurface_damage_depth_steady_um" in keys and "steady_from_travel_mm" in keys
+    (tmp_path / "analysis").mkdir()
+    (tmp_path / "analysis" / "reader.py").write_text(
+        "depth = results['subsurface_damage_depth_steady_um']  # the steady damage\n"
+        "# results['steady_from_travel_mm'] in a comment is no read\n"
+        "start = results[R.steady_from_travel_mm]\n")
+    (tmp_path / "reader.cpp").write_text('const double x = r.at("steady_from_travel_mm");  // "cracks_chip"\n')
+    assert sorted(offenders(keys, tmp_path)) == ["analysis/reader.py:1: subsurface_damage_depth_steady_um",
+                                         "reader.cpp:1: steady_from_travel_mm"]
