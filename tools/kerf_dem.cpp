@@ -1,5 +1,6 @@
 // kerf-dem: the 2D bonded-particle DEM with flat joints (issue 4), a thin front end to the library
-// (kerf/dem/scene.hpp: the scene kinds, replicates, checkpoints).
+// (kerf/dem/scene.hpp: the scene kinds, replicates, checkpoints). Its command line is a function, kerf_dem_main
+// (kerf_dem.hpp), which kerf-dem's main (kerf_dem_main.cpp) and the test suite's twin with its own kinds call.
 //
 //   kerf-dem run SCENE.json [--set key.path=value]... [--out DIR] [--threads N] [--checkpoint-every N] [--replicates N]
 //                [--log-every N]   (log lines on stdout when it is not a terminal)
@@ -13,6 +14,8 @@
 // Exit status 2 for bad input (the message names the field, the value and what was expected), 3 when the
 // model fails (e.g. an unstable run, a calibration that does not converge, a damaged checkpoint), 4 when an
 // output cannot be written (the directory is checked before any work).
+#include "kerf_dem.hpp"
+
 #include <fmt/format.h>
 #include <omp.h>
 #include <unistd.h>
@@ -94,7 +97,7 @@ int keys_command(const std::string& section) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int kerf::dem::kerf_dem_main(int argc, char** argv) {
   CLI::App app{"kerf-dem: 2D bonded-particle DEM with Potyondy's flat joint"};
   app.require_subcommand(1);
   app.set_version_flag("--version", kerf::version_line(kProgram));

@@ -213,6 +213,7 @@ void print_evaluation(const CalibrationEvaluation& e, bool toughness) {
 
 class CalibrateKind final : public SceneKind {
  public:
+  std::string name() const override { return "calibrate"; }
   bool writes_checkpoints() const override { return true; }
   void read(ObjectReader& root, const SceneCommon& common) override {
     auto& c = spec_;
@@ -264,14 +265,14 @@ class CalibrateKind final : public SceneKind {
   }
 
   SceneOutcome run(const SceneCommon& common, const SceneRun& run) override {
-    StartedSources started = start_specimen_sources(common, "calibrate", spec_.packings, progress_target(run.options));
+    StartedSources started = start_specimen_sources(common, name(), spec_.packings, progress_target(run.options));
     return calibrate_from(common, run, started.sources, std::move(started.summary), {}, beams(common, run));
   }
 
   /// The specimens are built again (a genesis or a specimen file is deterministic); the checkpoint holds the
   /// summary's head and the evaluations.
   SceneOutcome resume(const SceneCommon& common, const SceneRun& run, const Checkpoint& c) override {
-    StartedSources started = start_specimen_sources(common, "calibrate", spec_.packings, progress_target(run.options));
+    StartedSources started = start_specimen_sources(common, name(), spec_.packings, progress_target(run.options));
     return calibrate_from(common, run, started.sources, c.summary, deserialize_evaluations(c.run), beams(common, run));
   }
 

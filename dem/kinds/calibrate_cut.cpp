@@ -67,6 +67,7 @@ Json calibration_section(ObjectReader& root) {
 
 class CalibrateCutKind final : public SceneKind {
  public:
+  std::string name() const override { return "calibrate_cut"; }
   void read(ObjectReader& root, const SceneCommon&) override {
     cut_ = read_cut_params(root);
     const Json section = calibration_section(root);
@@ -176,7 +177,7 @@ class CalibrateCutKind final : public SceneKind {
         units::m_to_mm(cut_.length_m), cut_.rake_deg, groove_shape_names().name(cut_.groove_shape));
     const Json material = library_material_json(named, "Flat-joint DEM material fitted to one measured cut by kerf-dem",
                                                 description, "kerf-dem calibrate_cut (see description)");
-    Json summary = summary_head("calibrate_cut", common.material);
+    Json summary = summary_head(name(), common.material);
     summary["cut"] = cut_params_to_json(cut_);
     write_material_output(output_, material, out, summary);
     summary["results"] = results_to_json(calibrate_cut_results(), {converged, fit.target_main_force_n,

@@ -154,7 +154,7 @@ void write_material_output(const MaterialOutput& output, const Json& material, c
 SceneOutcome run_cut_replicates(const Json& cut_scene, const std::string& scene_dir, const CutParams& cut,
                                 int replicates, Json summary, const RunOptions& options);
 
-// The kinds (one file each under dem/kinds/), constructed by the registry.
+// The kinds (one file each under dem/kinds/; each names itself, SceneKind::name), constructed by the registry.
 std::unique_ptr<SceneKind> make_specimen_kind();
 std::unique_ptr<SceneKind> make_tension_kind();
 std::unique_ptr<SceneKind> make_compression_kind();
@@ -162,8 +162,6 @@ std::unique_ptr<SceneKind> make_calibrate_kind();
 std::unique_ptr<SceneKind> make_cut_kind();
 std::unique_ptr<SceneKind> make_calibrate_cut_kind();
 std::unique_ptr<SceneKind> make_toughness_kind();
-/// Test-only (KERF_DEM_TEST_KINDS=1): kind "synthetic", a result of known distribution (dem/kinds/synthetic.cpp).
-std::unique_ptr<SceneKind> make_synthetic_kind();
 
 }  // namespace kerf::dem::kinds
 

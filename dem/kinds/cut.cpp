@@ -145,6 +145,7 @@ Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& d
 
 class CutKind final : public SceneKind {
  public:
+  std::string name() const override { return "cut"; }
   void read(ObjectReader& root, const SceneCommon& common) override {
     cut_ = read_cut_params(root);
     set_edge_zone_force(cut_, common.material);
@@ -160,8 +161,8 @@ class CutKind final : public SceneKind {
   SceneOutcome run(const SceneCommon& common, const SceneRun& run) override {
     const RunOptions& o = run.options;
     if (o.replicates > 1)
-      return run_cut_replicates(run.doc, run.scene_dir, cut_, o.replicates, summary_head("cut", common.material), o);
-    StartedRun started = start_from_specimen(common, "cut", progress_target(o));
+      return run_cut_replicates(run.doc, run.scene_dir, cut_, o.replicates, summary_head(name(), common.material), o);
+    StartedRun started = start_from_specimen(common, name(), progress_target(o));
     const Simulation& specimen = started.specimen;
     Json& summary = started.summary;
     // CutRun checks the cut against the workpiece and the time step before the first step.

@@ -54,6 +54,7 @@ LabTestResult run_test(const Simulation& specimen, const LoadingSpec& loading, c
 class LabTestKind final : public SceneKind {
  public:
   explicit LabTestKind(LabTest test) : test_(test) {}
+  std::string name() const override { return lab_test_names().name(test_); }
   bool writes_checkpoints() const override { return true; }
 
   void read(ObjectReader& root, const SceneCommon&) override {
@@ -84,8 +85,6 @@ class LabTestKind final : public SceneKind {
  private:
   LabTest test_;
   LoadingSpec loading_;
-
-  std::string name() const { return lab_test_names().name(test_); }
 
   /// Runs (or continues) the test to its end, then the quasi-static check and the outputs.
   // Long (~80 lines) for a reason: each sample interleaves steps, the sample, checkpoints, frames and progress on

@@ -1,8 +1,10 @@
-// The scene-kind registry: one line per kind; a scene names its kind and only that one is constructed.
-#include <array>
-#include <cstdlib>
-#include <string_view>
-#include <utility>
+// The scene-kind registry: the library's kinds as one initializer list (a kind is its file under dem/kinds/ and
+// one line here), each naming itself (SceneKind::name), then the kinds a program registers (register_scene_kind).
+// One object of each kind is made, once, to learn the names; a scene's kind is then made by its name alone.
+#include <initializer_list>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "common.hpp"
 #include "kerf/error.hpp"
@@ -10,32 +12,48 @@
 namespace kerf::dem {
 
 namespace {
-using Factory = std::unique_ptr<SceneKind> (*)();
-constexpr std::array<std::pair<std::string_view, Factory>, 7> kKinds{{
-    {"specimen", kinds::make_specimen_kind},
-    {"tension", kinds::make_tension_kind},
-    {"compression", kinds::make_compression_kind},
-    {"calibrate", kinds::make_calibrate_kind},
-    {"cut", kinds::make_cut_kind},
-    {"calibrate_cut", kinds::make_calibrate_cut_kind},
-    {"toughness", kinds::make_toughness_kind},
-}};
+struct Registered {
+  std::string name;
+  SceneKindFactory make;
+};
+
+/// The registered kinds in order: the library's, named by an object of each made once, then those added.
+std::vector<Registered>& registry() {
+  static std::vector<Registered> kinds = [] {
+    const std::initializer_list<SceneKindFactory> library{
+        kinds::make_specimen_kind,       // specimen.cpp
+        kinds::make_tension_kind,        // lab_test.cpp
+        kinds::make_compression_kind,    // lab_test.cpp
+        kinds::make_calibrate_kind,      // calibrate.cpp
+        kinds::make_cut_kind,            // cut.cpp
+        kinds::make_calibrate_cut_kind,  // calibrate_cut.cpp
+        kinds::make_toughness_kind,      // toughness.cpp
+    };
+    std::vector<Registered> out;
+    for (SceneKindFactory make : library) out.push_back({make()->name(), make});
+    return out;
+  }();
+  return kinds;
+}
 }  // namespace
 
 std::vector<std::string> scene_kind_names() {
   std::vector<std::string> names;
-  for (const auto& [name, factory] : kKinds) names.emplace_back(name);
+  for (const Registered& kind : registry()) names.push_back(kind.name);
   return names;
 }
 
 std::unique_ptr<SceneKind> make_scene_kind(const std::string& name, const std::string& path) {
-  for (const auto& [known, factory] : kKinds)
-    if (known == name) return factory();
-  // A kind for the test suite only (a result of known distribution), not listed among the kinds.
-  if (const char* tests = std::getenv("KERF_DEM_TEST_KINDS");
-      tests && std::string_view(tests) == "1" && name == "synthetic")
-    return kinds::make_synthetic_kind();
+  for (const Registered& kind : registry())
+    if (kind.name == name) return kind.make();
   throw InputError(path, name, describe_choices(name, scene_kind_names()));
+}
+
+void register_scene_kind(SceneKindFactory make) {
+  std::string name = make()->name();
+  for (const Registered& kind : registry())
+    if (kind.name == name) throw std::logic_error("register_scene_kind: kind '" + name + "' is registered already");
+  registry().push_back({std::move(name), make});
 }
 
 }  // namespace kerf::dem

@@ -15,6 +15,7 @@ namespace {
 
 class SpecimenKind final : public SceneKind {
  public:
+  std::string name() const override { return "specimen"; }
   void read(ObjectReader&, const SceneCommon&) override {}
 
   void check_options(const RunOptions& options, const SceneCommon& common) const override {
@@ -26,14 +27,14 @@ class SpecimenKind final : public SceneKind {
 
   SceneOutcome run(const SceneCommon& common, const SceneRun& run) override {
     const fs::path& out = run.options.out;
-    StartedRun started = start_from_specimen(common, "specimen", progress_target(run.options));
+    StartedRun started = start_from_specimen(common, name(), progress_target(run.options));
     const Simulation& specimen = started.specimen;
     Json& summary = started.summary;
     const SpecimenReport& report = started.report;
     const double genesis_s = summary["specimen"]["genesis_wall_time_s"].get<double>();
     save_specimen((out / "specimen.json").string(), specimen, started.spec, report);
     write_vtp_frame(out / "specimen.vtp", specimen);
-    write_specimen_png(out / "specimen.png", specimen, "specimen");
+    write_specimen_png(out / "specimen.png", specimen, name());
     summary["n_particles"] = report.n_particles;
     summary["steps"] = report.genesis_steps;
     summary["wall_time_s"] = genesis_s;

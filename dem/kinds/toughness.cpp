@@ -50,6 +50,7 @@ std::string curve_csv(const std::vector<std::pair<std::uint64_t, const Toughness
 
 class ToughnessKind final : public SceneKind {
  public:
+  std::string name() const override { return "toughness"; }
   void read(ObjectReader& root, const SceneCommon& common) override {
     if (auto t = root.find_object("toughness")) {
       spec_ = read_fields(*t, toughness_fields(), ToughnessSpec{});
@@ -85,11 +86,11 @@ class ToughnessKind final : public SceneKind {
       packing.specimen.seed += static_cast<std::uint64_t>(k);
       ProgressTarget t = target;
       if (packings > 1) t.prefix += fmt::format("packing {}: ", k + 1);
-      StartedRun started = start_from_specimen(packing, "toughness", t);
+      StartedRun started = start_from_specimen(packing, name(), t);
       if (common.specimen_file) check_toughness_spec(spec_, started.spec);
       if (k == 0) summary = started.summary;
       Simulation final_state(common.material, SimulationOptions{});
-      const ToughnessResult r = run_one(started.specimen, spec_, "toughness", t, k == 0 ? &final_state : nullptr);
+      const ToughnessResult r = run_one(started.specimen, spec_, name(), t, k == 0 ? &final_state : nullptr);
       total_wall_s += r.wall_time_s + started.summary["specimen"]["genesis_wall_time_s"].get<double>();
       if (k == 0) {
         first_final.emplace(std::move(final_state));

@@ -3,11 +3,12 @@
 # threads, with no MPI and (built with MPI, mpirun present) under mpirun with 1 and 3 ranks; a rerun reuses
 # every item; a study killed mid-way and rerun gives the tables of an uninterrupted one, an item killed inside
 # continues from its checkpoint; adaptive replicates
-# stop at the count the prefix rule gives on the values of a known distribution (test-only kind "synthetic");
+# stop at the count the prefix rule gives on the values of a known distribution (the test kind "synthetic" of
+# kerf-dem-test-kinds, tests/tools/kerf_dem_test_kinds.cpp, which kerf-dem refuses as any unknown kind);
 # a bad override fails its items only; bad study files exit 2 naming the key.
-# Usage: dem_study_cli.sh <dir of built programs> <source dir>
+# Usage: dem_study_cli.sh <dir of built programs> <source dir> <dir of the test programs>
 source "$(dirname "$0")/lib/dem_common.sh" "$@"
-export KERF_DEM_TEST_KINDS=1
+[ -x "$test_bin" ] || fail "no test program $test_bin (the third argument: the test programs' directory)"
 smoke="$src/data/studies/smoke.json"
 src_abs="$(cd "$src" && pwd)"  # study files written here name the scene by an absolute path
 mpi=(mpirun --allow-run-as-root --oversubscribe)
@@ -116,6 +117,14 @@ else
   echo "dem study cli: built without MPI or no mpirun: the MPI cases are skipped"
 fi
 
+# The test kind is the test program's only: kerf-dem refuses it as any unknown kind, naming the kinds it knows.
+printf '%s\n' '{"kind": "synthetic"}' >"$work/synthetic.json"
+expect_input_error "kerf-dem: error: kind = synthetic: expected one of 'specimen', 'tension', 'compression', 'calibrate', 'cut', 'calibrate_cut', 'toughness'" \
+  run "$work/synthetic.json" --out "$work/synthetic_out"
+"$test_bin" run "$work/synthetic.json" --out "$work/synthetic_out" >/dev/null 2>"$work/err" || fail "kerf-dem-test-kinds run: $(cat "$work/err")"
+grep -q '"value"' "$work/synthetic_out/summary.json" || fail "kerf-dem-test-kinds: no value in the summary"
+"$test_bin" run --help | grep -q "toughness, synthetic" || fail "kerf-dem-test-kinds does not list its kind after the library's"
+
 # Adaptive replicates on the synthetic kind (value ~ N(10, std^2) by seed): each condition stops at the
 # smallest n in [min, max] whose first n values have sem / |mean| <= 5 %, computed here from a fixed study of
 # max_count packings of the same conditions.
@@ -125,8 +134,8 @@ cat >"$work/adaptive.json" <<'EOF'
  "replicates": {"policy": "adaptive", "results": ["value"], "target_relative_sem_percent": 5, "min_count": 3, "max_count": 25}}
 EOF
 sed 's/"policy": "adaptive".*/"policy": "fixed", "count": 25}}/' "$work/adaptive.json" >"$work/fixed.json"
-"$bin" study "$work/adaptive.json" --out "$work/a" --threads 2 >/dev/null 2>"$work/err" || fail "adaptive study: $(cat "$work/err")"
-"$bin" study "$work/fixed.json" --out "$work/f" --threads 2 >/dev/null 2>"$work/err" || fail "fixed study: $(cat "$work/err")"
+"$test_bin" study "$work/adaptive.json" --out "$work/a" --threads 2 >/dev/null 2>"$work/err" || fail "adaptive study: $(cat "$work/err")"
+"$test_bin" study "$work/fixed.json" --out "$work/f" --threads 2 >/dev/null 2>"$work/err" || fail "fixed study: $(cat "$work/err")"
 python3 - "$work/a" "$work/f" <<'EOF' || fail "adaptive stopping"
 import csv, math, statistics, sys
 a, f = sys.argv[1], sys.argv[2]
@@ -147,7 +156,7 @@ items = list(csv.DictReader(open(f"{a}/items.csv")))
 assert len(items) == sum(int(got[c]["n"]) for c in got), len(items)
 EOF
 if [ $with_mpi -eq 1 ]; then
-  "${mpi[@]}" -np 3 "$bin" study "$work/adaptive.json" --out "$work/am" >"$work/log" 2>&1 || fail "adaptive, mpirun -np 3: $(tail -3 "$work/log")"
+  "${mpi[@]}" -np 3 "$test_bin" study "$work/adaptive.json" --out "$work/am" >"$work/log" 2>&1 || fail "adaptive, mpirun -np 3: $(tail -3 "$work/log")"
   same_tables "$work/a" "$work/am" "adaptive: no MPI and mpirun -np 3"
 fi
 
@@ -157,14 +166,14 @@ cat >"$work/slow.json" <<'EOF'
  "conditions": {"list": [{"synthetic.mean": 5}, {"synthetic.mean": 7}]},
  "replicates": {"policy": "fixed", "count": 5}}
 EOF
-"$bin" study "$work/slow.json" --out "$work/full" --threads 1 >/dev/null 2>&1 || fail "uninterrupted slow study"
-"$bin" study "$work/slow.json" --out "$work/killed" --threads 1 >/dev/null 2>&1 &
+"$test_bin" study "$work/slow.json" --out "$work/full" --threads 1 >/dev/null 2>&1 || fail "uninterrupted slow study"
+"$test_bin" study "$work/slow.json" --out "$work/killed" --threads 1 >/dev/null 2>&1 &
 pid=$!
 for _ in $(seq 500); do [ "$(ls "$work/killed/items" 2>/dev/null | wc -l)" -ge 3 ] && break; sleep 0.01; done
 kill -9 $pid 2>/dev/null || fail "the study ended before it could be killed"
 wait $pid 2>/dev/null  # bash reports the kill; the rest of the test is quiet
 [ ! -e "$work/killed/items.csv" ] || fail "the killed study had already finished"
-"$bin" study "$work/slow.json" --out "$work/killed" --threads 1 >"$work/log" 2>&1 || fail "rerun after kill: $(tail -2 "$work/log")"
+"$test_bin" study "$work/slow.json" --out "$work/killed" --threads 1 >"$work/log" 2>&1 || fail "rerun after kill: $(tail -2 "$work/log")"
 grep -Eq "10 items \(0 failed, [3-9] reused\)" "$work/log" || fail "rerun after kill did not reuse the finished items: $(tail -1 "$work/log")"
 same_tables "$work/full" "$work/killed" "killed and rerun vs uninterrupted"
 [ -z "$(ls -a "$work/killed/items" | grep partial)" ] || fail "a killed item's partial directory was left: $(ls -a "$work/killed/items")"
@@ -191,8 +200,8 @@ if [ $with_mpi -eq 1 ]; then
   # The same under mpirun, stopped as a batch system stops a job (SIGTERM to mpirun, which gives its ranks about a
   # second), rerun on 3 ranks: the tables of an uninterrupted run on one machine.
   sed 's/"count": 5/"count": 8/; s/"sleep_s": 0.15/"sleep_s": 0.4/' "$work/slow.json" >"$work/slower.json"
-  "$bin" study "$work/slower.json" --out "$work/mfull" --threads 2 >/dev/null 2>&1 || fail "uninterrupted slower study"
-  "${mpi[@]}" -np 3 "$bin" study "$work/slower.json" --out "$work/mkilled" >/dev/null 2>&1 &
+  "$test_bin" study "$work/slower.json" --out "$work/mfull" --threads 2 >/dev/null 2>&1 || fail "uninterrupted slower study"
+  "${mpi[@]}" -np 3 "$test_bin" study "$work/slower.json" --out "$work/mkilled" >/dev/null 2>&1 &
   pid=$!
   for _ in $(seq 1000); do [ "$(ls "$work/mkilled/items" 2>/dev/null | wc -l)" -ge 2 ] && break; sleep 0.01; done
   kill -TERM $pid 2>/dev/null || fail "mpirun ended before it could be stopped"
@@ -201,7 +210,7 @@ if [ $with_mpi -eq 1 ]; then
   n_items=$(ls "$work/mkilled/items" | wc -l)
   sleep 1
   [ "$(ls "$work/mkilled/items" | wc -l)" -eq "$n_items" ] || fail "ranks went on after mpirun was stopped"
-  "${mpi[@]}" -np 3 "$bin" study "$work/slower.json" --out "$work/mkilled" >"$work/log" 2>&1 || fail "MPI rerun after stop: $(tail -2 "$work/log")"
+  "${mpi[@]}" -np 3 "$test_bin" study "$work/slower.json" --out "$work/mkilled" >"$work/log" 2>&1 || fail "MPI rerun after stop: $(tail -2 "$work/log")"
   grep -Eq "16 items \(0 failed, ([2-9]|1[0-5]) reused\)" "$work/log" || fail "MPI rerun did not reuse the finished items: $(tail -1 "$work/log")"
   same_tables "$work/mfull" "$work/mkilled" "MPI: stopped and rerun vs uninterrupted (no MPI)"
 fi
@@ -307,6 +316,8 @@ bad "kerf-dem: error: record.results = []" "{$tension, \"record\": {\"file\": \"
 bad "kerf-dem: error: conditions.list[0].tags = 3" "{$tension, \"conditions\": {\"list\": [{\"tags\": 3}]}}"
 bad "kerf-dem: error: scene.specimen.radius_min_um = -1" "{$tension, \"set\": [\"specimen.radius_min_um=-1\"]}"
 bad "kerf-dem: error: scene.kind = bending" "{\"scene\": {\"kind\": \"bending\"}}"
+bad "kerf-dem: error: scene.kind = synthetic: expected one of 'specimen', 'tension', 'compression', 'calibrate', 'cut', 'calibrate_cut', 'toughness'" \
+  '{"scene": {"kind": "synthetic"}}'
 [ ! -e "$work/bad_out/items.csv" ] || fail "a rejected study wrote output"
 # An output directory that cannot be written: exit 4 before any work.
 "$bin" study "$smoke" --out /proc/kerf_study >/dev/null 2>"$work/err"

@@ -49,7 +49,15 @@ TEST_CASE("scene: the registry constructs every registered kind, an unknown kind
   const std::vector<std::string> names = scene_kind_names();
   CHECK(names == std::vector<std::string>{"specimen", "tension", "compression", "calibrate", "cut", "calibrate_cut",
                                           "toughness"});
-  for (const auto& name : names) CHECK(make_scene_kind(name) != nullptr);
+  for (const auto& name : names) {
+    const std::unique_ptr<SceneKind> kind = make_scene_kind(name);
+    REQUIRE(kind != nullptr);
+    CHECK(kind->name() == name);  // the registry's names are the kinds' own
+  }
+  // A program registers kinds of its own (tests/tools/kerf_dem_test_kinds.cpp), but none of a name already taken.
+  CHECK_THROWS_WITH(register_scene_kind(+[] { return make_scene_kind("cut"); }),
+                    "register_scene_kind: kind 'cut' is registered already");
+  CHECK(scene_kind_names() == names);
   CHECK_THROWS_WITH(make_scene_kind("cutt"),
                     "kind = cutt: expected one of 'specimen', 'tension', 'compression', 'calibrate', 'cut', "
                     "'calibrate_cut', 'toughness' (did you mean 'cut'?)");

@@ -109,6 +109,8 @@ struct SceneRun {
 class SceneKind {
  public:
   virtual ~SceneKind() = default;
+  /// The kind's name, as a scene's "kind" gives it: written once, in the kind's own file (the registry lists these).
+  virtual std::string name() const = 0;
   /// Reads and validates the kind's own sections of the scene root; the shared ones are already in `common`.
   virtual void read(ObjectReader& root, const SceneCommon& common) = 0;
   /// Rejects options the kind does not support (InputError naming the option). The default allows
@@ -121,10 +123,17 @@ class SceneKind {
   virtual bool writes_checkpoints() const { return false; }
 };
 
-/// The registered kinds' names, in the registry's order.
+/// Makes a new kind object: what the registry holds of each kind.
+using SceneKindFactory = std::unique_ptr<SceneKind> (*)();
+/// The registered kinds' names, in the registry's order: the library's (dem/kinds/registry.cpp), then those a
+/// program registered.
 std::vector<std::string> scene_kind_names();
 /// A new kind object for `name`; InputError on `path` listing the valid names otherwise.
 std::unique_ptr<SceneKind> make_scene_kind(const std::string& name, const std::string& path = "kind");
+/// Adds a kind to the registry, after the library's: a program's own (the test suite's kerf-dem-test-kinds,
+/// tests/tools/kerf_dem_test_kinds.cpp, registers its test kind before it runs kerf-dem's main). Call it before any
+/// scene is read (not thread-safe); std::logic_error when a kind of that name is registered already.
+void register_scene_kind(SceneKindFactory make);
 
 /// The scene sections with a key table: specimen, engine, loading, cut, tool, grooves, calibration,
 /// calibration.targets, output ("material" is kerf/dem/laws/material.hpp's).

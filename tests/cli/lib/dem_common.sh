@@ -1,8 +1,10 @@
-# Shared prelude of the kerf-dem CLI tests (sourced, not a test itself): $bin, $src, a scratch $work,
-# fail and expect_input_error. Usage in a test: source "$(dirname "$0")/lib/dem_common.sh" "$@"
+# Shared prelude of the kerf-dem CLI tests (sourced, not a test itself): $bin, $test_bin (kerf-dem with the test
+# suite's own kinds, tests/tools/kerf_dem_test_kinds.cpp; from the third argument, the test programs' directory),
+# $src, a scratch $work, fail and expect_input_error. Usage in a test: source "$(dirname "$0")/lib/dem_common.sh" "$@"
 set -uo pipefail
 bin="$1/kerf-dem"
 src="$2"
+test_bin="${3:-}/kerf-dem-test-kinds"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 export KERF_DATA_DIR="$src/data"

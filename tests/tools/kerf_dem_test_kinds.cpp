@@ -1,27 +1,38 @@
-// Scene kind "synthetic", for tests only (constructed only when the environment has KERF_DEM_TEST_KINDS=1;
-// not in the kind list users see): no simulation, one result `value` drawn from a normal distribution
-// N(mean, std^2) by the packing seed, so that a study's adaptive stopping can be checked against a known
-// distribution in milliseconds. Section "synthetic": mean, std, sleep_s (wall time to spend, for tests that
-// kill a study mid-way), fail_above (a value above it fails the item with a ModelError; default: never).
+// kerf-dem-test-kinds: kerf-dem (tools/kerf_dem.hpp) with the test suite's own scene kind, registered here and
+// nowhere in the library (kerf/dem/scene.hpp: register_scene_kind), for the CLI tests that need it
+// (tests/cli/dem_study_cli.sh). The production kerf-dem refuses it as any unknown kind.
+//
+// Kind "synthetic": no simulation, one result `value` drawn from a normal distribution N(mean, std^2) by the packing
+// seed, so that a study's adaptive stopping can be checked against a known distribution in milliseconds. Section
+// "synthetic": mean, std, sleep_s (wall time to spend, for tests that kill a study mid-way), fail_above (a value above
+// it fails the item with a ModelError; default: never).
 #include <fmt/format.h>
 
 #include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <numbers>
 #include <random>
+#include <string>
 #include <thread>
 
-#include "common.hpp"
+#include "kerf/dem/scene.hpp"
 #include "kerf/error.hpp"
-
-namespace kerf::dem::kinds {
+#include "kerf/io.hpp"
+#include "kerf/json_reader.hpp"
+#include "kerf_dem.hpp"
 
 namespace {
 
+using namespace kerf;
+using namespace kerf::dem;
+
 class SyntheticKind final : public SceneKind {
  public:
+  std::string name() const override { return "synthetic"; }
+
   void read(ObjectReader& root, const SceneCommon&) override {
     if (auto s = root.find_object("synthetic")) {
       mean_ = s->get_number_or("mean", mean_, Range::any(), "");
@@ -41,12 +52,15 @@ class SyntheticKind final : public SceneKind {
     const double z = std::sqrt(-2 * std::log(u1)) * std::cos(2 * std::numbers::pi * u2);
     const double value = mean_ + std_ * z;
     std::this_thread::sleep_for(std::chrono::duration<double>(sleep_s_));
-    if (value > fail_above_) throw ModelError("synthetic", fmt::format("value {} above fail_above", value));
-    Json summary{{"kind", "synthetic"},
+    if (value > fail_above_) throw ModelError(name(), fmt::format("value {} above fail_above", value));
+    Json summary{{"kind", name()},
                  {"seed", common.specimen.seed},
                  {"results", {{"value", value}, {"value_squared", value * value}}},
                  {"wall_time_s", sleep_s_}};
-    write_summary(run.options, run.doc, summary);
+    // As the library's kinds write theirs (dem/kinds/common.cpp: write_summary).
+    if (Json provenance = summary_provenance(run.options, run.doc); !provenance.is_null())
+      summary["provenance"] = std::move(provenance);
+    write_file_atomically(run.options.out / "summary.json", summary.dump(2) + "\n");
     return {0, summary, {}};
   }
 
@@ -54,10 +68,13 @@ class SyntheticKind final : public SceneKind {
   double mean_ = 1, std_ = 0.1, sleep_s_ = 0, fail_above_ = std::numeric_limits<double>::infinity();
 };
 
-}  // namespace
-
 std::unique_ptr<SceneKind> make_synthetic_kind() {
   return std::make_unique<SyntheticKind>();
 }
 
-}  // namespace kerf::dem::kinds
+}  // namespace
+
+int main(int argc, char** argv) {
+  register_scene_kind(make_synthetic_kind);
+  return kerf_dem_main(argc, argv);
+}
