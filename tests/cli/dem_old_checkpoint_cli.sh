@@ -9,27 +9,27 @@
 # Usage: dem_old_checkpoint_cli.sh <dir of built programs> <source dir>
 source "$(dirname "$0")/lib/dem_common.sh" "$@"
 
+# resumes_as_uninterrupted FIXTURE NAME BUILD: the fixture's checkpoint resumed (in a copy, as WORK/NAME) gives the
+# forces and cracks of an uninterrupted run of its scene.
+resumes_as_uninterrupted() {
+  local fixture=$1 name=$2 build=$3
+  cp -r "$fixture" "$work/$name"
+  chmod -R u+w "$work/$name"
+  "$bin" resume "$work/$name" --threads 1 >/dev/null 2>"$work/err" || fail "resume of the $build checkpoint: $(cat "$work/err")"
+  "$bin" run "$fixture/scene.json" --threads 1 --out "$work/$name-full" >/dev/null 2>"$work/err" || fail "run: $(cat "$work/err")"
+  for f in forces.csv cracks.csv; do
+    cmp -s "$work/$name-full/$f" "$work/$name/$f" || fail "$f resumed from the $build checkpoint differs from an uninterrupted run"
+  done
+}
+
 fixture="$src/tests/dem/reference/kerfdem6_cut"
-cp -r "$fixture" "$work/old"
-chmod -R u+w "$work/old"
-"$bin" resume "$work/old" --threads 1 >/dev/null 2>"$work/err" || fail "resume of the 4a34e1f checkpoint: $(cat "$work/err")"
-"$bin" run "$fixture/scene.json" --threads 1 --out "$work/full" >/dev/null 2>"$work/err" || fail "run: $(cat "$work/err")"
-for f in forces.csv cracks.csv; do
-  cmp -s "$work/full/$f" "$work/old/$f" || fail "$f resumed from the 4a34e1f checkpoint differs from an uninterrupted run"
-done
+resumes_as_uninterrupted "$fixture" old 4a34e1f
 grep -q '"bond_model": "parallel_bond"' "$work/old/summary.json" || fail "the resumed cut's material is not the parallel bond"
 
 # A checkpoint of the build before Weibull joint strengths (kerf a0ff3ea: engine state "KERFDEM8", its laws' records
-# without the Weibull keys, its joints' geometry without the strength factor) of a tiny cut with the softening flat
-# joint (element damage): resumed by this build, the forces and cracks of an uninterrupted run. Made as the one above.
-fixture8="$src/tests/dem/reference/kerfdem8_cut"
-cp -r "$fixture8" "$work/old8"
-chmod -R u+w "$work/old8"
-"$bin" resume "$work/old8" --threads 1 >/dev/null 2>"$work/err" || fail "resume of the a0ff3ea checkpoint: $(cat "$work/err")"
-"$bin" run "$fixture8/scene.json" --threads 1 --out "$work/full8" >/dev/null 2>"$work/err" || fail "run: $(cat "$work/err")"
-for f in forces.csv cracks.csv; do
-  cmp -s "$work/full8/$f" "$work/old8/$f" || fail "$f resumed from the a0ff3ea checkpoint differs from an uninterrupted run"
-done
+# without the Weibull keys, no strength factors) of a tiny cut with the softening flat joint (element damage): resumed
+# by this build, the forces and cracks of an uninterrupted run. Made as the one above.
+resumes_as_uninterrupted "$src/tests/dem/reference/kerfdem8_cut" old8 a0ff3ea
 
 # The engine state's tag made "KERFDEM5" (the file's checksum made right): refused, naming the versions.
 python3 - "$fixture/checkpoint.bin" "$work/bad/checkpoint.bin" <<'PY'
