@@ -27,7 +27,7 @@ corpus="$build/fuzz-corpus"
 rm -rf "$corpus" && mkdir -p "$corpus/scene" "$corpus/checkpoint"
 cp "$root"/data/scenes/*.json "$corpus/scene/"
 for f in "$root"/validation/*/scene.json; do cp "$f" "$corpus/scene/$(basename "$(dirname "$f")").json"; done
-for tag in KERFCKP2 KERFDEM8 KERFDEM7 KERFDEM6 KERFLAB1 KERFCUTB KERFCUTA KERFCUT9 KERFCUT8 KERFCUT7 KERFWIN3 KERFCAL5 KERFCAL4 KERFCAL3; do
+for tag in KERFCKP2 KERFDEM9 KERFDEM8 KERFDEM7 KERFDEM6 KERFLAB1 KERFCUTB KERFCUTA KERFCUT9 KERFCUT8 KERFCUT7 KERFWIN3 KERFCAL5 KERFCAL4 KERFCAL3; do
   printf '\001%s' "$tag" >"$corpus/checkpoint/odd-$tag"
   printf '\000%s' "$tag" >"$corpus/checkpoint/even-$tag"
 done
