@@ -19,10 +19,7 @@ int BondStore::n_bonded_elements(std::size_t b) const {
 }
 
 void BondStore::copy_elements(std::size_t to, const BondStore& from, std::size_t k) {
-  if (!from.strength_factor.empty()) {
-    if (strength_factor.empty()) strength_factor.assign(size(), 1.0);
-    strength_factor[to] = from.strength_factor[k];
-  }
+  if (!from.strength_factor.empty()) set_strength_factor(to, from.strength_factor[k]);
   const auto n = static_cast<std::size_t>(stride);
   for (std::size_t e = 0; e < n; ++e) {
     bonded[to * n + e] = from.bonded[k * n + e];

@@ -102,6 +102,10 @@ bool same_micro_parameters(const Material& a, const Material& b) {
          a.flaw_density_per_m2 == b.flaw_density_per_m2 && a.contact == b.contact && a.joint == b.joint;
 }
 
+const BondStiffnessStrength& joint_bond(const Material& m) {
+  return std::visit([](const auto& law) -> const BondStiffnessStrength& { return law.bond; }, m.joint);
+}
+
 CalibratedParams calibrated_params(const Material& m) {
   return std::visit(
       [](const auto& c, const auto& j) {

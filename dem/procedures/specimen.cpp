@@ -266,10 +266,6 @@ CompactedPacking compact_random(const SpecimenSpec& spec, const GenesisProgress&
   return out;
 }
 
-const BondStiffnessStrength& joint_bond(const Material& material) {
-  return std::visit([](const auto& law) -> const BondStiffnessStrength& { return law.bond; }, material.joint);
-}
-
 /// A specimen's joints carry the strength factors drawn for its material's Weibull modulus and reference
 /// half-length (draw_joint_strengths): another material takes them only with the same two (its strengths may
 /// differ, the factors being relative); InputError names the key otherwise.
@@ -482,11 +478,7 @@ Simulation load_specimen(const std::string& file_path, const Material& material,
       if (bi[k] < 0 || bj[k] < 0 || static_cast<std::size_t>(std::max(bi[k], bj[k])) >= x.size())
         throw InputError(file_path + ": bonds", std::to_string(k), "particle indices within the file");
       const auto id = static_cast<std::size_t>(sim.install_bond(bi[k], bj[k], d0.at(k), rot0.at(k)));
-      if (!factor.empty()) {
-        auto& f = sim.bonds().strength_factor;
-        if (f.empty()) f.assign(sim.bonds().size(), 1.0);
-        f[id] = factor.at(k);
-      }
+      if (!factor.empty()) sim.bonds().set_strength_factor(id, factor.at(k));
       // Element states carry over only when the element count is the same (else the joint starts intact).
       if (stored != stride) continue;
       for (std::size_t e = 0; e < stride; ++e) {

@@ -53,6 +53,11 @@ struct BondStore {
   /// Per bond, its strength factor w (Weibull joint strengths: draw_joint_strengths); empty when every factor is 1
   /// (a material without a Weibull modulus), which the joint loop then does not read.
   std::vector<double> strength_factor;
+  /// Sets bond b's strength factor, making the factors of the other bonds 1 where the store had none.
+  void set_strength_factor(std::size_t b, double w) {
+    if (strength_factor.empty()) strength_factor.assign(size(), 1.0);
+    strength_factor[b] = w;
+  }
   /// What bond b's law functions take: its interface and its strength factor.
   BondGeometry joint_geometry(std::size_t b) const {
     return {geometry[b], strength_factor.empty() ? 1.0 : strength_factor[b]};

@@ -51,6 +51,9 @@ Json material_to_json(const Material& m);
 /// Whether two materials have the same micro-parameters, every number to the bit (the name aside).
 bool same_micro_parameters(const Material& a, const Material& b);
 
+/// The stiffness-and-strength block of the material's bond law, whichever law it is.
+const BondStiffnessStrength& joint_bond(const Material& m);
+
 /// The micro-parameters that calibration moves, which the law concepts require of every law of the registry
 /// (E* and kappa* of the unbonded contact; Ebar*, kappabar*, sigma_c and c of the bond's BondStiffnessStrength).
 struct CalibratedParams {
