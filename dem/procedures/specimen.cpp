@@ -45,11 +45,90 @@ const FieldTable<SpecimenSpec>& specimen_fields() {
       number_field("installation_gap_um", kUm, Range::non_negative(), "joints at pairs whose surface gap is below this",
                    &S::installation_gap_m),
       int_field("growth_steps", 100, 10000000, "steps of the radius growth and compaction", &S::growth_steps),
-      int_field("relax_steps", 0, 10000000, "steps of the relaxation after the walls are removed", &S::relax_steps)};
+      int_field("relax_steps", 0, 10000000, "steps of the relaxation after the walls are removed", &S::relax_steps),
+      number_field("fine_radius_min_um", kUm, Range::non_negative(), "smallest disk radius of the fine region",
+                   &S::fine_radius_min_m),
+      number_field("fine_radius_max_um", kUm, Range::non_negative(),
+                   "largest disk radius of the fine region (0: no fine region; at most radius_min_um)",
+                   &S::fine_radius_max_m),
+      number_field("fine_x_min_mm", kMm, Range::non_negative(), "fine region's left side (x from the specimen's left)",
+                   &S::fine_x_min_m),
+      number_field("fine_x_max_mm", kMm, Range::non_negative(), "fine region's right side", &S::fine_x_max_m),
+      number_field("fine_y_min_mm", kMm, Range::non_negative(),
+                   "fine region's lower side (y from the specimen's bottom)", &S::fine_y_min_m),
+      number_field("fine_y_max_mm", kMm, Range::non_negative(), "fine region's upper side", &S::fine_y_max_m)};
   return table;
 }
 
 namespace {
+/// The fine region's area (0 without one).
+double fine_region_area(const SpecimenSpec& s) {
+  return s.has_fine_region() ? (s.fine_x_max_m - s.fine_x_min_m) * (s.fine_y_max_m - s.fine_y_min_m) : 0.0;
+}
+
+/// Mean of r^2 for r uniform in [a, b].
+double mean_square_radius(double a, double b) {
+  return (a * a + a * b + b * b) / 3;
+}
+
+/// How many disks a random genesis draws: the packing fraction of each region's area with its nominal radii.
+struct DiskCounts {
+  double coarse = 0, fine = 0;
+  double total() const { return coarse + fine; }
+};
+DiskCounts disk_counts(const SpecimenSpec& s) {
+  const double fine_area = fine_region_area(s);
+  DiskCounts n;
+  n.coarse = s.packing_fraction * (s.width_m * s.height_m - fine_area) /
+             (std::numbers::pi * mean_square_radius(s.radius_min_m, s.radius_max_m));
+  if (s.has_fine_region())
+    n.fine = s.packing_fraction * fine_area /
+             (std::numbers::pi * mean_square_radius(s.fine_radius_min_m, s.fine_radius_max_m));
+  return n;
+}
+
+/// A fine region: radii 0 < min <= max <= radius_min, random packing, a box inside the specimen at least four fine
+/// diameters on each side.
+void check_fine_region(const SpecimenSpec& s) {
+  using namespace units;
+  const auto um = [](double m) { return format_value(m_to_um(m)); };
+  const auto mm = [](double m) { return format_value(m_to_mm(m)); };
+  if (s.packing != Packing::random)
+    throw InputError("fine_radius_max_um", um(s.fine_radius_max_m), "0 (no fine region) with packing hexagonal");
+  if (s.fine_radius_max_m > s.radius_min_m)
+    throw InputError("fine_radius_max_um", um(s.fine_radius_max_m),
+                     "a value <= radius_min_um = " + um(s.radius_min_m) + " um (the fine region's disks are finer)");
+  if (!(s.fine_radius_min_m > 0) || s.fine_radius_min_m > s.fine_radius_max_m)
+    throw InputError("fine_radius_min_um", um(s.fine_radius_min_m),
+                     "a positive value <= fine_radius_max_um = " + um(s.fine_radius_max_m) + " um");
+  const double min_side = 8 * s.fine_radius_max_m;
+  if (s.fine_x_max_m > s.width_m)
+    throw InputError("fine_x_max_mm", mm(s.fine_x_max_m), "a value <= width_mm = " + mm(s.width_m) + " mm");
+  if (s.fine_x_max_m - s.fine_x_min_m < min_side)
+    throw InputError("fine_x_max_mm", mm(s.fine_x_max_m),
+                     "a value >= fine_x_min_mm + 4 fine diameters = " + mm(s.fine_x_min_m + min_side) + " mm");
+  if (s.fine_y_max_m > s.height_m)
+    throw InputError("fine_y_max_mm", mm(s.fine_y_max_m), "a value <= height_mm = " + mm(s.height_m) + " mm");
+  if (s.fine_y_max_m - s.fine_y_min_m < min_side)
+    throw InputError("fine_y_max_mm", mm(s.fine_y_max_m),
+                     "a value >= fine_y_min_mm + 4 fine diameters = " + mm(s.fine_y_min_m + min_side) + " mm");
+  // Between the region and a side of the specimen: none, or room for a coarse disk's centre.
+  const double room = 2 * s.radius_max_m;
+  struct Side {
+    const char* key;
+    double value_m, margin_m;
+  };
+  const Side sides[] = {{"fine_x_min_mm", s.fine_x_min_m, s.fine_x_min_m},
+                        {"fine_x_max_mm", s.fine_x_max_m, s.width_m - s.fine_x_max_m},
+                        {"fine_y_min_mm", s.fine_y_min_m, s.fine_y_min_m},
+                        {"fine_y_max_mm", s.fine_y_max_m, s.height_m - s.fine_y_max_m}};
+  for (const Side& side : sides)
+    if (side.margin_m > 0 && side.margin_m < room)
+      throw InputError(
+          side.key, mm(side.value_m),
+          "a region that reaches the specimen's side or leaves a largest coarse diameter to it (" + mm(room) + " mm)");
+}
+
 /// The relations between the fields (each field's own range is the table's).
 void check_specimen_relations(const SpecimenSpec& s) {
   using namespace units;
@@ -61,11 +140,10 @@ void check_specimen_relations(const SpecimenSpec& s) {
   if (2 * s.radius_max_m * 4 > std::min(s.width_m, s.height_m))
     throw InputError("radius_max_um", format_value(m_to_um(s.radius_max_m)),
                      "at most 1/8 of the specimen's smaller side in um");
-  const double area = s.width_m * s.height_m;
-  const double mean_r2 =
-      (s.radius_min_m * s.radius_min_m + s.radius_min_m * s.radius_max_m + s.radius_max_m * s.radius_max_m) / 3;
-  if (area * s.packing_fraction / (std::numbers::pi * mean_r2) > 5e6)
-    throw InputError("radius_min_um", format_value(m_to_um(s.radius_min_m)),
+  if (s.has_fine_region()) check_fine_region(s);
+  if (disk_counts(s).total() > 5e6)
+    throw InputError(s.has_fine_region() ? "fine_radius_min_um" : "radius_min_um",
+                     format_value(m_to_um(s.has_fine_region() ? s.fine_radius_min_m : s.radius_min_m)),
                      "radii large enough for at most 5 million disks in the specimen, in um");
 }
 }  // namespace
@@ -178,16 +256,34 @@ std::int64_t random_genesis_steps(const SpecimenSpec& spec) {
 // Long (~90 lines) for a reason: the genesis in order (the draw, the rows, the compaction and its servo) on one
 // packing's arrays, each stage reading what the one before left (physics-dem.md section 2).
 CompactedPacking compact_random(const SpecimenSpec& spec, const GenesisProgress& progress) {
-  const double W = spec.width_m, H = spec.height_m, a = spec.radius_min_m, b = spec.radius_max_m;
-  const double mean_r2 = (a * a + a * b + b * b) / 3;
-  const auto n = static_cast<std::size_t>(std::lround(spec.packing_fraction * W * H / (std::numbers::pi * mean_r2)));
+  const double W = spec.width_m, H = spec.height_m, b = spec.radius_max_m;
+  const DiskCounts counts = disk_counts(spec);
+  const auto n_coarse = static_cast<std::size_t>(std::lround(counts.coarse));
+  const auto n = n_coarse + static_cast<std::size_t>(std::lround(counts.fine));
   std::mt19937_64 rng(spec.seed);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   std::vector<double> r(n), x(n), y(n);
+  // The coarse disks' centres outside the fine region (drawn again when inside; without one, every first draw
+  // stands), then the fine disks' inside it.
+  const auto in_fine_region = [&](double px, double py) {
+    return spec.has_fine_region() && px >= spec.fine_x_min_m && px <= spec.fine_x_max_m && py >= spec.fine_y_min_m &&
+           py <= spec.fine_y_max_m;
+  };
   for (std::size_t k = 0; k < n; ++k) {
-    r[k] = a + (b - a) * uniform(rng);
-    x[k] = r[k] + (W - 2 * r[k]) * uniform(rng);
-    y[k] = r[k] + (H - 2 * r[k]) * uniform(rng);
+    const bool fine = k >= n_coarse;
+    const double a_k = fine ? spec.fine_radius_min_m : spec.radius_min_m;
+    const double b_k = fine ? spec.fine_radius_max_m : spec.radius_max_m;
+    r[k] = a_k + (b_k - a_k) * uniform(rng);
+    if (fine) {
+      x[k] = spec.fine_x_min_m + (spec.fine_x_max_m - spec.fine_x_min_m) * uniform(rng);
+      y[k] = spec.fine_y_min_m + (spec.fine_y_max_m - spec.fine_y_min_m) * uniform(rng);
+      x[k] = std::clamp(x[k], r[k], W - r[k]), y[k] = std::clamp(y[k], r[k], H - r[k]);
+      continue;
+    }
+    do {
+      x[k] = r[k] + (W - 2 * r[k]) * uniform(rng);
+      y[k] = r[k] + (H - 2 * r[k]) * uniform(rng);
+    } while (in_fine_region(x[k], y[k]));
   }
   // Store the disks in rows (of height 2 R_max) for memory locality of neighbours.
   std::vector<std::size_t> order(n);

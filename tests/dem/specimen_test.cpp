@@ -245,3 +245,111 @@ TEST_CASE("specimen: seeded flaws cross the lattice's joints as Buffon's needle 
   const double area = (*x1 - *x0 + m.flaw_length_m) * (*y1 - *y0 + m.flaw_length_m);
   CHECK(std::abs(static_cast<double>(flaws.size()) - m.flaw_density_per_m2 * area) <= 1.0);
 }
+
+namespace {
+// small_random() with radii 7.5-10 um and, when `fine`, a band of 2.5-3.3 um disks across it, 60 um high.
+SpecimenSpec banded(bool fine) {
+  SpecimenSpec s = small_random();
+  if (!fine) return s;
+  s.fine_radius_min_m = 2.5e-6, s.fine_radius_max_m = 3.3e-6;
+  s.fine_x_min_m = 0, s.fine_x_max_m = s.width_m, s.fine_y_min_m = 0.12e-3, s.fine_y_max_m = 0.18e-3;
+  return s;
+}
+
+// The Love stress xx of a specimen under an affine strain exx applied in one step (every joint and contact).
+double affine_stress_xx(Simulation& sim, const SpecimenSpec& spec, double exx) {
+  auto& p = sim.particles();
+  const double dt = sim.time_step();
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    p.vx[i] = exx * p.x[i] / dt, p.vy[i] = 0;
+    p.x[i] += p.vx[i] * dt;
+  }
+  sim.evaluate_forces_with_increment();
+  return sim.average_stress(spec.width_m * spec.height_m)[0];
+}
+}  // namespace
+
+TEST_CASE("specimen: a fine region holds finer disks, packed and jointed as the rest, as stiff", "[specimen]") {
+  Material m;
+  // Off, the region's box is ignored: the packing of the spec without it, to the bit.
+  SpecimenSpec box_only = banded(true);
+  box_only.fine_radius_min_m = box_only.fine_radius_max_m = 0;
+  const CompactedPacking plain = compact_packing(banded(false));
+  CHECK(compact_packing(box_only).disks.particles().x == plain.disks.particles().x);
+
+  const SpecimenSpec spec = banded(true);
+  SpecimenReport report;
+  Simulation sim = make_specimen(m, spec, report);
+  const auto& p = sim.particles();
+  // The fine disks: the packing fraction of the box's area with their nominal radii, each within its range at
+  // the common scale (floaters at most 6 % larger), most centres in the box and few coarse ones.
+  const double a = spec.fine_radius_min_m, b = spec.fine_radius_max_m;
+  const double band_area = spec.width_m * (spec.fine_y_max_m - spec.fine_y_min_m);
+  const double n_expected = spec.packing_fraction * band_area / (std::numbers::pi * (a * a + a * b + b * b) / 3);
+  int n_fine = 0, fine_inside = 0, coarse_inside = 0;
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    const bool fine = p.radius[k] < spec.radius_min_m * report.radius_scale;
+    const bool inside = p.y[k] > spec.fine_y_min_m && p.y[k] < spec.fine_y_max_m;
+    if (fine) {
+      CHECK(p.radius[k] >= a * report.radius_scale * (1 - 1e-12));
+      CHECK(p.radius[k] <= b * report.radius_scale * 1.0616);
+    }
+    n_fine += fine, fine_inside += fine && inside, coarse_inside += !fine && inside;
+  }
+  CHECK(std::abs(n_fine - n_expected) <= 1);
+  CHECK(fine_inside > 0.8 * n_fine);
+  CHECK(coarse_inside < 0.05 * n_fine);
+  // Jointed as densely as the uniform specimen, fine and coarse joined across the region's sides.
+  SpecimenReport uniform_report;
+  Simulation uniform = make_specimen(m, banded(false), uniform_report);
+  CHECK(report.coordination_number > 0.9 * uniform_report.coordination_number);
+  CHECK(report.packing_fraction > uniform_report.packing_fraction - 0.03);
+  int across = 0;
+  std::vector<int> joints_of(p.size(), 0);
+  for (std::size_t k = 0; k < sim.bonds().size(); ++k) {
+    const auto i = static_cast<std::size_t>(sim.bonds().i[k]), j = static_cast<std::size_t>(sim.bonds().j[k]);
+    ++joints_of[i], ++joints_of[j];
+    across += (p.radius[i] < spec.radius_min_m * report.radius_scale) !=
+              (p.radius[j] < spec.radius_min_m * report.radius_scale);
+  }
+  CHECK(across > 2 * spec.width_m / (2 * spec.radius_max_m));  // both sides, more than one joint per coarse disk
+  // Few rattlers (disks held by fewer than two joints: fine disks squeezed into the coarse disks' pores, mostly).
+  const auto rattlers = std::count_if(joints_of.begin(), joints_of.end(), [](int n) { return n < 2; });
+  CHECK(static_cast<double>(rattlers) < 0.02 * static_cast<double>(p.size()));
+  // The flat joint's stiffness per unit area does not depend on the disks' size: under one affine strain the
+  // banded specimen's stress is the uniform one's within the packings' scatter (a joint stiffness growing with
+  // R^2 instead of R would soften the band threefold: -20 %).
+  const double exx = 1e-5;
+  CHECK_THAT(affine_stress_xx(sim, spec, exx), WithinRel(affine_stress_xx(uniform, banded(false), exx), 0.05));
+}
+
+TEST_CASE("specimen: a fine region is refused where it cannot be packed, naming the key", "[specimen]") {
+  const auto refused_key = [](const SpecimenSpec& s) {
+    try {
+      check_specimen_spec(s);
+    } catch (const kerf::InputError& e) {
+      return e.field();
+    }
+    return std::string("accepted");
+  };
+  CHECK(refused_key(banded(true)) == "accepted");
+  SpecimenSpec s = banded(true);
+  s.packing = Packing::hexagonal;
+  CHECK(refused_key(s) == "fine_radius_max_um");
+  s = banded(true), s.fine_radius_max_m = 8e-6;  // coarser than the coarse disks' smallest
+  CHECK(refused_key(s) == "fine_radius_max_um");
+  s = banded(true), s.fine_radius_min_m = 0;
+  CHECK(refused_key(s) == "fine_radius_min_um");
+  s = banded(true), s.fine_radius_min_m = 4e-6;  // above fine_radius_max
+  CHECK(refused_key(s) == "fine_radius_min_um");
+  s = banded(true), s.fine_x_max_m = 2 * s.width_m;
+  CHECK(refused_key(s) == "fine_x_max_mm");
+  s = banded(true), s.fine_y_max_m = s.fine_y_min_m + 10e-6;  // thinner than four fine diameters
+  CHECK(refused_key(s) == "fine_y_max_mm");
+  s = banded(true), s.fine_y_min_m = 5e-6;  // a sliver below it where no coarse disk's centre fits
+  CHECK(refused_key(s) == "fine_y_min_mm");
+  s = banded(true), s.fine_x_max_m = s.width_m - 5e-6;
+  CHECK(refused_key(s) == "fine_x_max_mm");
+  s = banded(true), s.fine_radius_min_m = s.fine_radius_max_m = 1e-8;  // billions of disks
+  CHECK(refused_key(s) == "fine_radius_min_um");
+}

@@ -44,14 +44,23 @@ struct SpecimenSpec {
   double compaction_modulus_pa = 90e9;
   double installation_gap_m = 0.5e-6;  ///< joints at pairs whose surface gap is below this
   int growth_steps = 6000, relax_steps = 2000;
+  /// A region of finer disks (random packing), radii uniform in [fine_radius_min, fine_radius_max], in the box
+  /// [fine_x_min, fine_x_max] x [fine_y_min, fine_y_max] of the specimen (origin at its lower left corner); the
+  /// rest keeps [radius_min, radius_max]. Off while fine_radius_max_m is 0. The reference of a sub-grid model at
+  /// the disks' scale: e.g. a band of fine disks along a cut line (docs/dem.md, "Specimens").
+  double fine_radius_min_m = 0, fine_radius_max_m = 0;
+  double fine_x_min_m = 0, fine_x_max_m = 0, fine_y_min_m = 0, fine_y_max_m = 0;
+  bool has_fine_region() const { return fine_radius_max_m > 0; }
 };
 
 /// The "specimen" section's keys (kerf/field_table.hpp): width_mm, height_mm, thickness_mm, radius_min_um,
 /// radius_max_um, packing, seed, packing_fraction, compaction_pressure_MPa, compaction_modulus_GPa,
-/// installation_gap_um, growth_steps, relax_steps.
+/// installation_gap_um, growth_steps, relax_steps, fine_radius_min_um, fine_radius_max_um, fine_x_min_mm,
+/// fine_x_max_mm, fine_y_min_mm, fine_y_max_mm.
 const FieldTable<SpecimenSpec>& specimen_fields();
 /// Every field's range and the relations between them (radius_max >= radius_min, at most 1/8 of the smaller
-/// side, at most 5 million disks); InputError names the key ("radius_max_um").
+/// side, at most 5 million disks; a fine region's radii at most radius_min, its box inside the specimen and at
+/// least four fine diameters on each side, random packing only); InputError names the key ("radius_max_um").
 void check_specimen_spec(const SpecimenSpec& spec);
 /// Reads the "specimen" object (the table's ranges, then the relations; errors name the dotted path).
 SpecimenSpec read_specimen_spec(ObjectReader& reader);
