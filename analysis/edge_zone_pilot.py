@@ -9,24 +9,30 @@ surface. Reads the record alone. Given a second record of the same conditions at
 F0 = 2 F(h) - F(2h), k = (F(2h) - F(h)) / h, and the depth effect F(2h) / F(h). Given with --against a record of
 the same conditions and packings with one change (another glass: data/studies/issue54_weibull_pilot.json against the
 zone pilot), the change's effect on each quantity, paired by packing: the mean of the per-packing differences (this
-record less the other) with its 95 % interval.
+record less the other) with its 95 % interval. Given with --beside a record of the same conditions on other packings
+(another specimen: data/studies/issue54_fine_band_reference.json, fine disks at the cut line, beside the zone pilot),
+each of its groups against each group of the other record on the same surface, unpaired: the difference of the
+means (this record less the other) with its Welch 95 % interval.
 
     PYTHONPATH=build/python python3 analysis/edge_zone_pilot.py data/studies/results/issue54_zone_pilot.csv \
         [data/studies/results/issue54_zone_pilot_02.csv]
     PYTHONPATH=build/python python3 analysis/edge_zone_pilot.py data/studies/results/issue54_weibull_pilot.csv \
         --against data/studies/results/issue54_zone_pilot.csv
+    PYTHONPATH=build/python python3 analysis/edge_zone_pilot.py data/studies/results/issue54_fine_band_reference.csv \
+        --beside data/studies/results/issue54_zone_pilot.csv
 """
 import csv
 import math
 import sys
 
 from kerf.result_keys import CutResults as R
-from kerf.stats import combination, mean_of, ratio
+from kerf.stats import combination, difference, mean_of, ratio
 
 QUANTITIES = [(R.cutting_force_N_per_mm, "cutting N/mm"), (R.thrust_force_N_per_mm, "thrust N/mm"),
               (R.edge_zone_intact_share_steady, "zone met intact"),
               (R.tied_share_behind_depth_0_25_um_steady, "tied behind 0-25 um"),
-              (R.subsurface_damage_depth_steady_um, "damage um")]
+              (R.subsurface_damage_depth_steady_um, "damage um"),
+              (R.edge_touches_tied_share_steady, "edge touched tied")]
 
 
 def number(text):
@@ -105,6 +111,22 @@ def paired(changed, baseline):
     return "\n".join(lines)
 
 
+def beside(other, base):
+    """Each group of `other` against each group of `base` on the same surface (independent packings): per quantity,
+    the difference of the means, other - base."""
+    lines = ["| surface | zone | against zone | packings | " +
+             " | ".join(f"change in {label}" for _, label in QUANTITIES) + " |",
+             "|---|---|---|---|" + "---|" * len(QUANTITIES)]
+    for (surface, zone), rows in sorted(other.items()):
+        for (base_surface, base_zone), base_rows in sorted(base.items()):
+            if base_surface != surface:
+                continue
+            cells = [interval(difference(estimate(rows, q), estimate(base_rows, q))) for q, _ in QUANTITIES]
+            lines.append(f"| {surface} | {zone} | {base_zone} | {len(rows)}, {len(base_rows)} | " + " | ".join(cells) +
+                         " |")
+    return "\n".join(lines)
+
+
 def depth_of(path):
     with open(path, newline="") as f:
         return float(next(csv.DictReader(f))["depth_of_cut_mm"])
@@ -115,6 +137,11 @@ if __name__ == "__main__":
         print(report(read(sys.argv[1])))
         print()
         print(paired(read(sys.argv[1]), read(sys.argv[3])))
+        sys.exit(0)
+    if len(sys.argv) == 4 and sys.argv[2] == "--beside":
+        print(report(read(sys.argv[1])))
+        print()
+        print(beside(read(sys.argv[1]), read(sys.argv[3])))
         sys.exit(0)
     if len(sys.argv) not in (2, 3):
         sys.exit(__doc__)

@@ -75,3 +75,20 @@ def test_a_change_that_adds_a_known_amount_to_every_packing_is_found_paired_exac
     assert abs(float(value) - 0.1) < 1e-12
     lo, hi = (float(x) for x in interval.rstrip("]").split(", "))
     assert abs(lo - 0.1) < 1e-9 and abs(hi - 0.1) < 1e-9
+
+
+def test_another_specimen_beside_the_pilot_gives_the_unpaired_difference_of_the_means(tmp_path):
+    # Independent packings: the difference of the means, with a Welch interval that holds it and is not degenerate;
+    # each of the other record's groups against each of the base's groups on the same surface, none across surfaces.
+    write(tmp_path / "base.csv", {("regular", "on"): [0.4, 0.5, 0.45, 0.55], ("regular", "off"): [0.6, 0.7, 0.65],
+                                  ("rectangular", "on"): [0.2, 0.3]})
+    write(tmp_path / "fine.csv", {("regular", "off"): [0.3, 0.32, 0.31, 0.37]})
+    rows = ez.beside(ez.read(tmp_path / "fine.csv"), ez.read(tmp_path / "base.csv")).splitlines()[2:]
+    assert len(rows) == 2
+    on = [r for r in rows if r.startswith("| regular | off | on |")][0]
+    cells = [c.strip() for c in on.split("|")[1:-1]]
+    assert cells[3] == "4, 4"
+    value, interval = cells[4].split(" [")
+    assert abs(float(value) - (0.325 - 0.475)) < 1e-9
+    lo, hi = (float(x) for x in interval.rstrip("]").split(", "))
+    assert lo < float(value) < hi and hi - lo > 0.05
