@@ -7,6 +7,8 @@
 #include <map>
 #include <numbers>
 
+#include "kerf/analytic/forces/chip_term.hpp"
+#include "kerf/analytic/forces/oxley_model.hpp"
 #include "kerf/analytic/kinds/material_models.hpp"
 #include "kerf/analytic/kinds/predict.hpp"
 #include "kerf/analytic/registry.hpp"
@@ -219,8 +221,9 @@ TEST_CASE("Oxley deformation works when the force model's flow stress leaves Joh
       {"grain_size_um", 20.0}, {"burgers_vector_nm", 0.248}, {"misorientation_deg", 2.0}};
   const auto scene = kerf::parse_analytic_scene(doc);
   CHECK_FALSE(scene.flow_stress.johnson_cook.has_value());
-  REQUIRE(scene.oxley.material.has_value());
-  CHECK_THAT(scene.oxley.material->johnson_cook.A_Pa, WithinRel(553.1e6, 1e-12));  // AISI 1045's Johnson-Cook A
+  REQUIRE(scene.params<kerf::OxleyModelParams>().material.has_value());
+  CHECK_THAT(scene.params<kerf::OxleyModelParams>().material->johnson_cook.A_Pa,
+             WithinRel(553.1e6, 1e-12));  // AISI 1045's Johnson-Cook A
   const auto p = kerf::predict(scene);
   CHECK(p.flow.johnson_cook_Pa == 0.0);
   CHECK(p.flow.total_Pa == p.flow.hall_petch_Pa);
@@ -582,7 +585,7 @@ TEST_CASE("The key reference comes from the tables the scenes are read with", "[
   const auto scene = kerf::parse_analytic_scene(doc);
   CHECK(scene.force_auto);
   CHECK(scene.clearance_rad == kerf::units::deg_to_rad(7.0));
-  CHECK(scene.chip.liu_li.lower_limit_margin_rad == kerf::units::deg_to_rad(1.0));
+  CHECK(scene.params<kerf::ChipTermParams>().liu_li.lower_limit_margin_rad == kerf::units::deg_to_rad(1.0));
   CHECK(scene.contact_shear_angle == kerf::ShearAngleModel::merchant);
   // Registry names become the enums their lines construct; the order of contact-length names is kept.
   doc = orthogonal_scene();
@@ -592,7 +595,7 @@ TEST_CASE("The key reference comes from the tables the scenes are read with", "[
   doc["models"]["contact_shear_angle"] = "mssp";
   const auto named = kerf::parse_analytic_scene(doc);
   CHECK(named.shear_angle == kerf::ShearAngleSource::lee_shaffer);
-  CHECK(named.chip.liu_li.closure == kerf::FrictionClosure::constant);
+  CHECK(named.params<kerf::ChipTermParams>().liu_li.closure == kerf::FrictionClosure::constant);
   REQUIRE(named.contact_lengths.size() == 2);
   CHECK(named.contact_lengths[0].column == "contact_length_vinogradov_mssp_mm");
   CHECK(named.contact_lengths[1].model == kerf::ContactLengthModel::altintas);
