@@ -213,7 +213,7 @@ void predict_chip_forces(const AnalyticScene& scene, const OxleyResult* oxley, b
   if (sharp) {
     warn_if_edge_ignored(scene, "the sharp-tool model ignores it (use models.force = liu_li)", p);
   } else {
-    p.liu_li = liu_li;
+    p.chip_term.liu_li = liu_li;
   }
   if (liu_li.rake_face_ploughs) {
     p.warnings.push_back(
@@ -224,13 +224,14 @@ void predict_chip_forces(const AnalyticScene& scene, const OxleyResult* oxley, b
   }
   // The ploughing term under the edge: the wave model on the chord of the arc below h_p = min(t0, h_s).
   ForcePerWidth ploughing;
-  if (p.liu_li && chip.ploughing == PloughingModel::wave && params.edge_radius_m > 0.0) {
-    p.friction_factor = ploughing_friction_factor(scene, beta);
-    const EdgePloughingParams plough{.edge_radius_m = params.edge_radius_m, .friction_factor = p.friction_factor};
-    p.ploughing = naming_scene_keys(kSceneKeys, [&] {
+  if (p.chip_term.liu_li && chip.ploughing == PloughingModel::wave && params.edge_radius_m > 0.0) {
+    p.chip_term.friction_factor = ploughing_friction_factor(scene, beta);
+    const EdgePloughingParams plough{.edge_radius_m = params.edge_radius_m,
+                                     .friction_factor = p.chip_term.friction_factor};
+    p.chip_term.ploughing = naming_scene_keys(kSceneKeys, [&] {
       return edge_ploughing_force_per_width(plough, k_s, liu_li.ploughed_thickness_m, &p.guards);
     });
-    ploughing = p.ploughing->force;
+    ploughing = p.chip_term.ploughing->force;
   }
   p.cutting_force_N = (liu_li.total.cutting_N_per_m + ploughing.cutting_N_per_m) * scene.width_m;
   p.thrust_force_N = (liu_li.total.thrust_N_per_m + ploughing.thrust_N_per_m) * scene.width_m;
@@ -252,8 +253,8 @@ const OrthogonalForceModel liu_li_force_model{.predict = &predict_liu_li_forces,
 
 void write_edge_cells(const AnalyticScene& scene, const Prediction& p, CellWriter& w) {
   const ChipTermParams& chip = scene.params<ChipTermParams>();
-  const bool has = p.liu_li.has_value();
-  const LiuLiResult l = p.liu_li.value_or(LiuLiResult{});
+  const bool has = p.chip_term.liu_li.has_value();
+  const LiuLiResult l = p.chip_term.liu_li.value_or(LiuLiResult{});
   w.text("friction_closure", friction_closure_name(chip.liu_li.closure));
   w.text("lower_limit_rule", lower_limit_rule_name(chip.liu_li.lower_limit));
   w.optional_number("lower_limit_deg", has, units::rad_to_deg(l.lower_limit_rad));
@@ -264,17 +265,17 @@ void write_edge_cells(const AnalyticScene& scene, const Prediction& p, CellWrite
   w.optional_number("edge_cutting_force_N", has, l.edge.cutting_N_per_m * p.width_m);
   w.optional_number("edge_thrust_force_N", has, l.edge.thrust_N_per_m * p.width_m);
   w.text("ploughing_model", ploughing_model_name(chip.ploughing));
-  const bool ploughs = p.ploughing.has_value();
-  w.optional_number("friction_factor", ploughs, p.friction_factor);
+  const bool ploughs = p.chip_term.ploughing.has_value();
+  w.optional_number("friction_factor", ploughs, p.chip_term.friction_factor);
   w.optional_number("ploughing_attack_angle_deg", ploughs,
-                    units::rad_to_deg(p.ploughing.value_or(EdgePloughingResult{}).factors.attack_angle_rad));
+                    units::rad_to_deg(p.chip_term.ploughing.value_or(EdgePloughingResult{}).factors.attack_angle_rad));
 }
 
 void print_edge_details(std::FILE* text, const AnalyticScene& scene, const Prediction& p) {
   using units::m_to_um;
   using units::rad_to_deg;
-  if (!p.liu_li) return;
-  const auto& l = *p.liu_li;
+  if (!p.chip_term.liu_li) return;
+  const auto& l = *p.chip_term.liu_li;
   fmt::print(
       text, "edge integral     from {:.4g} deg to {:.4g} deg (stagnation {:.4g} deg{}); ploughed layer {:.6g} um\n",
       rad_to_deg(l.lower_limit_rad), rad_to_deg(l.upper_limit_rad), rad_to_deg(l.stagnation_angle_rad),
@@ -282,12 +283,12 @@ void print_edge_details(std::FILE* text, const AnalyticScene& scene, const Predi
   fmt::print(text,
              "edge part         cutting {:.6g} N, thrust {:.6g} N (the thrust depends strongly on the lower limit)\n",
              l.edge.cutting_N_per_m * p.width_m, l.edge.thrust_N_per_m * p.width_m);
-  if (p.ploughing) {
-    const auto& w = *p.ploughing;
+  if (p.chip_term.ploughing) {
+    const auto& w = *p.chip_term.ploughing;
     fmt::print(text,
                "ploughing part    cutting {:.6g} N, thrust {:.6g} N (wave model, f = {:.4g}, chord {:.6g} um at "
                "{:.4g} deg)\n",
-               w.force.cutting_N_per_m * p.width_m, w.force.thrust_N_per_m * p.width_m, p.friction_factor,
+               w.force.cutting_N_per_m * p.width_m, w.force.thrust_N_per_m * p.width_m, p.chip_term.friction_factor,
                m_to_um(w.chord_m), rad_to_deg(w.factors.attack_angle_rad));
   } else {
     fmt::print(text, "ploughing part    none (models.ploughing = {})\n",

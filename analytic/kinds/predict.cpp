@@ -168,7 +168,7 @@ bool chip_model(const R& r) {
   return !r.scene.force_model().solves_oxley;
 }
 ForcePerWidth plough(const R& r) {
-  return r.p.ploughing ? r.p.ploughing->force : ForcePerWidth{};
+  return r.p.chip_term.ploughing ? r.p.chip_term.ploughing->force : ForcePerWidth{};
 }
 
 }  // namespace
