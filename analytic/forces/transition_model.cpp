@@ -114,17 +114,6 @@ const FieldTable<TransitionParams>& transition_model_fields() {
   return table;
 }
 
-const FieldTable<TransitionParams>& transition_fields() {
-  static const FieldTable<TransitionParams> table{
-      number_field("ductile_layer_factor", units::kSi("(times d_c)"), Range::positive(),
-                   "the layer the edge removes in the ductile mode above d_c, l = factor d_c",
-                   &TransitionParams::layer_factor),
-      number_field("fracture_coefficient", units::kNone, Range::non_negative(),
-                   "zeta of the fracture part zeta K_c (sqrt(h) - sqrt(l)) (docs/models.md)",
-                   &TransitionParams::fracture_coefficient)};
-  return table;
-}
-
 const ModelParams transition_model_params{.fields = [] { return scene_params_fields(transition_model_fields()); },
                                           .objects = kObjects};
 

@@ -24,9 +24,9 @@ struct TransitionDetails {
 extern const OrthogonalForceModel transition_force_model;
 
 /// Its parameters' field tables: its key among the scene's `models` (fracture, a choice among the registry's
-/// fracture lines) and the object models.transition. The scene reads them, and `kerf-forces keys` lists them.
+/// fracture lines), and the object models.transition (transition_fields(), forces/transition.hpp, where the physics
+/// validates with it). The scene reads them, and `kerf-forces keys` lists them.
 const FieldTable<TransitionParams>& transition_model_fields();
-const FieldTable<TransitionParams>& transition_fields();
 /// The block of those tables, which its registry line carries (scene.params<TransitionParams>()).
 extern const ModelParams transition_model_params;
 
