@@ -1,5 +1,6 @@
 #include "kerf/analytic/registry.hpp"
 
+#include <algorithm>
 #include <deque>
 #include <map>
 
@@ -25,15 +26,17 @@ namespace {
 std::vector<AnalyticModelInfo>& registry() {
   static std::vector<AnalyticModelInfo> models = {
       // kind, name, summary, needs, the enum value the name constructs (none: handled by name); force lines:
-      // the scene kind that runs the model and, for the orthogonal kind, the force model it runs
+      // the scene kind that runs the model and, for the orthogonal kind, the force model it runs; the parameter
+      // block the model owns (the `models` section lists the blocks in the order of their first line here)
       {"force", "auto",
        "the cheapest valid force model: oxley without friction data, merchant for a sharp edge "
        "(r < 5 % of t0), else liu_li",
        "as the chosen model", -1, &build_orthogonal_scene, &auto_force_model},
       {"force", "merchant", "sharp-tool Merchant force circle", "flow stress, friction, shear angle", -1,
-       &build_orthogonal_scene, &merchant_force_model},
+       &build_orthogonal_scene, &merchant_force_model, &chip_term_params},
       {"force", "liu_li", "Liu-Li edge-radius model, Shao et al. 2013, Eqs. 1-3",
-       "flow stress, friction, shear angle or chip ratio", -1, &build_orthogonal_scene, &liu_li_force_model},
+       "flow stress, friction, shear angle or chip ratio", -1, &build_orthogonal_scene, &liu_li_force_model,
+       &chip_term_params},
       {"force", "oxley", "extended Oxley theory with Johnson-Cook (Lalwani et al. 2009), sharp tool",
        "material johnson_cook, thermal and oxley groups", -1, &build_orthogonal_scene, &oxley_force_model},
       {"force", "transition",
@@ -41,7 +44,7 @@ std::vector<AnalyticModelInfo>& registry() {
        "merchant for a sharp edge) up to a layer of about d_c, then that layer at the edge "
        "plus a fracture part (models.fracture; docs/models.md); from 0.01 um to 0.2 mm",
        "material E, hardness, toughness; friction; a flow stress (hardness for glasses)", -1, &build_orthogonal_scene,
-       &transition_force_model},
+       &transition_force_model, &transition_model_params},
       {"force", "trepanning",
        "fixed-abrasive trepanning drill, axial force and torque (Yu et al. 2023, Eqs. 21-22; brittle "
        "regime)",
@@ -71,8 +74,11 @@ std::vector<AnalyticModelInfo>& registry() {
        "", id(DeformationModel::room_temperature)},
       {"deformation", "given", "cut.strain, cut.strain_rate_per_s and cut.temperature_K as given", "those keys",
        id(DeformationModel::given)},
+      // The Oxley solve's block (models.oxley_tolerance) is carried here, not by the force line `oxley`: the solve
+      // serves force oxley and deformation oxley alike, and its key follows the transition model's in `models`.
       {"deformation", "oxley", "zone AB strain, strain rate and temperature of an extended Oxley solve",
-       "material johnson_cook, thermal and oxley groups", id(DeformationModel::oxley)},
+       "material johnson_cook, thermal and oxley groups", id(DeformationModel::oxley), nullptr, nullptr,
+       &oxley_model_params},
       {"shear_angle", "merchant", "minimum energy (MEP), Berezvai et al. 2019, Eq. 4", "friction",
        id(ShearAngleSource::merchant)},
       {"shear_angle", "lee_shaffer", "maximum shear stress (MSSP), Berezvai et al. 2019, Eq. 4", "friction",
@@ -155,6 +161,13 @@ bool register_analytic_model(const AnalyticModelInfo& line) {
   registry().push_back(line);
   lists.add(line);
   return true;
+}
+
+std::vector<const ModelParams*> analytic_model_params() {
+  std::vector<const ModelParams*> blocks;
+  for (const auto& m : registry())
+    if (m.params && std::find(blocks.begin(), blocks.end(), m.params) == blocks.end()) blocks.push_back(m.params);
+  return blocks;
 }
 
 std::span<const std::string_view> analytic_model_names(std::string_view kind) {

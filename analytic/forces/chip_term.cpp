@@ -78,10 +78,11 @@ void check_shear_angle(double phi, const AnalyticScene& scene) {
 /// it back). A closure that implies beta < 0 (friction pulling the chip down the rake face: a chip ratio or
 /// shear-angle rule the closure cannot match) is refused, naming what set the shear angle.
 double prediction_friction_angle(const AnalyticScene& scene, double shear_angle_rad) {
+  const ChipTermParams& chip = scene.params<ChipTermParams>();
   const double given = scene.friction_angle_rad.value_or(0.0);
-  const double beta = local_friction_angle(scene.chip.liu_li.closure, given, scene.rake_rad, shear_angle_rad);
-  if (scene.chip.liu_li.closure == FrictionClosure::constant) return beta;
-  const std::string closure(friction_closure_name(scene.chip.liu_li.closure));
+  const double beta = local_friction_angle(chip.liu_li.closure, given, scene.rake_rad, shear_angle_rad);
+  if (chip.liu_li.closure == FrictionClosure::constant) return beta;
+  const std::string closure(friction_closure_name(chip.liu_li.closure));
   if (beta < 0.0) {
     const bool measured = scene.shear_angle == ShearAngleSource::chip_ratio;
     throw InputError(measured ? "cut.chip_ratio" : "models.friction_closure",
@@ -138,6 +139,13 @@ void predict_liu_li_forces(const AnalyticScene& scene, const OxleyResult* oxley,
   predict_chip_forces(scene, oxley, false, p);
 }
 
+void read_quadrature(ObjectReader& object, AnalyticScene& scene) {
+  read_fields_into(object, quadrature_fields(), scene.params<ChipTermParams>().liu_li.quadrature, SiCheck::on);
+}
+
+constexpr ModelParamsObject kObjects[] = {{"models.quadrature", "optional: the Liu-Li integration", &read_quadrature,
+                                           [] { return fields_markdown(quadrature_fields()); }}};
+
 }  // namespace
 
 const FieldTable<ChipTermParams>& chip_term_fields() {
@@ -176,6 +184,9 @@ const FieldTable<QuadratureSettings>& quadrature_fields() {
   return table;
 }
 
+const ModelParams chip_term_params{.fields = [] { return scene_params_fields(chip_term_fields()); },
+                                   .objects = kObjects};
+
 void predict_chip_forces(const AnalyticScene& scene, const OxleyResult* oxley, bool sharp, Prediction& p) {
   const double t0 = scene.uncut_chip_thickness_m;
   nominal_shear_angle(scene, p);
@@ -191,7 +202,8 @@ void predict_chip_forces(const AnalyticScene& scene, const OxleyResult* oxley, b
   p.flow = flow_stress(scene.flow_stress, p.state, &p.guards);
   const double k_s = p.flow.shear_Pa;
 
-  LiuLiParams params = scene.chip.liu_li;
+  const ChipTermParams& chip = scene.params<ChipTermParams>();
+  LiuLiParams params = chip.liu_li;
   params.rake_rad = scene.rake_rad;
   params.edge_radius_m = sharp ? 0.0 : scene.edge_radius_m;  // Merchant: r = 0
   params.chip_ratio = p.chip_ratio;
@@ -201,24 +213,25 @@ void predict_chip_forces(const AnalyticScene& scene, const OxleyResult* oxley, b
   if (sharp) {
     warn_if_edge_ignored(scene, "the sharp-tool model ignores it (use models.force = liu_li)", p);
   } else {
-    p.liu_li = liu_li;
+    p.chip_term.liu_li = liu_li;
   }
   if (liu_li.rake_face_ploughs) {
     p.warnings.push_back(
         fmt::format("rake {:.4g} deg lies below the {} cut-off {:.4g} deg: no chip forms, the whole "
                     "cut is ploughed (chip force zero)",
-                    units::rad_to_deg(scene.rake_rad), lower_limit_rule_name(scene.chip.liu_li.lower_limit),
+                    units::rad_to_deg(scene.rake_rad), lower_limit_rule_name(chip.liu_li.lower_limit),
                     units::rad_to_deg(liu_li.cut_off_rad)));
   }
   // The ploughing term under the edge: the wave model on the chord of the arc below h_p = min(t0, h_s).
   ForcePerWidth ploughing;
-  if (p.liu_li && scene.chip.ploughing == PloughingModel::wave && params.edge_radius_m > 0.0) {
-    p.friction_factor = ploughing_friction_factor(scene, beta);
-    const EdgePloughingParams plough{.edge_radius_m = params.edge_radius_m, .friction_factor = p.friction_factor};
-    p.ploughing = naming_scene_keys(kSceneKeys, [&] {
+  if (p.chip_term.liu_li && chip.ploughing == PloughingModel::wave && params.edge_radius_m > 0.0) {
+    p.chip_term.friction_factor = ploughing_friction_factor(scene, beta);
+    const EdgePloughingParams plough{.edge_radius_m = params.edge_radius_m,
+                                     .friction_factor = p.chip_term.friction_factor};
+    p.chip_term.ploughing = naming_scene_keys(kSceneKeys, [&] {
       return edge_ploughing_force_per_width(plough, k_s, liu_li.ploughed_thickness_m, &p.guards);
     });
-    ploughing = p.ploughing->force;
+    ploughing = p.chip_term.ploughing->force;
   }
   p.cutting_force_N = (liu_li.total.cutting_N_per_m + ploughing.cutting_N_per_m) * scene.width_m;
   p.thrust_force_N = (liu_li.total.thrust_N_per_m + ploughing.thrust_N_per_m) * scene.width_m;
@@ -227,7 +240,7 @@ void predict_chip_forces(const AnalyticScene& scene, const OxleyResult* oxley, b
     p.warnings.push_back(fmt::format(
         "the {} friction closure at the nominal rake gives beta = {:.4g} deg with this shear angle ({}); it is used "
         "for the forces, the stagnation angle and the contact lengths, not the scene's {:.4g} deg ({})",
-        friction_closure_name(scene.chip.liu_li.closure), units::rad_to_deg(beta),
+        friction_closure_name(chip.liu_li.closure), units::rad_to_deg(beta),
         scene.shear_angle == ShearAngleSource::chip_ratio ? "from cut.chip_ratio" : "from models.shear_angle",
         units::rad_to_deg(*scene.friction_angle_rad), scene.friction_origin));
   }
@@ -239,10 +252,11 @@ const OrthogonalForceModel merchant_force_model{.predict = &predict_merchant_for
 const OrthogonalForceModel liu_li_force_model{.predict = &predict_liu_li_forces, .edge_columns = true};
 
 void write_edge_cells(const AnalyticScene& scene, const Prediction& p, CellWriter& w) {
-  const bool has = p.liu_li.has_value();
-  const LiuLiResult l = p.liu_li.value_or(LiuLiResult{});
-  w.text("friction_closure", friction_closure_name(scene.chip.liu_li.closure));
-  w.text("lower_limit_rule", lower_limit_rule_name(scene.chip.liu_li.lower_limit));
+  const ChipTermParams& chip = scene.params<ChipTermParams>();
+  const bool has = p.chip_term.liu_li.has_value();
+  const LiuLiResult l = p.chip_term.liu_li.value_or(LiuLiResult{});
+  w.text("friction_closure", friction_closure_name(chip.liu_li.closure));
+  w.text("lower_limit_rule", lower_limit_rule_name(chip.liu_li.lower_limit));
   w.optional_number("lower_limit_deg", has, units::rad_to_deg(l.lower_limit_rad));
   w.optional_number("upper_limit_deg", has, units::rad_to_deg(l.upper_limit_rad));
   w.optional_number("stagnation_angle_deg", has, units::rad_to_deg(l.stagnation_angle_rad));
@@ -250,18 +264,18 @@ void write_edge_cells(const AnalyticScene& scene, const Prediction& p, CellWrite
   w.optional_number("ploughed_thickness_um", has, units::m_to_um(l.ploughed_thickness_m));
   w.optional_number("edge_cutting_force_N", has, l.edge.cutting_N_per_m * p.width_m);
   w.optional_number("edge_thrust_force_N", has, l.edge.thrust_N_per_m * p.width_m);
-  w.text("ploughing_model", ploughing_model_name(scene.chip.ploughing));
-  const bool ploughs = p.ploughing.has_value();
-  w.optional_number("friction_factor", ploughs, p.friction_factor);
+  w.text("ploughing_model", ploughing_model_name(chip.ploughing));
+  const bool ploughs = p.chip_term.ploughing.has_value();
+  w.optional_number("friction_factor", ploughs, p.chip_term.friction_factor);
   w.optional_number("ploughing_attack_angle_deg", ploughs,
-                    units::rad_to_deg(p.ploughing.value_or(EdgePloughingResult{}).factors.attack_angle_rad));
+                    units::rad_to_deg(p.chip_term.ploughing.value_or(EdgePloughingResult{}).factors.attack_angle_rad));
 }
 
 void print_edge_details(std::FILE* text, const AnalyticScene& scene, const Prediction& p) {
   using units::m_to_um;
   using units::rad_to_deg;
-  if (!p.liu_li) return;
-  const auto& l = *p.liu_li;
+  if (!p.chip_term.liu_li) return;
+  const auto& l = *p.chip_term.liu_li;
   fmt::print(
       text, "edge integral     from {:.4g} deg to {:.4g} deg (stagnation {:.4g} deg{}); ploughed layer {:.6g} um\n",
       rad_to_deg(l.lower_limit_rad), rad_to_deg(l.upper_limit_rad), rad_to_deg(l.stagnation_angle_rad),
@@ -269,15 +283,16 @@ void print_edge_details(std::FILE* text, const AnalyticScene& scene, const Predi
   fmt::print(text,
              "edge part         cutting {:.6g} N, thrust {:.6g} N (the thrust depends strongly on the lower limit)\n",
              l.edge.cutting_N_per_m * p.width_m, l.edge.thrust_N_per_m * p.width_m);
-  if (p.ploughing) {
-    const auto& w = *p.ploughing;
+  if (p.chip_term.ploughing) {
+    const auto& w = *p.chip_term.ploughing;
     fmt::print(text,
                "ploughing part    cutting {:.6g} N, thrust {:.6g} N (wave model, f = {:.4g}, chord {:.6g} um at "
                "{:.4g} deg)\n",
-               w.force.cutting_N_per_m * p.width_m, w.force.thrust_N_per_m * p.width_m, p.friction_factor,
+               w.force.cutting_N_per_m * p.width_m, w.force.thrust_N_per_m * p.width_m, p.chip_term.friction_factor,
                m_to_um(w.chord_m), rad_to_deg(w.factors.attack_angle_rad));
   } else {
-    fmt::print(text, "ploughing part    none (models.ploughing = {})\n", ploughing_model_name(scene.chip.ploughing));
+    fmt::print(text, "ploughing part    none (models.ploughing = {})\n",
+               ploughing_model_name(scene.params<ChipTermParams>().ploughing));
   }
 }
 

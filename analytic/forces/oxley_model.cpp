@@ -90,6 +90,8 @@ const FieldTable<OxleyModelParams>& oxley_model_fields() {
   return table;
 }
 
+const ModelParams oxley_model_params{.fields = [] { return scene_params_fields(oxley_model_fields()); }};
+
 const OrthogonalForceModel oxley_force_model{.predict = &predict_oxley_forces, .solves_oxley = true};
 
 DeformationState shear_plane_state_of(const OxleyResult& oxley) {
@@ -97,9 +99,10 @@ DeformationState shear_plane_state_of(const OxleyResult& oxley) {
 }
 
 std::optional<OxleyResult> solve_scene_oxley(const AnalyticScene& scene, Prediction& p) {
-  if (!scene.oxley.material) return std::nullopt;
-  const OxleyParams& params = *scene.oxley.material;
-  const OxleySolverOptions& options = scene.oxley.solver;
+  const OxleyModelParams& solve = scene.params<OxleyModelParams>();
+  if (!solve.material) return std::nullopt;
+  const OxleyParams& params = *solve.material;
+  const OxleySolverOptions& options = solve.solver;
   const OxleyCut cut{.rake_rad = scene.rake_rad,
                      .uncut_chip_thickness_m = scene.uncut_chip_thickness_m,
                      .width_m = scene.width_m,

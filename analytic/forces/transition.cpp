@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "kerf/error.hpp"
+#include "kerf/field_table.hpp"
 #include "kerf/json_reader.hpp"
 #include "kerf/units.hpp"
 
@@ -15,9 +16,19 @@ std::string_view fracture_model_name(FractureModel model) {
   return model == FractureModel::none ? "none" : "lefm_scratch";
 }
 
+const FieldTable<TransitionParams>& transition_fields() {
+  static const FieldTable<TransitionParams> table{
+      number_field("ductile_layer_factor", units::kSi("(times d_c)"), Range::positive(),
+                   "the layer the edge removes in the ductile mode above d_c, l = factor d_c",
+                   &TransitionParams::layer_factor),
+      number_field("fracture_coefficient", units::kNone, Range::non_negative(),
+                   "zeta of the fracture part zeta K_c (sqrt(h) - sqrt(l)) (docs/models.md)",
+                   &TransitionParams::fracture_coefficient)};
+  return table;
+}
+
 void TransitionParams::validate(const std::string& path) const {
-  check_number(layer_factor, path + ".ductile_layer_factor", Range::positive(), "(times d_c)");
-  check_number(fracture_coefficient, path + ".fracture_coefficient", Range::non_negative(), "(-)");
+  with_path(path, [&] { check_fields(transition_fields(), *this); });
 }
 
 double ductile_layer_m(const TransitionParams& params, double critical_depth_m) {

@@ -40,7 +40,8 @@ void predict_transition_forces(const AnalyticScene& scene, const OxleyResult* ox
                      "a brittle material with elastic.youngs_modulus_GPa, brittle.hardness_GPa and "
                      "brittle.fracture_toughness_MPa_sqrt_m: models.force = transition needs its critical depth");
   }
-  const double layer = ductile_layer_m(scene.transition, *scene.critical_depth_m);
+  const TransitionParams& params = scene.params<TransitionParams>();
+  const double layer = ductile_layer_m(params, *scene.critical_depth_m);
   const double depth = scene.uncut_chip_thickness_m;
   const bool sharp = scene.edge_radius_m == 0.0;
   TransitionDetails details;
@@ -55,8 +56,8 @@ void predict_transition_forces(const AnalyticScene& scene, const OxleyResult* ox
   details.layer = {p.cutting_force_N / scene.width_m, p.thrust_force_N / scene.width_m};
   const BrittleProperties brittle = brittle_properties(*scene.material, "material");
   details.fracture = naming_scene_keys(kSceneKeys, [&] {
-    return fracture_force_per_width(scene.transition, brittle.fracture_toughness_Pa_sqrt_m, depth, layer,
-                                    scene.rake_rad, p.friction_angle_rad);
+    return fracture_force_per_width(params, brittle.fracture_toughness_Pa_sqrt_m, depth, layer, scene.rake_rad,
+                                    p.friction_angle_rad);
   });
   if (details.fracture.cutting_N_per_m > details.layer.cutting_N_per_m) {
     p.warnings.push_back(
@@ -73,7 +74,7 @@ void predict_transition_forces(const AnalyticScene& scene, const OxleyResult* ox
 void write_transition_cells(const AnalyticScene& scene, const Prediction& p, CellWriter& w) {
   const TransitionDetails* own = transition_details(p);
   const TransitionDetails t = own ? *own : TransitionDetails{};
-  w.text("fracture_model", fracture_model_name(scene.transition.fracture));
+  w.text("fracture_model", fracture_model_name(scene.params<TransitionParams>().fracture));
   w.number("ductile_layer_um", units::m_to_um(t.ductile_layer_m));
   w.number("layer_cutting_force_N", t.layer.cutting_N_per_m * p.width_m);
   w.number("layer_thrust_force_N", t.layer.thrust_N_per_m * p.width_m);
@@ -84,15 +85,24 @@ void write_transition_cells(const AnalyticScene& scene, const Prediction& p, Cel
 void print_transition(std::FILE* text, const AnalyticScene& scene, const Prediction& p) {
   const TransitionDetails* t = transition_details(p);
   if (!t) return;
+  const TransitionParams& params = scene.params<TransitionParams>();
   fmt::print(text,
              "ductile layer     l = {:.4g} um ({} x d_c); the ductile model's part {:.6g} N cutting, {:.6g} N "
              "thrust\n",
-             units::m_to_um(t->ductile_layer_m), scene.transition.layer_factor, t->layer.cutting_N_per_m * p.width_m,
+             units::m_to_um(t->ductile_layer_m), params.layer_factor, t->layer.cutting_N_per_m * p.width_m,
              t->layer.thrust_N_per_m * p.width_m);
   fmt::print(text, "fracture part     {:.6g} N cutting, {:.6g} N thrust ({})\n",
              t->fracture.cutting_N_per_m * p.width_m, t->fracture.thrust_N_per_m * p.width_m,
-             fracture_model_name(scene.transition.fracture));
+             fracture_model_name(params.fracture));
 }
+
+void read_transition(ObjectReader& object, AnalyticScene& scene) {
+  read_fields_into(object, transition_fields(), scene.params<TransitionParams>(), SiCheck::on);
+}
+
+constexpr ModelParamsObject kObjects[] = {{"models.transition",
+                                           "optional: models.force = transition's ductile layer and fracture part",
+                                           &read_transition, [] { return fields_markdown(transition_fields()); }}};
 
 }  // namespace
 
@@ -104,16 +114,8 @@ const FieldTable<TransitionParams>& transition_model_fields() {
   return table;
 }
 
-const FieldTable<TransitionParams>& transition_fields() {
-  static const FieldTable<TransitionParams> table{
-      number_field("ductile_layer_factor", units::kSi("(times d_c)"), Range::positive(),
-                   "the layer the edge removes in the ductile mode above d_c, l = factor d_c",
-                   &TransitionParams::layer_factor),
-      number_field("fracture_coefficient", units::kNone, Range::non_negative(),
-                   "zeta of the fracture part zeta K_c (sqrt(h) - sqrt(l)) (docs/models.md)",
-                   &TransitionParams::fracture_coefficient)};
-  return table;
-}
+const ModelParams transition_model_params{.fields = [] { return scene_params_fields(transition_model_fields()); },
+                                          .objects = kObjects};
 
 const OrthogonalForceModel transition_force_model{.predict = &predict_transition_forces,
                                                   .edge_columns = true,

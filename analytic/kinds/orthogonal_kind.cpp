@@ -43,7 +43,7 @@ void print_prediction(std::FILE* text, const std::string& scene_path, const Anal
                own_friction ? "the extended-Oxley solution"
                : from_scene ? scene.friction_origin
                             : fmt::format("the {} friction closure at the nominal rake",
-                                          friction_closure_name(scene.chip.liu_li.closure)));
+                                          friction_closure_name(scene.params<ChipTermParams>().liu_li.closure)));
   }
   fmt::print(text, "chip ratio        {:.4g} (chip thickness {:.6g} um)\n", value(k::chip_ratio),
              value(k::chip_thickness_um));

@@ -168,7 +168,7 @@ bool chip_model(const R& r) {
   return !r.scene.force_model().solves_oxley;
 }
 ForcePerWidth plough(const R& r) {
-  return r.p.ploughing ? r.p.ploughing->force : ForcePerWidth{};
+  return r.p.chip_term.ploughing ? r.p.chip_term.ploughing->force : ForcePerWidth{};
 }
 
 }  // namespace
@@ -287,9 +287,9 @@ void write_prediction_cells(const AnalyticScene& scene, const Prediction& p, Cel
     w.optional_number(scene.contact_lengths[i].column, has, has ? units::m_to_mm(*p.contact_lengths_m[i].second) : 0.0);
   }
   // The columns follow the models the scene asked for ('auto' may choose differently point by point).
-  if (scene.force_model().edge_columns || scene.force_auto) write_edge_cells(scene, p, w);  // chip_term.hpp
-  if (scene.oxley.material || scene.force_auto) write_oxley_cells(p, w);                    // oxley_model.hpp
-  if (scene.force_model().write_cells) scene.force_model().write_cells(scene, p, w);        // the model's own
+  if (scene.force_model().edge_columns || scene.force_auto) write_edge_cells(scene, p, w);     // chip_term.hpp
+  if (scene.params<OxleyModelParams>().material || scene.force_auto) write_oxley_cells(p, w);  // oxley_model.hpp
+  if (scene.force_model().write_cells) scene.force_model().write_cells(scene, p, w);           // the model's own
   write_result_cells(prediction_verdict_results(), report, w);
 }
 

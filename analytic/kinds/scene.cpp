@@ -11,8 +11,8 @@
 #include "kerf/analytic/forces/chip_term.hpp"
 #include "kerf/analytic/forces/critical_depth.hpp"
 #include "kerf/analytic/forces/oxley_model.hpp"
-#include "kerf/analytic/forces/transition_model.hpp"
 #include "kerf/analytic/kinds/model_fields.hpp"
+#include "kerf/analytic/kinds/model_params.hpp"
 #include "kerf/analytic/registry.hpp"
 #include "kerf/analytic/trepanning/trepanning_scene.hpp"
 #include "kerf/error.hpp"
@@ -193,8 +193,15 @@ NameListField<AnalyticScene> contact_length_field() {
           }};
 }
 
-/// The models section: the scene's own choices, then each model's keys from its unit's table (the chip term's, the
-/// transition model's, the Oxley solve's), then the contact lengths (read after contact_shear_angle, which they use).
+/// The models' parameter blocks, as the registry's lines carry them (the chip term's, the transition model's, the
+/// Oxley solve's, ...): taken once, with the `models` table.
+const std::vector<const ModelParams*>& parameter_blocks() {
+  static const std::vector<const ModelParams*> blocks = analytic_model_params();
+  return blocks;
+}
+
+/// The models section: the scene's own choices, then each parameter block's keys from its unit's table, then the
+/// contact lengths (read after contact_shear_angle, which they use).
 const FieldTable<AnalyticScene>& models_fields() {
   static const FieldTable<AnalyticScene> table = [] {
     FieldTable<AnalyticScene> out{
@@ -214,10 +221,10 @@ const FieldTable<AnalyticScene>& models_fields() {
             "nominal shear angle: MEP, MSSP or from `cut.chip_ratio` (the default when it is given); gives the chip "
             "ratio for Liu-Li",
             [](auto& s) -> auto& { return s.shear_angle; })};
-    for (const auto& models : {embedded_fields(chip_term_fields(), &AnalyticScene::chip),
-                               embedded_fields(transition_model_fields(), &AnalyticScene::transition),
-                               embedded_fields(oxley_model_fields(), &AnalyticScene::oxley)})
-      out.insert(out.end(), models.begin(), models.end());
+    for (const ModelParams* block : parameter_blocks()) {
+      const FieldTable<AnalyticScene> fields = block->fields();
+      out.insert(out.end(), fields.begin(), fields.end());
+    }
     out.push_back(choice_field("contact_shear_angle", kContactShearAngleNames,
                                "shear angle (MEP or MSSP) of the contact-length names without a suffix",
                                &AnalyticScene::contact_shear_angle));
@@ -267,6 +274,21 @@ void parse_friction(const CutKeys& keys, ObjectReader& cut, ObjectReader& root, 
   }
 }
 
+/// The key reference's line on `models`: the objects under it, the parameter blocks' and the scene's own.
+std::string_view models_about() {
+  static const std::string about = [] {
+    std::vector<std::string_view> objects;
+    for (const ModelParams* block : parameter_blocks())
+      for (const auto& object : block->objects) objects.push_back(object.key());
+    objects.push_back("flow_stress_policy");
+    std::string text = "the models to run; besides these, the objects ";
+    for (std::size_t k = 0; k < objects.size(); ++k)
+      text += fmt::format("{}`{}`", k == 0 ? "" : k + 1 == objects.size() ? " and " : ", ", objects[k]);
+    return text;
+  }();
+  return about;
+}
+
 const std::vector<SceneKeySection>& key_sections() {
   static const std::vector<SceneKeySection> list = [] {
     std::vector<SceneKeySection> out = material_key_sections();
@@ -283,13 +305,11 @@ const std::vector<SceneKeySection>& key_sections() {
           "optional, top level: the friction angle is then beta = atan(F_thrust / F_cutting) + rake (Berezvai et al. "
           "2019), in place of a friction value in `cut`",
           [] { return fields_markdown(measured_fields()); }},
-         {"models", "the models to run; besides these, the objects `quadrature`, `transition` and `flow_stress_policy`",
-          [] { return fields_markdown(models_fields()); }},
-         {"models.quadrature", "optional: the Liu-Li integration", [] { return fields_markdown(quadrature_fields()); }},
-         {"models.transition", "optional: models.force = transition's ductile layer and fracture part",
-          [] { return fields_markdown(transition_fields()); }},
-         {"models.flow_stress_policy", "optional: the Johnson-Cook law outside its domain",
-          [] { return fields_markdown(flow_stress_policy_fields()); }}});
+         {"models", models_about(), [] { return fields_markdown(models_fields()); }}});
+    for (const ModelParams* block : parameter_blocks())
+      for (const auto& object : block->objects) out.push_back({object.section, object.about, object.markdown});
+    out.push_back({"models.flow_stress_policy", "optional: the Johnson-Cook law outside its domain",
+                   [] { return fields_markdown(flow_stress_policy_fields()); }});
     for (const auto& s : trepanning_key_sections()) out.push_back(s);
     return out;
   }();
@@ -368,13 +388,13 @@ void read_models(ObjectReader& root, AnalyticScene& scene) {
   }
   scene.flow_stress_named = models.has("flow_stress");
   read_fields_into(models, models_fields(), scene, SiCheck::on);
-  if (auto quadrature = models.find_object("quadrature")) {
-    read_fields_into(*quadrature, quadrature_fields(), scene.chip.liu_li.quadrature, SiCheck::on);
-    quadrature->finish();
-  }
-  if (auto transition = models.find_object("transition")) {
-    read_fields_into(*transition, transition_fields(), scene.transition, SiCheck::on);
-    transition->finish();
+  for (const ModelParams* block : parameter_blocks()) {
+    for (const auto& object : block->objects) {
+      if (auto reader = models.find_object(object.key())) {
+        object.read(*reader, scene);
+        reader->finish();
+      }
+    }
   }
   if (auto policy = models.find_object("flow_stress_policy")) {
     read_fields_into(*policy, flow_stress_policy_fields(), scene.flow_stress.policy, SiCheck::on);
@@ -405,8 +425,9 @@ void resolve_force_model(AnalyticScene& scene) {
 
   // Friction is needed by every model except oxley, unless the chip ratio gives the shear angle and a closure
   // other than the constant one gives beta (which then also sets the stagnation angle and contact lengths).
-  const bool needs_friction = !solves_oxley && (scene.shear_angle != ShearAngleSource::chip_ratio ||
-                                                scene.chip.liu_li.closure == FrictionClosure::constant);
+  const bool needs_friction =
+      !solves_oxley && (scene.shear_angle != ShearAngleSource::chip_ratio ||
+                        scene.params<ChipTermParams>().liu_li.closure == FrictionClosure::constant);
   if (needs_friction && !scene.friction_angle_rad) {
     throw InputError("cut.friction_angle_deg", "(missing)",
                      "a friction angle (or cut.friction_coefficient, or measured.cutting_force_N and "
@@ -415,7 +436,6 @@ void resolve_force_model(AnalyticScene& scene) {
   if (scene.shear_angle == ShearAngleSource::chip_ratio && !scene.chip_ratio) {
     throw InputError("cut.chip_ratio", "(missing)", "a chip ratio t0/t_chip for models.shear_angle = chip_ratio");
   }
-  scene.chip.liu_li.friction_angle_rad = scene.friction_angle_rad.value_or(0.0);
 }
 
 /// The flow-stress terms named (and the Johnson-Cook law Oxley needs), from the material; the workpiece
@@ -492,7 +512,9 @@ void resolve_deformation(const MaterialRecord& record, const CutKeys& keys, Anal
                      "johnson_cook alone with models.force = oxley (Oxley's solution uses the Johnson-Cook law; "
                      "use force merchant or liu_li with deformation oxley to add microstructure terms)");
   }
-  if (uses_oxley) scene.oxley.material = oxley_params_from_material(record, "material", scene.flow_stress.policy);
+  if (uses_oxley)
+    scene.params<OxleyModelParams>().material =
+        oxley_params_from_material(record, "material", scene.flow_stress.policy);
 }
 
 }  // namespace

@@ -261,6 +261,14 @@ FieldTable<S> embedded_fields(const FieldTable<B>& table, B S::*member, const Fi
       table, [member](auto& s) -> auto& { return s.*member; }, own, "embedded_fields");
 }
 
+/// The fields of B as fields of S through `part`, B's part of an S reached by a function of either constness
+/// (`[](auto& s) -> auto& {...}`): a part S holds without naming its type (an analytic model's parameter block in
+/// its scene, kerf/analytic/kinds/model_params.hpp). Number, integer and choice fields; then `own`.
+template <class S, class B, class Part>
+FieldTable<S> fields_of_part(const FieldTable<B>& table, Part part, const FieldTable<S>& own = {}) {
+  return detail::fields_through(table, part, own, "fields_of_part");
+}
+
 /// The fields of a base struct B of S (a parameter struct that extends another: the softening flat joint is a
 /// flat joint with a fracture energy) as fields of S, then `own`: the base's table written once.
 template <class S, class B>

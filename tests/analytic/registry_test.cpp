@@ -6,7 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "kerf/analytic/forces/chip_term.hpp"
 #include "kerf/analytic/forces/contact_length.hpp"
+#include "kerf/analytic/forces/transition_model.hpp"
 #include "kerf/analytic/kinds/scene.hpp"
 
 using kerf::Json;
@@ -83,9 +85,9 @@ TEST_CASE("A scene constructs the models it names", "[registry][scene]") {
   const auto scene = kerf::parse_analytic_scene(doc);
   CHECK(scene.force->name == "merchant");
   CHECK(scene.shear_angle == kerf::ShearAngleSource::chip_ratio);
-  CHECK(scene.chip.liu_li.closure == kerf::FrictionClosure::lee_shaffer);
-  CHECK(scene.chip.liu_li.lower_limit == kerf::LowerLimitRule::pole);
-  CHECK(scene.chip.liu_li.quadrature.rule == kerf::QuadratureRule::gsl_qag);
+  CHECK(scene.params<kerf::ChipTermParams>().liu_li.closure == kerf::FrictionClosure::lee_shaffer);
+  CHECK(scene.params<kerf::ChipTermParams>().liu_li.lower_limit == kerf::LowerLimitRule::pole);
+  CHECK(scene.params<kerf::ChipTermParams>().liu_li.quadrature.rule == kerf::QuadratureRule::gsl_qag);
   REQUIRE(scene.contact_lengths.size() == 2);
   CHECK(scene.contact_lengths[0].model == kerf::ContactLengthModel::vinogradov);
   CHECK(scene.contact_lengths[0].shear_angle == kerf::ShearAngleModel::lee_shaffer);

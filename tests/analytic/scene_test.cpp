@@ -7,6 +7,8 @@
 #include <map>
 #include <numbers>
 
+#include "kerf/analytic/forces/chip_term.hpp"
+#include "kerf/analytic/forces/oxley_model.hpp"
 #include "kerf/analytic/kinds/material_models.hpp"
 #include "kerf/analytic/kinds/predict.hpp"
 #include "kerf/analytic/registry.hpp"
@@ -219,8 +221,9 @@ TEST_CASE("Oxley deformation works when the force model's flow stress leaves Joh
       {"grain_size_um", 20.0}, {"burgers_vector_nm", 0.248}, {"misorientation_deg", 2.0}};
   const auto scene = kerf::parse_analytic_scene(doc);
   CHECK_FALSE(scene.flow_stress.johnson_cook.has_value());
-  REQUIRE(scene.oxley.material.has_value());
-  CHECK_THAT(scene.oxley.material->johnson_cook.A_Pa, WithinRel(553.1e6, 1e-12));  // AISI 1045's Johnson-Cook A
+  REQUIRE(scene.params<kerf::OxleyModelParams>().material.has_value());
+  CHECK_THAT(scene.params<kerf::OxleyModelParams>().material->johnson_cook.A_Pa,
+             WithinRel(553.1e6, 1e-12));  // AISI 1045's Johnson-Cook A
   const auto p = kerf::predict(scene);
   CHECK(p.flow.johnson_cook_Pa == 0.0);
   CHECK(p.flow.total_Pa == p.flow.hall_petch_Pa);
@@ -271,8 +274,8 @@ TEST_CASE("One friction angle: Liu-Li's r -> 0 limit is Merchant on the same sce
         CHECK_THAT(merchant.thrust_force_N / merchant.cutting_force_N,
                    WithinRel(std::tan(merchant.friction_angle_rad - rake), 1e-12));
         // The stagnation angle uses the same beta.
-        REQUIRE(liu_li.liu_li.has_value());
-        CHECK_THAT(liu_li.liu_li->stagnation_angle_rad,
+        REQUIRE(liu_li.chip_term.liu_li.has_value());
+        CHECK_THAT(liu_li.chip_term.liu_li->stagnation_angle_rad,
                    WithinRel(-(std::numbers::pi / 4.0 + liu_li.friction_angle_rad / 2.0), 1e-14));
       }
     }
@@ -317,12 +320,12 @@ TEST_CASE("The stagnation cut-off holds for the whole tool: a rake face below it
       const auto p = kerf::predict(kerf::parse_analytic_scene(doc));
       CHECK(p.guards.has(kerf::Guard::no_chip_on_rake_face));
       // No chip force: with an edge, the force is the ploughing force under it alone (issue 38).
-      const double ploughing_N = p.ploughing ? p.ploughing->force.cutting_N_per_m * p.width_m : 0.0;
+      const double ploughing_N = p.chip_term.ploughing ? p.chip_term.ploughing->force.cutting_N_per_m * p.width_m : 0.0;
       CHECK(p.cutting_force_N == ploughing_N);
       CHECK((ploughing_N > 0.0) == (radius_um > 0.0 && std::string(force) == "liu_li"));
-      if (p.liu_li) CHECK(p.liu_li->ploughed_thickness_m == 3e-6);
-      if (p.liu_li) CHECK(p.liu_li->total.cutting_N_per_m == 0.0);
-      if (p.liu_li) CHECK(p.liu_li->total.thrust_N_per_m == 0.0);
+      if (p.chip_term.liu_li) CHECK(p.chip_term.liu_li->ploughed_thickness_m == 3e-6);
+      if (p.chip_term.liu_li) CHECK(p.chip_term.liu_li->total.cutting_N_per_m == 0.0);
+      if (p.chip_term.liu_li) CHECK(p.chip_term.liu_li->total.thrust_N_per_m == 0.0);
       doc["models"]["ploughing"] = "none";
       const auto none = kerf::predict(kerf::parse_analytic_scene(doc));
       doc["models"].erase("ploughing");
@@ -340,12 +343,12 @@ TEST_CASE("The stagnation cut-off holds for the whole tool: a rake face below it
     CAPTURE(rake_deg);
     doc["tool"]["rake_deg"] = rake_deg;
     const auto p = kerf::predict(kerf::parse_analytic_scene(doc));
-    REQUIRE(p.liu_li.has_value());
-    const double edge = p.liu_li->edge.cutting_N_per_m * p.width_m;
+    REQUIRE(p.chip_term.liu_li.has_value());
+    const double edge = p.chip_term.liu_li->edge.cutting_N_per_m * p.width_m;
     if (previous_edge >= 0.0)
-      CHECK(std::fabs(edge - previous_edge) < 0.01 * p.liu_li->rake_face.cutting_N_per_m * 2e-3 + 1e-3);
+      CHECK(std::fabs(edge - previous_edge) < 0.01 * p.chip_term.liu_li->rake_face.cutting_N_per_m * 2e-3 + 1e-3);
     previous_edge = edge;
-    CHECK((p.liu_li->rake_face.cutting_N_per_m > 0.0) == (rake_deg > -55.0));
+    CHECK((p.chip_term.liu_li->rake_face.cutting_N_per_m > 0.0) == (rake_deg > -55.0));
   }
   CHECK(previous_edge == 0.0);
 }
@@ -477,25 +480,25 @@ TEST_CASE("Ploughing: the total force is continuous where the chip starts at the
   // h_s = r (1 + sin g_s) does not depend on t0: read it off a thick cut.
   const double r_um = 0.2;
   const auto thick = predict_ploughing(1.0, r_um);
-  REQUIRE(thick.liu_li.has_value());
-  const double h_s_um = kerf::units::m_to_um(thick.liu_li->ploughed_thickness_m);
-  CHECK_THAT(h_s_um, WithinRel(r_um * (1.0 + std::sin(thick.liu_li->stagnation_angle_rad)), 1e-12));
+  REQUIRE(thick.chip_term.liu_li.has_value());
+  const double h_s_um = kerf::units::m_to_um(thick.chip_term.liu_li->ploughed_thickness_m);
+  CHECK_THAT(h_s_um, WithinRel(r_um * (1.0 + std::sin(thick.chip_term.liu_li->stagnation_angle_rad)), 1e-12));
   const auto below = predict_ploughing(h_s_um - 0.5e-9, r_um);
   const auto above = predict_ploughing(h_s_um + 0.5e-9, r_um);
-  REQUIRE(below.ploughing.has_value());
-  REQUIRE(above.ploughing.has_value());
+  REQUIRE(below.chip_term.ploughing.has_value());
+  REQUIRE(above.chip_term.ploughing.has_value());
   CHECK(below.guards.has(kerf::Guard::no_chip_on_edge));
   CHECK_FALSE(above.guards.has(kerf::Guard::no_chip_on_edge));
-  CHECK(below.liu_li->total.cutting_N_per_m == 0.0);
-  CHECK(below.ploughing->force.cutting_N_per_m > 0.0);
+  CHECK(below.chip_term.liu_li->total.cutting_N_per_m == 0.0);
+  CHECK(below.chip_term.ploughing->force.cutting_N_per_m > 0.0);
   // The note's criterion: no step finer than 1e-6 relative across a 1e-9 um step.
   CHECK_THAT(above.cutting_force_N, WithinRel(below.cutting_force_N, 1e-6));
   CHECK_THAT(above.thrust_force_N, WithinRel(below.thrust_force_N, 1e-6));
   // Inside the layer the ploughed height is t0 itself, above it h_s: the ploughing term stops growing there.
   const auto inside = predict_ploughing(0.5 * h_s_um, r_um);
-  CHECK_THAT(inside.ploughing->ploughed_height_m, WithinRel(0.5 * h_s_um * 1e-6, 1e-12));
-  CHECK(inside.ploughing->force.thrust_N_per_m < below.ploughing->force.thrust_N_per_m);
-  CHECK_THAT(thick.ploughing->ploughed_height_m, WithinRel(h_s_um * 1e-6, 1e-12));
+  CHECK_THAT(inside.chip_term.ploughing->ploughed_height_m, WithinRel(0.5 * h_s_um * 1e-6, 1e-12));
+  CHECK(inside.chip_term.ploughing->force.thrust_N_per_m < below.chip_term.ploughing->force.thrust_N_per_m);
+  CHECK_THAT(thick.chip_term.ploughing->ploughed_height_m, WithinRel(h_s_um * 1e-6, 1e-12));
 }
 
 TEST_CASE("Ploughing: above the layer the chip term is unchanged and the ploughing term stays at h_s",
@@ -504,18 +507,19 @@ TEST_CASE("Ploughing: above the layer the chip term is unchanged and the ploughi
     CAPTURE(t0_um);
     const auto wave = predict_ploughing(t0_um, 0.2);
     const auto none = predict_ploughing(t0_um, 0.2, "none");
-    REQUIRE(wave.ploughing.has_value());
-    CHECK_FALSE(none.ploughing.has_value());
-    CHECK(wave.liu_li->total.cutting_N_per_m == none.liu_li->total.cutting_N_per_m);
-    CHECK(wave.liu_li->total.thrust_N_per_m == none.liu_li->total.thrust_N_per_m);
-    CHECK(none.cutting_force_N == none.liu_li->total.cutting_N_per_m * none.width_m);
+    REQUIRE(wave.chip_term.ploughing.has_value());
+    CHECK_FALSE(none.chip_term.ploughing.has_value());
+    CHECK(wave.chip_term.liu_li->total.cutting_N_per_m == none.chip_term.liu_li->total.cutting_N_per_m);
+    CHECK(wave.chip_term.liu_li->total.thrust_N_per_m == none.chip_term.liu_li->total.thrust_N_per_m);
+    CHECK(none.cutting_force_N == none.chip_term.liu_li->total.cutting_N_per_m * none.width_m);
     CHECK_THAT(wave.cutting_force_N - none.cutting_force_N,
-               WithinRel(wave.ploughing->force.cutting_N_per_m * wave.width_m, 1e-9));
+               WithinRel(wave.chip_term.ploughing->force.cutting_N_per_m * wave.width_m, 1e-9));
     CHECK_THAT(wave.thrust_force_N - none.thrust_force_N,
-               WithinRel(wave.ploughing->force.thrust_N_per_m * wave.width_m, 1e-9));
-    CHECK_THAT(wave.ploughing->ploughed_height_m, WithinRel(wave.liu_li->ploughed_thickness_m, 1e-14));
+               WithinRel(wave.chip_term.ploughing->force.thrust_N_per_m * wave.width_m, 1e-9));
+    CHECK_THAT(wave.chip_term.ploughing->ploughed_height_m,
+               WithinRel(wave.chip_term.liu_li->ploughed_thickness_m, 1e-14));
     // The friction factor is the Lee-Shaffer sin(2 beta) of the prediction's one friction angle.
-    CHECK_THAT(wave.friction_factor, WithinRel(std::sin(2.0 * wave.friction_angle_rad), 1e-14));
+    CHECK_THAT(wave.chip_term.friction_factor, WithinRel(std::sin(2.0 * wave.friction_angle_rad), 1e-14));
   }
 }
 
@@ -526,8 +530,9 @@ TEST_CASE("Ploughing: grows with the edge radius at a fixed thickness, vanishes 
     for (double r_um = 0.01; r_um <= 5.0; r_um *= 1.25) {
       CAPTURE(r_um);
       const auto p = predict_ploughing(t0_um, r_um);
-      REQUIRE(p.ploughing.has_value());
-      const double cut = p.ploughing->force.cutting_N_per_m, thrust = p.ploughing->force.thrust_N_per_m;
+      REQUIRE(p.chip_term.ploughing.has_value());
+      const double cut = p.chip_term.ploughing->force.cutting_N_per_m,
+                   thrust = p.chip_term.ploughing->force.thrust_N_per_m;
       CHECK(cut > previous_cut);
       CHECK(thrust > previous_thrust);
       previous_cut = cut;
@@ -536,7 +541,8 @@ TEST_CASE("Ploughing: grows with the edge radius at a fixed thickness, vanishes 
   }
   // r -> 0: the ploughing force goes to zero with r (its layer is a fixed fraction of r).
   const auto small = predict_ploughing(0.1, 1e-6), smaller = predict_ploughing(0.1, 1e-9);
-  CHECK_THAT(smaller.ploughing->force.thrust_N_per_m, WithinRel(1e-3 * small.ploughing->force.thrust_N_per_m, 1e-6));
+  CHECK_THAT(smaller.chip_term.ploughing->force.thrust_N_per_m,
+             WithinRel(1e-3 * small.chip_term.ploughing->force.thrust_N_per_m, 1e-6));
   CHECK(predict_ploughing(0.1, 0.0).cutting_force_N == predict_ploughing(0.1, 0.0, "none").cutting_force_N);
 }
 
@@ -557,7 +563,7 @@ TEST_CASE("Ploughing: a friction factor outside 0 <= f < 1 names its key, and a 
   Json doc = orthogonal_scene();
   doc["cut"]["friction_factor"] = 0.25;
   const auto p = kerf::predict(kerf::parse_analytic_scene(doc));
-  CHECK(p.friction_factor == 0.25);
+  CHECK(p.chip_term.friction_factor == 0.25);
   auto row = kerf::prediction_columns(kerf::parse_analytic_scene(doc), p);
   std::map<std::string, std::string> cells(row.begin(), row.end());
   CHECK(cells["friction_factor"] == "0.25");
@@ -582,7 +588,7 @@ TEST_CASE("The key reference comes from the tables the scenes are read with", "[
   const auto scene = kerf::parse_analytic_scene(doc);
   CHECK(scene.force_auto);
   CHECK(scene.clearance_rad == kerf::units::deg_to_rad(7.0));
-  CHECK(scene.chip.liu_li.lower_limit_margin_rad == kerf::units::deg_to_rad(1.0));
+  CHECK(scene.params<kerf::ChipTermParams>().liu_li.lower_limit_margin_rad == kerf::units::deg_to_rad(1.0));
   CHECK(scene.contact_shear_angle == kerf::ShearAngleModel::merchant);
   // Registry names become the enums their lines construct; the order of contact-length names is kept.
   doc = orthogonal_scene();
@@ -592,7 +598,7 @@ TEST_CASE("The key reference comes from the tables the scenes are read with", "[
   doc["models"]["contact_shear_angle"] = "mssp";
   const auto named = kerf::parse_analytic_scene(doc);
   CHECK(named.shear_angle == kerf::ShearAngleSource::lee_shaffer);
-  CHECK(named.chip.liu_li.closure == kerf::FrictionClosure::constant);
+  CHECK(named.params<kerf::ChipTermParams>().liu_li.closure == kerf::FrictionClosure::constant);
   REQUIRE(named.contact_lengths.size() == 2);
   CHECK(named.contact_lengths[0].column == "contact_length_vinogradov_mssp_mm");
   CHECK(named.contact_lengths[1].model == kerf::ContactLengthModel::altintas);

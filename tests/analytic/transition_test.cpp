@@ -2,6 +2,8 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <string>
+#include <utility>
 
 #include "kerf/analytic/forces/glass_edge.hpp"
 #include "kerf/analytic/forces/transition_model.hpp"
@@ -105,6 +107,33 @@ TEST_CASE("Transition model: a metal without toughness is refused, naming the gr
   } catch (const kerf::InputError& e) {
     CHECK(e.field() == "material.brittle");
   }
+}
+
+TEST_CASE("Transition parameters are checked through their field table, as the scene reads them",
+          "[transition][errors]") {
+  // validate() and the scene's models.transition share transition_fields(): the same range, the same expectation.
+  const auto message = [](const auto& body) -> std::string {
+    try {
+      body();
+    } catch (const kerf::InputError& e) {
+      return e.what();
+    }
+    return "(no error)";
+  };
+  for (const auto& [key, value] : {std::pair{"ductile_layer_factor", 0.0}, std::pair{"fracture_coefficient", -1.0}}) {
+    kerf::TransitionParams t;
+    (std::string(key) == "ductile_layer_factor" ? t.layer_factor : t.fracture_coefficient) = value;
+    const std::string own = message([&] { t.validate("params"); });
+    kerf::Json doc = glass_scene(1.0);
+    doc["models"]["transition"] = {{key, value}};
+    const std::string scene = message([&] { kerf::parse_analytic_scene(doc); });
+    CHECK(own.starts_with("params." + std::string(key) + " = "));
+    CHECK(scene.starts_with("models.transition." + std::string(key) + " = "));
+    CHECK(own.substr(own.find(" = ")) == scene.substr(scene.find(" = ")));
+  }
+  CHECK(message([] { kerf::TransitionParams{.layer_factor = 0.0}.validate("params"); }) ==
+        "params.ductile_layer_factor = 0: expected a positive value in (times d_c)");
+  CHECK_NOTHROW(kerf::TransitionParams{}.validate("params"));
 }
 
 TEST_CASE("Edge force on the ductile layer: Merchant's closed form for a sharp edge", "[transition][glass_edge]") {

@@ -23,7 +23,8 @@ namespace kerf {
 
 class AnalyticCase;           // kinds/evaluate.hpp
 class MaterialCache;          // kinds/scene.hpp
-struct OrthogonalForceModel;  // kinds/scene.hpp
+struct OrthogonalForceModel;  // kinds/force_model.hpp
+struct ModelParams;           // kinds/model_params.hpp
 
 /// Builds the scene kind a force line names from a document (evaluate.hpp's parse_scene calls it).
 using SceneBuilder = std::unique_ptr<AnalyticCase> (*)(const Json& document, MaterialCache* cache);
@@ -37,6 +38,9 @@ struct AnalyticModelInfo {
   SceneBuilder build = nullptr;  ///< force lines: the scene kind that runs this model (parse_scene)
   /// force lines of the orthogonal kind: the model that kind runs (nullptr: a scene kind of its own)
   const OrthogonalForceModel* orthogonal = nullptr;
+  /// The parameter block its model owns (its keys join the orthogonal scene's `models` section, its objects the
+  /// objects under `models`); nullptr: none. A block several lines share is carried by one of them or by each.
+  const ModelParams* params = nullptr;
 };
 
 const std::vector<AnalyticModelInfo>& analytic_models();
@@ -52,6 +56,10 @@ std::span<const std::string_view> analytic_model_names(std::string_view kind);
 /// The names of the force lines that carry a model of the orthogonal kind (their `orthogonal` member), in registry
 /// order: the values of the orthogonal scene's models.force (`trepanning`, a scene kind of its own, is not one).
 std::span<const std::string_view> orthogonal_force_names();
+
+/// The parameter blocks the registry's lines carry, each once, in the order of the first line that carries it: the
+/// orthogonal scene composes its `models` section of them (kinds/scene.cpp), built at its first read.
+std::vector<const ModelParams*> analytic_model_params();
 
 /// The line of `kind` and `name` in `registry`; nullptr when none.
 const AnalyticModelInfo* registered_line(const std::vector<AnalyticModelInfo>& registry, std::string_view kind,

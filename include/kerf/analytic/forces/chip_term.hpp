@@ -3,17 +3,19 @@
 // Liu-Li integral (forces/liu_li.hpp, the physics; Merchant is its r = 0 limit) plus the wave model's ploughing term
 // under a rounded edge (forces/ploughing.hpp), which the transition model runs for its ductile layer. The unit owns
 // their parameters (the friction closure, the lower limit, the ploughing model, models.quadrature) with their field
-// tables, the edge's details (Prediction::liu_li, ploughing, friction_factor), its CSV columns and report lines.
-// Their registry lines: analytic/registry.cpp.
+// tables (the block chip_term_params, kinds/model_params.hpp), the edge's details (ChipTermDetails, kept in
+// Prediction::chip_term), its CSV columns and report lines. Their registry lines: analytic/registry.cpp.
 //
 //   kerf::Prediction p = kerf::predict(scene);            // scene.force_model() == liu_li_force_model
-//   double h_s = p.liu_li->ploughed_thickness_m;
+//   double h_s = p.chip_term.liu_li->ploughed_thickness_m;
 #include <cstdio>
+#include <optional>
 
 #include "kerf/analytic/forces/liu_li.hpp"
 #include "kerf/analytic/forces/ploughing.hpp"
 #include "kerf/analytic/forces/quadrature.hpp"
 #include "kerf/analytic/kinds/force_model.hpp"
+#include "kerf/analytic/kinds/model_params.hpp"
 #include "kerf/field_table.hpp"
 
 namespace kerf {
@@ -28,6 +30,18 @@ struct ChipTermParams {
 /// object models.quadrature: the scene reads them, and `kerf-forces keys` lists them.
 const FieldTable<ChipTermParams>& chip_term_fields();
 const FieldTable<QuadratureSettings>& quadrature_fields();
+/// The block of those tables, which the merchant and liu_li lines carry (scene.params<ChipTermParams>()).
+extern const ModelParams chip_term_params;
+
+/// The chip term's details in a prediction (Prediction::chip_term): its columns and report lines, and the kind's
+/// shared ploughing columns, read them.
+struct ChipTermDetails {
+  std::optional<LiuLiResult> liu_li;  ///< the edge integral (its total is the chip force alone); none: Merchant
+  /// The ploughing term under the edge (models.ploughing = wave with an edge radius): added to the chip term in the
+  /// prediction's cutting_force_N and thrust_force_N.
+  std::optional<EdgePloughingResult> ploughing;
+  double friction_factor = 0.0;  ///< the ploughing model's f (given, or sin(2 beta)), with `ploughing`
+};
 
 extern const OrthogonalForceModel merchant_force_model, liu_li_force_model;
 

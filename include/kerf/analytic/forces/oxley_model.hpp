@@ -1,8 +1,8 @@
 #pragma once
 // models.force = oxley as a unit of the orthogonal kind (kinds/force_model.hpp), and the extended-Oxley solve a scene
 // asks for (force oxley, or deformation oxley under another force model): the solve (forces/oxley.hpp, the physics)
-// as a force model, its parameters and their field table, its details, its CSV columns and its report line. Its
-// registry line: analytic/registry.cpp.
+// as a force model, its parameters and their field table (the block oxley_model_params), its details, its CSV
+// columns and its report line. Its registry lines (force and deformation oxley): analytic/registry.cpp.
 //
 //   kerf::Prediction p = kerf::predict(scene);            // scene.force_model() == oxley_force_model
 //   if (p.oxley) fmt::print("C0 = {}\n", p.oxley->strain_rate_constant_C0);
@@ -12,6 +12,7 @@
 #include "kerf/analytic/flow_stress/flow_stress.hpp"
 #include "kerf/analytic/forces/oxley.hpp"
 #include "kerf/analytic/kinds/force_model.hpp"
+#include "kerf/analytic/kinds/model_params.hpp"
 #include "kerf/field_table.hpp"
 
 namespace kerf {
@@ -26,6 +27,8 @@ struct OxleyModelParams {
 
 /// Its keys among the scene's `models` (oxley_tolerance): the scene reads them, and `kerf-forces keys` lists them.
 const FieldTable<OxleyModelParams>& oxley_model_fields();
+/// The block of that table (scene.params<OxleyModelParams>()), carried by the registry's deformation line `oxley`.
+extern const ModelParams oxley_model_params;
 
 /// What a prediction keeps of the solve (Prediction::oxley): under force oxley and deformation oxley alike.
 struct OxleyDetails {

@@ -23,6 +23,7 @@
 #include <string_view>
 
 #include "kerf/analytic/forces/merchant.hpp"
+#include "kerf/field_table.hpp"
 
 namespace kerf {
 
@@ -38,8 +39,14 @@ struct TransitionParams {
   double layer_factor = 1.0;                             ///< lambda = l / d_c > 0 (its key: ductile_layer_factor)
   double fracture_coefficient = kAkonoUlmZeta;           ///< zeta >= 0 (its key: fracture_coefficient)
 
+  /// Checks lambda and zeta against transition_fields()' ranges; InputError naming `path.<key>`.
   void validate(const std::string& path) const;
 };
+
+/// The numbers' field table (ductile_layer_factor, fracture_coefficient): the one place their units and ranges live.
+/// validate() checks through it; the scene reads the object models.transition with it (forces/transition_model.cpp),
+/// and `kerf-forces keys` lists it.
+const FieldTable<TransitionParams>& transition_fields();
 
 /// l = lambda d_c in m.
 double ductile_layer_m(const TransitionParams& params, double critical_depth_m);

@@ -11,9 +11,8 @@
 #include <vector>
 
 #include "kerf/analytic/flow_stress/flow_stress.hpp"
-#include "kerf/analytic/forces/liu_li.hpp"
+#include "kerf/analytic/forces/chip_term.hpp"
 #include "kerf/analytic/forces/oxley_model.hpp"
-#include "kerf/analytic/forces/ploughing.hpp"
 #include "kerf/analytic/guards.hpp"
 #include "kerf/analytic/kinds/cells.hpp"
 #include "kerf/analytic/kinds/scene.hpp"
@@ -38,13 +37,13 @@ struct Prediction {
   FlowStress flow;
   /// (column, value); no value where the model is not applicable (Guard::contact_length_not_applicable)
   std::vector<std::pair<std::string, std::optional<double>>> contact_lengths_m;
-  // The chip term's details (forces/chip_term.hpp: merchant, liu_li and the transition model's layer share it)
-  std::optional<LiuLiResult> liu_li;  ///< the chip term (its total is the chip force alone)
-  /// The ploughing term under the edge (models.ploughing = wave with force liu_li and an edge radius): added to
-  /// the chip term in cutting_force_N and thrust_force_N.
-  std::optional<EdgePloughingResult> ploughing;
-  double friction_factor = 0.0;       ///< the ploughing model's f (given, or sin(2 beta))
-  std::optional<OxleyDetails> oxley;  ///< the Oxley solve's (forces/oxley_model.hpp: force or deformation oxley)
+  // The details of the two units that several force models run, each declared and written by its unit (its columns
+  // and report lines), kept here because no one force model owns them: the chip term's, which merchant, liu_li, the
+  // transition model (its layer) and auto's choice run, and whose ploughing part the shared columns
+  // ploughing_*_force_N read; and the Oxley solve's, which force oxley and deformation oxley under any force model
+  // run (predict solves it before the force model).
+  ChipTermDetails chip_term;          ///< forces/chip_term.hpp
+  std::optional<OxleyDetails> oxley;  ///< forces/oxley_model.hpp
   /// The force model's own details (its unit's write_cells and print read them: kinds/force_model.hpp).
   std::any details;
   std::string regime;  ///< "ductile", "transition" or "brittle" against the critical depth; empty without one

@@ -1,8 +1,8 @@
 #pragma once
 // An analytic scene: the JSON file a user writes, validated into SI parameter structs. Only the models the scene
 // names are built. Each section is read through a field table (kerf/field_table.hpp) in analytic/kinds/scene.cpp: the
-// defaults are the member initialisers below, and docs/scenes.md's key tables are the tables' output
-// (`kerf-forces keys`, analytic_scene_keys_markdown).
+// defaults are the member initialisers below (and the models' parameter blocks' own), and docs/scenes.md's key
+// tables are the tables' output (`kerf-forces keys`, analytic_scene_keys_markdown).
 //
 //   kerf::Json doc = kerf::read_json_file("data/scenes/psic_liu_li.json");
 //   kerf::apply_override(doc, "tool.edge_radius_um=0.2");
@@ -18,13 +18,11 @@
 
 #include "kerf/analytic/flow_stress/flow_stress.hpp"
 #include "kerf/analytic/flow_stress/thermal.hpp"
-#include "kerf/analytic/forces/chip_term.hpp"
 #include "kerf/analytic/forces/contact_length.hpp"
-#include "kerf/analytic/forces/oxley_model.hpp"
 #include "kerf/analytic/forces/shear_angle.hpp"
-#include "kerf/analytic/forces/transition_model.hpp"
 #include "kerf/analytic/kinds/force_model.hpp"
 #include "kerf/analytic/kinds/material_models.hpp"
+#include "kerf/analytic/kinds/model_params.hpp"
 #include "kerf/analytic/kinds/round_nose.hpp"
 #include "kerf/material.hpp"
 #include "kerf/units.hpp"
@@ -90,11 +88,20 @@ struct AnalyticScene {
   /// Bifano's ductile-brittle critical depth, when the material has E, hardness and toughness.
   std::optional<double> critical_depth_m;
 
-  // The models' own parameters: each declared by its unit, read through its unit's field table (kinds/scene.cpp
-  // composes the `models` section of them) and validated there, once.
-  ChipTermParams chip;          ///< forces/chip_term.hpp: merchant, liu_li, the transition's layer (closure, ploughing)
-  TransitionParams transition;  ///< forces/transition_model.hpp: the ductile layer and the fracture part
-  OxleyModelParams oxley;       ///< forces/oxley_model.hpp: force or deformation oxley (the material's groups then)
+  // The models' own parameters: each block declared by its unit and carried by its registry line
+  // (kinds/model_params.hpp), read through the unit's field tables (kinds/scene.cpp composes the `models` section of
+  // the registry's blocks) and validated there, once. A unit reads its block with params<P>(): ChipTermParams
+  // (forces/chip_term.hpp), TransitionParams (forces/transition_model.hpp), OxleyModelParams (forces/oxley_model.hpp).
+  ModelParamsSet model_params;
+  /// The parameter block of type P: the scene's values, or P's defaults where the scene gave none.
+  template <class P>
+  const P& params() const {
+    return model_params.get<P>();
+  }
+  template <class P>
+  P& params() {
+    return model_params.get<P>();
+  }
 
   /// The force model of `force`'s line (kinds/force_model.hpp).
   const OrthogonalForceModel& force_model() const;
