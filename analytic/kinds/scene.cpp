@@ -229,6 +229,12 @@ const FieldTable<AnalyticScene>& models_fields() {
                                "shear angle (MEP or MSSP) of the contact-length names without a suffix",
                                &AnalyticScene::contact_shear_angle));
     out.push_back(contact_length_field());
+    // Two blocks (or a block and the scene's own choices) declaring one key would read one value into both: a
+    // registry's mistake (analytic/registry.cpp's parameter blocks), said at the first use.
+    std::vector<std::string_view> objects;
+    for (const ModelParams* block : parameter_blocks())
+      for (const ModelParamsObject& object : block->objects) objects.push_back(object.key());
+    check_unique_keys(out, "models", objects);
     return out;
   }();
   return table;

@@ -428,6 +428,22 @@ Json fields_to_json(const FieldTable<S>& table, const S& s) {
   return j;
 }
 
+/// Each key of `table`, and of `more` (keys read beside it: objects of the same section), once: std::logic_error
+/// naming `section` and the key otherwise (a table composed of parts, e.g. the analytic models' parameter blocks,
+/// where two parts declaring one key would read one value into both).
+template <class S>
+void check_unique_keys(const FieldTable<S>& table, std::string_view section,
+                       std::span<const std::string_view> more = {}) {
+  std::vector<std::string_view> keys;
+  for (const auto& field : table)
+    keys.push_back(std::visit([](const auto& f) { return std::string_view(f.key); }, field));
+  keys.insert(keys.end(), more.begin(), more.end());
+  std::vector<std::string_view> sorted = keys;
+  std::sort(sorted.begin(), sorted.end());
+  if (const auto twice = std::adjacent_find(sorted.begin(), sorted.end()); twice != sorted.end())
+    throw std::logic_error(std::string(section) + ": the key '" + std::string(*twice) + "' is declared twice");
+}
+
 /// The key reference of a table as a Markdown table: key, unit, valid range, default (of `defaults`), meaning;
 /// without the header, rows to append to another table.
 template <class S>

@@ -210,3 +210,15 @@ TEST_CASE("field table: optional numbers, ordered name lists, values that leave 
   CHECK_THAT(md, Catch::Matchers::Contains("| `ratio` | - | a positive value | the other one's | a ratio |"));
   CHECK_THAT(md, Catch::Matchers::Contains("| `order` | - | a list of `a`, `b`, `c` | `b` | names in order |"));
 }
+
+TEST_CASE("field table: a key declared twice, in the table or beside it, is the table's mistake, named") {
+  using namespace kerf;
+  CHECK_NOTHROW(check_unique_keys(table(), "section"));
+  const std::string_view beside[] = {"transition"};
+  CHECK_NOTHROW(check_unique_keys(table(), "section", beside));
+  FieldTable<Params> twice = table();
+  twice.push_back(number_field("angle_deg", units::kDeg, Range::any(), "the angle again", &Params::angle_rad));
+  CHECK_THROWS_WITH(check_unique_keys(twice, "section"), "section: the key 'angle_deg' is declared twice");
+  const std::string_view clash[] = {"transition", "count"};
+  CHECK_THROWS_WITH(check_unique_keys(table(), "models", clash), "models: the key 'count' is declared twice");
+}
