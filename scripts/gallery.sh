@@ -37,6 +37,7 @@ figures=(
   "toughness|toughness/crack.png|dem_toughness_crack.png|the notch and the crack, zoomed"
   "study|study/plots/tensile_strength_MPa_vs_loading_speed_m_per_s.png|study_tensile_strength.png|kerf-dem study: a result's mean and 95 % interval over the packings against a varied key"
   "study|study/plots/strain_at_peak_vs_loading_speed_m_per_s.png|study_strain_at_peak.png|a result of small values, drawn in a power of ten said in the axis label"
+  "study_list|study_list/plots/tensile_strength_MPa_by_condition.png|study_by_condition.png|a list study (two glasses, named by their tags): a result by condition, a point per condition named in the legend"
 )
 
 # The sections' headings, by step.
@@ -45,7 +46,7 @@ declare -A heading=(
   [materials_sweep]="kerf-forces sweep --plot: a categorical second key" [compare]="kerf-forces compare"
   [report]="kerf-forces report (a comparison file)" [specimen]="kerf-dem run, kind specimen"
   [tension]="kerf-dem run, kind tension" [compression]="kerf-dem run, kind compression" [cut]="kerf-dem run, kind cut"
-  [toughness]="kerf-dem run, kind toughness" [study]="kerf-dem study"
+  [toughness]="kerf-dem run, kind toughness" [study]="kerf-dem study" [study_list]="kerf-dem study: a list study"
 )
 # wrap_command: a command on lines of at most 116 characters, broken before its options (" \" and 4 spaces).
 wrap_command() {

@@ -274,7 +274,7 @@ void draw(const FigureSpec& fig, const std::pair<double, double>& xr, const std:
   // Grid, then the bands, the data, and the frame on top.
   plcol0(kGrid);
   plwidth(1.0);
-  plbox(fig.x_log ? "gl" : "g", 0.0, 0, "g", y_ticks.step, y_ticks.subticks);
+  plbox(fig.x_log ? "gl" : "g", fig.x_tick_step, 0, "g", y_ticks.step, y_ticks.subticks);
 
   for (const auto& band : fig.bands) {
     plcol0(band_index(band.color));
@@ -331,7 +331,8 @@ void draw(const FigureSpec& fig, const std::pair<double, double>& xr, const std:
   // the title or the canvas edge clips it.
   plsxax(12, 0);
   plsyax(12, 0);
-  plbox(fig.x_log ? "bcnstl" : "bcnst", 0.0, 0, "bcnstv", y_ticks.step, y_ticks.subticks);
+  plbox(fig.x_log ? "bcnstl" : "bcnst", fig.x_tick_step, fig.x_tick_step > 0 ? 1 : 0, "bcnstv", y_ticks.step,
+        y_ticks.subticks);
   plmtex("b", 2.9, 0.5, 0.5, fig.x_label.c_str());
   plmtex("l", y_label_disp, 0.5, 0.5, fig.y_label.c_str());
   plschr(0.0, 1.45);
@@ -444,8 +445,10 @@ void leave_room_for_legend(FigureSpec& figure) {
   int rows = 0;
   for (const auto& series : figure.series) {
     rows += series.label.empty() ? 0 : 1;
-    for (double y : series.y)
-      if (std::isfinite(y)) y_low = std::min(y_low, y), y_high = std::max(y_high, y);
+    for (std::size_t i = 0; i < series.y.size(); ++i) {
+      const double y = series.y[i], e = error_at(series.y_error, i);  // the interval bars drawn whole too
+      if (std::isfinite(y)) y_low = std::min(y_low, y - e), y_high = std::max(y_high, y + e);
+    }
   }
   const double range = y_high > y_low ? y_high - y_low : 1.0;
   figure.y_min = y_low - 0.03 * range;  // points at the extremes drawn whole
@@ -509,6 +512,7 @@ void scale_by_a_power_of_ten(FigureSpec& fig, bool x) {
   }
   for (auto* limit : x ? std::array{&fig.x_min, &fig.x_max} : std::array{&fig.y_min, &fig.y_max})
     if (*limit) **limit *= factor;
+  if (x) fig.x_tick_step *= factor;
   std::string& label = x ? fig.x_label : fig.y_label;
   const std::string power = fmt::format("10#u{}#d", exponent);
   const auto open = label.rfind(" (");
@@ -523,6 +527,9 @@ void render_png(const FigureSpec& figure, const std::filesystem::path& path) {
   if (!fig.x_log) scale_by_a_power_of_ten(fig, true);
   scale_by_a_power_of_ten(fig, false);
   // Validate everything PLplot would otherwise exit() on.
+  if (!(std::isfinite(fig.x_tick_step) && fig.x_tick_step >= 0.0) || (fig.x_log && fig.x_tick_step > 0.0))
+    throw InputError("figure.x_tick_step", format_value(figure.x_tick_step),
+                     "a non-negative spacing (0: PLplot's choice), 0 on a logarithmic axis");
   Extent xe, ye;
   bool any_point = false;
   for (std::size_t k = 0; k < fig.series.size(); ++k) {

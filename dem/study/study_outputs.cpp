@@ -176,59 +176,115 @@ ConditionTables condition_tables(const StudySpec& spec, const StudyScheduler& sc
   return t;
 }
 
-/// Plots: each result against each varied key with numeric values, a line per combination of the other keys;
-/// error bars are the 95 % intervals. The files written, relative to `out`.
+/// A condition's entries that tell it apart in a legend: its tags when the study has tags (a list study's labels),
+/// else its overrides; only those whose value is not the same in every condition, and not `skip` (the x axis's key).
+std::string condition_label(const StudySpec& spec, std::size_t ci, const std::string& skip) {
+  const bool by_tags = !spec.tag_names.empty();
+  const auto entries = [&](std::size_t c) -> const auto& {
+    return by_tags ? spec.conditions[c].tags : spec.conditions[c].values;
+  };
+  const auto value_in = [&](std::size_t c, const std::string& k) -> std::optional<std::string> {
+    for (const auto& [key, v] : entries(c))
+      if (key == k) return v.dump();
+    return std::nullopt;
+  };
+  std::string label;
+  for (const auto& [k, v] : entries(ci)) {
+    if (k == skip) continue;
+    bool varies = false;
+    for (std::size_t c = 0; c < spec.conditions.size() && !varies; ++c) varies = value_in(c, k) != v.dump();
+    if (varies) label += (label.empty() ? "" : ", ") + (by_tags ? k : key_label(k)) + " = " + value_text(v);
+  }
+  return label;
+}
+
+/// The varied keys worth an x axis: numeric, with at least two values among the conditions that set them (in a list
+/// study a key that only some conditions set, with one value, says nothing as an axis).
+std::vector<std::string> axis_keys(const StudySpec& spec) {
+  std::vector<std::string> keys;
+  for (const std::string& key : spec.varied_keys) {
+    std::set<double> values;
+    for (const auto& c : spec.conditions)
+      for (const auto& [k, v] : c.values)
+        if (k == key && v.is_number()) values.insert(v.get<double>());
+    if (values.size() >= 2) keys.push_back(key);
+  }
+  return keys;
+}
+
+/// One point per condition of result `n` in the figure: x from `x_of` (no point where it gives none), the series by
+/// the condition's label. Returns false when the figure says nothing: no point, a result that only repeats the x key
+/// (the loading speed) or one that is the same in every condition (a setting echoed as a result).
+bool fill_points(const StudySpec& spec, const std::vector<ResultStats>& stats, const std::string& x_key,
+                 const std::function<std::optional<double>(std::size_t)>& x_of, FigureSpec& fig) {
+  std::map<std::string, std::size_t> series_of;
+  bool echoes_key = !x_key.empty();
+  std::optional<double> first_mean;
+  bool constant = true;
+  for (std::size_t ci = 0; ci < spec.conditions.size(); ++ci) {
+    const ResultStats& st = stats[ci];
+    const std::optional<double> x = x_of(ci);
+    if (!x || !std::isfinite(st.mean)) continue;
+    echoes_key = echoes_key && st.mean == *x && st.std == 0;
+    if (!first_mean) first_mean = st.mean;
+    constant = constant && st.mean == *first_mean && st.std == 0;
+    const std::string label = condition_label(spec, ci, x_key);
+    auto [it, fresh] = series_of.try_emplace(label, fig.series.size());
+    if (fresh) {
+      PlotSeries s;
+      s.label = label;
+      s.style = x_key.empty() ? SeriesStyle::points : SeriesStyle::points_and_line;
+      s.color = static_cast<int>(fig.series.size());
+      s.marker = static_cast<int>(fig.series.size() % 5);
+      fig.series.push_back(s);
+    }
+    PlotSeries& s = fig.series[it->second];
+    s.x.push_back(*x);
+    s.y.push_back(st.mean);
+    s.y_error.push_back(std::isfinite(st.ci_high) ? st.ci_high - st.mean : NAN);
+  }
+  return !fig.series.empty() && !echoes_key && !constant;
+}
+
+/// Plots: each result against each varied key with two or more numeric values, a line per combination of the other
+/// conditions' entries; when no key has (a list study of surfaces, models, ...), each result by condition, a point
+/// per condition named in the legend. Error bars are the 95 % intervals. The files written, relative to `out`.
 std::vector<std::string> write_plots(const StudySpec& spec, const std::vector<std::string>& names,
                                      std::map<std::string, std::vector<ResultStats>>& by_result, const fs::path& out) {
   std::vector<std::string> plots;
-  for (std::size_t ki = 0; ki < spec.varied_keys.size(); ++ki) {
-    const std::string& key = spec.varied_keys[ki];
+  const auto render = [&](FigureSpec& fig, const std::string& file) {
+    if (fig.series.size() > 1) leave_room_for_legend(fig);
+    fs::create_directories(out / "plots");
+    render_png(fig, out / file);
+    plots.push_back(file);
+  };
+  const std::vector<std::string> keys = axis_keys(spec);
+  for (const std::string& key : keys) {
     for (const std::string& n : names) {
       FigureSpec fig;
       fig.title = "mean and 95 % interval over the packings";
       fig.x_label = key_label(key);  // "cut.depth_of_cut_mm" -> "depth of cut (mm)"
       fig.y_label = key_label(n);
-      std::map<std::string, std::size_t> series_of;
-      bool echoes_key = true;  // a result that only repeats the varied input (the loading speed) is not plotted
-      std::optional<double> first_mean;
-      bool constant = true;  // nor one that is the same in every condition (a setting echoed as a result)
-      for (std::size_t ci = 0; ci < spec.conditions.size(); ++ci) {
-        const ResultStats& st = by_result[n][ci];
-        std::optional<double> x;
-        std::string label;
-        for (const auto& [k, v] : spec.conditions[ci].values) {
-          if (k == key) {
-            if (v.is_number()) x = v.get<double>();
-          } else {
-            label += (label.empty() ? "" : ", ") + key_label(k) + " = " + value_text(v);
-          }
-        }
-        if (!x || !std::isfinite(st.mean)) continue;
-        echoes_key = echoes_key && st.mean == *x && st.std == 0;
-        if (!first_mean) first_mean = st.mean;
-        constant = constant && st.mean == *first_mean && st.std == 0;
-        auto [it, fresh] = series_of.try_emplace(label, fig.series.size());
-        if (fresh) {
-          PlotSeries s;
-          s.label = label;
-          s.style = SeriesStyle::points_and_line;
-          s.color = static_cast<int>(fig.series.size());
-          s.marker = static_cast<int>(fig.series.size() % 5);
-          fig.series.push_back(s);
-        }
-        PlotSeries& s = fig.series[it->second];
-        s.x.push_back(*x);
-        s.y.push_back(st.mean);
-        s.y_error.push_back(std::isfinite(st.ci_high) ? st.ci_high - st.mean : NAN);
-      }
-      if (fig.series.empty() || echoes_key || constant) continue;
+      const auto x_of = [&](std::size_t ci) -> std::optional<double> {
+        for (const auto& [k, v] : spec.conditions[ci].values)
+          if (k == key && v.is_number()) return v.get<double>();
+        return std::nullopt;
+      };
+      if (!fill_points(spec, by_result[n], key, x_of, fig)) continue;
       for (PlotSeries& s : fig.series) sort_by_x(s);  // in x order
-      if (fig.series.size() > 1) leave_room_for_legend(fig);
-      const std::string file = fmt::format("plots/{}_vs_{}.png", file_part(n), file_part(key));
-      fs::create_directories(out / "plots");
-      render_png(fig, out / file);
-      plots.push_back(file);
+      render(fig, fmt::format("plots/{}_vs_{}.png", file_part(n), file_part(key)));
     }
+  }
+  if (!keys.empty() || spec.conditions.size() < 2) return plots;
+  for (const std::string& n : names) {
+    FigureSpec fig;
+    fig.title = "mean and 95 % interval by condition";
+    fig.x_label = "condition";
+    fig.y_label = key_label(n);
+    fig.x_min = 0.5, fig.x_max = static_cast<double>(spec.conditions.size()) + 0.5, fig.x_tick_step = 1;
+    const auto x_of = [](std::size_t ci) -> std::optional<double> { return static_cast<double>(ci + 1); };
+    if (!fill_points(spec, by_result[n], "", x_of, fig)) continue;
+    render(fig, fmt::format("plots/{}_by_condition.png", file_part(n)));
   }
   return plots;
 }

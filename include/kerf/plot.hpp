@@ -52,6 +52,7 @@ struct FigureSpec {
   std::optional<double> x_min, x_max, y_min, y_max;  ///< default: the data range with a margin
   bool equal_axes = false;                           ///< same range on both axes (parity plots)
   bool x_log = false;                                ///< a logarithmic x axis (every x positive; no x error bars)
+  double x_tick_step = 0.0;  ///< the x axis's major tick spacing (0: PLplot's choice; e.g. 1 for numbered categories)
   /// best (the emptiest inside corner), top_left, top_right, bottom_right, bottom_left (inside the axes) or
   /// outside_right (beside a narrower plot)
   std::string legend_position = "best";

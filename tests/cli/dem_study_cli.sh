@@ -125,6 +125,17 @@ expect_input_error "kerf-dem: error: kind = synthetic: expected one of 'specimen
 grep -q '"value"' "$work/synthetic_out/summary.json" || fail "kerf-dem-test-kinds: no value in the summary"
 "$test_bin" run --help | grep -q "toughness, synthetic" || fail "kerf-dem-test-kinds does not list its kind after the library's"
 
+# A list study whose conditions differ by a key only one of them sets (one value: no axis) is plotted by condition,
+# a point per condition named by its tags in the legend (the grid study below keeps its axis: synthetic.std).
+cat >"$work/list.json" <<'EOF'
+{"scene": {"kind": "synthetic", "synthetic": {"mean": 10}},
+ "conditions": {"list": [{"tags": {"case": "base"}}, {"tags": {"case": "shifted"}, "synthetic.mean": 12}]},
+ "replicates": {"policy": "fixed", "count": 3}}
+EOF
+"$test_bin" study "$work/list.json" --out "$work/l" --threads 2 >/dev/null 2>"$work/err" || fail "list study: $(cat "$work/err")"
+[ -s "$work/l/plots/value_by_condition.png" ] || fail "list study: no plot by condition: $(ls "$work/l/plots" 2>&1)"
+[ ! -e "$work/l/plots/value_vs_synthetic_mean.png" ] || fail "list study: a plot against a key with one value"
+
 # Adaptive replicates on the synthetic kind (value ~ N(10, std^2) by seed): each condition stops at the
 # smallest n in [min, max] whose first n values have sem / |mean| <= 5 %, computed here from a fixed study of
 # max_count packings of the same conditions.
@@ -136,6 +147,7 @@ EOF
 sed 's/"policy": "adaptive".*/"policy": "fixed", "count": 25}}/' "$work/adaptive.json" >"$work/fixed.json"
 "$test_bin" study "$work/adaptive.json" --out "$work/a" --threads 2 >/dev/null 2>"$work/err" || fail "adaptive study: $(cat "$work/err")"
 "$test_bin" study "$work/fixed.json" --out "$work/f" --threads 2 >/dev/null 2>"$work/err" || fail "fixed study: $(cat "$work/err")"
+[ -s "$work/f/plots/value_vs_synthetic_std.png" ] || fail "grid study: no plot against its key: $(ls "$work/f/plots" 2>&1)"
 python3 - "$work/a" "$work/f" <<'EOF' || fail "adaptive stopping"
 import csv, math, statistics, sys
 a, f = sys.argv[1], sys.argv[2]

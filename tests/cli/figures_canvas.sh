@@ -3,8 +3,9 @@
 # the commands of tests/cli/lib/figures.sh (kerf-forces sweep --plot with a numeric, a log and a categorical second
 # key, compare's and report's parity and trend figures, kerf-dem's specimen, tension and compression curves and
 # specimens, a cut's forces, specimen and frame pictures, toughness curve, specimen and crack, a study's plots and
-# its items' figures), each shrunk to seconds; then lib/canvas_edge.py finds any PNG whose outer 2-pixel frame is
-# not all background (a title, axis or tick label, or legend that runs off the edge). That it can fail was checked
+# its items' figures, a list study's plots by condition), each shrunk to seconds; then lib/canvas_edge.py finds any
+# PNG whose outer 2-pixel frame is not all background (a title, axis or tick label, or legend that runs off the
+# edge). That it can fail was checked
 # by hand (2026-12-06): it failed on a figure with PIL text drawn at the edge, on a copy of forces.png cropped by
 # 40 pixels, and on 7 real figures before the fix in src/plot.cpp (a report's "a_c (mm)" subscript at the bottom
 # edge; a study's tick labels 0.20006 and a "(10^-6)" superscript at the left edge; a sweep's legend with
@@ -25,7 +26,8 @@ for f in forces_sweep.png glass_sweep.png materials_sweep.png compare/parity_axi
          compare/axial_force_vs_feed_rate.png report/parity_main_force_per_width.png report/main_force_vs_depth_of_cut.png \
          specimen/specimen.png tension/curve.png tension/specimen.png compression/curve.png compression/specimen.png \
          cut/forces.png cut/specimen.png cut/frame_0000.png toughness/curve.png toughness/specimen.png toughness/crack.png \
-         study/plots/tensile_strength_MPa_vs_loading_speed_m_per_s.png study/items/condition_1_seed_1/curve.png; do
+         study/plots/tensile_strength_MPa_vs_loading_speed_m_per_s.png study/items/condition_1_seed_1/curve.png \
+         study_list/plots/tensile_strength_MPa_by_condition.png; do
   [ -s "$work/fig/$f" ] || fail "no $f among: ${pngs[*]#$work/fig/}"
 done
 "$python" "$src/tests/cli/lib/canvas_edge.py" "${pngs[@]}" || fail "a figure runs off its canvas (above)"

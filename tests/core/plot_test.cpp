@@ -62,3 +62,28 @@ TEST_CASE("plot: sort_by_x orders the points and carries their error bars, ties 
   CHECK(s.y_error == std::vector<double>{0.1, 0.11, 0.2, 0.3});
   CHECK(s.x_error.empty());  // none stays none
 }
+
+TEST_CASE("plot: room for the legend keeps every interval bar on the axes", "[plot]") {
+  // A point whose bar reaches far above and below every other point: the y range must hold the bar's ends.
+  kerf::FigureSpec fig;
+  fig.series.push_back({"a", {1, 2}, {0.4, 0.35}, {}, {0.1, 0.35}, kerf::SeriesStyle::points, 0, 0});
+  fig.series.push_back({"b", {3}, {0.5}, {}, {NAN}, kerf::SeriesStyle::points, 1, 1});
+  kerf::leave_room_for_legend(fig);
+  REQUIRE(fig.y_min);
+  REQUIRE(fig.y_max);
+  CHECK(*fig.y_min <= 0.35 - 0.35);
+  CHECK(*fig.y_max >= 0.35 + 0.35);
+  CHECK(*fig.y_max > 0.7 + 0.1 * 0.7);  // and above the bars, room for the legend's rows
+}
+
+TEST_CASE("plot: a tick spacing must be a non-negative number on a linear axis", "[plot][errors]") {
+  const fs::path path = fs::path(KERF_BINARY_DIR) / "test_output" / "plot" / "ticks.png";
+  kerf::FigureSpec fig;
+  fig.series.push_back({"p", {1.0, 2.0}, {1.0, 2.0}, {}, {}, kerf::SeriesStyle::points, 0, 0});
+  fig.x_tick_step = -1;
+  CHECK_THROWS_WITH(kerf::render_png(fig, path), Catch::StartsWith("figure.x_tick_step = -1"));
+  fig.x_tick_step = 1, fig.x_log = true;
+  CHECK_THROWS_AS(kerf::render_png(fig, path), kerf::InputError);
+  fig.x_log = false;
+  CHECK_NOTHROW(kerf::render_png(fig, path));
+}

@@ -33,6 +33,7 @@ figure_steps=(
 --set toughness.notch_depth_mm=0.08 --set toughness.roller_radius_mm=0.03 --set toughness.speed_m_per_s=0.05 \
 --set toughness.quasi_static_check=false --replicates 2 --threads 1 --out out/gallery/toughness"
   "study|build/tools/kerf-dem study data/studies/smoke.json --threads 1 --out out/gallery/study"
+  "study_list|build/tools/kerf-dem study data/studies/smoke_glasses.json --threads 1 --out out/gallery/study_list"
 )
 
 draw_figures() {
