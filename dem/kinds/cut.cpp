@@ -37,8 +37,8 @@ SampleState cut_sample(const CutRun& run) {
     s.step = std::llround(last.time_s / res.time_step_s);  // the cut's own steps (the workpiece's count from genesis)
     s.time_s = last.time_s;
     s.travel_mm = units::m_to_mm(last.travel_m);
-    s.main_force_N = last.main_force_n;
-    s.thrust_force_N = last.thrust_force_n;
+    s.main_force_N = last.main_force_N;
+    s.thrust_force_N = last.thrust_force_N;
   }
   return s;
 }
@@ -46,7 +46,7 @@ SampleState cut_sample(const CutRun& run) {
 /// The edge zone's force from the material's edge model when the scene does not give it (kerf::edge_force_per_width:
 /// the ductile layer of the material file's E, H and K_c, cut at the tool's rake with the zone's friction).
 void set_edge_zone_force(CutParams& cut, const Material& material) {
-  if (!cut.edge_zone || cut.edge_cutting_force_n_per_m >= 0) return;
+  if (!cut.edge_zone || cut.edge_cutting_force_N_per_m >= 0) return;
   const EdgeTool tool{units::deg_to_rad(cut.rake_deg), cut.edge_radius_m, cut.edge_friction_coefficient,
                       cut.edge_layer_factor};
   EdgeForce f;
@@ -57,8 +57,8 @@ void set_edge_zone_force(CutParams& cut, const Material& material) {
                      "a material file with the data of kerf-forces' edge model (material '" + material.name +
                          "': " + e.what() + "), or the layer's cutting_force_N_per_mm and thrust_force_N_per_mm");
   }
-  cut.edge_cutting_force_n_per_m = f.force.cutting_N_per_m;
-  cut.edge_thrust_force_n_per_m = f.force.thrust_N_per_m;
+  cut.edge_cutting_force_N_per_m = f.force.cutting_N_per_m;
+  cut.edge_thrust_force_N_per_m = f.force.thrust_N_per_m;
 }
 
 /// Runs (or continues, from a checkpoint) a cut to the end of its travel and writes the outputs; returns the

@@ -66,7 +66,7 @@ std::array<std::size_t, 2> apply_groove_damage(Simulation& workpiece, const CutP
     ++count[1];
     for (std::size_t e = 0; e < stride; ++e) {
       b.bonded[k * stride + e] = 0;
-      b.shear_force_n[k * stride + e] = 0;
+      b.shear_force_N[k * stride + e] = 0;
     }
   }
   return count;

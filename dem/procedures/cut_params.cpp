@@ -111,11 +111,11 @@ const FieldTable<CutParams>& active_window_fields() {
       number_field("grain_strength_MPa", kMPa, Range::non_negative(),
                    "debris grains crush: a disk of a loose fragment pressed by the tool with more than its splitting "
                    "load pi sigma r t is removed (0: disks never break)",
-                   &P::window_grain_strength_pa),
+                   &P::window_grain_strength_Pa),
       number_field("tied_grain_strength_MPa", kMPa, Range::non_negative(),
                    "the workpiece's own disks crush: a disk still tied to the workpiece pressed by the tool with more "
                    "than pi sigma r t is removed, its joints with it (0: it breaks only by its joints)",
-                   &P::window_tied_grain_strength_pa)};
+                   &P::window_tied_grain_strength_Pa)};
   return table;
 }
 
@@ -144,9 +144,9 @@ const FieldTable<CutParams>& edge_zone_fields() {
                    "tool-glass friction of the layer's cut (0.15-0.4: docs/physics-glass-edge.md)",
                    &P::edge_friction_coefficient),
       given_force("cutting_force_N_per_mm", "the layer's cutting force per unit width (with thrust_force_N_per_mm)",
-                  &P::edge_cutting_force_n_per_m),
+                  &P::edge_cutting_force_N_per_m),
       given_force("thrust_force_N_per_mm", "the layer's thrust force per unit width (with cutting_force_N_per_mm)",
-                  &P::edge_thrust_force_n_per_m)};
+                  &P::edge_thrust_force_N_per_m)};
   return table;
 }
 
@@ -155,10 +155,10 @@ namespace {
 void check_cut_relations(const CutParams& p) {
   require(p.window_m >= 1e-3 * p.length_m, "cut.window_mm", units::m_to_mm(p.window_m),
           "a positive window of at least 1/1000 of cut.length_mm");
-  require(p.window_grain_strength_pa == 0 || p.active_window, "active_window.grain_strength_MPa",
-          units::pa_to_mpa(p.window_grain_strength_pa), "0 unless active_window.enabled (only a window removes disks)");
-  require(p.window_tied_grain_strength_pa == 0 || p.active_window, "active_window.tied_grain_strength_MPa",
-          units::pa_to_mpa(p.window_tied_grain_strength_pa),
+  require(p.window_grain_strength_Pa == 0 || p.active_window, "active_window.grain_strength_MPa",
+          units::pa_to_mpa(p.window_grain_strength_Pa), "0 unless active_window.enabled (only a window removes disks)");
+  require(p.window_tied_grain_strength_Pa == 0 || p.active_window, "active_window.tied_grain_strength_MPa",
+          units::pa_to_mpa(p.window_tied_grain_strength_Pa),
           "0 unless active_window.enabled (only a window removes disks)");
   // The wedge between the two faces must be a real wedge: rake + clearance < 90 deg.
   require(p.rake_deg + p.clearance_deg < 89, "tool.clearance_deg", p.clearance_deg,
@@ -174,8 +174,8 @@ void check_cut_relations(const CutParams& p) {
           units::m_to_um(p.edge_radius_m), "an edge radius whose rounding fits on both tool faces");
   require(!p.edge_zone || p.active_window, "edge_zone.enabled", 1.0,
           "false unless active_window.enabled (the zone removes disks through the window)");
-  require((p.edge_cutting_force_n_per_m < 0) == (p.edge_thrust_force_n_per_m < 0), "edge_zone.thrust_force_N_per_mm",
-          units::n_per_m_to_n_per_mm(p.edge_thrust_force_n_per_m),
+  require((p.edge_cutting_force_N_per_m < 0) == (p.edge_thrust_force_N_per_m < 0), "edge_zone.thrust_force_N_per_mm",
+          units::n_per_m_to_n_per_mm(p.edge_thrust_force_N_per_m),
           "given together with edge_zone.cutting_force_N_per_mm, or both absent (the material's edge model)");
   if (p.active_window)
     require(p.window_shift_depths < p.window_ahead_depths, "active_window.shift_depths", p.window_shift_depths,

@@ -83,7 +83,7 @@ std::string CutRun::serialize() const {
 template <class Self, class Io>
 void CutRun::zone_record_fields(Self& run, Io& io) {
   auto& z = run.res_.edge_zone;
-  io(z.samples, z.intact_samples, z.tool_work_j, z.reaction_work_j);
+  io(z.samples, z.intact_samples, z.tool_work_J, z.reaction_work_J);
 }
 
 template <class Self, class Io>
@@ -95,7 +95,7 @@ template <class Self, class Io>
 void CutRun::book_fields(Self& run, Io& io) {
   io(run.books_kept_, run.steady_booked_);
   for (auto* b : {&run.books_, &run.books_steady_start_})
-    io(b->tool_work_j, b->left_kinetic_j, b->left_strain_j, b->kinetic_j, b->strain_j);
+    io(b->tool_work_J, b->left_kinetic_J, b->left_strain_J, b->kinetic_J, b->strain_J);
 }
 
 CutRun CutRun::deserialize(std::string_view bytes) {

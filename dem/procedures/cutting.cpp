@@ -214,8 +214,8 @@ CutRun::CutRun(const Simulation& specimen, const CutParams& params)
   check_tool_speed(params_, sim_.time_step(), sim_.options().time_step_safety, b0.r_min);
   if (params_.edge_zone) {
     if (params_.edge_zone_radius_m == 0) params_.edge_zone_radius_m = 2 * b0.r_max;  // stored with the parameters
-    require(params_.edge_cutting_force_n_per_m >= 0, "edge_zone.cutting_force_N_per_mm",
-            units::n_per_m_to_n_per_mm(params_.edge_cutting_force_n_per_m),
+    require(params_.edge_cutting_force_N_per_m >= 0, "edge_zone.cutting_force_N_per_mm",
+            units::n_per_m_to_n_per_mm(params_.edge_cutting_force_N_per_m),
             "the layer's force per unit width, given or computed from the material by the cut kind, >= 0");
   }
   sim_.cracks().clear();  // only the cut's cracks count
@@ -274,46 +274,46 @@ namespace {
 /// The books between two moments (CutEnergy's balance).
 CutEnergy cut_energy_between(const CutEnergyBooks& from, const CutEnergyBooks& to) {
   CutEnergy e;
-  e.tool_work_j = to.tool_work_j - from.tool_work_j;
-  e.left_kinetic_j = to.left_kinetic_j - from.left_kinetic_j;
-  e.left_strain_j = to.left_strain_j - from.left_strain_j;
-  e.stored_change_j = (to.kinetic_j + to.strain_j) - (from.kinetic_j + from.strain_j);
-  e.dissipated_j = e.tool_work_j - e.left_kinetic_j - e.left_strain_j - e.stored_change_j;
+  e.tool_work_J = to.tool_work_J - from.tool_work_J;
+  e.left_kinetic_J = to.left_kinetic_J - from.left_kinetic_J;
+  e.left_strain_J = to.left_strain_J - from.left_strain_J;
+  e.stored_change_J = (to.kinetic_J + to.strain_J) - (from.kinetic_J + from.strain_J);
+  e.dissipated_J = e.tool_work_J - e.left_kinetic_J - e.left_strain_J - e.stored_change_J;
   return e;
 }
 }  // namespace
 
 CutEnergyBooks CutRun::books_now() const {
   CutEnergyBooks b = books_;
-  b.kinetic_j = sim_.kinetic_energy();
-  b.strain_j = sim_.stored_elastic_energy();
+  b.kinetic_J = sim_.kinetic_energy();
+  b.strain_J = sim_.stored_elastic_energy();
   return b;
 }
 
 void CutRun::crush_grains() {
   // The disks a tool face presses with more than their splitting load F = pi sigma r t, sigma the loose grains'
-  // (CutParams::window_grain_strength_pa) or the tied disks' (window_tied_grain_strength_pa); 0 is never.
-  const double loose_pa = params_.window_grain_strength_pa, tied_pa = params_.window_tied_grain_strength_pa;
-  const double weakest_pa = loose_pa > 0 && tied_pa > 0 ? std::min(loose_pa, tied_pa) : std::max(loose_pa, tied_pa);
+  // (CutParams::window_grain_strength_Pa) or the tied disks' (window_tied_grain_strength_Pa); 0 is never.
+  const double loose_Pa = params_.window_grain_strength_Pa, tied_Pa = params_.window_tied_grain_strength_Pa;
+  const double weakest_Pa = loose_Pa > 0 && tied_Pa > 0 ? std::min(loose_Pa, tied_Pa) : std::max(loose_Pa, tied_Pa);
   const auto& p = sim_.particles();
   const double t = sim_.options().thickness_m;
-  const auto splitting_load_n = [&](std::size_t u, double strength_pa) {
-    return std::numbers::pi * strength_pa * p.radius[u] * t;
+  const auto splitting_load_N = [&](std::size_t u, double strength_Pa) {
+    return std::numbers::pi * strength_Pa * p.radius[u] * t;
   };
   std::vector<std::pair<std::size_t, double>> pressed;  // disk, its largest tool load
   for (const auto& c : sim_.wall_contact_loads()) {
     const auto u = static_cast<std::size_t>(c.disk);
     if (c.wall >= first_tool_wall_ && c.wall < first_tool_wall_ + n_tool_walls_ && p.group[u] == 0 &&
-        c.normal_force_n > splitting_load_n(u, weakest_pa))
-      pressed.emplace_back(u, c.normal_force_n);
+        c.normal_force_N > splitting_load_N(u, weakest_Pa))
+      pressed.emplace_back(u, c.normal_force_N);
   }
   if (pressed.empty()) return;
   // Each against its own strength: a loose fragment's disk as a grain, a disk tied to the workpiece as one.
   const auto tied = sim_.tied_to_held();
   std::vector<std::size_t> grains, tied_disks;
-  for (const auto& [u, load_n] : pressed) {
-    const double strength_pa = tied[u] ? tied_pa : loose_pa;
-    if (strength_pa > 0 && load_n > splitting_load_n(u, strength_pa)) (tied[u] ? tied_disks : grains).push_back(u);
+  for (const auto& [u, load_N] : pressed) {
+    const double strength_Pa = tied[u] ? tied_Pa : loose_Pa;
+    if (strength_Pa > 0 && load_N > splitting_load_N(u, strength_Pa)) (tied[u] ? tied_disks : grains).push_back(u);
   }
   if (grains.empty() && tied_disks.empty()) return;
   for (auto* list : {&grains, &tied_disks}) {
@@ -329,8 +329,8 @@ void CutRun::take_window(Simulation next) {
   const CutEnergyBooks before = books_now();
   sim_ = std::move(next);
   const CutEnergyBooks after = books_now();
-  books_.left_kinetic_j += before.kinetic_j - after.kinetic_j;
-  books_.left_strain_j += before.strain_j - after.strain_j;
+  books_.left_kinetic_J += before.kinetic_J - after.kinetic_J;
+  books_.left_strain_J += before.strain_J - after.strain_J;
 }
 
 bool CutRun::advance() {
@@ -343,8 +343,8 @@ bool CutRun::advance() {
   // The edge zone: the layer's force on the tool while the edge meets intact glass, its reaction on that glass.
   const bool zone_on = params_.edge_zone && edge_zone_begin_sample();
   const double t = sim_.options().thickness_m;
-  const double zone_fx = zone_on ? params_.edge_cutting_force_n_per_m * t : 0.0;
-  const double zone_fy = zone_on ? params_.edge_thrust_force_n_per_m * t : 0.0;
+  const double zone_fx = zone_on ? params_.edge_cutting_force_N_per_m * t : 0.0;
+  const double zone_fy = zone_on ? params_.edge_thrust_force_N_per_m * t : 0.0;
   std::vector<std::array<double, 2>> loaded_at;
   for (const auto& l : sim_.disk_loads()) loaded_at.push_back({sim_.particles().x[l.disk], sim_.particles().y[l.disk]});
   res_.particle_steps += static_cast<double>(sim_.particles().size()) * params_.sample_every_steps;
@@ -358,8 +358,8 @@ bool CutRun::advance() {
     }
     if (zone_on) fx += zone_fx, fy += zone_fy;
   }
-  const double reaction_work_j = zone_on ? edge_zone_reaction_work_j(loaded_at) : 0.0;
-  if (window_ && (params_.window_grain_strength_pa > 0 || params_.window_tied_grain_strength_pa > 0)) crush_grains();
+  const double reaction_work_J = zone_on ? edge_zone_reaction_work_J(loaded_at) : 0.0;
+  if (window_ && (params_.window_grain_strength_Pa > 0 || params_.window_tied_grain_strength_Pa > 0)) crush_grains();
   const auto f = tool_force_components(fx / params_.sample_every_steps, fy / params_.sample_every_steps);
   const double elapsed = sim_.time() - t0_, travel = params_.speed_m_per_s * elapsed;
   res_.samples.push_back({travel, elapsed, f[0], f[1]});
@@ -373,14 +373,14 @@ bool CutRun::advance() {
     }
   }
   // The tool moves at -speed in x; the disks push it with fx each step: it does fx speed dt of work on them.
-  books_.tool_work_j += fx * params_.speed_m_per_s * sim_.time_step();
+  books_.tool_work_J += fx * params_.speed_m_per_s * sim_.time_step();
   if (params_.edge_zone && steady) {
     CutEdgeZoneRecord& z = res_.edge_zone;
     ++z.samples;
     z.intact_samples += zone_on;
     if (steady_booked_) {  // the books' steady part starts after its first sample
-      z.tool_work_j += zone_fx * params_.sample_every_steps * params_.speed_m_per_s * sim_.time_step();
-      z.reaction_work_j += reaction_work_j;
+      z.tool_work_J += zone_fx * params_.sample_every_steps * params_.speed_m_per_s * sim_.time_step();
+      z.reaction_work_J += reaction_work_J;
     }
   }
   if (books_kept_ && !steady_booked_ && steady) {

@@ -24,7 +24,7 @@ Material undamped_elastic() {
   Material m;
   m.local_damping = 0;
   auto& j = std::get<FlatJointParams>(m.joint);
-  j.bond.tensile_strength_pa = j.bond.cohesion_pa = 1e15;  // elastic: never breaks
+  j.bond.tensile_strength_Pa = j.bond.cohesion_Pa = 1e15;  // elastic: never breaks
   return m;
 }
 
@@ -181,7 +181,7 @@ TEST_CASE("absorbing layer: a windowed cut with a layer differs from one without
   }
   while (without.advance()) {
   }
-  CHECK(without.result().main_force_n != with.result().main_force_n);
+  CHECK(without.result().main_force_N != with.result().main_force_N);
 }
 
 TEST_CASE("absorbing layer: its keys are validated with their dotted names", "[absorbing_layer]") {
@@ -284,8 +284,8 @@ TEST_CASE("absorbing layer along the held rows: applied, with every disk active"
   }
   while (without.advance()) {
   }
-  CHECK(without.result().main_force_n != with.result().main_force_n);
-  CHECK(std::isfinite(with.result().main_force_n));
+  CHECK(without.result().main_force_N != with.result().main_force_N);
+  CHECK(std::isfinite(with.result().main_force_N));
 }
 
 TEST_CASE("absorbing layer along the held rows: its key is validated against the workpiece", "[absorbing_layer]") {

@@ -146,7 +146,7 @@ TEST_CASE("cut edge: a cut resumed from its checkpoint has the uninterrupted cut
   CutRun older = CutRun::deserialize(old);
   while (older.advance()) {
   }
-  CHECK(older.result().samples.back().main_force_n == whole.result().samples.back().main_force_n);
+  CHECK(older.result().samples.back().main_force_N == whole.result().samples.back().main_force_N);
   CHECK(older.result().energy_booked);
   CHECK_FALSE(older.result().edge_recorded);
 }

@@ -44,13 +44,13 @@ TEST_CASE("cut window: a window covering the whole workpiece is the full cut to 
     // Forces on the free disks (a held disk's leave out the joints and contacts between two held disks).
     for (std::size_t u = 0; u < pa.size(); ++u)
       if (pa.group[u] == 0) REQUIRE(pa.fx[u] == pb.fx[u]);
-    REQUIRE(a.result().samples.back().main_force_n == b.result().samples.back().main_force_n);
+    REQUIRE(a.result().samples.back().main_force_N == b.result().samples.back().main_force_N);
   }
   CHECK(b.result().window.rebuilds > 5);
   CHECK(b.result().window.chips.particles == 0);
   CHECK(a.result().cracks.tensile == b.result().cracks.tensile);
   CHECK(a.result().cracks.subsurface == b.result().cracks.subsurface);
-  CHECK(a.result().main_force_n == b.result().main_force_n);
+  CHECK(a.result().main_force_N == b.result().main_force_N);
 }
 
 TEST_CASE("cut window: the window's size does not grow with the workpiece: chips, frozen and untouched disks",
@@ -137,8 +137,8 @@ TEST_CASE("cut window: restored halfway, a windowed cut goes on to the bit", "[c
     const CutResult &a = whole.result(), &b = restored.result();
     REQUIRE(a.samples.size() == b.samples.size());
     for (std::size_t k = 0; k < a.samples.size(); ++k) {
-      REQUIRE(a.samples[k].main_force_n == b.samples[k].main_force_n);
-      REQUIRE(a.samples[k].thrust_force_n == b.samples[k].thrust_force_n);
+      REQUIRE(a.samples[k].main_force_N == b.samples[k].main_force_N);
+      REQUIRE(a.samples[k].thrust_force_N == b.samples[k].thrust_force_N);
     }
     CHECK(a.window.rebuilds == b.window.rebuilds);
     CHECK(a.window.chips.particles == b.window.chips.particles);
@@ -150,10 +150,10 @@ TEST_CASE("cut window: restored halfway, a windowed cut goes on to the bit", "[c
     // The energy books go on as well.
     REQUIRE(a.energy_booked);
     REQUIRE(b.energy_booked);
-    CHECK(a.energy.tool_work_j == b.energy.tool_work_j);
-    CHECK(a.energy.dissipated_j == b.energy.dissipated_j);
-    CHECK(a.energy.left_kinetic_j == b.energy.left_kinetic_j);
-    CHECK(a.energy.left_strain_j == b.energy.left_strain_j);
+    CHECK(a.energy.tool_work_J == b.energy.tool_work_J);
+    CHECK(a.energy.dissipated_J == b.energy.dissipated_J);
+    CHECK(a.energy.left_kinetic_J == b.energy.left_kinetic_J);
+    CHECK(a.energy.left_strain_J == b.energy.left_strain_J);
   }
 }
 
@@ -214,7 +214,7 @@ TEST_CASE("cut window: a cut resumed from a checkpoint without energy books (KER
   CutRun restored = CutRun::deserialize(old);
   while (restored.advance()) {
   }
-  CHECK(restored.result().samples.back().main_force_n == whole.result().samples.back().main_force_n);
+  CHECK(restored.result().samples.back().main_force_N == whole.result().samples.back().main_force_N);
   CHECK(whole.result().energy_booked);
   CHECK_FALSE(restored.result().energy_booked);
 }
@@ -235,36 +235,36 @@ TEST_CASE("cut window: the energy books balance, and what leaves the window is w
   REQUIRE(r.energy_booked);
   const double travel = r.steady_to_travel_m - r.steady_from_travel_m;
   const double one_sample = p.speed_m_per_s * p.sample_every_steps * r.time_step_s;
-  CHECK_THAT(r.energy.tool_work_j, WithinRel(r.main_force_n * travel, 2 * one_sample / travel + 1e-9));
-  CHECK(r.energy.left_kinetic_j > 0);
-  CHECK(r.energy.dissipated_j > 0);
+  CHECK_THAT(r.energy.tool_work_J, WithinRel(r.main_force_N * travel, 2 * one_sample / travel + 1e-9));
+  CHECK(r.energy.left_kinetic_J > 0);
+  CHECK(r.energy.dissipated_J > 0);
   const CutEnergy& e = r.energy;
-  CHECK_THAT(e.dissipated_j + e.left_kinetic_j + e.left_strain_j + e.stored_change_j, WithinRel(e.tool_work_j, 1e-12));
+  CHECK_THAT(e.dissipated_J + e.left_kinetic_J + e.left_strain_J + e.stored_change_J, WithinRel(e.tool_work_J, 1e-12));
 }
 
 namespace {
 /// One crushing law (active_window.grain_strength_MPa or tied_grain_strength_MPa: `strength`) on a short windowed
 /// cut: at a strength no contact reaches the cut is the cut without it, to the bit (the check alone changes nothing);
-/// at `weak_pa` disks are crushed, counted (`count`, `mass`: the law's own counters, the other law's staying 0) among
+/// at `weak_Pa` disks are crushed, counted (`count`, `mass`: the law's own counters, the other law's staying 0) among
 /// the removed disks, the window rebuilt for each crush, the energy books balanced (what a crushed disk held leaves
 /// with it), the peak force no higher; restored halfway, the cut goes on to the bit; the key needs a window.
-void check_crushing(double CutParams::*strength, double weak_pa, std::size_t ChipAccount::*count,
+void check_crushing(double CutParams::*strength, double weak_Pa, std::size_t ChipAccount::*count,
                     double ChipAccount::*mass, std::size_t ChipAccount::*other_count, const std::string& key) {
   const Simulation specimen = quick_workpiece_specimen(0.6e-3, 0.25e-3, 7);
   CutParams p = windowed(3, 2, 2, 2);
   p.length_m = 0.3e-3;
   p.entry_fraction = 0.2;
-  const auto cut = [&](double strength_pa) {
+  const auto cut = [&](double strength_Pa) {
     CutParams q = p;
-    q.*strength = strength_pa;
+    q.*strength = strength_Pa;
     CutRun run(specimen, q);
     while (run.advance()) {
     }
     return run.result();
   };
-  const CutResult none = cut(0), never = cut(1e15), weak = cut(weak_pa);
-  CHECK(never.samples.back().main_force_n == none.samples.back().main_force_n);
-  CHECK(never.main_force_n == none.main_force_n);
+  const CutResult none = cut(0), never = cut(1e15), weak = cut(weak_Pa);
+  CHECK(never.samples.back().main_force_N == none.samples.back().main_force_N);
+  CHECK(never.main_force_N == none.main_force_N);
   CHECK(never.window.chips.*count == 0);
   CHECK(none.window.chips.*count == 0);
   CHECK(weak.window.chips.*count > 0);
@@ -275,21 +275,21 @@ void check_crushing(double CutParams::*strength, double weak_pa, std::size_t Chi
   CHECK(weak.window.rebuilds > none.window.rebuilds);  // a crush rebuilds the window
   REQUIRE(weak.energy_booked);
   const CutEnergy& e = weak.energy;
-  CHECK_THAT(e.dissipated_j + e.left_kinetic_j + e.left_strain_j + e.stored_change_j, WithinRel(e.tool_work_j, 1e-12));
+  CHECK_THAT(e.dissipated_J + e.left_kinetic_J + e.left_strain_J + e.stored_change_J, WithinRel(e.tool_work_J, 1e-12));
   const auto peak = [](const CutResult& r) {
     double m = 0;
-    for (const auto& x : r.samples) m = std::max(m, x.main_force_n);
+    for (const auto& x : r.samples) m = std::max(m, x.main_force_N);
     return m;
   };
   CHECK(peak(weak) <= peak(none));
   CutParams q = p;
-  q.*strength = weak_pa;
+  q.*strength = weak_Pa;
   CutRun half(specimen, q);
   for (std::size_t k = 0; k < weak.samples.size() / 2; ++k) half.advance();
   CutRun restored = CutRun::deserialize(half.serialize());
   while (restored.advance()) {
   }
-  CHECK(restored.result().samples.back().main_force_n == weak.samples.back().main_force_n);
+  CHECK(restored.result().samples.back().main_force_N == weak.samples.back().main_force_N);
   CHECK(restored.result().window.chips.*count == weak.window.chips.*count);
   p.active_window = false;
   p.*strength = 85e6;
@@ -299,14 +299,14 @@ void check_crushing(double CutParams::*strength, double weak_pa, std::size_t Chi
 
 TEST_CASE("cut window: loose grains the tool presses beyond their splitting load are crushed", "[cut_window]") {
   // At 1 MPa: a splitting load of 0.03 N for a 10 um disk, 1 mm thick.
-  check_crushing(&CutParams::window_grain_strength_pa, 1e6, &ChipAccount::crushed_grains, &ChipAccount::crushed_mass_kg,
+  check_crushing(&CutParams::window_grain_strength_Pa, 1e6, &ChipAccount::crushed_grains, &ChipAccount::crushed_mass_kg,
                  &ChipAccount::crushed_tied_disks, "active_window.grain_strength_MPa");
 }
 
 TEST_CASE("cut window: the workpiece's own disks the tool presses beyond their splitting load are crushed",
           "[cut_window]") {
   // At 20 MPa: 0.6 N for a 10 um disk; the loose grains' law off, so none of them is crushed.
-  check_crushing(&CutParams::window_tied_grain_strength_pa, 20e6, &ChipAccount::crushed_tied_disks,
+  check_crushing(&CutParams::window_tied_grain_strength_Pa, 20e6, &ChipAccount::crushed_tied_disks,
                  &ChipAccount::crushed_tied_mass_kg, &ChipAccount::crushed_grains,
                  "active_window.tied_grain_strength_MPa");
 }

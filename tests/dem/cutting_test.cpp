@@ -258,12 +258,12 @@ TEST_CASE("cutting: without friction or fracture, the tool's work is the energy 
   }
   const CutResult& r = run.result();
   REQUIRE(r.energy_booked);
-  INFO("work " << r.energy.tool_work_j << " J, dissipated " << r.energy.dissipated_j << " J, stored change "
-               << r.energy.stored_change_j << " J");
+  INFO("work " << r.energy.tool_work_J << " J, dissipated " << r.energy.dissipated_J << " J, stored change "
+               << r.energy.stored_change_J << " J");
   CHECK(r.cracks.tensile + r.cracks.shear == 0);
-  CHECK(r.energy.left_kinetic_j == 0);  // no window: nothing leaves
-  CHECK(r.energy.tool_work_j > 0);
-  CHECK(std::abs(r.energy.dissipated_j) < 1e-3 * r.energy.tool_work_j);  // measured: 9e-5
+  CHECK(r.energy.left_kinetic_J == 0);  // no window: nothing leaves
+  CHECK(r.energy.tool_work_J > 0);
+  CHECK(std::abs(r.energy.dissipated_J) < 1e-3 * r.energy.tool_work_J);  // measured: 9e-5
 }
 
 TEST_CASE("cutting: parameters are validated with the dotted key", "[cutting]") {
@@ -301,21 +301,21 @@ TEST_CASE("cutting: mean forces per travel window", "[cutting]") {
   REQUIRE(w.size() == 6);  // 0.6 / 0.1 rounds to 6.000000000000001: no seventh, empty window
   int n = 0;
   double sum = 0;
-  for (const auto& x : w) n += x.n_samples, sum += x.main_force_n * x.n_samples;
+  for (const auto& x : w) n += x.n_samples, sum += x.main_force_N * x.n_samples;
   CHECK(n == static_cast<int>(samples.size()));  // every sample in exactly one window
   double direct = 0;
-  for (const auto& s : samples) direct += s.main_force_n;
+  for (const auto& s : samples) direct += s.main_force_N;
   CHECK_THAT(sum, WithinRel(direct, 1e-12));  // the windows' weighted means give back the whole mean
-  CHECK(w[0].main_force_n == 1.0);
-  CHECK(w[4].main_force_n == 3.0);
+  CHECK(w[0].main_force_N == 1.0);
+  CHECK(w[4].main_force_N == 3.0);
   CHECK_THAT(w[5].to_m, WithinAbs(0.6e-3, 1e-18));
   CHECK(w[5].n_samples == 101);               // the sample at the end of the travel goes to the last window
   for (std::size_t k = 0; k < w.size(); ++k)  // a linear force: each window's mean is its mid-travel value
-    CHECK_THAT(w[k].thrust_force_n, WithinAbs(0.1 * (static_cast<double>(k) + 0.5), 0.001));
+    CHECK_THAT(w[k].thrust_force_N, WithinAbs(0.1 * (static_cast<double>(k) + 0.5), 0.001));
   // A window longer than the travel: one window, the whole mean.
   const auto one = travel_window_means(samples, 0.6e-3, 1e-3);
   REQUIRE(one.size() == 1);
-  CHECK_THAT(one[0].main_force_n, WithinRel(direct / static_cast<double>(samples.size()), 1e-12));
+  CHECK_THAT(one[0].main_force_N, WithinRel(direct / static_cast<double>(samples.size()), 1e-12));
   CutParams p;
   p.window_m = 0;
   CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains("cut.window_mm = 0"));
@@ -339,7 +339,7 @@ TEST_CASE("cutting: means say whether they are steady (after the entry, with sta
   steady_statistics(steady, kEntryTravelM);
   CHECK(steady.steady);
   CHECK(steady.not_steady_reason.empty());
-  CHECK(std::isfinite(steady.main_force_sem_n));
+  CHECK(std::isfinite(steady.main_force_sem_N));
   CHECK(steady.steady_from_travel_m == kEntryTravelM);
   CHECK_THAT(steady.steady_to_travel_m, WithinAbs(2e-3, 1e-15));
   // A scene's entry_fraction x length a hair short of 0.3 mm (0.0272727 x 11 mm) still counts as after the entry.
@@ -361,7 +361,7 @@ TEST_CASE("cutting: means say whether they are steady (after the entry, with sta
   // Past the entry but with too few samples for a standard error: not steady either, and said why.
   CutResult few = cut_to(0.303);
   steady_statistics(few, kEntryTravelM);
-  REQUIRE_FALSE(std::isfinite(few.main_force_sem_n));
+  REQUIRE_FALSE(std::isfinite(few.main_force_sem_N));
   CHECK_FALSE(few.steady);
   CHECK_THAT(few.not_steady_reason,
              Catch::Contains("cannot be computed from " + std::to_string(few.n_steady_samples) + " samples"));
@@ -433,13 +433,13 @@ TEST_CASE("cutting: a small cut regression (forces, cracks, determinism, grooves
     return r.result();
   };
   const CutResult a = run(p);
-  INFO("main " << a.main_force_n << " N, thrust " << a.thrust_force_n << " N, cracks " << a.cracks.tensile << "+"
+  INFO("main " << a.main_force_N << " N, thrust " << a.thrust_force_N << " N, cracks " << a.cracks.tensile << "+"
                << a.cracks.shear << " (chip " << a.cracks.chip << ")");
-  CHECK(std::isfinite(a.main_force_n));
-  CHECK(std::isfinite(a.thrust_force_n));
-  CHECK(a.main_force_n > 0);
-  CHECK(a.thrust_force_n > 0);
-  CHECK(a.main_force_std_n > 0);
+  CHECK(std::isfinite(a.main_force_N));
+  CHECK(std::isfinite(a.thrust_force_N));
+  CHECK(a.main_force_N > 0);
+  CHECK(a.thrust_force_N > 0);
+  CHECK(a.main_force_std_N > 0);
   CHECK(a.n_steady_samples > 10);
   CHECK(a.cracks.tensile + a.cracks.shear > 0);
   CHECK(a.cracks.chip > 0);
@@ -459,8 +459,8 @@ TEST_CASE("cutting: a small cut regression (forces, cracks, determinism, grooves
   const CutResult b = run(p);
   REQUIRE(b.samples.size() == a.samples.size());
   for (std::size_t k = 0; k < a.samples.size(); ++k) {
-    CHECK(a.samples[k].main_force_n == b.samples[k].main_force_n);
-    CHECK(a.samples[k].thrust_force_n == b.samples[k].thrust_force_n);
+    CHECK(a.samples[k].main_force_N == b.samples[k].main_force_N);
+    CHECK(a.samples[k].thrust_force_N == b.samples[k].thrust_force_N);
   }
   // Saved halfway and restored: the rest of the cut is bit-identical.
   CutRun half(specimen, p);
@@ -469,15 +469,15 @@ TEST_CASE("cutting: a small cut regression (forces, cracks, determinism, grooves
   while (restored.advance()) {
   }
   REQUIRE(restored.result().samples.size() == a.samples.size());
-  CHECK(restored.result().samples.back().main_force_n == a.samples.back().main_force_n);
-  CHECK(restored.result().main_force_n == a.main_force_n);
+  CHECK(restored.result().samples.back().main_force_N == a.samples.back().main_force_N);
+  CHECK(restored.result().main_force_N == a.main_force_N);
   CHECK(restored.result().cracks.chip == a.cracks.chip);
   // A frictionless tool (the engine test checks the law itself): other forces, and a checkpoint keeps the
   // tool's friction (restored halfway, the rest of the cut is bit-identical to the uninterrupted one).
   CutParams frictionless = p;
   frictionless.tool_friction_coefficient = 0;
   const CutResult smooth = run(frictionless);
-  CHECK(smooth.main_force_n != a.main_force_n);
+  CHECK(smooth.main_force_N != a.main_force_N);
   CutRun smooth_half(specimen, frictionless);
   for (std::size_t k = 0; k < smooth.samples.size() / 2; ++k) smooth_half.advance();
   CutRun smooth_restored = CutRun::deserialize(smooth_half.serialize());
@@ -489,8 +489,8 @@ TEST_CASE("cutting: a small cut regression (forces, cracks, determinism, grooves
   short_rake.rake_face_height_m = 1.5 * p.depth_of_cut_m;
   CHECK(CutRun::deserialize(CutRun(specimen, short_rake).serialize()).params().rake_face_height_m ==
         short_rake.rake_face_height_m);
-  CHECK(smooth_restored.result().main_force_n == smooth.main_force_n);
-  CHECK(smooth_restored.result().thrust_force_n == smooth.thrust_force_n);
+  CHECK(smooth_restored.result().main_force_N == smooth.main_force_N);
+  CHECK(smooth_restored.result().thrust_force_N == smooth.thrust_force_N);
   // Neither the tool nor a groove may reach the held bottom rows (workpiece 0.25 mm tall, held rows 26 um).
   CutParams too_deep = p;
   too_deep.depth_of_cut_m = 0.24e-3;

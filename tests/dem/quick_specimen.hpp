@@ -26,7 +26,7 @@ inline Material conservative_material() {
   std::get<LinearContactParams>(m.contact).friction_coefficient = 0;
   auto& joint = std::get<FlatJointParams>(m.joint);
   joint.residual_friction_coefficient = 0;
-  joint.bond.tensile_strength_pa = joint.bond.cohesion_pa = 1e15;
+  joint.bond.tensile_strength_Pa = joint.bond.cohesion_Pa = 1e15;
   return m;
 }
 

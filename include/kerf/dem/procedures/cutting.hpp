@@ -83,14 +83,14 @@ struct CutParams {
   /// 2 F / (pi 2r t) reaches sigma: the Brazilian test), is crushed: removed at once, its energy leaves with it.
   /// Without it a single loose disk wedged under the tool's tip carries up to ~100 N per mm of width
   /// (docs/notes/2026-11-29-jams.md). Checked at each force sample; windowed cuts only.
-  double window_grain_strength_pa = 0;
+  double window_grain_strength_Pa = 0;
   /// The workpiece's own disks that crush (issue 41 item 4; 0, the default: a disk tied to the workpiece breaks
   /// only by its joints). The same law for a disk still tied to the held rows: pressed by a tool face above
   /// pi sigma r t, it is removed at once, its intact joints with it. A flat joint never fails in compression, so a
   /// disk of the cut line pressed by the tool's tip carries what the lattice behind it does (jams of 50-130 N per mm
   /// of width at every disk size measured: docs/notes/2026-11-29-jams.md); glass under a sharp tip is crushed at the
   /// scale below a disk. Checked at each force sample; windowed cuts only.
-  double window_tied_grain_strength_pa = 0;
+  double window_tied_grain_strength_Pa = 0;
   /// An absorbing layer along the workpiece's held rows (its left side and bottom, as rigid as the window's
   /// frame), with or without a window: its thickness in depths of cut (0: none), the same attenuation.
   double held_absorbing_depths = 0;
@@ -108,7 +108,7 @@ struct CutParams {
   double edge_friction_coefficient = 0.3;  ///< tool on glass at the edge (section 4: 0.15-0.4)
   /// The layer's force per unit width [N/m], cutting and thrust; negative (the default): the cut kind computes them
   /// from the material and the tool (kerf::edge_force_per_width) before the run starts.
-  double edge_cutting_force_n_per_m = -1, edge_thrust_force_n_per_m = -1;
+  double edge_cutting_force_N_per_m = -1, edge_thrust_force_N_per_m = -1;
 };
 
 /// The keys of the scene's "cut", "tool" and "grooves" sections (kerf/field_table.hpp).
@@ -158,7 +158,7 @@ double leading_x_in_band(const std::vector<std::array<double, 2>>& outline, doub
 // --- running ---
 
 struct CutSample {
-  double travel_m, time_s, main_force_n, thrust_force_n;  ///< forces averaged over the sample interval
+  double travel_m, time_s, main_force_N, thrust_force_N;  ///< forces averaged over the sample interval
 };
 
 struct CutCrackCounts {
@@ -194,7 +194,7 @@ CutCrackCounts count_cut_cracks(const std::vector<CrackEvent>& cracks, double y_
 /// The mean forces over one stretch of the tool's travel, [from, to).
 struct TravelWindow {
   double from_m = 0, to_m = 0;
-  double main_force_n = 0, thrust_force_n = 0;
+  double main_force_N = 0, thrust_force_N = 0;
   int n_samples = 0;
 };
 
@@ -256,10 +256,10 @@ struct CutEdgeRecord {
 /// The edge zone over the steady part (CutParams::edge_zone; a plain record, stored in the cut's checkpoints): the
 /// samples, those in which the edge met intact glass (and carried the layer's force), and the energy over the
 /// energy books' steady part: the tool's work on the layer, and the reaction's work on the disks (what the DEM
-/// received; the rest, the layer's own, is dissipated in it, and counted in CutEnergy::dissipated_j).
+/// received; the rest, the layer's own, is dissipated in it, and counted in CutEnergy::dissipated_J).
 struct CutEdgeZoneRecord {
   std::int64_t samples = 0, intact_samples = 0;
-  double tool_work_j = 0, reaction_work_j = 0;
+  double tool_work_J = 0, reaction_work_J = 0;
 };
 
 /// Where the tool's work goes, booked as a cut runs (issue 41 item 4). The integrated disks (the whole workpiece,
@@ -270,23 +270,23 @@ struct CutEdgeZoneRecord {
 /// and the integrated disks' energies at one moment (Simulation::kinetic_energy; strain:
 /// Simulation::stored_elastic_energy, the tool's contacts included).
 struct CutEnergyBooks {
-  double tool_work_j = 0, left_kinetic_j = 0, left_strain_j = 0;
-  double kinetic_j = 0, strain_j = 0;
+  double tool_work_J = 0, left_kinetic_J = 0, left_strain_J = 0;
+  double kinetic_J = 0, strain_J = 0;
 };
 
 /// The books over the steady part (the same travel as the mean forces): what each took, and the balance
 /// dissipated = tool work - left kinetic - left strain - (kinetic + strain at the end - at the steady start).
 struct CutEnergy {
-  double tool_work_j = 0, dissipated_j = 0, left_kinetic_j = 0, left_strain_j = 0, stored_change_j = 0;
+  double tool_work_J = 0, dissipated_J = 0, left_kinetic_J = 0, left_strain_J = 0, stored_change_J = 0;
 };
 
 struct CutResult {
   std::vector<CutSample> samples;
-  double main_force_n = 0, thrust_force_n = 0, main_force_std_n = 0, thrust_force_std_n = 0;  ///< steady part
+  double main_force_N = 0, thrust_force_N = 0, main_force_std_N = 0, thrust_force_std_N = 0;  ///< steady part
   /// Standard errors of the steady means (kerf/time_series.hpp): batch means when the steady part holds
   /// kMinBatches batches of 5 g samples, else from the autocorrelation (methods named); the statistical
   /// inefficiency g (samples) and the batch length of each.
-  double main_force_sem_n = 0, thrust_force_sem_n = 0;
+  double main_force_sem_N = 0, thrust_force_sem_N = 0;
   const char *main_force_sem_method = "none", *thrust_force_sem_method = "none";
   double main_force_inefficiency = 1, thrust_force_inefficiency = 1;
   std::size_t main_force_batch_samples = 1, thrust_force_batch_samples = 1;
@@ -328,8 +328,8 @@ struct CutResult {
 };
 
 /// {main, thrust} from the force the disks exert on the tool (cutting direction -x): main = F_x, thrust = F_y.
-inline std::array<double, 2> tool_force_components(double fx_on_tool_n, double fy_on_tool_n) {
-  return {fx_on_tool_n, fy_on_tool_n};
+inline std::array<double, 2> tool_force_components(double fx_on_tool_N, double fy_on_tool_N) {
+  return {fx_on_tool_N, fy_on_tool_N};
 }
 
 /// The travel before a cut's forces are steady: the entry at the free edge. Measured on the Yang et al. 2018 workpiece
@@ -399,7 +399,7 @@ class CutRun {
   CutResult res_;
   std::int32_t first_tool_wall_ = 0, n_tool_walls_ = 0;
   /// Crushes the disks the tool presses beyond their splitting load: loose ones at CutParams::
-  /// window_grain_strength_pa, those tied to the workpiece at window_tied_grain_strength_pa (each 0: never).
+  /// window_grain_strength_Pa, those tied to the workpiece at window_tied_grain_strength_Pa (each 0: never).
   void crush_grains();
   /// Runs `next` (a window built from the running one) in its place, booking what leaves with the disks it drops.
   void take_window(Simulation next);
@@ -432,7 +432,7 @@ class CutRun {
   /// meets and loads it with the layer's reaction (Simulation::set_disk_loads); returns whether it met any.
   bool edge_zone_begin_sample();
   /// The reaction's work over a sample on the loaded disks that were at `start_m` when it began.
-  double edge_zone_reaction_work_j(const std::vector<std::array<double, 2>>& start_m) const;
+  double edge_zone_reaction_work_J(const std::vector<std::array<double, 2>>& start_m) const;
   template <class Self, class Io>
   static void zone_record_fields(Self& run, Io& io);
 };
