@@ -173,8 +173,8 @@ class CalibrateCutKind final : public SceneKind {
         "macro strengths scale by the same factor (exact trend), E and nu are those of the base material.",
         common.material.name, b.strength_factor, fit.target_main_force_N,
         fit.target_source.empty() ? "" : " (" + fit.target_source + ")", history.size(), converged ? "" : "NOT ",
-        b.main_force_N, sem, fit.replicates, units::m_to_mm(cut_.depth_of_cut_m), cut_.speed_m_per_s,
-        units::m_to_mm(cut_.length_m), cut_.rake_deg, groove_shape_names().name(cut_.groove_shape));
+        b.main_force_N, sem, fit.replicates, units::m_to_mm(cut_.cut.depth_of_cut_m), cut_.cut.speed_m_per_s,
+        units::m_to_mm(cut_.cut.length_m), cut_.tool.rake_deg, groove_shape_names().name(cut_.grooves.shape));
     const Json material = library_material_json(named, "Flat-joint DEM material fitted to one measured cut by kerf-dem",
                                                 description, "kerf-dem calibrate_cut (see description)");
     Json summary = summary_head(name(), common.material);

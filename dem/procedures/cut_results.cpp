@@ -276,8 +276,8 @@ void add_cut_results(ResultTable<R>& t) {
 
 /// What the options write: crushing grains, the energy books.
 void add_option_results(ResultTable<R>& t) {
-  const auto grains = [](const R& c) { return c.cut.window_grain_strength_Pa > 0; };
-  const auto tied_grains = [](const R& c) { return c.cut.window_tied_grain_strength_Pa > 0; };
+  const auto grains = [](const R& c) { return c.cut.window.grain_strength_Pa > 0; };
+  const auto tied_grains = [](const R& c) { return c.cut.window.tied_grain_strength_Pa > 0; };
   const auto booked = [](const R& c) { return c.res.energy_booked; };
   t.push_back(result_if(
       result_value<R>(k::grains_crushed, "", "loose disks the tool crushed (with active_window.grain_strength_MPa)",
@@ -362,8 +362,8 @@ void add_edge_results(ResultTable<R>& t) {
 /// which the edge met intact glass, the layer's force, the disks it removed, and the layer's energy (the tool's work
 /// on it less what its reaction did on the disks: dissipated below the disks' scale, part of energy_dissipated).
 void add_edge_zone_results(ResultTable<R>& t) {
-  const auto zone = [](const R& c) { return c.cut.edge_zone; };
-  const auto zone_booked = [](const R& c) { return c.cut.edge_zone && c.res.energy_booked; };
+  const auto zone = [](const R& c) { return c.cut.edge_zone.enabled; };
+  const auto zone_booked = [](const R& c) { return c.cut.edge_zone.enabled && c.res.energy_booked; };
   t.push_back(result_if(result_value<R>(k::edge_zone_samples_steady, "", "steady samples with the edge zone",
                                         [](const R& c) { return c.res.edge_zone.samples; }),
                         zone));
@@ -379,11 +379,11 @@ void add_edge_zone_results(ResultTable<R>& t) {
       zone));
   t.push_back(result_if(result_number<R>(k::edge_zone_cutting_force_N_per_mm, units::kNPerMm,
                                          "the ductile layer's cutting force per width",
-                                         [](const R& c) { return c.cut.edge_cutting_force_N_per_m; }),
+                                         [](const R& c) { return c.cut.edge_zone.cutting_force_N_per_m; }),
                         zone));
   t.push_back(result_if(
       result_number<R>(k::edge_zone_thrust_force_N_per_mm, units::kNPerMm, "the ductile layer's thrust force per width",
-                       [](const R& c) { return c.cut.edge_thrust_force_N_per_m; }),
+                       [](const R& c) { return c.cut.edge_zone.thrust_force_N_per_m; }),
       zone));
   t.push_back(result_if(
       result_value<R>(k::edge_zone_removed_tied_disks, "", "disks the edge zone removed while tied to the workpiece",
@@ -455,7 +455,7 @@ const ResultTable<CutReport>& active_window_results() {
       result_value<R>(a::mean_window_particles, "", "the disks a window held on average (particle-steps / steps)",
                       [](const R& c) {
                         return c.res.particle_steps /
-                               (static_cast<double>(c.res.samples.size() - 1) * c.cut.sample_every_steps);
+                               (static_cast<double>(c.res.samples.size() - 1) * c.cut.cut.sample_every_steps);
                       }),
       result_value<R>(a::chip_particles_removed, "", "chip disks removed from the integration",
                       [](const R& c) { return c.res.window.chips.particles; }),

@@ -210,3 +210,24 @@ TEST_CASE("field table: optional numbers, ordered name lists, values that leave 
   CHECK_THAT(md, Catch::Matchers::Contains("| `ratio` | - | a positive value | the other one's | a ratio |"));
   CHECK_THAT(md, Catch::Matchers::Contains("| `order` | - | a list of `a`, `b`, `c` | `b` | names in order |"));
 }
+
+TEST_CASE("field table: a member struct's table embedded in its holder, flags included") {
+  struct Holder {
+    int own = 1;
+    Params part;
+  };
+  const kerf::FieldTable<Holder> t =
+      kerf::embedded_fields(table(), &Holder::part, {kerf::int_field("own", 0, 9, "the holder's", &Holder::own)});
+  REQUIRE(t.size() == table().size() + 1);
+  const kerf::Json j{{"modulus_GPa", 3}, {"check", false}, {"shape", "rectangular"}, {"own", 4}};
+  kerf::ObjectReader r(j, "s");
+  const Holder h = kerf::read_fields(r, t, Holder{});
+  r.finish();
+  CHECK(h.part.modulus_Pa == 3e9);
+  CHECK_FALSE(h.part.check);  // a flag through the member, as numbers, integers and choices
+  CHECK(h.part.shape == Shape::rectangular);
+  CHECK(h.own == 4);
+  kerf::Json expected = kerf::fields_to_json(table(), h.part);
+  expected["own"] = 4;
+  CHECK(kerf::fields_to_json(t, h) == expected);
+}

@@ -350,12 +350,16 @@ TEST_CASE("checkpoint: a calibration log of KERFCAL3 (the laws as raw variants) 
 
 namespace {
 using kerf::dem::CutParams;
+/// The cut's section tables as tables of CutParams (each through its section's member), as the cut's state has them.
 const std::array<kerf::dem::serial::SectionFields<CutParams>, 4>& cut_tables() {
+  using kerf::embedded_fields;
+  static const kerf::FieldTable<CutParams> cut = embedded_fields(kerf::dem::cut_fields(), &CutParams::cut),
+                                           tool = embedded_fields(kerf::dem::tool_fields(), &CutParams::tool),
+                                           grooves = embedded_fields(kerf::dem::groove_fields(), &CutParams::grooves),
+                                           window =
+                                               embedded_fields(kerf::dem::active_window_fields(), &CutParams::window);
   static const std::array<kerf::dem::serial::SectionFields<CutParams>, 4> t{
-      {{"cut", kerf::dem::cut_fields()},
-       {"tool", kerf::dem::tool_fields()},
-       {"grooves", kerf::dem::groove_fields()},
-       {"active_window", kerf::dem::active_window_fields()}}};
+      {{"cut", cut}, {"tool", tool}, {"grooves", grooves}, {"active_window", window}}};
   return t;
 }
 /// Every field of the cut's tables as one text: key, then the value's bits (numbers) or index (choices).
@@ -431,9 +435,9 @@ TEST_CASE(
     return r;
   };
   const CutParams one = read(record({{"cut.depth_of_cut_mm", 2e-4}}, {}));
-  CHECK(one.depth_of_cut_m == 2e-4);
-  CHECK(one.length_m == CutParams{}.length_m);
-  CHECK(read(record({}, {{"grooves.shape", "trapezoidal"}})).groove_shape == kerf::dem::GrooveShape::trapezoidal);
+  CHECK(one.cut.depth_of_cut_m == 2e-4);
+  CHECK(one.cut.length_m == CutParams{}.cut.length_m);
+  CHECK(read(record({}, {{"grooves.shape", "trapezoidal"}})).grooves.shape == kerf::dem::GrooveShape::trapezoidal);
   CHECK_THROWS_WITH(read(record({{"cut.no_such_key", 1}}, {})), Catch::Contains("keys this build does not have"));
   CHECK_THROWS_WITH(read(record({{"cut.depth_of_cut_mm", 1}, {"cut.depth_of_cut_mm", 2}}, {})),
                     Catch::Contains("a key twice"));

@@ -239,7 +239,7 @@ TEST_CASE("joint strengths: a window covering the whole workpiece cuts Weibull g
   SpecimenReport report;
   const Simulation specimen = make_specimen(mat, spec, report);
   CutParams full = testing::windowed(100, 100, 100, 100);
-  full.active_window = false;
+  full.window.enabled = false;
   CutRun a(specimen, full), b(specimen, testing::windowed(100, 100, 100, 100));
   bool more = true;
   while (more) {

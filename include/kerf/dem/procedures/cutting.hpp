@@ -35,88 +35,111 @@ enum class GrooveShape { none, rectangular, trapezoidal };
 /// "none", "rectangular", "trapezoidal" (the inverted trapezoid of the real laser grooves).
 const EnumNames<GrooveShape>& groove_shape_names();
 
+/// The cut's parameters, one struct per scene section (its keys in that section's field table: cut_fields(),
+/// tool_fields(), ...), in SI.
 struct CutParams {
-  double depth_of_cut_m = 0.1e-3;
-  double speed_m_per_s = 1.0;                 ///< the paper's 4.23 mm/s is scaled up (physics-dem.md section 4)
-  double length_m = 0.5e-3;                   ///< tool travel
-  double rake_deg = -15, clearance_deg = 15;  ///< Yang et al. 2018, Section 4
-  double edge_radius_m = 0;                   ///< 0: sharp edge
-  int edge_segments = 4;                      ///< wall segments approximating a rounded edge
-  /// Tool-workpiece Coulomb friction on every tool face; negative (the default): the workpiece material's
-  /// particle friction mu, as for any disk-wall contact (PFC's default). Not given by Yang et al. 2018.
-  double tool_friction_coefficient = -1;
-  /// Height of the rake face's top above the tool tip; 0 (the default): 3 depths of cut, room for the chip.
-  /// Yang et al. 2018 does not give its tool's size: a fixed height is one tool for every depth of cut.
-  double rake_face_height_m = 0;
-  GrooveShape groove_shape = GrooveShape::none;
-  double groove_depth_m = 0.1e-3, groove_pitch_m = 0.2e-3, groove_width_m = 0.06e-3;
-  double groove_bottom_width_m = 0.03e-3;  ///< trapezoidal only: width at the groove bottom
-  /// The laser-affected layer along each groove's walls and bottom (apply_groove_damage): joints whose
-  /// midpoint lies within this distance of the groove's outline are pre-broken, each with probability
-  /// groove_damage_broken_fraction. 0 (the default): pristine glass up to the groove, as Yang et al. 2018's DEM.
-  double groove_damage_depth_m = 0;
-  double groove_damage_broken_fraction = 1;
-  /// Part of the travel excluded from the mean forces (the entry), as a fraction of the travel.
-  double entry_fraction = 0.25;
-  int sample_every_steps = 50;
-  /// Report only: CutResult::travel_windows, mean forces per stretch of travel of this length (steadiness).
-  double window_m = 0.1e-3;
-  /// The active window of a steady-state cut (section "active_window", kerf/dem/procedures/cut_window.hpp): off, every
-  /// disk of the workpiece is integrated. Extents in depths of cut around the cutting edge.
-  bool active_window = false;
-  /// Defaults: the smallest window whose steady forces agreed with the whole workpiece's within their standard
-  /// errors with local damping 0.7 (one packing); undamped they do not (80 % more main force on four packings):
-  /// docs/dem.md, "Steady-state cuts".
-  double window_ahead_depths = 7, window_behind_depths = 3, window_below_depths = 4, window_above_depths = 4;
-  double window_shift_depths = 0.25;  ///< tool travel between two rebuilds of the window
-  /// The absorbing layer inside the window's ahead, behind and lower edges (kerf/dem/procedures/cut_window.hpp), its
-  /// thickness L in depths of cut (0: none), and the e-folds by which it attenuates a p-wave's amplitude on its
-  /// way through the layer and back: the peak rate 3 a c / L, with c = sqrt(E* / rho) of the contact law.
-  double window_absorbing_depths = 0, window_absorbing_attenuation = 2;
-  /// A bound, not a model of glass (issue 41 item 4): at each rebuild of the window, remove every disk above the
-  /// cut line that no intact joint path ties to the workpiece's held rows (CutWindow::set_remove_loose_fragments),
-  /// as if every loose fragment left the plane at once and the tool met none of them again.
-  bool window_remove_loose_fragments = false;
-  /// Debris grains that crush (issue 41 item 4; 0, the default: a disk never breaks). A disk of a loose fragment
-  /// (no intact joint path to the held rows) pressed by a tool face with a normal force above its splitting load,
-  /// F = pi sigma r t (a cylinder of radius r and length t under two opposite line loads splits when
-  /// 2 F / (pi 2r t) reaches sigma: the Brazilian test), is crushed: removed at once, its energy leaves with it.
-  /// Without it a single loose disk wedged under the tool's tip carries up to ~100 N per mm of width
-  /// (docs/notes/2026-11-29-jams.md). Checked at each force sample; windowed cuts only.
-  double window_grain_strength_Pa = 0;
-  /// The workpiece's own disks that crush (issue 41 item 4; 0, the default: a disk tied to the workpiece breaks
-  /// only by its joints). The same law for a disk still tied to the held rows: pressed by a tool face above
-  /// pi sigma r t, it is removed at once, its intact joints with it. A flat joint never fails in compression, so a
-  /// disk of the cut line pressed by the tool's tip carries what the lattice behind it does (jams of 50-130 N per mm
-  /// of width at every disk size measured: docs/notes/2026-11-29-jams.md); glass under a sharp tip is crushed at the
-  /// scale below a disk. Checked at each force sample; windowed cuts only.
-  double window_tied_grain_strength_Pa = 0;
-  /// An absorbing layer along the workpiece's held rows (its left side and bottom, as rigid as the window's
-  /// frame), with or without a window: its thickness in depths of cut (0: none), the same attenuation.
-  double held_absorbing_depths = 0;
-  /// The edge zone (issue 54 item 4; section "edge_zone", windowed cuts only; off by default): the tool's edge as a
-  /// sub-grid model. Glass at the cut line meets the edge through a ductile layer about d_c thick, 100-300 times
-  /// below the disks (docs/physics-glass-edge.md), whose force per unit width comes from the analytic side
-  /// (kerf::edge_force_per_width: the layer lambda d_c cut at the tool's rake with friction mu). Within
-  /// `edge_zone_radius_m` of the tip (0: the workpiece's largest disk diameter): while a disk tied to the workpiece
-  /// straddles the cut line there (the intact glass the edge meets), the tool carries the layer's force and those
-  /// disks its reaction; a disk reaching below the cut line that the tool touches there leaves the model as the
-  /// layer's chip and powder (tied or loose alike: a rigid 20 um grain at the edge is the jams' artefact).
-  bool edge_zone = false;
-  double edge_zone_radius_m = 0;           ///< the cut resolves 0 to the largest diameter when it starts
-  double edge_layer_factor = 1;            ///< lambda = l / d_c (physics-glass-edge.md section 4: d_c)
-  double edge_friction_coefficient = 0.3;  ///< tool on glass at the edge (section 4: 0.15-0.4)
-  /// The layer's force per unit width [N/m], cutting and thrust; negative (the default): the cut kind computes them
-  /// from the material and the tool (kerf::edge_force_per_width) before the run starts.
-  double edge_cutting_force_N_per_m = -1, edge_thrust_force_N_per_m = -1;
+  /// Section "cut": the tool's motion and the force samples.
+  struct Cut {
+    double depth_of_cut_m = 0.1e-3;
+    double speed_m_per_s = 1.0;  ///< the paper's 4.23 mm/s is scaled up (physics-dem.md section 4)
+    double length_m = 0.5e-3;    ///< tool travel
+    /// Part of the travel excluded from the mean forces (the entry), as a fraction of the travel.
+    double entry_fraction = 0.25;
+    int sample_every_steps = 50;
+    /// Report only: CutResult::travel_windows, mean forces per stretch of travel of this length (steadiness).
+    double window_m = 0.1e-3;
+    /// An absorbing layer along the workpiece's held rows (its left side and bottom, as rigid as the window's
+    /// frame), with or without a window: its thickness in depths of cut (0: none), the attenuation
+    /// ActiveWindow::absorbing_attenuation.
+    double held_absorbing_depths = 0;
+  };
+  /// Section "tool".
+  struct Tool {
+    double rake_deg = -15, clearance_deg = 15;  ///< Yang et al. 2018, Section 4
+    double edge_radius_m = 0;                   ///< 0: sharp edge
+    int edge_segments = 4;                      ///< wall segments approximating a rounded edge
+    /// Tool-workpiece Coulomb friction on every tool face; negative (the default): the workpiece material's
+    /// particle friction mu, as for any disk-wall contact (PFC's default). Not given by Yang et al. 2018.
+    double friction_coefficient = -1;
+    /// Height of the rake face's top above the tool tip; 0 (the default): 3 depths of cut, room for the chip.
+    /// Yang et al. 2018 does not give its tool's size: a fixed height is one tool for every depth of cut.
+    double rake_face_height_m = 0;
+  };
+  /// Section "grooves".
+  struct Grooves {
+    GrooveShape shape = GrooveShape::none;
+    double depth_m = 0.1e-3, pitch_m = 0.2e-3, width_m = 0.06e-3;
+    double bottom_width_m = 0.03e-3;  ///< trapezoidal only: width at the groove bottom
+    /// The laser-affected layer along each groove's walls and bottom (apply_groove_damage): joints whose
+    /// midpoint lies within this distance of the groove's outline are pre-broken, each with probability
+    /// damage_broken_fraction. 0 (the default): pristine glass up to the groove, as Yang et al. 2018's DEM.
+    double damage_depth_m = 0;
+    double damage_broken_fraction = 1;
+  };
+  /// Section "active_window": the active window of a steady-state cut (kerf/dem/procedures/cut_window.hpp): off,
+  /// every disk of the workpiece is integrated. Extents in depths of cut around the cutting edge.
+  struct ActiveWindow {
+    bool enabled = false;
+    /// Defaults: the smallest window whose steady forces agreed with the whole workpiece's within their standard
+    /// errors with local damping 0.7 (one packing); undamped they do not (80 % more main force on four packings):
+    /// docs/dem.md, "Steady-state cuts".
+    double ahead_depths = 7, behind_depths = 3, below_depths = 4, above_depths = 4;
+    double shift_depths = 0.25;  ///< tool travel between two rebuilds of the window
+    /// The absorbing layer inside the window's ahead, behind and lower edges (kerf/dem/procedures/cut_window.hpp),
+    /// its thickness L in depths of cut (0: none), and the e-folds by which it attenuates a p-wave's amplitude on
+    /// its way through the layer and back: the peak rate 3 a c / L, with c = sqrt(E* / rho) of the contact law.
+    double absorbing_depths = 0, absorbing_attenuation = 2;
+    /// A bound, not a model of glass (issue 41 item 4): at each rebuild of the window, remove every disk above the
+    /// cut line that no intact joint path ties to the workpiece's held rows (CutWindow::set_remove_loose_fragments),
+    /// as if every loose fragment left the plane at once and the tool met none of them again.
+    bool remove_loose_fragments = false;
+    /// Debris grains that crush (issue 41 item 4; 0, the default: a disk never breaks). A disk of a loose fragment
+    /// (no intact joint path to the held rows) pressed by a tool face with a normal force above its splitting load,
+    /// F = pi sigma r t (a cylinder of radius r and length t under two opposite line loads splits when
+    /// 2 F / (pi 2r t) reaches sigma: the Brazilian test), is crushed: removed at once, its energy leaves with it.
+    /// Without it a single loose disk wedged under the tool's tip carries up to ~100 N per mm of width
+    /// (docs/notes/2026-11-29-jams.md). Checked at each force sample; windowed cuts only.
+    double grain_strength_Pa = 0;
+    /// The workpiece's own disks that crush (issue 41 item 4; 0, the default: a disk tied to the workpiece breaks
+    /// only by its joints). The same law for a disk still tied to the held rows: pressed by a tool face above
+    /// pi sigma r t, it is removed at once, its intact joints with it. A flat joint never fails in compression, so a
+    /// disk of the cut line pressed by the tool's tip carries what the lattice behind it does (jams of 50-130 N per
+    /// mm of width at every disk size measured: docs/notes/2026-11-29-jams.md); glass under a sharp tip is crushed
+    /// at the scale below a disk. Checked at each force sample; windowed cuts only.
+    double tied_grain_strength_Pa = 0;
+  };
+  /// Section "edge_zone" (issue 54 item 4; windowed cuts only; off by default): the tool's edge as a sub-grid
+  /// model. Glass at the cut line meets the edge through a ductile layer about d_c thick, 100-300 times below the
+  /// disks (docs/physics-glass-edge.md), whose force per unit width comes from the analytic side
+  /// (kerf::edge_force_per_width: the layer lambda d_c cut at the tool's rake with friction mu). Within `radius_m`
+  /// of the tip (0: the workpiece's largest disk diameter): while a disk tied to the workpiece straddles the cut
+  /// line there (the intact glass the edge meets), the tool carries the layer's force and those disks its
+  /// reaction; a disk reaching below the cut line that the tool touches there leaves the model as the layer's chip
+  /// and powder (tied or loose alike: a rigid 20 um grain at the edge is the jams' artefact).
+  struct EdgeZone {
+    bool enabled = false;
+    double radius_m = 0;                ///< the cut resolves 0 to the largest diameter when it starts
+    double layer_factor = 1;            ///< lambda = l / d_c (physics-glass-edge.md section 4: d_c)
+    double friction_coefficient = 0.3;  ///< tool on glass at the edge (section 4: 0.15-0.4)
+    /// The layer's force per unit width [N/m], cutting and thrust; negative (the default): the cut kind computes
+    /// them from the material and the tool (kerf::edge_force_per_width) before the run starts.
+    double cutting_force_N_per_m = -1, thrust_force_N_per_m = -1;
+  };
+
+  Cut cut;
+  Tool tool;
+  Grooves grooves;
+  ActiveWindow window;
+  EdgeZone edge_zone;
 };
 
-/// The keys of the scene's "cut", "tool" and "grooves" sections (kerf/field_table.hpp).
-const FieldTable<CutParams>& cut_fields();
-const FieldTable<CutParams>& tool_fields();
-const FieldTable<CutParams>& groove_fields();
-const FieldTable<CutParams>& active_window_fields();
-const FieldTable<CutParams>& edge_zone_fields();
+/// The keys of the scene's "cut", "tool", "grooves", "active_window" and "edge_zone" sections
+/// (kerf/field_table.hpp), each of its section's struct.
+const FieldTable<CutParams::Cut>& cut_fields();
+const FieldTable<CutParams::Tool>& tool_fields();
+const FieldTable<CutParams::Grooves>& groove_fields();
+const FieldTable<CutParams::ActiveWindow>& active_window_fields();
+const FieldTable<CutParams::EdgeZone>& edge_zone_fields();
 
 /// Checks every field's range and the cross-field constraints (groove narrower than its pitch, trapezoid bottom
 /// narrower than its top, the tool's wedge angle positive ...); InputError names the dotted key, value and expectation.
@@ -299,7 +322,7 @@ struct CutResult {
   /// have a standard error; if not, why (one line for the log and summary.json).
   bool steady = false;
   std::string not_steady_reason;
-  std::vector<TravelWindow> travel_windows;  ///< mean forces per params.window_m of travel (once finished)
+  std::vector<TravelWindow> travel_windows;  ///< mean forces per params.cut.window_m of travel (once finished)
   CutCrackCounts cracks;
   double y_top_m = 0, y_cut_m = 0, width_m = 0;  ///< width = out-of-plane thickness
   std::array<double, 4> workpiece_box_m{};       ///< x_min, x_max, y_min, y_max before the cut
@@ -354,8 +377,8 @@ double distance_to_groove_outline(const CutParams& params, double dx_m, double d
 
 /// The laser-affected layer of a grooved workpiece cut from a specimen of box {x_min, x_max, y_min, y_max}
 /// (the grooves' places: groove_centres, below y_max): breaks every element of
-/// the joints whose midpoint lies within params.groove_damage_depth_m of a groove's walls or bottom, each
-/// joint with probability params.groove_damage_broken_fraction (a hash of the joint's index: the same joints
+/// the joints whose midpoint lies within params.grooves.damage_depth_m of a groove's walls or bottom, each
+/// joint with probability params.grooves.damage_broken_fraction (a hash of the joint's index: the same joints
 /// for the same packing). A broken element carries compression and friction (a closed micro-crack), no
 /// tension (ultrashort laser pulses leave micro-cracks around what they modify in glass: Werr et al. 2022,
 /// docs/references.md). Returns {joints in the layer, joints broken}.
