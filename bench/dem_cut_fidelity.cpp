@@ -115,7 +115,7 @@ double reference_value(const std::string& knob, const std::vector<double>& value
 struct Run {
   int n_particles = 0;
   std::int64_t steps = 0;
-  double main_force_n = 0, thrust_force_n = 0, cut_wall_s = 0;
+  double main_force_N = 0, thrust_force_N = 0, cut_wall_s = 0;
 };
 
 }  // namespace
@@ -249,12 +249,12 @@ int main(int argc, char** argv) {
         int particles = 0;
         for (int r = 0; r < replicates; ++r) {
           const Run& run = cut.at({c, r});
-          fm.push_back(run.main_force_n), ft.push_back(run.thrust_force_n), cost.push_back(run.cut_wall_s);
+          fm.push_back(run.main_force_N), ft.push_back(run.thrust_force_N), cost.push_back(run.cut_wall_s);
           particles = run.n_particles;
           runs +=
               csv_line({k.name, csv_number(v), std::to_string(r + 1), std::to_string(dem::study_item(study, c, r).seed),
                         std::to_string(c + 1), std::to_string(run.n_particles), std::to_string(run.steps),
-                        csv_number(run.main_force_n), csv_number(run.thrust_force_n), csv_number(run.cut_wall_s)});
+                        csv_number(run.main_force_N), csv_number(run.thrust_force_N), csv_number(run.cut_wall_s)});
         }
         rows.push_back({v, stats_of(fm), stats_of(ft), stats_of(cost), particles});
       }

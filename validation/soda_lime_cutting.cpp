@@ -141,12 +141,12 @@ const std::vector<std::string> kReplicateColumns{std::string(k::width_mm),
 struct ConditionResult {
   Condition condition;
   Json replicates;  ///< one row per replicate: replicate, seed and kReplicateColumns
-  double main_n = 0, thrust_n = 0, main_std_n = 0, thrust_std_n = 0, width_mm = 1;
+  double main_N = 0, thrust_N = 0, main_std_N = 0, thrust_std_N = 0, width_mm = 1;
   /// The mean forces with their standard errors over the replicates (packings are independent samples): sample
   /// std / sqrt(n), n - 1 degrees of freedom.
   int n() const { return static_cast<int>(replicates.size()); }
-  Estimate main() const { return {main_n, main_std_n / std::sqrt(n()), n() - 1.0}; }
-  Estimate thrust() const { return {thrust_n, thrust_std_n / std::sqrt(n()), n() - 1.0}; }
+  Estimate main() const { return {main_N, main_std_N / std::sqrt(n()), n() - 1.0}; }
+  Estimate thrust() const { return {thrust_N, thrust_std_N / std::sqrt(n()), n() - 1.0}; }
   double cracks_tensile = 0, cracks_shear = 0, cracks_chip = 0, cracks_subsurface = 0, subsurface_depth_um = 0;
   /// Under the surface machined during the steady part (kerf-dem's *_steady results): the cut's own damage.
   double cracks_subsurface_steady = 0, subsurface_steady_depth_um = 0;
@@ -180,8 +180,8 @@ ConditionResult collect(const Condition& c, const std::vector<Json>& items) {
     r.replicates.push_back(row);
   }
   const SampleStatistics m = sample_statistics(main), t = sample_statistics(thrust);
-  r.main_n = m.mean, r.main_std_n = m.standard_deviation;
-  r.thrust_n = t.mean, r.thrust_std_n = t.standard_deviation;
+  r.main_N = m.mean, r.main_std_N = m.standard_deviation;
+  r.thrust_N = t.mean, r.thrust_std_N = t.standard_deviation;
   r.width_mm = r.replicates.at(0).at(k::width_mm).get<double>();
   return r;
 }
@@ -431,21 +431,21 @@ std::string replicates_report(const Spec& spec, const std::map<std::string, Cond
     const double exp_main = ref(vs_experiment, "main_force_per_width"),
                  exp_thrust = ref(vs_experiment, "thrust_force_per_width");
     const double dem_main = ref(vs_dem, "main_force"), dem_thrust = ref(vs_dem, "thrust_force");
-    const double kerf_main = r.main_n / units::mm_to_m(r.width_mm),
-                 kerf_thrust = r.thrust_n / units::mm_to_m(r.width_mm);
+    const double kerf_main = r.main_N / units::mm_to_m(r.width_mm),
+                 kerf_thrust = r.thrust_N / units::mm_to_m(r.width_mm);
     md += fmt::format(
         "| {} | {:.2f} ± {:.2f} | {:.2f} ± {:.2f} | {} | {} | {} | {}, {} | {}, {} | {:.0f} + {:.0f} ({:.0f} / {:.0f}) "
         "| "
         "{:.0f} | {:.0f}, {:.0f} | {:.0f} |\n",
-        c.name, r.main_n, r.main_std_n, r.thrust_n, r.thrust_std_n, paper, experiment, per_mm,
-        num(kerf_main / exp_main, 2), num(kerf_thrust / exp_thrust, 2), num(r.main_n / dem_main, 2),
-        num(r.thrust_n / dem_thrust, 2), r.cracks_tensile, r.cracks_shear, r.cracks_chip, r.cracks_subsurface,
+        c.name, r.main_N, r.main_std_N, r.thrust_N, r.thrust_std_N, paper, experiment, per_mm,
+        num(kerf_main / exp_main, 2), num(kerf_thrust / exp_thrust, 2), num(r.main_N / dem_main, 2),
+        num(r.thrust_N / dem_thrust, 2), r.cracks_tensile, r.cracks_shear, r.cracks_chip, r.cracks_subsurface,
         r.subsurface_depth_um, r.cracks_subsurface_steady, r.subsurface_steady_depth_um, r.wall_time_s);
     levels.push_back(Json{{"condition", c.name},
                           {"kerf_to_experiment_per_width_main", finite_or_null(kerf_main / exp_main)},
                           {"kerf_to_experiment_per_width_thrust", finite_or_null(kerf_thrust / exp_thrust)},
-                          {"kerf_to_paper_dem_main", finite_or_null(r.main_n / dem_main)},
-                          {"kerf_to_paper_dem_thrust", finite_or_null(r.thrust_n / dem_thrust)}});
+                          {"kerf_to_paper_dem_main", finite_or_null(r.main_N / dem_main)},
+                          {"kerf_to_paper_dem_thrust", finite_or_null(r.thrust_N / dem_thrust)}});
   }
   md +=
       "\n± is the standard deviation over the replicates. Subsurface depth: the deepest crack below the cut line "
@@ -552,7 +552,7 @@ std::string replicates_report(const Spec& spec, const std::map<std::string, Cond
         pct(reference_mean(vs_dem, "thrust_force", "regular", 0.2) /
                 reference_mean(vs_dem, "thrust_force", "regular", 0.1) -
             1));
-    physics["regular_main_force_change_0.1_to_0.2"] = b->main_n / a->main_n - 1;
+    physics["regular_main_force_change_0.1_to_0.2"] = b->main_N / a->main_N - 1;
   }
   for (double depth : {0.1, 0.2}) {
     const ConditionResult *regular = find_condition(results, "none", depth),
@@ -574,8 +574,8 @@ std::string replicates_report(const Spec& spec, const std::map<std::string, Cond
       md += fmt::format(
           "- {} mm, trapezoidal vs rectangular grooves (the paper's suspected cause of its thrust error): thrust "
           "{:.2f} vs {:.2f} N ({}), main {:.2f} vs {:.2f} N.\n",
-          depth, trap->thrust_n, rect->thrust_n, pct(trap->thrust_n / rect->thrust_n - 1), trap->main_n, rect->main_n);
-      physics[fmt::format("trapezoidal_vs_rectangular_thrust_change_{}", depth)] = trap->thrust_n / rect->thrust_n - 1;
+          depth, trap->thrust_N, rect->thrust_N, pct(trap->thrust_N / rect->thrust_N - 1), trap->main_N, rect->main_N);
+      physics[fmt::format("trapezoidal_vs_rectangular_thrust_change_{}", depth)] = trap->thrust_N / rect->thrust_N - 1;
     }
   }
   // What holds and what does not, from the trends' verdicts above (not fixed text).
@@ -682,8 +682,8 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
       rows += csv_line(fields);
     }
     means += csv_line({source, c.surface, c.groove_shape, csv_number(c.depth_of_cut_mm), csv_number(r.width_mm),
-                       csv_number(r.main_n), csv_number(r.main_std_n), csv_number(r.thrust_n),
-                       csv_number(r.thrust_std_n), csv_number(r.cracks_tensile), csv_number(r.cracks_shear),
+                       csv_number(r.main_N), csv_number(r.main_std_N), csv_number(r.thrust_N),
+                       csv_number(r.thrust_std_N), csv_number(r.cracks_tensile), csv_number(r.cracks_shear),
                        csv_number(r.cracks_chip), csv_number(r.cracks_subsurface), csv_number(r.subsurface_depth_um),
                        csv_number(r.cracks_subsurface_steady), csv_number(r.subsurface_steady_depth_um)});
   }

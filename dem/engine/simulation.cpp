@@ -231,7 +231,7 @@ void Simulation::bond_loop(const Law& law, ForceCounts& counts, Damage*... damag
       const BondKinematics kin{block.gap[q], block.rotation[q], block.shear_increment[q]};
       // Without strength factors the factor is the constant 1, which the compiler folds away (x * 1.0 is x).
       const BondGeometry geo{b_.geometry[b], kFactors ? b_.strength_factor[b] : 1.0};
-      BondResult r = bond_update_fast(law, geo, kin, b_.shear_force_n.data() + e0, b_.bonded.data() + e0,
+      BondResult r = bond_update_fast(law, geo, kin, b_.shear_force_N.data() + e0, b_.bonded.data() + e0,
                                       b_.pending.data() + e0, (damage + e0)...);
       n_breaking += r.n_breaking;
       if constexpr (kViscous) {
@@ -240,12 +240,12 @@ void Simulation::bond_loop(const Law& law, ForceCounts& counts, Damage*... damag
         const double dvx = vx[j] - vx[i], dvy = vy[j] - vy[i];
         const double vn = dvx * nx + dvy * ny, vs = dvx * sx + dvy * sy - a2 * om[j] - a1 * om[i];
         const TimeStepStiffness k = bond_time_step_stiffness(law, geo);
-        r.normal_force_n += dashpot_coefficient(i, static_cast<std::int64_t>(j), k.normal) * vn;  // tension positive
-        r.shear_force_n -= dashpot_coefficient(i, static_cast<std::int64_t>(j), k.shear) * vs;
+        r.normal_force_N += dashpot_coefficient(i, static_cast<std::int64_t>(j), k.normal) * vn;  // tension positive
+        r.shear_force_N -= dashpot_coefficient(i, static_cast<std::int64_t>(j), k.shear) * vs;
       }
       // Force on disk 2: -F_n n + F_s s (tension positive pulls disk 2 back towards disk 1).
-      out = {-r.normal_force_n * nx + r.shear_force_n * sx, -r.normal_force_n * ny + r.shear_force_n * sy,
-             -a1 * r.shear_force_n - r.moment_nm, -a2 * r.shear_force_n + r.moment_nm};
+      out = {-r.normal_force_N * nx + r.shear_force_N * sx, -r.normal_force_N * ny + r.shear_force_N * sy,
+             -a1 * r.shear_force_N - r.moment_N_m, -a2 * r.shear_force_N + r.moment_N_m};
       // The law says when a bond carries no force any more and hands its pair over to the unbonded contact.
       if (bond_retires(law, geo, kin, r, block.surface_gap[q], b_.bonded.data() + e0)) {
         b_.active[b] = 0;
@@ -291,12 +291,12 @@ void Simulation::pair_loop(const Law& law) {
     if constexpr (kViscous) {  // dashpots: on disk 2, -c_n v_n n - c_s v_s s (compression positive)
       const TimeStepStiffness ks = contact_time_step_stiffness(law, rad[i], rad[j], t);
       const double vn = (vx[j] - vx[i]) * nx + (vy[j] - vy[i]) * ny;
-      r.normal_force_n -= dashpot_coefficient(i, static_cast<std::int64_t>(j), ks.normal) * vn;
-      r.shear_force_n -= dashpot_coefficient(i, static_cast<std::int64_t>(j), ks.shear) * vs;
+      r.normal_force_N -= dashpot_coefficient(i, static_cast<std::int64_t>(j), ks.normal) * vn;
+      r.shear_force_N -= dashpot_coefficient(i, static_cast<std::int64_t>(j), ks.shear) * vs;
     }
     // Force on disk 2: +F_n n (compression pushes it away) + F_s s.
-    pair_out_[k] = {r.normal_force_n * nx + r.shear_force_n * sx, r.normal_force_n * ny + r.shear_force_n * sy,
-                    -a1 * r.shear_force_n, -a2 * r.shear_force_n};
+    pair_out_[k] = {r.normal_force_N * nx + r.shear_force_N * sx, r.normal_force_N * ny + r.shear_force_N * sy,
+                    -a1 * r.shear_force_N, -a2 * r.shear_force_N};
   }
 }
 
@@ -330,11 +330,11 @@ void Simulation::wall_loop(const Law& law) {
     if constexpr (kViscous) {  // dashpots against the (infinitely heavy) wall
       const TimeStepStiffness ks = contact_time_step_stiffness(wall_law, rad[u], 0.0, t);
       const double vn = (vx[u] - w.vx) * nx + (vy[u] - w.vy) * ny;
-      r.normal_force_n -= dashpot_coefficient(u, -1, ks.normal) * vn;
-      r.shear_force_n -= dashpot_coefficient(u, -1, ks.shear) * vs;
+      r.normal_force_N -= dashpot_coefficient(u, -1, ks.normal) * vn;
+      r.shear_force_N -= dashpot_coefficient(u, -1, ks.shear) * vs;
     }
-    wall_out_[k] = {r.normal_force_n * nx + r.shear_force_n * sx, r.normal_force_n * ny + r.shear_force_n * sy,
-                    -a * r.shear_force_n};
+    wall_out_[k] = {r.normal_force_N * nx + r.shear_force_N * sx, r.normal_force_N * ny + r.shear_force_N * sy,
+                    -a * r.shear_force_N};
   }
 }
 
@@ -438,7 +438,7 @@ void Simulation::apply_breaks_of(const Law& law) {
       cracks_.push_back({time_, p_.x[i] + a1 * nx - xi * ny, p_.y[i] + a1 * ny + xi * nx, std::atan2(nx, -ny),
                          place.length_m, b_.pending[k], static_cast<std::int32_t>(b), static_cast<std::int32_t>(e)});
       b_.bonded[k] = 0;
-      b_.shear_force_n[k] = 0;  // residual mode: the shear stress of a broken element drops to zero
+      b_.shear_force_N[k] = 0;  // residual mode: the shear stress of a broken element drops to zero
       if constexpr (BondLawWithDamage<Law>) b_.damage[k] = 1;  // a broken element is wholly damaged
       b_.pending[k] = BreakMode::none;
       if (bond_retires_on_break(law)) {  // the whole bond goes with its first break
@@ -499,9 +499,9 @@ void Simulation::damped_half_kick(double dt) {
 
 void Simulation::set_disk_loads(std::vector<DiskLoad> loads) {
   for (const DiskLoad& l : loads)
-    if (l.disk >= p_.size() || !std::isfinite(l.fx_n) || !std::isfinite(l.fy_n))
+    if (l.disk >= p_.size() || !std::isfinite(l.fx_N) || !std::isfinite(l.fy_N))
       throw ModelError("dem", fmt::format("a disk load on disk {} of {} ({}, {} N): a disk that exists, finite forces",
-                                          l.disk, p_.size(), l.fx_n, l.fy_n));
+                                          l.disk, p_.size(), l.fx_N, l.fy_N));
   disk_loads_ = std::move(loads);
 }
 
@@ -572,7 +572,7 @@ void Simulation::step() {
       if (!disk_loads_.empty()) {  // every thread takes the same branch; none when there are no loads
 #pragma omp barrier
 #pragma omp single
-        for (const DiskLoad& l : disk_loads_) p_.fx[l.disk] += l.fx_n, p_.fy[l.disk] += l.fy_n;
+        for (const DiskLoad& l : disk_loads_) p_.fx[l.disk] += l.fx_N, p_.fy[l.disk] += l.fy_N;
       }
 #pragma omp single nowait
       {

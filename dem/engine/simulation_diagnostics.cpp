@@ -42,10 +42,10 @@ double Simulation::joint_and_contact_energy() const {
           const double d = std::hypot(p_.x[j] - p_.x[i], p_.y[j] - p_.y[i]);
           const BondKinematics kin{d - b_.ref_distance_m[b], p_.theta[j] - p_.theta[i] - b_.ref_rotation_rad[b], 0};
           if constexpr (BondLawWithDamage<std::decay_t<decltype(law)>>)
-            e += bond_energy(law, b_.joint_geometry(b), kin, b_.shear_force_n.data() + b * stride,
+            e += bond_energy(law, b_.joint_geometry(b), kin, b_.shear_force_N.data() + b * stride,
                              b_.bonded.data() + b * stride, b_.damage.data() + b * stride);
           else
-            e += bond_energy(law, b_.joint_geometry(b), kin, b_.shear_force_n.data() + b * stride,
+            e += bond_energy(law, b_.joint_geometry(b), kin, b_.shear_force_N.data() + b * stride,
                              b_.bonded.data() + b * stride);
         }
       },
@@ -100,7 +100,7 @@ std::vector<Simulation::WallContactLoad> Simulation::wall_contact_loads() const 
           const auto u = static_cast<std::size_t>(wall_contacts_[k][1]);
           double shear = wall_shear_[k];  // a copy: no shear increment, the state untouched
           loads.push_back({wall_contacts_[k][0], wall_contacts_[k][1],
-                           contact_update(law, p_.radius[u], 0.0, t, overlap, 0.0, shear).normal_force_n});
+                           contact_update(law, p_.radius[u], 0.0, t, overlap, 0.0, shear).normal_force_N});
         }
       },
       material_.contact);
@@ -192,9 +192,9 @@ Simulation::DiskStresses Simulation::disk_stresses() const {
   DiskStresses out{std::vector<std::array<double, 3>>(n, {0, 0, 0}), std::vector<double>(n, 0.0)};
   // f (x) arm, symmetrised, on disk u (its volume divides at the end).
   const auto add = [&](std::size_t u, double fx, double fy, double ax, double ay) {
-    auto& s = out.stress_pa[u];
+    auto& s = out.stress_Pa[u];
     s[0] += fx * ax, s[1] += fy * ay, s[2] += 0.5 * (fx * ay + fy * ax);
-    out.force_sum_n[u] += std::hypot(fx, fy);
+    out.force_sum_N[u] += std::hypot(fx, fy);
   };
   // A disk pair: o is the force on j; i gets -o at r_i along the centre line, j gets o at -r_j along it.
   const auto pair = [&](const std::array<double, 4>& o, std::size_t i, std::size_t j) {
@@ -218,7 +218,7 @@ Simulation::DiskStresses Simulation::disk_stresses() const {
   }
   for (std::size_t u = 0; u < n; ++u) {
     const double v = M_PI * p_.radius[u] * p_.radius[u] * opt_.thickness_m;
-    for (double& c : out.stress_pa[u]) c /= v;
+    for (double& c : out.stress_Pa[u]) c /= v;
   }
   return out;
 }

@@ -106,17 +106,17 @@ void Simulation::rebuild_neighbours() {
 ContactSprings Simulation::contact_springs() const {
   ContactSprings s;
   for (std::size_t k = 0; k < pairs_.size(); ++k)
-    if (pair_shear_[k] != 0) s.pairs.push_back(pairs_[k]), s.pair_shear_n.push_back(pair_shear_[k]);
+    if (pair_shear_[k] != 0) s.pairs.push_back(pairs_[k]), s.pair_shear_N.push_back(pair_shear_[k]);
   for (std::size_t k = 0; k < wall_contacts_.size(); ++k)
-    if (wall_shear_[k] != 0) s.wall_contacts.push_back(wall_contacts_[k]), s.wall_shear_n.push_back(wall_shear_[k]);
+    if (wall_shear_[k] != 0) s.wall_contacts.push_back(wall_contacts_[k]), s.wall_shear_N.push_back(wall_shear_[k]);
   return s;
 }
 
 void Simulation::set_contact_springs(ContactSprings springs) {
   const auto n = static_cast<std::int32_t>(p_.size()), nw = static_cast<std::int32_t>(walls_.size());
   const auto valid = [&](std::int32_t u, std::int32_t limit) { return u >= 0 && u < limit; };
-  if (springs.pairs.size() != springs.pair_shear_n.size() ||
-      springs.wall_contacts.size() != springs.wall_shear_n.size() ||
+  if (springs.pairs.size() != springs.pair_shear_N.size() ||
+      springs.wall_contacts.size() != springs.wall_shear_N.size() ||
       !std::is_sorted(springs.pairs.begin(), springs.pairs.end()) ||
       !std::is_sorted(springs.wall_contacts.begin(), springs.wall_contacts.end()))
     throw ModelError("dem", "contact springs: lists of different lengths or not sorted");
@@ -125,9 +125,9 @@ void Simulation::set_contact_springs(ContactSprings springs) {
   for (const auto& c : springs.wall_contacts)
     if (!valid(c[0], nw) || !valid(c[1], n)) throw ModelError("dem", "contact springs: a wall contact out of range");
   pairs_ = std::move(springs.pairs);
-  pair_shear_ = std::move(springs.pair_shear_n);
+  pair_shear_ = std::move(springs.pair_shear_N);
   wall_contacts_ = std::move(springs.wall_contacts);
-  wall_shear_ = std::move(springs.wall_shear_n);
+  wall_shear_ = std::move(springs.wall_shear_N);
   need_rebuild_ = true;
 }
 

@@ -23,7 +23,7 @@ void BondStore::copy_elements(std::size_t to, const BondStore& from, std::size_t
   const auto n = static_cast<std::size_t>(stride);
   for (std::size_t e = 0; e < n; ++e) {
     bonded[to * n + e] = from.bonded[k * n + e];
-    shear_force_n[to * n + e] = from.shear_force_n[k * n + e];
+    shear_force_N[to * n + e] = from.shear_force_N[k * n + e];
     if (keeps_damage && from.keeps_damage) damage[to * n + e] = from.damage[k * n + e];
   }
 }
@@ -41,9 +41,9 @@ Simulation::Simulation(const Material& material, const SimulationOptions& option
 }
 
 double p_wave_speed_m_per_s(const Material& material) {
-  const double contact_modulus_pa =
-      std::visit([](const auto& law) { return law.effective_modulus_pa; }, material.contact);
-  return std::sqrt(contact_modulus_pa / material.density_kg_per_m3);
+  const double contact_modulus_Pa =
+      std::visit([](const auto& law) { return law.effective_modulus_Pa; }, material.contact);
+  return std::sqrt(contact_modulus_Pa / material.density_kg_per_m3);
 }
 
 void refuse_small_time_step_safety(double steps, double time_step_s, double safety) {
@@ -128,7 +128,7 @@ int Simulation::install_bond(int i, int j, double ref_distance_m, double ref_rot
   if (!b_.strength_factor.empty()) b_.strength_factor.push_back(1.0);
   b_.active.push_back(1);
   for (int e = 0; e < b_.stride; ++e) {
-    b_.shear_force_n.push_back(0.0);
+    b_.shear_force_N.push_back(0.0);
     b_.bonded.push_back(1);
     b_.pending.push_back(BreakMode::none);
     if (b_.keeps_damage) b_.damage.push_back(0.0);

@@ -19,7 +19,7 @@ std::size_t Simulation::memory_bytes() const {
   return bytes_of(p_.x, p_.y, p_.vx, p_.vy, p_.theta, p_.omega, p_.fx, p_.fy, p_.torque, p_.radius, p_.inv_mass,
                   p_.inv_inertia, p_.type, p_.group) +
          bytes_of(b_.i, b_.j, b_.ref_distance_m, b_.ref_rotation_rad, b_.geometry, b_.strength_factor, b_.active,
-                  b_.shear_force_n, b_.bonded, b_.pending, b_.out, b_.damage) +
+                  b_.shear_force_N, b_.bonded, b_.pending, b_.out, b_.damage) +
          bytes_of(pairs_, pair_shear_, pair_out_, wall_contacts_, wall_shear_, wall_out_, incidence_start_, incidence_,
                   incidence_pair_begin_, incidence_wall_begin_, x_ref_, y_ref_, wall_ref_, fixed_, cracks_);
 }
@@ -46,7 +46,7 @@ void Simulation::state_fields(Self& sim, Io& io, int version) {
        {&p.x, &p.y, &p.vx, &p.vy, &p.theta, &p.omega, &p.fx, &p.fy, &p.torque, &p.radius, &p.inv_mass, &p.inv_inertia})
     io(*v);
   io(p.type, p.group);
-  io(b.stride, b.i, b.j, b.ref_distance_m, b.ref_rotation_rad, b.geometry, b.active, b.shear_force_n, b.bonded,
+  io(b.stride, b.i, b.j, b.ref_distance_m, b.ref_rotation_rad, b.geometry, b.active, b.shear_force_N, b.bonded,
      b.pending, b.out);
   io(sim.walls_, sim.cracks_, sim.pairs_, sim.pair_shear_, sim.pair_out_, sim.wall_contacts_, sim.wall_shear_,
      sim.wall_out_, sim.incidence_start_, sim.incidence_, sim.incidence_pair_begin_, sim.incidence_wall_begin_,

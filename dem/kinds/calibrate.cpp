@@ -96,16 +96,16 @@ const FieldTable<CalibrationSpec>& calibration_fields() {
 const FieldTable<MacroProperties>& target_fields() {
   static const FieldTable<MacroProperties> table{
       number_field("youngs_modulus_GPa", units::kGPa, Range::positive(), "Young's modulus E",
-                   &MacroProperties::youngs_modulus_pa),
+                   &MacroProperties::youngs_modulus_Pa),
       number_field("poissons_ratio", units::kNone, Range::open(0.0, 0.5), "Poisson's ratio nu",
                    &MacroProperties::poissons_ratio),
       number_field("tensile_strength_MPa", units::kMPa, Range::positive(), "tensile strength sigma_t",
-                   &MacroProperties::tensile_strength_pa),
+                   &MacroProperties::tensile_strength_Pa),
       number_field("compressive_strength_MPa", units::kMPa, Range::positive(),
-                   "unconfined compressive strength sigma_c", &MacroProperties::compressive_strength_pa),
+                   "unconfined compressive strength sigma_c", &MacroProperties::compressive_strength_Pa),
       number_field("fracture_toughness_MPa_sqrt_m", kMPaSqrtM, Range::non_negative(),
                    "fracture toughness K_IC of the calibration.toughness test (0: none)",
-                   &MacroProperties::fracture_toughness_pa_sqrt_m)};
+                   &MacroProperties::fracture_toughness_Pa_sqrt_m)};
   return table;
 }
 
@@ -125,7 +125,7 @@ MacroProperties read_targets_csv(const fs::path& path, const std::string& row, c
 /// The macro-properties as JSON (K_IC only when measured or targeted).
 Json macro_json(const MacroProperties& m) {
   Json j = fields_to_json(target_fields(), m);
-  if (!(m.fracture_toughness_pa_sqrt_m > 0)) j.erase("fracture_toughness_MPa_sqrt_m");
+  if (!(m.fracture_toughness_Pa_sqrt_m > 0)) j.erase("fracture_toughness_MPa_sqrt_m");
   return j;
 }
 
@@ -177,19 +177,19 @@ std::vector<std::string> log_header(bool toughness) {
 std::vector<std::string> log_row(const CalibrationEvaluation& e, bool toughness) {
   const CalibratedParams m = calibrated_params(e.material);
   std::vector<std::string> row{std::to_string(e.index),
-                               csv_number(units::pa_to_gpa(m.contact_modulus_pa)),
+                               csv_number(units::pa_to_gpa(m.contact_modulus_Pa)),
                                csv_number(m.stiffness_ratio),
-                               csv_number(units::pa_to_mpa(m.tensile_strength_pa)),
-                               csv_number(units::pa_to_mpa(m.cohesion_pa)),
-                               csv_number(units::pa_to_gpa(e.macro.youngs_modulus_pa)),
+                               csv_number(units::pa_to_mpa(m.tensile_strength_Pa)),
+                               csv_number(units::pa_to_mpa(m.cohesion_Pa)),
+                               csv_number(units::pa_to_gpa(e.macro.youngs_modulus_Pa)),
                                csv_number(e.macro.poissons_ratio),
-                               csv_number(units::pa_to_mpa(e.macro.tensile_strength_pa)),
-                               csv_number(units::pa_to_mpa(e.macro.compressive_strength_pa)),
+                               csv_number(units::pa_to_mpa(e.macro.tensile_strength_Pa)),
+                               csv_number(units::pa_to_mpa(e.macro.compressive_strength_Pa)),
                                csv_number(100 * e.max_relative_error),
                                csv_number(e.wall_time_s)};
   if (toughness)
-    row.insert(row.end(), {csv_number(m.fracture_energy_j_per_m2),
-                           csv_number(units::pa_to_mpa(e.macro.fracture_toughness_pa_sqrt_m)),
+    row.insert(row.end(), {csv_number(m.fracture_energy_J_per_m2),
+                           csv_number(units::pa_to_mpa(e.macro.fracture_toughness_Pa_sqrt_m)),
                            csv_number(100 * e.toughness_error)});
   return row;
 }
@@ -200,13 +200,13 @@ void print_evaluation(const CalibrationEvaluation& e, bool toughness) {
   std::cout << fmt::format(
       "evaluation {}: E* {:.2f} GPa, kappa {:.3f}, joint tensile strength {:.1f} MPa, joint cohesion {:.1f} MPa -> "
       "E {:.2f} GPa, nu {:.3f}, sigma_t {:.1f} MPa, sigma_c {:.1f} MPa (max error {:.1f} %, {:.0f} s{})\n",
-      e.index, units::pa_to_gpa(m.contact_modulus_pa), m.stiffness_ratio, units::pa_to_mpa(m.tensile_strength_pa),
-      units::pa_to_mpa(m.cohesion_pa), units::pa_to_gpa(e.macro.youngs_modulus_pa), e.macro.poissons_ratio,
-      units::pa_to_mpa(e.macro.tensile_strength_pa), units::pa_to_mpa(e.macro.compressive_strength_pa),
+      e.index, units::pa_to_gpa(m.contact_modulus_Pa), m.stiffness_ratio, units::pa_to_mpa(m.tensile_strength_Pa),
+      units::pa_to_mpa(m.cohesion_Pa), units::pa_to_gpa(e.macro.youngs_modulus_Pa), e.macro.poissons_ratio,
+      units::pa_to_mpa(e.macro.tensile_strength_Pa), units::pa_to_mpa(e.macro.compressive_strength_Pa),
       100 * e.max_relative_error, e.wall_time_s, e.from_checkpoint ? ", from the checkpoint" : "");
   if (toughness)
     std::cout << fmt::format("evaluation {}: G_f {:.3g} J/m^2 -> K_IC {:.3f} MPa sqrt(m) (error {:.1f} %)\n", e.index,
-                             m.fracture_energy_j_per_m2, units::pa_to_mpa(e.macro.fracture_toughness_pa_sqrt_m),
+                             m.fracture_energy_J_per_m2, units::pa_to_mpa(e.macro.fracture_toughness_Pa_sqrt_m),
                              100 * e.toughness_error);
   std::cout << std::flush;
 }
@@ -244,9 +244,9 @@ class CalibrateKind final : public SceneKind {
                            {t->path(), t->path() + ".beam_depth_mm", t->path() + ".beam_length_mm"});
       c.toughness = tc;
     }
-    if (c.targets.fracture_toughness_pa_sqrt_m > 0 && !c.toughness)
+    if (c.targets.fracture_toughness_Pa_sqrt_m > 0 && !c.toughness)
       throw InputError("calibration.targets.fracture_toughness_MPa_sqrt_m",
-                       fmt::format("{}", units::pa_to_mpa(c.targets.fracture_toughness_pa_sqrt_m)),
+                       fmt::format("{}", units::pa_to_mpa(c.targets.fracture_toughness_Pa_sqrt_m)),
                        "a calibration.toughness test to measure it on");
     check_calibration_start(c, common.material);
     output_ = read_material_output(cal, "calibrated");
@@ -295,17 +295,17 @@ class CalibrateKind final : public SceneKind {
         "Calibrated by kerf-dem calibrate ({} evaluations, {}converged: max error {:.2f} % against targets E {:.1f} "
         "GPa, "
         "nu {:.3f}, sigma_t {:.1f} MPa, sigma_c {:.1f} MPa) on a {} specimen of {} disks{}.",
-        r.log.size(), r.converged ? "" : "NOT ", 100 * r.max_relative_error, units::pa_to_gpa(t.youngs_modulus_pa),
-        t.poissons_ratio, units::pa_to_mpa(t.tensile_strength_pa), units::pa_to_mpa(t.compressive_strength_pa),
+        r.log.size(), r.converged ? "" : "NOT ", 100 * r.max_relative_error, units::pa_to_gpa(t.youngs_modulus_Pa),
+        t.poissons_ratio, units::pa_to_mpa(t.tensile_strength_Pa), units::pa_to_mpa(t.compressive_strength_Pa),
         summary["specimen"]["packing"].get<std::string>(), n_disks,
         n_sources > 1 ? fmt::format(" (the mean over {} packings, seeds {} to {})", n_sources, seed,
                                     seed + static_cast<std::int64_t>(n_sources) - 1)
                       : std::string());
-    if (spec_.toughness && t.fracture_toughness_pa_sqrt_m > 0)
+    if (spec_.toughness && t.fracture_toughness_Pa_sqrt_m > 0)
       out.insert(out.size() - 1,
                  fmt::format(", and on K_IC {:.3f} MPa sqrt(m) (error {:.1f} %, tolerance {:.0f} %) of a notched beam "
                              "W = {:.2f} mm, a/W = {:.2f} (seeds as the specimen's)",
-                             units::pa_to_mpa(t.fracture_toughness_pa_sqrt_m), 100 * r.toughness_error,
+                             units::pa_to_mpa(t.fracture_toughness_Pa_sqrt_m), 100 * r.toughness_error,
                              100 * spec_.toughness_tolerance, units::m_to_mm(beam_.depth_m),
                              spec_.toughness->test.notch_depth_m / beam_.depth_m));
     return out;

@@ -22,7 +22,7 @@ namespace {
 
 /// The "calibration" section of a calibrate_cut scene (besides material_name and install_material).
 struct CutFit {
-  double target_main_force_n = 0;
+  double target_main_force_N = 0;
   std::string target_source;
   int replicates = 3;
   double tolerance = 0.10;
@@ -35,7 +35,7 @@ const FieldTable<CutFit>& cut_fit_fields() {
       required_number_field("target_cutting_force_N", units::kSi("N"), Range::positive(),
                             "the measured mean cutting force to meet (its old name target_main_force_N is read too, "
                             "deprecated until 0.3.0)",
-                            &CutFit::target_main_force_n),
+                            &CutFit::target_main_force_N),
       int_field("replicates", 2, 64, "packings per evaluation (seeds specimen.seed + 0, 1, ...)", &CutFit::replicates),
       number_field("tolerance_percent", units::kPercent, Range::open(0.0, 100.0),
                    "relative error of the mean main force for convergence", &CutFit::tolerance),
@@ -97,11 +97,11 @@ class CalibrateCutKind final : public SceneKind {
     std::vector<CutCalibrationPoint> history;
     Json evaluations = Json::array();
     // The replicated cut's results each evaluation reads and keeps (cut_results.hpp).
-    const std::string main_n(cut_keys::main_force_N), thrust_n(cut_keys::thrust_force_N);
-    const std::string main_std = replicate_spread_key(main_n), thrust_std = replicate_spread_key(thrust_n);
+    const std::string main_N(cut_keys::main_force_N), thrust_N(cut_keys::thrust_force_N);
+    const std::string main_std = replicate_spread_key(main_N), thrust_std = replicate_spread_key(thrust_N);
     // calibration_log.csv: the evaluation's number, these fields of its summary row, and its wall time.
     const std::vector<std::string> logged{
-        "strength_factor", "tensile_strength_MPa",  "cohesion_MPa", main_n, main_std, thrust_n,
+        "strength_factor", "tensile_strength_MPa",  "cohesion_MPa", main_N, main_std, thrust_N,
         thrust_std,        "relative_error_percent"};
     std::vector<std::string> header{"evaluation"};
     header.insert(header.end(), logged.begin(), logged.end());
@@ -111,7 +111,7 @@ class CalibrateCutKind final : public SceneKind {
     std::size_t best = 0;
     bool converged = false;
     for (int k = 1; k <= fit.max_evaluations && !converged; ++k) {
-      if (k > 1) s = next_strength_factor(history, fit.target_main_force_n);
+      if (k > 1) s = next_strength_factor(history, fit.target_main_force_N);
       SceneCommon e = common;
       e.material =
           scale_bond_strengths(common.material, s, fmt::format("{}_bond_strength_x{:.6g}", common.material.name, s));
@@ -120,8 +120,8 @@ class CalibrateCutKind final : public SceneKind {
       std::cout << fmt::format(
                        "evaluation {}: bond strengths x {:.4g} (joint tensile strength {:.2f} MPa, joint "
                        "cohesion {:.2f} MPa), {} replicates\n",
-                       k, s, units::pa_to_mpa(calibrated_params(e.material).tensile_strength_pa),
-                       units::pa_to_mpa(calibrated_params(e.material).cohesion_pa), fit.replicates)
+                       k, s, units::pa_to_mpa(calibrated_params(e.material).tensile_strength_Pa),
+                       units::pa_to_mpa(calibrated_params(e.material).cohesion_Pa), fit.replicates)
                 << std::flush;
       // The evaluation's cut: this scene as a cut with the scaled material, as its file will hold it.
       Json scene = run.doc;
@@ -136,19 +136,19 @@ class CalibrateCutKind final : public SceneKind {
           run_cut_replicates(scene, run.scene_dir, cut_, fit.replicates, summary_head("cut", e.material), options)
               .summary;
       const Json& r = done["results"];
-      const double force = r[main_n].get<double>();
-      const double error = force / fit.target_main_force_n - 1;
+      const double force = r[main_N].get<double>();
+      const double error = force / fit.target_main_force_N - 1;
       history.push_back({s, force});
-      if (std::abs(error) < std::abs(history[best].main_force_n / fit.target_main_force_n - 1))
+      if (std::abs(error) < std::abs(history[best].main_force_N / fit.target_main_force_N - 1))
         best = history.size() - 1;
       converged = std::abs(error) <= fit.tolerance;
       const Json row{{"evaluation", k},
                      {"strength_factor", s},
-                     {"tensile_strength_MPa", units::pa_to_mpa(calibrated_params(e.material).tensile_strength_pa)},
-                     {"cohesion_MPa", units::pa_to_mpa(calibrated_params(e.material).cohesion_pa)},
-                     {main_n, force},
+                     {"tensile_strength_MPa", units::pa_to_mpa(calibrated_params(e.material).tensile_strength_Pa)},
+                     {"cohesion_MPa", units::pa_to_mpa(calibrated_params(e.material).cohesion_Pa)},
+                     {main_N, force},
                      {main_std, r[main_std]},
-                     {thrust_n, r[thrust_n]},
+                     {thrust_N, r[thrust_N]},
                      {thrust_std, r[thrust_std]},
                      {"relative_error_percent", 100 * error},
                      {"directory", dir.filename().string()}};
@@ -159,7 +159,7 @@ class CalibrateCutKind final : public SceneKind {
       log += csv_line(cells);
       write_file_atomically(out / "calibration_log.csv", log);
       std::cout << fmt::format("evaluation {}: main force {:.4g} N against {:.4g} N ({:+.1f} %, tolerance {:.0f} %)\n",
-                               k, force, fit.target_main_force_n, 100 * error, 100 * fit.tolerance)
+                               k, force, fit.target_main_force_N, 100 * error, 100 * fit.tolerance)
                 << std::flush;
     }
     const CutCalibrationPoint& b = history[best];
@@ -171,16 +171,16 @@ class CalibrateCutKind final : public SceneKind {
         "to a mean main force of {:.4g} N{} ({} evaluations, {}converged: {:.4g} +- {:.2g} N, mean +- standard error "
         "over {} packings) on the cut: depth {:g} mm, speed {:g} m/s, travel {:g} mm, rake {:g} deg, grooves {}. The "
         "macro strengths scale by the same factor (exact trend), E and nu are those of the base material.",
-        common.material.name, b.strength_factor, fit.target_main_force_n,
+        common.material.name, b.strength_factor, fit.target_main_force_N,
         fit.target_source.empty() ? "" : " (" + fit.target_source + ")", history.size(), converged ? "" : "NOT ",
-        b.main_force_n, sem, fit.replicates, units::m_to_mm(cut_.depth_of_cut_m), cut_.speed_m_per_s,
-        units::m_to_mm(cut_.length_m), cut_.rake_deg, groove_shape_names().name(cut_.groove_shape));
+        b.main_force_N, sem, fit.replicates, units::m_to_mm(cut_.cut.depth_of_cut_m), cut_.cut.speed_m_per_s,
+        units::m_to_mm(cut_.cut.length_m), cut_.tool.rake_deg, groove_shape_names().name(cut_.grooves.shape));
     const Json material = library_material_json(named, "Flat-joint DEM material fitted to one measured cut by kerf-dem",
                                                 description, "kerf-dem calibrate_cut (see description)");
     Json summary = summary_head(name(), common.material);
     summary["cut"] = cut_params_to_json(cut_);
     write_material_output(output_, material, out, summary);
-    summary["results"] = results_to_json(calibrate_cut_results(), {converged, fit.target_main_force_n,
+    summary["results"] = results_to_json(calibrate_cut_results(), {converged, fit.target_main_force_N,
                                                                    fit.target_source, b, sem, evaluations, material});
     name_cut_forces(summary["results"]);
     for (auto& e : summary["results"]["evaluations"]) name_cut_forces(e);
@@ -189,8 +189,8 @@ class CalibrateCutKind final : public SceneKind {
     std::cout << fmt::format(
         "cut calibration {} after {} evaluations: bond strengths x {:.4g}, main force {:.4g} +- {:.2g} N "
         "against {:.4g} N -> {}\n",
-        converged ? "converged" : "did NOT converge", history.size(), b.strength_factor, b.main_force_n, sem,
-        fit.target_main_force_n, (out / (output_.name + ".json")).string());
+        converged ? "converged" : "did NOT converge", history.size(), b.strength_factor, b.main_force_N, sem,
+        fit.target_main_force_N, (out / (output_.name + ".json")).string());
     return {converged ? 0 : kExitModelError, summary, {}};
   }
 
@@ -209,18 +209,18 @@ const ResultTable<CalibrateCutReport>& calibrate_cut_results() {
                       [](const R& c) { return c.converged; }),
       result_value<R>("target_cutting_force_N", "N",
                       "the measured main force fitted to (calibration.target_main_force_N)",
-                      [](const R& c) { return c.target_main_force_n; }),
+                      [](const R& c) { return c.target_main_force_N; }),
       result_value<R>("target_main_force_N", "N", "target_cutting_force_N's old name (deprecated, until 0.3.0)",
-                      [](const R& c) { return c.target_main_force_n; }),
+                      [](const R& c) { return c.target_main_force_N; }),
       result_value<R>("target_source", "", "where the target comes from", [](const R& c) { return c.target_source; }),
       result_value<R>("strength_factor", "", "the best factor of both bond strengths",
                       [](const R& c) { return c.best.strength_factor; }),
       result_value<R>(cut_keys::main_force_N, "N", "the best evaluation's mean main force over its replicates",
-                      [](const R& c) { return c.best.main_force_n; }),
+                      [](const R& c) { return c.best.main_force_N; }),
       result_value<R>("main_force_standard_error_N", "N", "its standard error (replicate std / sqrt(n))",
                       [](const R& c) { return c.sem; }),
       result_value<R>("relative_error_percent", "%", "its relative error against the target",
-                      [](const R& c) { return 100 * (c.best.main_force_n / c.target_main_force_n - 1); }),
+                      [](const R& c) { return 100 * (c.best.main_force_N / c.target_main_force_N - 1); }),
       result_value<R>("evaluations", "", "each evaluation's row (a list)", [](const R& c) { return c.evaluations; }),
       result_value<R>("calibrated_material", "", "the calibrated material (as its file holds it)",
                       [](const R& c) { return c.material; })};

@@ -203,7 +203,7 @@ struct MeanSem {
 /// K_IC (in MPa sqrt(m)), G_c, work of fracture and Irwin energy, the first packing's beam, the spec, and each
 /// packing's results (toughness_packing_results).
 struct ToughnessReport {
-  MeanSem toughness_mpa_sqrt_m, fracture_energy, work_of_fracture, irwin_energy;
+  MeanSem toughness_MPa_sqrt_m, fracture_energy, work_of_fracture, irwin_energy;
   int packings;
   const ToughnessResult& first;
   const ToughnessSpec& spec;
@@ -230,7 +230,7 @@ const ResultTable<CalibrateReport>& calibrate_results();
 /// force and its source, the best evaluation, its standard error, every evaluation's row, the calibrated material.
 struct CalibrateCutReport {
   bool converged;
-  double target_main_force_n;
+  double target_main_force_N;
   const std::string& target_source;
   const CutCalibrationPoint& best;
   double sem;

@@ -37,8 +37,8 @@ SampleState cut_sample(const CutRun& run) {
     s.step = std::llround(last.time_s / res.time_step_s);  // the cut's own steps (the workpiece's count from genesis)
     s.time_s = last.time_s;
     s.travel_mm = units::m_to_mm(last.travel_m);
-    s.main_force_N = last.main_force_n;
-    s.thrust_force_N = last.thrust_force_n;
+    s.main_force_N = last.main_force_N;
+    s.thrust_force_N = last.thrust_force_N;
   }
   return s;
 }
@@ -46,9 +46,9 @@ SampleState cut_sample(const CutRun& run) {
 /// The edge zone's force from the material's edge model when the scene does not give it (kerf::edge_force_per_width:
 /// the ductile layer of the material file's E, H and K_c, cut at the tool's rake with the zone's friction).
 void set_edge_zone_force(CutParams& cut, const Material& material) {
-  if (!cut.edge_zone || cut.edge_cutting_force_n_per_m >= 0) return;
-  const EdgeTool tool{units::deg_to_rad(cut.rake_deg), cut.edge_radius_m, cut.edge_friction_coefficient,
-                      cut.edge_layer_factor};
+  if (!cut.edge_zone.enabled || cut.edge_zone.cutting_force_N_per_m >= 0) return;
+  const EdgeTool tool{units::deg_to_rad(cut.tool.rake_deg), cut.tool.edge_radius_m, cut.edge_zone.friction_coefficient,
+                      cut.edge_zone.layer_factor};
   EdgeForce f;
   try {
     f = edge_force_per_width(Json(material.name), tool);
@@ -57,8 +57,8 @@ void set_edge_zone_force(CutParams& cut, const Material& material) {
                      "a material file with the data of kerf-forces' edge model (material '" + material.name +
                          "': " + e.what() + "), or the layer's cutting_force_N_per_mm and thrust_force_N_per_mm");
   }
-  cut.edge_cutting_force_n_per_m = f.force.cutting_N_per_m;
-  cut.edge_thrust_force_n_per_m = f.force.thrust_N_per_m;
+  cut.edge_zone.cutting_force_N_per_m = f.force.cutting_N_per_m;
+  cut.edge_zone.thrust_force_N_per_m = f.force.thrust_N_per_m;
 }
 
 /// Runs (or continues, from a checkpoint) a cut to the end of its travel and writes the outputs; returns the
@@ -72,16 +72,16 @@ Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& d
   const int frame_every = common.output.frame_every_samples;
   // Every picture shows the workpiece's region with room for the tool on the right and the chip above.
   const auto& box = run.result().workpiece_box_m;
-  const double margin = 2 * cut.depth_of_cut_m;
+  const double margin = 2 * cut.cut.depth_of_cut_m;
   const std::array<double, 4> view_m{box[0], box[1] + margin, box[2], box[3] + margin};
   const auto write_frame = [&](const Simulation& sim) {
     write_frame_files(out, {sim, run.window(), run.result().y_cut_m, view_m, "cut"}, common.output, tp);
   };
   if (frame_every > 0 && tp.sample_index == 0) write_frame(run.simulation());
   const double n = static_cast<double>(run.simulation().particles().size());  // a window's: about the same all along
-  const double steps = cut.length_m / (cut.speed_m_per_s * run.result().time_step_s);
+  const double steps = cut.cut.length_m / (cut.cut.speed_m_per_s * run.result().time_step_s);
   StageProgress progress(tp.progress, "cut", n * steps, "particle-steps");
-  if (tp.sample_index > 0) progress.resume_at(n * cut.sample_every_steps * tp.sample_index, cut_sample(run));
+  if (tp.sample_index > 0) progress.resume_at(n * cut.cut.sample_every_steps * tp.sample_index, cut_sample(run));
   // forces.csv as the cut goes (docs/dem.md, "A running cut's forces.csv"): whole rows, each sample's as it
   // comes; from a checkpoint, the rows of its samples again (a killed run's later rows are dropped, the resumed
   // run computes them anew). The finished cut replaces it whole below, with the same bytes.
@@ -99,7 +99,7 @@ Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& d
   while (run.advance()) {
     ++tp.sample_index;
     write_rows();
-    progress.advance(n * cut.sample_every_steps, cut_sample(run));
+    progress.advance(n * cut.cut.sample_every_steps, cut_sample(run));
     if (frame_every > 0 && tp.sample_index % frame_every == 0) write_frame(run.simulation());
     if (checkpoints.due(tp.sample_index))
       // The cut holds its own workpiece: the checkpoint's specimen part stays empty.
@@ -118,7 +118,7 @@ Json continue_cut(const SceneCommon& common, const CutParams& cut, const Json& d
   summary["steps"] = res.steps;
   summary["wall_time_s"] = res.wall_time_s;
   summary["particle_steps_per_s"] = res.particle_steps / res.wall_time_s;  // the disks integrated: a window's
-  if (cut.active_window) summary["active_window"] = results_to_json(active_window_results(), report);
+  if (cut.window.enabled) summary["active_window"] = results_to_json(active_window_results(), report);
   write_file_atomically(out / "forces.csv", cut_forces_csv(res));
   write_file_atomically(out / "cracks.csv", cracks_csv(run.cracks(), res.y_cut_m));
   if (frame_every > 0) write_pvd(out / "result.pvd", tp.frames);
@@ -167,7 +167,7 @@ class CutKind final : public SceneKind {
     Json& summary = started.summary;
     // CutRun checks the cut against the workpiece and the time step before the first step.
     CutRun cut(specimen, cut_);
-    if (cut_.groove_damage_depth_m > 0) {  // counted here: the summary travels in the checkpoints, the counts do not
+    if (cut_.grooves.damage_depth_m > 0) {  // counted here: the summary travels in the checkpoints, the counts do not
       const auto joints = cut.result().groove_damage_joints;
       summary["groove_damage"] = Json{{"joints_in_layer", joints[0]}, {"joints_pre_broken", joints[1]}};
     }

@@ -27,7 +27,7 @@ SampleState test_sample(const CurveSample& sample, double time_step_s, std::size
           {},
           {},
           sample.axial_strain,
-          units::pa_to_mpa(sample.stress_pa)};
+          units::pa_to_mpa(sample.stress_Pa)};
 }
 
 /// Runs one test on a copy of the specimen with a progress bar (the quasi-static check).
@@ -152,8 +152,8 @@ class LabTestKind final : public SceneKind {
     write_summary(scene_run.options, scene_run.doc, summary);
     remove_checkpoint(out);  // finished: nothing to resume
     std::cout << fmt::format("{}: E = {:.2f} GPa, nu = {:.3f}, {} strength = {:.1f} MPa, {} steps, {:.1f} s -> {}\n",
-                             name(), units::pa_to_gpa(res.youngs_modulus_pa), res.poissons_ratio,
-                             tension ? "tensile" : "compressive", units::pa_to_mpa(res.peak_stress_pa), res.steps,
+                             name(), units::pa_to_gpa(res.youngs_modulus_Pa), res.poissons_ratio,
+                             tension ? "tensile" : "compressive", units::pa_to_mpa(res.peak_stress_Pa), res.steps,
                              res.wall_time_s, out.string());
     return {0, summary, {}};
   }
@@ -165,14 +165,14 @@ const ResultTable<LabTestReport>& lab_test_results() {
   using R = LabTestReport;
   static const ResultTable<R> table{
       result_number<R>("youngs_modulus_GPa", units::kGPa, "Young's modulus E (secant at 50 % of the peak)",
-                       [](const R& r) { return r.res.youngs_modulus_pa; }),
+                       [](const R& r) { return r.res.youngs_modulus_Pa; }),
       result_value<R>("poissons_ratio", "", "Poisson's ratio nu (secant at 50 % of the peak)",
                       [](const R& r) { return r.res.poissons_ratio; }),
       result_if(result_number<R>("tensile_strength_MPa", units::kMPa, "tension: the peak stress",
-                                 [](const R& r) { return r.res.peak_stress_pa; }),
+                                 [](const R& r) { return r.res.peak_stress_Pa; }),
                 [](const R& r) { return r.tension; }),
       result_if(result_number<R>("compressive_strength_MPa", units::kMPa, "compression: the peak stress",
-                                 [](const R& r) { return r.res.peak_stress_pa; }),
+                                 [](const R& r) { return r.res.peak_stress_Pa; }),
                 [](const R& r) { return !r.tension; }),
       result_value<R>("strain_at_peak", "", "axial strain at the peak",
                       [](const R& r) { return r.res.strain_at_peak; }),
@@ -192,17 +192,17 @@ const ResultTable<LabTestReport>& lab_test_results() {
 const ResultTable<LabTestCheck>& lab_test_check_results() {
   using C = LabTestCheck;
   const auto change = [](const C& c) {
-    return 100 * (c.slow.peak_stress_pa - c.res.peak_stress_pa) / c.res.peak_stress_pa;
+    return 100 * (c.slow.peak_stress_Pa - c.res.peak_stress_Pa) / c.res.peak_stress_Pa;
   };
   static const ResultTable<C> table{
       result_value<C>("speed_m_per_s", "m/s", "the check's speed (half the test's)",
                       [](const C& c) { return c.speed_m_per_s; }),
       result_number<C>("peak_stress_MPa", units::kMPa, "the check's peak stress",
-                       [](const C& c) { return c.slow.peak_stress_pa; }),
+                       [](const C& c) { return c.slow.peak_stress_Pa; }),
       result_value<C>("peak_change_percent", "%", "the change of the peak at half the speed", change),
       result_value<C>("youngs_modulus_change_percent", "%", "the change of E at half the speed",
                       [](const C& c) {
-                        return 100 * (c.slow.youngs_modulus_pa - c.res.youngs_modulus_pa) / c.res.youngs_modulus_pa;
+                        return 100 * (c.slow.youngs_modulus_Pa - c.res.youngs_modulus_Pa) / c.res.youngs_modulus_Pa;
                       }),
       result_value<C>("wall_time_s", "s", "the check's wall time", [](const C& c) { return c.slow.wall_time_s; }),
       result_value<C>("tolerance_percent", "%", "the largest change of the peak of a quasi-static test",

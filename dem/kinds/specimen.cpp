@@ -44,7 +44,7 @@ class SpecimenKind final : public SceneKind {
         "specimen: {} disks, {} joints, packing fraction {:.4f}, coordination {:.3f}, residual "
         "stress ({:.3g}, {:.3g}) MPa -> {}\n",
         report.n_particles, report.n_bonds, report.packing_fraction, report.coordination_number,
-        units::pa_to_mpa(report.residual_stress_xx_pa), units::pa_to_mpa(report.residual_stress_yy_pa),
+        units::pa_to_mpa(report.residual_stress_xx_Pa), units::pa_to_mpa(report.residual_stress_yy_Pa),
         (out / "specimen.json").string());
     return {0, summary, {}};
   }

@@ -43,8 +43,8 @@ std::string curve_csv(const std::vector<std::pair<std::uint64_t, const Toughness
   for (const auto& [seed, r] : runs)
     for (const auto& s : r->curve)
       out << fmt::format("{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{}\n", seed, s.time_s,
-                         units::m_to_um(s.deflection_m), s.load_n, s.smoothed_load_n, s.support_load_n,
-                         s.external_work_j, s.stored_elastic_energy_j, s.kinetic_energy_j, s.n_cracks);
+                         units::m_to_um(s.deflection_m), s.load_N, s.smoothed_load_N, s.support_load_N,
+                         s.external_work_J, s.stored_elastic_energy_J, s.kinetic_energy_J, s.n_cracks);
   return out.str();
 }
 
@@ -105,10 +105,10 @@ class ToughnessKind final : public SceneKind {
     // Across packings: the mean and its standard error.
     std::vector<double> k_ic, g_c, wof, irwin;
     for (const auto& r : results) {
-      k_ic.push_back(units::pa_to_mpa(r.fracture_toughness_pa_sqrt_m));
-      g_c.push_back(r.fracture_energy_j_per_m2);
-      wof.push_back(r.work_of_fracture_j_per_m2);
-      irwin.push_back(r.irwin_energy_j_per_m2);
+      k_ic.push_back(units::pa_to_mpa(r.fracture_toughness_Pa_sqrt_m));
+      g_c.push_back(r.fracture_energy_J_per_m2);
+      wof.push_back(r.work_of_fracture_J_per_m2);
+      irwin.push_back(r.irwin_energy_J_per_m2);
     }
     const auto [k_mean, k_sem] = mean_and_sem(k_ic);
     const auto [g_mean, g_sem] = mean_and_sem(g_c);
@@ -200,22 +200,22 @@ const ResultTable<ToughnessResult>& toughness_packing_results() {
   using T = ToughnessResult;
   static const ResultTable<T> table{
       result_number<T>("fracture_toughness_MPa_sqrt_m", kMPaSqrtM, "K_IC from the peak of the smoothed load",
-                       [](const T& r) { return r.fracture_toughness_pa_sqrt_m; }),
+                       [](const T& r) { return r.fracture_toughness_Pa_sqrt_m; }),
       result_value<T>("fracture_energy_J_per_m2", "J/m2", "G_c: (W_ext - dU - dK) / (B (W - a)), to broken through",
-                      [](const T& r) { return r.fracture_energy_j_per_m2; }),
+                      [](const T& r) { return r.fracture_energy_J_per_m2; }),
       result_value<T>("work_of_fracture_J_per_m2", "J/m2", "W_ext / (B (W - a)), to broken through",
-                      [](const T& r) { return r.work_of_fracture_j_per_m2; }),
+                      [](const T& r) { return r.work_of_fracture_J_per_m2; }),
       result_value<T>("irwin_energy_J_per_m2", "J/m2", "K_IC^2 / E'",
-                      [](const T& r) { return r.irwin_energy_j_per_m2; }),
-      result_value<T>("peak_load_N", "N", "the peak of the smoothed load", [](const T& r) { return r.peak_load_n; }),
+                      [](const T& r) { return r.irwin_energy_J_per_m2; }),
+      result_value<T>("peak_load_N", "N", "the peak of the smoothed load", [](const T& r) { return r.peak_load_N; }),
       result_value<T>("raw_peak_load_N", "N", "the largest sample's load, ringing included",
-                      [](const T& r) { return r.raw_peak_load_n; }),
+                      [](const T& r) { return r.raw_peak_load_N; }),
       result_number<T>("raw_peak_toughness_MPa_sqrt_m", kMPaSqrtM, "K from the raw peak, for comparison",
-                       [](const T& r) { return r.raw_peak_toughness_pa_sqrt_m; }),
+                       [](const T& r) { return r.raw_peak_toughness_Pa_sqrt_m; }),
       result_number<T>("deflection_at_peak_um", units::kUm, "the deflection at the smoothed peak",
                        [](const T& r) { return r.deflection_at_peak_m; }),
       result_value<T>("external_work_J", "J", "the load roller's work to the end",
-                      [](const T& r) { return r.external_work_j; }),
+                      [](const T& r) { return r.external_work_J; }),
       result_value<T>("broken_through", "", "whether the crack crossed the ligament",
                       [](const T& r) { return r.through_sample >= 0; }),
       result_value<T>("deflection_broken_through_um", "um", "the deflection when it had (0: never)",
@@ -241,7 +241,7 @@ const ResultTable<ToughnessReport>& toughness_results() {
   const auto sem = [](const R& r) { return r.packings > 1; };
   static const ResultTable<R> table{
       result_value<R>("fracture_toughness_MPa_sqrt_m", "MPa sqrt(m)", "K_IC, the mean over the packings",
-                      [](const R& r) { return r.toughness_mpa_sqrt_m.mean; }),
+                      [](const R& r) { return r.toughness_MPa_sqrt_m.mean; }),
       result_value<R>("fracture_energy_J_per_m2", "J/m2", "G_c, the mean over the packings",
                       [](const R& r) { return r.fracture_energy.mean; }),
       result_value<R>("work_of_fracture_J_per_m2", "J/m2", "the work of fracture, the mean over the packings",
@@ -252,7 +252,7 @@ const ResultTable<ToughnessReport>& toughness_results() {
           "fracture_energy_over_irwin_energy", "", "G_c / (K_IC^2 / E') of the means",
           [](const R& r) { return r.irwin_energy.mean > 0 ? r.fracture_energy.mean / r.irwin_energy.mean : 0.0; }),
       result_number<R>("youngs_modulus_for_irwin_GPa", units::kGPa, "the E of E' (toughness.youngs_modulus_GPa)",
-                       [](const R& r) { return r.spec.youngs_modulus_pa; }),
+                       [](const R& r) { return r.spec.youngs_modulus_Pa; }),
       result_value<R>("packings", "", "packings tested (--replicates)", [](const R& r) { return r.packings; }),
       result_number<R>("depth_W_mm", units::kMm, "the beam's depth W (the first packing's, measured)",
                        [](const R& r) { return r.first.depth_m; }),
@@ -271,7 +271,7 @@ const ResultTable<ToughnessReport>& toughness_results() {
       result_value<R>("per_packing", "", "each packing's results (a list; their keys below)",
                       [](const R& r) { return r.per_packing; }),
       result_if(result_value<R>("fracture_toughness_sem_MPa_sqrt_m", "MPa sqrt(m)", "the standard error of K_IC's mean",
-                                [](const R& r) { return r.toughness_mpa_sqrt_m.sem; }),
+                                [](const R& r) { return r.toughness_MPa_sqrt_m.sem; }),
                 sem),
       result_if(result_value<R>("fracture_energy_sem_J_per_m2", "J/m2", "the standard error of G_c's mean",
                                 [](const R& r) { return r.fracture_energy.sem; }),
@@ -288,20 +288,20 @@ const ResultTable<ToughnessReport>& toughness_results() {
 
 const ResultTable<ToughnessCheck>& toughness_check_results() {
   using C = ToughnessCheck;
-  const auto change = [](const C& c) { return 100 * (c.slow.peak_load_n - c.res.peak_load_n) / c.res.peak_load_n; };
+  const auto change = [](const C& c) { return 100 * (c.slow.peak_load_N - c.res.peak_load_N) / c.res.peak_load_N; };
   static const ResultTable<C> table{
       result_value<C>("speed_m_per_s", "m/s", "the check's speed (half the test's)",
                       [](const C& c) { return c.speed_m_per_s; }),
-      result_value<C>("peak_load_N", "N", "the check's peak load", [](const C& c) { return c.slow.peak_load_n; }),
+      result_value<C>("peak_load_N", "N", "the check's peak load", [](const C& c) { return c.slow.peak_load_N; }),
       result_value<C>("peak_change_percent", "%", "the change of the peak load at half the speed", change),
       result_number<C>("fracture_toughness_MPa_sqrt_m", kMPaSqrtM, "the check's K_IC",
-                       [](const C& c) { return c.slow.fracture_toughness_pa_sqrt_m; }),
+                       [](const C& c) { return c.slow.fracture_toughness_Pa_sqrt_m; }),
       result_value<C>("fracture_energy_J_per_m2", "J/m2", "the check's G_c",
-                      [](const C& c) { return c.slow.fracture_energy_j_per_m2; }),
+                      [](const C& c) { return c.slow.fracture_energy_J_per_m2; }),
       result_value<C>("fracture_energy_change_percent", "%", "the change of G_c at half the speed",
                       [](const C& c) {
-                        return 100 * (c.slow.fracture_energy_j_per_m2 - c.res.fracture_energy_j_per_m2) /
-                               c.res.fracture_energy_j_per_m2;
+                        return 100 * (c.slow.fracture_energy_J_per_m2 - c.res.fracture_energy_J_per_m2) /
+                               c.res.fracture_energy_J_per_m2;
                       }),
       result_value<C>("tolerance_percent", "%", "the largest change of the peak of a quasi-static test",
                       [](const C&) { return kQuasiStaticTolerancePercent; }),

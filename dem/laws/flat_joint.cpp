@@ -32,7 +32,7 @@ BondGeometry bond_geometry(const FlatJointParams& p, double r1_m, double r2_m, d
 }
 
 double flat_joint_bonded_energy(const FlatJointParams& p, const BondGeometry& geo, const BondKinematics& kin,
-                                std::span<const double> shear_force_n, std::span<const std::uint8_t> bonded) {
+                                std::span<const double> shear_force_N, std::span<const std::uint8_t> bonded) {
   const int nr = p.n_elements;
   const double le = 2.0 * geo.half_length_m / nr;
   const double area = le * geo.thickness_m;
@@ -44,7 +44,7 @@ double flat_joint_bonded_energy(const FlatJointParams& p, const BondGeometry& ge
     // 1/2 k_n t int g^2 dxi over the element, + 1/2 F_s^2 / (k_s A_e).
     energy += 0.5 * geo.normal_stiffness * geo.thickness_m *
               (le * ge * ge + kin.rotation_rad * kin.rotation_rad * le * le * le / 12.0);
-    energy += 0.5 * shear_force_n[e] * shear_force_n[e] / (geo.shear_stiffness * area);
+    energy += 0.5 * shear_force_N[e] * shear_force_N[e] / (geo.shear_stiffness * area);
   }
   return energy;
 }

@@ -24,7 +24,7 @@ inline v2d lane_abs(v2d v) {
 /// tests/dem/flat_joint_test.cpp checks the equality, on random joints and ulp by ulp across the envelopes.
 /// Requires p.n_elements == 2 and both elements bonded (the caller tests it).
 inline BondResult flat_joint_update_two_bonded(const FlatJointParams& p, const BondGeometry& geo,
-                                               const BondKinematics& kin, double* shear_force_n, BreakMode* breaks) {
+                                               const BondKinematics& kin, double* shear_force_N, BreakMode* breaks) {
   const double le = 2.0 * geo.half_length_m / 2;
   const double area = le * geo.thickness_m;
   const double kn_t = geo.normal_stiffness * geo.thickness_m;
@@ -33,7 +33,7 @@ inline BondResult flat_joint_update_two_bonded(const FlatJointParams& p, const B
   // Element starts and centroids written as the general loop computes them (-R + e l_e), for the same bits.
   const double a0 = -geo.half_length_m + 0 * le, a1 = -geo.half_length_m + 1 * le;
   const v2d xi = {a0 + 0.5 * le, a1 + 0.5 * le};
-  const v2d fs = v2d{shear_force_n[0], shear_force_n[1]} - ks_area * kin.shear_increment_m;
+  const v2d fs = v2d{shear_force_N[0], shear_force_N[1]} - ks_area * kin.shear_increment_m;
   const v2d fn = kn_t * le * (kin.gap_m - theta * xi);
   const double me = -kn_t * theta * le * le * le / 12.0;
   const v2d abs_fs = lane_abs(fs);
@@ -47,8 +47,8 @@ inline BondResult flat_joint_update_two_bonded(const FlatJointParams& p, const B
   //   tension: fl(fn / A) > sigma_c needs fn / A > sigma_c (rounding is monotone and sigma_c a double);
   //   shear:   fl(|fs| / A) >= fl(c - fl(sigma) tan phi) needs |fs| >= c A - fn tan phi up to a few
   //            rounding errors of c A + |fn| tan phi (both sides times A > 0).
-  const double sigma_c = p.bond.tensile_strength_pa * geo.strength_factor;  // as flat_joint_update forms them
-  const double cohesion = p.bond.cohesion_pa * geo.strength_factor;
+  const double sigma_c = p.bond.tensile_strength_Pa * geo.strength_factor;  // as flat_joint_update forms them
+  const double cohesion = p.bond.cohesion_Pa * geo.strength_factor;
   const double tension_bound = sigma_c * area * (1.0 - 1e-12);
   const double cohesion_force = cohesion * area;
   const v2d fn_tan = fn * p.tan_friction_angle;
@@ -56,7 +56,7 @@ inline BondResult flat_joint_update_two_bonded(const FlatJointParams& p, const B
   const auto below_envelopes = (fn < tension_bound) & (abs_fs + 1e-12 * envelope_scale < cohesion_force - fn_tan);
   if (below_envelopes[0] && below_envelopes[1]) {
     breaks[0] = breaks[1] = BreakMode::none;
-    shear_force_n[0] = fs[0], shear_force_n[1] = fs[1];
+    shear_force_N[0] = fs[0], shear_force_N[1] = fs[1];
   } else {
     const v2d sigma = fn / area;
     const v2d tau = abs_fs / area;
@@ -66,12 +66,12 @@ inline BondResult flat_joint_update_two_bonded(const FlatJointParams& p, const B
                   : tau[e] >= shear_limit[e] ? BreakMode::shear
                                              : BreakMode::none;
       r.n_breaking += breaks[e] != BreakMode::none;
-      shear_force_n[e] = fs[e];
+      shear_force_N[e] = fs[e];
     }
   }
-  r.normal_force_n = 0.0 + fn[0] + fn[1];
-  r.shear_force_n = 0.0 + fs[0] + fs[1];
-  r.moment_nm = 0.0 + (fn[0] * xi[0] + me) + (fn[1] * xi[1] + me);
+  r.normal_force_N = 0.0 + fn[0] + fn[1];
+  r.shear_force_N = 0.0 + fs[0] + fs[1];
+  r.moment_N_m = 0.0 + (fn[0] * xi[0] + me) + (fn[1] * xi[1] + me);
   return r;
 }
 
@@ -79,11 +79,11 @@ inline BondResult flat_joint_update_two_bonded(const FlatJointParams& p, const B
 /// general update otherwise (bond_update of the public header). Always inlined: with a loop instantiation per
 /// damping choice (simulation.cpp) g++ called it out of line, 6-7 % of the throughput (docs/performance.md).
 [[gnu::always_inline]] inline BondResult bond_update_fast(const FlatJointParams& p, const BondGeometry& geo,
-                                                          const BondKinematics& kin, double* shear_force_n,
+                                                          const BondKinematics& kin, double* shear_force_N,
                                                           const std::uint8_t* bonded, BreakMode* breaks) {
   if (p.n_elements == 2 && bonded[0] && bonded[1])
-    return flat_joint_update_two_bonded(p, geo, kin, shear_force_n, breaks);
-  return bond_update(p, geo, kin, shear_force_n, bonded, breaks);
+    return flat_joint_update_two_bonded(p, geo, kin, shear_force_N, breaks);
+  return bond_update(p, geo, kin, shear_force_N, bonded, breaks);
 }
 
 }  // namespace kerf::dem

@@ -15,19 +15,19 @@ namespace kerf::dem::legacy {
 
 /// FlatJointParams of 4a34e1f, member for member.
 struct FlatJoint6 {
-  double effective_modulus_pa, stiffness_ratio, tensile_strength_pa, cohesion_pa, friction_angle_rad;
+  double effective_modulus_Pa, stiffness_ratio, tensile_strength_Pa, cohesion_Pa, friction_angle_rad;
   double friction_coefficient;  ///< the residual friction of unbonded elements
   int n_elements;
   double radius_multiplier, tan_friction_angle;
 };
 /// ParallelBondParams of 4a34e1f.
 struct ParallelBond6 {
-  double effective_modulus_pa, stiffness_ratio, tensile_strength_pa, cohesion_pa, friction_angle_rad;
+  double effective_modulus_Pa, stiffness_ratio, tensile_strength_Pa, cohesion_Pa, friction_angle_rad;
   double radius_multiplier, tan_friction_angle;
 };
 /// LinearContactParams of 4a34e1f.
 struct Linear6 {
-  double effective_modulus_pa, stiffness_ratio, friction_coefficient;
+  double effective_modulus_Pa, stiffness_ratio, friction_coefficient;
 };
 
 /// The law lists of 4a34e1f, in its order (the stored index is into these).
@@ -52,10 +52,10 @@ inline bool key_added_later(std::string_view key) {
 // The translations, keyed as this build's field tables key them. A key renamed in a law's table is renamed here.
 inline LawRecord record_of(const FlatJoint6& p) {
   return {"flat_joint",
-          {{"bond_effective_modulus_GPa", p.effective_modulus_pa},
+          {{"bond_effective_modulus_GPa", p.effective_modulus_Pa},
            {"bond_stiffness_ratio", p.stiffness_ratio},
-           {"tensile_strength_MPa", p.tensile_strength_pa},
-           {"cohesion_MPa", p.cohesion_pa},
+           {"tensile_strength_MPa", p.tensile_strength_Pa},
+           {"cohesion_MPa", p.cohesion_Pa},
            {"friction_angle_deg", p.friction_angle_rad},
            {"residual_friction_coefficient", p.friction_coefficient},
            {"n_elements", static_cast<double>(p.n_elements)},
@@ -63,16 +63,16 @@ inline LawRecord record_of(const FlatJoint6& p) {
 }
 inline LawRecord record_of(const ParallelBond6& p) {
   return {"parallel_bond",
-          {{"bond_effective_modulus_GPa", p.effective_modulus_pa},
+          {{"bond_effective_modulus_GPa", p.effective_modulus_Pa},
            {"bond_stiffness_ratio", p.stiffness_ratio},
-           {"tensile_strength_MPa", p.tensile_strength_pa},
-           {"cohesion_MPa", p.cohesion_pa},
+           {"tensile_strength_MPa", p.tensile_strength_Pa},
+           {"cohesion_MPa", p.cohesion_Pa},
            {"friction_angle_deg", p.friction_angle_rad},
            {"radius_multiplier", p.radius_multiplier}}};
 }
 inline LawRecord record_of(const Linear6& p) {
   return {"linear",
-          {{"effective_modulus_GPa", p.effective_modulus_pa},
+          {{"effective_modulus_GPa", p.effective_modulus_Pa},
            {"stiffness_ratio", p.stiffness_ratio},
            {"friction_coefficient", p.friction_coefficient}}};
 }

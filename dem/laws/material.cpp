@@ -109,9 +109,9 @@ const BondStiffnessStrength& joint_bond(const Material& m) {
 CalibratedParams calibrated_params(const Material& m) {
   return std::visit(
       [](const auto& c, const auto& j) {
-        CalibratedParams p{c.effective_modulus_pa, c.stiffness_ratio,          j.bond.effective_modulus_pa,
-                           j.bond.stiffness_ratio, j.bond.tensile_strength_pa, j.bond.cohesion_pa};
-        if constexpr (requires { j.fracture_energy_j_per_m2; }) p.fracture_energy_j_per_m2 = j.fracture_energy_j_per_m2;
+        CalibratedParams p{c.effective_modulus_Pa, c.stiffness_ratio,          j.bond.effective_modulus_Pa,
+                           j.bond.stiffness_ratio, j.bond.tensile_strength_Pa, j.bond.cohesion_Pa};
+        if constexpr (requires { j.fracture_energy_J_per_m2; }) p.fracture_energy_J_per_m2 = j.fracture_energy_J_per_m2;
         return p;
       },
       m.contact, m.joint);

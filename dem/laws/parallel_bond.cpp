@@ -24,13 +24,13 @@ BondGeometry bond_geometry(const ParallelBondParams& p, double r1_m, double r2_m
 }
 
 double bond_energy(const ParallelBondParams&, const BondGeometry& geo, const BondKinematics& kin,
-                   const double* shear_force_n, const std::uint8_t* bonded) {
+                   const double* shear_force_N, const std::uint8_t* bonded) {
   if (!bonded[0]) return 0;
   const double len = 2 * geo.half_length_m, t = geo.thickness_m;
   const double area = len * t, inertia = t * len * len * len / 12.0;
   return 0.5 * geo.normal_stiffness * area * kin.gap_m * kin.gap_m +
          0.5 * geo.normal_stiffness * inertia * kin.rotation_rad * kin.rotation_rad +
-         0.5 * shear_force_n[0] * shear_force_n[0] / (geo.shear_stiffness * area);
+         0.5 * shear_force_N[0] * shear_force_N[0] / (geo.shear_stiffness * area);
 }
 
 }  // namespace kerf::dem

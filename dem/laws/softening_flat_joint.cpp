@@ -16,7 +16,7 @@ const FieldTable<SofteningFlatJointParams>& SofteningFlatJointParams::fields() {
                                  "fracture energy G_f per element area beyond sigma_c^2 / (2 k_n): the tensile stress "
                                  "falls linearly to zero over the opening 2 G_f / sigma_c after the strength (0: the "
                                  "flat joint)",
-                                 &P::fracture_energy_j_per_m2)});
+                                 &P::fracture_energy_J_per_m2)});
   return table;
 }
 
@@ -25,12 +25,12 @@ SofteningFlatJointParams SofteningFlatJointParams::validated(const SofteningFlat
   SofteningFlatJointParams p = raw;
   static_cast<FlatJointParams&>(p) = FlatJointParams::validated(raw);
   p.softening_opening_m =
-      raw.bond.tensile_strength_pa > 0 ? 2 * raw.fracture_energy_j_per_m2 / raw.bond.tensile_strength_pa : 0.0;
+      raw.bond.tensile_strength_Pa > 0 ? 2 * raw.fracture_energy_J_per_m2 / raw.bond.tensile_strength_Pa : 0.0;
   return p;
 }
 
 double softening_flat_joint_bonded_energy(const SofteningFlatJointParams& p, const BondGeometry& geo,
-                                          const BondKinematics& kin, std::span<const double> shear_force_n,
+                                          const BondKinematics& kin, std::span<const double> shear_force_N,
                                           std::span<const std::uint8_t> bonded, std::span<const double> damage) {
   const int nr = p.n_elements;
   const double le = 2.0 * geo.half_length_m / nr;
@@ -46,7 +46,7 @@ double softening_flat_joint_bonded_energy(const SofteningFlatJointParams& p, con
     const double d = damage[e];
     if (d == 0) {
       energy += 0.5 * geo.normal_stiffness * geo.thickness_m * all;
-      energy += 0.5 * shear_force_n[e] * shear_force_n[e] / (geo.shear_stiffness * area);
+      energy += 0.5 * shear_force_N[e] * shear_force_N[e] / (geo.shear_stiffness * area);
       continue;
     }
     // Damaged: the closed part [c, d] at k_n (g linear: int g^2 = (d - c)(g_c^2 + g_c g_d + g_d^2) / 3), the
@@ -56,7 +56,7 @@ double softening_flat_joint_bonded_energy(const SofteningFlatJointParams& p, con
     const double closed =
         part.end_m > part.start_m ? (part.end_m - part.start_m) * (gc * gc + gc * gd + gd * gd) / 3 : 0.0;
     energy += 0.5 * geo.normal_stiffness * geo.thickness_m * (closed + (1 - d) * (all - closed));
-    if (d < 1) energy += 0.5 * shear_force_n[e] * shear_force_n[e] / ((1 - d) * geo.shear_stiffness * area);
+    if (d < 1) energy += 0.5 * shear_force_N[e] * shear_force_N[e] / ((1 - d) * geo.shear_stiffness * area);
   }
   return energy;
 }

@@ -138,14 +138,14 @@ void write_vtp_frame(const std::filesystem::path& path, const Simulation& sim, c
   // column 0; ParaView's tensor glyphs and eigenvectors take 9 components), its pressure, the forces' sum.
   const Simulation::DiskStresses stresses = sim.disk_stresses();
   f.array<double>("stress_MPa", 9, n, [&](std::size_t i, int c) {
-    const auto& s = stresses.stress_pa[i];
+    const auto& s = stresses.stress_Pa[i];
     constexpr int kIndex[9] = {0, 2, -1, 2, 1, -1, -1, -1, -1};  // xx xy . / xy yy . / . . .
     return kIndex[c] < 0 ? 0.0 : units::pa_to_mpa(s[static_cast<std::size_t>(kIndex[c])]);
   });
   f.array<double>("pressure_MPa", 1, n, [&](std::size_t i, int) {
-    return -0.5 * units::pa_to_mpa(stresses.stress_pa[i][0] + stresses.stress_pa[i][1]);
+    return -0.5 * units::pa_to_mpa(stresses.stress_Pa[i][0] + stresses.stress_Pa[i][1]);
   });
-  f.array<double>("contact_force_sum_N", 1, n, [&](std::size_t i, int) { return stresses.force_sum_n[i]; });
+  f.array<double>("contact_force_sum_N", 1, n, [&](std::size_t i, int) { return stresses.force_sum_N[i]; });
   f.tag("</PointData>\n<CellData Scalars=\"intact_elements\">");
   f.array<std::int32_t>("intact_elements", 1, n + nl,
                         [&](std::size_t c, int) { return c < n ? -1 : b.n_bonded_elements(lines[c - n]); });
@@ -235,7 +235,7 @@ std::string curve_csv(const LabTestResult& r) {
       csv_line({"time_s", "axial_strain", "lateral_strain", "stress_MPa", "tension_cracks", "shear_cracks"});
   for (const auto& s : r.curve)
     out += csv_line({csv_number(s.time_s), csv_number(s.axial_strain), csv_number(s.lateral_strain),
-                     csv_number(units::pa_to_mpa(s.stress_pa)), std::to_string(s.n_tension_cracks),
+                     csv_number(units::pa_to_mpa(s.stress_Pa)), std::to_string(s.n_tension_cracks),
                      std::to_string(s.n_shear_cracks)});
   return out;
 }

@@ -96,28 +96,28 @@ void write_cut_forces_png(const std::filesystem::path& path, const CutResult& re
   PlotSeries main{"cutting force", {}, {}, {}, {}, SeriesStyle::line, 0, 0};
   PlotSeries thrust{"thrust force", {}, {}, {}, {}, SeriesStyle::line, 1, 0};
   for (const auto& s : result.samples) {
-    main.x.push_back(units::m_to_mm(s.travel_m)), main.y.push_back(s.main_force_n / width_mm);
-    thrust.x.push_back(units::m_to_mm(s.travel_m)), thrust.y.push_back(s.thrust_force_n / width_mm);
+    main.x.push_back(units::m_to_mm(s.travel_m)), main.y.push_back(s.main_force_N / width_mm);
+    thrust.x.push_back(units::m_to_mm(s.travel_m)), thrust.y.push_back(s.thrust_force_N / width_mm);
   }
   // The means over the travel they cover, and whether that is a steady cut (CutResult::steady).
   const double x0 = units::m_to_mm(result.steady_from_travel_m), x1 = units::m_to_mm(result.steady_to_travel_m);
-  const auto mean_label = [&](double force_n) {
-    return fmt::format("mean {:.3g} N/mm over {:.3g}-{:.3g} mm{}", force_n / width_mm, x0, x1,
+  const auto mean_label = [&](double force_N) {
+    return fmt::format("mean {:.3g} N/mm over {:.3g}-{:.3g} mm{}", force_N / width_mm, x0, x1,
                        result.steady ? "" : " (NOT STEADY)");
   };
-  const double main_mean_n_per_mm = result.main_force_n / width_mm,
-               thrust_mean_n_per_mm = result.thrust_force_n / width_mm;
-  PlotSeries main_mean{mean_label(result.main_force_n),
+  const double main_mean_N_per_mm = result.main_force_N / width_mm,
+               thrust_mean_N_per_mm = result.thrust_force_N / width_mm;
+  PlotSeries main_mean{mean_label(result.main_force_N),
                        {x0, x1},
-                       {main_mean_n_per_mm, main_mean_n_per_mm},
+                       {main_mean_N_per_mm, main_mean_N_per_mm},
                        {},
                        {},
                        SeriesStyle::dashed_line,
                        0,
                        0};
-  PlotSeries thrust_mean{mean_label(result.thrust_force_n),
+  PlotSeries thrust_mean{mean_label(result.thrust_force_N),
                          {x0, x1},
-                         {thrust_mean_n_per_mm, thrust_mean_n_per_mm},
+                         {thrust_mean_N_per_mm, thrust_mean_N_per_mm},
                          {},
                          {},
                          SeriesStyle::dashed_line,
@@ -137,15 +137,15 @@ void write_stress_strain_png(const std::filesystem::path& path, const LabTestRes
   fig.y_label = "axial stress (MPa)";
   PlotSeries curve{"stress-strain curve", {}, {}, {}, {}, SeriesStyle::line, 0, 0};
   for (const auto& c : result.curve)
-    curve.x.push_back(strain_scale * c.axial_strain), curve.y.push_back(units::pa_to_mpa(c.stress_pa));
+    curve.x.push_back(strain_scale * c.axial_strain), curve.y.push_back(units::pa_to_mpa(c.stress_Pa));
   fig.series.push_back(curve);
-  const double peak = units::pa_to_mpa(result.peak_stress_pa);
-  if (result.youngs_modulus_pa > 0) {
+  const double peak = units::pa_to_mpa(result.peak_stress_Pa);
+  if (result.youngs_modulus_Pa > 0) {
     // The secant E (lab_test.hpp: from the origin to 50 % of the peak), drawn over its fit range and on to
     // the peak's stress as a thinner guide.
-    const double half_strain = 0.5 * result.peak_stress_pa / result.youngs_modulus_pa;
+    const double half_strain = 0.5 * result.peak_stress_Pa / result.youngs_modulus_Pa;
     fig.series.push_back(
-        {fmt::format("secant E = {:.3g} GPa (fit: 0-50 % of the peak)", units::pa_to_gpa(result.youngs_modulus_pa)),
+        {fmt::format("secant E = {:.3g} GPa (fit: 0-50 % of the peak)", units::pa_to_gpa(result.youngs_modulus_Pa)),
          {0, strain_scale * half_strain},
          {0, 0.5 * peak},
          {},
@@ -204,22 +204,22 @@ void write_load_deflection_png(const std::filesystem::path& path, const std::vec
                       static_cast<int>(k % 6),
                       0};
     for (const auto& s : r.curve) {
-      curve.x.push_back(units::m_to_um(s.deflection_m)), curve.y.push_back(s.load_n);
-      smooth.x.push_back(units::m_to_um(s.deflection_m)), smooth.y.push_back(s.smoothed_load_n);
+      curve.x.push_back(units::m_to_um(s.deflection_m)), curve.y.push_back(s.load_N);
+      smooth.x.push_back(units::m_to_um(s.deflection_m)), smooth.y.push_back(s.smoothed_load_N);
     }
     fig.series.push_back(curve);
     fig.series.push_back(smooth);
-    peak_max = std::max(peak_max, r.raw_peak_load_n);
+    peak_max = std::max(peak_max, r.raw_peak_load_N);
   }
   for (std::size_t k = 0; k < results.size(); ++k) {
     const ToughnessResult& r = results[k];
-    const std::string label = k == 0 ? fmt::format("averaged peak {:.3g} N: K#dIC#u {:.3g} MPa m#u1/2#d", r.peak_load_n,
-                                                   units::pa_to_mpa(r.fracture_toughness_pa_sqrt_m))
+    const std::string label = k == 0 ? fmt::format("averaged peak {:.3g} N: K#dIC#u {:.3g} MPa m#u1/2#d", r.peak_load_N,
+                                                   units::pa_to_mpa(r.fracture_toughness_Pa_sqrt_m))
                                      : std::string();
     // One packing: the peak in red, to stand out of its own curve.
     fig.series.push_back({label,
                           {units::m_to_um(r.deflection_at_peak_m)},
-                          {r.peak_load_n},
+                          {r.peak_load_N},
                           {},
                           {},
                           SeriesStyle::points,

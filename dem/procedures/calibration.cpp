@@ -29,7 +29,7 @@ MacroProperties measure_macro_properties(const Simulation& specimen, const Loadi
                                          const LoadingSpec& compression) {
   const LabTestResult t = run_lab_test(specimen, tension);
   const LabTestResult c = run_lab_test(specimen, compression);
-  return {c.youngs_modulus_pa, c.poissons_ratio, t.peak_stress_pa, c.peak_stress_pa};
+  return {c.youngs_modulus_Pa, c.poissons_ratio, t.peak_stress_Pa, c.peak_stress_Pa};
 }
 
 MacroProperties mean_macro_properties(std::span<const SpecimenSource> sources, const Material& m,
@@ -38,14 +38,14 @@ MacroProperties mean_macro_properties(std::span<const SpecimenSource> sources, c
   MacroProperties sum{0, 0, 0, 0};
   for (const auto& source : sources) {
     const MacroProperties one = measure_macro_properties(source.for_material(m), tension, compression);
-    sum.youngs_modulus_pa += one.youngs_modulus_pa;
+    sum.youngs_modulus_Pa += one.youngs_modulus_Pa;
     sum.poissons_ratio += one.poissons_ratio;
-    sum.tensile_strength_pa += one.tensile_strength_pa;
-    sum.compressive_strength_pa += one.compressive_strength_pa;
+    sum.tensile_strength_Pa += one.tensile_strength_Pa;
+    sum.compressive_strength_Pa += one.compressive_strength_Pa;
   }
   const double n = static_cast<double>(sources.size());
-  return {sum.youngs_modulus_pa / n, sum.poissons_ratio / n, sum.tensile_strength_pa / n,
-          sum.compressive_strength_pa / n};
+  return {sum.youngs_modulus_Pa / n, sum.poissons_ratio / n, sum.tensile_strength_Pa / n,
+          sum.compressive_strength_Pa / n};
 }
 
 double mean_fracture_toughness(std::span<const SpecimenSource> beams, const Material& m,
@@ -55,15 +55,15 @@ double mean_fracture_toughness(std::span<const SpecimenSource> beams, const Mate
   if (t.local_damping) beam_material.local_damping = *t.local_damping;
   double sum = 0;
   for (const auto& beam : beams)
-    sum += run_toughness_test(beam.for_material(beam_material), t.test).fracture_toughness_pa_sqrt_m;
+    sum += run_toughness_test(beam.for_material(beam_material), t.test).fracture_toughness_Pa_sqrt_m;
   return sum / static_cast<double>(beams.size());
 }
 
 double max_relative_error(const MacroProperties& got, const MacroProperties& target) {
-  return std::max({std::abs(got.youngs_modulus_pa / target.youngs_modulus_pa - 1),
+  return std::max({std::abs(got.youngs_modulus_Pa / target.youngs_modulus_Pa - 1),
                    std::abs(got.poissons_ratio / target.poissons_ratio - 1),
-                   std::abs(got.tensile_strength_pa / target.tensile_strength_pa - 1),
-                   std::abs(got.compressive_strength_pa / target.compressive_strength_pa - 1)});
+                   std::abs(got.tensile_strength_Pa / target.tensile_strength_Pa - 1),
+                   std::abs(got.compressive_strength_Pa / target.compressive_strength_Pa - 1)});
 }
 
 namespace {
@@ -81,7 +81,7 @@ struct Context {
   int best = 0;                ///< the best evaluation's index in result.log
   double ln_lambda_start = 0;  ///< ln lambda of the start (with free_fracture_energy)
 
-  bool toughness_target() const { return spec->toughness && spec->targets.fracture_toughness_pa_sqrt_m > 0; }
+  bool toughness_target() const { return spec->toughness && spec->targets.fracture_toughness_Pa_sqrt_m > 0; }
   /// What the best evaluation minimises: the four's largest error, or with a toughness target the largest
   /// error over its tolerance of the five.
   double score(const CalibrationEvaluation& e) const {
@@ -99,8 +99,8 @@ struct Context {
 std::optional<double> fracture_energy(const Material& m) {
   return std::visit(
       [](const auto& j) -> std::optional<double> {
-        if constexpr (requires { j.fracture_energy_j_per_m2; })
-          return j.fracture_energy_j_per_m2;
+        if constexpr (requires { j.fracture_energy_J_per_m2; })
+          return j.fracture_energy_J_per_m2;
         else
           return std::nullopt;
       },
@@ -109,7 +109,7 @@ std::optional<double> fracture_energy(const Material& m) {
 void set_fracture_energy(Material& m, double g) {
   std::visit(
       [&](auto& j) {
-        if constexpr (requires { j.fracture_energy_j_per_m2; }) j.fracture_energy_j_per_m2 = g;
+        if constexpr (requires { j.fracture_energy_J_per_m2; }) j.fracture_energy_J_per_m2 = g;
       },
       m.joint);
 }
@@ -138,11 +138,11 @@ MacroProperties evaluate(Context& ctx, const Material& proposed) {
     const auto start = std::chrono::steady_clock::now();
     e.macro = mean_macro_properties(ctx.sources, m, ctx.spec->tension, ctx.spec->compression);
     if (ctx.spec->toughness)
-      e.macro.fracture_toughness_pa_sqrt_m = mean_fracture_toughness(ctx.beams, m, *ctx.spec->toughness);
+      e.macro.fracture_toughness_Pa_sqrt_m = mean_fracture_toughness(ctx.beams, m, *ctx.spec->toughness);
     e.max_relative_error = max_relative_error(e.macro, ctx.spec->targets);
     if (ctx.toughness_target())
       e.toughness_error =
-          std::abs(e.macro.fracture_toughness_pa_sqrt_m / ctx.spec->targets.fracture_toughness_pa_sqrt_m - 1);
+          std::abs(e.macro.fracture_toughness_Pa_sqrt_m / ctx.spec->targets.fracture_toughness_Pa_sqrt_m - 1);
     e.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
   e.index = static_cast<int>(ctx.result.log.size());
@@ -158,8 +158,8 @@ MacroProperties evaluate(Context& ctx, const Material& proposed) {
   if (*ctx.on_evaluation) (*ctx.on_evaluation)(e);
   if (ctx.converged(e)) ctx.done = ctx.result.converged = true;
   if (static_cast<int>(ctx.result.log.size()) >= ctx.spec->max_evaluations) ctx.done = true;
-  if (!(e.macro.youngs_modulus_pa > 0 && e.macro.tensile_strength_pa > 0 && e.macro.compressive_strength_pa > 0) ||
-      (ctx.spec->toughness && !(e.macro.fracture_toughness_pa_sqrt_m > 0)))
+  if (!(e.macro.youngs_modulus_Pa > 0 && e.macro.tensile_strength_Pa > 0 && e.macro.compressive_strength_Pa > 0) ||
+      (ctx.spec->toughness && !(e.macro.fracture_toughness_Pa_sqrt_m > 0)))
     throw ModelError("calibrate", "a test gave no usable curve (zero modulus, strength or toughness)");
   // A softening joint's G_f follows the two corrections as b^2 / a (w_c / g_0 kept: the header).
   const std::optional<double> g_f = fracture_energy(m);
@@ -167,22 +167,22 @@ MacroProperties evaluate(Context& ctx, const Material& proposed) {
   // Exact trends (see the header): E ~ E*, both strengths ~ (sigma_c, c) at a fixed c / sigma_c.
   const auto& t = ctx.spec->targets;
   if (ctx.spec->free_modulus) {
-    const double a = t.youngs_modulus_pa / e.macro.youngs_modulus_pa;
+    const double a = t.youngs_modulus_Pa / e.macro.youngs_modulus_Pa;
     g_scale /= a;
     std::visit(
         [&](auto& c, auto& j, const auto& c0, const auto& j0) {
-          c.effective_modulus_pa = c0.effective_modulus_pa * a;
-          j.bond.effective_modulus_pa = j0.bond.effective_modulus_pa * a;
+          c.effective_modulus_Pa = c0.effective_modulus_Pa * a;
+          j.bond.effective_modulus_Pa = j0.bond.effective_modulus_Pa * a;
         },
         ctx.current.contact, ctx.current.joint, m.contact, m.joint);
   }
   if (ctx.spec->free_tensile_strength) {
-    const double b = t.tensile_strength_pa / e.macro.tensile_strength_pa;
+    const double b = t.tensile_strength_Pa / e.macro.tensile_strength_Pa;
     g_scale *= b * b;
     std::visit(
         [&](auto& j, const auto& j0) {
-          j.bond.tensile_strength_pa = j0.bond.tensile_strength_pa * b;
-          j.bond.cohesion_pa = j0.bond.cohesion_pa * b;
+          j.bond.tensile_strength_Pa = j0.bond.tensile_strength_Pa * b;
+          j.bond.cohesion_Pa = j0.bond.cohesion_Pa * b;
         },
         ctx.current.joint, m.joint);
   }
@@ -211,7 +211,7 @@ std::array<bool, kVars> free_vars(const CalibrationSpec& spec) {
 
 /// lambda of a material's micro-parameters (0 without a fracture energy).
 double lambda_of(const CalibratedParams& j) {
-  return j.fracture_energy_j_per_m2 * j.bond_modulus_pa / (j.tensile_strength_pa * j.tensile_strength_pa);
+  return j.fracture_energy_J_per_m2 * j.bond_modulus_Pa / (j.tensile_strength_Pa * j.tensile_strength_Pa);
 }
 
 /// The current material with kappa* = kappabar* = exp(x[kKappa]), c = exp(x[kRatio]) sigma_c and
@@ -224,14 +224,14 @@ Material material_at(const Context& ctx, const Vars& x) {
           contact.stiffness_ratio = joint.bond.stiffness_ratio =
               std::exp(std::clamp(x[kKappa], std::log(kKappaMin), std::log(kKappaMax)));
         if (ctx.spec->free_cohesion)
-          joint.bond.cohesion_pa = std::exp(std::clamp(x[kRatio], std::log(kRatioMin), std::log(kRatioMax))) *
-                                   joint.bond.tensile_strength_pa;
-        if constexpr (requires { joint.fracture_energy_j_per_m2; })
+          joint.bond.cohesion_Pa = std::exp(std::clamp(x[kRatio], std::log(kRatioMin), std::log(kRatioMax))) *
+                                   joint.bond.tensile_strength_Pa;
+        if constexpr (requires { joint.fracture_energy_J_per_m2; })
           if (ctx.spec->free_fracture_energy)
-            joint.fracture_energy_j_per_m2 =
+            joint.fracture_energy_J_per_m2 =
                 std::exp(std::clamp(x[kLambda], ctx.ln_lambda_start - std::log(kLambdaRange),
                                     ctx.ln_lambda_start + std::log(kLambdaRange))) *
-                joint.bond.tensile_strength_pa * joint.bond.tensile_strength_pa / joint.bond.effective_modulus_pa;
+                joint.bond.tensile_strength_Pa * joint.bond.tensile_strength_Pa / joint.bond.effective_modulus_Pa;
         joint = with_path("material", [&] { return std::decay_t<decltype(joint)>::validated(joint); });
       },
       m.contact, m.joint);
@@ -239,13 +239,13 @@ Material material_at(const Context& ctx, const Vars& x) {
 }
 
 double ln_strength_ratio(const MacroProperties& p) {
-  return std::log(p.compressive_strength_pa / p.tensile_strength_pa);
+  return std::log(p.compressive_strength_Pa / p.tensile_strength_Pa);
 }
 
 /// The response each variable steers: ln nu, ln R, ln(K_IC / sigma_t) (0 without a toughness).
 Vars responses(const MacroProperties& p) {
   return {std::log(p.poissons_ratio), ln_strength_ratio(p),
-          p.fracture_toughness_pa_sqrt_m > 0 ? std::log(p.fracture_toughness_pa_sqrt_m / p.tensile_strength_pa) : 0.0};
+          p.fracture_toughness_Pa_sqrt_m > 0 ? std::log(p.fracture_toughness_Pa_sqrt_m / p.tensile_strength_Pa) : 0.0};
 }
 
 /// The residuals handed to GSL: f = (ln(nu / nu_target), ln R - ln R_target, ln(K/sigma_t) - ln(K/sigma_t)_target).
@@ -261,7 +261,7 @@ Vars residuals(const MacroProperties& got, const MacroProperties& t) {
 Vars vars_of(const Material& m) {
   const CalibratedParams j = calibrated_params(m);
   const double lambda = lambda_of(j);
-  return {std::log(j.stiffness_ratio), std::log(j.cohesion_pa / j.tensile_strength_pa),
+  return {std::log(j.stiffness_ratio), std::log(j.cohesion_Pa / j.tensile_strength_Pa),
           lambda > 0 ? std::log(lambda) : 0.0};
 }
 
@@ -270,7 +270,7 @@ Vars start_point(const Context& ctx) {
   // c / sigma_c starts at >= 1.5: for c <~ sigma_c the strength ratio barely responds (see the ranges).
   const CalibratedParams j = calibrated_params(ctx.current);
   return {std::log(std::clamp(j.stiffness_ratio, kKappaMin, kKappaMax)),
-          std::log(std::clamp(j.cohesion_pa / j.tensile_strength_pa, 1.5, kRatioMax)), ctx.ln_lambda_start};
+          std::log(std::clamp(j.cohesion_Pa / j.tensile_strength_Pa, 1.5, kRatioMax)), ctx.ln_lambda_start};
 }
 
 constexpr Vars kTrendSlopes{kSlopeNu, kSlopeR, kSlopeK}, kMinSlopes{kSlopeNuMin, kSlopeRMin, kSlopeKMin};
@@ -293,7 +293,7 @@ Vars trend_slopes(const Context& ctx) {
       const auto& pa = log[a].macro;
       const Vars ya = responses(pa);
       const Vars dx{std::log(mb.stiffness_ratio / ma.stiffness_ratio),
-                    std::log((mb.cohesion_pa / mb.tensile_strength_pa) / (ma.cohesion_pa / ma.tensile_strength_pa)),
+                    std::log((mb.cohesion_Pa / mb.tensile_strength_Pa) / (ma.cohesion_Pa / ma.tensile_strength_Pa)),
                     have[kLambda] ? 0.0 : std::log(lambda_of(mb) / lambda_of(ma))};
       const Vars dy{std::log(pb.poissons_ratio / pa.poissons_ratio), yb[kRatio] - ya[kRatio],
                     yb[kLambda] - ya[kLambda]};
@@ -430,9 +430,9 @@ void evaluation_fields(Self& e, Io& io, bool toughness = true) {
   auto& m = e.material;
   io(m.name, m.density_kg_per_m3, m.local_damping, m.viscous_damping_ratio);
   io(m.contact, m.joint);  // the laws, by name and every field (serial.hpp)
-  io(e.macro.youngs_modulus_pa, e.macro.poissons_ratio, e.macro.tensile_strength_pa, e.macro.compressive_strength_pa);
+  io(e.macro.youngs_modulus_Pa, e.macro.poissons_ratio, e.macro.tensile_strength_Pa, e.macro.compressive_strength_Pa);
   io(e.index, e.max_relative_error, e.wall_time_s);
-  if (toughness) io(e.macro.fracture_toughness_pa_sqrt_m, e.toughness_error);
+  if (toughness) io(e.macro.fracture_toughness_Pa_sqrt_m, e.toughness_error);
 }
 }  // namespace
 
@@ -466,7 +466,7 @@ void check_calibration_start(const CalibrationSpec& spec, const Material& start)
     throw InputError("material.fracture_energy_J_per_m2", g_f ? fmt::format("{}", *g_f) : "none",
                      "a bond_model softening_flat_joint with a fracture energy > 0 to start from, when "
                      "calibration.free has fracture_energy_J_per_m2");
-  if (!spec.toughness || !(spec.targets.fracture_toughness_pa_sqrt_m > 0))
+  if (!spec.toughness || !(spec.targets.fracture_toughness_Pa_sqrt_m > 0))
     throw InputError("calibration.targets.fracture_toughness_MPa_sqrt_m", "none",
                      "a toughness target (and a calibration.toughness test) when calibration.free has "
                      "fracture_energy_J_per_m2");

@@ -18,29 +18,29 @@ Material scale_bond_strengths(const Material& m, double factor, const std::strin
   out.name = name;
   std::visit(
       [&](auto& j) {
-        j.bond.tensile_strength_pa *= factor;
-        j.bond.cohesion_pa *= factor;
+        j.bond.tensile_strength_Pa *= factor;
+        j.bond.cohesion_Pa *= factor;
       },
       out.joint);
   return out;
 }
 
-double next_strength_factor(const std::vector<CutCalibrationPoint>& history, double target_main_force_n) {
+double next_strength_factor(const std::vector<CutCalibrationPoint>& history, double target_main_force_N) {
   if (history.empty()) throw ModelError("dem", "cut calibration: no evaluation to step from");
   const CutCalibrationPoint& last = history.back();
-  if (!(last.main_force_n > 0) || !std::isfinite(last.main_force_n))
+  if (!(last.main_force_N > 0) || !std::isfinite(last.main_force_N))
     throw ModelError("dem", fmt::format("cut calibration: the mean main force at strength factor {} is {} N; it must "
                                         "be positive to scale the strengths towards {} N",
-                                        last.strength_factor, last.main_force_n, target_main_force_n));
+                                        last.strength_factor, last.main_force_N, target_main_force_N));
   double slope = 1;
   for (auto it = history.rbegin() + 1; it != history.rend(); ++it) {
-    if (it->strength_factor == last.strength_factor || !(it->main_force_n > 0)) continue;
+    if (it->strength_factor == last.strength_factor || !(it->main_force_N > 0)) continue;
     const double p =
-        std::log(last.main_force_n / it->main_force_n) / std::log(last.strength_factor / it->strength_factor);
+        std::log(last.main_force_N / it->main_force_N) / std::log(last.strength_factor / it->strength_factor);
     if (std::isfinite(p)) slope = std::clamp(p, 0.5, 2.0);
     break;
   }
-  const double step = std::clamp(std::pow(target_main_force_n / last.main_force_n, 1 / slope), 0.25, 4.0);
+  const double step = std::clamp(std::pow(target_main_force_N / last.main_force_N, 1 / slope), 0.25, 4.0);
   return last.strength_factor * step;
 }
 

@@ -16,19 +16,19 @@ constexpr double kPi = std::numbers::pi;
 }  // namespace
 
 bool inside_groove_outline(const CutParams& p, double dx_m, double depth_m) {
-  if (p.groove_shape == GrooveShape::none || depth_m < 0 || depth_m > p.groove_depth_m) return false;
-  double width = p.groove_width_m;
+  if (p.grooves.shape == GrooveShape::none || depth_m < 0 || depth_m > p.grooves.depth_m) return false;
+  double width = p.grooves.width_m;
   // The laser grooves are inverted trapezoids (seed 000 Section 4, discussion of Figure 18): the width
   // falls linearly from the top width at the surface to the bottom width at the groove depth.
-  if (p.groove_shape == GrooveShape::trapezoidal)
-    width += (p.groove_bottom_width_m - p.groove_width_m) * depth_m / p.groove_depth_m;
+  if (p.grooves.shape == GrooveShape::trapezoidal)
+    width += (p.grooves.bottom_width_m - p.grooves.width_m) * depth_m / p.grooves.depth_m;
   return std::abs(dx_m) <= 0.5 * width;
 }
 
 double distance_to_groove_outline(const CutParams& p, double dx_m, double depth_m) {
   if (inside_groove_outline(p, dx_m, depth_m)) return 0;
-  const double top = 0.5 * p.groove_width_m, depth = p.groove_depth_m;
-  const double bottom = p.groove_shape == GrooveShape::trapezoidal ? 0.5 * p.groove_bottom_width_m : top;
+  const double top = 0.5 * p.grooves.width_m, depth = p.grooves.depth_m;
+  const double bottom = p.grooves.shape == GrooveShape::trapezoidal ? 0.5 * p.grooves.bottom_width_m : top;
   // The nearest of the two walls (by symmetry, the one on the point's side) and the bottom.
   const double x = std::abs(dx_m);
   const auto to_segment = [&](double ax, double ay, double bx, double by) {
@@ -42,7 +42,7 @@ double distance_to_groove_outline(const CutParams& p, double dx_m, double depth_
 std::array<std::size_t, 2> apply_groove_damage(Simulation& workpiece, const CutParams& p,
                                                const std::array<double, 4>& box_m) {
   std::array<std::size_t, 2> count{};
-  if (p.groove_shape == GrooveShape::none || p.groove_damage_depth_m <= 0) return count;
+  if (p.grooves.shape == GrooveShape::none || p.grooves.damage_depth_m <= 0) return count;
   const auto& q = workpiece.particles();
   auto& b = workpiece.bonds();
   const double y_top_m = box_m[3];
@@ -54,7 +54,7 @@ std::array<std::size_t, 2> apply_groove_damage(Simulation& workpiece, const CutP
     const double x = 0.5 * (q.x[i] + q.x[j]), depth = y_top_m - 0.5 * (q.y[i] + q.y[j]);
     bool in_layer = false;
     for (double c : centres)
-      in_layer = in_layer || distance_to_groove_outline(p, x - c, depth) <= p.groove_damage_depth_m;
+      in_layer = in_layer || distance_to_groove_outline(p, x - c, depth) <= p.grooves.damage_depth_m;
     if (!in_layer) continue;
     ++count[0];
     // SplitMix64's finaliser of the joint's index: a uniform draw in [0, 1) that needs no generator state.
@@ -62,11 +62,11 @@ std::array<std::size_t, 2> apply_groove_damage(Simulation& workpiece, const CutP
     z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
     z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
     z ^= z >> 31;
-    if (static_cast<double>(z >> 11) * 0x1.0p-53 >= p.groove_damage_broken_fraction) continue;
+    if (static_cast<double>(z >> 11) * 0x1.0p-53 >= p.grooves.damage_broken_fraction) continue;
     ++count[1];
     for (std::size_t e = 0; e < stride; ++e) {
       b.bonded[k * stride + e] = 0;
-      b.shear_force_n[k * stride + e] = 0;
+      b.shear_force_N[k * stride + e] = 0;
     }
   }
   return count;
@@ -74,12 +74,12 @@ std::array<std::size_t, 2> apply_groove_damage(Simulation& workpiece, const CutP
 
 std::vector<double> groove_centres(const CutParams& p, double x_left_m, double x_right_m) {
   std::vector<double> out;
-  if (p.groove_shape == GrooveShape::none) return out;
-  const double half = 0.5 * p.groove_width_m;
+  if (p.grooves.shape == GrooveShape::none) return out;
+  const double half = 0.5 * p.grooves.width_m;
   // The laser treats the whole top surface, not only the tool's path: a groove ahead of the tool's end
   // still stops a crack, and the workpiece does not change with the travel (seed 000 Section 4: grooves on
   // the top surface).
-  for (double c = x_right_m - 0.5 * p.groove_pitch_m; c - half > x_left_m; c -= p.groove_pitch_m) out.push_back(c);
+  for (double c = x_right_m - 0.5 * p.grooves.pitch_m; c - half > x_left_m; c -= p.grooves.pitch_m) out.push_back(c);
   return out;
 }
 
@@ -94,14 +94,14 @@ std::vector<std::array<double, 2>> tool_outline(const CutParams& p, double x_fro
   // Rake face (from the tip upwards): rotated from the vertical towards the back by the rake angle; a
   // negative rake leans it forwards, over the chip. Clearance face (from the tip backwards): rises from
   // the machined surface by the clearance angle.
-  const double g = units::deg_to_rad(p.rake_deg), a = units::deg_to_rad(p.clearance_deg);
+  const double g = units::deg_to_rad(p.tool.rake_deg), a = units::deg_to_rad(p.tool.clearance_deg);
   const std::array<double, 2> r{std::sin(g), std::cos(g)}, c{std::cos(a), std::sin(a)};
   // A back face closes the outline so that no disk can get inside the tool.
   const double lr = rake_face_length_m(p), lc = clearance_face_length_m(p);
   std::vector<std::array<double, 2>> v;
   v.push_back({lr * r[0], lr * r[1]});
-  if (p.edge_radius_m > 0) {
-    const double beta = wedge_angle_rad(p), rho = p.edge_radius_m;
+  if (p.tool.edge_radius_m > 0) {
+    const double beta = wedge_angle_rad(p), rho = p.tool.edge_radius_m;
     const double t = rho / std::tan(0.5 * beta), h = rho / std::sin(0.5 * beta);
     const double bx = r[0] + c[0], by = r[1] + c[1], bn = std::hypot(bx, by);
     const double cx = h * bx / bn, cy = h * by / bn;  // arc centre on the bisector
@@ -109,8 +109,8 @@ std::vector<std::array<double, 2>> tool_outline(const CutParams& p, double x_fro
     double sweep = std::atan2(t * c[1] - cy, t * c[0] - cx) - a0;
     while (sweep > kPi) sweep -= 2 * kPi;
     while (sweep <= -kPi) sweep += 2 * kPi;
-    for (int k = 0; k <= p.edge_segments; ++k) {
-      const double phi = a0 + sweep * k / p.edge_segments;
+    for (int k = 0; k <= p.tool.edge_segments; ++k) {
+      const double phi = a0 + sweep * k / p.tool.edge_segments;
       v.push_back({cx + rho * std::cos(phi), cy + rho * std::sin(phi)});
     }
   } else {

@@ -49,18 +49,18 @@ void steady_statistics(CutResult& res, double from_travel_m) {
   int n = 0, touching = 0;
   for (const auto& s : res.samples) {
     if (s.travel_m < from_travel_m) continue;
-    sm += s.main_force_n, st += s.thrust_force_n;
-    sm2 += s.main_force_n * s.main_force_n, st2 += s.thrust_force_n * s.thrust_force_n;
-    touching += s.main_force_n > 0 ? 1 : 0;
+    sm += s.main_force_N, st += s.thrust_force_N;
+    sm2 += s.main_force_N * s.main_force_N, st2 += s.thrust_force_N * s.thrust_force_N;
+    touching += s.main_force_N > 0 ? 1 : 0;
     ++n;
   }
   res.n_steady_samples = n;
   res.steady_from_travel_m = from_travel_m;
   res.steady_to_travel_m = res.samples.empty() ? from_travel_m : res.samples.back().travel_m;
   if (n == 0) {
-    res.main_force_n = res.thrust_force_n = res.main_force_std_n = res.thrust_force_std_n = 0;
+    res.main_force_N = res.thrust_force_N = res.main_force_std_N = res.thrust_force_std_N = 0;
     res.contact_share = 0;
-    res.main_force_sem_n = res.thrust_force_sem_n = std::nan("");
+    res.main_force_sem_N = res.thrust_force_sem_N = std::nan("");
     res.main_force_sem_method = res.thrust_force_sem_method = "none";
     res.steady = false;
     res.not_steady_reason =
@@ -68,16 +68,16 @@ void steady_statistics(CutResult& res, double from_travel_m) {
     return;
   }
   res.contact_share = static_cast<double>(touching) / n;
-  res.main_force_n = sm / n;
-  res.thrust_force_n = st / n;
-  res.main_force_std_n = std::sqrt(std::max(0.0, sm2 / n - res.main_force_n * res.main_force_n));
-  res.thrust_force_std_n = std::sqrt(std::max(0.0, st2 / n - res.thrust_force_n * res.thrust_force_n));
+  res.main_force_N = sm / n;
+  res.thrust_force_N = st / n;
+  res.main_force_std_N = std::sqrt(std::max(0.0, sm2 / n - res.main_force_N * res.main_force_N));
+  res.thrust_force_std_N = std::sqrt(std::max(0.0, st2 / n - res.thrust_force_N * res.thrust_force_N));
   std::vector<double> main, thrust;
   for (const auto& s : res.samples)
-    if (s.travel_m >= from_travel_m) main.push_back(s.main_force_n), thrust.push_back(s.thrust_force_n);
+    if (s.travel_m >= from_travel_m) main.push_back(s.main_force_N), thrust.push_back(s.thrust_force_N);
   const BatchMeans bm = batch_means(main), bt = batch_means(thrust);
-  res.main_force_sem_n = bm.best_standard_error(&res.main_force_sem_method);
-  res.thrust_force_sem_n = bt.best_standard_error(&res.thrust_force_sem_method);
+  res.main_force_sem_N = bm.best_standard_error(&res.main_force_sem_method);
+  res.thrust_force_sem_N = bt.best_standard_error(&res.thrust_force_sem_method);
   res.main_force_inefficiency = bm.statistical_inefficiency,
   res.thrust_force_inefficiency = bt.statistical_inefficiency;
   res.main_force_batch_samples = bm.batch_length, res.thrust_force_batch_samples = bt.batch_length;
@@ -95,12 +95,12 @@ void steady_statistics(CutResult& res, double from_travel_m) {
         fmt::format("the means start at {:.4g} mm of travel, within the entry (the first {:g} mm; "
                     "docs/dem.md, \"How long a cut must be\"): start them later (cut.entry_fraction)",
                     units::m_to_mm(from_travel_m), entry_mm));
-  if (!std::isfinite(res.main_force_sem_n) || !std::isfinite(res.thrust_force_sem_n))
+  if (!std::isfinite(res.main_force_sem_N) || !std::isfinite(res.thrust_force_sem_N))
     why.push_back(fmt::format(
         "the standard error of the {} cannot be computed from {} samples (too few for batch "
         "means or the autocorrelation): cut further",
-        !std::isfinite(res.main_force_sem_n) && !std::isfinite(res.thrust_force_sem_n) ? "main and thrust means"
-        : !std::isfinite(res.main_force_sem_n)                                         ? "main mean"
+        !std::isfinite(res.main_force_sem_N) && !std::isfinite(res.thrust_force_sem_N) ? "main and thrust means"
+        : !std::isfinite(res.main_force_sem_N)                                         ? "main mean"
                                                                                        : "thrust mean",
         n));
   res.steady = why.empty();
@@ -117,12 +117,12 @@ std::vector<TravelWindow> travel_window_means(const std::vector<CutSample>& samp
   }
   for (const auto& s : samples) {
     const auto k = std::min(n - 1, static_cast<std::size_t>(std::max(0.0, s.travel_m / window_m)));
-    out[k].main_force_n += s.main_force_n;
-    out[k].thrust_force_n += s.thrust_force_n;
+    out[k].main_force_N += s.main_force_N;
+    out[k].thrust_force_N += s.thrust_force_N;
     ++out[k].n_samples;
   }
   for (auto& w : out)
-    if (w.n_samples > 0) w.main_force_n /= w.n_samples, w.thrust_force_n /= w.n_samples;
+    if (w.n_samples > 0) w.main_force_N /= w.n_samples, w.thrust_force_N /= w.n_samples;
   return out;
 }
 
@@ -133,15 +133,15 @@ const ResultTable<CutForcesRow>& cut_forces_columns() {
       result_number<Row>(c::tool_travel_mm, units::kMm, "the tool's travel", [](const Row& r) { return r.s.travel_m; }),
       result_value<Row>(c::time_s, "s", "time since the cut began", [](const Row& r) { return r.s.time_s; }),
       result_value<Row>(c::cutting_force_N, "N", "cutting force over the cut's width (summary.json's width_mm)",
-                        [](const Row& r) { return r.s.main_force_n; }),
+                        [](const Row& r) { return r.s.main_force_N; }),
       result_value<Row>(c::thrust_force_N, "N", "thrust force over the cut's width",
-                        [](const Row& r) { return r.s.thrust_force_n; }),
+                        [](const Row& r) { return r.s.thrust_force_N; }),
       result_value<Row>(c::cutting_force_N_per_mm, "N/mm", "cutting force per mm of width",
-                        [](const Row& r) { return r.s.main_force_n / r.width_mm; }),
+                        [](const Row& r) { return r.s.main_force_N / r.width_mm; }),
       result_value<Row>(c::thrust_force_N_per_mm, "N/mm", "thrust force per mm of width",
-                        [](const Row& r) { return r.s.thrust_force_n / r.width_mm; }),
+                        [](const Row& r) { return r.s.thrust_force_N / r.width_mm; }),
       result_value<Row>(c::main_force_N, "N", "cutting_force_N's old name (deprecated, removed in 0.3.0)",
-                        [](const Row& r) { return r.s.main_force_n; })};
+                        [](const Row& r) { return r.s.main_force_N; })};
   return table;
 }
 
@@ -178,20 +178,20 @@ Json share(std::int64_t part, std::int64_t whole) {
 void add_force_results(ResultTable<R>& t) {
   t.push_back(result_value<R>(k::main_force_N, "N",
                               "mean cutting (main) force over the steady part, over the cut's width",
-                              [](const R& c) { return c.res.main_force_n; }));
+                              [](const R& c) { return c.res.main_force_N; }));
   t.push_back(result_value<R>(k::thrust_force_N, "N", "mean thrust force over the steady part",
-                              [](const R& c) { return c.res.thrust_force_n; }));
+                              [](const R& c) { return c.res.thrust_force_N; }));
   t.push_back(result_value<R>(k::main_force_std_N, "N",
                               "spread of the cutting force's samples (not an error of the mean: they are correlated)",
-                              [](const R& c) { return c.res.main_force_std_n; }));
+                              [](const R& c) { return c.res.main_force_std_N; }));
   t.push_back(result_value<R>(k::thrust_force_std_N, "N", "spread of the thrust force's samples",
-                              [](const R& c) { return c.res.thrust_force_std_n; }));
+                              [](const R& c) { return c.res.thrust_force_std_N; }));
   t.push_back(
       result_value<R>(k::main_force_sem_N, "N",
                       "standard error of the mean cutting force from its signal (null: the signal is too short)",
-                      [](const R& c) { return finite_or_null(c.res.main_force_sem_n); }));
+                      [](const R& c) { return finite_or_null(c.res.main_force_sem_N); }));
   t.push_back(result_value<R>(k::thrust_force_sem_N, "N", "standard error of the mean thrust force from its signal",
-                              [](const R& c) { return finite_or_null(c.res.thrust_force_sem_n); }));
+                              [](const R& c) { return finite_or_null(c.res.thrust_force_sem_N); }));
   t.push_back(result_value<R>(k::main_force_sem_method, "",
                               "how main_force_sem_N was found: `batch_means`, `autocorrelation` or `none`",
                               [](const R& c) { return c.res.main_force_sem_method; }));
@@ -276,8 +276,8 @@ void add_cut_results(ResultTable<R>& t) {
 
 /// What the options write: crushing grains, the energy books.
 void add_option_results(ResultTable<R>& t) {
-  const auto grains = [](const R& c) { return c.cut.window_grain_strength_pa > 0; };
-  const auto tied_grains = [](const R& c) { return c.cut.window_tied_grain_strength_pa > 0; };
+  const auto grains = [](const R& c) { return c.cut.window.grain_strength_Pa > 0; };
+  const auto tied_grains = [](const R& c) { return c.cut.window.tied_grain_strength_Pa > 0; };
   const auto booked = [](const R& c) { return c.res.energy_booked; };
   t.push_back(result_if(
       result_value<R>(k::grains_crushed, "", "loose disks the tool crushed (with active_window.grain_strength_MPa)",
@@ -295,11 +295,11 @@ void add_option_results(ResultTable<R>& t) {
                                         [](const R& c) { return c.res.window.chips.crushed_tied_mass_kg; }),
                         tied_grains));
   const std::pair<std::string_view, double CutEnergy::*> energies[] = {
-      {k::energy_tool_work_steady_J, &CutEnergy::tool_work_j},
-      {k::energy_dissipated_steady_J, &CutEnergy::dissipated_j},
-      {k::energy_left_kinetic_steady_J, &CutEnergy::left_kinetic_j},
-      {k::energy_left_strain_steady_J, &CutEnergy::left_strain_j},
-      {k::energy_stored_change_steady_J, &CutEnergy::stored_change_j}};
+      {k::energy_tool_work_steady_J, &CutEnergy::tool_work_J},
+      {k::energy_dissipated_steady_J, &CutEnergy::dissipated_J},
+      {k::energy_left_kinetic_steady_J, &CutEnergy::left_kinetic_J},
+      {k::energy_left_strain_steady_J, &CutEnergy::left_strain_J},
+      {k::energy_stored_change_steady_J, &CutEnergy::stored_change_J}};
   const std::string_view energy_docs[] = {
       "the tool's work over the steady part (per the cut's width, like the forces')",
       "of it, dissipated among the integrated disks (friction, broken joints, absorbing layers)",
@@ -362,8 +362,8 @@ void add_edge_results(ResultTable<R>& t) {
 /// which the edge met intact glass, the layer's force, the disks it removed, and the layer's energy (the tool's work
 /// on it less what its reaction did on the disks: dissipated below the disks' scale, part of energy_dissipated).
 void add_edge_zone_results(ResultTable<R>& t) {
-  const auto zone = [](const R& c) { return c.cut.edge_zone; };
-  const auto zone_booked = [](const R& c) { return c.cut.edge_zone && c.res.energy_booked; };
+  const auto zone = [](const R& c) { return c.cut.edge_zone.enabled; };
+  const auto zone_booked = [](const R& c) { return c.cut.edge_zone.enabled && c.res.energy_booked; };
   t.push_back(result_if(result_value<R>(k::edge_zone_samples_steady, "", "steady samples with the edge zone",
                                         [](const R& c) { return c.res.edge_zone.samples; }),
                         zone));
@@ -379,11 +379,11 @@ void add_edge_zone_results(ResultTable<R>& t) {
       zone));
   t.push_back(result_if(result_number<R>(k::edge_zone_cutting_force_N_per_mm, units::kNPerMm,
                                          "the ductile layer's cutting force per width",
-                                         [](const R& c) { return c.cut.edge_cutting_force_n_per_m; }),
+                                         [](const R& c) { return c.cut.edge_zone.cutting_force_N_per_m; }),
                         zone));
   t.push_back(result_if(
       result_number<R>(k::edge_zone_thrust_force_N_per_mm, units::kNPerMm, "the ductile layer's thrust force per width",
-                       [](const R& c) { return c.cut.edge_thrust_force_n_per_m; }),
+                       [](const R& c) { return c.cut.edge_zone.thrust_force_N_per_m; }),
       zone));
   t.push_back(result_if(
       result_value<R>(k::edge_zone_removed_tied_disks, "", "disks the edge zone removed while tied to the workpiece",
@@ -400,16 +400,16 @@ void add_edge_zone_results(ResultTable<R>& t) {
                         zone));
   t.push_back(result_if(
       result_value<R>(k::energy_edge_zone_tool_work_steady_J, "J", "the tool's work on the layer over the steady part",
-                      [](const R& c) { return c.res.edge_zone.tool_work_j; }),
+                      [](const R& c) { return c.res.edge_zone.tool_work_J; }),
       zone_booked));
   t.push_back(result_if(
       result_value<R>(k::energy_edge_zone_reaction_work_steady_J, "J", "the layer's reaction's work on the disks",
-                      [](const R& c) { return c.res.edge_zone.reaction_work_j; }),
+                      [](const R& c) { return c.res.edge_zone.reaction_work_J; }),
       zone_booked));
   t.push_back(result_if(
       result_value<R>(k::energy_edge_layer_steady_J, "J",
                       "the layer's own energy: the tool's work less the reaction's (dissipated in it)",
-                      [](const R& c) { return c.res.edge_zone.tool_work_j - c.res.edge_zone.reaction_work_j; }),
+                      [](const R& c) { return c.res.edge_zone.tool_work_J - c.res.edge_zone.reaction_work_J; }),
       zone_booked));
 }
 
@@ -438,9 +438,9 @@ const ResultTable<TravelWindow>& travel_window_results() {
       result_value<T>(w::to_travel_mm, "mm", "where it ends",
                       [](const T& t) { return std::round(units::m_to_mm(t.to_m) * 1e9) / 1e9; }),
       result_value<T>(w::main_force_N, "N", "mean cutting force over the window",
-                      [](const T& t) { return t.main_force_n; }),
+                      [](const T& t) { return t.main_force_N; }),
       result_value<T>(w::thrust_force_N, "N", "mean thrust force over the window",
-                      [](const T& t) { return t.thrust_force_n; }),
+                      [](const T& t) { return t.thrust_force_N; }),
       result_value<T>(w::samples, "", "samples in the window", [](const T& t) { return t.n_samples; })};
   return table;
 }
@@ -455,7 +455,7 @@ const ResultTable<CutReport>& active_window_results() {
       result_value<R>(a::mean_window_particles, "", "the disks a window held on average (particle-steps / steps)",
                       [](const R& c) {
                         return c.res.particle_steps /
-                               (static_cast<double>(c.res.samples.size() - 1) * c.cut.sample_every_steps);
+                               (static_cast<double>(c.res.samples.size() - 1) * c.cut.cut.sample_every_steps);
                       }),
       result_value<R>(a::chip_particles_removed, "", "chip disks removed from the integration",
                       [](const R& c) { return c.res.window.chips.particles; }),

@@ -31,13 +31,17 @@ struct Cut7In {
   }
 };
 
-/// The cut's parameters by the keys of the scene sections that hold them.
+/// The cut's parameters by the keys of the scene sections that hold them: each section's table, read through its
+/// member of CutParams (the records' keys and order as when CutParams was one flat struct).
 const std::array<serial::SectionFields<CutParams>, 5>& cut_sections() {
-  static const std::array<serial::SectionFields<CutParams>, 5> sections{{{"cut", cut_fields()},
-                                                                         {"tool", tool_fields()},
-                                                                         {"grooves", groove_fields()},
-                                                                         {"active_window", active_window_fields()},
-                                                                         {"edge_zone", edge_zone_fields()}}};
+  using P = CutParams;
+  static const FieldTable<P> cut = embedded_fields(cut_fields(), &P::cut),
+                             tool = embedded_fields(tool_fields(), &P::tool),
+                             grooves = embedded_fields(groove_fields(), &P::grooves),
+                             window = embedded_fields(active_window_fields(), &P::window),
+                             zone = embedded_fields(edge_zone_fields(), &P::edge_zone);
+  static const std::array<serial::SectionFields<P>, 5> sections{
+      {{"cut", cut}, {"tool", tool}, {"grooves", grooves}, {"active_window", window}, {"edge_zone", zone}}};
   return sections;
 }
 
@@ -50,17 +54,17 @@ void CutRun::state_fields(Self& run, Io& io) {
   auto& r = run.res_;
   if constexpr (std::is_same_v<Io, Cut7In>) {
     auto& p = run.params_;
-    io(p.depth_of_cut_m, p.speed_m_per_s, p.length_m, p.rake_deg, p.clearance_deg, p.edge_radius_m, p.groove_depth_m,
-       p.groove_pitch_m, p.groove_width_m, p.groove_bottom_width_m, p.entry_fraction, p.window_m,
-       p.tool_friction_coefficient, p.rake_face_height_m);
+    io(p.cut.depth_of_cut_m, p.cut.speed_m_per_s, p.cut.length_m, p.tool.rake_deg, p.tool.clearance_deg,
+       p.tool.edge_radius_m, p.grooves.depth_m, p.grooves.pitch_m, p.grooves.width_m, p.grooves.bottom_width_m,
+       p.cut.entry_fraction, p.cut.window_m, p.tool.friction_coefficient, p.tool.rake_face_height_m);
     std::string groove_shape;  // by name, as before the enum
-    io(p.edge_segments, p.sample_every_steps, groove_shape, r.samples);
-    p.groove_shape = groove_shape_names().parse(groove_shape, "cut checkpoint");
+    io(p.tool.edge_segments, p.cut.sample_every_steps, groove_shape, r.samples);
+    p.grooves.shape = groove_shape_names().parse(groove_shape, "cut checkpoint");
     io(r.y_top_m, r.y_cut_m, r.width_m, r.time_step_s, r.wall_time_s, run.t0_, r.workpiece_box_m);
     io(r.n_particles, r.n_removed_by_grooves, r.steps, run.first_tool_wall_, run.n_tool_walls_, run.finished_);
-    io(p.active_window, p.window_ahead_depths, p.window_behind_depths, p.window_below_depths, p.window_above_depths,
-       p.window_shift_depths, r.particle_steps, p.window_absorbing_depths, p.window_absorbing_attenuation);
-    io(p.held_absorbing_depths);
+    io(p.window.enabled, p.window.ahead_depths, p.window.behind_depths, p.window.below_depths, p.window.above_depths,
+       p.window.shift_depths, r.particle_steps, p.window.absorbing_depths, p.window.absorbing_attenuation);
+    io(p.cut.held_absorbing_depths);
   } else {
     io(r.samples, r.y_top_m, r.y_cut_m, r.width_m, r.time_step_s, r.wall_time_s, run.t0_, r.workpiece_box_m);
     io(r.n_particles, r.n_removed_by_grooves, r.steps, run.first_tool_wall_, run.n_tool_walls_, run.finished_,
@@ -83,7 +87,7 @@ std::string CutRun::serialize() const {
 template <class Self, class Io>
 void CutRun::zone_record_fields(Self& run, Io& io) {
   auto& z = run.res_.edge_zone;
-  io(z.samples, z.intact_samples, z.tool_work_j, z.reaction_work_j);
+  io(z.samples, z.intact_samples, z.tool_work_J, z.reaction_work_J);
 }
 
 template <class Self, class Io>
@@ -95,7 +99,7 @@ template <class Self, class Io>
 void CutRun::book_fields(Self& run, Io& io) {
   io(run.books_kept_, run.steady_booked_);
   for (auto* b : {&run.books_, &run.books_steady_start_})
-    io(b->tool_work_j, b->left_kinetic_j, b->left_strain_j, b->kinetic_j, b->strain_j);
+    io(b->tool_work_J, b->left_kinetic_J, b->left_strain_J, b->kinetic_J, b->strain_J);
 }
 
 CutRun CutRun::deserialize(std::string_view bytes) {
@@ -125,10 +129,10 @@ CutRun CutRun::deserialize(std::string_view bytes) {
   io.expect_end("cut checkpoint");
   validate_cut_params(run.params_);
   run.sim_ = Simulation::deserialize(state);
-  if (run.params_.active_window != !window.empty()) throw ModelError("dem", "corrupt cut checkpoint (the window)");
-  if (run.params_.active_window) {
+  if (run.params_.window.enabled != !window.empty()) throw ModelError("dem", "corrupt cut checkpoint (the window)");
+  if (run.params_.window.enabled) {
     run.window_ = CutWindow::deserialize(window);
-    run.window_->set_remove_loose_fragments(run.params_.window_remove_loose_fragments);  // a parameter, stored by key
+    run.window_->set_remove_loose_fragments(run.params_.window.remove_loose_fragments);  // a parameter, stored by key
   }
   if (run.finished_) run.finish();
   return run;

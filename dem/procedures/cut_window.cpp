@@ -257,12 +257,12 @@ Simulation CutWindow::build(const Simulation* current, double x_edge_m) {
   for (std::size_t k = 0; k < springs_.pairs.size(); ++k) {
     const auto li = local_of_[static_cast<std::size_t>(springs_.pairs[k].i)];
     const auto lj = local_of_[static_cast<std::size_t>(springs_.pairs[k].j)];
-    if (li >= 0 && lj >= 0) s.pairs.push_back({li, lj}), s.pair_shear_n.push_back(springs_.pair_shear_n[k]);
+    if (li >= 0 && lj >= 0) s.pairs.push_back({li, lj}), s.pair_shear_N.push_back(springs_.pair_shear_N[k]);
   }
   for (std::size_t k = 0; k < springs_.wall_contacts.size(); ++k) {
     const auto lu = local_of_[static_cast<std::size_t>(springs_.wall_contacts[k][1])];
     if (lu >= 0)
-      s.wall_contacts.push_back({springs_.wall_contacts[k][0], lu}), s.wall_shear_n.push_back(springs_.wall_shear_n[k]);
+      s.wall_contacts.push_back({springs_.wall_contacts[k][0], lu}), s.wall_shear_N.push_back(springs_.wall_shear_N[k]);
   }
   sim.set_contact_springs(std::move(s));
   sim.set_time_step(full_.time_step());
@@ -345,7 +345,7 @@ std::string CutWindow::serialize() const {
   std::string out(kWindowMagic);
   serial::Out io{out};
   io(full_.serialize(), box_, y_top_m_, y_cut_m_, x_built_m_, max_displacement_m_, x0_, removed_, global_of_,
-     bond_global_of_, springs_.pairs, springs_.pair_shear_n, springs_.wall_contacts, springs_.wall_shear_n, rebuilds_,
+     bond_global_of_, springs_.pairs, springs_.pair_shear_N, springs_.wall_contacts, springs_.wall_shear_N, rebuilds_,
      largest_window_, cracks_synced_);
   return out;
 }
@@ -355,7 +355,7 @@ CutWindow CutWindow::deserialize(std::string_view bytes) {
   CutWindow w;
   std::string full;
   io(full, w.box_, w.y_top_m_, w.y_cut_m_, w.x_built_m_, w.max_displacement_m_, w.x0_, w.removed_, w.global_of_,
-     w.bond_global_of_, w.springs_.pairs, w.springs_.pair_shear_n, w.springs_.wall_contacts, w.springs_.wall_shear_n,
+     w.bond_global_of_, w.springs_.pairs, w.springs_.pair_shear_N, w.springs_.wall_contacts, w.springs_.wall_shear_N,
      w.rebuilds_, w.largest_window_, w.cracks_synced_);
   io.expect_end("window state");
   w.full_ = Simulation::deserialize(full);

@@ -51,22 +51,22 @@ void check_cut_fits_workpiece(const CutParams& p, const Bounds& b) {
             std::string(what) + " above the held bottom row (workpiece height " +
                 format_value(units::m_to_mm(b.y_max - b.y_min)) + " mm)");
   };
-  above_held_rows("cut.depth_of_cut_mm", p.depth_of_cut_m, "a depth of cut");
-  if (p.groove_shape != GrooveShape::none) above_held_rows("grooves.depth_mm", p.groove_depth_m, "a groove depth");
-  require(p.depth_of_cut_m >= b.r_min, "cut.depth_of_cut_mm", units::m_to_mm(p.depth_of_cut_m),
+  above_held_rows("cut.depth_of_cut_mm", p.cut.depth_of_cut_m, "a depth of cut");
+  if (p.grooves.shape != GrooveShape::none) above_held_rows("grooves.depth_mm", p.grooves.depth_m, "a groove depth");
+  require(p.cut.depth_of_cut_m >= b.r_min, "cut.depth_of_cut_mm", units::m_to_mm(p.cut.depth_of_cut_m),
           "a depth of cut of at least the smallest disk radius (" + format_value(units::m_to_um(b.r_min)) +
               " um): a shallower tool passes over the disks' tops; use smaller disks (specimen.radius_min_um, "
               "specimen.radius_max_um)");
   // The layer along the held rows (held_absorbing_depths) must stay below the cut line and off the tool's path.
   const double layer_m = window_box_m(p).held_absorbing_m;
   if (layer_m > 0)
-    require(layer_m < held_top_depth_m - p.depth_of_cut_m, "cut.held_absorbing_depths", p.held_absorbing_depths,
+    require(layer_m < held_top_depth_m - p.cut.depth_of_cut_m, "cut.held_absorbing_depths", p.cut.held_absorbing_depths,
             "a layer below the cut line: thinner than " +
-                format_value((held_top_depth_m - p.depth_of_cut_m) / p.depth_of_cut_m) + " depths of cut (" +
-                format_value(units::m_to_mm(held_top_depth_m - p.depth_of_cut_m)) +
+                format_value((held_top_depth_m - p.cut.depth_of_cut_m) / p.cut.depth_of_cut_m) + " depths of cut (" +
+                format_value(units::m_to_mm(held_top_depth_m - p.cut.depth_of_cut_m)) +
                 " mm, the distance from the held bottom rows to the cut line)");
   const double width = b.x_max - b.x_min, max_travel = width - 2.5 * b.r_max - layer_m;
-  require(p.length_m <= max_travel, "cut.length_mm", units::m_to_mm(p.length_m),
+  require(p.cut.length_m <= max_travel, "cut.length_mm", units::m_to_mm(p.cut.length_m),
           "a travel of at most " + format_value(units::m_to_mm(max_travel)) +
               " mm: further on, the tool would reach the held left disks" +
               (layer_m > 0 ? " (or their absorbing layer)" : "") + " of the " + format_value(units::m_to_mm(width)) +
@@ -81,11 +81,11 @@ HeldRows held_rows_of(const Bounds& b) {
 /// A groove pattern that removes no disk is not a grooved workpiece: either no groove lies on the surface
 /// (the pitch) or none is wide enough to hold a disk's centre (the width).
 void check_grooves_remove_disks(const CutParams& p, const Bounds& b, std::size_t n_removed) {
-  if (p.groove_shape == GrooveShape::none || n_removed > 0) return;
-  require(!groove_centres(p, b.x_min, b.x_max).empty(), "grooves.pitch_mm", units::m_to_mm(p.groove_pitch_m),
+  if (p.grooves.shape == GrooveShape::none || n_removed > 0) return;
+  require(!groove_centres(p, b.x_min, b.x_max).empty(), "grooves.pitch_mm", units::m_to_mm(p.grooves.pitch_m),
           "a pitch that puts at least one groove on the " + format_value(units::m_to_mm(b.x_max - b.x_min)) +
               " mm long workpiece");
-  throw InputError("grooves.width_mm", format_value(units::m_to_mm(p.groove_width_m)),
+  throw InputError("grooves.width_mm", format_value(units::m_to_mm(p.grooves.width_m)),
                    "a groove wide enough to remove disks (no disk centre lies inside any groove; disk radii " +
                        format_value(units::m_to_um(b.r_min)) + "-" + format_value(units::m_to_um(b.r_max)) + " um)");
 }
@@ -94,16 +94,16 @@ void check_grooves_remove_disks(const CutParams& p, const Bounds& b, std::size_t
 /// advance at most kMaxToolAdvancePerRadius of the smallest radius per step.
 void check_tool_speed(const CutParams& p, double time_step_s, double time_step_safety, double r_min_m) {
   const double fastest = kMaxToolAdvancePerRadius * r_min_m / time_step_s;
-  const double slowest = p.length_m / (kMaxRunSteps * time_step_s);
+  const double slowest = p.cut.length_m / (kMaxRunSteps * time_step_s);
   const std::string step = format_value(time_step_s * 1e9) + " ns";
-  require(p.speed_m_per_s <= fastest, "cut.speed_m_per_s", p.speed_m_per_s,
+  require(p.cut.speed_m_per_s <= fastest, "cut.speed_m_per_s", p.cut.speed_m_per_s,
           "a speed of at most " + format_value(fastest) + " m/s: the tool may advance at most " +
               format_value(100 * kMaxToolAdvancePerRadius) + " % of the smallest disk radius (" +
               format_value(units::m_to_um(r_min_m)) + " um) per time step (" + step + ")");
-  refuse_small_time_step_safety(p.length_m / (p.speed_m_per_s * time_step_s), time_step_s, time_step_safety);
-  require(p.speed_m_per_s >= slowest, "cut.speed_m_per_s", p.speed_m_per_s,
+  refuse_small_time_step_safety(p.cut.length_m / (p.cut.speed_m_per_s * time_step_s), time_step_s, time_step_safety);
+  require(p.cut.speed_m_per_s >= slowest, "cut.speed_m_per_s", p.cut.speed_m_per_s,
           "a speed of at least " + format_value(slowest) + " m/s: slower, the travel of " +
-              format_value(units::m_to_mm(p.length_m)) + " mm takes more than " + format_value(kMaxRunSteps) +
+              format_value(units::m_to_mm(p.cut.length_m)) + " mm takes more than " + format_value(kMaxRunSteps) +
               " time steps of " + step + " (the seed's 4.23 mm/s is scaled up in every DEM cut; docs/dem.md)");
 }
 }  // namespace
@@ -174,11 +174,11 @@ void add_tied_profile(const WorkpieceNow& now, std::array<double, 2> tip_m, doub
 }
 
 CutWindowBox window_box_m(const CutParams& p) {
-  const double d = p.depth_of_cut_m;
-  CutWindowBox box{p.window_ahead_depths * d, p.window_behind_depths * d, p.window_below_depths * d,
-                   p.window_above_depths * d, p.window_shift_depths * d};
-  if (p.window_absorbing_depths > 0) box.absorbing_m = p.window_absorbing_depths * d;
-  box.held_absorbing_m = p.held_absorbing_depths * d;
+  const double d = p.cut.depth_of_cut_m;
+  CutWindowBox box{p.window.ahead_depths * d, p.window.behind_depths * d, p.window.below_depths * d,
+                   p.window.above_depths * d, p.window.shift_depths * d};
+  if (p.window.absorbing_depths > 0) box.absorbing_m = p.window.absorbing_depths * d;
+  box.held_absorbing_m = p.cut.held_absorbing_depths * d;
   return box;
 }
 
@@ -192,7 +192,7 @@ CutRun::CutRun(const Simulation& specimen, const CutParams& params)
   res_.y_top_m = b0.y_max;
   res_.workpiece_box_m = {b0.x_min, b0.x_max, b0.y_min, b0.y_max};
   res_.groove_damage_joints = apply_groove_damage(sim_, params_, res_.workpiece_box_m);
-  res_.y_cut_m = b0.y_max - params_.depth_of_cut_m;
+  res_.y_cut_m = b0.y_max - params_.cut.depth_of_cut_m;
   res_.width_m = sim_.options().thickness_m;
   // The tool starts with the part that meets the workpiece first (its left-most point between the cut
   // line and the top surface: the rake face at the surface for a negative rake) half a largest radius
@@ -204,18 +204,18 @@ CutRun::CutRun(const Simulation& specimen, const CutParams& params)
   for (std::size_t k = 0; k < outline.size(); ++k) {
     const auto& a = outline[k];
     const auto& e = outline[(k + 1) % outline.size()];
-    Wall face{a[0], a[1], e[0], e[1], -params_.speed_m_per_s, 0};
-    face.friction_coefficient = params_.tool_friction_coefficient;
+    Wall face{a[0], a[1], e[0], e[1], -params_.cut.speed_m_per_s, 0};
+    face.friction_coefficient = params_.tool.friction_coefficient;
     sim_.add_wall(face);
   }
   n_tool_walls_ = static_cast<std::int32_t>(outline.size());
   sim_.invalidate_neighbours();
   sim_.initialise();
   check_tool_speed(params_, sim_.time_step(), sim_.options().time_step_safety, b0.r_min);
-  if (params_.edge_zone) {
-    if (params_.edge_zone_radius_m == 0) params_.edge_zone_radius_m = 2 * b0.r_max;  // stored with the parameters
-    require(params_.edge_cutting_force_n_per_m >= 0, "edge_zone.cutting_force_N_per_mm",
-            units::n_per_m_to_n_per_mm(params_.edge_cutting_force_n_per_m),
+  if (params_.edge_zone.enabled) {
+    if (params_.edge_zone.radius_m == 0) params_.edge_zone.radius_m = 2 * b0.r_max;  // stored with the parameters
+    require(params_.edge_zone.cutting_force_N_per_m >= 0, "edge_zone.cutting_force_N_per_mm",
+            units::n_per_m_to_n_per_mm(params_.edge_zone.cutting_force_N_per_m),
             "the layer's force per unit width, given or computed from the material by the cut kind, >= 0");
   }
   sim_.cracks().clear();  // only the cut's cracks count
@@ -226,12 +226,12 @@ CutRun::CutRun(const Simulation& specimen, const CutParams& params)
   // A sponge layer's peak rate for its thickness L: the amplitude decays at gamma / 2 in time, gamma / (2 c)
   // in space; through the quadratic ramp and back, exp(-gamma_max L / (3 c)) = exp(-attenuation).
   const auto peak_rate_per_s = [&](double thickness_m) {
-    return 3 * params_.window_absorbing_attenuation * p_wave_speed_m_per_s(sim_.material()) / thickness_m;
+    return 3 * params_.window.absorbing_attenuation * p_wave_speed_m_per_s(sim_.material()) / thickness_m;
   };
   const HeldRows held = held_rows_of(b0);
   CutWindowBox box = window_box_m(params_);
   const double held_layer_m = box.held_absorbing_m;
-  if (params_.active_window) {
+  if (params_.window.enabled) {
     // The workpiece becomes the window's reservoir; its time step (of the whole workpiece) is every window's.
     if (box.absorbing_m > 0) box.absorbing_rate_per_s = peak_rate_per_s(box.absorbing_m);
     if (held_layer_m > 0) {
@@ -240,7 +240,7 @@ CutRun::CutRun(const Simulation& specimen, const CutParams& params)
     }
     const double x_edge = edge()[0];
     window_.emplace(std::move(sim_), box, res_.y_top_m, res_.y_cut_m);
-    window_->set_remove_loose_fragments(params_.window_remove_loose_fragments);
+    window_->set_remove_loose_fragments(params_.window.remove_loose_fragments);
     sim_ = window_->build(nullptr, x_edge);
   } else if (held_layer_m > 0) {
     // Every disk active: the layer along the held rows is set once (no disk joins or leaves the cut).
@@ -274,46 +274,46 @@ namespace {
 /// The books between two moments (CutEnergy's balance).
 CutEnergy cut_energy_between(const CutEnergyBooks& from, const CutEnergyBooks& to) {
   CutEnergy e;
-  e.tool_work_j = to.tool_work_j - from.tool_work_j;
-  e.left_kinetic_j = to.left_kinetic_j - from.left_kinetic_j;
-  e.left_strain_j = to.left_strain_j - from.left_strain_j;
-  e.stored_change_j = (to.kinetic_j + to.strain_j) - (from.kinetic_j + from.strain_j);
-  e.dissipated_j = e.tool_work_j - e.left_kinetic_j - e.left_strain_j - e.stored_change_j;
+  e.tool_work_J = to.tool_work_J - from.tool_work_J;
+  e.left_kinetic_J = to.left_kinetic_J - from.left_kinetic_J;
+  e.left_strain_J = to.left_strain_J - from.left_strain_J;
+  e.stored_change_J = (to.kinetic_J + to.strain_J) - (from.kinetic_J + from.strain_J);
+  e.dissipated_J = e.tool_work_J - e.left_kinetic_J - e.left_strain_J - e.stored_change_J;
   return e;
 }
 }  // namespace
 
 CutEnergyBooks CutRun::books_now() const {
   CutEnergyBooks b = books_;
-  b.kinetic_j = sim_.kinetic_energy();
-  b.strain_j = sim_.stored_elastic_energy();
+  b.kinetic_J = sim_.kinetic_energy();
+  b.strain_J = sim_.stored_elastic_energy();
   return b;
 }
 
 void CutRun::crush_grains() {
   // The disks a tool face presses with more than their splitting load F = pi sigma r t, sigma the loose grains'
-  // (CutParams::window_grain_strength_pa) or the tied disks' (window_tied_grain_strength_pa); 0 is never.
-  const double loose_pa = params_.window_grain_strength_pa, tied_pa = params_.window_tied_grain_strength_pa;
-  const double weakest_pa = loose_pa > 0 && tied_pa > 0 ? std::min(loose_pa, tied_pa) : std::max(loose_pa, tied_pa);
+  // (CutParams::ActiveWindow::grain_strength_Pa) or the tied disks' (tied_grain_strength_Pa); 0 is never.
+  const double loose_Pa = params_.window.grain_strength_Pa, tied_Pa = params_.window.tied_grain_strength_Pa;
+  const double weakest_Pa = loose_Pa > 0 && tied_Pa > 0 ? std::min(loose_Pa, tied_Pa) : std::max(loose_Pa, tied_Pa);
   const auto& p = sim_.particles();
   const double t = sim_.options().thickness_m;
-  const auto splitting_load_n = [&](std::size_t u, double strength_pa) {
-    return std::numbers::pi * strength_pa * p.radius[u] * t;
+  const auto splitting_load_N = [&](std::size_t u, double strength_Pa) {
+    return std::numbers::pi * strength_Pa * p.radius[u] * t;
   };
   std::vector<std::pair<std::size_t, double>> pressed;  // disk, its largest tool load
   for (const auto& c : sim_.wall_contact_loads()) {
     const auto u = static_cast<std::size_t>(c.disk);
     if (c.wall >= first_tool_wall_ && c.wall < first_tool_wall_ + n_tool_walls_ && p.group[u] == 0 &&
-        c.normal_force_n > splitting_load_n(u, weakest_pa))
-      pressed.emplace_back(u, c.normal_force_n);
+        c.normal_force_N > splitting_load_N(u, weakest_Pa))
+      pressed.emplace_back(u, c.normal_force_N);
   }
   if (pressed.empty()) return;
   // Each against its own strength: a loose fragment's disk as a grain, a disk tied to the workpiece as one.
   const auto tied = sim_.tied_to_held();
   std::vector<std::size_t> grains, tied_disks;
-  for (const auto& [u, load_n] : pressed) {
-    const double strength_pa = tied[u] ? tied_pa : loose_pa;
-    if (strength_pa > 0 && load_n > splitting_load_n(u, strength_pa)) (tied[u] ? tied_disks : grains).push_back(u);
+  for (const auto& [u, load_N] : pressed) {
+    const double strength_Pa = tied[u] ? tied_Pa : loose_Pa;
+    if (strength_Pa > 0 && load_N > splitting_load_N(u, strength_Pa)) (tied[u] ? tied_disks : grains).push_back(u);
   }
   if (grains.empty() && tied_disks.empty()) return;
   for (auto* list : {&grains, &tied_disks}) {
@@ -329,8 +329,8 @@ void CutRun::take_window(Simulation next) {
   const CutEnergyBooks before = books_now();
   sim_ = std::move(next);
   const CutEnergyBooks after = books_now();
-  books_.left_kinetic_j += before.kinetic_j - after.kinetic_j;
-  books_.left_strain_j += before.strain_j - after.strain_j;
+  books_.left_kinetic_J += before.kinetic_J - after.kinetic_J;
+  books_.left_strain_J += before.strain_J - after.strain_J;
 }
 
 bool CutRun::advance() {
@@ -341,16 +341,16 @@ bool CutRun::advance() {
     if (window_->due(x_edge)) take_window(window_->build(&sim_, x_edge));
   }
   // The edge zone: the layer's force on the tool while the edge meets intact glass, its reaction on that glass.
-  const bool zone_on = params_.edge_zone && edge_zone_begin_sample();
+  const bool zone_on = params_.edge_zone.enabled && edge_zone_begin_sample();
   const double t = sim_.options().thickness_m;
-  const double zone_fx = zone_on ? params_.edge_cutting_force_n_per_m * t : 0.0;
-  const double zone_fy = zone_on ? params_.edge_thrust_force_n_per_m * t : 0.0;
+  const double zone_fx = zone_on ? params_.edge_zone.cutting_force_N_per_m * t : 0.0;
+  const double zone_fy = zone_on ? params_.edge_zone.thrust_force_N_per_m * t : 0.0;
   std::vector<std::array<double, 2>> loaded_at;
   for (const auto& l : sim_.disk_loads()) loaded_at.push_back({sim_.particles().x[l.disk], sim_.particles().y[l.disk]});
-  res_.particle_steps += static_cast<double>(sim_.particles().size()) * params_.sample_every_steps;
+  res_.particle_steps += static_cast<double>(sim_.particles().size()) * params_.cut.sample_every_steps;
   double fx = 0, fy = 0;
   const auto& walls = sim_.walls();
-  for (int s = 0; s < params_.sample_every_steps; ++s) {
+  for (int s = 0; s < params_.cut.sample_every_steps; ++s) {
     sim_.step();
     for (std::int32_t w = 0; w < n_tool_walls_; ++w) {
       fx += walls[static_cast<std::size_t>(first_tool_wall_ + w)].fx;
@@ -358,12 +358,12 @@ bool CutRun::advance() {
     }
     if (zone_on) fx += zone_fx, fy += zone_fy;
   }
-  const double reaction_work_j = zone_on ? edge_zone_reaction_work_j(loaded_at) : 0.0;
-  if (window_ && (params_.window_grain_strength_pa > 0 || params_.window_tied_grain_strength_pa > 0)) crush_grains();
-  const auto f = tool_force_components(fx / params_.sample_every_steps, fy / params_.sample_every_steps);
-  const double elapsed = sim_.time() - t0_, travel = params_.speed_m_per_s * elapsed;
+  const double reaction_work_J = zone_on ? edge_zone_reaction_work_J(loaded_at) : 0.0;
+  if (window_ && (params_.window.grain_strength_Pa > 0 || params_.window.tied_grain_strength_Pa > 0)) crush_grains();
+  const auto f = tool_force_components(fx / params_.cut.sample_every_steps, fy / params_.cut.sample_every_steps);
+  const double elapsed = sim_.time() - t0_, travel = params_.cut.speed_m_per_s * elapsed;
   res_.samples.push_back({travel, elapsed, f[0], f[1]});
-  const bool steady = travel >= params_.entry_fraction * params_.length_m;  // past the entry
+  const bool steady = travel >= params_.cut.entry_fraction * params_.cut.length_m;  // past the entry
   // What the edge meets: once per kEdgeObserveTravelM of travel over the steady part (it changes nothing).
   if (edge_kept_ && steady) {
     const auto step = static_cast<std::int64_t>(std::floor(travel / kEdgeObserveTravelM));
@@ -373,14 +373,14 @@ bool CutRun::advance() {
     }
   }
   // The tool moves at -speed in x; the disks push it with fx each step: it does fx speed dt of work on them.
-  books_.tool_work_j += fx * params_.speed_m_per_s * sim_.time_step();
-  if (params_.edge_zone && steady) {
+  books_.tool_work_J += fx * params_.cut.speed_m_per_s * sim_.time_step();
+  if (params_.edge_zone.enabled && steady) {
     CutEdgeZoneRecord& z = res_.edge_zone;
     ++z.samples;
     z.intact_samples += zone_on;
     if (steady_booked_) {  // the books' steady part starts after its first sample
-      z.tool_work_j += zone_fx * params_.sample_every_steps * params_.speed_m_per_s * sim_.time_step();
-      z.reaction_work_j += reaction_work_j;
+      z.tool_work_J += zone_fx * params_.cut.sample_every_steps * params_.cut.speed_m_per_s * sim_.time_step();
+      z.reaction_work_J += reaction_work_J;
     }
   }
   if (books_kept_ && !steady_booked_ && steady) {
@@ -389,7 +389,7 @@ bool CutRun::advance() {
   }
   res_.steps = sim_.step_count();
   res_.wall_time_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (travel >= params_.length_m) finish();
+  if (travel >= params_.cut.length_m) finish();
   return !finished_;
 }
 
@@ -421,9 +421,9 @@ void CutRun::observe_edge() {
 
 void CutRun::finish() {
   finished_ = true;
-  const double steady_from_m = params_.entry_fraction * params_.length_m;
+  const double steady_from_m = params_.cut.entry_fraction * params_.cut.length_m;
   steady_statistics(res_, steady_from_m);
-  res_.travel_windows = travel_window_means(res_.samples, params_.length_m, params_.window_m);
+  res_.travel_windows = travel_window_means(res_.samples, params_.cut.length_m, params_.cut.window_m);
   const double x_edge = edge()[0];
   // It was (final travel - steady start) further right when the steady part began.
   res_.steady_machined_x_m = {x_edge, x_edge + res_.samples.back().travel_m - steady_from_m};

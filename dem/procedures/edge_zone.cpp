@@ -83,8 +83,8 @@ EdgeZoneSets edge_zone_sets(const Simulation& sim, std::int32_t first_tool_wall,
 bool CutRun::edge_zone_begin_sample() {
   const auto tip = edge();
   const auto sets = [&] {
-    return edge_zone_sets(sim_, first_tool_wall_, n_tool_walls_, tip, res_.y_cut_m, params_.edge_zone_radius_m,
-                          kEdgeZoneBulkReaches * params_.edge_zone_radius_m);
+    return edge_zone_sets(sim_, first_tool_wall_, n_tool_walls_, tip, res_.y_cut_m, params_.edge_zone.radius_m,
+                          kEdgeZoneBulkReaches * params_.edge_zone.radius_m);
   };
   EdgeZoneSets z = sets();
   if (!z.reached_tied.empty() || !z.reached_loose.empty()) {
@@ -97,19 +97,20 @@ bool CutRun::edge_zone_begin_sample() {
   if (!z.footprint.empty()) {
     const double t = sim_.options().thickness_m, n = static_cast<double>(z.footprint.size());
     for (const auto u : z.footprint)
-      loads.push_back({u, -params_.edge_cutting_force_n_per_m * t / n, -params_.edge_thrust_force_n_per_m * t / n});
+      loads.push_back(
+          {u, -params_.edge_zone.cutting_force_N_per_m * t / n, -params_.edge_zone.thrust_force_N_per_m * t / n});
   }
   sim_.set_disk_loads(std::move(loads));
   return !z.footprint.empty();
 }
 
-double CutRun::edge_zone_reaction_work_j(const std::vector<std::array<double, 2>>& start_m) const {
+double CutRun::edge_zone_reaction_work_J(const std::vector<std::array<double, 2>>& start_m) const {
   const Particles& p = sim_.particles();
   const auto& loads = sim_.disk_loads();
   if (start_m.size() != loads.size()) throw std::logic_error("edge zone: the loads changed within a sample");
   double work = 0;
   for (std::size_t k = 0; k < loads.size(); ++k)
-    work += loads[k].fx_n * (p.x[loads[k].disk] - start_m[k][0]) + loads[k].fy_n * (p.y[loads[k].disk] - start_m[k][1]);
+    work += loads[k].fx_N * (p.x[loads[k].disk] - start_m[k][0]) + loads[k].fy_N * (p.y[loads[k].disk] - start_m[k][1]);
   return work;
 }
 

@@ -61,7 +61,7 @@ std::vector<Flaw> seed_flaws(Simulation& sim, const Material& material, std::uin
       continue;
     for (std::size_t e = 0; e < stride; ++e) {  // a closed crack: compression and friction, no tension
       b.bonded[k * stride + e] = 0;
-      b.shear_force_n[k * stride + e] = 0;
+      b.shear_force_N[k * stride + e] = 0;
     }
   }
   return flaws;

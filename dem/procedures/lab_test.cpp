@@ -42,15 +42,15 @@ LoadingSpec read_loading_spec(ObjectReader& r, LabTest test) {
 }
 
 void secant_properties(LabTestResult& res, double fraction) {
-  const double target = fraction * res.peak_stress_pa;
-  res.youngs_modulus_pa = res.poissons_ratio = 0;
+  const double target = fraction * res.peak_stress_Pa;
+  res.youngs_modulus_Pa = res.poissons_ratio = 0;
   for (std::size_t k = 1; k < res.curve.size(); ++k) {
     const auto &a = res.curve[k - 1], &b = res.curve[k];
-    if (b.stress_pa < target) continue;
-    const double w = b.stress_pa > a.stress_pa ? (target - a.stress_pa) / (b.stress_pa - a.stress_pa) : 1.0;
+    if (b.stress_Pa < target) continue;
+    const double w = b.stress_Pa > a.stress_Pa ? (target - a.stress_Pa) / (b.stress_Pa - a.stress_Pa) : 1.0;
     const double strain = a.axial_strain + w * (b.axial_strain - a.axial_strain);
     const double lateral = a.lateral_strain + w * (b.lateral_strain - a.lateral_strain);
-    res.youngs_modulus_pa = strain > 0 ? target / strain : 0;
+    res.youngs_modulus_Pa = strain > 0 ? target / strain : 0;
     // Axial strain is positive in the loading sense: true axial strain is -strain in compression.
     const double true_axial = res.test == LabTest::compression ? -strain : strain;
     res.poissons_ratio = strain > 0 ? -lateral / true_axial : 0;
@@ -142,8 +142,8 @@ bool LabTestRun::advance() {
                             : 0.5 * (sim_.walls()[1].fy - sim_.walls()[0].fy) / (res_.width_m * t);
   const double strain = 2 * spec_.speed_m_per_s * elapsed / res_.height_m;
   res_.curve.push_back({elapsed, strain, side0_ > 0 ? side_distance() / side0_ - 1 : 0, stress, n_tension_, n_shear_});
-  if (stress > res_.peak_stress_pa) res_.peak_stress_pa = stress, res_.strain_at_peak = strain;
-  if (n_tension_ + n_shear_ > 0 && stress < spec_.stop_fraction * res_.peak_stress_pa) {
+  if (stress > res_.peak_stress_Pa) res_.peak_stress_Pa = stress, res_.strain_at_peak = strain;
+  if (n_tension_ + n_shear_ > 0 && stress < spec_.stop_fraction * res_.peak_stress_Pa) {
     res_.stop_reason = "stress fell below the stop fraction of the peak";
     finished_ = true;
   } else if (strain >= spec_.max_strain) {
@@ -167,7 +167,7 @@ void LabTestRun::state_fields(Self& run, Io& io) {
   std::string test = lab_test_names().name(spec.test);  // by name, as before the enum
   io(test, spec.speed_m_per_s, spec.stop_fraction, spec.max_strain, spec.sample_every_steps, spec.quasi_static_check,
      r.curve);
-  io(r.peak_stress_pa, r.strain_at_peak, r.width_m, r.height_m, r.speed_m_per_s, r.time_step_s, r.wall_time_s,
+  io(r.peak_stress_Pa, r.strain_at_peak, r.width_m, r.height_m, r.speed_m_per_s, r.time_step_s, r.wall_time_s,
      run.side0_, run.t0_);
   io(r.steps, r.n_particles, r.stop_reason, run.left_, run.right_, run.counted_, run.n_tension_, run.n_shear_,
      run.finished_);

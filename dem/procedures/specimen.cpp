@@ -38,10 +38,10 @@ const FieldTable<SpecimenSpec>& specimen_fields() {
       number_field("packing_fraction", kNone, Range::closed(0.5, 0.9),
                    "disk area fraction that sets the number of disks (random)", &S::packing_fraction),
       number_field("compaction_pressure_MPa", kMPa, Range::positive(),
-                   "isotropic pressure of the frictionless compaction", &S::compaction_pressure_pa),
+                   "isotropic pressure of the frictionless compaction", &S::compaction_pressure_Pa),
       number_field("compaction_modulus_GPa", kGPa, Range::positive(),
                    "E* of the compaction's frictionless reference contact (the same for every material)",
-                   &S::compaction_modulus_pa),
+                   &S::compaction_modulus_Pa),
       number_field("installation_gap_um", kUm, Range::non_negative(), "joints at pairs whose surface gap is below this",
                    &S::installation_gap_m),
       int_field("growth_steps", 100, 10000000, "steps of the radius growth and compaction", &S::growth_steps),
@@ -202,9 +202,9 @@ Json specimen_report_to_json(const SpecimenReport& r) {
               {"radius_scale", r.radius_scale},
               {"n_floaters_enlarged", r.n_floaters_enlarged},
               {"n_floaters_left", r.n_floaters_left},
-              {"residual_stress_xx_MPa", units::pa_to_mpa(r.residual_stress_xx_pa)},
-              {"residual_stress_yy_MPa", units::pa_to_mpa(r.residual_stress_yy_pa)},
-              {"residual_stress_xy_MPa", units::pa_to_mpa(r.residual_stress_xy_pa)},
+              {"residual_stress_xx_MPa", units::pa_to_mpa(r.residual_stress_xx_Pa)},
+              {"residual_stress_yy_MPa", units::pa_to_mpa(r.residual_stress_yy_Pa)},
+              {"residual_stress_xy_MPa", units::pa_to_mpa(r.residual_stress_xy_Pa)},
               {"genesis_steps", r.genesis_steps}};
 }
 
@@ -220,9 +220,9 @@ void finish_report(const Simulation& sim, const SpecimenSpec& spec, SpecimenRepo
   report.packing_fraction = disk_area / (spec.width_m * spec.height_m);
   report.coordination_number = sim.coordination_number();
   const auto s = sim.average_stress(spec.width_m * spec.height_m);
-  report.residual_stress_xx_pa = s[0];
-  report.residual_stress_yy_pa = s[1];
-  report.residual_stress_xy_pa = s[2];
+  report.residual_stress_xx_Pa = s[0];
+  report.residual_stress_yy_Pa = s[1];
+  report.residual_stress_xy_Pa = s[2];
 }
 
 /// Equal disks on a triangular lattice, unjointed.
@@ -296,7 +296,7 @@ CompactedPacking compact_random(const SpecimenSpec& spec, const GenesisProgress&
   // so that the packing does not depend on the material (the density only scales time: not a choice).
   Material reference;
   reference.name = "compaction reference";
-  reference.contact = LinearContactParams{spec.compaction_modulus_pa, kCompactionStiffnessRatio, 0.0};
+  reference.contact = LinearContactParams{spec.compaction_modulus_Pa, kCompactionStiffnessRatio, 0.0};
   reference.local_damping = 0.7;
   CompactedPacking out{Simulation(reference, {.thickness_m = spec.thickness_m}), {}};
   Simulation& sim = out.disks;
@@ -328,7 +328,7 @@ CompactedPacking compact_random(const SpecimenSpec& spec, const GenesisProgress&
     report_progress();
   }
   // 2. Servo the common radius scale to the compaction pressure (areal strain ~ 2 dscale / scale).
-  const double target = spec.compaction_pressure_pa, modulus = spec.compaction_modulus_pa;
+  const double target = spec.compaction_pressure_Pa, modulus = spec.compaction_modulus_Pa;
   for (int k = 0; k < kServoMax; ++k) {
     sim.run(kServoChunk);
     report_progress();
@@ -506,7 +506,7 @@ void save_specimen(const std::string& file_path, const Simulation& sim, const Sp
     factor.push_back(b.joint_geometry(k).strength_factor);
     for (std::size_t e = 0; e < stride; ++e) {
       bonded.push_back(b.bonded[k * stride + e]);
-      shear.push_back(b.shear_force_n[k * stride + e]);
+      shear.push_back(b.shear_force_N[k * stride + e]);
       if (b.keeps_damage) damage.push_back(b.damage[k * stride + e]);
     }
   }
@@ -543,9 +543,9 @@ Simulation load_specimen(const std::string& file_path, const Material& material,
     report.radius_scale = rep.at("radius_scale");
     report.n_floaters_enlarged = rep.at("n_floaters_enlarged");
     report.n_floaters_left = rep.at("n_floaters_left");
-    report.residual_stress_xx_pa = units::mpa_to_pa(rep.at("residual_stress_xx_MPa").get<double>());
-    report.residual_stress_yy_pa = units::mpa_to_pa(rep.at("residual_stress_yy_MPa").get<double>());
-    report.residual_stress_xy_pa = units::mpa_to_pa(rep.at("residual_stress_xy_MPa").get<double>());
+    report.residual_stress_xx_Pa = units::mpa_to_pa(rep.at("residual_stress_xx_MPa").get<double>());
+    report.residual_stress_yy_Pa = units::mpa_to_pa(rep.at("residual_stress_yy_MPa").get<double>());
+    report.residual_stress_xy_Pa = units::mpa_to_pa(rep.at("residual_stress_xy_MPa").get<double>());
     report.genesis_steps = rep.at("genesis_steps");
     Simulation sim(material, {.thickness_m = spec.thickness_m});
     const Json& p = j.at("particles");
@@ -579,7 +579,7 @@ Simulation load_specimen(const std::string& file_path, const Material& material,
       if (stored != stride) continue;
       for (std::size_t e = 0; e < stride; ++e) {
         sim.bonds().bonded[id * stride + e] = static_cast<std::uint8_t>(bonded.at(k * stride + e));
-        sim.bonds().shear_force_n[id * stride + e] = shear.at(k * stride + e);
+        sim.bonds().shear_force_N[id * stride + e] = shear.at(k * stride + e);
         if (sim.bonds().keeps_damage && !damage.empty())
           sim.bonds().damage[id * stride + e] = damage.at(k * stride + e);
       }

@@ -48,7 +48,7 @@ const FieldTable<ToughnessSpec>& toughness_fields() {
       number_field("youngs_modulus_GPa", units::kGPa, Range::positive(),
                    "E' of the 2D model for the check K_IC^2 / E' against G_c: the glass's calibrated in-plane E "
                    "(Yang et al. 2018, Table 2 for the shipped glasses)",
-                   &T::youngs_modulus_pa),
+                   &T::youngs_modulus_Pa),
       int_field("sample_every_steps", 1, 1000000, "steps per curve sample", &T::sample_every_steps),
       bool_field("quasi_static_check", "rerun at half the speed and report the change of the peak load",
                  &T::quasi_static_check)};
@@ -89,8 +89,8 @@ double senb_geometry_factor(double x) {
   return 3 * std::sqrt(x) * poly / (2 * (1 + 2 * x) * std::pow(1 - x, 1.5));
 }
 
-double senb_stress_intensity(double load_n, double span_m, double thickness_m, double depth_m, double notch_m) {
-  return load_n * span_m / (thickness_m * std::pow(depth_m, 1.5)) * senb_geometry_factor(notch_m / depth_m);
+double senb_stress_intensity(double load_N, double span_m, double thickness_m, double depth_m, double notch_m) {
+  return load_N * span_m / (thickness_m * std::pow(depth_m, 1.5)) * senb_geometry_factor(notch_m / depth_m);
 }
 
 // Long (~90 lines) for a reason: the beam's set-up in order (the notch, the rollers, the crack's neighbourhood),
@@ -197,7 +197,7 @@ bool ToughnessRun::advance() {
   // The load roller's work, step by step (trapezoidal in time; its speed is constant).
   // The sample's load is its mean over the sample's steps (the load on a rigid roller rings from step to step
   // in an undamped glass; the mean is the impulse over the time, the same the work integral sees).
-  double work = res_.external_work_j, load_sum = 0, support_sum = 0;
+  double work = res_.external_work_J, load_sum = 0, support_sum = 0;
   for (int s = 0; s < spec_.sample_every_steps; ++s) {
     sim_.step();
     const double load = roller_force(load_walls_);  // the disks push the load roller up
@@ -206,7 +206,7 @@ bool ToughnessRun::advance() {
     load_sum += load;
     support_sum -= roller_force(support_walls_);
   }
-  res_.external_work_j = work;
+  res_.external_work_J = work;
   for (std::size_t k = counted_ + static_cast<std::size_t>(n_cracks_); k < sim_.cracks().size(); ++k) {
     const CrackEvent& e = sim_.cracks()[k];
     if (std::abs(e.x_m - res_.notch_x_m) < crack_band_m_) res_.crack_tip_y_m = std::max(res_.crack_tip_y_m, e.y_m);
@@ -215,12 +215,12 @@ bool ToughnessRun::advance() {
   const double elapsed = sim_.time() - t0_, deflection = v * elapsed, load = load_sum / spec_.sample_every_steps;
   res_.curve.push_back({elapsed, deflection, load, support_sum / spec_.sample_every_steps, work,
                         sim_.stored_elastic_energy(), sim_.kinetic_energy(), n_cracks_, 0});
-  if (load > res_.raw_peak_load_n) res_.raw_peak_load_n = load;
+  if (load > res_.raw_peak_load_N) res_.raw_peak_load_N = load;
   if (res_.through_sample < 0 && res_.crack_tip_y_m >= through_y_m_)
     res_.through_sample = static_cast<int>(res_.curve.size()) - 1;
   // Broken through: the load below the stop fraction over a whole peak window (a ringing load touches zero
   // for a moment after a break, and a hexagonal lattice's ligament stood after three).
-  if (n_cracks_ > 0 && load < spec_.stop_fraction * res_.raw_peak_load_n) {
+  if (n_cracks_ > 0 && load < spec_.stop_fraction * res_.raw_peak_load_N) {
     if (low_since_m_ < 0) low_since_m_ = deflection;
   } else {
     low_since_m_ = -1;
@@ -247,15 +247,15 @@ void ToughnessRun::finish() {
   std::size_t lo = 0, hi = 0;
   double sum = 0;
   for (std::size_t k = 0; k < c.size(); ++k) {
-    while (hi < c.size() && c[hi].deflection_m <= c[k].deflection_m + half) sum += c[hi++].load_n;
-    while (c[lo].deflection_m < c[k].deflection_m - half) sum -= c[lo++].load_n;
-    c[k].smoothed_load_n = sum / static_cast<double>(hi - lo);
-    if (c[k].smoothed_load_n > r.peak_load_n)
-      r.peak_load_n = c[k].smoothed_load_n, r.deflection_at_peak_m = c[k].deflection_m;
+    while (hi < c.size() && c[hi].deflection_m <= c[k].deflection_m + half) sum += c[hi++].load_N;
+    while (c[lo].deflection_m < c[k].deflection_m - half) sum -= c[lo++].load_N;
+    c[k].smoothed_load_N = sum / static_cast<double>(hi - lo);
+    if (c[k].smoothed_load_N > r.peak_load_N)
+      r.peak_load_N = c[k].smoothed_load_N, r.deflection_at_peak_m = c[k].deflection_m;
   }
-  r.fracture_toughness_pa_sqrt_m = senb_stress_intensity(r.peak_load_n, r.span_m, r.thickness_m, r.depth_m, r.notch_m);
-  r.raw_peak_toughness_pa_sqrt_m =
-      senb_stress_intensity(r.raw_peak_load_n, r.span_m, r.thickness_m, r.depth_m, r.notch_m);
+  r.fracture_toughness_Pa_sqrt_m = senb_stress_intensity(r.peak_load_N, r.span_m, r.thickness_m, r.depth_m, r.notch_m);
+  r.raw_peak_toughness_Pa_sqrt_m =
+      senb_stress_intensity(r.raw_peak_load_N, r.span_m, r.thickness_m, r.depth_m, r.notch_m);
   const double ligament_area = r.thickness_m * (r.depth_m - r.notch_m);
   // The energy stored and moving at the end, less what the specimen held at the start (the genesis's
   // residual stresses): the rest of the load roller's work was dissipated (joints broken, friction).
@@ -265,10 +265,10 @@ void ToughnessRun::finish() {
                                                              ? r.curve[static_cast<std::size_t>(r.through_sample)]
                                                              : r.curve.back();
   const double kept =
-      end.stored_elastic_energy_j - start.stored_elastic_energy_j + end.kinetic_energy_j - start.kinetic_energy_j;
-  r.fracture_energy_j_per_m2 = (end.external_work_j - kept) / ligament_area;
-  r.work_of_fracture_j_per_m2 = end.external_work_j / ligament_area;
-  r.irwin_energy_j_per_m2 = r.fracture_toughness_pa_sqrt_m * r.fracture_toughness_pa_sqrt_m / spec_.youngs_modulus_pa;
+      end.stored_elastic_energy_J - start.stored_elastic_energy_J + end.kinetic_energy_J - start.kinetic_energy_J;
+  r.fracture_energy_J_per_m2 = (end.external_work_J - kept) / ligament_area;
+  r.work_of_fracture_J_per_m2 = end.external_work_J / ligament_area;
+  r.irwin_energy_J_per_m2 = r.fracture_toughness_Pa_sqrt_m * r.fracture_toughness_Pa_sqrt_m / spec_.youngs_modulus_Pa;
 }
 
 ToughnessResult run_toughness_test(const Simulation& specimen, const ToughnessSpec& spec,

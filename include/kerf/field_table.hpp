@@ -235,13 +235,18 @@ FieldTable<S> fields_through(const FieldTable<B>& table, Part part, const FieldT
             g.key = f.key, g.lo = f.lo, g.hi = f.hi, g.doc = f.doc;
             g.get = [get = f.get, part](const S& s) { return get(part(s)); };
             g.set = [set = f.set, part](S& s, int v) { set(part(s), v); };
+          } else if constexpr (std::is_same_v<F, BoolField<B>>) {
+            auto& g = std::get<BoolField<S>>(out.emplace_back(std::in_place_type<BoolField<S>>));
+            g.key = f.key, g.doc = f.doc;
+            g.get = [get = f.get, part](const S& s) { return get(part(s)); };
+            g.set = [set = f.set, part](S& s, bool v) { set(part(s), v); };
           } else if constexpr (std::is_same_v<F, ChoiceField<B>>) {
             auto& g = std::get<ChoiceField<S>>(out.emplace_back(std::in_place_type<ChoiceField<S>>));
             g.key = f.key, g.names = f.names, g.doc = f.doc;
             g.get = [get = f.get, part](const S& s) { return get(part(s)); };
             g.set = [set = f.set, part](S& s, int v) { set(part(s), v); };
           } else {
-            throw std::logic_error(std::string(who) + ": number, integer and choice fields only (" +
+            throw std::logic_error(std::string(who) + ": number, integer, flag and choice fields only (" +
                                    std::string(f.key) + ")");
           }
         },
@@ -254,7 +259,7 @@ FieldTable<S> fields_through(const FieldTable<B>& table, Part part, const FieldT
 
 /// The fields of a member struct (`member` of S, of type B, with its own table) as fields of S: one table
 /// written once and embedded in each struct that holds it (the bond laws' BondStiffnessStrength, an analytic
-/// model's parameters in its scene). Number, integer and choice fields; then `own`, the fields S holds itself.
+/// model's parameters in its scene). Number, integer, flag and choice fields; then `own`, the fields S holds itself.
 template <class S, class B>
 FieldTable<S> embedded_fields(const FieldTable<B>& table, B S::*member, const FieldTable<S>& own = {}) {
   return detail::fields_through(
@@ -263,7 +268,7 @@ FieldTable<S> embedded_fields(const FieldTable<B>& table, B S::*member, const Fi
 
 /// The fields of B as fields of S through `part`, B's part of an S reached by a function of either constness
 /// (`[](auto& s) -> auto& {...}`): a part S holds without naming its type (an analytic model's parameter block in
-/// its scene, kerf/analytic/kinds/model_params.hpp). Number, integer and choice fields; then `own`.
+/// its scene, kerf/analytic/kinds/model_params.hpp). Number, integer, flag and choice fields; then `own`.
 template <class S, class B, class Part>
 FieldTable<S> fields_of_part(const FieldTable<B>& table, Part part, const FieldTable<S>& own = {}) {
   return detail::fields_through(table, part, own, "fields_of_part");

@@ -15,7 +15,7 @@ constexpr std::string_view kShapeNames[] = {"none", "rectangular", "trapezoidal"
 constexpr kerf::EnumNames<Shape> kShapes{kShapeNames};
 
 struct Params {
-  double modulus_pa = 70e9;
+  double modulus_Pa = 70e9;
   double angle_rad = 0.5;
   int count = 2;
   bool check = true;
@@ -25,7 +25,7 @@ struct Params {
 const kerf::FieldTable<Params>& table() {
   using namespace kerf;
   static const FieldTable<Params> t{
-      number_field("modulus_GPa", units::kGPa, Range::positive(), "a modulus", &Params::modulus_pa),
+      number_field("modulus_GPa", units::kGPa, Range::positive(), "a modulus", &Params::modulus_Pa),
       number_field("angle_deg", units::kDeg, Range::closed(0.0, 90.0), "an angle", &Params::angle_rad),
       int_field("count", 1, 16, "a count", &Params::count), bool_field("check", "a flag", &Params::check),
       choice_field("shape", kShapes, "a shape", &Params::shape)};
@@ -43,12 +43,12 @@ Params read(const kerf::Json& j) {
 
 TEST_CASE("field table: absent keys keep the struct's defaults, present ones are converted to SI") {
   const Params d = read(kerf::Json::object());
-  CHECK(d.modulus_pa == 70e9);
+  CHECK(d.modulus_Pa == 70e9);
   CHECK(d.count == 2);
   CHECK(d.shape == Shape::none);
   const Params p = read(
       kerf::Json{{"modulus_GPa", 2.5}, {"angle_deg", 30}, {"count", 5}, {"check", false}, {"shape", "trapezoidal"}});
-  CHECK(p.modulus_pa == 2.5e9);
+  CHECK(p.modulus_Pa == 2.5e9);
   CHECK(p.angle_rad == 30 * std::numbers::pi / 180);  // the conversion the unit names, to the bit
   CHECK(p.count == 5);
   CHECK_FALSE(p.check);
@@ -79,14 +79,14 @@ TEST_CASE("field table: check_fields names the key, with_path adds the JSON path
   CHECK_THROWS_WITH(kerf::with_path("material", [&] { kerf::check_fields(table(), p); }),
                     "material.count = 0: expected an integer in [1, 16]");
   p = Params{};
-  p.modulus_pa = -1e9;
+  p.modulus_Pa = -1e9;
   CHECK_THROWS_WITH(kerf::check_fields(table(), p), "modulus_GPa = -1: expected a positive value in GPa");
   CHECK_NOTHROW(kerf::check_fields(table(), Params{}));
 }
 
 TEST_CASE("field table: to_json reads back to the same struct, every key written") {
   Params p;
-  p.modulus_pa = 1.234567890123e9;
+  p.modulus_Pa = 1.234567890123e9;
   p.angle_rad = 0.123456789;
   p.count = 7;
   p.check = false;
@@ -94,7 +94,7 @@ TEST_CASE("field table: to_json reads back to the same struct, every key written
   const kerf::Json j = kerf::fields_to_json(table(), p);
   CHECK(j.size() == table().size());
   const Params q = read(j);
-  CHECK(q.modulus_pa == p.modulus_pa);
+  CHECK(q.modulus_Pa == p.modulus_Pa);
   CHECK(q.angle_rad == Approx(p.angle_rad).epsilon(1e-15));
   CHECK(q.count == p.count);
   CHECK(q.check == p.check);
@@ -221,4 +221,25 @@ TEST_CASE("field table: a key declared twice, in the table or beside it, is the 
   CHECK_THROWS_WITH(check_unique_keys(twice, "section"), "section: the key 'angle_deg' is declared twice");
   const std::string_view clash[] = {"transition", "count"};
   CHECK_THROWS_WITH(check_unique_keys(table(), "models", clash), "models: the key 'count' is declared twice");
+}
+
+TEST_CASE("field table: a member struct's table embedded in its holder, flags included") {
+  struct Holder {
+    int own = 1;
+    Params part;
+  };
+  const kerf::FieldTable<Holder> t =
+      kerf::embedded_fields(table(), &Holder::part, {kerf::int_field("own", 0, 9, "the holder's", &Holder::own)});
+  REQUIRE(t.size() == table().size() + 1);
+  const kerf::Json j{{"modulus_GPa", 3}, {"check", false}, {"shape", "rectangular"}, {"own", 4}};
+  kerf::ObjectReader r(j, "s");
+  const Holder h = kerf::read_fields(r, t, Holder{});
+  r.finish();
+  CHECK(h.part.modulus_Pa == 3e9);
+  CHECK_FALSE(h.part.check);  // a flag through the member, as numbers, integers and choices
+  CHECK(h.part.shape == Shape::rectangular);
+  CHECK(h.own == 4);
+  kerf::Json expected = kerf::fields_to_json(table(), h.part);
+  expected["own"] = 4;
+  CHECK(kerf::fields_to_json(t, h) == expected);
 }

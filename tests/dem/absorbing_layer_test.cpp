@@ -24,7 +24,7 @@ Material undamped_elastic() {
   Material m;
   m.local_damping = 0;
   auto& j = std::get<FlatJointParams>(m.joint);
-  j.bond.tensile_strength_pa = j.bond.cohesion_pa = 1e15;  // elastic: never breaks
+  j.bond.tensile_strength_Pa = j.bond.cohesion_Pa = 1e15;  // elastic: never breaks
   return m;
 }
 
@@ -57,8 +57,8 @@ HeldRows held_rows_of_specimen(const Simulation& specimen) {
 
 CutParams windowed_with_layer(double layer_depths) {
   CutParams p = kerf::dem::testing::windowed(3, 2, 2, 2);
-  p.length_m = 0.15e-3;
-  p.window_absorbing_depths = layer_depths;
+  p.cut.length_m = 0.15e-3;
+  p.window.absorbing_depths = layer_depths;
   return p;
 }
 }  // namespace
@@ -181,7 +181,7 @@ TEST_CASE("absorbing layer: a windowed cut with a layer differs from one without
   }
   while (without.advance()) {
   }
-  CHECK(without.result().main_force_n != with.result().main_force_n);
+  CHECK(without.result().main_force_N != with.result().main_force_N);
 }
 
 TEST_CASE("absorbing layer: its keys are validated with their dotted names", "[absorbing_layer]") {
@@ -189,7 +189,7 @@ TEST_CASE("absorbing layer: its keys are validated with their dotted names", "[a
   CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains("active_window.absorbing_depths = 2"));
   p = windowed_with_layer(1.5);
   CHECK_NOTHROW(validate_cut_params(p));
-  p.window_absorbing_attenuation = 0;
+  p.window.absorbing_attenuation = 0;
   CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains("active_window.absorbing_attenuation = 0"));
   p = windowed_with_layer(-1);
   CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains("active_window.absorbing_depths = -1"));
@@ -199,20 +199,20 @@ TEST_CASE("absorbing layer along the held rows: every disk active, ramped from t
           "[absorbing_layer]") {
   const Simulation specimen = kerf::dem::testing::quick_workpiece_specimen(0.6e-3, 0.25e-3, 7);
   CutParams p = windowed_with_layer(0);
-  p.active_window = false;
+  p.window.enabled = false;
   {
     const CutRun none(specimen, p);
     CHECK(none.simulation().absorbing_rates().empty());  // no layer: the engine as before
   }
-  p.held_absorbing_depths = 1;
+  p.cut.held_absorbing_depths = 1;
   const CutRun run(specimen, p);
   const auto& q = run.simulation().particles();
   const auto& rates = run.simulation().absorbing_rates();
   REQUIRE(rates.size() == q.size());
   const HeldRows held = held_rows_of_specimen(specimen);
-  const double layer = p.depth_of_cut_m;
+  const double layer = p.cut.depth_of_cut_m;
   // The peak rate as the window's layer has it: 3 a c / L.
-  const double peak = 3 * p.window_absorbing_attenuation * p_wave_speed_m_per_s(run.simulation().material()) / layer;
+  const double peak = 3 * p.window.absorbing_attenuation * p_wave_speed_m_per_s(run.simulation().material()) / layer;
   int in_left = 0, in_bottom = 0, inside = 0;
   for (std::size_t u = 0; u < q.size(); ++u) {
     const double dx = q.x[u] - held.x_m, dy = q.y[u] - held.y_m;
@@ -239,13 +239,13 @@ TEST_CASE("absorbing layer along the held rows: in a window, the larger of its r
           "[absorbing_layer]") {
   const Simulation specimen = kerf::dem::testing::quick_workpiece_specimen(0.6e-3, 0.25e-3, 7);
   CutParams p = kerf::dem::testing::windowed(3, 2, 4, 2);  // down to the bottom rows
-  p.length_m = 0.15e-3;
-  p.window_absorbing_depths = 1;  // as thick as the held rows' layer, which starts two radii higher
-  p.held_absorbing_depths = 1;
+  p.cut.length_m = 0.15e-3;
+  p.window.absorbing_depths = 1;  // as thick as the held rows' layer, which starts two radii higher
+  p.cut.held_absorbing_depths = 1;
   const CutRun run(specimen, p);
   const CutRun window_layer_only = [&] {
     CutParams q = p;
-    q.held_absorbing_depths = 0;
+    q.cut.held_absorbing_depths = 0;
     return CutRun(specimen, q);
   }();
   const auto& q = run.simulation().particles();
@@ -254,8 +254,8 @@ TEST_CASE("absorbing layer along the held rows: in a window, the larger of its r
   REQUIRE(rates.size() == q.size());
   REQUIRE(box_rates.size() == q.size());  // the same window: the held rows' layer adds no disk
   const HeldRows held = held_rows_of_specimen(specimen);
-  const double layer = p.depth_of_cut_m;
-  const double peak = 3 * p.window_absorbing_attenuation * p_wave_speed_m_per_s(run.simulation().material()) / layer;
+  const double layer = p.cut.depth_of_cut_m;
+  const double peak = 3 * p.window.absorbing_attenuation * p_wave_speed_m_per_s(run.simulation().material()) / layer;
   int raised = 0;
   for (std::size_t u = 0; u < q.size(); ++u) {
     if (q.group[u] != 0) {
@@ -275,33 +275,33 @@ TEST_CASE("absorbing layer along the held rows: in a window, the larger of its r
 TEST_CASE("absorbing layer along the held rows: applied, with every disk active", "[absorbing_layer]") {
   const Simulation specimen = kerf::dem::testing::quick_workpiece_specimen(0.4e-3, 0.2e-3, 5);
   CutParams p = windowed_with_layer(0);
-  p.active_window = false;
-  p.length_m = 0.1e-3;
+  p.window.enabled = false;
+  p.cut.length_m = 0.1e-3;
   CutRun without(specimen, p);
-  p.held_absorbing_depths = 1;
+  p.cut.held_absorbing_depths = 1;
   CutRun with(specimen, p);
   while (with.advance()) {
   }
   while (without.advance()) {
   }
-  CHECK(without.result().main_force_n != with.result().main_force_n);
-  CHECK(std::isfinite(with.result().main_force_n));
+  CHECK(without.result().main_force_N != with.result().main_force_N);
+  CHECK(std::isfinite(with.result().main_force_N));
 }
 
 TEST_CASE("absorbing layer along the held rows: its key is validated against the workpiece", "[absorbing_layer]") {
   const Simulation specimen = kerf::dem::testing::quick_workpiece_specimen(0.6e-3, 0.25e-3, 7);
   CutParams p = windowed_with_layer(0);
-  p.held_absorbing_depths = -1;
+  p.cut.held_absorbing_depths = -1;
   CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains("cut.held_absorbing_depths = -1"));
   // From the held bottom rows (about 26 um up) to the cut line (0.05 mm under the 0.25 mm top): about 0.17 mm,
   // 3.5 depths of cut; a layer that thick would reach the cut line.
-  p.held_absorbing_depths = 3.6;
+  p.cut.held_absorbing_depths = 3.6;
   CHECK_THROWS_WITH(CutRun(specimen, p),
                     Catch::Contains("cut.held_absorbing_depths = 3.6") && Catch::Contains("below the cut line"));
   // The tool must stop before the left side's layer: 0.6 mm less 2.5 largest radii and the layer.
-  p.held_absorbing_depths = 2;
-  p.length_m = 0.5e-3;
+  p.cut.held_absorbing_depths = 2;
+  p.cut.length_m = 0.5e-3;
   CHECK_THROWS_WITH(CutRun(specimen, p), Catch::Contains("cut.length_mm = 0.5") && Catch::Contains("absorbing layer"));
-  p.length_m = 0.45e-3;
+  p.cut.length_m = 0.45e-3;
   CHECK_NOTHROW(CutRun(specimen, p));
 }

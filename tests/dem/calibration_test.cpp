@@ -60,17 +60,17 @@ TEST_CASE("calibration: E follows E*, strengths follow (sigma_c, c)", "[calibrat
   const MacroProperties a =
       measure_macro_properties(specimen, loading(LabTest::tension), loading(LabTest::compression));
   Material stiffer = base;
-  std::get<LinearContactParams>(stiffer.contact).effective_modulus_pa *= 1.5;
-  std::get<FlatJointParams>(stiffer.joint).bond.effective_modulus_pa *= 1.5;
-  std::get<FlatJointParams>(stiffer.joint).bond.tensile_strength_pa *=
+  std::get<LinearContactParams>(stiffer.contact).effective_modulus_Pa *= 1.5;
+  std::get<FlatJointParams>(stiffer.joint).bond.effective_modulus_Pa *= 1.5;
+  std::get<FlatJointParams>(stiffer.joint).bond.tensile_strength_Pa *=
       1.5;  // same strain to failure: the time scale stays the same
-  std::get<FlatJointParams>(stiffer.joint).bond.cohesion_pa *= 1.5;
+  std::get<FlatJointParams>(stiffer.joint).bond.cohesion_Pa *= 1.5;
   const MacroProperties b = measure_macro_properties(with_material(specimen, stiffer), loading(LabTest::tension),
                                                      loading(LabTest::compression));
-  CHECK_THAT(b.youngs_modulus_pa, WithinRel(1.5 * a.youngs_modulus_pa, 0.01));
+  CHECK_THAT(b.youngs_modulus_Pa, WithinRel(1.5 * a.youngs_modulus_Pa, 0.01));
   CHECK_THAT(b.poissons_ratio, WithinRel(a.poissons_ratio, 0.02));
-  CHECK_THAT(b.tensile_strength_pa, WithinRel(1.5 * a.tensile_strength_pa, 0.03));
-  CHECK_THAT(b.compressive_strength_pa, WithinRel(1.5 * a.compressive_strength_pa, 0.03));
+  CHECK_THAT(b.tensile_strength_Pa, WithinRel(1.5 * a.tensile_strength_Pa, 0.03));
+  CHECK_THAT(b.compressive_strength_Pa, WithinRel(1.5 * a.compressive_strength_Pa, 0.03));
 }
 
 TEST_CASE("calibration: the macro-properties converge with the time step", "[calibration]") {
@@ -87,22 +87,22 @@ TEST_CASE("calibration: the macro-properties converge with the time step", "[cal
   REQUIRE_THAT(fine.time_step(), WithinRel(0.5 * coarse.time_step(), 1e-12));
   const MacroProperties a = measure_macro_properties(coarse, loading(LabTest::tension), loading(LabTest::compression));
   const MacroProperties b = measure_macro_properties(fine, loading(LabTest::tension), loading(LabTest::compression));
-  CHECK_THAT(b.youngs_modulus_pa, WithinRel(a.youngs_modulus_pa, 0.001));
+  CHECK_THAT(b.youngs_modulus_Pa, WithinRel(a.youngs_modulus_Pa, 0.001));
   CHECK_THAT(b.poissons_ratio, WithinRel(a.poissons_ratio, 0.002));
-  CHECK_THAT(b.tensile_strength_pa, WithinRel(a.tensile_strength_pa, 0.03));
-  CHECK_THAT(b.compressive_strength_pa, WithinRel(a.compressive_strength_pa, 0.03));
+  CHECK_THAT(b.tensile_strength_Pa, WithinRel(a.tensile_strength_Pa, 0.03));
+  CHECK_THAT(b.compressive_strength_Pa, WithinRel(a.compressive_strength_Pa, 0.03));
 }
 
 namespace {
 
 CalibrationSpec reachable_spec(std::span<const SpecimenSource> sources) {
   Material hidden;
-  std::get<LinearContactParams>(hidden.contact).effective_modulus_pa =
-      std::get<FlatJointParams>(hidden.joint).bond.effective_modulus_pa = 80e9;
+  std::get<LinearContactParams>(hidden.contact).effective_modulus_Pa =
+      std::get<FlatJointParams>(hidden.joint).bond.effective_modulus_Pa = 80e9;
   std::get<LinearContactParams>(hidden.contact).stiffness_ratio =
       std::get<FlatJointParams>(hidden.joint).bond.stiffness_ratio = 2.5;
-  std::get<FlatJointParams>(hidden.joint).bond.tensile_strength_pa = 150e6;
-  std::get<FlatJointParams>(hidden.joint).bond.cohesion_pa = 180e6;
+  std::get<FlatJointParams>(hidden.joint).bond.tensile_strength_Pa = 150e6;
+  std::get<FlatJointParams>(hidden.joint).bond.cohesion_Pa = 180e6;
   CalibrationSpec spec;
   spec.tension = loading(LabTest::tension);
   spec.compression = loading(LabTest::compression);
@@ -115,10 +115,10 @@ void check_same_log(const std::vector<CalibrationEvaluation>& a, const std::vect
   REQUIRE(a.size() == b.size());
   for (std::size_t i = 0; i < a.size(); ++i) {
     CHECK(same_micro_parameters(a[i].material, b[i].material));
-    CHECK(a[i].macro.youngs_modulus_pa == b[i].macro.youngs_modulus_pa);
+    CHECK(a[i].macro.youngs_modulus_Pa == b[i].macro.youngs_modulus_Pa);
     CHECK(a[i].macro.poissons_ratio == b[i].macro.poissons_ratio);
-    CHECK(a[i].macro.tensile_strength_pa == b[i].macro.tensile_strength_pa);
-    CHECK(a[i].macro.compressive_strength_pa == b[i].macro.compressive_strength_pa);
+    CHECK(a[i].macro.tensile_strength_Pa == b[i].macro.tensile_strength_Pa);
+    CHECK(a[i].macro.compressive_strength_Pa == b[i].macro.compressive_strength_Pa);
   }
 }
 
@@ -138,10 +138,10 @@ TEST_CASE("calibration: recovers reachable targets within 3 % on a small specime
   SpecimenReport report;
   const MacroProperties check =
       measure_macro_properties(make_specimen(r.material, tiny_spec(), report), spec.tension, spec.compression);
-  CHECK(check.youngs_modulus_pa == r.macro.youngs_modulus_pa);
+  CHECK(check.youngs_modulus_Pa == r.macro.youngs_modulus_Pa);
   CHECK(check.poissons_ratio == r.macro.poissons_ratio);
-  CHECK(check.tensile_strength_pa == r.macro.tensile_strength_pa);
-  CHECK(check.compressive_strength_pa == r.macro.compressive_strength_pa);
+  CHECK(check.tensile_strength_Pa == r.macro.tensile_strength_Pa);
+  CHECK(check.compressive_strength_Pa == r.macro.compressive_strength_Pa);
 
   SECTION("resumed from all but the last evaluation: the same calibration, only the last one re-run") {
     REQUIRE(r.log.size() >= 2);
@@ -183,19 +183,19 @@ TEST_CASE("calibration: over two packings, the mean of what two scenes build is 
     SpecimenReport report;
     one[k] = measure_macro_properties(make_specimen(r.material, scene, report), spec.tension, spec.compression);
   }
-  CHECK(r.macro.youngs_modulus_pa == (one[0].youngs_modulus_pa + one[1].youngs_modulus_pa) / 2);
+  CHECK(r.macro.youngs_modulus_Pa == (one[0].youngs_modulus_Pa + one[1].youngs_modulus_Pa) / 2);
   CHECK(r.macro.poissons_ratio == (one[0].poissons_ratio + one[1].poissons_ratio) / 2);
-  CHECK(r.macro.tensile_strength_pa == (one[0].tensile_strength_pa + one[1].tensile_strength_pa) / 2);
-  CHECK(r.macro.compressive_strength_pa == (one[0].compressive_strength_pa + one[1].compressive_strength_pa) / 2);
+  CHECK(r.macro.tensile_strength_Pa == (one[0].tensile_strength_Pa + one[1].tensile_strength_Pa) / 2);
+  CHECK(r.macro.compressive_strength_Pa == (one[0].compressive_strength_Pa + one[1].compressive_strength_Pa) / 2);
   // The packings differ: their mean is not either one.
-  CHECK(one[0].tensile_strength_pa != one[1].tensile_strength_pa);
+  CHECK(one[0].tensile_strength_Pa != one[1].tensile_strength_Pa);
 }
 
 TEST_CASE("calibration: evaluations serialise bit-exactly, corrupt bytes are rejected", "[calibration]") {
   CalibrationEvaluation e;
   e.index = 3;
   e.material.name = "x";
-  std::get<FlatJointParams>(e.material.joint).bond.cohesion_pa = 0.1 + 0.2;  // not a short decimal
+  std::get<FlatJointParams>(e.material.joint).bond.cohesion_Pa = 0.1 + 0.2;  // not a short decimal
   e.macro = {7.1e10 / 3, 0.23 / 7, 4.1e7 / 9, 3.3e8 / 11};
   e.max_relative_error = 1.0 / 3;
   e.wall_time_s = 2.0 / 3;
@@ -210,8 +210,8 @@ TEST_CASE("calibration: evaluations serialise bit-exactly, corrupt bytes are rej
   CHECK_THROWS_AS(deserialize_evaluations(std::string_view(bytes).substr(0, bytes.size() - 1)), kerf::ModelError);
   Material other = e.material;
   CHECK(same_micro_parameters(other, e.material));
-  std::get<FlatJointParams>(other.joint).bond.cohesion_pa =
-      std::nextafter(std::get<FlatJointParams>(other.joint).bond.cohesion_pa, 1.0);
+  std::get<FlatJointParams>(other.joint).bond.cohesion_Pa =
+      std::nextafter(std::get<FlatJointParams>(other.joint).bond.cohesion_Pa, 1.0);
   CHECK_FALSE(same_micro_parameters(other, e.material));
 }
 
@@ -222,15 +222,15 @@ TEST_CASE("calibration: evaluations serialise bit-exactly, corrupt bytes are rej
 namespace {
 
 /// A glass-like softening material: elements fail in tension (c about 4 sigma_c), w_c = 2 G_f / sigma_c.
-Material softening_glass(double fracture_energy_j_per_m2, double strength_scale = 1.0) {
+Material softening_glass(double fracture_energy_J_per_m2, double strength_scale = 1.0) {
   Material m;
   SofteningFlatJointParams p;
-  p.bond.effective_modulus_pa = 80e9;
-  p.bond.tensile_strength_pa = 120e6 * strength_scale;
-  p.bond.cohesion_pa = 480e6 * strength_scale;
-  p.fracture_energy_j_per_m2 = fracture_energy_j_per_m2;
+  p.bond.effective_modulus_Pa = 80e9;
+  p.bond.tensile_strength_Pa = 120e6 * strength_scale;
+  p.bond.cohesion_Pa = 480e6 * strength_scale;
+  p.fracture_energy_J_per_m2 = fracture_energy_J_per_m2;
   m.joint = SofteningFlatJointParams::validated(p);
-  std::get<LinearContactParams>(m.contact).effective_modulus_pa = 80e9;
+  std::get<LinearContactParams>(m.contact).effective_modulus_Pa = 80e9;
   return m;
 }
 
@@ -266,9 +266,9 @@ TEST_CASE("calibration: K_IC scales with the strengths when G_f follows them as 
   const Material base = softening_glass(g_f);
   Material scaled = softening_glass(g_f * 1.5 * 1.5 / 1.5, 1.5);
   auto& j = std::get<SofteningFlatJointParams>(scaled.joint);
-  j.bond.effective_modulus_pa *= 1.5;
+  j.bond.effective_modulus_Pa *= 1.5;
   j = SofteningFlatJointParams::validated(j);
-  std::get<LinearContactParams>(scaled.contact).effective_modulus_pa *= 1.5;
+  std::get<LinearContactParams>(scaled.contact).effective_modulus_Pa *= 1.5;
   const double k0 = mean_fracture_toughness(beams, base, t);
   const double k1 = mean_fracture_toughness(beams, scaled, t);
   CHECK_THAT(k1, WithinRel(1.5 * k0, 0.03));
@@ -294,19 +294,19 @@ TEST_CASE("calibration: a toughness target recovers a hidden softening glass's K
   // The hidden glass: its five properties are the targets (reachable by construction).
   const Material hidden = softening_glass(8.0);
   spec.targets = mean_macro_properties(lab, hidden, spec.tension, spec.compression);
-  spec.targets.fracture_toughness_pa_sqrt_m = mean_fracture_toughness(beams, hidden, *spec.toughness);
+  spec.targets.fracture_toughness_Pa_sqrt_m = mean_fracture_toughness(beams, hidden, *spec.toughness);
   // Start at a fifth of its fracture energy, with strengths 20 % low.
   const Material start = softening_glass(1.6, 0.8);
   const double k_start = mean_fracture_toughness(beams, start, *spec.toughness);
-  REQUIRE(k_start < 0.8 * spec.targets.fracture_toughness_pa_sqrt_m);  // the start misses K_IC
+  REQUIRE(k_start < 0.8 * spec.targets.fracture_toughness_Pa_sqrt_m);  // the start misses K_IC
   const CalibrationResult r = calibrate(lab, start, spec, {}, {}, beams);
   CHECK(r.converged);
   CHECK(r.max_relative_error <= spec.tolerance);
   CHECK(r.toughness_error <= spec.toughness_tolerance);
   // What the calibration reports is what its material gives on the beams, to the bit.
-  CHECK(mean_fracture_toughness(beams, r.material, *spec.toughness) == r.macro.fracture_toughness_pa_sqrt_m);
+  CHECK(mean_fracture_toughness(beams, r.material, *spec.toughness) == r.macro.fracture_toughness_Pa_sqrt_m);
   // The lever moved: G_f rose from the start's.
-  CHECK(std::get<SofteningFlatJointParams>(r.material.joint).fracture_energy_j_per_m2 > 1.6);
+  CHECK(std::get<SofteningFlatJointParams>(r.material.joint).fracture_energy_J_per_m2 > 1.6);
 }
 
 TEST_CASE("calibration: a free fracture energy needs a softening joint with one and a toughness target",
@@ -316,12 +316,12 @@ TEST_CASE("calibration: a free fracture energy needs a softening joint with one 
   CalibrationSpec spec;
   spec.toughness = beam_test();
   spec.free_fracture_energy = true;
-  spec.targets.fracture_toughness_pa_sqrt_m = 0.77e6;
+  spec.targets.fracture_toughness_Pa_sqrt_m = 0.77e6;
   CHECK_THROWS_WITH(calibrate(lab, Material{}, spec, {}, {}, beams), Contains("material.fracture_energy_J_per_m2"));
   CHECK_THROWS_WITH(calibrate(lab, softening_glass(0.0), spec, {}, {}, beams), Contains("fracture_energy_J_per_m2"));
-  spec.targets.fracture_toughness_pa_sqrt_m = 0;
+  spec.targets.fracture_toughness_Pa_sqrt_m = 0;
   CHECK_THROWS_WITH(calibrate(lab, softening_glass(2.0), spec, {}, {}, beams),
                     Contains("fracture_toughness_MPa_sqrt_m"));
-  spec.targets.fracture_toughness_pa_sqrt_m = 0.77e6;
+  spec.targets.fracture_toughness_Pa_sqrt_m = 0.77e6;
   CHECK_THROWS_AS(calibrate(lab, softening_glass(2.0), spec), kerf::ModelError);  // no beams
 }

@@ -145,19 +145,19 @@ LawBytes law_bytes(const Material& m) {
   put_record_before_weibull(out.records8, record(m.joint));
   const auto& c = std::get<LinearContactParams>(m.contact);
   const legacy::ContactLaw6 contact6 =
-      legacy::Linear6{c.effective_modulus_pa, c.stiffness_ratio, c.friction_coefficient};
+      legacy::Linear6{c.effective_modulus_Pa, c.stiffness_ratio, c.friction_coefficient};
   alignas(legacy::BondLaw6) unsigned char joint6[sizeof(legacy::BondLaw6)];
   std::memset(joint6, 0xAA, sizeof joint6);  // the padding and the index's place told apart
   if (const auto* f = std::get_if<FlatJointParams>(&m.joint))
-    new (joint6) legacy::BondLaw6(legacy::FlatJoint6{f->bond.effective_modulus_pa, f->bond.stiffness_ratio,
-                                                     f->bond.tensile_strength_pa, f->bond.cohesion_pa,
+    new (joint6) legacy::BondLaw6(legacy::FlatJoint6{f->bond.effective_modulus_Pa, f->bond.stiffness_ratio,
+                                                     f->bond.tensile_strength_Pa, f->bond.cohesion_Pa,
                                                      f->bond.friction_angle_rad, f->residual_friction_coefficient,
                                                      f->n_elements, f->bond.radius_multiplier, f->tan_friction_angle});
   else {
     const auto& p = std::get<ParallelBondParams>(m.joint);
     const BondStiffnessStrength& b = p.bond;
-    new (joint6) legacy::BondLaw6(legacy::ParallelBond6{b.effective_modulus_pa, b.stiffness_ratio,
-                                                        b.tensile_strength_pa, b.cohesion_pa, b.friction_angle_rad,
+    new (joint6) legacy::BondLaw6(legacy::ParallelBond6{b.effective_modulus_Pa, b.stiffness_ratio,
+                                                        b.tensile_strength_Pa, b.cohesion_Pa, b.friction_angle_rad,
                                                         b.radius_multiplier, p.tan_friction_angle});
   }
   serial::put_raw(out.raw, contact6);
@@ -324,12 +324,12 @@ TEST_CASE("checkpoint: a calibration log of KERFCAL4 (no toughness) reads the sa
   REQUIRE(back.size() == 2);
   CHECK(serialize_evaluations(back) == serialize_evaluations(log));
   // A log of this build keeps the toughness's numbers.
-  log[1].macro.fracture_toughness_pa_sqrt_m = 0.77e6 / 3;
+  log[1].macro.fracture_toughness_Pa_sqrt_m = 0.77e6 / 3;
   log[1].toughness_error = 1.0 / 7;
   const std::vector<CalibrationEvaluation> now = deserialize_evaluations(serialize_evaluations(log));
-  CHECK(now[1].macro.fracture_toughness_pa_sqrt_m == log[1].macro.fracture_toughness_pa_sqrt_m);
+  CHECK(now[1].macro.fracture_toughness_Pa_sqrt_m == log[1].macro.fracture_toughness_Pa_sqrt_m);
   CHECK(now[1].toughness_error == log[1].toughness_error);
-  CHECK(now[0].macro.fracture_toughness_pa_sqrt_m == 0);
+  CHECK(now[0].macro.fracture_toughness_Pa_sqrt_m == 0);
 }
 
 TEST_CASE("checkpoint: a calibration log of KERFCAL3 (the laws as raw variants) reads the same laws", "[checkpoint]") {
@@ -350,12 +350,16 @@ TEST_CASE("checkpoint: a calibration log of KERFCAL3 (the laws as raw variants) 
 
 namespace {
 using kerf::dem::CutParams;
+/// The cut's section tables as tables of CutParams (each through its section's member), as the cut's state has them.
 const std::array<kerf::dem::serial::SectionFields<CutParams>, 4>& cut_tables() {
+  using kerf::embedded_fields;
+  static const kerf::FieldTable<CutParams> cut = embedded_fields(kerf::dem::cut_fields(), &CutParams::cut),
+                                           tool = embedded_fields(kerf::dem::tool_fields(), &CutParams::tool),
+                                           grooves = embedded_fields(kerf::dem::groove_fields(), &CutParams::grooves),
+                                           window =
+                                               embedded_fields(kerf::dem::active_window_fields(), &CutParams::window);
   static const std::array<kerf::dem::serial::SectionFields<CutParams>, 4> t{
-      {{"cut", kerf::dem::cut_fields()},
-       {"tool", kerf::dem::tool_fields()},
-       {"grooves", kerf::dem::groove_fields()},
-       {"active_window", kerf::dem::active_window_fields()}}};
+      {{"cut", cut}, {"tool", tool}, {"grooves", grooves}, {"active_window", window}}};
   return t;
 }
 /// Every field of the cut's tables as one text: key, then the value's bits (numbers) or index (choices).
@@ -431,9 +435,9 @@ TEST_CASE(
     return r;
   };
   const CutParams one = read(record({{"cut.depth_of_cut_mm", 2e-4}}, {}));
-  CHECK(one.depth_of_cut_m == 2e-4);
-  CHECK(one.length_m == CutParams{}.length_m);
-  CHECK(read(record({}, {{"grooves.shape", "trapezoidal"}})).groove_shape == kerf::dem::GrooveShape::trapezoidal);
+  CHECK(one.cut.depth_of_cut_m == 2e-4);
+  CHECK(one.cut.length_m == CutParams{}.cut.length_m);
+  CHECK(read(record({}, {{"grooves.shape", "trapezoidal"}})).grooves.shape == kerf::dem::GrooveShape::trapezoidal);
   CHECK_THROWS_WITH(read(record({{"cut.no_such_key", 1}}, {})), Catch::Contains("keys this build does not have"));
   CHECK_THROWS_WITH(read(record({{"cut.depth_of_cut_mm", 1}, {"cut.depth_of_cut_mm", 2}}, {})),
                     Catch::Contains("a key twice"));

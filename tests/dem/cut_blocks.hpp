@@ -69,9 +69,9 @@ inline std::array<double, 2> place_tool(Simulation& sim, std::array<double, 2> t
 /// A 0.03 mm deep cut, 0.04 mm of travel, through an active window or not.
 inline CutParams block_cut(bool window) {
   CutParams p = windowed(6, 6, 4, 2);
-  p.depth_of_cut_m = 0.03e-3;
-  p.length_m = 0.04e-3;
-  p.active_window = window;
+  p.cut.depth_of_cut_m = 0.03e-3;
+  p.cut.length_m = 0.04e-3;
+  p.window.enabled = window;
   return p;
 }
 

@@ -18,14 +18,14 @@ TEST_CASE("cut calibration: the strength factor scales both bond strengths and n
   CHECK(same_micro_parameters(same, m));
   const Material s = scale_bond_strengths(m, 1.5, "glass_x1.5");
   CHECK(s.name == "glass_x1.5");
-  CHECK(std::get<FlatJointParams>(s.joint).bond.tensile_strength_pa ==
-        1.5 * std::get<FlatJointParams>(m.joint).bond.tensile_strength_pa);
-  CHECK(std::get<FlatJointParams>(s.joint).bond.cohesion_pa ==
-        1.5 * std::get<FlatJointParams>(m.joint).bond.cohesion_pa);
+  CHECK(std::get<FlatJointParams>(s.joint).bond.tensile_strength_Pa ==
+        1.5 * std::get<FlatJointParams>(m.joint).bond.tensile_strength_Pa);
+  CHECK(std::get<FlatJointParams>(s.joint).bond.cohesion_Pa ==
+        1.5 * std::get<FlatJointParams>(m.joint).bond.cohesion_Pa);
   Material back = s;
-  std::get<FlatJointParams>(back.joint).bond.tensile_strength_pa =
-      std::get<FlatJointParams>(m.joint).bond.tensile_strength_pa;
-  std::get<FlatJointParams>(back.joint).bond.cohesion_pa = std::get<FlatJointParams>(m.joint).bond.cohesion_pa;
+  std::get<FlatJointParams>(back.joint).bond.tensile_strength_Pa =
+      std::get<FlatJointParams>(m.joint).bond.tensile_strength_Pa;
+  std::get<FlatJointParams>(back.joint).bond.cohesion_Pa = std::get<FlatJointParams>(m.joint).bond.cohesion_Pa;
   CHECK(same_micro_parameters(back, m));  // moduli, stiffness ratios, friction, damping untouched
   CHECK_THROWS_AS(scale_bond_strengths(m, 0.0, "x"), kerf::ModelError);
   CHECK_THROWS_AS(scale_bond_strengths(m, std::nan(""), "x"), kerf::ModelError);
@@ -42,7 +42,7 @@ TEST_CASE("cut calibration: the update meets a power law and stays bounded on no
     const double s = next_strength_factor(h, 15.0);
     h.push_back({s, force(s)});
   }
-  CHECK_THAT(h.back().main_force_n, WithinRel(15.0, 1e-9));
+  CHECK_THAT(h.back().main_force_N, WithinRel(15.0, 1e-9));
   // Scatter that makes the force fall as the strengths rise: the slope is held at 0.5, not followed.
   CHECK_THAT(next_strength_factor({{1.0, 8.0}, {1.5, 7.0}}, 14.0), WithinRel(1.5 * std::pow(2.0, 2.0), 1e-12));
   // A flat secant would ask for a huge step: capped at a factor 4.

@@ -71,7 +71,7 @@ namespace {
 
 /// Observations over the steady travel: one per kEdgeObserveTravelM.
 double expected_observations(const CutParams& p) {
-  return (1 - p.entry_fraction) * p.length_m / kEdgeObserveTravelM;
+  return (1 - p.cut.entry_fraction) * p.cut.length_m / kEdgeObserveTravelM;
 }
 
 }  // namespace
@@ -146,7 +146,7 @@ TEST_CASE("cut edge: a cut resumed from its checkpoint has the uninterrupted cut
   CutRun older = CutRun::deserialize(old);
   while (older.advance()) {
   }
-  CHECK(older.result().samples.back().main_force_n == whole.result().samples.back().main_force_n);
+  CHECK(older.result().samples.back().main_force_N == whole.result().samples.back().main_force_N);
   CHECK(older.result().energy_booked);
   CHECK_FALSE(older.result().edge_recorded);
 }
@@ -159,10 +159,10 @@ TEST_CASE("cut edge: the cost of one observation on the steady cut's workpiece",
   SpecimenReport report;
   const Simulation specimen = make_specimen(Material{}, spec, report);
   CutParams p;
-  p.depth_of_cut_m = 0.1e-3;
-  p.speed_m_per_s = 2;
-  p.length_m = 0.5e-3;
-  p.active_window = true;
+  p.cut.depth_of_cut_m = 0.1e-3;
+  p.cut.speed_m_per_s = 2;
+  p.cut.length_m = 0.5e-3;
+  p.window.enabled = true;
   CutRun run(specimen, p);
   for (int k = 0; k < 200; ++k) run.advance();
   const int n = 200;
@@ -174,5 +174,5 @@ TEST_CASE("cut edge: the cost of one observation on the steady cut's workpiece",
   for (int k = 0; k < 10; ++k) run.advance();
   const double sample = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count() / 10;
   WARN("disks " << specimen.particles().size() << ", one observation " << each * 1e3 << " ms, one sample of "
-                << p.sample_every_steps << " steps " << sample * 1e3 << " ms");
+                << p.cut.sample_every_steps << " steps " << sample * 1e3 << " ms");
 }

@@ -27,7 +27,7 @@ using kerf::dem::testing::windowed;
 TEST_CASE("cut window: a window covering the whole workpiece is the full cut to the bit", "[cut_window]") {
   const Simulation specimen = quick_workpiece_specimen(0.4e-3, 0.25e-3, 3);
   CutParams full = windowed(100, 100, 100, 100);
-  full.active_window = false;
+  full.window.enabled = false;
   CutRun a(specimen, full), b(specimen, windowed(100, 100, 100, 100));
   std::size_t k = 0;
   bool more = true;
@@ -44,20 +44,20 @@ TEST_CASE("cut window: a window covering the whole workpiece is the full cut to 
     // Forces on the free disks (a held disk's leave out the joints and contacts between two held disks).
     for (std::size_t u = 0; u < pa.size(); ++u)
       if (pa.group[u] == 0) REQUIRE(pa.fx[u] == pb.fx[u]);
-    REQUIRE(a.result().samples.back().main_force_n == b.result().samples.back().main_force_n);
+    REQUIRE(a.result().samples.back().main_force_N == b.result().samples.back().main_force_N);
   }
   CHECK(b.result().window.rebuilds > 5);
   CHECK(b.result().window.chips.particles == 0);
   CHECK(a.result().cracks.tensile == b.result().cracks.tensile);
   CHECK(a.result().cracks.subsurface == b.result().cracks.subsurface);
-  CHECK(a.result().main_force_n == b.result().main_force_n);
+  CHECK(a.result().main_force_N == b.result().main_force_N);
 }
 
 TEST_CASE("cut window: the window's size does not grow with the workpiece: chips, frozen and untouched disks",
           "[cut_window]") {
   // The same cut (depth, travel) on workpieces 0.6 and 1.2 mm long: twice the disks, the same window.
   CutParams p = windowed(3, 1, 2, 2);
-  p.length_m = 0.2e-3;
+  p.cut.length_m = 0.2e-3;
   const auto cut = [&](double width_m) {
     CutRun run(quick_workpiece_specimen(width_m, 0.25e-3, 5), p);
     while (run.advance()) {
@@ -86,7 +86,7 @@ TEST_CASE("cut window: the window's size does not grow with the workpiece: chips
   std::size_t untouched = 0, ahead = 0;
   for (std::size_t u = 0; u < q.size(); ++u) {
     // (A chip flung ahead stays where it was removed, above the uncut surface.)
-    if (q.x[u] < x_edge_end - 3 * p.depth_of_cut_m - 4 * 13e-6 - 1e-6 && q.y[u] < b.y_top_m) {
+    if (q.x[u] < x_edge_end - 3 * p.cut.depth_of_cut_m - 4 * 13e-6 - 1e-6 && q.y[u] < b.y_top_m) {
       ++ahead;
       untouched += q.x[u] == specimen.particles().x[u] && q.y[u] == specimen.particles().y[u];
     }
@@ -96,7 +96,8 @@ TEST_CASE("cut window: the window's size does not grow with the workpiece: chips
   // Disks the window left behind: frozen where they were (at rest, many of them moved by the cut).
   std::size_t behind = 0, at_rest = 0, moved = 0;
   for (std::size_t u = 0; u < q.size(); ++u) {
-    if (q.x[u] > x_edge_end + (1 + p.window_shift_depths) * p.depth_of_cut_m + 4 * 13e-6 + 1e-6 && q.y[u] < b.y_top_m) {
+    if (q.x[u] > x_edge_end + (1 + p.window.shift_depths) * p.cut.depth_of_cut_m + 4 * 13e-6 + 1e-6 &&
+        q.y[u] < b.y_top_m) {
       ++behind;
       at_rest += q.vx[u] == 0 && q.vy[u] == 0 && q.omega[u] == 0;
       moved += q.x[u] != specimen.particles().x[u];
@@ -121,9 +122,9 @@ TEST_CASE("cut window: restored halfway, a windowed cut goes on to the bit", "[c
   for (const auto& [layer, held_layer] : {std::pair{0.0, 0.0}, {1.0, 0.0}, {1.0, 1.0}}) {
     INFO("absorbing layer " << layer << " depths, along the held rows " << held_layer);
     CutParams p = windowed(3, 2, held_layer > 0 ? 4 : 2, 2);
-    p.length_m = 0.15e-3;
-    p.window_absorbing_depths = layer;
-    p.held_absorbing_depths = held_layer;
+    p.cut.length_m = 0.15e-3;
+    p.window.absorbing_depths = layer;
+    p.cut.held_absorbing_depths = held_layer;
     CutRun whole(specimen, p);
     REQUIRE(whole.simulation().absorbing_rates().empty() == (layer == 0));
     while (whole.advance()) {
@@ -137,8 +138,8 @@ TEST_CASE("cut window: restored halfway, a windowed cut goes on to the bit", "[c
     const CutResult &a = whole.result(), &b = restored.result();
     REQUIRE(a.samples.size() == b.samples.size());
     for (std::size_t k = 0; k < a.samples.size(); ++k) {
-      REQUIRE(a.samples[k].main_force_n == b.samples[k].main_force_n);
-      REQUIRE(a.samples[k].thrust_force_n == b.samples[k].thrust_force_n);
+      REQUIRE(a.samples[k].main_force_N == b.samples[k].main_force_N);
+      REQUIRE(a.samples[k].thrust_force_N == b.samples[k].thrust_force_N);
     }
     CHECK(a.window.rebuilds == b.window.rebuilds);
     CHECK(a.window.chips.particles == b.window.chips.particles);
@@ -150,10 +151,10 @@ TEST_CASE("cut window: restored halfway, a windowed cut goes on to the bit", "[c
     // The energy books go on as well.
     REQUIRE(a.energy_booked);
     REQUIRE(b.energy_booked);
-    CHECK(a.energy.tool_work_j == b.energy.tool_work_j);
-    CHECK(a.energy.dissipated_j == b.energy.dissipated_j);
-    CHECK(a.energy.left_kinetic_j == b.energy.left_kinetic_j);
-    CHECK(a.energy.left_strain_j == b.energy.left_strain_j);
+    CHECK(a.energy.tool_work_J == b.energy.tool_work_J);
+    CHECK(a.energy.dissipated_J == b.energy.dissipated_J);
+    CHECK(a.energy.left_kinetic_J == b.energy.left_kinetic_J);
+    CHECK(a.energy.left_strain_J == b.energy.left_strain_J);
   }
 }
 
@@ -168,7 +169,7 @@ TEST_CASE("cut window: loose fragments above the cut line are removed at a rebui
   const auto& q = workpiece.particles();
   double y_top = -1;
   for (std::size_t u = 0; u < q.size(); ++u) y_top = std::max(y_top, q.y[u] + q.radius[u]);
-  const double y_cut = y_top - p.depth_of_cut_m;
+  const double y_cut = y_top - p.cut.depth_of_cut_m;
   const auto cluster = [&](std::size_t u, double y_centre) {
     return std::hypot(q.x[u] - 0.3e-3, q.y[u] - y_centre) < 25e-6 ? 1 : 0;
   };
@@ -200,7 +201,7 @@ TEST_CASE("cut window: a cut resumed from a checkpoint without energy books (KER
           "[cut_window]") {
   const Simulation specimen = quick_workpiece_specimen(0.6e-3, 0.25e-3, 7);
   CutParams p = windowed(3, 2, 2, 2);
-  p.length_m = 0.1e-3;
+  p.cut.length_m = 0.1e-3;
   CutRun whole(specimen, p), half(specimen, p);
   while (whole.advance()) {
   }
@@ -214,7 +215,7 @@ TEST_CASE("cut window: a cut resumed from a checkpoint without energy books (KER
   CutRun restored = CutRun::deserialize(old);
   while (restored.advance()) {
   }
-  CHECK(restored.result().samples.back().main_force_n == whole.result().samples.back().main_force_n);
+  CHECK(restored.result().samples.back().main_force_N == whole.result().samples.back().main_force_N);
   CHECK(whole.result().energy_booked);
   CHECK_FALSE(restored.result().energy_booked);
 }
@@ -226,45 +227,45 @@ TEST_CASE("cut window: the energy books balance, and what leaves the window is w
   // (friction, broken joints) and is positive.
   const Simulation specimen = quick_workpiece_specimen(0.6e-3, 0.25e-3, 7);
   CutParams p = windowed(3, 2, 2, 2);
-  p.length_m = 0.3e-3;
-  p.entry_fraction = 0.2;
+  p.cut.length_m = 0.3e-3;
+  p.cut.entry_fraction = 0.2;
   CutRun run(specimen, p);
   while (run.advance()) {
   }
   const CutResult& r = run.result();
   REQUIRE(r.energy_booked);
   const double travel = r.steady_to_travel_m - r.steady_from_travel_m;
-  const double one_sample = p.speed_m_per_s * p.sample_every_steps * r.time_step_s;
-  CHECK_THAT(r.energy.tool_work_j, WithinRel(r.main_force_n * travel, 2 * one_sample / travel + 1e-9));
-  CHECK(r.energy.left_kinetic_j > 0);
-  CHECK(r.energy.dissipated_j > 0);
+  const double one_sample = p.cut.speed_m_per_s * p.cut.sample_every_steps * r.time_step_s;
+  CHECK_THAT(r.energy.tool_work_J, WithinRel(r.main_force_N * travel, 2 * one_sample / travel + 1e-9));
+  CHECK(r.energy.left_kinetic_J > 0);
+  CHECK(r.energy.dissipated_J > 0);
   const CutEnergy& e = r.energy;
-  CHECK_THAT(e.dissipated_j + e.left_kinetic_j + e.left_strain_j + e.stored_change_j, WithinRel(e.tool_work_j, 1e-12));
+  CHECK_THAT(e.dissipated_J + e.left_kinetic_J + e.left_strain_J + e.stored_change_J, WithinRel(e.tool_work_J, 1e-12));
 }
 
 namespace {
 /// One crushing law (active_window.grain_strength_MPa or tied_grain_strength_MPa: `strength`) on a short windowed
 /// cut: at a strength no contact reaches the cut is the cut without it, to the bit (the check alone changes nothing);
-/// at `weak_pa` disks are crushed, counted (`count`, `mass`: the law's own counters, the other law's staying 0) among
+/// at `weak_Pa` disks are crushed, counted (`count`, `mass`: the law's own counters, the other law's staying 0) among
 /// the removed disks, the window rebuilt for each crush, the energy books balanced (what a crushed disk held leaves
 /// with it), the peak force no higher; restored halfway, the cut goes on to the bit; the key needs a window.
-void check_crushing(double CutParams::*strength, double weak_pa, std::size_t ChipAccount::*count,
+void check_crushing(double CutParams::ActiveWindow::*strength, double weak_Pa, std::size_t ChipAccount::*count,
                     double ChipAccount::*mass, std::size_t ChipAccount::*other_count, const std::string& key) {
   const Simulation specimen = quick_workpiece_specimen(0.6e-3, 0.25e-3, 7);
   CutParams p = windowed(3, 2, 2, 2);
-  p.length_m = 0.3e-3;
-  p.entry_fraction = 0.2;
-  const auto cut = [&](double strength_pa) {
+  p.cut.length_m = 0.3e-3;
+  p.cut.entry_fraction = 0.2;
+  const auto cut = [&](double strength_Pa) {
     CutParams q = p;
-    q.*strength = strength_pa;
+    q.window.*strength = strength_Pa;
     CutRun run(specimen, q);
     while (run.advance()) {
     }
     return run.result();
   };
-  const CutResult none = cut(0), never = cut(1e15), weak = cut(weak_pa);
-  CHECK(never.samples.back().main_force_n == none.samples.back().main_force_n);
-  CHECK(never.main_force_n == none.main_force_n);
+  const CutResult none = cut(0), never = cut(1e15), weak = cut(weak_Pa);
+  CHECK(never.samples.back().main_force_N == none.samples.back().main_force_N);
+  CHECK(never.main_force_N == none.main_force_N);
   CHECK(never.window.chips.*count == 0);
   CHECK(none.window.chips.*count == 0);
   CHECK(weak.window.chips.*count > 0);
@@ -275,38 +276,38 @@ void check_crushing(double CutParams::*strength, double weak_pa, std::size_t Chi
   CHECK(weak.window.rebuilds > none.window.rebuilds);  // a crush rebuilds the window
   REQUIRE(weak.energy_booked);
   const CutEnergy& e = weak.energy;
-  CHECK_THAT(e.dissipated_j + e.left_kinetic_j + e.left_strain_j + e.stored_change_j, WithinRel(e.tool_work_j, 1e-12));
+  CHECK_THAT(e.dissipated_J + e.left_kinetic_J + e.left_strain_J + e.stored_change_J, WithinRel(e.tool_work_J, 1e-12));
   const auto peak = [](const CutResult& r) {
     double m = 0;
-    for (const auto& x : r.samples) m = std::max(m, x.main_force_n);
+    for (const auto& x : r.samples) m = std::max(m, x.main_force_N);
     return m;
   };
   CHECK(peak(weak) <= peak(none));
   CutParams q = p;
-  q.*strength = weak_pa;
+  q.window.*strength = weak_Pa;
   CutRun half(specimen, q);
   for (std::size_t k = 0; k < weak.samples.size() / 2; ++k) half.advance();
   CutRun restored = CutRun::deserialize(half.serialize());
   while (restored.advance()) {
   }
-  CHECK(restored.result().samples.back().main_force_n == weak.samples.back().main_force_n);
+  CHECK(restored.result().samples.back().main_force_N == weak.samples.back().main_force_N);
   CHECK(restored.result().window.chips.*count == weak.window.chips.*count);
-  p.active_window = false;
-  p.*strength = 85e6;
+  p.window.enabled = false;
+  p.window.*strength = 85e6;
   CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains(key + " = 85"));
 }
 }  // namespace
 
 TEST_CASE("cut window: loose grains the tool presses beyond their splitting load are crushed", "[cut_window]") {
   // At 1 MPa: a splitting load of 0.03 N for a 10 um disk, 1 mm thick.
-  check_crushing(&CutParams::window_grain_strength_pa, 1e6, &ChipAccount::crushed_grains, &ChipAccount::crushed_mass_kg,
-                 &ChipAccount::crushed_tied_disks, "active_window.grain_strength_MPa");
+  check_crushing(&CutParams::ActiveWindow::grain_strength_Pa, 1e6, &ChipAccount::crushed_grains,
+                 &ChipAccount::crushed_mass_kg, &ChipAccount::crushed_tied_disks, "active_window.grain_strength_MPa");
 }
 
 TEST_CASE("cut window: the workpiece's own disks the tool presses beyond their splitting load are crushed",
           "[cut_window]") {
   // At 20 MPa: 0.6 N for a 10 um disk; the loose grains' law off, so none of them is crushed.
-  check_crushing(&CutParams::window_tied_grain_strength_pa, 20e6, &ChipAccount::crushed_tied_disks,
+  check_crushing(&CutParams::ActiveWindow::tied_grain_strength_Pa, 20e6, &ChipAccount::crushed_tied_disks,
                  &ChipAccount::crushed_tied_mass_kg, &ChipAccount::crushed_grains,
                  "active_window.tied_grain_strength_MPa");
 }
@@ -329,12 +330,12 @@ TEST_CASE("cut window: contacts between two held disks are left out when asked",
 
 TEST_CASE("cut window: the window's keys are validated with their dotted names", "[cut_window]") {
   CutParams p = windowed(3, 2, 2, 2);
-  p.window_shift_depths = 3;
+  p.window.shift_depths = 3;
   CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains("active_window.shift_depths = 3"));
   p = windowed(0, 2, 2, 2);
   CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains("active_window.ahead_depths = 0"));
   p = windowed(3, 2, 2, 2);
-  p.active_window = false;
-  p.window_ahead_depths = 0;  // not read without a window
+  p.window.enabled = false;
+  p.window.ahead_depths = 0;  // not read without a window
   CHECK_NOTHROW(validate_cut_params(p));
 }

@@ -20,12 +20,12 @@ namespace {
 
 CutParams grooved(GrooveShape shape) {
   CutParams p;
-  p.groove_shape = shape;
-  p.groove_depth_m = 0.1e-3;
-  p.groove_pitch_m = 0.2e-3;
-  p.groove_width_m = 0.06e-3;
-  p.groove_bottom_width_m = 0.02e-3;
-  p.length_m = 1e-3;
+  p.grooves.shape = shape;
+  p.grooves.depth_m = 0.1e-3;
+  p.grooves.pitch_m = 0.2e-3;
+  p.grooves.width_m = 0.06e-3;
+  p.grooves.bottom_width_m = 0.02e-3;
+  p.cut.length_m = 1e-3;
   return p;
 }
 
@@ -74,8 +74,8 @@ TEST_CASE("cutting: distance to a groove's walls and bottom", "[cutting]") {
 TEST_CASE("cutting: the grooves' laser-affected layer breaks the joints near the walls and bottom", "[cutting]") {
   const Simulation specimen = quick_workpiece_specimen(0.4e-3, 0.3e-3, 11);
   CutParams g = grooved(GrooveShape::rectangular);
-  g.groove_depth_m = 0.08e-3;
-  g.groove_pitch_m = 0.2e-3;
+  g.grooves.depth_m = 0.08e-3;
+  g.grooves.pitch_m = 0.2e-3;
   std::size_t removed = 0;
   const Simulation pristine = make_workpiece(specimen, g, removed);
   // The specimen's box, as CutRun finds it (disk edges).
@@ -96,8 +96,8 @@ TEST_CASE("cutting: the grooves' laser-affected layer breaks the joints near the
   CHECK(apply_groove_damage(none, g, box) == std::array<std::size_t, 2>{0, 0});
   CHECK(broken_elements(none) == broken_elements(pristine));
   // A layer of 20 um, every joint in it broken: exactly those joints, each whole.
-  g.groove_damage_depth_m = 20e-6;
-  g.groove_damage_broken_fraction = 1;
+  g.grooves.damage_depth_m = 20e-6;
+  g.grooves.damage_broken_fraction = 1;
   Simulation all = pristine;
   const auto counts = apply_groove_damage(all, g, box);
   CHECK(counts[0] >= 10);  // a layer, not a few joints (about 20 in this packing)
@@ -111,13 +111,13 @@ TEST_CASE("cutting: the grooves' laser-affected layer breaks the joints near the
     const double x = 0.5 * (q.x[i] + q.x[j]), depth = y_top - 0.5 * (q.y[i] + q.y[j]);
     double d = 1;
     for (double c : centres) d = std::min(d, distance_to_groove_outline(g, x - c, depth));
-    if (d > g.groove_damage_depth_m)
+    if (d > g.grooves.damage_depth_m)
       CHECK(b.n_bonded_elements(k) == pristine.bonds().n_bonded_elements(k));
     else
       CHECK(b.n_bonded_elements(k) == 0);
   }
   // Half of them: a binomial share (6 sigma), the same joints on a second call, none when the share is 0.
-  g.groove_damage_broken_fraction = 0.5;
+  g.grooves.damage_broken_fraction = 0.5;
   Simulation half = pristine, again = pristine;
   const auto h = apply_groove_damage(half, g, box);
   CHECK(h[0] == counts[0]);
@@ -125,12 +125,12 @@ TEST_CASE("cutting: the grooves' laser-affected layer breaks the joints near the
   CHECK(std::abs(static_cast<double>(h[1]) - 0.5 * n) < 6 * std::sqrt(0.25 * n));
   apply_groove_damage(again, g, box);
   CHECK(again.bonds().bonded == half.bonds().bonded);
-  g.groove_damage_broken_fraction = 0;
+  g.grooves.damage_broken_fraction = 0;
   Simulation zero = pristine;
   CHECK(apply_groove_damage(zero, g, box)[1] == 0);
   CHECK(zero.bonds().bonded == pristine.bonds().bonded);
   // A thicker layer holds more joints.
-  g.groove_damage_depth_m = 40e-6;
+  g.grooves.damage_depth_m = 40e-6;
   Simulation thick = pristine;
   CHECK(apply_groove_damage(thick, g, box)[0] > counts[0]);
 }
@@ -141,7 +141,7 @@ TEST_CASE("cutting: grooves every pitch across the cut path", "[cutting]") {
   REQUIRE(c.size() == 5);  // 0.9, 0.7, 0.5, 0.3, 0.1 mm: the last still right of the left edge
   for (std::size_t k = 0; k < c.size(); ++k)
     CHECK_THAT(c[k], WithinAbs(0.9e-3 - 0.2e-3 * static_cast<double>(k), 1e-12));
-  p.length_m = 0.3e-3;  // the whole surface is grooved, not only the tool's path
+  p.cut.length_m = 0.3e-3;  // the whole surface is grooved, not only the tool's path
   CHECK(groove_centres(p, 0, 1e-3) == c);
   CHECK(groove_centres(p, 0.15e-3, 1e-3).size() == 4);  // 0.1 mm would reach past a left edge at 0.15 mm
   CHECK(inside_any_groove(p, c, 1e-3, 0.9e-3, 0.95e-3));
@@ -151,7 +151,7 @@ TEST_CASE("cutting: grooves every pitch across the cut path", "[cutting]") {
 
 TEST_CASE("cutting: tool faces have the rake and clearance angles, tip at the cut depth", "[cutting]") {
   CutParams p;
-  p.depth_of_cut_m = 0.1e-3;
+  p.cut.depth_of_cut_m = 0.1e-3;
   const auto v = tool_outline(p, 2e-3, 0.5e-3);
   REQUIRE(v.size() == 3);  // rake top, tip, clearance end (closed by the back face)
   // Tip = lowest point at the cut line; front-most point at x_front.
@@ -166,8 +166,8 @@ TEST_CASE("cutting: tool faces have the rake and clearance angles, tip at the cu
   // 0.1 mm tan 15 deg ahead of the tip.
   CHECK_THAT(leading_x_in_band(v, 0.5e-3, 0.6e-3),
              WithinAbs(v[1][0] - 0.1e-3 * std::tan(15 * std::numbers::pi / 180), 1e-12));
-  p.rake_deg = 10;
-  p.clearance_deg = 7;
+  p.tool.rake_deg = 10;
+  p.tool.clearance_deg = 7;
   const auto w = tool_outline(p, 0, 0);
   CHECK_THAT(angle_deg(w[1], w[0]), WithinAbs(90 - 10, 1e-9));
   CHECK_THAT(angle_deg(w[1], w[2]), WithinAbs(7, 1e-9));
@@ -176,25 +176,25 @@ TEST_CASE("cutting: tool faces have the rake and clearance angles, tip at the cu
 
 TEST_CASE("cutting: the rake face reaches 3 depths of cut above the tip, or tool.rake_face_height_mm", "[cutting]") {
   CutParams p;
-  p.depth_of_cut_m = 0.1e-3;
+  p.cut.depth_of_cut_m = 0.1e-3;
   CHECK_THAT(tool_outline(p, 0, 0)[0][1], WithinAbs(0.3e-3, 1e-15));  // v[0] is the rake face's top
-  p.depth_of_cut_m = 0.2e-3;
+  p.cut.depth_of_cut_m = 0.2e-3;
   CHECK_THAT(tool_outline(p, 0, 0)[0][1], WithinAbs(0.6e-3, 1e-15));
   // One tool for every depth: the same height whatever the depth, the rake angle kept.
-  p.rake_face_height_m = 0.25e-3;
+  p.tool.rake_face_height_m = 0.25e-3;
   validate_cut_params(p);
   const auto v = tool_outline(p, 0, 0);
   CHECK_THAT(v[0][1] - v[1][1], WithinAbs(0.25e-3, 1e-15));
   CHECK_THAT(angle_deg(v[1], v[0]), WithinAbs(105, 1e-9));
   // Not above the uncut surface: an error naming the key.
-  p.rake_face_height_m = 0.2e-3;
+  p.tool.rake_face_height_m = 0.2e-3;
   CHECK_THROWS_WITH(validate_cut_params(p), Catch::Matchers::Contains("tool.rake_face_height_mm"));
 }
 
 TEST_CASE("cutting: a rounded edge is tangent to both faces and touches the cut line", "[cutting]") {
   CutParams p;
-  p.edge_radius_m = 5e-6;
-  p.edge_segments = 6;
+  p.tool.edge_radius_m = 5e-6;
+  p.tool.edge_segments = 6;
   const auto v = tool_outline(p, 0, 1e-3);
   REQUIRE(v.size() == 2 + 7);
   CHECK_THAT(angle_deg(v[1], v[0]), WithinAbs(105, 1e-9));  // rake face direction kept
@@ -221,7 +221,7 @@ TEST_CASE("cutting: force signs (material resisting the tool gives positive main
   const int d = sim.add_particle(0, 0, 10e-6);
   sim.particles().group[static_cast<std::size_t>(d)] = 1;
   CutParams p;
-  p.depth_of_cut_m = 20e-6;
+  p.cut.depth_of_cut_m = 20e-6;
   for (auto [a, b] : {std::pair{0, 1}, std::pair{1, 2}, std::pair{2, 0}}) {
     // Tip 5 um below the disk's centre, rake face crossing y = 0 at x = 8 um: it overlaps the disk's right side.
     const double x_front = 8e-6 - 55e-6 * std::tan(15 * std::numbers::pi / 180);
@@ -248,37 +248,37 @@ TEST_CASE("cutting: without friction or fracture, the tool's work is the energy 
   SpecimenReport report;
   const Simulation specimen = make_specimen(kerf::dem::testing::conservative_material(), spec, report);
   CutParams p;
-  p.depth_of_cut_m = 0.03e-3;
-  p.speed_m_per_s = 2;
-  p.length_m = 0.03e-3;
-  p.entry_fraction = 0.1;
-  p.tool_friction_coefficient = 0;
+  p.cut.depth_of_cut_m = 0.03e-3;
+  p.cut.speed_m_per_s = 2;
+  p.cut.length_m = 0.03e-3;
+  p.cut.entry_fraction = 0.1;
+  p.tool.friction_coefficient = 0;
   CutRun run(specimen, p);
   while (run.advance()) {
   }
   const CutResult& r = run.result();
   REQUIRE(r.energy_booked);
-  INFO("work " << r.energy.tool_work_j << " J, dissipated " << r.energy.dissipated_j << " J, stored change "
-               << r.energy.stored_change_j << " J");
+  INFO("work " << r.energy.tool_work_J << " J, dissipated " << r.energy.dissipated_J << " J, stored change "
+               << r.energy.stored_change_J << " J");
   CHECK(r.cracks.tensile + r.cracks.shear == 0);
-  CHECK(r.energy.left_kinetic_j == 0);  // no window: nothing leaves
-  CHECK(r.energy.tool_work_j > 0);
-  CHECK(std::abs(r.energy.dissipated_j) < 1e-3 * r.energy.tool_work_j);  // measured: 9e-5
+  CHECK(r.energy.left_kinetic_J == 0);  // no window: nothing leaves
+  CHECK(r.energy.tool_work_J > 0);
+  CHECK(std::abs(r.energy.dissipated_J) < 1e-3 * r.energy.tool_work_J);  // measured: 9e-5
 }
 
 TEST_CASE("cutting: parameters are validated with the dotted key", "[cutting]") {
   CutParams p = grooved(GrooveShape::trapezoidal);
-  p.groove_bottom_width_m = 0.07e-3;
+  p.grooves.bottom_width_m = 0.07e-3;
   CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains("grooves.bottom_width_mm = 0.07"));
   p = grooved(GrooveShape::rectangular);
-  p.groove_width_m = 0.3e-3;
+  p.grooves.width_m = 0.3e-3;
   CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains("grooves.width_mm = 0.3"));
   p = CutParams{};
-  p.rake_deg = 60;
-  p.clearance_deg = 40;
+  p.tool.rake_deg = 60;
+  p.tool.clearance_deg = 40;
   CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains("tool.clearance_deg = 40"));
   p = CutParams{};
-  p.edge_radius_m = 1e-3;
+  p.tool.edge_radius_m = 1e-3;
   CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains("tool.edge_radius_um = 1000"));
   kerf::Json scene{{"cut", {{"depth_of_cut_mm", 0.1}, {"length_mm", 0.2}}}, {"grooves", {{"shape", "triangular"}}}};
   kerf::ObjectReader root(scene, "");
@@ -301,23 +301,23 @@ TEST_CASE("cutting: mean forces per travel window", "[cutting]") {
   REQUIRE(w.size() == 6);  // 0.6 / 0.1 rounds to 6.000000000000001: no seventh, empty window
   int n = 0;
   double sum = 0;
-  for (const auto& x : w) n += x.n_samples, sum += x.main_force_n * x.n_samples;
+  for (const auto& x : w) n += x.n_samples, sum += x.main_force_N * x.n_samples;
   CHECK(n == static_cast<int>(samples.size()));  // every sample in exactly one window
   double direct = 0;
-  for (const auto& s : samples) direct += s.main_force_n;
+  for (const auto& s : samples) direct += s.main_force_N;
   CHECK_THAT(sum, WithinRel(direct, 1e-12));  // the windows' weighted means give back the whole mean
-  CHECK(w[0].main_force_n == 1.0);
-  CHECK(w[4].main_force_n == 3.0);
+  CHECK(w[0].main_force_N == 1.0);
+  CHECK(w[4].main_force_N == 3.0);
   CHECK_THAT(w[5].to_m, WithinAbs(0.6e-3, 1e-18));
   CHECK(w[5].n_samples == 101);               // the sample at the end of the travel goes to the last window
   for (std::size_t k = 0; k < w.size(); ++k)  // a linear force: each window's mean is its mid-travel value
-    CHECK_THAT(w[k].thrust_force_n, WithinAbs(0.1 * (static_cast<double>(k) + 0.5), 0.001));
+    CHECK_THAT(w[k].thrust_force_N, WithinAbs(0.1 * (static_cast<double>(k) + 0.5), 0.001));
   // A window longer than the travel: one window, the whole mean.
   const auto one = travel_window_means(samples, 0.6e-3, 1e-3);
   REQUIRE(one.size() == 1);
-  CHECK_THAT(one[0].main_force_n, WithinRel(direct / static_cast<double>(samples.size()), 1e-12));
+  CHECK_THAT(one[0].main_force_N, WithinRel(direct / static_cast<double>(samples.size()), 1e-12));
   CutParams p;
-  p.window_m = 0;
+  p.cut.window_m = 0;
   CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains("cut.window_mm = 0"));
 }
 
@@ -339,7 +339,7 @@ TEST_CASE("cutting: means say whether they are steady (after the entry, with sta
   steady_statistics(steady, kEntryTravelM);
   CHECK(steady.steady);
   CHECK(steady.not_steady_reason.empty());
-  CHECK(std::isfinite(steady.main_force_sem_n));
+  CHECK(std::isfinite(steady.main_force_sem_N));
   CHECK(steady.steady_from_travel_m == kEntryTravelM);
   CHECK_THAT(steady.steady_to_travel_m, WithinAbs(2e-3, 1e-15));
   // A scene's entry_fraction x length a hair short of 0.3 mm (0.0272727 x 11 mm) still counts as after the entry.
@@ -361,7 +361,7 @@ TEST_CASE("cutting: means say whether they are steady (after the entry, with sta
   // Past the entry but with too few samples for a standard error: not steady either, and said why.
   CutResult few = cut_to(0.303);
   steady_statistics(few, kEntryTravelM);
-  REQUIRE_FALSE(std::isfinite(few.main_force_sem_n));
+  REQUIRE_FALSE(std::isfinite(few.main_force_sem_N));
   CHECK_FALSE(few.steady);
   CHECK_THAT(few.not_steady_reason,
              Catch::Contains("cannot be computed from " + std::to_string(few.n_steady_samples) + " samples"));
@@ -423,9 +423,9 @@ TEST_CASE("cutting: the steady damage depth's 95th percentile is not the sparse 
 TEST_CASE("cutting: a small cut regression (forces, cracks, determinism, grooves)", "[cutting]") {
   const Simulation specimen = quick_workpiece_specimen(0.4e-3, 0.25e-3, 3);
   CutParams p;
-  p.depth_of_cut_m = 0.05e-3;
-  p.speed_m_per_s = 2;
-  p.length_m = 0.08e-3;
+  p.cut.depth_of_cut_m = 0.05e-3;
+  p.cut.speed_m_per_s = 2;
+  p.cut.length_m = 0.08e-3;
   const auto run = [&](const CutParams& params) {
     CutRun r(specimen, params);
     while (r.advance()) {
@@ -433,25 +433,25 @@ TEST_CASE("cutting: a small cut regression (forces, cracks, determinism, grooves
     return r.result();
   };
   const CutResult a = run(p);
-  INFO("main " << a.main_force_n << " N, thrust " << a.thrust_force_n << " N, cracks " << a.cracks.tensile << "+"
+  INFO("main " << a.main_force_N << " N, thrust " << a.thrust_force_N << " N, cracks " << a.cracks.tensile << "+"
                << a.cracks.shear << " (chip " << a.cracks.chip << ")");
-  CHECK(std::isfinite(a.main_force_n));
-  CHECK(std::isfinite(a.thrust_force_n));
-  CHECK(a.main_force_n > 0);
-  CHECK(a.thrust_force_n > 0);
-  CHECK(a.main_force_std_n > 0);
+  CHECK(std::isfinite(a.main_force_N));
+  CHECK(std::isfinite(a.thrust_force_N));
+  CHECK(a.main_force_N > 0);
+  CHECK(a.thrust_force_N > 0);
+  CHECK(a.main_force_std_N > 0);
   CHECK(a.n_steady_samples > 10);
   CHECK(a.cracks.tensile + a.cracks.shear > 0);
   CHECK(a.cracks.chip > 0);
-  CHECK(a.samples.back().travel_m >= p.length_m);
+  CHECK(a.samples.back().travel_m >= p.cut.length_m);
   CHECK(a.n_removed_by_grooves == 0);
   // The steady part machined the surface from the edge's final x over the travel after the entry; a sharp
   // edge starts half a largest radius right of the workpiece (box[1]) and the rake face leans forwards over
   // the depth of cut, so the final edge lies that far right of box[1] - travel.
   const double edge_start =
-      a.workpiece_box_m[1] + 0.5 * 13e-6 + p.depth_of_cut_m * std::tan(15 * std::numbers::pi / 180);
+      a.workpiece_box_m[1] + 0.5 * 13e-6 + p.cut.depth_of_cut_m * std::tan(15 * std::numbers::pi / 180);
   CHECK_THAT(a.steady_machined_x_m[1] - a.steady_machined_x_m[0],
-             WithinRel(a.samples.back().travel_m - p.entry_fraction * p.length_m, 1e-9));
+             WithinRel(a.samples.back().travel_m - p.cut.entry_fraction * p.cut.length_m, 1e-9));
   CHECK_THAT(a.steady_machined_x_m[0], WithinAbs(edge_start - a.samples.back().travel_m, 1.5e-6));
   CHECK(a.cracks.subsurface_steady <= a.cracks.subsurface);
   CHECK(a.cracks.subsurface_steady_damage_depth_m <= a.cracks.subsurface_damage_depth_m);
@@ -459,8 +459,8 @@ TEST_CASE("cutting: a small cut regression (forces, cracks, determinism, grooves
   const CutResult b = run(p);
   REQUIRE(b.samples.size() == a.samples.size());
   for (std::size_t k = 0; k < a.samples.size(); ++k) {
-    CHECK(a.samples[k].main_force_n == b.samples[k].main_force_n);
-    CHECK(a.samples[k].thrust_force_n == b.samples[k].thrust_force_n);
+    CHECK(a.samples[k].main_force_N == b.samples[k].main_force_N);
+    CHECK(a.samples[k].thrust_force_N == b.samples[k].thrust_force_N);
   }
   // Saved halfway and restored: the rest of the cut is bit-identical.
   CutRun half(specimen, p);
@@ -469,55 +469,55 @@ TEST_CASE("cutting: a small cut regression (forces, cracks, determinism, grooves
   while (restored.advance()) {
   }
   REQUIRE(restored.result().samples.size() == a.samples.size());
-  CHECK(restored.result().samples.back().main_force_n == a.samples.back().main_force_n);
-  CHECK(restored.result().main_force_n == a.main_force_n);
+  CHECK(restored.result().samples.back().main_force_N == a.samples.back().main_force_N);
+  CHECK(restored.result().main_force_N == a.main_force_N);
   CHECK(restored.result().cracks.chip == a.cracks.chip);
   // A frictionless tool (the engine test checks the law itself): other forces, and a checkpoint keeps the
   // tool's friction (restored halfway, the rest of the cut is bit-identical to the uninterrupted one).
   CutParams frictionless = p;
-  frictionless.tool_friction_coefficient = 0;
+  frictionless.tool.friction_coefficient = 0;
   const CutResult smooth = run(frictionless);
-  CHECK(smooth.main_force_n != a.main_force_n);
+  CHECK(smooth.main_force_N != a.main_force_N);
   CutRun smooth_half(specimen, frictionless);
   for (std::size_t k = 0; k < smooth.samples.size() / 2; ++k) smooth_half.advance();
   CutRun smooth_restored = CutRun::deserialize(smooth_half.serialize());
   while (smooth_restored.advance()) {
   }
-  CHECK(smooth_restored.params().tool_friction_coefficient == 0.0);
+  CHECK(smooth_restored.params().tool.friction_coefficient == 0.0);
   // ... and the rake face's height.
   CutParams short_rake = p;
-  short_rake.rake_face_height_m = 1.5 * p.depth_of_cut_m;
-  CHECK(CutRun::deserialize(CutRun(specimen, short_rake).serialize()).params().rake_face_height_m ==
-        short_rake.rake_face_height_m);
-  CHECK(smooth_restored.result().main_force_n == smooth.main_force_n);
-  CHECK(smooth_restored.result().thrust_force_n == smooth.thrust_force_n);
+  short_rake.tool.rake_face_height_m = 1.5 * p.cut.depth_of_cut_m;
+  CHECK(CutRun::deserialize(CutRun(specimen, short_rake).serialize()).params().tool.rake_face_height_m ==
+        short_rake.tool.rake_face_height_m);
+  CHECK(smooth_restored.result().main_force_N == smooth.main_force_N);
+  CHECK(smooth_restored.result().thrust_force_N == smooth.thrust_force_N);
   // Neither the tool nor a groove may reach the held bottom rows (workpiece 0.25 mm tall, held rows 26 um).
   CutParams too_deep = p;
-  too_deep.depth_of_cut_m = 0.24e-3;
+  too_deep.cut.depth_of_cut_m = 0.24e-3;
   CHECK_THROWS_WITH(CutRun(specimen, too_deep), Catch::Contains("cut.depth_of_cut_mm = 0.24"));
   too_deep = grooved(GrooveShape::rectangular);
-  too_deep.length_m = p.length_m;
-  too_deep.groove_depth_m = 0.24e-3;
+  too_deep.cut.length_m = p.cut.length_m;
+  too_deep.grooves.depth_m = 0.24e-3;
   CHECK_THROWS_WITH(CutRun(specimen, too_deep), Catch::Contains("grooves.depth_mm = 0.24"));
-  too_deep.groove_depth_m = 0.2e-3;  // deep, but above the held rows: a valid workpiece
+  too_deep.grooves.depth_m = 0.2e-3;  // deep, but above the held rows: a valid workpiece
   CHECK_NOTHROW(CutRun(specimen, too_deep));
   // Grooves: fewer particles.
   CutParams g = p;
-  g.groove_shape = GrooveShape::rectangular;
-  g.groove_depth_m = p.depth_of_cut_m;
-  g.groove_pitch_m = 0.1e-3;
-  g.groove_width_m = 0.04e-3;
+  g.grooves.shape = GrooveShape::rectangular;
+  g.grooves.depth_m = p.cut.depth_of_cut_m;
+  g.grooves.pitch_m = 0.1e-3;
+  g.grooves.width_m = 0.04e-3;
   std::size_t removed = 0;
   const Simulation work = make_workpiece(specimen, g, removed);
   CHECK(removed > 0);
   CHECK(work.particles().size() + removed == specimen.particles().size());
   CHECK(work.bonds().size() < specimen.bonds().size());
   // An inverted trapezoid with the same top width removes fewer disks than the rectangle.
-  g.groove_width_m = 0.08e-3;
+  g.grooves.width_m = 0.08e-3;
   std::size_t removed_rectangle = 0, removed_trapezoid = 0;
   make_workpiece(specimen, g, removed_rectangle);
-  g.groove_shape = GrooveShape::trapezoidal;
-  g.groove_bottom_width_m = 0.01e-3;
+  g.grooves.shape = GrooveShape::trapezoidal;
+  g.grooves.bottom_width_m = 0.01e-3;
   make_workpiece(specimen, g, removed_trapezoid);
   CHECK(removed_trapezoid > 0);
   CHECK(removed_trapezoid < removed_rectangle);
@@ -544,46 +544,46 @@ TEST_CASE("cutting: a cut the disks cannot resolve or the workpiece cannot hold 
     x_min = std::min(x_min, q.x[k] - q.radius[k]), x_max = std::max(x_max, q.x[k] + q.radius[k]);
   }
   CutParams p;
-  p.depth_of_cut_m = 0.05e-3;
-  p.speed_m_per_s = 2;
-  p.length_m = 0.05e-3;
+  p.cut.depth_of_cut_m = 0.05e-3;
+  p.cut.speed_m_per_s = 2;
+  p.cut.length_m = 0.05e-3;
   const double dt = CutRun(specimen, p).result().time_step_s;
   const auto throws_on = [&](const CutParams& bad, const std::string& key) {
     CHECK_THROWS_WITH(CutRun(specimen, bad), Catch::Contains(key + " = "));
   };
   // Depth: at least the smallest disk radius.
   CutParams c = p;
-  c.depth_of_cut_m = 0.99 * r_min;
+  c.cut.depth_of_cut_m = 0.99 * r_min;
   throws_on(c, "cut.depth_of_cut_mm");
-  c.depth_of_cut_m = 1.01 * r_min;
+  c.cut.depth_of_cut_m = 1.01 * r_min;
   CHECK_NOTHROW(CutRun(specimen, c));
   // Travel: the tool's leading edge, half a largest radius right of the workpiece at the start, stops
   // before the held left disks (centres within 2 largest radii of the left side, so reaching 3 of them).
   const double max_travel = (x_max - x_min) - 2.5 * r_max;
   c = p;
-  c.length_m = 1.001 * max_travel;
+  c.cut.length_m = 1.001 * max_travel;
   throws_on(c, "cut.length_mm");
-  c.length_m = 0.999 * max_travel;
+  c.cut.length_m = 0.999 * max_travel;
   CHECK_NOTHROW(CutRun(specimen, c));
   // Speed: at most 1 % of the smallest radius per step; at least fast enough to finish within 1e9 steps.
   c = p;
-  c.speed_m_per_s = 1.001 * 0.01 * r_min / dt;
+  c.cut.speed_m_per_s = 1.001 * 0.01 * r_min / dt;
   throws_on(c, "cut.speed_m_per_s");
-  c.speed_m_per_s = 0.999 * 0.01 * r_min / dt;
+  c.cut.speed_m_per_s = 0.999 * 0.01 * r_min / dt;
   CHECK_NOTHROW(CutRun(specimen, c));
-  c.speed_m_per_s = 0.999 * p.length_m / (1e9 * dt);
+  c.cut.speed_m_per_s = 0.999 * p.cut.length_m / (1e9 * dt);
   throws_on(c, "cut.speed_m_per_s");
-  c.speed_m_per_s = 1.001 * p.length_m / (1e9 * dt);
+  c.cut.speed_m_per_s = 1.001 * p.cut.length_m / (1e9 * dt);
   CHECK_NOTHROW(CutRun(specimen, c));
   // Grooves that remove no disk: too narrow to hold a disk's centre, or a pitch with no groove on the
   // surface. A groove as wide as a disk removes some.
   c = grooved(GrooveShape::rectangular);
-  c.length_m = p.length_m;
-  c.groove_depth_m = p.depth_of_cut_m;
-  c.groove_width_m = 0.01 * r_min;
+  c.cut.length_m = p.cut.length_m;
+  c.grooves.depth_m = p.cut.depth_of_cut_m;
+  c.grooves.width_m = 0.01 * r_min;
   throws_on(c, "grooves.width_mm");
-  c.groove_width_m = 2 * r_max;
+  c.grooves.width_m = 2 * r_max;
   CHECK_NOTHROW(CutRun(specimen, c));
-  c.groove_pitch_m = 3 * (x_max - x_min);
+  c.grooves.pitch_m = 3 * (x_max - x_min);
   throws_on(c, "grooves.pitch_mm");
 }

@@ -23,9 +23,9 @@ constexpr double kCuttingNPerM = 500, kThrustNPerM = 400;  // 0.5 and 0.4 N/mm: 
 
 CutParams zone_cut() {
   CutParams p = block_cut(true);
-  p.edge_zone = true;
-  p.edge_cutting_force_n_per_m = kCuttingNPerM;
-  p.edge_thrust_force_n_per_m = kThrustNPerM;
+  p.edge_zone.enabled = true;
+  p.edge_zone.cutting_force_N_per_m = kCuttingNPerM;
+  p.edge_zone.thrust_force_N_per_m = kThrustNPerM;
   return p;
 }
 
@@ -49,15 +49,16 @@ ZoneRun run_zone(const Simulation& workpiece, const CutParams& p) {
     if (run.result().samples.size() == before) break;
     const auto& loads = run.simulation().disk_loads();
     const bool booked = counted;
-    counted = counted || run.result().samples.back().travel_m >= p.entry_fraction * p.length_m;
+    counted = counted || run.result().samples.back().travel_m >= p.cut.entry_fraction * p.cut.length_m;
     if (loads.empty()) continue;
     ++z.loaded_samples;
     z.loaded_booked += booked;
     double fx = 0, fy = 0;
-    for (const auto& l : loads) fx += l.fx_n, fy += l.fy_n;
-    z.worst_sum_error = std::max({z.worst_sum_error,
-                                  std::abs(fx + p.edge_cutting_force_n_per_m * t) / (p.edge_cutting_force_n_per_m * t),
-                                  std::abs(fy + p.edge_thrust_force_n_per_m * t) / (p.edge_thrust_force_n_per_m * t)});
+    for (const auto& l : loads) fx += l.fx_N, fy += l.fy_N;
+    z.worst_sum_error =
+        std::max({z.worst_sum_error,
+                  std::abs(fx + p.edge_zone.cutting_force_N_per_m * t) / (p.edge_zone.cutting_force_N_per_m * t),
+                  std::abs(fy + p.edge_zone.thrust_force_N_per_m * t) / (p.edge_zone.thrust_force_N_per_m * t)});
   }
   z.result = run.result();
   return z;
@@ -68,11 +69,11 @@ ZoneRun run_zone(const Simulation& workpiece, const CutParams& p) {
 TEST_CASE("edge zone: off, the cut is today's to the bit, whatever its other keys", "[edge_zone]") {
   const Simulation specimen = quick_workpiece_specimen(0.6e-3, 0.25e-3, 7);
   CutParams p = windowed(3, 2, 2, 2);
-  p.length_m = 0.1e-3;
+  p.cut.length_m = 0.1e-3;
   CutParams keys = p;
-  keys.edge_cutting_force_n_per_m = kCuttingNPerM;
-  keys.edge_thrust_force_n_per_m = kThrustNPerM;
-  keys.edge_zone_radius_m = 30e-6;
+  keys.edge_zone.cutting_force_N_per_m = kCuttingNPerM;
+  keys.edge_zone.thrust_force_N_per_m = kThrustNPerM;
+  keys.edge_zone.radius_m = 30e-6;
   const auto cut = [&](const CutParams& q) {
     CutRun run(specimen, q);
     while (run.advance()) {
@@ -82,8 +83,8 @@ TEST_CASE("edge zone: off, the cut is today's to the bit, whatever its other key
   const CutResult a = cut(p), b = cut(keys);
   REQUIRE(a.samples.size() == b.samples.size());
   for (std::size_t k = 0; k < a.samples.size(); ++k) {
-    CHECK(a.samples[k].main_force_n == b.samples[k].main_force_n);
-    CHECK(a.samples[k].thrust_force_n == b.samples[k].thrust_force_n);
+    CHECK(a.samples[k].main_force_N == b.samples[k].main_force_N);
+    CHECK(a.samples[k].thrust_force_N == b.samples[k].thrust_force_N);
   }
   CHECK(b.edge_zone.samples == 0);
   CHECK(b.window.chips.edge_tied_disks + b.window.chips.edge_loose_disks == 0);
@@ -103,7 +104,7 @@ TEST_CASE("edge zone: an intact block carries the layer's force and its reaction
   CHECK(intact.worst_sum_error < 1e-12);
   CHECK(intact.result.window.chips.edge_tied_disks > 0);  // the disks the edge reached left as the layer's chip
   CHECK(intact.result.window.chips.edge_loose_disks == 0);
-  CHECK(z.tool_work_j > 0);
+  CHECK(z.tool_work_J > 0);
 
   // A bed of the default (damped, frictional) disks, which the tool pushes rather than scatters.
   Simulation bed = hex_workpiece(Material{}, 0.6e-3, 0.25e-3);
@@ -112,7 +113,7 @@ TEST_CASE("edge zone: an intact block carries the layer's force and its reaction
   CHECK(loose.result.edge_zone.samples > 10);
   CHECK(loose.result.edge_zone.intact_samples == 0);
   CHECK(loose.loaded_samples == 0);
-  CHECK(loose.result.edge_zone.tool_work_j == 0);
+  CHECK(loose.result.edge_zone.tool_work_J == 0);
   CHECK(loose.result.window.chips.edge_tied_disks == 0);
   CHECK(loose.result.window.chips.edge_loose_disks > 0);  // reached fragments leave as powder
 }
@@ -127,19 +128,19 @@ TEST_CASE("edge zone: the books balance, the tool's work on the layer its force 
   // integrator's error after the sudden release of the removed disks' joints; docs/notes/
   // 2026-12-06-toughness-damping-and-edge.md, item 4.)
   CutParams p = zone_cut();
-  p.tool_friction_coefficient = 0;
+  p.tool.friction_coefficient = 0;
   const Simulation block = hex_workpiece(conservative_material(), 0.6e-3, 0.25e-3);
   const ZoneRun z = run_zone(block, p);
   const CutResult& r = z.result;
   REQUIRE(r.energy_booked);
   const CutEnergy& e = r.energy;
-  CHECK_THAT(e.dissipated_j + e.left_kinetic_j + e.left_strain_j + e.stored_change_j, WithinRel(e.tool_work_j, 1e-12));
-  const double per_sample_j =
-      kCuttingNPerM * block.options().thickness_m * p.speed_m_per_s * r.time_step_s * p.sample_every_steps;
+  CHECK_THAT(e.dissipated_J + e.left_kinetic_J + e.left_strain_J + e.stored_change_J, WithinRel(e.tool_work_J, 1e-12));
+  const double per_sample_J =
+      kCuttingNPerM * block.options().thickness_m * p.cut.speed_m_per_s * r.time_step_s * p.cut.sample_every_steps;
   REQUIRE(z.loaded_booked > 10);
-  CHECK_THAT(r.edge_zone.tool_work_j, WithinRel(per_sample_j * static_cast<double>(z.loaded_booked), 1e-9));
-  CHECK(r.edge_zone.tool_work_j < e.tool_work_j);
-  CHECK(r.energy.left_strain_j > 0);  // the removed disks' joints and contacts
+  CHECK_THAT(r.edge_zone.tool_work_J, WithinRel(per_sample_J * static_cast<double>(z.loaded_booked), 1e-9));
+  CHECK(r.edge_zone.tool_work_J < e.tool_work_J);
+  CHECK(r.energy.left_strain_J > 0);  // the removed disks' joints and contacts
 }
 
 TEST_CASE("edge zone: resumed from its checkpoint, the cut and its record go on to the bit, a KERFCUTA state read",
@@ -155,18 +156,18 @@ TEST_CASE("edge zone: resumed from its checkpoint, the cut and its record go on 
   while (restored.advance()) {
   }
   const CutEdgeZoneRecord &a = whole.result().edge_zone, &b = restored.result().edge_zone;
-  CHECK(restored.result().samples.back().main_force_n == whole.result().samples.back().main_force_n);
+  CHECK(restored.result().samples.back().main_force_N == whole.result().samples.back().main_force_N);
   CHECK(b.samples == a.samples);
   CHECK(b.intact_samples == a.intact_samples);
-  CHECK(b.tool_work_j == a.tool_work_j);
-  CHECK(b.reaction_work_j == a.reaction_work_j);
+  CHECK(b.tool_work_J == a.tool_work_J);
+  CHECK(b.reaction_work_J == a.reaction_work_J);
   CHECK(restored.result().window.chips.edge_tied_disks == whole.result().window.chips.edge_tied_disks);
-  CHECK(restored.params().edge_zone_radius_m == whole.params().edge_zone_radius_m);
+  CHECK(restored.params().edge_zone.radius_m == whole.params().edge_zone.radius_m);
 
   // A KERFCUTA state is a KERFCUTB one without the zone's record at its end (its parameters, stored by key, are
   // read as their defaults when absent: the zone off).
   CutParams off = p;
-  off.edge_zone = false;
+  off.edge_zone.enabled = false;
   CutRun whole_off(block, off), half_off(block, off);
   while (whole_off.advance()) {
   }
@@ -177,22 +178,23 @@ TEST_CASE("edge zone: resumed from its checkpoint, the cut and its record go on 
   CutRun older = CutRun::deserialize(old);
   while (older.advance()) {
   }
-  CHECK(older.result().samples.back().main_force_n == whole_off.result().samples.back().main_force_n);
+  CHECK(older.result().samples.back().main_force_N == whole_off.result().samples.back().main_force_N);
   CHECK(older.result().edge_zone.samples == 0);
 }
 
 TEST_CASE("edge zone: its keys are validated with their dotted names", "[edge_zone]") {
   CutParams p = zone_cut();
-  p.active_window = false;
+  p.window.enabled = false;
   CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains("edge_zone.enabled"));
   p = zone_cut();
-  p.edge_thrust_force_n_per_m = -1;  // the cutting force alone
+  p.edge_zone.thrust_force_N_per_m = -1;  // the cutting force alone
   CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains("edge_zone.thrust_force_N_per_mm"));
   p = zone_cut();
-  p.edge_friction_coefficient = -0.1;
+  p.edge_zone.friction_coefficient = -0.1;
   CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains("edge_zone.friction_coefficient = -0.1"));
   p = zone_cut();
-  p.edge_cutting_force_n_per_m = p.edge_thrust_force_n_per_m = -1;  // neither given nor computed by a cut kind
+  p.edge_zone.cutting_force_N_per_m = p.edge_zone.thrust_force_N_per_m =
+      -1;  // neither given nor computed by a cut kind
   CHECK_NOTHROW(validate_cut_params(p));
   CHECK_THROWS_WITH(CutRun(hex_workpiece(Material{}, 0.6e-3, 0.25e-3), p),
                     Catch::Contains("edge_zone.cutting_force_N_per_mm"));

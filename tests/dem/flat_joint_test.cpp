@@ -51,9 +51,9 @@ bool same_bits(double a, double b) {
 BondResult require_fast_path_equal(Joint& general, Joint& fast, const BondKinematics& kin) {
   const BondResult a = flat_joint_update(general.p, general.geo, kin, general.shear, general.bonded, general.breaks);
   const BondResult b = flat_joint_update_two_bonded(fast.p, fast.geo, kin, fast.shear.data(), fast.breaks.data());
-  REQUIRE(same_bits(a.normal_force_n, b.normal_force_n));
-  REQUIRE(same_bits(a.shear_force_n, b.shear_force_n));
-  REQUIRE(same_bits(a.moment_nm, b.moment_nm));
+  REQUIRE(same_bits(a.normal_force_N, b.normal_force_N));
+  REQUIRE(same_bits(a.shear_force_N, b.shear_force_N));
+  REQUIRE(same_bits(a.moment_N_m, b.moment_N_m));
   REQUIRE(a.n_breaking == b.n_breaking);
   for (std::size_t e = 0; e < 2; ++e) {
     REQUIRE(same_bits(general.shear[e], fast.shear[e]));
@@ -70,8 +70,8 @@ TEST_CASE("flat joint: stiffness and bending closed forms", "[flat_joint]") {
   CHECK_THAT(kn, WithinRel(107e9 / 20e-6, 1e-14));
   const double g = 1e-9;
   auto r = j.update(g, 0, 0);
-  CHECK_THAT(r.normal_force_n, WithinRel(kn * 2 * R * t * g, 1e-12));
-  CHECK_THAT(r.moment_nm, WithinAbs(0, 1e-20));
+  CHECK_THAT(r.normal_force_N, WithinRel(kn * 2 * R * t * g, 1e-12));
+  CHECK_THAT(r.moment_N_m, WithinAbs(0, 1e-20));
   // Pure bending: M = -k_n I theta with I = t (2R)^3 / 12, for any number of elements.
   for (int nr : {2, 3, 8}) {
     FlatJointParams p;
@@ -79,35 +79,35 @@ TEST_CASE("flat joint: stiffness and bending closed forms", "[flat_joint]") {
     Joint b(p);
     const double theta = 1e-6;
     auto rb = b.update(0, theta, 0);
-    CHECK_THAT(rb.normal_force_n, WithinAbs(0, 1e-12));
-    CHECK_THAT(rb.moment_nm, WithinRel(-kn * t * std::pow(2 * R, 3) / 12 * theta, 1e-12));
+    CHECK_THAT(rb.normal_force_N, WithinAbs(0, 1e-12));
+    CHECK_THAT(rb.moment_N_m, WithinRel(-kn * t * std::pow(2 * R, 3) / 12 * theta, 1e-12));
   }
 }
 
 TEST_CASE("flat joint: tension breaks every element at sigma_c A_e", "[flat_joint]") {
   Joint j(FlatJointParams{});
-  const double g_break = j.p.bond.tensile_strength_pa / j.geo.normal_stiffness;
+  const double g_break = j.p.bond.tensile_strength_Pa / j.geo.normal_stiffness;
   auto below = j.update(0.999 * g_break, 0, 0);
   CHECK(below.n_breaking == 0);
   auto above = j.update(1.001 * g_break, 0, 0);
   CHECK(above.n_breaking == 2);
   CHECK(j.breaks[0] == BreakMode::tension);
   CHECK(j.breaks[1] == BreakMode::tension);
-  CHECK_THAT(above.normal_force_n, WithinRel(1.001 * 2 * j.p.bond.tensile_strength_pa * j.element_area(), 1e-12));
+  CHECK_THAT(above.normal_force_N, WithinRel(1.001 * 2 * j.p.bond.tensile_strength_Pa * j.element_area(), 1e-12));
   j.apply_breaks();
   // Broken and open: no force at all; closed again: compression only.
   auto open = j.update(2 * g_break, 0, 0);
-  CHECK(open.normal_force_n == 0);
+  CHECK(open.normal_force_N == 0);
   CHECK(open.n_breaking == 0);
   auto closed = j.update(-g_break, 0, 0);
-  CHECK_THAT(closed.normal_force_n, WithinRel(-2 * j.p.bond.tensile_strength_pa * j.element_area(), 1e-12));
+  CHECK_THAT(closed.normal_force_N, WithinRel(-2 * j.p.bond.tensile_strength_Pa * j.element_area(), 1e-12));
 }
 
 TEST_CASE("flat joint: shear breaks on the Coulomb envelope c - sigma tan(phi)", "[flat_joint]") {
   Joint j(FlatJointParams{});
   const double sigma = -100e6;  // compression
   const double gap = sigma / j.geo.normal_stiffness;
-  const double strength = j.p.bond.cohesion_pa - sigma * std::tan(j.p.bond.friction_angle_rad);
+  const double strength = j.p.bond.cohesion_Pa - sigma * std::tan(j.p.bond.friction_angle_rad);
   const double ds_break = strength / j.geo.shear_stiffness;  // tau = k_s * total shear displacement
   const int n = 1000;
   int broke_at = -1;
@@ -118,7 +118,7 @@ TEST_CASE("flat joint: shear breaks on the Coulomb envelope c - sigma tan(phi)",
       CHECK(j.breaks[0] == BreakMode::shear);
       CHECK(j.breaks[1] == BreakMode::shear);
       // Shear force opposes the displacement of disk 2.
-      CHECK_THAT(r.shear_force_n,
+      CHECK_THAT(r.shear_force_N,
                  WithinRel(-k * 1.5 * ds_break / n * j.geo.shear_stiffness * 2 * j.element_area(), 1e-9));
     }
   }
@@ -127,43 +127,43 @@ TEST_CASE("flat joint: shear breaks on the Coulomb envelope c - sigma tan(phi)",
   j.apply_breaks();
   // Residual: Coulomb friction mu |F_n| after breakage.
   auto r = j.update(gap, 0, ds_break);
-  CHECK_THAT(std::abs(r.shear_force_n),
-             WithinRel(j.p.residual_friction_coefficient * std::abs(r.normal_force_n), 1e-12));
+  CHECK_THAT(std::abs(r.shear_force_N),
+             WithinRel(j.p.residual_friction_coefficient * std::abs(r.normal_force_N), 1e-12));
 }
 
 TEST_CASE("flat joint: bending breaks the opening element only (partial damage)", "[flat_joint]") {
   Joint j(FlatJointParams{});
   // theta > 0 opens the element at xi < 0: g_e = -theta xi_e.
   const double xi0 = flat_joint_element_centroid(j.geo, 2, 0);
-  const double theta_break = j.p.bond.tensile_strength_pa / (j.geo.normal_stiffness * -xi0);
+  const double theta_break = j.p.bond.tensile_strength_Pa / (j.geo.normal_stiffness * -xi0);
   auto below = j.update(0, 0.99 * theta_break, 0);
   CHECK(below.n_breaking == 0);
   auto above = j.update(0, 1.01 * theta_break, 0);
   REQUIRE(above.n_breaking == 1);
   CHECK(j.breaks[0] == BreakMode::tension);
   CHECK(j.breaks[1] == BreakMode::none);
-  const double m_intact = above.moment_nm;
+  const double m_intact = above.moment_N_m;
   j.apply_breaks();
   // The damaged joint is softer in bending: its broken half is open and carries nothing.
   auto after = j.update(0, 1.01 * theta_break, 0);
   CHECK(after.n_breaking == 0);
-  CHECK(std::abs(after.moment_nm) < std::abs(m_intact));
-  CHECK(after.normal_force_n < 0);  // only the compressed bonded element pushes
+  CHECK(std::abs(after.moment_N_m) < std::abs(m_intact));
+  CHECK(after.normal_force_N < 0);  // only the compressed bonded element pushes
 }
 
 TEST_CASE("flat joint: load-unload-reload is elastic while bonded, compression-only once broken", "[flat_joint]") {
   Joint j(FlatJointParams{});
-  const double g_break = j.p.bond.tensile_strength_pa / j.geo.normal_stiffness;
+  const double g_break = j.p.bond.tensile_strength_Pa / j.geo.normal_stiffness;
   const double k = j.geo.normal_stiffness * 2 * j.geo.half_length_m * j.geo.thickness_m;
   for (double g : {0.5 * g_break, 0.0, -0.5 * g_break, 0.5 * g_break})
-    CHECK_THAT(j.update(g, 0, 0).normal_force_n, WithinRel(k * g, 1e-12));
-  CHECK(j.update(0.0, 0, 0).normal_force_n == 0);
+    CHECK_THAT(j.update(g, 0, 0).normal_force_N, WithinRel(k * g, 1e-12));
+  CHECK(j.update(0.0, 0, 0).normal_force_N == 0);
   j.update(1.2 * g_break, 0, 0);
   j.apply_breaks();
   // Unload to zero and below, reload into tension: same stiffness in compression, nothing in tension.
-  CHECK(j.update(0.5 * g_break, 0, 0).normal_force_n == 0);
-  CHECK_THAT(j.update(-0.5 * g_break, 0, 0).normal_force_n, WithinRel(-0.5 * k * g_break, 1e-12));
-  CHECK(j.update(0.5 * g_break, 0, 0).normal_force_n == 0);
+  CHECK(j.update(0.5 * g_break, 0, 0).normal_force_N == 0);
+  CHECK_THAT(j.update(-0.5 * g_break, 0, 0).normal_force_N, WithinRel(-0.5 * k * g_break, 1e-12));
+  CHECK(j.update(0.5 * g_break, 0, 0).normal_force_N == 0);
 }
 
 TEST_CASE("flat joint: unbonded elements integrate the closed part of a tilted gap", "[flat_joint]") {
@@ -184,8 +184,8 @@ TEST_CASE("flat joint: unbonded elements integrate the closed part of a tilted g
         fn += f;
         mom += f * xi;
       }
-      CHECK_THAT(r.normal_force_n, WithinAbs(fn, 1e-6 * std::abs(fn) + 1e-12));
-      CHECK_THAT(r.moment_nm, WithinAbs(mom, 1e-6 * std::abs(mom) + 1e-18));
+      CHECK_THAT(r.normal_force_N, WithinAbs(fn, 1e-6 * std::abs(fn) + 1e-12));
+      CHECK_THAT(r.moment_N_m, WithinAbs(mom, 1e-6 * std::abs(mom) + 1e-18));
     }
   }
 }
@@ -203,7 +203,7 @@ TEST_CASE("flat joint: parameters are validated when built", "[flat_joint]") {
   CHECK_THROWS_WITH(kerf::with_path("material", [&] { return FlatJointParams::validated(p); }),
                     "material.n_elements = 1: expected an integer in [2, 16]");
   p = FlatJointParams{};
-  p.bond.tensile_strength_pa = -1e6;
+  p.bond.tensile_strength_Pa = -1e6;
   CHECK_THROWS_AS(FlatJointParams::validated(p), kerf::InputError);
 }
 
@@ -216,7 +216,7 @@ TEST_CASE("flat joint: the two-element intact path equals the general update to 
   int n_tension = 0, n_shear = 0, n_none = 0;
   for (int k = 0; k < 20000; ++k) {
     FlatJointParams raw;
-    raw.bond.effective_modulus_pa = 107e9 * (1 + 0.5 * unit(rng));
+    raw.bond.effective_modulus_Pa = 107e9 * (1 + 0.5 * unit(rng));
     raw.bond.stiffness_ratio = 3.1 * (1 + 0.5 * unit(rng));
     raw.bond.radius_multiplier = 0.75 + 0.25 * std::abs(unit(rng));
     raw.bond.friction_angle_rad = 0.4 * (1 + unit(rng));
@@ -256,15 +256,15 @@ TEST_CASE("flat joint: the intact path decides breaks as the stress test does, u
   int scans_crossing = 0, n_scans = 0;
   for (int k = 0; k < 600; ++k) {
     FlatJointParams raw;
-    raw.bond.effective_modulus_pa = 107e9 * (1 + 0.5 * unit(rng));
+    raw.bond.effective_modulus_Pa = 107e9 * (1 + 0.5 * unit(rng));
     raw.bond.friction_angle_rad = 0.4 * (1 + unit(rng));
-    raw.bond.tensile_strength_pa = 200e6 * (1 + 0.9 * unit(rng));
-    raw.bond.cohesion_pa = 113e6 * (1 + 0.9 * unit(rng));
+    raw.bond.tensile_strength_Pa = 200e6 * (1 + 0.9 * unit(rng));
+    raw.bond.cohesion_Pa = 113e6 * (1 + 0.9 * unit(rng));
     if (k % 5 == 1)
-      raw.bond.cohesion_pa =
-          raw.bond.tensile_strength_pa * std::tan(raw.bond.friction_angle_rad) * (1 + 1e-9 * unit(rng));
-    if (k % 5 == 2) raw.bond.cohesion_pa = 0;
-    if (k % 5 == 3) raw.bond.tensile_strength_pa = 0;
+      raw.bond.cohesion_Pa =
+          raw.bond.tensile_strength_Pa * std::tan(raw.bond.friction_angle_rad) * (1 + 1e-9 * unit(rng));
+    if (k % 5 == 2) raw.bond.cohesion_Pa = 0;
+    if (k % 5 == 3) raw.bond.tensile_strength_Pa = 0;
     Joint general(raw, 10e-6 * (1.15 + 0.15 * unit(rng)), 10e-6 * (1.15 + 0.15 * unit(rng)));
     if (k % 3 == 2) general.geo.strength_factor = 0.3 + 2 * std::abs(unit(rng));  // a joint's own strengths
     const double w = general.geo.strength_factor;
@@ -272,7 +272,7 @@ TEST_CASE("flat joint: the intact path decides breaks as the stress test does, u
     const double kn_t_le = general.geo.normal_stiffness * general.geo.thickness_m * general.geo.half_length_m;
     const bool tension_scan = k % 2 == 0;
     // Tension: g_s such that sigma = w sigma_c. Shear: sigma somewhere below it, |F_s| on the envelope.
-    const double sigma_c = general.p.bond.tensile_strength_pa * w, cohesion = general.p.bond.cohesion_pa * w;
+    const double sigma_c = general.p.bond.tensile_strength_Pa * w, cohesion = general.p.bond.cohesion_Pa * w;
     const double sigma = tension_scan ? sigma_c : sigma_c * (0.9 - 2 * std::abs(unit(rng)));
     const double gap0 = sigma * area / kn_t_le;
     const double shear0 =

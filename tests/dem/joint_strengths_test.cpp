@@ -32,7 +32,7 @@ double tension_break_force(const P& p, const BondGeometry& geo) {
   std::vector<double> shear(n, 0.0), damage(n, 0.0);
   std::vector<std::uint8_t> bonded(n, 1);
   std::vector<BreakMode> breaks(n, BreakMode::none);
-  const double g0 = p.bond.tensile_strength_pa / geo.normal_stiffness;
+  const double g0 = p.bond.tensile_strength_Pa / geo.normal_stiffness;
   double peak = 0;
   for (int k = 1; k < 100000; ++k) {
     const BondKinematics kin{k * 1e-4 * g0, 0.0, 0.0};
@@ -41,7 +41,7 @@ double tension_break_force(const P& p, const BondGeometry& geo) {
       r = bond_update(p, geo, kin, shear.data(), bonded.data(), breaks.data(), damage.data());
     else
       r = bond_update(p, geo, kin, shear.data(), bonded.data(), breaks.data());
-    peak = std::max(peak, r.normal_force_n);
+    peak = std::max(peak, r.normal_force_N);
     if (r.n_breaking > 0) return peak;
   }
   return -1;
@@ -51,9 +51,9 @@ double tension_break_force(const P& p, const BondGeometry& geo) {
 Material weibull_material(double m, double reference_half_length_m = 2.5e-6) {
   Material mat;
   SofteningFlatJointParams j;
-  j.fracture_energy_j_per_m2 = 1.0;
-  j.bond.tensile_strength_pa = 85e6;
-  j.bond.cohesion_pa = 450e6;
+  j.fracture_energy_J_per_m2 = 1.0;
+  j.bond.tensile_strength_Pa = 85e6;
+  j.bond.cohesion_Pa = 450e6;
   j.bond.strength_weibull_modulus = m;
   j.bond.strength_reference_half_length_m = reference_half_length_m;
   mat.joint = SofteningFlatJointParams::validated(j);
@@ -129,24 +129,24 @@ TEST_CASE("joint strengths: every law breaks a joint in tension at its own stren
     BondGeometry g = bond_geometry(fj, r, r, t);
     g.strength_factor = w;
     const double area = 2 * g.half_length_m * t;
-    CHECK_THAT(tension_break_force(fj, g), WithinRel(w * fj.bond.tensile_strength_pa * area, 2e-4 / w));
+    CHECK_THAT(tension_break_force(fj, g), WithinRel(w * fj.bond.tensile_strength_Pa * area, 2e-4 / w));
     ParallelBondParams pb = ParallelBondParams::validated(ParallelBondParams{});
     BondGeometry gp = bond_geometry(pb, r, r, t);
     gp.strength_factor = w;
-    CHECK_THAT(tension_break_force(pb, gp), WithinRel(w * pb.bond.tensile_strength_pa * area, 2e-4 / w));
+    CHECK_THAT(tension_break_force(pb, gp), WithinRel(w * pb.bond.tensile_strength_Pa * area, 2e-4 / w));
     // The softening joint: its peak at w sigma_c, and, with G_f the material's, its softening opening 2 G_f /
     // (w sigma_c): the damage is D(g) of the header with g_0 w and w_c / w.
     SofteningFlatJointParams sj;
-    sj.fracture_energy_j_per_m2 = 2.0;
+    sj.fracture_energy_J_per_m2 = 2.0;
     sj = SofteningFlatJointParams::validated(sj);
     BondGeometry gs = bond_geometry(sj, r, r, t);
     gs.strength_factor = w;
-    const double g0 = w * sj.bond.tensile_strength_pa / gs.normal_stiffness, wc = sj.softening_opening_m / w;
+    const double g0 = w * sj.bond.tensile_strength_Pa / gs.normal_stiffness, wc = sj.softening_opening_m / w;
     CHECK(softening_damage(sj, gs, 0.999 * g0) == 0);
     CHECK_THAT(softening_damage(sj, gs, g0 + 0.5 * wc), WithinRel(1 - g0 * 0.5 * wc / ((g0 + 0.5 * wc) * wc), 1e-12));
     CHECK(softening_damage(sj, gs, g0 + wc) == 1);
     CHECK_THAT(tension_break_force(SofteningFlatJointParams::validated(SofteningFlatJointParams{}), gs),
-               WithinRel(w * sj.bond.tensile_strength_pa * area, 2e-4 / w));
+               WithinRel(w * sj.bond.tensile_strength_Pa * area, 2e-4 / w));
   }
 }
 
@@ -202,7 +202,7 @@ TEST_CASE("joint strengths: the factors travel with the specimen's copies, and o
   REQUIRE(std::any_of(drawn.begin(), drawn.end(), [](double w) { return w != 1.0; }));
   SECTION("with_material: another strength, the same factors") {
     Material stronger = mat;
-    std::get<SofteningFlatJointParams>(stronger.joint).bond.tensile_strength_pa *= 2;
+    std::get<SofteningFlatJointParams>(stronger.joint).bond.tensile_strength_Pa *= 2;
     CHECK(factors(with_material(sim, stronger)) == drawn);
     Material other_m = weibull_material(8);
     CHECK_THROWS_WITH(with_material(sim, other_m),
@@ -239,14 +239,14 @@ TEST_CASE("joint strengths: a window covering the whole workpiece cuts Weibull g
   SpecimenReport report;
   const Simulation specimen = make_specimen(mat, spec, report);
   CutParams full = testing::windowed(100, 100, 100, 100);
-  full.active_window = false;
+  full.window.enabled = false;
   CutRun a(specimen, full), b(specimen, testing::windowed(100, 100, 100, 100));
   bool more = true;
   while (more) {
     more = a.advance();
     REQUIRE(b.advance() == more);
     REQUIRE(a.simulation().particles().x == b.simulation().particles().x);
-    REQUIRE(a.result().samples.back().main_force_n == b.result().samples.back().main_force_n);
+    REQUIRE(a.result().samples.back().main_force_N == b.result().samples.back().main_force_N);
   }
   CHECK(b.result().window.rebuilds > 5);
   CHECK(a.result().cracks.tensile + a.result().cracks.shear > 0);  // the joints did break: their strengths acted

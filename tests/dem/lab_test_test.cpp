@@ -27,7 +27,7 @@ TEST_CASE("lab test: hexagonal specimen's E and nu match the lattice closed form
   // Plane stress, bonds K_n = E* t, K_s = K_n / kappa: E = 2 sqrt(3) E* (1 + 1/kappa) / (3 + 1/kappa),
   // nu = (kappa - 1) / (3 kappa + 1).
   const double kappa = std::get<FlatJointParams>(m.joint).bond.stiffness_ratio;
-  const double e_closed = 2 * std::sqrt(3.0) * std::get<FlatJointParams>(m.joint).bond.effective_modulus_pa *
+  const double e_closed = 2 * std::sqrt(3.0) * std::get<FlatJointParams>(m.joint).bond.effective_modulus_Pa *
                           (1 + 1 / kappa) / (3 + 1 / kappa);
   const double nu_closed = (kappa - 1) / (3 * kappa + 1);
   // The load-bearing width of the lattice is (disks per row) 2R; the test divides by the outer width,
@@ -45,7 +45,7 @@ TEST_CASE("lab test: hexagonal specimen's E and nu match the lattice closed form
     CHECK(res.stop_reason.find("maximum strain") != std::string::npos);
     CHECK(res.curve.back().n_tension_cracks + res.curve.back().n_shear_cracks == 0);
     // Platen contacts (compression) and grip rows (tension) perturb the ends: a few per cent.
-    const double e = res.youngs_modulus_pa * res.width_m / lattice_width;
+    const double e = res.youngs_modulus_Pa * res.width_m / lattice_width;
     CHECK_THAT(e, WithinRel(e_closed, 0.05));
     if (test == LabTest::compression) {
       CHECK_THAT(res.poissons_ratio, WithinRel(nu_closed, 0.15));
@@ -71,11 +71,11 @@ TEST_CASE("lab test: small random specimen regression", "[lab_test]") {
   const LabTestResult c = run_lab_test(sim, load);
   const kerf::Json now{{"n_particles", report.n_particles},
                        {"n_bonds", report.n_bonds},
-                       {"tension_youngs_modulus_GPa", t.youngs_modulus_pa * 1e-9},
-                       {"tensile_strength_MPa", t.peak_stress_pa * 1e-6},
-                       {"compression_youngs_modulus_GPa", c.youngs_modulus_pa * 1e-9},
+                       {"tension_youngs_modulus_GPa", t.youngs_modulus_Pa * 1e-9},
+                       {"tensile_strength_MPa", t.peak_stress_Pa * 1e-6},
+                       {"compression_youngs_modulus_GPa", c.youngs_modulus_Pa * 1e-9},
                        {"poissons_ratio", c.poissons_ratio},
-                       {"compressive_strength_MPa", c.peak_stress_pa * 1e-6}};
+                       {"compressive_strength_MPa", c.peak_stress_Pa * 1e-6}};
   if (const char* env = std::getenv("KERF_REGENERATE_REFERENCE"); env && std::string(env) == "1") {
     kerf::Json out{{"description",
                     "tests/dem/lab_test_test.cpp 'small random specimen regression'; regenerate with "
@@ -94,8 +94,8 @@ TEST_CASE("lab test: small random specimen regression", "[lab_test]") {
     CHECK_THAT(now.at(key).get<double>(), WithinRel(value.get<double>(), tol));
   }
   // Physics sanity independent of the stored numbers.
-  CHECK(c.peak_stress_pa > 2 * t.peak_stress_pa);
-  CHECK_THAT(t.youngs_modulus_pa, WithinRel(c.youngs_modulus_pa, 0.15));
+  CHECK(c.peak_stress_Pa > 2 * t.peak_stress_Pa);
+  CHECK_THAT(t.youngs_modulus_Pa, WithinRel(c.youngs_modulus_Pa, 0.15));
 }
 
 TEST_CASE("lab test: seeded flaws weaken tension, and soften tension more than compression", "[lab_test]") {
@@ -114,9 +114,9 @@ TEST_CASE("lab test: seeded flaws weaken tension, and soften tension more than c
   const LabTestResult t_intact = run_lab_test(intact, load), t_weak = run_lab_test(weak, load);
   load.test = LabTest::compression;
   const LabTestResult c_intact = run_lab_test(intact, load), c_weak = run_lab_test(weak, load);
-  const double strength = t_weak.peak_stress_pa / t_intact.peak_stress_pa;
-  const double modulus_t = t_weak.youngs_modulus_pa / t_intact.youngs_modulus_pa;
-  const double modulus_c = c_weak.youngs_modulus_pa / c_intact.youngs_modulus_pa;
+  const double strength = t_weak.peak_stress_Pa / t_intact.peak_stress_Pa;
+  const double modulus_t = t_weak.youngs_modulus_Pa / t_intact.youngs_modulus_Pa;
+  const double modulus_c = c_weak.youngs_modulus_Pa / c_intact.youngs_modulus_Pa;
   INFO("tensile strength x" << strength << ", modulus in tension x" << modulus_t << ", in compression x" << modulus_c);
   CHECK(strength < 0.9);
   CHECK(modulus_t < modulus_c);

@@ -20,8 +20,8 @@ TEST_CASE("linear contact: k_n = 2 min(R) t E* / L, disk-disk and disk-wall", "[
   CHECK_THAT(linear_normal_stiffness(p, 10e-6, 0, t), WithinRel(2 * 10e-6 * t * 107e9 / 10e-6, 1e-14));  // wall: L = R
   double shear = 0;
   const ContactResult r = contact_update(p, 10e-6, 10e-6, t, 1e-8, 0, shear);
-  CHECK_THAT(r.normal_force_n, WithinRel(linear_normal_stiffness(p, 10e-6, 10e-6, t) * 1e-8, 1e-14));
-  CHECK(r.shear_force_n == 0);
+  CHECK_THAT(r.normal_force_N, WithinRel(linear_normal_stiffness(p, 10e-6, 10e-6, t) * 1e-8, 1e-14));
+  CHECK(r.shear_force_N == 0);
   const TimeStepStiffness k = contact_time_step_stiffness(p, 10e-6, 10e-6, t);
   CHECK(k.normal == linear_normal_stiffness(p, 10e-6, 10e-6, t));
   CHECK_THAT(k.shear, WithinRel(k.normal / p.stiffness_ratio, 1e-15));
@@ -38,22 +38,22 @@ TEST_CASE("linear contact: incremental shear, Coulomb sliding, reversal and sepa
   const double ds = 0.1 * limit / ks;
   for (int k = 1; k <= 5; ++k) {
     const ContactResult r = contact_update(p, 10e-6, 10e-6, t, overlap, ds, shear);
-    CHECK_THAT(r.shear_force_n, WithinRel(-k * ks * ds, 1e-12));
+    CHECK_THAT(r.shear_force_N, WithinRel(-k * ks * ds, 1e-12));
   }
   // Slide: held at -mu F_n however far it goes.
   for (int k = 0; k < 20; ++k) contact_update(p, 10e-6, 10e-6, t, overlap, ds, shear);
   CHECK_THAT(shear, WithinRel(-limit, 1e-14));
   // Reversal unloads elastically from the limit.
   const ContactResult back = contact_update(p, 10e-6, 10e-6, t, overlap, -ds, shear);
-  CHECK_THAT(back.shear_force_n, WithinRel(-limit + ks * ds, 1e-12));
+  CHECK_THAT(back.shear_force_N, WithinRel(-limit + ks * ds, 1e-12));
   // Separation: no force, the shear spring is reset.
   const ContactResult apart = contact_update(p, 10e-6, 10e-6, t, -1e-9, ds, shear);
-  CHECK(apart.normal_force_n == 0);
-  CHECK(apart.shear_force_n == 0);
+  CHECK(apart.normal_force_N == 0);
+  CHECK(apart.shear_force_N == 0);
   CHECK(shear == 0);
   // Frictionless (genesis) and a wall's own friction.
   double s0 = 0, s1 = 0;
-  CHECK(contact_update(with_friction(p, 0.0), 10e-6, 10e-6, t, overlap, ds, s0).shear_force_n == 0);
+  CHECK(contact_update(with_friction(p, 0.0), 10e-6, 10e-6, t, overlap, ds, s0).shear_force_N == 0);
   for (int k = 0; k < 50; ++k) contact_update(with_friction(p, 0.1), 10e-6, 10e-6, t, overlap, ds, s1);
   CHECK_THAT(s1, WithinRel(-0.1 * kn * overlap, 1e-14));
 }
@@ -63,7 +63,7 @@ TEST_CASE("linear contact: the energy's derivative is the force", "[linear_conta
   const double t = 1e-3, d = 1e-8, h = 1e-13;
   const double de = contact_energy(p, 9e-6, 11e-6, t, d + h, 0) - contact_energy(p, 9e-6, 11e-6, t, d - h, 0);
   double shear = 0;
-  CHECK_THAT(de / (2 * h), WithinRel(contact_update(p, 9e-6, 11e-6, t, d, 0, shear).normal_force_n, 1e-6));
+  CHECK_THAT(de / (2 * h), WithinRel(contact_update(p, 9e-6, 11e-6, t, d, 0, shear).normal_force_N, 1e-6));
   // The shear spring's energy F_s^2 / (2 k_s); nothing when apart.
   const double kn = linear_normal_stiffness(p, 9e-6, 11e-6, t);
   CHECK_THAT(contact_energy(p, 9e-6, 11e-6, t, d, 1e-3) - contact_energy(p, 9e-6, 11e-6, t, d, 0),
@@ -76,7 +76,7 @@ TEST_CASE("linear contact: parameters are validated, errors name the key", "[lin
   p.friction_coefficient = -0.1;
   CHECK_THROWS_WITH(LinearContactParams::validated(p), "friction_coefficient = -0.1: expected a non-negative value");
   p = {};
-  p.effective_modulus_pa = 0;
+  p.effective_modulus_Pa = 0;
   CHECK_THROWS_WITH(LinearContactParams::validated(p), "effective_modulus_GPa = 0: expected a positive value in GPa");
   CHECK_NOTHROW(LinearContactParams::validated(LinearContactParams{}));
 }

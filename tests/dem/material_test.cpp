@@ -21,9 +21,9 @@ TEST_CASE("material: keys carry units, converted to SI once", "[material]") {
   const Material m = read_material(kerf::Json::parse(R"({"effective_modulus_GPa": 90, "tensile_strength_MPa": 80,
       "cohesion_MPa": 200, "friction_angle_deg": 30, "n_elements": 3, "stiffness_ratio": 2.5})"),
                                    "material");
-  CHECK(std::get<LinearContactParams>(m.contact).effective_modulus_pa == 90e9);
-  CHECK(std::get<FlatJointParams>(m.joint).bond.tensile_strength_pa == 80e6);
-  CHECK(std::get<FlatJointParams>(m.joint).bond.cohesion_pa == 200e6);
+  CHECK(std::get<LinearContactParams>(m.contact).effective_modulus_Pa == 90e9);
+  CHECK(std::get<FlatJointParams>(m.joint).bond.tensile_strength_Pa == 80e6);
+  CHECK(std::get<FlatJointParams>(m.joint).bond.cohesion_Pa == 200e6);
   CHECK_THAT(std::get<FlatJointParams>(m.joint).bond.friction_angle_rad, WithinRel(M_PI / 6, 1e-15));
   CHECK_THAT(std::get<FlatJointParams>(m.joint).tan_friction_angle, WithinRel(std::tan(M_PI / 6), 1e-15));
   CHECK(std::get<FlatJointParams>(m.joint).n_elements == 3);
@@ -78,8 +78,8 @@ TEST_CASE("material: a bundled material is the base that other keys override", "
       read_material(kerf::Json::parse(R"({"base": "soda_lime_glass_fj", "local_damping": 0.5})"), "material");
   CHECK(m.name == "soda_lime_glass_fj");
   CHECK(m.local_damping == 0.5);
-  CHECK(std::get<FlatJointParams>(m.joint).bond.cohesion_pa >
-        std::get<FlatJointParams>(m.joint).bond.tensile_strength_pa);  // calibrated: c / sigma_c > 1
+  CHECK(std::get<FlatJointParams>(m.joint).bond.cohesion_Pa >
+        std::get<FlatJointParams>(m.joint).bond.tensile_strength_Pa);  // calibrated: c / sigma_c > 1
 }
 
 TEST_CASE("contact laws: the registry constructs laws by name", "[material]") {

@@ -49,16 +49,16 @@ TEST_CASE("parallel bond: force, moment and shear are the strip's closed forms",
   CHECK_THAT(kn, WithinRel(107e9 / 20e-6, 1e-14));
   CHECK_THAT(ks, WithinRel(kn / 3.1, 1e-14));
   auto r = b.update(2e-9, 0, 0);
-  CHECK_THAT(r.normal_force_n, WithinRel(kn * b.area() * 2e-9, 1e-14));
-  CHECK(r.moment_nm == 0);
+  CHECK_THAT(r.normal_force_N, WithinRel(kn * b.area() * 2e-9, 1e-14));
+  CHECK(r.moment_N_m == 0);
   r = b.update(0, 1e-6, 0);
-  CHECK_THAT(r.moment_nm, WithinRel(-kn * b.inertia() * 1e-6, 1e-14));
+  CHECK_THAT(r.moment_N_m, WithinRel(-kn * b.inertia() * 1e-6, 1e-14));
   // Shear is incremental: two increments add, a reversal takes it back.
   b.update(0, 0, 1e-10);
   r = b.update(0, 0, 1e-10);
-  CHECK_THAT(r.shear_force_n, WithinRel(-2 * ks * b.area() * 1e-10, 1e-12));
+  CHECK_THAT(r.shear_force_N, WithinRel(-2 * ks * b.area() * 1e-10, 1e-12));
   r = b.update(0, 0, -2e-10);
-  CHECK_THAT(r.shear_force_n, WithinAbs(0, 1e-18));
+  CHECK_THAT(r.shear_force_N, WithinAbs(0, 1e-18));
   CHECK(b.mode == BreakMode::none);
 }
 
@@ -68,9 +68,9 @@ TEST_CASE("parallel bond: elastic response equals the intact flat joint's", "[pa
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> u(-1, 1);
   ParallelBondParams pp;
-  pp.bond.tensile_strength_pa = pp.bond.cohesion_pa = 1e30;  // elastic
+  pp.bond.tensile_strength_Pa = pp.bond.cohesion_Pa = 1e30;  // elastic
   FlatJointParams fp;
-  fp.bond.tensile_strength_pa = fp.bond.cohesion_pa = 1e30;
+  fp.bond.tensile_strength_Pa = fp.bond.cohesion_Pa = 1e30;
   fp = FlatJointParams::validated(fp);
   for (int k = 0; k < 200; ++k) {
     Bond b(pp);
@@ -81,9 +81,9 @@ TEST_CASE("parallel bond: elastic response equals the intact flat joint's", "[pa
     const BondKinematics kin{1e-8 * u(rng), 1e-3 * u(rng), 1e-8 * u(rng)};
     const BondResult a = b.update(kin.gap_m, kin.rotation_rad, kin.shear_increment_m);
     const BondResult f = bond_update(fp, fgeo, kin, fshear, fbonded, fbreaks);
-    CHECK_THAT(a.normal_force_n, WithinRel(f.normal_force_n, 1e-12));
-    CHECK_THAT(a.shear_force_n, WithinRel(f.shear_force_n, 1e-12));
-    CHECK_THAT(a.moment_nm, WithinAbs(f.moment_nm, 1e-12 * std::abs(f.moment_nm) + 1e-30));
+    CHECK_THAT(a.normal_force_N, WithinRel(f.normal_force_N, 1e-12));
+    CHECK_THAT(a.shear_force_N, WithinRel(f.shear_force_N, 1e-12));
+    CHECK_THAT(a.moment_N_m, WithinAbs(f.moment_N_m, 1e-12 * std::abs(f.moment_N_m) + 1e-30));
   }
 }
 
@@ -91,17 +91,17 @@ TEST_CASE("parallel bond: breaks on its periphery stress", "[parallel_bond]") {
   const ParallelBondParams p;
   SECTION("tension: at F = 2 R t sigma_c") {
     Bond b;
-    const double g_break = p.bond.tensile_strength_pa / b.geo.normal_stiffness;
+    const double g_break = p.bond.tensile_strength_Pa / b.geo.normal_stiffness;
     b.update(g_break * (1 - 1e-9), 0, 0);
     CHECK(b.mode == BreakMode::none);
     const auto r = b.update(g_break * (1 + 1e-9), 0, 0);
     CHECK(b.mode == BreakMode::tension);
     CHECK(r.n_breaking == 1);
-    CHECK_THAT(r.normal_force_n, WithinRel(2 * 10e-6 * 1e-3 * p.bond.tensile_strength_pa, 1e-8));
+    CHECK_THAT(r.normal_force_N, WithinRel(2 * 10e-6 * 1e-3 * p.bond.tensile_strength_Pa, 1e-8));
   }
   SECTION("bending: at |M| R / I = sigma_c, twice sooner than a two-element flat joint's first element") {
     Bond b;
-    const double theta_break = p.bond.tensile_strength_pa / (b.geo.normal_stiffness * b.geo.half_length_m);
+    const double theta_break = p.bond.tensile_strength_Pa / (b.geo.normal_stiffness * b.geo.half_length_m);
     b.update(0, theta_break * (1 - 1e-9), 0);
     CHECK(b.mode == BreakMode::none);
     b.update(0, -theta_break * (1 + 1e-9), 0);  // either sense
@@ -111,7 +111,7 @@ TEST_CASE("parallel bond: breaks on its periphery stress", "[parallel_bond]") {
     for (double sigma : {0.0, -50e6}) {
       Bond b;
       const double gap = sigma / b.geo.normal_stiffness;
-      const double tau_c = p.bond.cohesion_pa - sigma * std::tan(p.bond.friction_angle_rad);
+      const double tau_c = p.bond.cohesion_Pa - sigma * std::tan(p.bond.friction_angle_rad);
       const double ds_break = tau_c / b.geo.shear_stiffness;
       b.update(gap, 0, ds_break * (1 - 1e-9));
       CHECK(b.mode == BreakMode::none);
@@ -125,8 +125,8 @@ TEST_CASE("parallel bond: breaks on its periphery stress", "[parallel_bond]") {
     b.bonded = 0;
     b.shear = 5;
     const auto r = b.update(1e-6, 1e-3, 1e-9);
-    CHECK(r.normal_force_n == 0);
-    CHECK(r.moment_nm == 0);
+    CHECK(r.normal_force_N == 0);
+    CHECK(r.moment_N_m == 0);
     CHECK(b.shear == 0);
   }
 }
@@ -142,7 +142,7 @@ TEST_CASE("parallel bond: parameters are validated, errors name the key", "[para
       "friction_angle_deg": 30, "friction_coefficient": 0.4})"),
                                    "material");
   REQUIRE(std::holds_alternative<ParallelBondParams>(m.joint));
-  CHECK(std::get<ParallelBondParams>(m.joint).bond.tensile_strength_pa == 90e6);
+  CHECK(std::get<ParallelBondParams>(m.joint).bond.tensile_strength_Pa == 90e6);
   CHECK_THAT(std::get<ParallelBondParams>(m.joint).tan_friction_angle, WithinRel(std::tan(M_PI / 6), 1e-15));
   CHECK(std::get<LinearContactParams>(m.contact).friction_coefficient == 0.4);  // the contact's key
   // A flat joint's own key is not a parallel bond's.

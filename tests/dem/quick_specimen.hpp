@@ -26,7 +26,7 @@ inline Material conservative_material() {
   std::get<LinearContactParams>(m.contact).friction_coefficient = 0;
   auto& joint = std::get<FlatJointParams>(m.joint);
   joint.residual_friction_coefficient = 0;
-  joint.bond.tensile_strength_pa = joint.bond.cohesion_pa = 1e15;
+  joint.bond.tensile_strength_Pa = joint.bond.cohesion_Pa = 1e15;
   return m;
 }
 
@@ -43,13 +43,13 @@ inline Simulation quick_workpiece_specimen(double width_m, double height_m, std:
 /// rebuilt every 0.2 depths: the windowed cut of the window tests.
 inline CutParams windowed(double ahead, double behind, double below, double above) {
   CutParams p;
-  p.depth_of_cut_m = 0.05e-3;
-  p.speed_m_per_s = 2;
-  p.length_m = 0.1e-3;
-  p.active_window = true;
-  p.window_ahead_depths = ahead, p.window_behind_depths = behind, p.window_below_depths = below;
-  p.window_above_depths = above;
-  p.window_shift_depths = 0.2;
+  p.cut.depth_of_cut_m = 0.05e-3;
+  p.cut.speed_m_per_s = 2;
+  p.cut.length_m = 0.1e-3;
+  p.window.enabled = true;
+  p.window.ahead_depths = ahead, p.window.behind_depths = behind, p.window.below_depths = below;
+  p.window.above_depths = above;
+  p.window.shift_depths = 0.2;
   return p;
 }
 

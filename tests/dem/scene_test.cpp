@@ -116,9 +116,9 @@ TEST_CASE("scene: field tables read the struct's defaults, check ranges and roun
   check_same_json(specimen_spec_to_json(read_specimen_spec(back)), j);
   CHECK(j.at("packing") == "hexagonal");
   CutParams p;
-  p.depth_of_cut_m = 0.05e-3;
-  p.groove_shape = GrooveShape::trapezoidal;
-  p.tool_friction_coefficient = 0.1;
+  p.cut.depth_of_cut_m = 0.05e-3;
+  p.grooves.shape = GrooveShape::trapezoidal;
+  p.tool.friction_coefficient = 0.1;
   const Json cj = cut_params_to_json(p);
   kerf::ObjectReader root(cj, "");
   check_same_json(cut_params_to_json(read_cut_params(root)), cj);
@@ -137,7 +137,7 @@ TEST_CASE("scene: field tables read the struct's defaults, check ranges and roun
   CHECK_THROWS_WITH(kerf::with_path("specimen", [&] { check_specimen_spec(s); }),
                     Catch::StartsWith("specimen.packing_fraction = 0.95"));
   p = CutParams{};
-  p.edge_segments = 0;
+  p.tool.edge_segments = 0;
   CHECK_THROWS_WITH(validate_cut_params(p), Catch::StartsWith("tool.edge_segments = 0"));
   // Unknown key (the reader's finish) with a suggestion.
   const Json typo{{"seeed", 3}};

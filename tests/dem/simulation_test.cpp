@@ -172,7 +172,7 @@ TEST_CASE("engine: bit-identical results for 1 and 2 threads", "[simulation]") {
   CHECK(a.particles().x == b.particles().x);
   CHECK(a.particles().y == b.particles().y);
   CHECK(a.particles().omega == b.particles().omega);
-  CHECK(a.bonds().shear_force_n == b.bonds().shear_force_n);
+  CHECK(a.bonds().shear_force_N == b.bonds().shear_force_N);
 }
 
 TEST_CASE("engine: a team that changes size every 16 steps gives the one-thread results to the bit", "[simulation]") {
@@ -197,7 +197,7 @@ TEST_CASE("engine: a team that changes size every 16 steps gives the one-thread 
   CHECK(a.particles().x == b.particles().x);
   CHECK(a.particles().y == b.particles().y);
   CHECK(a.particles().omega == b.particles().omega);
-  CHECK(a.bonds().shear_force_n == b.bonds().shear_force_n);
+  CHECK(a.bonds().shear_force_N == b.bonds().shear_force_N);
 }
 
 TEST_CASE("engine: a single joint pulled apart breaks at 2 R t sigma_c", "[simulation]") {
@@ -275,7 +275,7 @@ TEST_CASE("engine: a run restored from its saved state equals the uninterrupted 
   CHECK(resumed.cracks().size() == sim.cracks().size());
   CHECK(resumed.particles().x == sim.particles().x);
   CHECK(resumed.particles().omega == sim.particles().omega);
-  CHECK(resumed.bonds().shear_force_n == sim.bonds().shear_force_n);
+  CHECK(resumed.bonds().shear_force_N == sim.bonds().shear_force_N);
   CHECK(resumed.time() == sim.time());
   CHECK_THROWS_AS(Simulation::deserialize(saved.substr(0, saved.size() / 2)), kerf::ModelError);
 }
@@ -322,7 +322,7 @@ TEST_CASE("simulation: a wall contact's load is k_n times its overlap, and ties 
   REQUIRE(loads.size() == 1);
   CHECK(loads[0].disk == 0);
   const auto& law = std::get<LinearContactParams>(sim.material().contact);
-  CHECK_THAT(loads[0].normal_force_n,
+  CHECK_THAT(loads[0].normal_force_N,
              WithinRel(linear_normal_stiffness(law, r, 0, sim.options().thickness_m) * overlap, 1e-9));
   CHECK(sim.tied_to_held() == std::vector<std::uint8_t>{1, 1, 1});
   auto& b = sim.bonds();
@@ -355,18 +355,18 @@ TEST_CASE("engine: a disk's stress from its contacts is the closed form, rotates
     const auto stresses = sim.disk_stresses();
     const double sigma_nn = -2 * force / (M_PI * radius * options.thickness_m);  // the middle disk, along the row
     const double scale = std::abs(sigma_nn);
-    const auto& mid = stresses.stress_pa[1];
+    const auto& mid = stresses.stress_Pa[1];
     CHECK_THAT(mid[0], WithinAbs(sigma_nn * c * c, 1e-12 * scale));
     CHECK_THAT(mid[1], WithinAbs(sigma_nn * s * s, 1e-12 * scale));
     CHECK_THAT(mid[2], WithinAbs(sigma_nn * c * s, 1e-12 * scale));
     for (int end : {0, 2}) {
-      const auto& e = stresses.stress_pa[static_cast<std::size_t>(end)];
+      const auto& e = stresses.stress_Pa[static_cast<std::size_t>(end)];
       CHECK_THAT(e[0], WithinAbs(0.5 * sigma_nn * c * c, 1e-12 * scale));
       CHECK_THAT(e[1], WithinAbs(0.5 * sigma_nn * s * s, 1e-12 * scale));
       CHECK_THAT(e[2], WithinAbs(0.5 * sigma_nn * c * s, 1e-12 * scale));
     }
-    CHECK_THAT(stresses.force_sum_n[1], WithinRel(2 * force, 1e-12));
-    CHECK_THAT(stresses.force_sum_n[0], WithinRel(force, 1e-12));
+    CHECK_THAT(stresses.force_sum_N[1], WithinRel(2 * force, 1e-12));
+    CHECK_THAT(stresses.force_sum_N[0], WithinRel(force, 1e-12));
   }
 }
 
@@ -386,8 +386,8 @@ TEST_CASE("engine: a joint's force is tension positive along its centre line, it
     const auto st = sim.disk_stresses();
     const double sigma = kn_area * gap * 10e-6 / (M_PI * 10e-6 * 10e-6 * sim.options().thickness_m);
     for (std::size_t i : {0u, 1u}) {
-      CHECK_THAT(st.stress_pa[i][0], WithinRel(sigma, 1e-9));
-      CHECK_THAT(st.stress_pa[i][1], WithinAbs(0.0, 1e-12 * std::abs(sigma)));
+      CHECK_THAT(st.stress_Pa[i][0], WithinRel(sigma, 1e-9));
+      CHECK_THAT(st.stress_Pa[i][1], WithinAbs(0.0, 1e-12 * std::abs(sigma)));
     }
   }
 }

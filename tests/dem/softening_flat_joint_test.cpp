@@ -25,9 +25,9 @@ using Catch::Matchers::WithinRel;
 
 namespace {
 
-SofteningFlatJointParams softening(double fracture_energy_j_per_m2, int n_elements = 2) {
+SofteningFlatJointParams softening(double fracture_energy_J_per_m2, int n_elements = 2) {
   SofteningFlatJointParams p;
-  p.fracture_energy_j_per_m2 = fracture_energy_j_per_m2;
+  p.fracture_energy_J_per_m2 = fracture_energy_J_per_m2;
   p.n_elements = n_elements;
   return SofteningFlatJointParams::validated(p);
 }
@@ -35,10 +35,10 @@ SofteningFlatJointParams softening(double fracture_energy_j_per_m2, int n_elemen
 /// Joints of a glass whose elements fail in tension more than in shear (as the calibrated glasses: c about 5
 /// sigma_c), unlike Yang et al. 2018's Table 1 (c = 113 MPa against sigma_c = 200 MPa), whose random specimens break in
 /// shear before any element reaches its tensile strength.
-SofteningFlatJointParams glass(double fracture_energy_j_per_m2) {
-  SofteningFlatJointParams p = softening(fracture_energy_j_per_m2);
-  p.bond.tensile_strength_pa = 85e6;
-  p.bond.cohesion_pa = 450e6;
+SofteningFlatJointParams glass(double fracture_energy_J_per_m2) {
+  SofteningFlatJointParams p = softening(fracture_energy_J_per_m2);
+  p.bond.tensile_strength_Pa = 85e6;
+  p.bond.cohesion_Pa = 450e6;
   return SofteningFlatJointParams::validated(p);
 }
 
@@ -71,7 +71,7 @@ struct Joint {
   }
   double element_area() const { return 2 * geo.half_length_m / p.n_elements * geo.thickness_m; }
   double joint_area() const { return 2 * geo.half_length_m * geo.thickness_m; }
-  double g0() const { return p.bond.tensile_strength_pa / geo.normal_stiffness; }
+  double g0() const { return p.bond.tensile_strength_Pa / geo.normal_stiffness; }
 };
 
 bool same_bits(double a, double b) {
@@ -81,11 +81,11 @@ bool same_bits(double a, double b) {
 }  // namespace
 
 TEST_CASE("softening flat joint: opened to failure, a joint takes A (sigma_c^2 / (2 k_n) + G_f)", "[softening]") {
-  for (const double gf_j : {0.0, 0.3, 2.0, 10.0}) {
-    Joint j(softening(gf_j));
-    INFO("G_f = " << gf_j << " J/m^2");
+  for (const double gf_J_per_m2 : {0.0, 0.3, 2.0, 10.0}) {
+    Joint j(softening(gf_J_per_m2));
+    INFO("G_f = " << gf_J_per_m2 << " J/m^2");
     const double g0 = j.g0(), w_c = j.p.softening_opening_m;
-    CHECK_THAT(w_c, WithinAbs(2 * gf_j / j.p.bond.tensile_strength_pa, 1e-30));
+    CHECK_THAT(w_c, WithinAbs(2 * gf_J_per_m2 / j.p.bond.tensile_strength_Pa, 1e-30));
     const double gf = g0 + w_c;
     // Pure opening in small steps from rest: the force is piecewise linear in the gap (rising to sigma_c A at
     // g_0, falling to zero at g_f), so the trapezoidal work is exact but for the two steps holding a kink.
@@ -95,42 +95,42 @@ TEST_CASE("softening flat joint: opened to failure, a joint takes A (sigma_c^2 /
     for (int k = 1; k <= n && g_break < 0; ++k) {
       const double g = k * dg;
       const BondResult r = j.update(g);
-      work += 0.5 * (f_prev + r.normal_force_n) * dg;
-      f_prev = r.normal_force_n;
-      peak = std::max(peak, r.normal_force_n);
+      work += 0.5 * (f_prev + r.normal_force_N) * dg;
+      f_prev = r.normal_force_N;
+      peak = std::max(peak, r.normal_force_N);
       if (r.n_breaking > 0) {
         g_break = g;
         CHECK(r.n_breaking == 2);
         CHECK(j.breaks[0] == BreakMode::tension);
         CHECK(j.breaks[1] == BreakMode::tension);
-        CHECK_THAT(r.normal_force_n, WithinAbs(gf_j > 0 ? 0.0 : r.normal_force_n, 1e-12));
-      } else if (g > g0 && gf_j > 0) {
+        CHECK_THAT(r.normal_force_N, WithinAbs(gf_J_per_m2 > 0 ? 0.0 : r.normal_force_N, 1e-12));
+      } else if (g > g0 && gf_J_per_m2 > 0) {
         // On the softening envelope: sigma_c (g_f - g) / w_c, at the damaged secant (1 - D) k_n g.
-        CHECK_THAT(r.normal_force_n, WithinRel(j.p.bond.tensile_strength_pa * (gf - g) / w_c * j.joint_area(), 1e-9));
-        CHECK_THAT(r.normal_force_n, WithinRel((1 - j.damage[0]) * j.geo.normal_stiffness * g * j.joint_area(), 1e-9));
+        CHECK_THAT(r.normal_force_N, WithinRel(j.p.bond.tensile_strength_Pa * (gf - g) / w_c * j.joint_area(), 1e-9));
+        CHECK_THAT(r.normal_force_N, WithinRel((1 - j.damage[0]) * j.geo.normal_stiffness * g * j.joint_area(), 1e-9));
         // The energy books: the work so far less the stored energy is the area between the envelope and the
         // secant back to the origin, (sigma_c g - sigma(g) g_0) / 2 per area.
         // The trapezoid is exact but for the step holding the kink at g_0: an error below the slopes' jump dg^2.
-        const double sigma = r.normal_force_n / j.joint_area();
-        const double kink = (j.geo.normal_stiffness + j.p.bond.tensile_strength_pa / w_c) * j.joint_area() * dg * dg;
+        const double sigma = r.normal_force_N / j.joint_area();
+        const double kink = (j.geo.normal_stiffness + j.p.bond.tensile_strength_Pa / w_c) * j.joint_area() * dg * dg;
         CHECK_THAT(work - j.energy(g),
-                   WithinAbs(0.5 * (j.p.bond.tensile_strength_pa * g - sigma * g0) * j.joint_area(), kink));
+                   WithinAbs(0.5 * (j.p.bond.tensile_strength_Pa * g - sigma * g0) * j.joint_area(), kink));
       }
     }
     REQUIRE(g_break > 0);
     CHECK(g_break >= gf);
     CHECK(g_break < gf + dg * (1 + 1e-9));
-    CHECK_THAT(peak, WithinRel(j.p.bond.tensile_strength_pa * j.joint_area(), 2 * dg / g0));
+    CHECK_THAT(peak, WithinRel(j.p.bond.tensile_strength_Pa * j.joint_area(), 2 * dg / g0));
     // For G_f = 0 the force at the breaking step is still the bonded element's (the flat joint): take the work
     // to the strength, as the flat joint's element then drops its force.
-    if (gf_j == 0) work -= 0.5 * (f_prev + j.p.bond.tensile_strength_pa * j.joint_area()) * (g_break - g0);
+    if (gf_J_per_m2 == 0) work -= 0.5 * (f_prev + j.p.bond.tensile_strength_Pa * j.joint_area()) * (g_break - g0);
     const double closed_form =
         j.joint_area() *
-        (j.p.bond.tensile_strength_pa * j.p.bond.tensile_strength_pa / (2 * j.geo.normal_stiffness) + gf_j);
+        (j.p.bond.tensile_strength_Pa * j.p.bond.tensile_strength_Pa / (2 * j.geo.normal_stiffness) + gf_J_per_m2);
     CHECK_THAT(work, WithinRel(closed_form, 1e-3));
     j.apply_breaks();
     CHECK(j.energy(2 * gf) == 0);
-    CHECK(j.update(2 * gf).normal_force_n == 0);  // broken and open: nothing
+    CHECK(j.update(2 * gf).normal_force_N == 0);  // broken and open: nothing
   }
 }
 
@@ -147,7 +147,7 @@ TEST_CASE("softening flat joint: unloading returns along the damaged secant, com
   const double k_damaged = (1 - d) * j.geo.normal_stiffness * j.joint_area();
   const double k_intact = j.geo.normal_stiffness * j.joint_area();
   // Unload to zero, into compression, reload to kappa: the secant, no further damage, no work lost on the cycle.
-  double work = 0, f_prev = j.update(kappa).normal_force_n;
+  double work = 0, f_prev = j.update(kappa).normal_force_N;
   const double e_start = j.energy(kappa);
   std::vector<double> path;
   for (int k = 100; k >= -100; --k) path.push_back(kappa * k / 100);
@@ -155,11 +155,11 @@ TEST_CASE("softening flat joint: unloading returns along the damaged secant, com
   for (std::size_t s = 1; s < path.size(); ++s) {
     const double g = path[s];
     const BondResult r = j.update(g);
-    work += 0.5 * (f_prev + r.normal_force_n) * (g - path[s - 1]);
-    f_prev = r.normal_force_n;
+    work += 0.5 * (f_prev + r.normal_force_N) * (g - path[s - 1]);
+    f_prev = r.normal_force_N;
     CHECK(r.n_breaking == 0);
-    CHECK_THAT(r.normal_force_n, WithinRel((g > 0 ? k_damaged : k_intact) * g, 1e-12));
-    if (g == 0) CHECK(r.normal_force_n == 0);
+    CHECK_THAT(r.normal_force_N, WithinRel((g > 0 ? k_damaged : k_intact) * g, 1e-12));
+    if (g == 0) CHECK(r.normal_force_N == 0);
     CHECK(j.damage[0] == d);
     CHECK_THAT(j.energy(g), WithinRel(0.5 * (g > 0 ? k_damaged : k_intact) * g * g, 1e-12));
   }
@@ -186,7 +186,7 @@ TEST_CASE("softening flat joint: before softening starts, the flat joint's stren
     for (double sigma : {0.0, -100e6, 0.5 * 200e6}) {
       Joint j(softening(1.0));
       const double gap = sigma / j.geo.normal_stiffness;
-      const double strength = j.p.bond.cohesion_pa - sigma * std::tan(j.p.bond.friction_angle_rad);
+      const double strength = j.p.bond.cohesion_Pa - sigma * std::tan(j.p.bond.friction_angle_rad);
       const double ds_break = strength / j.geo.shear_stiffness;
       j.update(gap, 0, ds_break * (1 - 1e-9));
       CHECK(j.breaks[0] == BreakMode::none);
@@ -206,7 +206,7 @@ TEST_CASE("softening flat joint: before softening starts, the flat joint's stren
     for (int k = 0; k < 20000; ++k) {
       const int nr = k % 3 == 0 ? 3 : 2;
       SofteningFlatJointParams raw = softening(0.5 + std::abs(unit(rng)), nr);
-      raw.bond.effective_modulus_pa = 107e9 * (1 + 0.5 * unit(rng));
+      raw.bond.effective_modulus_Pa = 107e9 * (1 + 0.5 * unit(rng));
       raw.bond.friction_angle_rad = 0.4 * (1 + unit(rng));
       Joint soft(SofteningFlatJointParams::validated(raw));
       const double R = soft.geo.half_length_m;
@@ -223,9 +223,9 @@ TEST_CASE("softening flat joint: before softening starts, the flat joint's stren
       const BondResult f = bond_update_fast(fast.p, fast.geo, kin, fast.shear.data(), fast.bonded.data(),
                                             fast.breaks.data(), fast.damage.data());
       const BondResult b = soft.update(kin.gap_m, kin.rotation_rad, kin.shear_increment_m);
-      REQUIRE(same_bits(f.normal_force_n, b.normal_force_n));
-      REQUIRE(same_bits(f.shear_force_n, b.shear_force_n));
-      REQUIRE(same_bits(f.moment_nm, b.moment_nm));
+      REQUIRE(same_bits(f.normal_force_N, b.normal_force_N));
+      REQUIRE(same_bits(f.shear_force_N, b.shear_force_N));
+      REQUIRE(same_bits(f.moment_N_m, b.moment_N_m));
       REQUIRE(f.n_breaking == b.n_breaking);
       for (std::size_t e = 0; e < soft.shear.size(); ++e) {
         REQUIRE(same_bits(fast.shear[e], soft.shear[e]));
@@ -241,9 +241,9 @@ TEST_CASE("softening flat joint: before softening starts, the flat joint's stren
       CHECK(softened == tension_break);  // the flat joint breaks in tension exactly where the softening begins
       if (softened) continue;
       ++n_compared;
-      REQUIRE(same_bits(a.normal_force_n, b.normal_force_n));
-      REQUIRE(same_bits(a.shear_force_n, b.shear_force_n));
-      REQUIRE(same_bits(a.moment_nm, b.moment_nm));
+      REQUIRE(same_bits(a.normal_force_N, b.normal_force_N));
+      REQUIRE(same_bits(a.shear_force_N, b.shear_force_N));
+      REQUIRE(same_bits(a.moment_N_m, b.moment_N_m));
       REQUIRE(a.n_breaking == b.n_breaking);
       for (std::size_t e = 0; e < shear.size(); ++e) {
         REQUIRE(same_bits(shear[e], soft.shear[e]));
@@ -278,9 +278,9 @@ TEST_CASE("softening flat joint: a damaged joint in opening, bending and shear k
     const BondResult r = j.update(g_new, t_new, s_new - s);
     REQUIRE(r.n_breaking == 0);
     // dW = F_n dg - M dtheta - F_s ds: F_n opens (tension positive), M and F_s act on disk 2 (BondResult).
-    work += 0.5 * (prev.normal_force_n + r.normal_force_n) * (g_new - g) -
-            0.5 * (prev.moment_nm + r.moment_nm) * (t_new - theta) -
-            0.5 * (prev.shear_force_n + r.shear_force_n) * (s_new - s);
+    work += 0.5 * (prev.normal_force_N + r.normal_force_N) * (g_new - g) -
+            0.5 * (prev.moment_N_m + r.moment_N_m) * (t_new - theta) -
+            0.5 * (prev.shear_force_N + r.shear_force_N) * (s_new - s);
     g = g_new, theta = t_new, s = s_new;
     prev = r;
     e_min = std::min(e_min, j.energy(g, theta));
@@ -297,7 +297,7 @@ TEST_CASE("softening flat joint: a damaged joint in opening, bending and shear k
 TEST_CASE("softening flat joint: fracture_energy_J_per_m2 is validated and read with the flat joint's keys",
           "[softening]") {
   SofteningFlatJointParams p;
-  p.fracture_energy_j_per_m2 = -1;
+  p.fracture_energy_J_per_m2 = -1;
   try {
     SofteningFlatJointParams::validated(p);
     FAIL("a negative fracture energy accepted");
@@ -313,7 +313,7 @@ TEST_CASE("softening flat joint: fracture_energy_J_per_m2 is validated and read 
                     "material");
   REQUIRE(std::holds_alternative<SofteningFlatJointParams>(m.joint));
   const auto& s = std::get<SofteningFlatJointParams>(m.joint);
-  CHECK(s.fracture_energy_j_per_m2 == 4);
+  CHECK(s.fracture_energy_J_per_m2 == 4);
   CHECK(s.n_elements == 3);
   CHECK(s.residual_friction_coefficient == 0.3);
   CHECK_THAT(s.softening_opening_m, WithinRel(2 * 4 / 80e6, 1e-15));
@@ -367,7 +367,7 @@ TEST_CASE("softening flat joint: with zero fracture energy, a tension test is th
   CHECK(a.particles().fy == b.particles().fy);
   CHECK(a.particles().torque == b.particles().torque);
   CHECK(a.bonds().bonded == b.bonds().bonded);
-  CHECK(a.bonds().shear_force_n == b.bonds().shear_force_n);
+  CHECK(a.bonds().shear_force_N == b.bonds().shear_force_N);
   REQUIRE(a.cracks().size() == b.cracks().size());
   for (std::size_t k = 0; k < a.cracks().size(); ++k) {
     CHECK(a.cracks()[k].time_s == b.cracks()[k].time_s);
@@ -375,7 +375,7 @@ TEST_CASE("softening flat joint: with zero fracture energy, a tension test is th
     CHECK(a.cracks()[k].element == b.cracks()[k].element);
     CHECK(a.cracks()[k].mode == b.cracks()[k].mode);
   }
-  CHECK(flat.result.peak_stress_pa == soft.result.peak_stress_pa);
+  CHECK(flat.result.peak_stress_Pa == soft.result.peak_stress_Pa);
   CHECK(a.stored_elastic_energy() == b.stored_elastic_energy());
   // Every broken element of the softening joint is wholly damaged, every other undamaged.
   for (std::size_t k = 0; k < b.bonds().damage.size(); ++k)
@@ -385,7 +385,7 @@ TEST_CASE("softening flat joint: with zero fracture energy, a tension test is th
   CHECK(n_tension > 0);  // the softening law's own branch decided those (and found them the flat joint's)
   // A fracture energy changes the test (the same specimen): a higher peak, reached later.
   const TensionRun softer = tension(specimen, glass(5.0));
-  CHECK(softer.result.peak_stress_pa > flat.result.peak_stress_pa);
+  CHECK(softer.result.peak_stress_Pa > flat.result.peak_stress_Pa);
   CHECK(softer.result.strain_at_peak > flat.result.strain_at_peak);
 }
 
@@ -409,7 +409,7 @@ TEST_CASE(
   REQUIRE(sim.bonds().damage.size() == 2);
   const auto& joint = std::get<SofteningFlatJointParams>(m.joint);
   const BondGeometry geo = bond_geometry(joint, 10e-6, 10e-6, 1e-3);
-  const double g0 = joint.bond.tensile_strength_pa / geo.normal_stiffness, gf = g0 + joint.softening_opening_m;
+  const double g0 = joint.bond.tensile_strength_Pa / geo.normal_stiffness, gf = g0 + joint.softening_opening_m;
   const double area = 2 * geo.half_length_m * geo.thickness_m;
   double work = 0, f_prev = 0, peak = 0;
   while (sim.cracks().empty() && sim.step_count() < 1000000) {
@@ -424,10 +424,10 @@ TEST_CASE(
   const double gap = p.x[1] - p.x[0] - 20e-6;
   CHECK(gap >= gf);
   CHECK(gap < gf + 2 * v * sim.time_step());
-  CHECK_THAT(peak, WithinRel(joint.bond.tensile_strength_pa * area, 1e-3));
-  CHECK_THAT(work, WithinRel(area * (joint.bond.tensile_strength_pa * joint.bond.tensile_strength_pa /
+  CHECK_THAT(peak, WithinRel(joint.bond.tensile_strength_Pa * area, 1e-3));
+  CHECK_THAT(work, WithinRel(area * (joint.bond.tensile_strength_Pa * joint.bond.tensile_strength_Pa /
                                          (2 * geo.normal_stiffness) +
-                                     joint.fracture_energy_j_per_m2),
+                                     joint.fracture_energy_J_per_m2),
                              2e-3));
   CHECK(sim.bonds().damage == std::vector<double>{1.0, 1.0});
 }
@@ -462,7 +462,7 @@ TEST_CASE("softening flat joint: a damaged state round-trips through the engine'
   CHECK(resumed.simulation().particles().x == run.simulation().particles().x);
   CHECK(resumed.simulation().bonds().damage == run.simulation().bonds().damage);
   CHECK(resumed.simulation().cracks().size() == run.simulation().cracks().size());
-  CHECK(resumed.result().peak_stress_pa == run.result().peak_stress_pa);
+  CHECK(resumed.result().peak_stress_Pa == run.result().peak_stress_Pa);
   // The engine state alone too, with its damage.
   const Simulation& s = run.simulation();
   CHECK(Simulation::deserialize(s.serialize()).bonds().damage == s.bonds().damage);

@@ -59,7 +59,7 @@ TEST_CASE("specimen: hexagonal lattice stress under affine strain matches the cl
   }
   sim.evaluate_forces_with_increment();
   const double t = spec.thickness_m, R = 10e-6;
-  const double kn = std::get<FlatJointParams>(m.joint).bond.effective_modulus_pa * t,
+  const double kn = std::get<FlatJointParams>(m.joint).bond.effective_modulus_Pa * t,
                ks = kn / std::get<FlatJointParams>(m.joint).bond.stiffness_ratio;  // K_n = k_n 2R t
   const double lambda = std::sqrt(3.0) / 4 * (kn - ks) / t, mu = std::sqrt(3.0) / 4 * (kn + ks) / t;
   // Stress of the interior disks (six joints each): sigma_p = -(1 / (2 A_p t)) sum f_on_j (x) (x_j - x_i),
@@ -108,8 +108,8 @@ TEST_CASE("specimen: random packing is dense, well connected and nearly free of 
   CHECK(report.coordination_number > 3.5);
   CHECK(report.n_floaters_left <= report.n_particles / 25);
   // Locked-in stress: well below the compaction pressure (joints are installed stress free).
-  CHECK(std::abs(report.residual_stress_xx_pa) < spec.compaction_pressure_pa);
-  CHECK(std::abs(report.residual_stress_yy_pa) < spec.compaction_pressure_pa);
+  CHECK(std::abs(report.residual_stress_xx_Pa) < spec.compaction_pressure_Pa);
+  CHECK(std::abs(report.residual_stress_yy_Pa) < spec.compaction_pressure_Pa);
   // Isotropy of the fabric: joints along x and along y carry similar counts.
   double nxx = 0, nyy = 0;
   const auto& b = sim.bonds();
@@ -133,8 +133,8 @@ TEST_CASE("specimen: the packing is the spec's alone, the joints and the relaxat
   // does not depend on the material.
   const SpecimenSpec spec = small_random();
   Material soft, stiff;
-  std::get<LinearContactParams>(stiff.contact).effective_modulus_pa *= 3;
-  std::get<FlatJointParams>(stiff.joint).bond.effective_modulus_pa *= 3;
+  std::get<LinearContactParams>(stiff.contact).effective_modulus_Pa *= 3;
+  std::get<FlatJointParams>(stiff.joint).bond.effective_modulus_Pa *= 3;
   stiff.density_kg_per_m3 *= 1.5;
   stiff.local_damping = 0.3;
   const CompactedPacking packing = compact_packing(spec);
@@ -158,11 +158,11 @@ TEST_CASE("specimen: the packing is the spec's alone, the joints and the relaxat
   CHECK(finished.particles().y == from_stiff.particles().y);
   CHECK(finished.bonds().i == from_stiff.bonds().i);
   CHECK(c.genesis_steps == b.genesis_steps);
-  CHECK(c.residual_stress_xx_pa == b.residual_stress_xx_pa);
+  CHECK(c.residual_stress_xx_Pa == b.residual_stress_xx_Pa);
   CHECK(a.radius_scale == b.radius_scale);
   // A different reference modulus is a different packing.
   SpecimenSpec harder = spec;
-  harder.compaction_modulus_pa *= 2;
+  harder.compaction_modulus_Pa *= 2;
   CHECK(compact_packing(harder).disks.particles().radius != packing.disks.particles().radius);
 }
 

@@ -74,8 +74,8 @@ TEST_CASE("toughness: a small notched beam breaks through its ligament, in equil
   // Quasi-static: at the peak the supports carry the load (within the waves' share).
   std::size_t peak = 0;
   for (std::size_t k = 0; k < r.curve.size(); ++k)
-    if (r.curve[k].load_n > r.curve[peak].load_n) peak = k;
-  CHECK_THAT(r.curve[peak].support_load_n, WithinRel(r.curve[peak].load_n, 0.1));
+    if (r.curve[k].load_N > r.curve[peak].load_N) peak = k;
+  CHECK_THAT(r.curve[peak].support_load_N, WithinRel(r.curve[peak].load_N, 0.1));
   // The crack runs from the notch tip up through the ligament: broken joints reach the upper fifth of W, and
   // most of them lie near the notch's line.
   double y_min = 1e300;
@@ -94,15 +94,15 @@ TEST_CASE("toughness: a small notched beam breaks through its ligament, in equil
   CHECK(r.curve[static_cast<std::size_t>(r.through_sample)].deflection_m >= r.deflection_at_peak_m);
   CHECK(near > 0.8 * all);
   // Energy: what the load did is at least what it dissipated, which is positive; K from the peak is positive.
-  CHECK(r.fracture_energy_j_per_m2 > 0);
-  CHECK(r.fracture_energy_j_per_m2 <= r.work_of_fracture_j_per_m2 * (1 + 1e-9));
-  CHECK(r.fracture_toughness_pa_sqrt_m > 0);
+  CHECK(r.fracture_energy_J_per_m2 > 0);
+  CHECK(r.fracture_energy_J_per_m2 <= r.work_of_fracture_J_per_m2 * (1 + 1e-9));
+  CHECK(r.fracture_toughness_Pa_sqrt_m > 0);
   // The averaged peak lies below the raw one (an average of samples), and K follows P.
-  CHECK(r.peak_load_n <= r.raw_peak_load_n);
-  CHECK_THAT(r.raw_peak_toughness_pa_sqrt_m / r.fracture_toughness_pa_sqrt_m,
-             WithinRel(r.raw_peak_load_n / r.peak_load_n, 1e-12));
-  CHECK_THAT(r.irwin_energy_j_per_m2,
-             WithinRel(r.fracture_toughness_pa_sqrt_m * r.fracture_toughness_pa_sqrt_m / t.youngs_modulus_pa, 1e-12));
+  CHECK(r.peak_load_N <= r.raw_peak_load_N);
+  CHECK_THAT(r.raw_peak_toughness_Pa_sqrt_m / r.fracture_toughness_Pa_sqrt_m,
+             WithinRel(r.raw_peak_load_N / r.peak_load_N, 1e-12));
+  CHECK_THAT(r.irwin_energy_J_per_m2,
+             WithinRel(r.fracture_toughness_Pa_sqrt_m * r.fracture_toughness_Pa_sqrt_m / t.youngs_modulus_Pa, 1e-12));
 }
 
 TEST_CASE("toughness: loaded elastically, the load roller's work is what the beam stores, rollers' springs included",
@@ -121,10 +121,10 @@ TEST_CASE("toughness: loaded elastically, the load roller's work is what the bea
   t.max_deflection_m = 0.2e-6;
   t.quasi_static_check = false;
   const ToughnessResult r = run_toughness_test(beam, t);
-  INFO("work of fracture " << r.work_of_fracture_j_per_m2 << " J/m^2, G_c " << r.fracture_energy_j_per_m2 << " J/m^2");
+  INFO("work of fracture " << r.work_of_fracture_J_per_m2 << " J/m^2, G_c " << r.fracture_energy_J_per_m2 << " J/m^2");
   CHECK(r.stop_reason.find("maximum deflection") != std::string::npos);
   CHECK(r.curve.back().n_cracks == 0);
   CHECK(r.through_sample < 0);  // the books run to the end
-  REQUIRE(r.work_of_fracture_j_per_m2 > 0);
-  CHECK(std::abs(r.fracture_energy_j_per_m2) < 1e-3 * r.work_of_fracture_j_per_m2);  // measured: 2.1e-5
+  REQUIRE(r.work_of_fracture_J_per_m2 > 0);
+  CHECK(std::abs(r.fracture_energy_J_per_m2) < 1e-3 * r.work_of_fracture_J_per_m2);  // measured: 2.1e-5
 }

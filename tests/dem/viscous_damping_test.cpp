@@ -18,7 +18,7 @@ Material damped(double beta) {
   m.local_damping = 0;
   m.viscous_damping_ratio = beta;
   auto& j = std::get<FlatJointParams>(m.joint);
-  j.bond.tensile_strength_pa = j.bond.cohesion_pa = 1e15;  // elastic: never breaks
+  j.bond.tensile_strength_Pa = j.bond.cohesion_Pa = 1e15;  // elastic: never breaks
   return m;
 }
 }  // namespace

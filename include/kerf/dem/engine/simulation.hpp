@@ -63,7 +63,7 @@ struct BondStore {
     return {geometry[b], strength_factor.empty() ? 1.0 : strength_factor[b]};
   }
   std::vector<std::uint8_t> active;        ///< 0 once retired (broken, per the law): the unbonded contact rules
-  std::vector<double> shear_force_n;       ///< per element
+  std::vector<double> shear_force_N;       ///< per element
   std::vector<std::uint8_t> bonded;        ///< per element
   std::vector<BreakMode> pending;          ///< per element, breaks found in this step's force loop
   std::vector<std::array<double, 4>> out;  ///< per bond: force on j (x, y), torque on i, torque on j
@@ -129,9 +129,9 @@ struct SimulationOptions {
 /// window so). Pairs sorted by (i, j) with i < j; wall contacts by (wall, particle).
 struct ContactSprings {
   std::vector<CandidatePair> pairs;
-  std::vector<double> pair_shear_n;
+  std::vector<double> pair_shear_N;
   std::vector<std::array<std::int32_t, 2>> wall_contacts;
-  std::vector<double> wall_shear_n;
+  std::vector<double> wall_shear_N;
 };
 
 /// The p-wave speed sqrt(E* / rho) of the material's unbonded contact law [m/s]: the engine's runaway limit by
@@ -206,7 +206,7 @@ class Simulation {
   /// glass it meets), added to its contact and joint forces at every step until the loads are set again.
   struct DiskLoad {
     std::size_t disk = 0;
-    double fx_n = 0, fy_n = 0;
+    double fx_N = 0, fy_N = 0;
   };
   /// The loads of the next steps (replacing any before; finite; a held disk's is ignored, as its other forces are);
   /// empty, the default: none, and the step does what it did before, to the bit. Not saved with the state: its
@@ -234,7 +234,7 @@ class Simulation {
   /// A disk-wall contact's normal force now [N] (compression positive), from its overlap by the contact law.
   struct WallContactLoad {
     std::int32_t wall = 0, disk = 0;
-    double normal_force_n = 0;
+    double normal_force_N = 0;
   };
   /// The disk-wall contacts that touch (positive overlap) with their normal forces.
   std::vector<WallContactLoad> wall_contact_loads() const;
@@ -256,8 +256,8 @@ class Simulation {
   /// contacts and its wall contacts, the contact point on its rim along the centre line (a wall's: the closest
   /// point), tension positive [Pa]; and the sum of those forces' magnitudes [N]: force chains (issue 55 item 6).
   struct DiskStresses {
-    std::vector<std::array<double, 3>> stress_pa;  ///< xx, yy, xy
-    std::vector<double> force_sum_n;
+    std::vector<std::array<double, 3>> stress_Pa;  ///< xx, yy, xy
+    std::vector<double> force_sum_N;
   };
   DiskStresses disk_stresses() const;
   /// Joint b's force of the last evaluation: along its centre line, tension positive, and across it (the

@@ -85,7 +85,7 @@ concept ContactLawParams = LawParams<P> && requires(const P& p, double& shear) {
   { contact_time_step_stiffness(p, 1.0, 1.0, 1.0) } -> std::same_as<TimeStepStiffness>;
   { contact_energy(p, 1.0, 1.0, 1.0, 1.0, 1.0) } -> std::same_as<double>;
   { with_friction(p, 0.5) } -> std::same_as<P>;
-  { p.effective_modulus_pa } -> std::same_as<const double&>;
+  { p.effective_modulus_Pa } -> std::same_as<const double&>;
   { p.stiffness_ratio } -> std::same_as<const double&>;
 };
 

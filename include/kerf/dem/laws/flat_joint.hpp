@@ -55,7 +55,7 @@ BondGeometry bond_geometry(const FlatJointParams& p, double r1_m, double r2_m, d
 /// Defined in the header so that the engine's joint loop inlines it: a cut runs 11-18 % faster than with the
 /// call (same results to the bit; docs/performance.md).
 inline BondResult flat_joint_update(const FlatJointParams& p, const BondGeometry& geo, const BondKinematics& kin,
-                                    std::span<double> shear_force_n, std::span<const std::uint8_t> bonded,
+                                    std::span<double> shear_force_N, std::span<const std::uint8_t> bonded,
                                     std::span<BreakMode> breaks) {
   const int nr = p.n_elements;
   const double le = 2.0 * geo.half_length_m / nr;
@@ -64,14 +64,14 @@ inline BondResult flat_joint_update(const FlatJointParams& p, const BondGeometry
   const double ks_area = geo.shear_stiffness * area;
   const double theta = kin.rotation_rad;
   const double tan_phi = p.tan_friction_angle;
-  const double sigma_c = p.bond.tensile_strength_pa * geo.strength_factor;  // this joint's strengths (w = 1: the
-  const double cohesion = p.bond.cohesion_pa * geo.strength_factor;         // material's, to the bit)
+  const double sigma_c = p.bond.tensile_strength_Pa * geo.strength_factor;  // this joint's strengths (w = 1: the
+  const double cohesion = p.bond.cohesion_Pa * geo.strength_factor;         // material's, to the bit)
   BondResult r;
   for (int e = 0; e < nr; ++e) {
     const double a = -geo.half_length_m + e * le;
     const double xi_e = a + 0.5 * le;
     double fn, me;
-    double fs = shear_force_n[e] - ks_area * kin.shear_increment_m;  // incremental shear
+    double fs = shear_force_N[e] - ks_area * kin.shear_increment_m;  // incremental shear
     breaks[e] = BreakMode::none;
     if (bonded[e]) {
       // Bonded: the whole element is a linear spring, tension or compression.
@@ -110,17 +110,17 @@ inline BondResult flat_joint_update(const FlatJointParams& p, const BondGeometry
         fn = me = fs = 0.0;  // open: no contact, no friction
       }
     }
-    shear_force_n[e] = fs;
-    r.normal_force_n += fn;
-    r.shear_force_n += fs;
-    r.moment_nm += fn * xi_e + me;
+    shear_force_N[e] = fs;
+    r.normal_force_N += fn;
+    r.shear_force_N += fs;
+    r.moment_N_m += fn * xi_e + me;
   }
   return r;
 }
 
 /// Elastic energy stored in the bonded elements (normal, bending and shear springs), for energy checks.
 double flat_joint_bonded_energy(const FlatJointParams& p, const BondGeometry& geo, const BondKinematics& kin,
-                                std::span<const double> shear_force_n, std::span<const std::uint8_t> bonded);
+                                std::span<const double> shear_force_N, std::span<const std::uint8_t> bonded);
 
 /// Centroid xi_e of element e along the interface.
 inline double flat_joint_element_centroid(const BondGeometry& geo, int n_elements, int e) {
@@ -144,9 +144,9 @@ constexpr bool bond_retires_on_break(const FlatJointParams&) {
 }
 
 inline BondResult bond_update(const FlatJointParams& p, const BondGeometry& geo, const BondKinematics& kin,
-                              double* shear_force_n, const std::uint8_t* bonded, BreakMode* breaks) {
+                              double* shear_force_N, const std::uint8_t* bonded, BreakMode* breaks) {
   const auto n = static_cast<std::size_t>(p.n_elements);
-  return flat_joint_update(p, geo, kin, {shear_force_n, n}, {bonded, n}, {breaks, n});
+  return flat_joint_update(p, geo, kin, {shear_force_N, n}, {bonded, n}, {breaks, n});
 }
 
 /// A fully broken joint whose interface is open everywhere (g_s - |theta_b| R > 0) and whose disks no longer
@@ -166,9 +166,9 @@ inline TimeStepStiffness bond_time_step_stiffness(const FlatJointParams&, const 
 }
 
 inline double bond_energy(const FlatJointParams& p, const BondGeometry& geo, const BondKinematics& kin,
-                          const double* shear_force_n, const std::uint8_t* bonded) {
+                          const double* shear_force_N, const std::uint8_t* bonded) {
   const auto n = static_cast<std::size_t>(p.n_elements);
-  return flat_joint_bonded_energy(p, geo, kin, {shear_force_n, n}, {bonded, n});
+  return flat_joint_bonded_energy(p, geo, kin, {shear_force_N, n}, {bonded, n});
 }
 
 inline ElementPlace bond_element_place(const FlatJointParams& p, const BondGeometry& geo, int e) {

@@ -36,10 +36,10 @@ struct BondGeometry : BondInterface {
 /// `bond`), with one field table: what calibration moves and reports, by name, whatever the law. SI; the
 /// defaults are Yang et al. 2018's Table 1.
 struct BondStiffnessStrength {
-  double effective_modulus_pa = 107e9;             ///< Ebar*: k_n = Ebar* / (R1 + R2)
+  double effective_modulus_Pa = 107e9;             ///< Ebar*: k_n = Ebar* / (R1 + R2)
   double stiffness_ratio = 3.1;                    ///< kappabar* = k_n / k_s
-  double tensile_strength_pa = 200e6;              ///< sigma_c
-  double cohesion_pa = 113e6;                      ///< c
+  double tensile_strength_Pa = 200e6;              ///< sigma_c
+  double cohesion_Pa = 113e6;                      ///< c
   double friction_angle_rad = 0.4363323129985824;  ///< phi (25 deg) of the shear envelope c - sigma tan(phi)
   double radius_multiplier = 1.0;                  ///< lambda: R = lambda min(R1, R2)
   /// m of the joints' Weibull-distributed strengths (0: every joint has sigma_c and c): a joint of half-length R
@@ -54,14 +54,14 @@ struct BondStiffnessStrength {
 
 /// The bonded interface of both registered bond laws: k_n = Ebar* / (R1 + R2) (r2 = 0: a disk-wall bond,
 /// L = R1), k_s = k_n / kappabar*, half-length R = lambda min(R1, R2).
-inline BondGeometry interface_geometry(double effective_modulus_pa, double stiffness_ratio, double radius_multiplier,
+inline BondGeometry interface_geometry(double effective_modulus_Pa, double stiffness_ratio, double radius_multiplier,
                                        double r1_m, double r2_m, double thickness_m) {
   const double r_min = r2_m > 0 ? std::min(r1_m, r2_m) : r1_m;
-  const double kn = effective_modulus_pa / (r1_m + r2_m);
+  const double kn = effective_modulus_Pa / (r1_m + r2_m);
   return {{radius_multiplier * r_min, thickness_m, kn, kn / stiffness_ratio}, 1.0};
 }
 inline BondGeometry interface_geometry(const BondStiffnessStrength& b, double r1_m, double r2_m, double thickness_m) {
-  return interface_geometry(b.effective_modulus_pa, b.stiffness_ratio, b.radius_multiplier, r1_m, r2_m, thickness_m);
+  return interface_geometry(b.effective_modulus_Pa, b.stiffness_ratio, b.radius_multiplier, r1_m, r2_m, thickness_m);
 }
 
 /// The strength factor w of a joint of half-length R (docs/physics-dem.md, "Weibull joint strengths"): the
@@ -86,9 +86,9 @@ struct BondKinematics {
 
 /// Resultant of a bond on disk 2 about the interface centre; disk 1 gets the opposite.
 struct BondResult {
-  double normal_force_n = 0;  ///< tension positive: the force on disk 2 is -F_n n + F_s s
-  double shear_force_n = 0;   ///< along s, on disk 2
-  double moment_nm = 0;       ///< on disk 2 about the interface centre
+  double normal_force_N = 0;  ///< tension positive: the force on disk 2 is -F_n n + F_s s
+  double shear_force_N = 0;   ///< along s, on disk 2
+  double moment_N_m = 0;      ///< on disk 2 about the interface centre
   int n_breaking = 0;         ///< elements found over strength this step (applied after the force loop)
 };
 
@@ -112,8 +112,8 @@ inline TimeStepStiffness interface_time_step_stiffness(const BondGeometry& g) {
 
 /// Force of an unbonded contact on disk 2.
 struct ContactResult {
-  double normal_force_n = 0;  ///< compression positive (pushes disk 2 away from disk 1 along n)
-  double shear_force_n = 0;   ///< along s = z x n
+  double normal_force_N = 0;  ///< compression positive (pushes disk 2 away from disk 1 along n)
+  double shear_force_N = 0;   ///< along s = z x n
 };
 
 }  // namespace kerf::dem

@@ -57,9 +57,9 @@ const BondStiffnessStrength& joint_bond(const Material& m);
 /// The micro-parameters that calibration moves, which the law concepts require of every law of the registry
 /// (E* and kappa* of the unbonded contact; Ebar*, kappabar*, sigma_c and c of the bond's BondStiffnessStrength).
 struct CalibratedParams {
-  double contact_modulus_pa, contact_stiffness_ratio;
-  double bond_modulus_pa, stiffness_ratio, tensile_strength_pa, cohesion_pa;
-  double fracture_energy_j_per_m2 = 0;  ///< of a softening joint; 0 for a law without one
+  double contact_modulus_Pa, contact_stiffness_ratio;
+  double bond_modulus_Pa, stiffness_ratio, tensile_strength_Pa, cohesion_Pa;
+  double fracture_energy_J_per_m2 = 0;  ///< of a softening joint; 0 for a law without one
 };
 CalibratedParams calibrated_params(const Material& m);
 

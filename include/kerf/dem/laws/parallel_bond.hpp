@@ -41,26 +41,26 @@ BondGeometry bond_geometry(const ParallelBondParams& p, double r1_m, double r2_m
 
 /// The bond's force and moment on disk 2 and its strength test (one element; see the header comment).
 inline BondResult bond_update(const ParallelBondParams& p, const BondGeometry& geo, const BondKinematics& kin,
-                              double* shear_force_n, const std::uint8_t* bonded, BreakMode* breaks) {
+                              double* shear_force_N, const std::uint8_t* bonded, BreakMode* breaks) {
   breaks[0] = BreakMode::none;
   if (!bonded[0]) {  // removed at its break: carries nothing
-    shear_force_n[0] = 0;
+    shear_force_N[0] = 0;
     return {};
   }
   const double r = geo.half_length_m, t = geo.thickness_m;
   const double area = 2 * r * t, inertia = t * (2 * r) * (2 * r) * (2 * r) / 12.0;
   BondResult res;
-  res.normal_force_n = geo.normal_stiffness * area * kin.gap_m;
-  res.moment_nm = -geo.normal_stiffness * inertia * kin.rotation_rad;
-  res.shear_force_n = shear_force_n[0] - geo.shear_stiffness * area * kin.shear_increment_m;
-  shear_force_n[0] = res.shear_force_n;
-  const double sigma_mean = res.normal_force_n / area;
-  const double sigma_max = sigma_mean + std::abs(res.moment_nm) * r / inertia;
-  const double tau_max = std::abs(res.shear_force_n) / area;
+  res.normal_force_N = geo.normal_stiffness * area * kin.gap_m;
+  res.moment_N_m = -geo.normal_stiffness * inertia * kin.rotation_rad;
+  res.shear_force_N = shear_force_N[0] - geo.shear_stiffness * area * kin.shear_increment_m;
+  shear_force_N[0] = res.shear_force_N;
+  const double sigma_mean = res.normal_force_N / area;
+  const double sigma_max = sigma_mean + std::abs(res.moment_N_m) * r / inertia;
+  const double tau_max = std::abs(res.shear_force_N) / area;
   // This bond's strengths: the material's times its factor w (Weibull strengths; w = 1: the material's to the bit).
-  if (sigma_max > p.bond.tensile_strength_pa * geo.strength_factor)
+  if (sigma_max > p.bond.tensile_strength_Pa * geo.strength_factor)
     breaks[0] = BreakMode::tension;
-  else if (tau_max >= p.bond.cohesion_pa * geo.strength_factor - sigma_mean * p.tan_friction_angle)
+  else if (tau_max >= p.bond.cohesion_Pa * geo.strength_factor - sigma_mean * p.tan_friction_angle)
     breaks[0] = BreakMode::shear;
   res.n_breaking = breaks[0] != BreakMode::none;
   return res;
@@ -89,7 +89,7 @@ inline TimeStepStiffness bond_time_step_stiffness(const ParallelBondParams&, con
 }
 /// 1/2 k_n A g^2 + 1/2 k_n I theta^2 + 1/2 F_s^2 / (k_s A) while bonded.
 double bond_energy(const ParallelBondParams& p, const BondGeometry& geo, const BondKinematics& kin,
-                   const double* shear_force_n, const std::uint8_t* bonded);
+                   const double* shear_force_N, const std::uint8_t* bonded);
 /// The whole bond: centred on the contact, 2R long.
 inline ElementPlace bond_element_place(const ParallelBondParams&, const BondGeometry& geo, int) {
   return {0.0, 2 * geo.half_length_m};

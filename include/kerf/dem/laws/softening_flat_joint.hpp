@@ -65,7 +65,7 @@ struct SofteningFlatJointParams : FlatJointParams {
   static constexpr std::string_view kDescription =
       "the flat joint with a linear tensile softening after its strength: a fracture energy per element area "
       "(Hillerborg's fictitious crack; dem/laws/softening_flat_joint)";
-  double fracture_energy_j_per_m2 = 0;  ///< G_f per unit element area, beyond sigma_c^2 / (2 k_n)
+  double fracture_energy_J_per_m2 = 0;  ///< G_f per unit element area, beyond sigma_c^2 / (2 k_n)
   double softening_opening_m = 0;       ///< w_c = 2 G_f / sigma_c (0 when sigma_c = 0), derived by validated()
 
   /// The flat joint's keys, then fracture_energy_J_per_m2.
@@ -99,7 +99,7 @@ inline ClosedPart element_closed_part(double gap_m, double theta, double a, doub
 /// The load of a closed part [c, d] (d > c) of an element: F_n = k_n t int_c^d g dxi (<= 0, compression) and its
 /// moment about the element's centroid xi_e; `kn_t` = k_n t.
 struct ElementLoad {
-  double normal_force_n, moment_nm;
+  double normal_force_N, moment_N_m;
 };
 inline ElementLoad element_closed_load(double kn_t, double gap_m, double theta, const ClosedPart& part, double xi_e) {
   const double c = part.start_m, d = part.end_m;
@@ -113,7 +113,7 @@ inline ElementLoad element_closed_load(double kn_t, double gap_m, double theta, 
 /// joint's strength w sigma_c and softening opening 2 G_f / (w sigma_c) (its fracture energy is the material's).
 inline double softening_damage(const SofteningFlatJointParams& p, const BondGeometry& geo, double opening_m) {
   const double w_c = p.softening_opening_m / geo.strength_factor;
-  const double g0 = p.bond.tensile_strength_pa * geo.strength_factor / geo.normal_stiffness, gf = g0 + w_c;
+  const double g0 = p.bond.tensile_strength_Pa * geo.strength_factor / geo.normal_stiffness, gf = g0 + w_c;
   if (!(opening_m > g0)) return 0.0;
   if (!(opening_m < gf)) return 1.0;
   return std::clamp(1.0 - g0 * (gf - opening_m) / (opening_m * w_c), 0.0, 1.0);
@@ -124,7 +124,7 @@ inline double softening_damage(const SofteningFlatJointParams& p, const BondGeom
 /// (the caller applies them after the whole loop, as the flat joint's). Undamaged elements within their strength
 /// give the flat joint's numbers to the bit.
 inline BondResult softening_flat_joint_update(const SofteningFlatJointParams& p, const BondGeometry& geo,
-                                              const BondKinematics& kin, std::span<double> shear_force_n,
+                                              const BondKinematics& kin, std::span<double> shear_force_N,
                                               std::span<const std::uint8_t> bonded, std::span<BreakMode> breaks,
                                               std::span<double> damage) {
   const int nr = p.n_elements;
@@ -134,14 +134,14 @@ inline BondResult softening_flat_joint_update(const SofteningFlatJointParams& p,
   const double ks_area = geo.shear_stiffness * area;
   const double theta = kin.rotation_rad;
   const double tan_phi = p.tan_friction_angle;
-  const double sigma_c = p.bond.tensile_strength_pa * geo.strength_factor;  // this joint's strengths, as the flat
-  const double cohesion = p.bond.cohesion_pa * geo.strength_factor;         // joint forms them
+  const double sigma_c = p.bond.tensile_strength_Pa * geo.strength_factor;  // this joint's strengths, as the flat
+  const double cohesion = p.bond.cohesion_Pa * geo.strength_factor;         // joint forms them
   BondResult r;
   for (int e = 0; e < nr; ++e) {
     const double a = -geo.half_length_m + e * le;
     const double xi_e = a + 0.5 * le;
     double fn, me;
-    double fs = shear_force_n[e] - ks_area * kin.shear_increment_m;  // incremental shear (undamaged)
+    double fs = shear_force_N[e] - ks_area * kin.shear_increment_m;  // incremental shear (undamaged)
     breaks[e] = BreakMode::none;
     if (bonded[e]) {
       // The flat joint's bonded element first: force, moment and stress, the same operations in the same order.
@@ -166,10 +166,10 @@ inline BondResult softening_flat_joint_update(const SofteningFlatJointParams& p,
         const ClosedPart closed = element_closed_part(kin.gap_m, theta, a, le);
         const ElementLoad c = closed.end_m > closed.start_m ? element_closed_load(kn_t, kin.gap_m, theta, closed, xi_e)
                                                             : ElementLoad{0.0, 0.0};
-        fn = c.normal_force_n + (1 - d) * (fn - c.normal_force_n);
-        me = c.moment_nm + (1 - d) * (me - c.moment_nm);
+        fn = c.normal_force_N + (1 - d) * (fn - c.normal_force_N);
+        me = c.moment_N_m + (1 - d) * (me - c.moment_N_m);
         const double keep = d_old < 1 ? (1 - d) / (1 - d_old) : 0.0;
-        fs = keep * shear_force_n[e] - (1 - d) * ks_area * kin.shear_increment_m;
+        fs = keep * shear_force_N[e] - (1 - d) * ks_area * kin.shear_increment_m;
         if (d >= 1) {
           breaks[e] = BreakMode::tension;
           ++r.n_breaking;
@@ -183,25 +183,25 @@ inline BondResult softening_flat_joint_update(const SofteningFlatJointParams& p,
       const ClosedPart closed = element_closed_part(kin.gap_m, theta, a, le);
       if (closed.end_m > closed.start_m) {
         const ElementLoad load = element_closed_load(kn_t, kin.gap_m, theta, closed, xi_e);
-        fn = load.normal_force_n;
-        me = load.moment_nm;
+        fn = load.normal_force_N;
+        me = load.moment_N_m;
         const double limit = p.residual_friction_coefficient * std::abs(fn);
         fs = std::clamp(fs, -limit, limit);
       } else {
         fn = me = fs = 0.0;
       }
     }
-    shear_force_n[e] = fs;
-    r.normal_force_n += fn;
-    r.shear_force_n += fs;
-    r.moment_nm += fn * xi_e + me;
+    shear_force_N[e] = fs;
+    r.normal_force_N += fn;
+    r.shear_force_N += fs;
+    r.moment_N_m += fn * xi_e + me;
   }
   return r;
 }
 
 /// Elastic energy stored in the bonded elements, damaged ones at their secant stiffness (the header's formula).
 double softening_flat_joint_bonded_energy(const SofteningFlatJointParams& p, const BondGeometry& geo,
-                                          const BondKinematics& kin, std::span<const double> shear_force_n,
+                                          const BondKinematics& kin, std::span<const double> shear_force_N,
                                           std::span<const std::uint8_t> bonded, std::span<const double> damage);
 
 // --- the law's functions for the engine (kerf/dem/laws/contact_laws.hpp, concept BondLawParams) ---
@@ -210,17 +210,17 @@ double softening_flat_joint_bonded_energy(const SofteningFlatJointParams& p, con
 // damage, and the flat joint's, without it, are deleted for this law so that no caller can take them by mistake.
 
 inline BondResult bond_update(const SofteningFlatJointParams& p, const BondGeometry& geo, const BondKinematics& kin,
-                              double* shear_force_n, const std::uint8_t* bonded, BreakMode* breaks, double* damage) {
+                              double* shear_force_N, const std::uint8_t* bonded, BreakMode* breaks, double* damage) {
   const auto n = static_cast<std::size_t>(p.n_elements);
-  return softening_flat_joint_update(p, geo, kin, {shear_force_n, n}, {bonded, n}, {breaks, n}, {damage, n});
+  return softening_flat_joint_update(p, geo, kin, {shear_force_N, n}, {bonded, n}, {breaks, n}, {damage, n});
 }
 BondResult bond_update(const SofteningFlatJointParams&, const BondGeometry&, const BondKinematics&, double*,
                        const std::uint8_t*, BreakMode*) = delete;
 
 inline double bond_energy(const SofteningFlatJointParams& p, const BondGeometry& geo, const BondKinematics& kin,
-                          const double* shear_force_n, const std::uint8_t* bonded, const double* damage) {
+                          const double* shear_force_N, const std::uint8_t* bonded, const double* damage) {
   const auto n = static_cast<std::size_t>(p.n_elements);
-  return softening_flat_joint_bonded_energy(p, geo, kin, {shear_force_n, n}, {bonded, n}, {damage, n});
+  return softening_flat_joint_bonded_energy(p, geo, kin, {shear_force_N, n}, {bonded, n}, {damage, n});
 }
 double bond_energy(const SofteningFlatJointParams&, const BondGeometry&, const BondKinematics&, const double*,
                    const std::uint8_t*) = delete;

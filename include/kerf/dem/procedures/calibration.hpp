@@ -51,8 +51,8 @@
 namespace kerf::dem {
 
 struct MacroProperties {
-  double youngs_modulus_pa = 0, poissons_ratio = 0, tensile_strength_pa = 0, compressive_strength_pa = 0;
-  double fracture_toughness_pa_sqrt_m = 0;  ///< K_IC of the toughness test; 0: not measured (as a target: none)
+  double youngs_modulus_Pa = 0, poissons_ratio = 0, tensile_strength_Pa = 0, compressive_strength_Pa = 0;
+  double fracture_toughness_Pa_sqrt_m = 0;  ///< K_IC of the toughness test; 0: not measured (as a target: none)
 };
 
 /// The calibration's fifth test: a notched beam (its specimen from the calibration's own SpecimenSources for
@@ -78,7 +78,7 @@ struct CalibrationSpec {
   int packings = 1;
   LoadingSpec tension, compression;
   /// The toughness test: K_IC measured on every candidate (the mean over the beams' packings), a target when
-  /// targets.fracture_toughness_pa_sqrt_m > 0.
+  /// targets.fracture_toughness_Pa_sqrt_m > 0.
   std::optional<ToughnessCalibration> toughness;
   bool free_fracture_energy = false;  ///< fracture_energy_J_per_m2 (softening_flat_joint): the toughness's lever
   double toughness_tolerance = 0.10;  ///< relative, on K_IC

@@ -22,7 +22,7 @@ Material scale_bond_strengths(const Material& m, double factor, const std::strin
 /// One evaluation of a cut calibration: the strength factor and the mean main force it gave.
 struct CutCalibrationPoint {
   double strength_factor = 1;
-  double main_force_n = 0;
+  double main_force_N = 0;
 };
 
 /// The next strength factor, s_next = s (F_target / F)^(1 / p) from the last point, with p = d ln F / d ln s
@@ -30,6 +30,6 @@ struct CutCalibrationPoint {
 /// scatter by 10-30 % (docs/dem.md), so a raw secant through two of them can point anywhere. With one point
 /// p = 1: quasi-static brittle forces scale with the strengths. The step is capped at a factor 4 either way.
 /// Throws ModelError on a non-positive or non-finite force (nothing to scale).
-double next_strength_factor(const std::vector<CutCalibrationPoint>& history, double target_main_force_n);
+double next_strength_factor(const std::vector<CutCalibrationPoint>& history, double target_main_force_N);
 
 }  // namespace kerf::dem

@@ -57,7 +57,7 @@ struct CutWindowBox {
   /// d < absorbing_m from the nearest of them has its velocity decay at absorbing_rate_per_s (1 - d / L)^2
   /// (Simulation::set_absorbing_rates), set when the window is built. The top is the free surface.
   double absorbing_m = 0, absorbing_rate_per_s = 0;
-  /// The absorbing layer along the workpiece's own held rows (the left side and the bottom: CutParams::
+  /// The absorbing layer along the workpiece's own held rows (the left side and the bottom: CutParams::Cut::
   /// held_absorbing_depths; 0: none): a free disk at distance d < held_absorbing_m from them (HeldRows) has
   /// its velocity decay at held_absorbing_rate_per_s (1 - d / L)^2; where the two layers meet, the larger rate.
   double held_absorbing_m = 0, held_absorbing_rate_per_s = 0;
@@ -122,7 +122,7 @@ class CutWindow {
   ChipAccount chips() const;
   std::size_t rebuilds() const { return rebuilds_; }
   /// From the next build on, also remove (as chips) every disk above the cut line that no path of joints with a
-  /// bonded element ties to a held disk of the workpiece (CutParams::window_remove_loose_fragments; not stored:
+  /// bonded element ties to a held disk of the workpiece (CutParams::ActiveWindow::remove_loose_fragments; not stored:
   /// the cut sets it again from its parameters when restored).
   void set_remove_loose_fragments(bool on) { remove_loose_ = on; }
   /// Removes the running window's disks `grains` (indices in `current`) as crushed grains, and `tied_disks` as

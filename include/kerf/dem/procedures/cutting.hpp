@@ -35,88 +35,111 @@ enum class GrooveShape { none, rectangular, trapezoidal };
 /// "none", "rectangular", "trapezoidal" (the inverted trapezoid of the real laser grooves).
 const EnumNames<GrooveShape>& groove_shape_names();
 
+/// The cut's parameters, one struct per scene section (its keys in that section's field table: cut_fields(),
+/// tool_fields(), ...), in SI.
 struct CutParams {
-  double depth_of_cut_m = 0.1e-3;
-  double speed_m_per_s = 1.0;                 ///< the paper's 4.23 mm/s is scaled up (physics-dem.md section 4)
-  double length_m = 0.5e-3;                   ///< tool travel
-  double rake_deg = -15, clearance_deg = 15;  ///< Yang et al. 2018, Section 4
-  double edge_radius_m = 0;                   ///< 0: sharp edge
-  int edge_segments = 4;                      ///< wall segments approximating a rounded edge
-  /// Tool-workpiece Coulomb friction on every tool face; negative (the default): the workpiece material's
-  /// particle friction mu, as for any disk-wall contact (PFC's default). Not given by Yang et al. 2018.
-  double tool_friction_coefficient = -1;
-  /// Height of the rake face's top above the tool tip; 0 (the default): 3 depths of cut, room for the chip.
-  /// Yang et al. 2018 does not give its tool's size: a fixed height is one tool for every depth of cut.
-  double rake_face_height_m = 0;
-  GrooveShape groove_shape = GrooveShape::none;
-  double groove_depth_m = 0.1e-3, groove_pitch_m = 0.2e-3, groove_width_m = 0.06e-3;
-  double groove_bottom_width_m = 0.03e-3;  ///< trapezoidal only: width at the groove bottom
-  /// The laser-affected layer along each groove's walls and bottom (apply_groove_damage): joints whose
-  /// midpoint lies within this distance of the groove's outline are pre-broken, each with probability
-  /// groove_damage_broken_fraction. 0 (the default): pristine glass up to the groove, as Yang et al. 2018's DEM.
-  double groove_damage_depth_m = 0;
-  double groove_damage_broken_fraction = 1;
-  /// Part of the travel excluded from the mean forces (the entry), as a fraction of the travel.
-  double entry_fraction = 0.25;
-  int sample_every_steps = 50;
-  /// Report only: CutResult::travel_windows, mean forces per stretch of travel of this length (steadiness).
-  double window_m = 0.1e-3;
-  /// The active window of a steady-state cut (section "active_window", kerf/dem/procedures/cut_window.hpp): off, every
-  /// disk of the workpiece is integrated. Extents in depths of cut around the cutting edge.
-  bool active_window = false;
-  /// Defaults: the smallest window whose steady forces agreed with the whole workpiece's within their standard
-  /// errors with local damping 0.7 (one packing); undamped they do not (80 % more main force on four packings):
-  /// docs/dem.md, "Steady-state cuts".
-  double window_ahead_depths = 7, window_behind_depths = 3, window_below_depths = 4, window_above_depths = 4;
-  double window_shift_depths = 0.25;  ///< tool travel between two rebuilds of the window
-  /// The absorbing layer inside the window's ahead, behind and lower edges (kerf/dem/procedures/cut_window.hpp), its
-  /// thickness L in depths of cut (0: none), and the e-folds by which it attenuates a p-wave's amplitude on its
-  /// way through the layer and back: the peak rate 3 a c / L, with c = sqrt(E* / rho) of the contact law.
-  double window_absorbing_depths = 0, window_absorbing_attenuation = 2;
-  /// A bound, not a model of glass (issue 41 item 4): at each rebuild of the window, remove every disk above the
-  /// cut line that no intact joint path ties to the workpiece's held rows (CutWindow::set_remove_loose_fragments),
-  /// as if every loose fragment left the plane at once and the tool met none of them again.
-  bool window_remove_loose_fragments = false;
-  /// Debris grains that crush (issue 41 item 4; 0, the default: a disk never breaks). A disk of a loose fragment
-  /// (no intact joint path to the held rows) pressed by a tool face with a normal force above its splitting load,
-  /// F = pi sigma r t (a cylinder of radius r and length t under two opposite line loads splits when
-  /// 2 F / (pi 2r t) reaches sigma: the Brazilian test), is crushed: removed at once, its energy leaves with it.
-  /// Without it a single loose disk wedged under the tool's tip carries up to ~100 N per mm of width
-  /// (docs/notes/2026-11-29-jams.md). Checked at each force sample; windowed cuts only.
-  double window_grain_strength_pa = 0;
-  /// The workpiece's own disks that crush (issue 41 item 4; 0, the default: a disk tied to the workpiece breaks
-  /// only by its joints). The same law for a disk still tied to the held rows: pressed by a tool face above
-  /// pi sigma r t, it is removed at once, its intact joints with it. A flat joint never fails in compression, so a
-  /// disk of the cut line pressed by the tool's tip carries what the lattice behind it does (jams of 50-130 N per mm
-  /// of width at every disk size measured: docs/notes/2026-11-29-jams.md); glass under a sharp tip is crushed at the
-  /// scale below a disk. Checked at each force sample; windowed cuts only.
-  double window_tied_grain_strength_pa = 0;
-  /// An absorbing layer along the workpiece's held rows (its left side and bottom, as rigid as the window's
-  /// frame), with or without a window: its thickness in depths of cut (0: none), the same attenuation.
-  double held_absorbing_depths = 0;
-  /// The edge zone (issue 54 item 4; section "edge_zone", windowed cuts only; off by default): the tool's edge as a
-  /// sub-grid model. Glass at the cut line meets the edge through a ductile layer about d_c thick, 100-300 times
-  /// below the disks (docs/physics-glass-edge.md), whose force per unit width comes from the analytic side
-  /// (kerf::edge_force_per_width: the layer lambda d_c cut at the tool's rake with friction mu). Within
-  /// `edge_zone_radius_m` of the tip (0: the workpiece's largest disk diameter): while a disk tied to the workpiece
-  /// straddles the cut line there (the intact glass the edge meets), the tool carries the layer's force and those
-  /// disks its reaction; a disk reaching below the cut line that the tool touches there leaves the model as the
-  /// layer's chip and powder (tied or loose alike: a rigid 20 um grain at the edge is the jams' artefact).
-  bool edge_zone = false;
-  double edge_zone_radius_m = 0;           ///< the cut resolves 0 to the largest diameter when it starts
-  double edge_layer_factor = 1;            ///< lambda = l / d_c (physics-glass-edge.md section 4: d_c)
-  double edge_friction_coefficient = 0.3;  ///< tool on glass at the edge (section 4: 0.15-0.4)
-  /// The layer's force per unit width [N/m], cutting and thrust; negative (the default): the cut kind computes them
-  /// from the material and the tool (kerf::edge_force_per_width) before the run starts.
-  double edge_cutting_force_n_per_m = -1, edge_thrust_force_n_per_m = -1;
+  /// Section "cut": the tool's motion and the force samples.
+  struct Cut {
+    double depth_of_cut_m = 0.1e-3;
+    double speed_m_per_s = 1.0;  ///< the paper's 4.23 mm/s is scaled up (physics-dem.md section 4)
+    double length_m = 0.5e-3;    ///< tool travel
+    /// Part of the travel excluded from the mean forces (the entry), as a fraction of the travel.
+    double entry_fraction = 0.25;
+    int sample_every_steps = 50;
+    /// Report only: CutResult::travel_windows, mean forces per stretch of travel of this length (steadiness).
+    double window_m = 0.1e-3;
+    /// An absorbing layer along the workpiece's held rows (its left side and bottom, as rigid as the window's
+    /// frame), with or without a window: its thickness in depths of cut (0: none), the attenuation
+    /// ActiveWindow::absorbing_attenuation.
+    double held_absorbing_depths = 0;
+  };
+  /// Section "tool".
+  struct Tool {
+    double rake_deg = -15, clearance_deg = 15;  ///< Yang et al. 2018, Section 4
+    double edge_radius_m = 0;                   ///< 0: sharp edge
+    int edge_segments = 4;                      ///< wall segments approximating a rounded edge
+    /// Tool-workpiece Coulomb friction on every tool face; negative (the default): the workpiece material's
+    /// particle friction mu, as for any disk-wall contact (PFC's default). Not given by Yang et al. 2018.
+    double friction_coefficient = -1;
+    /// Height of the rake face's top above the tool tip; 0 (the default): 3 depths of cut, room for the chip.
+    /// Yang et al. 2018 does not give its tool's size: a fixed height is one tool for every depth of cut.
+    double rake_face_height_m = 0;
+  };
+  /// Section "grooves".
+  struct Grooves {
+    GrooveShape shape = GrooveShape::none;
+    double depth_m = 0.1e-3, pitch_m = 0.2e-3, width_m = 0.06e-3;
+    double bottom_width_m = 0.03e-3;  ///< trapezoidal only: width at the groove bottom
+    /// The laser-affected layer along each groove's walls and bottom (apply_groove_damage): joints whose
+    /// midpoint lies within this distance of the groove's outline are pre-broken, each with probability
+    /// damage_broken_fraction. 0 (the default): pristine glass up to the groove, as Yang et al. 2018's DEM.
+    double damage_depth_m = 0;
+    double damage_broken_fraction = 1;
+  };
+  /// Section "active_window": the active window of a steady-state cut (kerf/dem/procedures/cut_window.hpp): off,
+  /// every disk of the workpiece is integrated. Extents in depths of cut around the cutting edge.
+  struct ActiveWindow {
+    bool enabled = false;
+    /// Defaults: the smallest window whose steady forces agreed with the whole workpiece's within their standard
+    /// errors with local damping 0.7 (one packing); undamped they do not (80 % more main force on four packings):
+    /// docs/dem.md, "Steady-state cuts".
+    double ahead_depths = 7, behind_depths = 3, below_depths = 4, above_depths = 4;
+    double shift_depths = 0.25;  ///< tool travel between two rebuilds of the window
+    /// The absorbing layer inside the window's ahead, behind and lower edges (kerf/dem/procedures/cut_window.hpp),
+    /// its thickness L in depths of cut (0: none), and the e-folds by which it attenuates a p-wave's amplitude on
+    /// its way through the layer and back: the peak rate 3 a c / L, with c = sqrt(E* / rho) of the contact law.
+    double absorbing_depths = 0, absorbing_attenuation = 2;
+    /// A bound, not a model of glass (issue 41 item 4): at each rebuild of the window, remove every disk above the
+    /// cut line that no intact joint path ties to the workpiece's held rows (CutWindow::set_remove_loose_fragments),
+    /// as if every loose fragment left the plane at once and the tool met none of them again.
+    bool remove_loose_fragments = false;
+    /// Debris grains that crush (issue 41 item 4; 0, the default: a disk never breaks). A disk of a loose fragment
+    /// (no intact joint path to the held rows) pressed by a tool face with a normal force above its splitting load,
+    /// F = pi sigma r t (a cylinder of radius r and length t under two opposite line loads splits when
+    /// 2 F / (pi 2r t) reaches sigma: the Brazilian test), is crushed: removed at once, its energy leaves with it.
+    /// Without it a single loose disk wedged under the tool's tip carries up to ~100 N per mm of width
+    /// (docs/notes/2026-11-29-jams.md). Checked at each force sample; windowed cuts only.
+    double grain_strength_Pa = 0;
+    /// The workpiece's own disks that crush (issue 41 item 4; 0, the default: a disk tied to the workpiece breaks
+    /// only by its joints). The same law for a disk still tied to the held rows: pressed by a tool face above
+    /// pi sigma r t, it is removed at once, its intact joints with it. A flat joint never fails in compression, so a
+    /// disk of the cut line pressed by the tool's tip carries what the lattice behind it does (jams of 50-130 N per
+    /// mm of width at every disk size measured: docs/notes/2026-11-29-jams.md); glass under a sharp tip is crushed
+    /// at the scale below a disk. Checked at each force sample; windowed cuts only.
+    double tied_grain_strength_Pa = 0;
+  };
+  /// Section "edge_zone" (issue 54 item 4; windowed cuts only; off by default): the tool's edge as a sub-grid
+  /// model. Glass at the cut line meets the edge through a ductile layer about d_c thick, 100-300 times below the
+  /// disks (docs/physics-glass-edge.md), whose force per unit width comes from the analytic side
+  /// (kerf::edge_force_per_width: the layer lambda d_c cut at the tool's rake with friction mu). Within `radius_m`
+  /// of the tip (0: the workpiece's largest disk diameter): while a disk tied to the workpiece straddles the cut
+  /// line there (the intact glass the edge meets), the tool carries the layer's force and those disks its
+  /// reaction; a disk reaching below the cut line that the tool touches there leaves the model as the layer's chip
+  /// and powder (tied or loose alike: a rigid 20 um grain at the edge is the jams' artefact).
+  struct EdgeZone {
+    bool enabled = false;
+    double radius_m = 0;                ///< the cut resolves 0 to the largest diameter when it starts
+    double layer_factor = 1;            ///< lambda = l / d_c (physics-glass-edge.md section 4: d_c)
+    double friction_coefficient = 0.3;  ///< tool on glass at the edge (section 4: 0.15-0.4)
+    /// The layer's force per unit width [N/m], cutting and thrust; negative (the default): the cut kind computes
+    /// them from the material and the tool (kerf::edge_force_per_width) before the run starts.
+    double cutting_force_N_per_m = -1, thrust_force_N_per_m = -1;
+  };
+
+  Cut cut;
+  Tool tool;
+  Grooves grooves;
+  ActiveWindow window;
+  EdgeZone edge_zone;
 };
 
-/// The keys of the scene's "cut", "tool" and "grooves" sections (kerf/field_table.hpp).
-const FieldTable<CutParams>& cut_fields();
-const FieldTable<CutParams>& tool_fields();
-const FieldTable<CutParams>& groove_fields();
-const FieldTable<CutParams>& active_window_fields();
-const FieldTable<CutParams>& edge_zone_fields();
+/// The keys of the scene's "cut", "tool", "grooves", "active_window" and "edge_zone" sections
+/// (kerf/field_table.hpp), each of its section's struct.
+const FieldTable<CutParams::Cut>& cut_fields();
+const FieldTable<CutParams::Tool>& tool_fields();
+const FieldTable<CutParams::Grooves>& groove_fields();
+const FieldTable<CutParams::ActiveWindow>& active_window_fields();
+const FieldTable<CutParams::EdgeZone>& edge_zone_fields();
 
 /// Checks every field's range and the cross-field constraints (groove narrower than its pitch, trapezoid bottom
 /// narrower than its top, the tool's wedge angle positive ...); InputError names the dotted key, value and expectation.
@@ -158,7 +181,7 @@ double leading_x_in_band(const std::vector<std::array<double, 2>>& outline, doub
 // --- running ---
 
 struct CutSample {
-  double travel_m, time_s, main_force_n, thrust_force_n;  ///< forces averaged over the sample interval
+  double travel_m, time_s, main_force_N, thrust_force_N;  ///< forces averaged over the sample interval
 };
 
 struct CutCrackCounts {
@@ -194,7 +217,7 @@ CutCrackCounts count_cut_cracks(const std::vector<CrackEvent>& cracks, double y_
 /// The mean forces over one stretch of the tool's travel, [from, to).
 struct TravelWindow {
   double from_m = 0, to_m = 0;
-  double main_force_n = 0, thrust_force_n = 0;
+  double main_force_N = 0, thrust_force_N = 0;
   int n_samples = 0;
 };
 
@@ -256,10 +279,10 @@ struct CutEdgeRecord {
 /// The edge zone over the steady part (CutParams::edge_zone; a plain record, stored in the cut's checkpoints): the
 /// samples, those in which the edge met intact glass (and carried the layer's force), and the energy over the
 /// energy books' steady part: the tool's work on the layer, and the reaction's work on the disks (what the DEM
-/// received; the rest, the layer's own, is dissipated in it, and counted in CutEnergy::dissipated_j).
+/// received; the rest, the layer's own, is dissipated in it, and counted in CutEnergy::dissipated_J).
 struct CutEdgeZoneRecord {
   std::int64_t samples = 0, intact_samples = 0;
-  double tool_work_j = 0, reaction_work_j = 0;
+  double tool_work_J = 0, reaction_work_J = 0;
 };
 
 /// Where the tool's work goes, booked as a cut runs (issue 41 item 4). The integrated disks (the whole workpiece,
@@ -270,23 +293,23 @@ struct CutEdgeZoneRecord {
 /// and the integrated disks' energies at one moment (Simulation::kinetic_energy; strain:
 /// Simulation::stored_elastic_energy, the tool's contacts included).
 struct CutEnergyBooks {
-  double tool_work_j = 0, left_kinetic_j = 0, left_strain_j = 0;
-  double kinetic_j = 0, strain_j = 0;
+  double tool_work_J = 0, left_kinetic_J = 0, left_strain_J = 0;
+  double kinetic_J = 0, strain_J = 0;
 };
 
 /// The books over the steady part (the same travel as the mean forces): what each took, and the balance
 /// dissipated = tool work - left kinetic - left strain - (kinetic + strain at the end - at the steady start).
 struct CutEnergy {
-  double tool_work_j = 0, dissipated_j = 0, left_kinetic_j = 0, left_strain_j = 0, stored_change_j = 0;
+  double tool_work_J = 0, dissipated_J = 0, left_kinetic_J = 0, left_strain_J = 0, stored_change_J = 0;
 };
 
 struct CutResult {
   std::vector<CutSample> samples;
-  double main_force_n = 0, thrust_force_n = 0, main_force_std_n = 0, thrust_force_std_n = 0;  ///< steady part
+  double main_force_N = 0, thrust_force_N = 0, main_force_std_N = 0, thrust_force_std_N = 0;  ///< steady part
   /// Standard errors of the steady means (kerf/time_series.hpp): batch means when the steady part holds
   /// kMinBatches batches of 5 g samples, else from the autocorrelation (methods named); the statistical
   /// inefficiency g (samples) and the batch length of each.
-  double main_force_sem_n = 0, thrust_force_sem_n = 0;
+  double main_force_sem_N = 0, thrust_force_sem_N = 0;
   const char *main_force_sem_method = "none", *thrust_force_sem_method = "none";
   double main_force_inefficiency = 1, thrust_force_inefficiency = 1;
   std::size_t main_force_batch_samples = 1, thrust_force_batch_samples = 1;
@@ -299,7 +322,7 @@ struct CutResult {
   /// have a standard error; if not, why (one line for the log and summary.json).
   bool steady = false;
   std::string not_steady_reason;
-  std::vector<TravelWindow> travel_windows;  ///< mean forces per params.window_m of travel (once finished)
+  std::vector<TravelWindow> travel_windows;  ///< mean forces per params.cut.window_m of travel (once finished)
   CutCrackCounts cracks;
   double y_top_m = 0, y_cut_m = 0, width_m = 0;  ///< width = out-of-plane thickness
   std::array<double, 4> workpiece_box_m{};       ///< x_min, x_max, y_min, y_max before the cut
@@ -328,8 +351,8 @@ struct CutResult {
 };
 
 /// {main, thrust} from the force the disks exert on the tool (cutting direction -x): main = F_x, thrust = F_y.
-inline std::array<double, 2> tool_force_components(double fx_on_tool_n, double fy_on_tool_n) {
-  return {fx_on_tool_n, fy_on_tool_n};
+inline std::array<double, 2> tool_force_components(double fx_on_tool_N, double fy_on_tool_N) {
+  return {fx_on_tool_N, fy_on_tool_N};
 }
 
 /// The travel before a cut's forces are steady: the entry at the free edge. Measured on the Yang et al. 2018 workpiece
@@ -354,8 +377,8 @@ double distance_to_groove_outline(const CutParams& params, double dx_m, double d
 
 /// The laser-affected layer of a grooved workpiece cut from a specimen of box {x_min, x_max, y_min, y_max}
 /// (the grooves' places: groove_centres, below y_max): breaks every element of
-/// the joints whose midpoint lies within params.groove_damage_depth_m of a groove's walls or bottom, each
-/// joint with probability params.groove_damage_broken_fraction (a hash of the joint's index: the same joints
+/// the joints whose midpoint lies within params.grooves.damage_depth_m of a groove's walls or bottom, each
+/// joint with probability params.grooves.damage_broken_fraction (a hash of the joint's index: the same joints
 /// for the same packing). A broken element carries compression and friction (a closed micro-crack), no
 /// tension (ultrashort laser pulses leave micro-cracks around what they modify in glass: Werr et al. 2022,
 /// docs/references.md). Returns {joints in the layer, joints broken}.
@@ -399,7 +422,7 @@ class CutRun {
   CutResult res_;
   std::int32_t first_tool_wall_ = 0, n_tool_walls_ = 0;
   /// Crushes the disks the tool presses beyond their splitting load: loose ones at CutParams::
-  /// window_grain_strength_pa, those tied to the workpiece at window_tied_grain_strength_pa (each 0: never).
+  /// window_grain_strength_Pa, those tied to the workpiece at window_tied_grain_strength_Pa (each 0: never).
   void crush_grains();
   /// Runs `next` (a window built from the running one) in its place, booking what leaves with the disks it drops.
   void take_window(Simulation next);
@@ -432,7 +455,7 @@ class CutRun {
   /// meets and loads it with the layer's reaction (Simulation::set_disk_loads); returns whether it met any.
   bool edge_zone_begin_sample();
   /// The reaction's work over a sample on the loaded disks that were at `start_m` when it began.
-  double edge_zone_reaction_work_j(const std::vector<std::array<double, 2>>& start_m) const;
+  double edge_zone_reaction_work_J(const std::vector<std::array<double, 2>>& start_m) const;
   template <class Self, class Io>
   static void zone_record_fields(Self& run, Io& io);
 };

@@ -40,15 +40,15 @@ const FieldTable<LoadingSpec>& loading_fields();
 LoadingSpec read_loading_spec(ObjectReader& reader, LabTest test);
 
 struct CurveSample {
-  double time_s, axial_strain, lateral_strain, stress_pa;  ///< strain and stress positive in the loading sense
+  double time_s, axial_strain, lateral_strain, stress_Pa;  ///< strain and stress positive in the loading sense
   int n_tension_cracks, n_shear_cracks;
 };
 
 struct LabTestResult {
   LabTest test = LabTest::compression;
   std::vector<CurveSample> curve;
-  double peak_stress_pa = 0, strain_at_peak = 0;
-  double youngs_modulus_pa = 0, poissons_ratio = 0;  ///< secant at 50 % of the peak
+  double peak_stress_Pa = 0, strain_at_peak = 0;
+  double youngs_modulus_Pa = 0, poissons_ratio = 0;  ///< secant at 50 % of the peak
   double width_m = 0, height_m = 0, speed_m_per_s = 0;
   std::int64_t steps = 0;
   double time_step_s = 0, wall_time_s = 0;

@@ -38,10 +38,10 @@ struct SpecimenSpec {
   Packing packing = Packing::random;
   std::uint64_t seed = 1;
   double packing_fraction = 0.85;       ///< area fraction used to choose the number of disks (random)
-  double compaction_pressure_pa = 3e6;  ///< isotropic pressure of the frictionless compaction
+  double compaction_pressure_Pa = 3e6;  ///< isotropic pressure of the frictionless compaction
   /// E* of the compaction's reference contact (frictionless linear, kappa* kCompactionStiffnessRatio): a
   /// glass-like stiffness, the same for every material, so that the packing is the spec's alone.
-  double compaction_modulus_pa = 90e9;
+  double compaction_modulus_Pa = 90e9;
   double installation_gap_m = 0.5e-6;  ///< joints at pairs whose surface gap is below this
   int growth_steps = 6000, relax_steps = 2000;
   /// A region of finer disks (random packing), radii uniform in [fine_radius_min, fine_radius_max], in the box
@@ -84,7 +84,7 @@ EngineSettings read_engine_settings(ObjectReader& scene_root);
 struct SpecimenReport {
   int n_particles = 0, n_bonds = 0, n_floaters_enlarged = 0, n_floaters_left = 0;
   double packing_fraction = 0, coordination_number = 0, radius_scale = 1;
-  double residual_stress_xx_pa = 0, residual_stress_yy_pa = 0, residual_stress_xy_pa = 0;
+  double residual_stress_xx_Pa = 0, residual_stress_yy_Pa = 0, residual_stress_xy_Pa = 0;
   std::int64_t genesis_steps = 0;
 };
 Json specimen_report_to_json(const SpecimenReport& r);

@@ -18,7 +18,7 @@
 //
 //   ToughnessSpec spec;                         // toughness_fields(): the scene's "toughness" section
 //   ToughnessResult r = run_toughness_test(specimen_sim, spec);
-//   r.fracture_toughness_pa_sqrt_m, r.fracture_energy_j_per_m2
+//   r.fracture_toughness_Pa_sqrt_m, r.fracture_energy_J_per_m2
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -45,7 +45,7 @@ struct ToughnessSpec {
   /// K_IC from the peak of the load averaged over this much deflection (a centred moving average): the load on
   /// a rigid roller rings in an undamped glass, by tens of per cent of the load in a W = 1 mm beam.
   double peak_window_m = 0.1e-6;
-  double youngs_modulus_pa = 71e9;  ///< E' of the 2D model, for K^2 / E' (the glass's calibrated E)
+  double youngs_modulus_Pa = 71e9;  ///< E' of the 2D model, for K^2 / E' (the glass's calibrated E)
   int sample_every_steps = 50;
   bool quasi_static_check = true;  ///< rerun at half the speed and report the change of the peak load
 };
@@ -75,33 +75,33 @@ double senb_geometry_factor(double a_over_w);
 
 /// K_I = P S / (B W^1.5) f(a/W) [Pa sqrt(m)] (Srawley 1976; ASTM E399 A3.5.3): load P [N], span S, thickness B,
 /// depth W, notch a [m].
-double senb_stress_intensity(double load_n, double span_m, double thickness_m, double depth_m, double notch_m);
+double senb_stress_intensity(double load_N, double span_m, double thickness_m, double depth_m, double notch_m);
 
 struct ToughnessSample {
-  double time_s, deflection_m, load_n;  ///< load-point deflection (the load roller's travel), load on it
+  double time_s, deflection_m, load_N;  ///< load-point deflection (the load roller's travel), load on it
                                         ///< (the mean over the sample's steps)
-  double support_load_n;                ///< the two supports' reaction together (= load when quasi-static)
-  double external_work_j;               ///< integral of the load over the deflection so far
-  double stored_elastic_energy_j;       ///< Simulation::stored_elastic_energy (the rollers' contacts included)
-  double kinetic_energy_j;
+  double support_load_N;                ///< the two supports' reaction together (= load when quasi-static)
+  double external_work_J;               ///< integral of the load over the deflection so far
+  double stored_elastic_energy_J;       ///< Simulation::stored_elastic_energy (the rollers' contacts included)
+  double kinetic_energy_J;
   int n_cracks;                ///< broken joint elements beyond the notch
-  double smoothed_load_n = 0;  ///< the load averaged over peak_window_um about this deflection (at the end)
+  double smoothed_load_N = 0;  ///< the load averaged over peak_window_um about this deflection (at the end)
 };
 
 struct ToughnessResult {
   std::vector<ToughnessSample> curve;
-  double peak_load_n = 0, deflection_at_peak_m = 0;  ///< of the smoothed load (K_IC's)
-  double raw_peak_load_n = 0;                        ///< the largest sample's load, ringing included
+  double peak_load_N = 0, deflection_at_peak_m = 0;  ///< of the smoothed load (K_IC's)
+  double raw_peak_load_N = 0;                        ///< the largest sample's load, ringing included
   double depth_m = 0, length_m = 0, span_m = 0, thickness_m = 0, notch_m = 0;  ///< W, L, S, B, a (measured W)
   double notch_x_m = 0;                     ///< where the notch (and the load roller) is: mid-length
-  double fracture_toughness_pa_sqrt_m = 0;  ///< K_IC from the peak of the smoothed load
-  double raw_peak_toughness_pa_sqrt_m = 0;  ///< K from the raw peak (ringing included), for comparison
-  double external_work_j = 0;               ///< W_ext, the load roller's work to the end
-  double fracture_energy_j_per_m2 = 0;      ///< G_c: (W_ext - dU - dK) / (B (W - a)), start to broken through
+  double fracture_toughness_Pa_sqrt_m = 0;  ///< K_IC from the peak of the smoothed load
+  double raw_peak_toughness_Pa_sqrt_m = 0;  ///< K from the raw peak (ringing included), for comparison
+  double external_work_J = 0;               ///< W_ext, the load roller's work to the end
+  double fracture_energy_J_per_m2 = 0;      ///< G_c: (W_ext - dU - dK) / (B (W - a)), start to broken through
   double crack_tip_y_m = -1e300;            ///< highest crack within W/2 of the notch's line
   int through_sample = -1;                  ///< the sample at which the crack had crossed the ligament; -1: never
-  double work_of_fracture_j_per_m2 = 0;     ///< W_ext / (B (W - a)), to broken through
-  double irwin_energy_j_per_m2 = 0;         ///< K_IC^2 / E'
+  double work_of_fracture_J_per_m2 = 0;     ///< W_ext / (B (W - a)), to broken through
+  double irwin_energy_J_per_m2 = 0;         ///< K_IC^2 / E'
   double speed_m_per_s = 0, time_step_s = 0, wall_time_s = 0;
   std::int64_t steps = 0;
   std::size_t n_particles = 0;
