@@ -24,22 +24,7 @@ from matplotlib.collections import LineCollection, PatchCollection  # noqa: E402
 from matplotlib.patches import Circle  # noqa: E402
 
 import kerf  # noqa: E402
-
-
-def tied(n, i, j, held):
-    """Per disk: tied to a held disk along the joints (i, j)."""
-    neighbours = [[] for _ in range(n)]
-    for a, b in zip(i, j):
-        neighbours[a].append(b)
-        neighbours[b].append(a)
-    out = np.array(held, dtype=bool)
-    queue = list(np.flatnonzero(out))
-    while queue:
-        for v in neighbours[queue.pop()]:
-            if not out[v]:
-                out[v] = True
-                queue.append(v)
-    return out
+from kerf.frames import tied  # noqa: E402
 
 
 def segment_distance(p, a, b):

@@ -23,25 +23,10 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 import kerf  # noqa: E402
+from kerf.frames import tied  # noqa: E402
 from kerf.result_keys import CutResults as R  # noqa: E402
 
 REACHES_UM = (0.0, 5.0, 26.0)
-
-
-def tied(n, i, j, held):
-    """Per disk: tied to a held disk along the joints (i, j)."""
-    neighbours = [[] for _ in range(n)]
-    for a, b in zip(i, j):
-        neighbours[a].append(b)
-        neighbours[b].append(a)
-    out = np.array(held, dtype=bool)
-    queue = list(np.flatnonzero(out))
-    while queue:
-        for v in neighbours[queue.pop()]:
-            if not out[v]:
-                out[v] = True
-                queue.append(v)
-    return out
 
 
 def gap_um(frame, y_cut_mm):
