@@ -8,8 +8,11 @@
 source "$(dirname "$0")/lib/dem_common.sh" "$@"
 
 scene="$src/data/scenes/dem_cut.json"
+# A cut long enough that the run is still going when the signals below reach it, even on a loaded machine: 0.3 mm,
+# 166,520 steps, 1.3 s on an idle core, the first checkpoint at step 500 (at 0.08 mm, 0.35 s, it once finished
+# first while two other heavy jobs ran, 2026-12-06).
 small=(--set specimen.width_mm=0.4 --set specimen.height_mm=0.25 --set specimen.growth_steps=2000
-       --set specimen.relax_steps=500 --set cut.depth_of_cut_mm=0.05 --set cut.length_mm=0.08
+       --set specimen.relax_steps=500 --set cut.depth_of_cut_mm=0.05 --set cut.length_mm=0.3
        --set output.frame_every_samples=0 --set cut.speed_m_per_s=2 --set cut.sample_every_steps=20)
 
 # SIGTERM after the first checkpoint (sample 25, step 500: late enough for the rate check below): the hint, and the
@@ -44,7 +47,7 @@ assert p["scene"] == scene, p["scene"]
 assert p["scene_fnv1a64"] == "%016x" % h, (p["scene_fnv1a64"], "%016x" % h)
 assert p["overrides"] == sets, p["overrides"]
 assert p["command_line"].split()[1:3] == ["run", scene] and "--checkpoint-every 25" in p["command_line"], p["command_line"]
-assert p["scene_as_run"]["cut"]["length_mm"] == 0.08
+assert p["scene_as_run"]["cut"]["length_mm"] == 0.3
 [r] = p["resumes"]
 assert r["command_line"].split()[1:] == ["resume", out, "--threads", "1", "--log-every", "1"], r["command_line"]
 assert r["from_sample"] > 0 and r["from_sample"] % 25 == 0, r["from_sample"]
