@@ -9,6 +9,7 @@
 
 #include "kerf/analytic/kinds/evaluate.hpp"
 #include "kerf/analytic/kinds/predict.hpp"
+#include "kerf/analytic/trepanning/trepanning_results.hpp"
 #include "kerf/error.hpp"
 #include "kerf/json_reader.hpp"
 
@@ -22,8 +23,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // numbers: an empty cell is a force that was not finite.
     for (const auto& [name, cell] : kerf::scene_columns(*scene)) {
       const bool force = name == kerf::prediction_keys::cutting_force_N ||
-                         name == kerf::prediction_keys::thrust_force_N || name == "axial_force_N" ||
-                         name == "torque_N_m";
+                         name == kerf::prediction_keys::thrust_force_N ||
+                         name == kerf::trepanning_keys::axial_force_N || name == kerf::trepanning_keys::torque_N_m;
       if (force && cell.empty()) std::abort();
     }
   } catch (const kerf::InputError&) {

@@ -214,8 +214,8 @@ int main(int argc, char** argv) {
                    "one section (" + fmt::format("{}", fmt::join(kerf::analytic_scene_sections(), ", ")) + ")");
 
   bool results_python = false;
-  auto* results =
-      app.add_subcommand("results", "print the Markdown table of an orthogonal prediction's columns (docs/scenes.md)");
+  auto* results = app.add_subcommand(
+      "results", "print the Markdown tables of a prediction's columns, orthogonal and trepanning (docs/scenes.md)");
   results->add_flag("--python", results_python,
                     "print them as the Python module kerf.prediction_keys instead (python/kerf/prediction_keys.py)");
 

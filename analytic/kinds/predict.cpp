@@ -11,6 +11,7 @@
 #include "kerf/analytic/forces/critical_depth.hpp"
 #include "kerf/analytic/forces/oxley_model.hpp"
 #include "kerf/analytic/registry.hpp"
+#include "kerf/analytic/trepanning/trepanning_results.hpp"
 #include "kerf/error.hpp"
 #include "kerf/io.hpp"
 #include "kerf/units.hpp"
@@ -145,22 +146,6 @@ ResultField<R> input_value(std::string_view key, std::string_view unit, std::str
 template <class Has, class Get>
 ResultField<R> optional_value(std::string_view key, std::string_view unit, std::string_view doc, Has has, Get get) {
   return result_value<R>(key, unit, doc, [has, get](const R& r) { return has(r) ? Json(get(r)) : Json(); });
-}
-
-/// The row's cells of `table`: a null value is an empty cell, a text is escaped, an input rounded.
-void write_result_cells(const ResultTable<R>& table, const R& r, CellWriter& w) {
-  for (const auto& f : table) {
-    if (f.present && !f.present(r)) continue;
-    const Json v = f.get(r);
-    if (v.is_string())
-      w.text(f.key, v.get_ref<const std::string&>());
-    else if (v.is_null())
-      w.cell(f.key, {});
-    else if (f.input_echo)
-      w.input(f.key, v.get<double>());
-    else
-      w.number(f.key, v.get<double>());
-  }
 }
 
 /// The ploughing part of the totals (zero where the model adds none; null for Oxley, which ignores the edge).
@@ -298,7 +283,10 @@ std::string prediction_columns_markdown() {
          "| ... | | the models' own columns: the scene's contact lengths (`cut.contact_lengths`), the chip term's "
          "edge, "
          "the Oxley solve's, the force model's |\n" +
-         results_markdown(prediction_verdict_results(), false);
+         results_markdown(prediction_verdict_results(), false) +
+         "\nA trepanning scene's row (`models.force = trepanning`; the grit columns with "
+         "`models.trepanning.grits`):\n\n" +
+         results_markdown(trepanning_results());
 }
 
 std::string prediction_keys_python() {
@@ -312,6 +300,10 @@ std::string prediction_keys_python() {
                               "The shared columns of an orthogonal prediction, in the row's order (the models' own "
                               "between the flow state and the turning cut's).",
                               keys) +
+         results_python_class("TrepanningColumns",
+                              "The columns of a trepanning prediction, in the row's order (the grit columns with "
+                              "models.trepanning.grits).",
+                              result_keys(trepanning_results())) +
          results_python_keys_function();
 }
 

@@ -12,6 +12,7 @@
 #include "kerf/analytic/kinds/evaluate.hpp"
 #include "kerf/analytic/kinds/predict.hpp"
 #include "kerf/analytic/trepanning/trepanning.hpp"
+#include "kerf/analytic/trepanning/trepanning_results.hpp"
 #include "kerf/analytic/trepanning/trepanning_scene.hpp"
 #include "kerf/comparison_config.hpp"
 #include "kerf/csv_table.hpp"
@@ -26,8 +27,8 @@ namespace {
 const std::map<std::string, std::string>& comparable_quantities() {
   static const std::map<std::string, std::string> quantities = {{std::string(prediction_keys::cutting_force_N), "N"},
                                                                 {std::string(prediction_keys::thrust_force_N), "N"},
-                                                                {"axial_force_N", "N"},
-                                                                {"torque_N_m", "N m"}};
+                                                                {std::string(trepanning_keys::axial_force_N), "N"},
+                                                                {std::string(trepanning_keys::torque_N_m), "N m"}};
   return quantities;
 }
 
@@ -105,7 +106,7 @@ struct ConditionBinding {
   Unit unit;               ///< the column's
 };
 struct QuantityBinding {
-  std::string prediction_column;  ///< "axial_force_N"
+  std::string prediction_column;  ///< the prediction's column (trepanning_keys::axial_force_N, ...)
   std::string column;             ///< CSV column
   Unit unit;                      ///< the column's
 };
@@ -295,9 +296,9 @@ void fit_lumped_groups(Json& document, const Bindings& bindings, const DataSet& 
   const TrepanningScene scene = parse_trepanning_scene(document, &materials);
   std::vector<TrepanningObservation> observations;
   const auto axial = std::find_if(quantities.begin(), quantities.end(),
-                                  [](const auto& q) { return q.prediction_column == "axial_force_N"; });
+                                  [](const auto& q) { return q.prediction_column == trepanning_keys::axial_force_N; });
   const auto torque = std::find_if(quantities.begin(), quantities.end(),
-                                   [](const auto& q) { return q.prediction_column == "torque_N_m"; });
+                                   [](const auto& q) { return q.prediction_column == trepanning_keys::torque_N_m; });
   if (axial == quantities.end() || torque == quantities.end()) {
     throw InputError("--fit", experiments_csv.string(), "measured axial_force_N and torque_N_m columns to fit");
   }
@@ -351,7 +352,7 @@ std::string column_text(const Columns& columns, const std::string& name) {
 
 /// The critical depth on a depth-of-cut condition's axis (its figures draw it), from a row that has one.
 void mark_critical_depth(const Columns& columns, const Bindings& bindings, ComparisonSpec& spec) {
-  const std::string critical = column_text(columns, "critical_depth_nm");
+  const std::string critical = column_text(columns, std::string(prediction_keys::critical_depth_nm));
   if (critical.empty()) return;
   const double critical_nm = std::stod(critical);
   for (std::size_t i = 0; i < bindings.conditions.size(); ++i) {
@@ -366,8 +367,8 @@ void mark_critical_depth(const Columns& columns, const Bindings& bindings, Compa
 /// What predict prints beside the forces: the regime against the critical depth and the guards that fired.
 RowDiagnostics row_diagnostics(std::size_t line, const AnalyticCase& scene, const Columns& columns) {
   RowDiagnostics diagnostics{line, "", scene.guard_names(), scene.warnings()};
-  for (const char* name : {"regime", "grit_regime"})
-    if (std::string regime = column_text(columns, name); !regime.empty()) diagnostics.regime = regime;
+  for (const std::string_view name : {prediction_keys::regime, trepanning_keys::grit_regime})
+    if (std::string regime = column_text(columns, std::string(name)); !regime.empty()) diagnostics.regime = regime;
   return diagnostics;
 }
 

@@ -7,8 +7,10 @@
 #include <utility>
 
 #include "kerf/analytic/forces/critical_depth.hpp"
+#include "kerf/analytic/kinds/cells.hpp"
 #include "kerf/analytic/kinds/evaluate.hpp"
 #include "kerf/analytic/trepanning/trepanning.hpp"
+#include "kerf/analytic/trepanning/trepanning_results.hpp"
 #include "kerf/analytic/trepanning/trepanning_scene.hpp"
 #include "kerf/units.hpp"
 
@@ -25,32 +27,69 @@ std::optional<std::pair<double, CuttingRegime>> grit_regime(const TrepanningScen
   return std::pair{critical, classify_regime(grit_depth_m, critical)};
 }
 
-void write_trepanning_cells(const TrepanningScene& scene, const TrepanningForces& forces, CellWriter& w) {
-  w.text("force_model", "trepanning");
-  w.number("outer_diameter_mm", units::m_to_mm(scene.tool.outer_diameter_m));
-  w.number("inner_diameter_mm", units::m_to_mm(scene.tool.inner_diameter_m));
-  w.number("feed_rate_um_per_s", units::m_to_um(scene.cut.feed_rate_m_per_s));
-  w.number("spindle_speed_rpm", scene.cut.spindle_speed_rev_per_s * 60.0);
-  w.number("feed_per_rev_um", units::m_to_um(forces.feed_per_rev_m));
-  w.number("axial_force_N", forces.axial_force_N);
-  w.number("torque_N_m", forces.torque_N_m);
-  w.number("axial_group_MPa", units::pa_to_mpa(scene.groups.axial_group_Pa));
-  w.number("torque_group_MPa", units::pa_to_mpa(scene.groups.torque_group_Pa));
-  if (!scene.grits) return;
+}  // namespace
+
+TrepanningRow::TrepanningRow(const TrepanningScene& s, const TrepanningForces& f)
+    : scene(s), forces(f), computed(f.feed_per_rev_m > 0.0) {
   // Column names need no prediction: diagnostics only when the forces were computed (feed per rev > 0).
-  const bool computed = forces.feed_per_rev_m > 0.0;
-  const auto d = computed ? trepanning_grit_diagnostics(scene.tool, scene.cut, scene.groups, *scene.grits)
-                          : TrepanningGritDiagnostics{};
-  w.optional_number("grit_count", computed, d.grit_count);
-  w.optional_number("cutting_edges", computed, d.cutting_edges);
-  w.optional_number("feed_per_edge_um", computed, units::m_to_um(d.feed_per_edge_m));
-  w.optional_number("grit_depth_um", computed, units::m_to_um(d.grit_depth_m));
-  w.optional_number("grit_normal_force_N", computed, d.grit_normal_force_N);
-  w.optional_number("grit_tangential_force_N", computed, d.grit_tangential_force_N);
-  const auto regime = computed ? grit_regime(scene, d.grit_depth_m) : std::nullopt;
-  w.optional_number("critical_depth_nm", regime.has_value(), regime ? units::m_to_nm(regime->first) : 0.0);
-  w.text("grit_regime", regime ? cutting_regime_name(regime->second) : std::string_view());
+  if (!scene.grits || !computed) return;
+  grits = trepanning_grit_diagnostics(scene.tool, scene.cut, scene.groups, *scene.grits);
+  regime = grit_regime(scene, grits.grit_depth_m);
 }
+
+const ResultTable<TrepanningRow>& trepanning_results() {
+  using R = TrepanningRow;
+  namespace k = trepanning_keys;
+  const auto with_grits = [](const R& r) { return r.scene.grits.has_value(); };
+  // A grit column: present with the scene's grits, empty until the forces are computed.
+  const auto grit_number = [with_grits](std::string_view key, std::string_view unit, std::string_view doc,
+                                        double (*get)(const R&)) {
+    return result_if(result_value<R>(key, unit, doc, [get](const R& r) { return r.computed ? Json(get(r)) : Json(); }),
+                     with_grits);
+  };
+  static const ResultTable<R> table{
+      result_value<R>(k::force_model, "", "the force model (trepanning)",
+                      [](const R&) { return std::string("trepanning"); }),
+      result_value<R>(k::outer_diameter_mm, "mm", "the tool's outer diameter",
+                      [](const R& r) { return units::m_to_mm(r.scene.tool.outer_diameter_m); }),
+      result_value<R>(k::inner_diameter_mm, "mm", "the tool's inner diameter",
+                      [](const R& r) { return units::m_to_mm(r.scene.tool.inner_diameter_m); }),
+      result_value<R>(k::feed_rate_um_per_s, "um/s", "feed rate",
+                      [](const R& r) { return units::m_to_um(r.scene.cut.feed_rate_m_per_s); }),
+      result_value<R>(k::spindle_speed_rpm, "rpm", "spindle speed",
+                      [](const R& r) { return r.scene.cut.spindle_speed_rev_per_s * 60.0; }),
+      result_value<R>(k::feed_per_rev_um, "um", "feed per revolution",
+                      [](const R& r) { return units::m_to_um(r.forces.feed_per_rev_m); }),
+      result_value<R>(k::axial_force_N, "N", "axial force (Yu et al. 2023, Eq. 21)",
+                      [](const R& r) { return r.forces.axial_force_N; }),
+      result_value<R>(k::torque_N_m, "N m", "torque (Eq. 22)", [](const R& r) { return r.forces.torque_N_m; }),
+      result_value<R>(k::axial_group_MPa, "MPa", "the lumped axial group K_F = H tan(phi)",
+                      [](const R& r) { return units::pa_to_mpa(r.scene.groups.axial_group_Pa); }),
+      result_value<R>(k::torque_group_MPa, "MPa", "the lumped torque group K_M = H (1 + pi tan(phi) mu / 2)",
+                      [](const R& r) { return units::pa_to_mpa(r.scene.groups.torque_group_Pa); }),
+      grit_number(k::grit_count, "", "grits on the end face, N_c = S C (Eq. 2; models.trepanning.grits)",
+                  [](const R& r) { return r.grits.grit_count; }),
+      grit_number(k::cutting_edges, "", "cutting edges Z = N_c / N_0 (Eqs. 1, 5)",
+                  [](const R& r) { return r.grits.cutting_edges; }),
+      grit_number(k::feed_per_edge_um, "um", "feed per cutting edge a_f = f / Z (Eqs. 6, 8)",
+                  [](const R& r) { return units::m_to_um(r.grits.feed_per_edge_m); }),
+      grit_number(k::grit_depth_um, "um", "each grit's depth of cut g = a_f (Eq. 14)",
+                  [](const R& r) { return units::m_to_um(r.grits.grit_depth_m); }),
+      grit_number(k::grit_normal_force_N, "N", "each grit's normal force F_an (Eqs. 11, 15, 17, 19)",
+                  [](const R& r) { return r.grits.grit_normal_force_N; }),
+      grit_number(k::grit_tangential_force_N, "N", "each grit's tangential force F_at (Eqs. 12, 16, 18, 20)",
+                  [](const R& r) { return r.grits.grit_tangential_force_N; }),
+      result_if(result_value<R>(k::critical_depth_nm, "nm", "the ductile-brittle critical depth d_c (Bifano)",
+                                [](const R& r) { return r.regime ? Json(units::m_to_nm(r.regime->first)) : Json(); }),
+                with_grits),
+      result_if(result_value<R>(
+                    k::grit_regime, "", "each grit's depth against d_c: ductile, transition, brittle",
+                    [](const R& r) { return std::string(r.regime ? cutting_regime_name(r.regime->second) : ""); }),
+                with_grits)};
+  return table;
+}
+
+namespace {
 
 class TrepanningCase final : public AnalyticCase {
  public:
@@ -59,7 +98,8 @@ class TrepanningCase final : public AnalyticCase {
   void predict() override { forces_ = trepanning_forces(scene_.tool, scene_.cut, scene_.groups); }
 
   void write_cells(CellWriter& out) const override {
-    write_trepanning_cells(scene_, forces_.value_or(TrepanningForces{}), out);
+    const TrepanningForces forces = forces_.value_or(TrepanningForces{});
+    write_result_cells(trepanning_results(), TrepanningRow{scene_, forces}, out);
   }
 
   void print(std::FILE* text, const std::string& scene_path) const override {

@@ -47,6 +47,29 @@ class PredictionColumns:
     warnings = "warnings"
 
 
+class TrepanningColumns:
+    """The columns of a trepanning prediction, in the row's order (the grit columns with models.trepanning.grits)."""
+
+    force_model = "force_model"
+    outer_diameter_mm = "outer_diameter_mm"
+    inner_diameter_mm = "inner_diameter_mm"
+    feed_rate_um_per_s = "feed_rate_um_per_s"
+    spindle_speed_rpm = "spindle_speed_rpm"
+    feed_per_rev_um = "feed_per_rev_um"
+    axial_force_N = "axial_force_N"
+    torque_N_m = "torque_N_m"
+    axial_group_MPa = "axial_group_MPa"
+    torque_group_MPa = "torque_group_MPa"
+    grit_count = "grit_count"
+    cutting_edges = "cutting_edges"
+    feed_per_edge_um = "feed_per_edge_um"
+    grit_depth_um = "grit_depth_um"
+    grit_normal_force_N = "grit_normal_force_N"
+    grit_tangential_force_N = "grit_tangential_force_N"
+    critical_depth_nm = "critical_depth_nm"
+    grit_regime = "grit_regime"
+
+
 def keys(table):
     """The keys of a table above, in its order."""
     return [value for name, value in vars(table).items() if not name.startswith("_")]

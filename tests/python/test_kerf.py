@@ -14,6 +14,7 @@ import pytest
 
 import kerf
 from kerf.prediction_keys import PredictionColumns as P
+from kerf.prediction_keys import TrepanningColumns as T
 from kerf.result_keys import CutResults as R
 
 SOURCE = pathlib.Path(__file__).resolve().parents[2]
@@ -22,8 +23,8 @@ PSIC = SOURCE / "data" / "scenes" / "psic_liu_li.json"
 ORTHOGONAL = SOURCE / "data" / "scenes" / "psic_orthogonal.json"
 K9 = SOURCE / "validation" / "k9_trepanning" / "scene.json"
 K9_CSV = SOURCE / "data" / "experiments" / "k9_trepanning.csv"
-K9_MAP = {"cut.feed_rate_um_per_s": "feed_rate_um_s", "axial_force_N": "axial_force_test_N",
-          "torque_N_m": "torque_test_Nm"}
+K9_MAP = {"cut.feed_rate_um_per_s": "feed_rate_um_s", T.axial_force_N: "axial_force_test_N",
+          T.torque_N_m: "torque_test_Nm"}
 
 
 def cli_predict_row(tmp_path, scene, *sets):

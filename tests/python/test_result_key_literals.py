@@ -1,10 +1,11 @@
 """No result key is written or read as a literal outside its table (issue 56 item 1): kerf-dem's cut results and
 kerf-forces' prediction columns are named once, in their result tables (dem/procedures/cut_results.cpp,
-analytic/kinds/predict.cpp), and read by name, through the constants of kerf/dem/procedures/cut_results.hpp and
-kerf/analytic/kinds/predict.hpp (C++) or kerf.result_keys and kerf.prediction_keys (Python, generated from the tables:
-tests/cli/dem_results_cli.sh, tests/cli/forces_results_cli.sh). A quoted key in any other C++, Python or shell source
-(comments aside) fails here unless the file is in ALLOWED below, with the keys it may quote and why. Data files
-(records, studies, docs) are not sources."""
+analytic/kinds/predict.cpp, analytic/trepanning/trepanning_kind.cpp), and read by name, through the constants of
+kerf/dem/procedures/cut_results.hpp, kerf/analytic/kinds/predict.hpp and kerf/analytic/trepanning/trepanning_results.hpp
+(C++) or kerf.result_keys and kerf.prediction_keys (Python, generated from the tables: tests/cli/dem_results_cli.sh,
+tests/cli/forces_results_cli.sh). A quoted key in any other C++, Python or shell source (comments aside) fails here
+unless the file is in ALLOWED below, with the keys it may quote and why. Data files (records, studies, docs) are not
+sources."""
 import importlib.util
 import pathlib
 import re
@@ -19,7 +20,10 @@ SHARED = {"width_mm", "time_s", "samples", "steady", "force_model", "material", 
           "clearance_deg", "speed_m_per_min", "workpiece_temperature_K", "scene_friction_angle_deg",
           "uncut_chip_thickness_um", "friction_angle_deg", "chip_ratio", "strain", "strain_rate_per_s", "temperature_K",
           "feed_um_per_rev", "depth_of_cut_um", "critical_depth_nm", "regime", "within_model_range", "guards",
-          "warnings"}
+          "warnings",
+          # the trepanning scene's input keys, echoed in its row
+          "outer_diameter_mm", "inner_diameter_mm", "feed_rate_um_per_s", "spindle_speed_rpm", "axial_group_MPa",
+          "torque_group_MPa"}
 OUTPUT_TESTS = "an end-to-end test of the written output: the literal is the format users read, a rename must fail it"
 ALLOWED = {
     # What the keys are written in, and generated from.
@@ -31,6 +35,8 @@ ALLOWED = {
                                       "the edge zone's given layer forces (input keys)"),
     # An error naming the quantity in the physics layer, which the prediction's table (kinds/) is built on.
     "analytic/forces/merchant.cpp": ({"shear_angle_deg"}, "an InputError naming the shear angle"),
+    "analytic/trepanning/trepanning.cpp": ({"axial_force_N", "torque_N_m", "feed_per_rev_um"},
+                                           "a ModelError naming the quantity beyond a double"),
     # Documentation in code.
     "python/kerf_api.py": ({"cutting_force_N"}, "a docstring's example of kerf.predict"),
     # A report that runs kerf-forces without the kerf module (its own interpreter's path only).
@@ -60,7 +66,7 @@ def generated(name):
 
 def result_keys():
     dem, analytic = generated("result_keys"), generated("prediction_keys")
-    keys = set(analytic.keys(analytic.PredictionColumns))
+    keys = set(analytic.keys(analytic.PredictionColumns)) | set(analytic.keys(analytic.TrepanningColumns))
     for table in (dem.CutResults, dem.TravelWindowResults, dem.ActiveWindowResults, dem.ForcesCsvColumns):
         keys |= set(dem.keys(table))
     return keys

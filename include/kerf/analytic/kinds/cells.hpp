@@ -12,6 +12,8 @@
 #include <utility>
 #include <vector>
 
+#include "kerf/result_table.hpp"
+
 namespace kerf {
 
 /// One CSV row as (column name, cell text) pairs; the text is CSV-escaped, empty for no value.
@@ -33,6 +35,24 @@ class CellWriter {
   /// csv_escape(text).
   void text(std::string_view name, std::string_view text);
 };
+
+/// The row's cells of a result table (kerf/result_table.hpp): each field present for `r`, a null value an empty
+/// cell, a text escaped, an input echoed back rounded (CellWriter::input).
+template <class R>
+void write_result_cells(const ResultTable<R>& table, const R& r, CellWriter& w) {
+  for (const auto& f : table) {
+    if (f.present && !f.present(r)) continue;
+    const Json v = f.get(r);
+    if (v.is_string())
+      w.text(f.key, v.template get_ref<const std::string&>());
+    else if (v.is_null())
+      w.cell(f.key, {});
+    else if (f.input_echo)
+      w.input(f.key, v.template get<double>());
+    else
+      w.number(f.key, v.template get<double>());
+  }
+}
 
 /// Gathers the cells as Columns.
 class ColumnCollector final : public CellWriter {
