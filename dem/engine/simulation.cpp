@@ -37,11 +37,12 @@ inline BondResult bond_update_fast(const Law& law, const BondGeometry& geo, cons
                                    const std::uint8_t* bonded, BreakMode* breaks) {
   return bond_update(law, geo, kin, shear, bonded, breaks);
 }
-/// The same for a law with a damage per element (the softening flat joint's overload: softening_flat_joint_simd.hpp).
+/// The same for a law with a state per element (BondLawWithState; the softening flat joint's overload:
+/// softening_flat_joint_simd.hpp).
 template <class Law>
 inline BondResult bond_update_fast(const Law& law, const BondGeometry& geo, const BondKinematics& kin, double* shear,
-                                   const std::uint8_t* bonded, BreakMode* breaks, double* damage) {
-  return bond_update(law, geo, kin, shear, bonded, breaks, damage);
+                                   const std::uint8_t* bonded, BreakMode* breaks, double* state) {
+  return bond_update(law, geo, kin, shear, bonded, breaks, state);
 }
 
 /// Square root of each lane, correctly rounded as std::sqrt (one sqrtpd instead of two sqrtsd on x86-64).
@@ -170,8 +171,9 @@ double Simulation::dashpot_coefficient(std::size_t i, std::int64_t j, double sti
 
 // Long (~90 lines) for a reason: the hot loop; its two passes over a block share the block and the disks'
 // pointers, and what it inlines was measured as it stands (docs/performance.md).
-template <class Law, bool kViscous, bool kFactors, class... Damage>
-void Simulation::bond_loop(const Law& law, ForceCounts& counts, Damage*... damage) {
+template <class Law, bool kViscous, bool kFactors, class... State>
+void Simulation::bond_loop(const Law& law, ForceCounts& counts, State*... state) {
+  constexpr auto kState = static_cast<std::size_t>(bond_state_size<Law>());  // the law's doubles per element
   const double dt = dt_;
   const int stride = b_.stride;
   const auto nb = static_cast<std::int64_t>(b_.size());
@@ -232,7 +234,7 @@ void Simulation::bond_loop(const Law& law, ForceCounts& counts, Damage*... damag
       // Without strength factors the factor is the constant 1, which the compiler folds away (x * 1.0 is x).
       const BondGeometry geo{b_.geometry[b], kFactors ? b_.strength_factor[b] : 1.0};
       BondResult r = bond_update_fast(law, geo, kin, b_.shear_force_N.data() + e0, b_.bonded.data() + e0,
-                                      b_.pending.data() + e0, (damage + e0)...);
+                                      b_.pending.data() + e0, (state + e0 * kState)...);
       n_breaking += r.n_breaking;
       if constexpr (kViscous) {
         // Dashpots beside the bond's springs (not part of its strength test): on disk 2, -c_n v_n n - c_s v_s s.
@@ -341,11 +343,11 @@ void Simulation::wall_loop(const Law& law) {
 template <bool kViscous, class Law>
 void Simulation::bond_loop_of(const Law& law, ForceCounts& counts) {
   const bool factors = !b_.strength_factor.empty();  // Weibull joint strengths (a loop of their own: see bond_loop)
-  if constexpr (BondLawWithDamage<Law>) {
+  if constexpr (BondLawWithState<Law>) {
     if (factors)
-      bond_loop<Law, kViscous, true>(law, counts, b_.damage.data());
+      bond_loop<Law, kViscous, true>(law, counts, b_.element_state.data());
     else
-      bond_loop<Law, kViscous, false>(law, counts, b_.damage.data());
+      bond_loop<Law, kViscous, false>(law, counts, b_.element_state.data());
   } else {
     if (factors)
       bond_loop<Law, kViscous, true>(law, counts);
@@ -438,8 +440,9 @@ void Simulation::apply_breaks_of(const Law& law) {
       cracks_.push_back({time_, p_.x[i] + a1 * nx - xi * ny, p_.y[i] + a1 * ny + xi * nx, std::atan2(nx, -ny),
                          place.length_m, b_.pending[k], static_cast<std::int32_t>(b), static_cast<std::int32_t>(e)});
       b_.bonded[k] = 0;
-      b_.shear_force_N[k] = 0;  // residual mode: the shear stress of a broken element drops to zero
-      if constexpr (BondLawWithDamage<Law>) b_.damage[k] = 1;  // a broken element is wholly damaged
+      b_.shear_force_N[k] = 0;              // residual mode: the shear stress of a broken element drops to zero
+      if constexpr (BondLawWithState<Law>)  // the law's state of a broken element, as the law says
+        bond_element_broken(law, b_.element_state.data() + k * static_cast<std::size_t>(bond_state_size<Law>()));
       b_.pending[k] = BreakMode::none;
       if (bond_retires_on_break(law)) {  // the whole bond goes with its first break
         b_.active[b] = 0;

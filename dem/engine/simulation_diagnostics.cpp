@@ -41,9 +41,11 @@ double Simulation::joint_and_contact_energy() const {
           const auto i = static_cast<std::size_t>(b_.i[b]), j = static_cast<std::size_t>(b_.j[b]);
           const double d = std::hypot(p_.x[j] - p_.x[i], p_.y[j] - p_.y[i]);
           const BondKinematics kin{d - b_.ref_distance_m[b], p_.theta[j] - p_.theta[i] - b_.ref_rotation_rad[b], 0};
-          if constexpr (BondLawWithDamage<std::decay_t<decltype(law)>>)
+          using Law = std::decay_t<decltype(law)>;
+          if constexpr (BondLawWithState<Law>)
             e += bond_energy(law, b_.joint_geometry(b), kin, b_.shear_force_N.data() + b * stride,
-                             b_.bonded.data() + b * stride, b_.damage.data() + b * stride);
+                             b_.bonded.data() + b * stride,
+                             b_.element_state.data() + b * stride * static_cast<std::size_t>(bond_state_size<Law>()));
           else
             e += bond_energy(law, b_.joint_geometry(b), kin, b_.shear_force_N.data() + b * stride,
                              b_.bonded.data() + b * stride);

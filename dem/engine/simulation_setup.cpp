@@ -24,7 +24,11 @@ void BondStore::copy_elements(std::size_t to, const BondStore& from, std::size_t
   for (std::size_t e = 0; e < n; ++e) {
     bonded[to * n + e] = from.bonded[k * n + e];
     shear_force_N[to * n + e] = from.shear_force_N[k * n + e];
-    if (keeps_damage && from.keeps_damage) damage[to * n + e] = from.damage[k * n + e];
+  }
+  if (state_size > 0 && from.state_size == state_size) {  // the law's state: copied, not read
+    const std::size_t m = n * static_cast<std::size_t>(state_size);
+    std::copy_n(from.element_state.begin() + static_cast<std::ptrdiff_t>(k * m), m,
+                element_state.begin() + static_cast<std::ptrdiff_t>(to * m));
   }
 }
 
@@ -35,8 +39,10 @@ Simulation::Simulation(const Material& material, const SimulationOptions& option
   if (!(options.time_step_safety > 0 && options.time_step_safety <= 1))
     throw InputError("engine.time_step_safety", format_value(options.time_step_safety), "a value in (0, 1]");
   b_.stride = std::visit([](const auto& law) { return bond_elements(law); }, material.joint);
-  b_.keeps_damage =
-      std::visit([](const auto& law) { return BondLawWithDamage<std::decay_t<decltype(law)>>; }, material.joint);
+  b_.state_size =
+      std::visit([](const auto& law) { return bond_state_size<std::decay_t<decltype(law)>>(); }, material.joint);
+  b_.state_names =
+      std::visit([](const auto& law) { return bond_state_names<std::decay_t<decltype(law)>>(); }, material.joint);
   speed_limit_ = options.speed_limit_m_per_s > 0 ? options.speed_limit_m_per_s : p_wave_speed_m_per_s(material);
 }
 
@@ -131,7 +137,7 @@ int Simulation::install_bond(int i, int j, double ref_distance_m, double ref_rot
     b_.shear_force_N.push_back(0.0);
     b_.bonded.push_back(1);
     b_.pending.push_back(BreakMode::none);
-    if (b_.keeps_damage) b_.damage.push_back(0.0);
+    for (int s = 0; s < b_.state_size; ++s) b_.element_state.push_back(0.0);
   }
   b_.out.push_back({0, 0, 0, 0});
   need_rebuild_ = true;

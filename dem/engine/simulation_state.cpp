@@ -19,7 +19,7 @@ std::size_t Simulation::memory_bytes() const {
   return bytes_of(p_.x, p_.y, p_.vx, p_.vy, p_.theta, p_.omega, p_.fx, p_.fy, p_.torque, p_.radius, p_.inv_mass,
                   p_.inv_inertia, p_.type, p_.group) +
          bytes_of(b_.i, b_.j, b_.ref_distance_m, b_.ref_rotation_rad, b_.geometry, b_.strength_factor, b_.active,
-                  b_.shear_force_N, b_.bonded, b_.pending, b_.out, b_.damage) +
+                  b_.shear_force_N, b_.bonded, b_.pending, b_.out, b_.element_state) +
          bytes_of(pairs_, pair_shear_, pair_out_, wall_contacts_, wall_shear_, wall_out_, incidence_start_, incidence_,
                   incidence_pair_begin_, incidence_wall_begin_, x_ref_, y_ref_, wall_ref_, fixed_, cracks_);
 }
@@ -29,10 +29,10 @@ namespace {
 constexpr std::string_view kStateMagic = "KERFDEM9";          // 2: Wall::friction_coefficient; 3: the laws as variants;
                                                               // 4: the viscous damping ratio; 5: skip_held_pairs;
                                                               // 6: the absorbing rates; 7: the laws by name;
-                                                              // 8: the bonds' element damage; 9: the joints'
+                                                              // 8: the bonds' element state; 9: the joints'
                                                               // strength factors (BondStore::strength_factor)
 constexpr std::string_view kStateMagicNoFactor = "KERFDEM8";  // still read: every joint's strength factor 1
-constexpr std::string_view kStateMagicNoDamage = "KERFDEM7";  // still read: also no element damage (no law had one)
+constexpr std::string_view kStateMagicNoState = "KERFDEM7";   // still read: also no element state (no law had one)
 constexpr std::string_view kStateMagicRawLaws = "KERFDEM6";   // still read: also the laws as raw variants of 4a34e1f
 
 }  // namespace
@@ -54,7 +54,7 @@ void Simulation::state_fields(Self& sim, Io& io, int version) {
   io(sim.need_rebuild_, sim.need_breaks_, sim.initialised_, sim.dt_fixed_);
   io(sim.dt_, sim.time_, sim.skin_, sim.speed_limit_, sim.steps_);
   // Last, so that the earlier formats are this one without them.
-  if (version == 0 || version == 1) io(b.damage);
+  if (version == 0 || version == 1) io(b.element_state);
   if (version == 0) io(b.strength_factor);
 }
 
@@ -69,8 +69,8 @@ std::string Simulation::serialize() const {
 
 Simulation Simulation::deserialize(std::string_view bytes) {
   std::size_t version = 0;
-  serial::In io = serial::open_tagged(
-      bytes, {kStateMagic, kStateMagicNoFactor, kStateMagicNoDamage, kStateMagicRawLaws}, "engine state", &version);
+  serial::In io = serial::open_tagged(bytes, {kStateMagic, kStateMagicNoFactor, kStateMagicNoState, kStateMagicRawLaws},
+                                      "engine state", &version);
   io.raw_laws = version == 3;
   Material m;
   SimulationOptions opt;
@@ -79,8 +79,8 @@ Simulation Simulation::deserialize(std::string_view bytes) {
   state_fields(sim, io, static_cast<int>(version));
   io.expect_end("engine state");
   const BondStore& b = sim.b_;
-  if (b.damage.size() != (b.keeps_damage ? b.bonded.size() : 0))
-    throw ModelError("dem", "corrupt checkpoint (the bonds' element damage does not match their elements)");
+  if (b.element_state.size() != b.bonded.size() * static_cast<std::size_t>(b.state_size))
+    throw ModelError("dem", "corrupt checkpoint (the bond law's element state does not match the elements)");
   if (!b.strength_factor.empty() && b.strength_factor.size() != b.size())
     throw ModelError("dem", "corrupt checkpoint (the joints' strength factors do not match the joints)");
   return sim;

@@ -389,6 +389,12 @@ Simulation copy_at_rest(const Simulation& source, const Material& material) {
   return sim;
 }
 
+/// A specimen file's key for one double of the bond law's state per element: "element_" and the law's name for it
+/// (the softening flat joint's damage: "element_damage").
+std::string element_state_key(std::string_view name) {
+  return "element_" + std::string(name);
+}
+
 }  // namespace
 
 CompactedPacking compact_packing(const SpecimenSpec& spec, const GenesisProgress& progress) {
@@ -495,8 +501,10 @@ void save_specimen(const std::string& file_path, const Simulation& sim, const Sp
   j["material"] = material_to_json(sim.material());
   j["particles"] = Json{{"x_m", p.x}, {"y_m", p.y}, {"radius_m", p.radius}, {"theta_rad", p.theta}};
   std::vector<int> i, jj, bonded;
-  std::vector<double> d0, rot0, shear, damage, factor;
+  std::vector<double> d0, rot0, shear, factor;
   const auto stride = static_cast<std::size_t>(b.stride);
+  const auto m = static_cast<std::size_t>(b.state_size);
+  std::vector<std::vector<double>> state(m);  // the law's state per element, one list per name
   for (std::size_t k = 0; k < b.size(); ++k) {
     if (!b.active[k]) continue;
     i.push_back(b.i[k]);
@@ -507,7 +515,7 @@ void save_specimen(const std::string& file_path, const Simulation& sim, const Sp
     for (std::size_t e = 0; e < stride; ++e) {
       bonded.push_back(b.bonded[k * stride + e]);
       shear.push_back(b.shear_force_N[k * stride + e]);
-      if (b.keeps_damage) damage.push_back(b.damage[k * stride + e]);
+      for (std::size_t s = 0; s < m; ++s) state[s].push_back(b.element_state[(k * stride + e) * m + s]);
     }
   }
   j["bonds"] = Json{{"n_elements", b.stride},
@@ -517,7 +525,8 @@ void save_specimen(const std::string& file_path, const Simulation& sim, const Sp
                     {"ref_rotation_rad", rot0},
                     {"element_bonded", bonded},
                     {"element_shear_force_N", shear}};
-  if (b.keeps_damage) j["bonds"]["element_damage"] = damage;  // a law with element damage (softening flat joint)
+  for (std::size_t s = 0; s < m; ++s)  // a law with a state of its own, each double by the law's name for it
+    j["bonds"][element_state_key(b.state_names[s])] = state[s];
   const BondStiffnessStrength& bond = joint_bond(sim.material());
   if (bond.strength_weibull_modulus != 0) {  // Weibull strengths: the factors drawn, and what they were drawn with
     j["bonds"]["strength_factor"] = factor;
@@ -561,8 +570,10 @@ Simulation load_specimen(const std::string& file_path, const Material& material,
     const auto rot0 = b.at("ref_rotation_rad").get<std::vector<double>>();
     const auto bonded = b.at("element_bonded").get<std::vector<int>>();
     const auto shear = b.at("element_shear_force_N").get<std::vector<double>>();
-    const auto damage = b.value("element_damage", std::vector<double>());  // absent: undamaged (or another law)
-    BondStiffnessStrength drawn;                                           // absent: uniform strengths (modulus 0)
+    std::vector<std::vector<double>> state;  // the law's state per element by its names; absent: zero
+    for (const std::string_view name : sim.bonds().state_names)
+      state.push_back(b.value(element_state_key(name), std::vector<double>()));
+    BondStiffnessStrength drawn;  // absent: uniform strengths (modulus 0)
     drawn.strength_weibull_modulus = b.value("strength_weibull_modulus", 0.0);
     drawn.strength_reference_half_length_m =
         b.value("strength_reference_half_length_m", drawn.strength_reference_half_length_m);
@@ -580,8 +591,9 @@ Simulation load_specimen(const std::string& file_path, const Material& material,
       for (std::size_t e = 0; e < stride; ++e) {
         sim.bonds().bonded[id * stride + e] = static_cast<std::uint8_t>(bonded.at(k * stride + e));
         sim.bonds().shear_force_N[id * stride + e] = shear.at(k * stride + e);
-        if (sim.bonds().keeps_damage && !damage.empty())
-          sim.bonds().damage[id * stride + e] = damage.at(k * stride + e);
+        for (std::size_t s = 0; s < state.size(); ++s)
+          if (!state[s].empty())
+            sim.bonds().element_state[(id * stride + e) * state.size() + s] = state[s].at(k * stride + e);
       }
     }
     sim.initialise();

@@ -283,13 +283,13 @@ TEST_CASE(
       Simulation::deserialize(older),
       Catch::Matchers::Contains(
           "another kerf-dem version (KERFDEM5, this one reads KERFDEM9 or KERFDEM8 or KERFDEM7 or KERFDEM6)"));
-  // A state whose damage does not match its elements (a flat joint's with damage) is corrupt.
-  // (The damage is the last vector but one: the joints' strength factors follow it.)
+  // A state whose law state does not match its elements (a flat joint's with a state) is corrupt.
+  // (The element state is the last vector but one: the joints' strength factors follow it.)
   std::string damaged = sim.serialize();
   damaged.resize(damaged.size() - 16);
   serial::put_vec(damaged, std::vector<double>{0.5});
   serial::put_vec(damaged, std::vector<double>{});
-  CHECK_THROWS_WITH(Simulation::deserialize(damaged), Catch::Matchers::Contains("element damage does not match"));
+  CHECK_THROWS_WITH(Simulation::deserialize(damaged), Catch::Matchers::Contains("element state does not match"));
   // Strength factors for joints that are not there: corrupt too.
   std::string factors = sim.serialize();
   factors.resize(factors.size() - 8);

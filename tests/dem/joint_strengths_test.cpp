@@ -37,7 +37,7 @@ double tension_break_force(const P& p, const BondGeometry& geo) {
   for (int k = 1; k < 100000; ++k) {
     const BondKinematics kin{k * 1e-4 * g0, 0.0, 0.0};
     BondResult r;
-    if constexpr (BondLawWithDamage<P>)
+    if constexpr (BondLawWithState<P>)
       r = bond_update(p, geo, kin, shear.data(), bonded.data(), breaks.data(), damage.data());
     else
       r = bond_update(p, geo, kin, shear.data(), bonded.data(), breaks.data());

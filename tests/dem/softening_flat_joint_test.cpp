@@ -8,7 +8,11 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "../../dem/laws/softening_flat_joint_simd.hpp"
@@ -378,8 +382,8 @@ TEST_CASE("softening flat joint: with zero fracture energy, a tension test is th
   CHECK(flat.result.peak_stress_Pa == soft.result.peak_stress_Pa);
   CHECK(a.stored_elastic_energy() == b.stored_elastic_energy());
   // Every broken element of the softening joint is wholly damaged, every other undamaged.
-  for (std::size_t k = 0; k < b.bonds().damage.size(); ++k)
-    CHECK(b.bonds().damage[k] == (b.bonds().bonded[k] ? 0.0 : 1.0));
+  for (std::size_t k = 0; k < b.bonds().element_state.size(); ++k)
+    CHECK(b.bonds().element_state[k] == (b.bonds().bonded[k] ? 0.0 : 1.0));
   int n_tension = 0;
   for (const CrackEvent& c : a.cracks()) n_tension += c.mode == BreakMode::tension;
   CHECK(n_tension > 0);  // the softening law's own branch decided those (and found them the flat joint's)
@@ -405,8 +409,8 @@ TEST_CASE(
   const double v = 0.01;
   p.vx[1] = v;  // pulled apart at a prescribed speed: the force is the law's at each gap
   sim.initialise();
-  REQUIRE(sim.bonds().keeps_damage);
-  REQUIRE(sim.bonds().damage.size() == 2);
+  REQUIRE(sim.bonds().state_size == 1);
+  REQUIRE(sim.bonds().element_state.size() == 2);
   const auto& joint = std::get<SofteningFlatJointParams>(m.joint);
   const BondGeometry geo = bond_geometry(joint, 10e-6, 10e-6, 1e-3);
   const double g0 = joint.bond.tensile_strength_Pa / geo.normal_stiffness, gf = g0 + joint.softening_opening_m;
@@ -429,7 +433,7 @@ TEST_CASE(
                                          (2 * geo.normal_stiffness) +
                                      joint.fracture_energy_J_per_m2),
                              2e-3));
-  CHECK(sim.bonds().damage == std::vector<double>{1.0, 1.0});
+  CHECK(sim.bonds().element_state == std::vector<double>{1.0, 1.0});
 }
 
 TEST_CASE("softening flat joint: a damaged state round-trips through the engine's checkpoint", "[softening]") {
@@ -445,7 +449,7 @@ TEST_CASE("softening flat joint: a damaged state round-trips through the engine'
   // Advance until some elements are softening (0 < D < 1).
   const auto softening_elements = [](const Simulation& s) {
     int n = 0;
-    for (double d : s.bonds().damage) n += d > 0 && d < 1;
+    for (double d : s.bonds().element_state) n += d > 0 && d < 1;
     return n;
   };
   while (softening_elements(run.simulation()) < 5 && run.advance()) {
@@ -453,17 +457,49 @@ TEST_CASE("softening flat joint: a damaged state round-trips through the engine'
   REQUIRE(softening_elements(run.simulation()) >= 5);
   const std::string saved = run.serialize();
   LabTestRun resumed = LabTestRun::deserialize(saved);
-  CHECK(resumed.simulation().bonds().damage == run.simulation().bonds().damage);
+  CHECK(resumed.simulation().bonds().element_state == run.simulation().bonds().element_state);
   while (run.advance()) {
   }
   while (resumed.advance()) {
   }
   CHECK(resumed.simulation().step_count() == run.simulation().step_count());
   CHECK(resumed.simulation().particles().x == run.simulation().particles().x);
-  CHECK(resumed.simulation().bonds().damage == run.simulation().bonds().damage);
+  CHECK(resumed.simulation().bonds().element_state == run.simulation().bonds().element_state);
   CHECK(resumed.simulation().cracks().size() == run.simulation().cracks().size());
   CHECK(resumed.result().peak_stress_Pa == run.result().peak_stress_Pa);
   // The engine state alone too, with its damage.
   const Simulation& s = run.simulation();
-  CHECK(Simulation::deserialize(s.serialize()).bonds().damage == s.bonds().damage);
+  CHECK(Simulation::deserialize(s.serialize()).bonds().element_state == s.bonds().element_state);
+}
+
+TEST_CASE("softening flat joint: its damage round-trips through a specimen file as element_damage", "[softening]") {
+  SpecimenReport report;
+  Material m;
+  m.joint = glass(3.0);
+  const SpecimenSpec spec = kerf::dem::testing::quick_random_spec(0.2e-3, 0.4e-3, 6);
+  Simulation sim = make_specimen(m, spec, report);
+  // The engine keeps the law's state by the law's declaration: one double per element, named by the law.
+  REQUIRE(sim.bonds().state_size == 1);
+  REQUIRE(sim.bonds().state_names.size() == 1);
+  CHECK(sim.bonds().state_names[0] == "damage");
+  REQUIRE(sim.bonds().element_state.size() == sim.bonds().bonded.size());
+  for (std::size_t k = 0; k < sim.bonds().element_state.size(); ++k)
+    sim.bonds().element_state[k] = 0.125 * static_cast<double>(k % 7);
+  const auto file = std::filesystem::path(KERF_BINARY_DIR) / "softening_specimen_roundtrip.json";
+  save_specimen(file.string(), sim, spec, report);
+  std::ifstream in(file);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  CHECK(text.find("\"element_damage\"") != std::string::npos);
+  SpecimenSpec spec2;
+  SpecimenReport report2;
+  const Simulation loaded = load_specimen(file.string(), m, spec2, report2);
+  // The file holds the active joints, in order.
+  std::vector<double> saved;
+  const auto n = static_cast<std::size_t>(sim.bonds().stride);
+  for (std::size_t b = 0; b < sim.bonds().size(); ++b)
+    if (sim.bonds().active[b])
+      saved.insert(saved.end(), sim.bonds().element_state.begin() + static_cast<std::ptrdiff_t>(b * n),
+                   sim.bonds().element_state.begin() + static_cast<std::ptrdiff_t>((b + 1) * n));
+  CHECK(loaded.bonds().element_state == saved);
+  std::filesystem::remove(file);
 }

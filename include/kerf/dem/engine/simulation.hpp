@@ -67,16 +67,19 @@ struct BondStore {
   std::vector<std::uint8_t> bonded;        ///< per element
   std::vector<BreakMode> pending;          ///< per element, breaks found in this step's force loop
   std::vector<std::array<double, 4>> out;  ///< per bond: force on j (x, y), torque on i, torque on j
-  /// Whether the bond law keeps a damage per element (BondLawWithDamage: the softening flat joint); set from the
-  /// law by the Simulation.
-  bool keeps_damage = false;
-  /// Per element when keeps_damage (0 at installation, 1 once broken; the law advances it), else empty.
-  std::vector<double> damage;
+  /// Doubles of the bond law's own state per element (BondLawWithState; 0 for a law without) and their names (the law's
+  /// kElementState: specimen files' element_<name> keys); set from the law by the Simulation.
+  int state_size = 0;
+  std::span<const std::string_view> state_names;
+  /// The law's state, state_size doubles per element (element k's at [k * state_size, (k + 1) * state_size)): zero
+  /// at installation, advanced by the law's update and bond_element_broken. The engine resizes, copies,
+  /// checkpoints and saves it and never reads what it means.
+  std::vector<double> element_state;
   std::size_t size() const { return i.size(); }
   int n_bonded_elements(std::size_t b) const;
-  /// Copies bond k's strength factor and element states (bonded flags, shear forces, damage where both stores keep
-  /// it) from `from` into bond `to` of this store, both of the same stride (a specimen copied, a cut's window
-  /// rebuilt).
+  /// Copies bond k's strength factor and element states (bonded flags, shear forces, the law's state where both
+  /// stores keep the same amount) from `from` into bond `to` of this store, both of the same stride (a specimen copied,
+  /// a cut's window rebuilt).
   void copy_elements(std::size_t to, const BondStore& from, std::size_t k);
 };
 
@@ -269,7 +272,8 @@ class Simulation {
   /// positions, walls, cracks, clock) as bytes: restoring it and running on gives bit-identical results to
   /// an uninterrupted run. Format: "KERFDEM8", the material with its two laws each as a record by name (the
   /// registry name, then every key of its field table with its SI value), then each field as a length-prefixed
-  /// raw array (native endianness, same build), the bonds' element damage last. "KERFDEM7" (without the damage)
+  /// raw array (native endianness, same build), the law's element state (BondStore::element_state) then the
+  /// joints' strength factors last. "KERFDEM8" (without the factors), "KERFDEM7" (without the element state either)
   /// and "KERFDEM6" (also the laws as raw variants, kerf 4a34e1f) are still read; another version is a
   /// ModelError naming it.
   std::string serialize() const;
@@ -309,13 +313,13 @@ class Simulation {
   /// The bond, pair and wall loops of force_loops, one instantiation per law.
   /// kViscous: with the contact dashpots of Material::viscous_damping_ratio (an instantiation without them
   /// runs when the ratio is 0, so undamped runs are the same to the bit).
-  /// `damage`: the bonds' element damage (BondStore::damage) for a law that has one (BondLawWithDamage), else
+  /// `state`: the bonds' element state (BondStore::element_state) for a law that has one (BondLawWithState), else
   /// nothing (the loop then calls the law's update as before there was any). kFactors: the joints have strength
   /// factors (BondStore::strength_factor); without, a loop whose factor is the constant 1 (no memory read, no
   /// multiplication left: the joint loop of the build before Weibull strengths, measured in docs/performance.md).
-  template <class Law, bool kViscous, bool kFactors, class... Damage>
-  void bond_loop(const Law& law, ForceCounts& counts, Damage*... damage);
-  /// bond_loop with the damage for a law that has one.
+  template <class Law, bool kViscous, bool kFactors, class... State>
+  void bond_loop(const Law& law, ForceCounts& counts, State*... state);
+  /// bond_loop with the element state for a law that has one.
   template <bool kViscous, class Law>
   void bond_loop_of(const Law& law, ForceCounts& counts);
   template <class Law, bool kViscous>
@@ -338,7 +342,7 @@ class Simulation {
   double mass_of(double radius_m, std::uint8_t type) const;
   /// The state after the material and options, in checkpoint order: io(field...) writes or reads them.
   /// `version`: the format's index, 0 the newest ("KERFDEM9": the joints' strength factors last, after the element
-  /// damage), 1 "KERFDEM8" (no factors), 2 and 3 "KERFDEM7" and "KERFDEM6" (no damage either).
+  /// state), 1 "KERFDEM8" (no factors), 2 and 3 "KERFDEM7" and "KERFDEM6" (no element state either).
   template <class Self, class Io>
   static void state_fields(Self& sim, Io& io, int version);
 

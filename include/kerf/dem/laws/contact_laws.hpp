@@ -13,6 +13,7 @@
 //   std::visit([](const auto& p) { ... }, law);
 #include <concepts>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -40,32 +41,56 @@ concept LawParams = requires(const P& p) {
 /// A bond law's update and energy from the elements' shear forces and bonded flags alone (the flat joint, the
 /// parallel bond).
 template <class P>
-concept BondLawWithoutDamage = requires(const P& p, const BondGeometry& g, const BondKinematics& k, double* shear,
-                                        const std::uint8_t* bonded, BreakMode* breaks) {
+concept BondLawWithoutState = requires(const P& p, const BondGeometry& g, const BondKinematics& k, double* shear,
+                                       const std::uint8_t* bonded, BreakMode* breaks) {
   { bond_update(p, g, k, shear, bonded, breaks) } -> std::same_as<BondResult>;
   { bond_energy(p, g, k, shear, bonded) } -> std::same_as<double>;
 };
 
-/// A bond law with a damage per element besides (the softening flat joint): its update and energy take the
-/// bond's `damage` too, bond_elements(p) doubles, which the engine keeps (BondStore::damage), zero at
-/// installation and set to 1 when the element breaks, and checkpoints; the update advances them in place.
+/// A bond law with a state of its own per element besides (the softening flat joint's damage): it names its doubles
+/// per element (P::kElementState, each name the element_<name> key of a specimen file); its update and energy take
+/// the bond's `state` too, bond_elements(p) * kElementState.size() doubles (element e's at [e * m, (e + 1) * m)),
+/// and bond_element_broken sets an element's state when the engine applies its break. The engine keeps these
+/// doubles (BondStore::element_state: zero at installation, copied with the joints, checkpointed, saved in
+/// specimens) without reading them; what they mean is the law's.
 template <class P>
-concept BondLawWithDamage = requires(const P& p, const BondGeometry& g, const BondKinematics& k, double* shear,
-                                     const std::uint8_t* bonded, BreakMode* breaks, double* damage) {
-  { bond_update(p, g, k, shear, bonded, breaks, damage) } -> std::same_as<BondResult>;
-  { bond_energy(p, g, k, shear, bonded, damage) } -> std::same_as<double>;
+concept BondLawWithState = requires(const P& p, const BondGeometry& g, const BondKinematics& k, double* shear,
+                                    const std::uint8_t* bonded, BreakMode* breaks, double* state) {
+  { P::kElementState.size() } -> std::convertible_to<std::size_t>;
+  { std::string_view(P::kElementState[0]) } -> std::same_as<std::string_view>;
+  { bond_update(p, g, k, shear, bonded, breaks, state) } -> std::same_as<BondResult>;
+  { bond_energy(p, g, k, shear, bonded, state) } -> std::same_as<double>;
+  { bond_element_broken(p, state) } -> std::same_as<void>;
 };
 
+/// Doubles of law state per element: P::kElementState.size() for a BondLawWithState, else 0.
+template <class P>
+constexpr int bond_state_size() {
+  if constexpr (BondLawWithState<P>)
+    return static_cast<int>(P::kElementState.size());
+  else
+    return 0;
+}
+
+/// The names of the law's state per element (empty for a law without).
+template <class P>
+constexpr std::span<const std::string_view> bond_state_names() {
+  if constexpr (BondLawWithState<P>)
+    return P::kElementState;
+  else
+    return {};
+}
+
 /// A bonded law: its stiffness and strength as the shared block `bond` (BondStiffnessStrength: what calibration
-/// moves), per-bond state of bond_elements() elements (a shear force and a bonded flag each, and a damage for a
-/// BondLawWithDamage), the geometry fixed at installation, the force update (breaks only flagged, applied by the
-/// engine after the loop), when a bond hands its pair to the unbonded contact, its time-step stiffness, strain
+/// moves), per-bond state of bond_elements() elements (a shear force and a bonded flag each, and the law's own
+/// doubles for a BondLawWithState), the geometry fixed at installation, the force update (breaks only flagged, applied
+/// by the engine after the loop), when a bond hands its pair to the unbonded contact, its time-step stiffness, strain
 /// energy and the place of a broken element (crack events).
 template <class P>
 concept BondLawParams = LawParams<P> &&
-    (BondLawWithoutDamage<P> != BondLawWithDamage<P>)&&requires(const P& p, const BondGeometry& g,
-                                                                const BondKinematics& k, const BondResult& r,
-                                                                const std::uint8_t* bonded) {
+    (BondLawWithoutState<P> != BondLawWithState<P>)&&requires(const P& p, const BondGeometry& g,
+                                                              const BondKinematics& k, const BondResult& r,
+                                                              const std::uint8_t* bonded) {
   { p.bond } -> std::same_as<const BondStiffnessStrength&>;
   { bond_elements(p) } -> std::same_as<int>;
   { bond_keeps_contact(p) } -> std::same_as<bool>;

@@ -7,7 +7,8 @@
 //
 // Per bonded element e (area A_e = l_e t, centroid xi_e): its opening g_e = g_s - theta_b xi_e (the flat joint's
 // stress is sigma = k_n g_e) and a damage D_e in [0, 1], the law's state (zero at installation, kept by the engine
-// per element, BondStore::damage), a function of the largest opening the element has reached:
+// per element, BondStore::element_state, as doubles it does not read), a function of the largest opening the element
+// has reached:
 //
 //   g_0 = sigma_c / k_n           the opening at the strength (per bond: k_n = Ebar* / (R1 + R2))
 //   w_c = 2 G_f / sigma_c         the softening opening (0 when sigma_c = 0: no strength, nothing to soften)
@@ -43,11 +44,13 @@
 // k_s A_e). An undamaged element whose stress stays within sigma_c is the flat joint's, to the bit (the same
 // Coulomb envelope c - sigma tan(phi)). Breaks: in tension when D reaches 1 (g_e >= g_f), in shear on the damaged
 // envelope; then exactly as the flat joint's (a crack event, an unbonded element carrying compression and
-// friction; the engine sets its damage to 1). The time step takes the undamaged stiffness, the largest.
+// friction; bond_element_broken sets its damage to 1 when the engine applies the break). The time step takes the
+// undamaged stiffness, the largest.
 //
 //   SofteningFlatJointParams p = SofteningFlatJointParams::validated(raw);  // InputError naming the key
 //   BondResult r = bond_update(p, geo, kin, shear, bonded, breaks, damage);   // damage: bond_elements(p) doubles
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <span>
@@ -67,6 +70,9 @@ struct SofteningFlatJointParams : FlatJointParams {
       "(Hillerborg's fictitious crack; dem/laws/softening_flat_joint)";
   double fracture_energy_J_per_m2 = 0;  ///< G_f per unit element area, beyond sigma_c^2 / (2 k_n)
   double softening_opening_m = 0;       ///< w_c = 2 G_f / sigma_c (0 when sigma_c = 0), derived by validated()
+  /// The law's state per element (BondLawWithState): its damage D_e, one double that the engine keeps for it
+  /// (BondStore::element_state) and a specimen file holds as "element_damage".
+  static constexpr std::array<std::string_view, 1> kElementState{"damage"};
 
   /// The flat joint's keys, then fracture_energy_J_per_m2.
   static const FieldTable<SofteningFlatJointParams>& fields();
@@ -224,5 +230,10 @@ inline double bond_energy(const SofteningFlatJointParams& p, const BondGeometry&
 }
 double bond_energy(const SofteningFlatJointParams&, const BondGeometry&, const BondKinematics&, const double*,
                    const std::uint8_t*) = delete;
+
+/// An element whose break the engine applies: wholly damaged (`damage`: its one double of state).
+inline void bond_element_broken(const SofteningFlatJointParams&, double* damage) {
+  *damage = 1;
+}
 
 }  // namespace kerf::dem
