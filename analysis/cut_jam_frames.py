@@ -24,7 +24,7 @@ from matplotlib.collections import LineCollection, PatchCollection  # noqa: E402
 from matplotlib.patches import Circle  # noqa: E402
 
 import kerf  # noqa: E402
-from kerf.frames import tied  # noqa: E402
+from kerf.frames import samples_per_frame, tied  # noqa: E402
 
 
 def segment_distance(p, a, b):
@@ -77,9 +77,7 @@ def main(argv=None):
     folder = pathlib.Path(a.dir)
     summary = json.loads((folder / "summary.json").read_text())
     # Samples per frame: --every, else the run's override of output.frame_every_samples (its provenance).
-    given = [o.split("=", 1)[1] for o in summary["provenance"].get("overrides", [])
-             if o.startswith("output.frame_every_samples=")]
-    every = a.every or int(given[-1]) if (a.every or given) else ap.error("--every: the samples per frame")
+    every = a.every or samples_per_frame(summary) or ap.error("--every: the samples per frame")
     depth = summary["cut"]["cut"]["depth_of_cut_mm"]
     forces = np.loadtxt(folder / "forces.csv", delimiter=",", skiprows=1)
     zoom, wide = [int(k) for k in a.zoom.split(",")], [int(k) for k in a.wide.split(",")]

@@ -23,7 +23,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 import kerf  # noqa: E402
-from kerf.frames import tied  # noqa: E402
+from kerf.frames import samples_per_frame, tied  # noqa: E402
 from kerf.result_keys import CutResults as R  # noqa: E402
 
 REACHES_UM = (0.0, 5.0, 26.0)
@@ -44,18 +44,12 @@ def gap_um(frame, y_cut_mm):
     return 1e3 * float(np.min(tip[0] - (p[at_line, 0] + r[at_line])))
 
 
-def frames_per_sample(summary):
-    given = [o.split("=", 1)[1] for o in summary["provenance"].get("overrides", [])
-             if o.startswith("output.frame_every_samples=")]
-    if not given:
-        sys.exit("the run does not say its output.frame_every_samples (run it with --set output.frame_every_samples=N)")
-    return int(given[-1])
-
-
 def gaps(folder):
     """The gaps (um) of the run's frames in its steady travel."""
     summary = json.loads((folder / "summary.json").read_text())
-    every = frames_per_sample(summary)
+    every = samples_per_frame(summary)
+    if every is None:
+        sys.exit("the run does not say its output.frame_every_samples (run it with --set output.frame_every_samples=N)")
     results = summary["results"]
     y_cut = results[R.cut_line_y_mm]
     steady_from = results[R.steady_from_travel_mm]

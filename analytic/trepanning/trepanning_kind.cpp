@@ -119,14 +119,16 @@ class TrepanningCase final : public AnalyticCase {
                units::pa_to_mpa(scene_.groups.axial_group_Pa), units::pa_to_mpa(scene_.groups.torque_group_Pa),
                scene_.groups_origin);
     if (!scene_.grits) return;
-    const auto d = trepanning_grit_diagnostics(scene_.tool, scene_.cut, scene_.groups, *scene_.grits);
+    const TrepanningRow row{scene_, forces};  // its grits' diagnostics and regime, as the CSV row has them
+    const TrepanningGritDiagnostics& d = row.grits;
     fmt::print(text,
                "per grit          {:.4g} grits, {:.4g} cutting edges, depth {:.4g} nm, normal {:.4g} mN, tangential "
                "{:.4g} mN (Eqs. 1-20)\n",
                d.grit_count, d.cutting_edges, units::m_to_nm(d.grit_depth_m), 1e3 * d.grit_normal_force_N,
                1e3 * d.grit_tangential_force_N);
-    if (const auto regime = grit_regime(scene_, d.grit_depth_m))
-      fmt::print(text, "grit regime       {} (each grit's depth against d_c)\n", cutting_regime_name(regime->second));
+    if (row.regime)
+      fmt::print(text, "grit regime       {} (each grit's depth against d_c)\n",
+                 cutting_regime_name(row.regime->second));
   }
 
   std::string_view comparison_title() const override { return "Trepanning model"; }

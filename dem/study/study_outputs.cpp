@@ -176,9 +176,10 @@ ConditionTables condition_tables(const StudySpec& spec, const StudyScheduler& sc
   return t;
 }
 
-/// A condition's entries that tell it apart in a legend: its tags when the study has tags (a list study's labels),
-/// else its overrides; only those whose value is not the same in every condition, and not `skip` (the x axis's key).
-std::string condition_label(const StudySpec& spec, std::size_t ci, const std::string& skip) {
+/// Each condition's legend label: its entries that tell it apart, its tags when the study has tags (a list study's
+/// labels), else its overrides; only those whose value is not the same in every condition, and not `skip` (the x
+/// axis's key).
+std::vector<std::string> condition_labels(const StudySpec& spec, const std::string& skip) {
   const bool by_tags = !spec.tag_names.empty();
   const auto entries = [&](std::size_t c) -> const auto& {
     return by_tags ? spec.conditions[c].tags : spec.conditions[c].values;
@@ -188,14 +189,15 @@ std::string condition_label(const StudySpec& spec, std::size_t ci, const std::st
       if (key == k) return v.dump();
     return std::nullopt;
   };
-  std::string label;
-  for (const auto& [k, v] : entries(ci)) {
-    if (k == skip) continue;
-    bool varies = false;
-    for (std::size_t c = 0; c < spec.conditions.size() && !varies; ++c) varies = value_in(c, k) != v.dump();
-    if (varies) label += (label.empty() ? "" : ", ") + (by_tags ? k : key_label(k)) + " = " + value_text(v);
-  }
-  return label;
+  std::vector<std::string> labels(spec.conditions.size());
+  for (std::size_t ci = 0; ci < spec.conditions.size(); ++ci)
+    for (const auto& [k, v] : entries(ci)) {
+      if (k == skip) continue;
+      bool varies = false;
+      for (std::size_t c = 0; c < spec.conditions.size() && !varies; ++c) varies = value_in(c, k) != v.dump();
+      if (varies) labels[ci] += (labels[ci].empty() ? "" : ", ") + (by_tags ? k : key_label(k)) + " = " + value_text(v);
+    }
+  return labels;
 }
 
 /// The varied keys worth an x axis: numeric, with at least two values among the conditions that set them (in a list
@@ -212,27 +214,27 @@ std::vector<std::string> axis_keys(const StudySpec& spec) {
   return keys;
 }
 
-/// One point per condition of result `n` in the figure: x from `x_of` (no point where it gives none), the series by
-/// the condition's label. Returns false when the figure says nothing: no point, a result that only repeats the x key
-/// (the loading speed) or one that is the same in every condition (a setting echoed as a result).
-bool fill_points(const StudySpec& spec, const std::vector<ResultStats>& stats, const std::string& x_key,
-                 const std::function<std::optional<double>(std::size_t)>& x_of, FigureSpec& fig) {
+/// One point per condition of a result in the figure: x from `x_of` (no point where it gives none), the series by
+/// the condition's label (condition_labels). Returns false when the figure says nothing: no point, a result that only
+/// repeats the x key (the loading speed) or one that is the same in every condition (a setting echoed as a result).
+bool fill_points(const std::vector<ResultStats>& stats, const std::vector<std::string>& labels,
+                 const std::string& x_key, const std::function<std::optional<double>(std::size_t)>& x_of,
+                 FigureSpec& fig) {
   std::map<std::string, std::size_t> series_of;
   bool echoes_key = !x_key.empty();
   std::optional<double> first_mean;
   bool constant = true;
-  for (std::size_t ci = 0; ci < spec.conditions.size(); ++ci) {
+  for (std::size_t ci = 0; ci < labels.size(); ++ci) {
     const ResultStats& st = stats[ci];
     const std::optional<double> x = x_of(ci);
     if (!x || !std::isfinite(st.mean)) continue;
     echoes_key = echoes_key && st.mean == *x && st.std == 0;
     if (!first_mean) first_mean = st.mean;
     constant = constant && st.mean == *first_mean && st.std == 0;
-    const std::string label = condition_label(spec, ci, x_key);
-    auto [it, fresh] = series_of.try_emplace(label, fig.series.size());
+    auto [it, fresh] = series_of.try_emplace(labels[ci], fig.series.size());
     if (fresh) {
       PlotSeries s;
-      s.label = label;
+      s.label = labels[ci];
       s.style = x_key.empty() ? SeriesStyle::points : SeriesStyle::points_and_line;
       s.color = static_cast<int>(fig.series.size());
       s.marker = static_cast<int>(fig.series.size() % 5);
@@ -260,30 +262,32 @@ std::vector<std::string> write_plots(const StudySpec& spec, const std::vector<st
   };
   const std::vector<std::string> keys = axis_keys(spec);
   for (const std::string& key : keys) {
+    const std::vector<std::string> labels = condition_labels(spec, key);
+    const auto x_of = [&](std::size_t ci) -> std::optional<double> {
+      for (const auto& [k, v] : spec.conditions[ci].values)
+        if (k == key && v.is_number()) return v.get<double>();
+      return std::nullopt;
+    };
     for (const std::string& n : names) {
       FigureSpec fig;
       fig.title = "mean and 95 % interval over the packings";
       fig.x_label = key_label(key);  // "cut.depth_of_cut_mm" -> "depth of cut (mm)"
       fig.y_label = key_label(n);
-      const auto x_of = [&](std::size_t ci) -> std::optional<double> {
-        for (const auto& [k, v] : spec.conditions[ci].values)
-          if (k == key && v.is_number()) return v.get<double>();
-        return std::nullopt;
-      };
-      if (!fill_points(spec, by_result[n], key, x_of, fig)) continue;
+      if (!fill_points(by_result[n], labels, key, x_of, fig)) continue;
       for (PlotSeries& s : fig.series) sort_by_x(s);  // in x order
       render(fig, fmt::format("plots/{}_vs_{}.png", file_part(n), file_part(key)));
     }
   }
   if (!keys.empty() || spec.conditions.size() < 2) return plots;
+  const std::vector<std::string> labels = condition_labels(spec, "");
+  const auto x_of = [](std::size_t ci) -> std::optional<double> { return static_cast<double>(ci + 1); };
   for (const std::string& n : names) {
     FigureSpec fig;
     fig.title = "mean and 95 % interval by condition";
     fig.x_label = "condition";
     fig.y_label = key_label(n);
     fig.x_min = 0.5, fig.x_max = static_cast<double>(spec.conditions.size()) + 0.5, fig.x_tick_step = 1;
-    const auto x_of = [](std::size_t ci) -> std::optional<double> { return static_cast<double>(ci + 1); };
-    if (!fill_points(spec, by_result[n], "", x_of, fig)) continue;
+    if (!fill_points(by_result[n], labels, "", x_of, fig)) continue;
     render(fig, fmt::format("plots/{}_by_condition.png", file_part(n)));
   }
   return plots;

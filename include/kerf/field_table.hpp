@@ -443,9 +443,8 @@ void check_unique_keys(const FieldTable<S>& table, std::string_view section,
   for (const auto& field : table)
     keys.push_back(std::visit([](const auto& f) { return std::string_view(f.key); }, field));
   keys.insert(keys.end(), more.begin(), more.end());
-  std::vector<std::string_view> sorted = keys;
-  std::sort(sorted.begin(), sorted.end());
-  if (const auto twice = std::adjacent_find(sorted.begin(), sorted.end()); twice != sorted.end())
+  std::sort(keys.begin(), keys.end());
+  if (const auto twice = std::adjacent_find(keys.begin(), keys.end()); twice != keys.end())
     throw std::logic_error(std::string(section) + ": the key '" + std::string(*twice) + "' is declared twice");
 }
 
