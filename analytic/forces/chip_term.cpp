@@ -306,27 +306,33 @@ const ResultTable<PredictionReport>& edge_results() {
 }
 
 void print_edge_details(std::FILE* text, const AnalyticScene& scene, const Prediction& p) {
-  using units::m_to_um;
-  using units::rad_to_deg;
+  namespace k = edge_keys;
   if (!p.chip_term.liu_li) return;
-  const auto& l = *p.chip_term.liu_li;
-  fmt::print(
-      text, "edge integral     from {:.4g} deg to {:.4g} deg (stagnation {:.4g} deg{}); ploughed layer {:.6g} um\n",
-      rad_to_deg(l.lower_limit_rad), rad_to_deg(l.upper_limit_rad), rad_to_deg(l.stagnation_angle_rad),
-      l.pole_rad ? fmt::format(", pole {:.4g} deg", rad_to_deg(*l.pole_rad)) : "", m_to_um(l.ploughed_thickness_m));
+  // The numbers as the CSV row holds them (edge_results, and the shared ploughing columns: converted once, there).
+  const PredictionReport report{scene, p};
+  const auto value = [&report](const ResultTable<PredictionReport>& table, std::string_view key) {
+    return result_of(table, report, key);
+  };
+  const auto edge = [&value](std::string_view key) { return value(edge_results(), key).get<double>(); };
+  fmt::print(text,
+             "edge integral     from {:.4g} deg to {:.4g} deg (stagnation {:.4g} deg{}); ploughed layer {:.6g} um\n",
+             edge(k::lower_limit_deg), edge(k::upper_limit_deg), edge(k::stagnation_angle_deg),
+             p.chip_term.liu_li->pole_rad ? fmt::format(", pole {:.4g} deg", edge(k::pole_deg)) : "",
+             edge(k::ploughed_thickness_um));
   fmt::print(text,
              "edge part         cutting {:.6g} N, thrust {:.6g} N (the thrust depends strongly on the lower limit)\n",
-             l.edge.cutting_N_per_m * p.width_m, l.edge.thrust_N_per_m * p.width_m);
+             edge(k::edge_cutting_force_N), edge(k::edge_thrust_force_N));
   if (p.chip_term.ploughing) {
-    const auto& w = *p.chip_term.ploughing;
     fmt::print(text,
                "ploughing part    cutting {:.6g} N, thrust {:.6g} N (wave model, f = {:.4g}, chord {:.6g} um at "
                "{:.4g} deg)\n",
-               w.force.cutting_N_per_m * p.width_m, w.force.thrust_N_per_m * p.width_m, p.chip_term.friction_factor,
-               m_to_um(w.chord_m), rad_to_deg(w.factors.attack_angle_rad));
+               value(prediction_results(), prediction_keys::ploughing_cutting_force_N).get<double>(),
+               value(prediction_results(), prediction_keys::ploughing_thrust_force_N).get<double>(),
+               edge(k::friction_factor), units::m_to_um(p.chip_term.ploughing->chord_m),
+               edge(k::ploughing_attack_angle_deg));
   } else {
     fmt::print(text, "ploughing part    none (models.ploughing = {})\n",
-               ploughing_model_name(scene.params<ChipTermParams>().ploughing));
+               value(edge_results(), k::ploughing_model).get<std::string>());
   }
 }
 

@@ -147,11 +147,15 @@ const ResultTable<PredictionReport>& oxley_results() {
   return table;
 }
 
-void print_oxley_details(std::FILE* text, const Prediction& p) {
+void print_oxley_details(std::FILE* text, const AnalyticScene& scene, const Prediction& p) {
+  namespace k = oxley_keys;
   if (!p.oxley) return;
+  // The numbers as the CSV row holds them (oxley_results).
+  const PredictionReport report{scene, p};
+  const auto value = [&report](std::string_view key) { return result_of(oxley_results(), report, key).get<double>(); };
   fmt::print(text, "oxley             C0 = {:.4g}, delta = {:.4g}, interface T = {:.5g} K, contact length {:.6g} mm\n",
-             p.oxley->strain_rate_constant_C0, p.oxley->delta, p.oxley->interface_temperature_K,
-             units::m_to_mm(p.oxley->contact_length_m));
+             value(k::strain_rate_constant_C0), value(k::secondary_zone_ratio_delta), value(k::interface_temperature_K),
+             value(k::contact_length_oxley_mm));
 }
 
 }  // namespace kerf

@@ -72,17 +72,19 @@ void predict_transition_forces(const AnalyticScene& scene, const OxleyResult* ox
 }
 
 void print_transition(std::FILE* text, const AnalyticScene& scene, const Prediction& p) {
-  const TransitionDetails* t = transition_details(p);
-  if (!t) return;
-  const TransitionParams& params = scene.params<TransitionParams>();
+  namespace k = transition_keys;
+  if (!transition_details(p)) return;
+  // The numbers as the CSV row holds them (transition_results).
+  const PredictionReport report{scene, p};
+  const auto value = [&report](std::string_view key) { return result_of(transition_results(), report, key); };
   fmt::print(text,
              "ductile layer     l = {:.4g} um ({} x d_c); the ductile model's part {:.6g} N cutting, {:.6g} N "
              "thrust\n",
-             units::m_to_um(t->ductile_layer_m), params.layer_factor, t->layer.cutting_N_per_m * p.width_m,
-             t->layer.thrust_N_per_m * p.width_m);
+             value(k::ductile_layer_um).get<double>(), scene.params<TransitionParams>().layer_factor,
+             value(k::layer_cutting_force_N).get<double>(), value(k::layer_thrust_force_N).get<double>());
   fmt::print(text, "fracture part     {:.6g} N cutting, {:.6g} N thrust ({})\n",
-             t->fracture.cutting_N_per_m * p.width_m, t->fracture.thrust_N_per_m * p.width_m,
-             fracture_model_name(params.fracture));
+             value(k::fracture_cutting_force_N).get<double>(), value(k::fracture_thrust_force_N).get<double>(),
+             value(k::fracture_model).get<std::string>());
 }
 
 void read_transition(ObjectReader& object, AnalyticScene& scene) {

@@ -75,8 +75,10 @@ const kerf::ResultTable<kerf::PredictionReport>& toy_results() {
   return table;
 }
 
-void print_toy(std::FILE* text, const kerf::AnalyticScene&, const kerf::Prediction& p) {
-  fmt::print(text, "toy part          k_c = {:.6g} MPa\n", toy_specific_force_MPa(p));
+void print_toy(std::FILE* text, const kerf::AnalyticScene& scene, const kerf::Prediction& p) {
+  // The number as the row holds it.
+  const double k_c = kerf::result_of(toy_results(), {scene, p}, toy_keys::toy_specific_force_MPa).get<double>();
+  fmt::print(text, "toy part          k_c = {:.6g} MPa\n", k_c);
 }
 
 const kerf::OrthogonalForceModel toy_force_model{.predict = &predict_toy, .results = &toy_results, .print = &print_toy};

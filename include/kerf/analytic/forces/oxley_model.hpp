@@ -65,6 +65,6 @@ KERF_RESULT_KEY(oxley_shear_angle_roots)
 /// prediction_model_results).
 const ResultTable<PredictionReport>& oxley_results();
 /// Its line of the text report, where the prediction has a solve.
-void print_oxley_details(std::FILE* text, const Prediction& p);
+void print_oxley_details(std::FILE* text, const AnalyticScene& scene, const Prediction& p);
 
 }  // namespace kerf
