@@ -251,48 +251,88 @@ void predict_chip_forces(const AnalyticScene& scene, const OxleyResult* oxley, b
 const OrthogonalForceModel merchant_force_model{.predict = &predict_merchant_forces};
 const OrthogonalForceModel liu_li_force_model{.predict = &predict_liu_li_forces, .edge_columns = true};
 
-void write_edge_cells(const AnalyticScene& scene, const Prediction& p, CellWriter& w) {
-  const ChipTermParams& chip = scene.params<ChipTermParams>();
-  const bool has = p.chip_term.liu_li.has_value();
-  const LiuLiResult l = p.chip_term.liu_li.value_or(LiuLiResult{});
-  w.text("friction_closure", friction_closure_name(chip.liu_li.closure));
-  w.text("lower_limit_rule", lower_limit_rule_name(chip.liu_li.lower_limit));
-  w.optional_number("lower_limit_deg", has, units::rad_to_deg(l.lower_limit_rad));
-  w.optional_number("upper_limit_deg", has, units::rad_to_deg(l.upper_limit_rad));
-  w.optional_number("stagnation_angle_deg", has, units::rad_to_deg(l.stagnation_angle_rad));
-  w.optional_number("pole_deg", has && l.pole_rad, units::rad_to_deg(l.pole_rad.value_or(0.0)));
-  w.optional_number("ploughed_thickness_um", has, units::m_to_um(l.ploughed_thickness_m));
-  w.optional_number("edge_cutting_force_N", has, l.edge.cutting_N_per_m * p.width_m);
-  w.optional_number("edge_thrust_force_N", has, l.edge.thrust_N_per_m * p.width_m);
-  w.text("ploughing_model", ploughing_model_name(chip.ploughing));
-  const bool ploughs = p.chip_term.ploughing.has_value();
-  w.optional_number("friction_factor", ploughs, p.chip_term.friction_factor);
-  w.optional_number("ploughing_attack_angle_deg", ploughs,
-                    units::rad_to_deg(p.chip_term.ploughing.value_or(EdgePloughingResult{}).factors.attack_angle_rad));
+namespace {
+using R = PredictionReport;
+bool has_edge(const R& r) {
+  return r.p.chip_term.liu_li.has_value();
+}
+const LiuLiResult& edge(const R& r) {
+  return *r.p.chip_term.liu_li;
+}
+bool ploughs(const R& r) {
+  return r.p.chip_term.ploughing.has_value();
+}
+}  // namespace
+
+const ResultTable<PredictionReport>& edge_results() {
+  namespace k = edge_keys;
+  using units::m_to_um;
+  using units::rad_to_deg;
+  static const ResultTable<R> table{
+      result_value<R>(k::friction_closure, "", "the friction closure along the edge (models.friction_closure)",
+                      [](const R& r) {
+                        return std::string(friction_closure_name(r.scene.params<ChipTermParams>().liu_li.closure));
+                      }),
+      result_value<R>(k::lower_limit_rule, "", "the rule of the edge integral's lower limit (models.lower_limit)",
+                      [](const R& r) {
+                        return std::string(lower_limit_rule_name(r.scene.params<ChipTermParams>().liu_li.lower_limit));
+                      }),
+      result_or_null<R>(k::lower_limit_deg, "deg", "the edge integral's lower limit (empty without an edge)", has_edge,
+                        [](const R& r) { return rad_to_deg(edge(r).lower_limit_rad); }),
+      result_or_null<R>(k::upper_limit_deg, "deg", "the edge integral's upper limit", has_edge,
+                        [](const R& r) { return rad_to_deg(edge(r).upper_limit_rad); }),
+      result_or_null<R>(k::stagnation_angle_deg, "deg", "the stagnation point's angle on the edge", has_edge,
+                        [](const R& r) { return rad_to_deg(edge(r).stagnation_angle_rad); }),
+      result_or_null<R>(
+          k::pole_deg, "deg", "the friction closure's pole on the edge (empty: none)",
+          [](const R& r) { return has_edge(r) && edge(r).pole_rad.has_value(); },
+          [](const R& r) { return rad_to_deg(*edge(r).pole_rad); }),
+      result_or_null<R>(k::ploughed_thickness_um, "um", "the ploughed layer h_s below the stagnation point", has_edge,
+                        [](const R& r) { return m_to_um(edge(r).ploughed_thickness_m); }),
+      result_or_null<R>(k::edge_cutting_force_N, "N", "the edge arc's chip force, cutting (part of the chip term)",
+                        has_edge, [](const R& r) { return edge(r).edge.cutting_N_per_m * r.p.width_m; }),
+      result_or_null<R>(k::edge_thrust_force_N, "N", "the edge arc's chip force, thrust", has_edge,
+                        [](const R& r) { return edge(r).edge.thrust_N_per_m * r.p.width_m; }),
+      result_value<R>(
+          k::ploughing_model, "", "the force under the edge below the stagnation point (models.ploughing)",
+          [](const R& r) { return std::string(ploughing_model_name(r.scene.params<ChipTermParams>().ploughing)); }),
+      result_or_null<R>(k::friction_factor, "", "the ploughing model's friction factor f (empty without its term)",
+                        ploughs, [](const R& r) { return r.p.chip_term.friction_factor; }),
+      result_or_null<R>(k::ploughing_attack_angle_deg, "deg",
+                        "the wave model's attack angle: the chord's alpha, capped at eta (empty without its term)",
+                        ploughs,
+                        [](const R& r) { return rad_to_deg(r.p.chip_term.ploughing->factors.attack_angle_rad); })};
+  return table;
 }
 
 void print_edge_details(std::FILE* text, const AnalyticScene& scene, const Prediction& p) {
-  using units::m_to_um;
-  using units::rad_to_deg;
+  namespace k = edge_keys;
   if (!p.chip_term.liu_li) return;
-  const auto& l = *p.chip_term.liu_li;
-  fmt::print(
-      text, "edge integral     from {:.4g} deg to {:.4g} deg (stagnation {:.4g} deg{}); ploughed layer {:.6g} um\n",
-      rad_to_deg(l.lower_limit_rad), rad_to_deg(l.upper_limit_rad), rad_to_deg(l.stagnation_angle_rad),
-      l.pole_rad ? fmt::format(", pole {:.4g} deg", rad_to_deg(*l.pole_rad)) : "", m_to_um(l.ploughed_thickness_m));
+  // The numbers as the CSV row holds them (edge_results, and the shared ploughing columns: converted once, there).
+  const PredictionReport report{scene, p};
+  const auto value = [&report](const ResultTable<PredictionReport>& table, std::string_view key) {
+    return result_of(table, report, key);
+  };
+  const auto edge = [&value](std::string_view key) { return value(edge_results(), key).get<double>(); };
+  fmt::print(text,
+             "edge integral     from {:.4g} deg to {:.4g} deg (stagnation {:.4g} deg{}); ploughed layer {:.6g} um\n",
+             edge(k::lower_limit_deg), edge(k::upper_limit_deg), edge(k::stagnation_angle_deg),
+             p.chip_term.liu_li->pole_rad ? fmt::format(", pole {:.4g} deg", edge(k::pole_deg)) : "",
+             edge(k::ploughed_thickness_um));
   fmt::print(text,
              "edge part         cutting {:.6g} N, thrust {:.6g} N (the thrust depends strongly on the lower limit)\n",
-             l.edge.cutting_N_per_m * p.width_m, l.edge.thrust_N_per_m * p.width_m);
+             edge(k::edge_cutting_force_N), edge(k::edge_thrust_force_N));
   if (p.chip_term.ploughing) {
-    const auto& w = *p.chip_term.ploughing;
     fmt::print(text,
                "ploughing part    cutting {:.6g} N, thrust {:.6g} N (wave model, f = {:.4g}, chord {:.6g} um at "
                "{:.4g} deg)\n",
-               w.force.cutting_N_per_m * p.width_m, w.force.thrust_N_per_m * p.width_m, p.chip_term.friction_factor,
-               m_to_um(w.chord_m), rad_to_deg(w.factors.attack_angle_rad));
+               value(prediction_results(), prediction_keys::ploughing_cutting_force_N).get<double>(),
+               value(prediction_results(), prediction_keys::ploughing_thrust_force_N).get<double>(),
+               edge(k::friction_factor), units::m_to_um(p.chip_term.ploughing->chord_m),
+               edge(k::ploughing_attack_angle_deg));
   } else {
     fmt::print(text, "ploughing part    none (models.ploughing = {})\n",
-               ploughing_model_name(scene.params<ChipTermParams>().ploughing));
+               value(edge_results(), k::ploughing_model).get<std::string>());
   }
 }
 

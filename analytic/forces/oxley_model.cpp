@@ -126,22 +126,36 @@ std::optional<OxleyResult> solve_scene_oxley(const AnalyticScene& scene, Predict
   return oxley;
 }
 
-void write_oxley_cells(const Prediction& p, CellWriter& w) {
-  const bool has = p.oxley.has_value();
-  const OxleyDetails o = p.oxley.value_or(OxleyDetails{});
-  w.optional_number("strain_rate_constant_C0", has, o.strain_rate_constant_C0);
-  w.optional_number("secondary_zone_ratio_delta", has, o.delta);
-  w.optional_number("interface_temperature_K", has, o.interface_temperature_K);
-  w.optional_number("contact_length_oxley_mm", has, units::m_to_mm(o.contact_length_m));
-  w.optional_number("oxley_residual", has, o.residual);
-  w.optional_number("oxley_shear_angle_roots", has, o.shear_angle_roots);
+const ResultTable<PredictionReport>& oxley_results() {
+  namespace k = oxley_keys;
+  using R = PredictionReport;
+  const auto solved = [](const R& r) { return r.p.oxley.has_value(); };
+  static const ResultTable<R> table{
+      result_or_null<R>(k::strain_rate_constant_C0, "", "Oxley's strain-rate constant C0 of the solve", solved,
+                        [](const R& r) { return r.p.oxley->strain_rate_constant_C0; }),
+      result_or_null<R>(k::secondary_zone_ratio_delta, "", "the secondary zone's thickness ratio delta", solved,
+                        [](const R& r) { return r.p.oxley->delta; }),
+      result_or_null<R>(k::interface_temperature_K, "K", "the tool-chip interface temperature", solved,
+                        [](const R& r) { return r.p.oxley->interface_temperature_K; }),
+      result_or_null<R>(k::contact_length_oxley_mm, "mm", "the tool-chip contact length of the solve", solved,
+                        [](const R& r) { return units::m_to_mm(r.p.oxley->contact_length_m); }),
+      result_or_null<R>(k::oxley_residual, "", "the larger relative residual of the two Oxley conditions", solved,
+                        [](const R& r) { return r.p.oxley->residual; }),
+      result_or_null<R>(k::oxley_shear_angle_roots, "",
+                        "the branches found in the shear angle (the minimum-force one is reported)", solved,
+                        [](const R& r) { return static_cast<double>(r.p.oxley->shear_angle_roots); })};
+  return table;
 }
 
-void print_oxley_details(std::FILE* text, const Prediction& p) {
+void print_oxley_details(std::FILE* text, const AnalyticScene& scene, const Prediction& p) {
+  namespace k = oxley_keys;
   if (!p.oxley) return;
+  // The numbers as the CSV row holds them (oxley_results).
+  const PredictionReport report{scene, p};
+  const auto value = [&report](std::string_view key) { return result_of(oxley_results(), report, key).get<double>(); };
   fmt::print(text, "oxley             C0 = {:.4g}, delta = {:.4g}, interface T = {:.5g} K, contact length {:.6g} mm\n",
-             p.oxley->strain_rate_constant_C0, p.oxley->delta, p.oxley->interface_temperature_K,
-             units::m_to_mm(p.oxley->contact_length_m));
+             value(k::strain_rate_constant_C0), value(k::secondary_zone_ratio_delta), value(k::interface_temperature_K),
+             value(k::contact_length_oxley_mm));
 }
 
 }  // namespace kerf

@@ -71,29 +71,20 @@ void predict_transition_forces(const AnalyticScene& scene, const OxleyResult* ox
   p.details = details;
 }
 
-void write_transition_cells(const AnalyticScene& scene, const Prediction& p, CellWriter& w) {
-  const TransitionDetails* own = transition_details(p);
-  const TransitionDetails t = own ? *own : TransitionDetails{};
-  w.text("fracture_model", fracture_model_name(scene.params<TransitionParams>().fracture));
-  w.number("ductile_layer_um", units::m_to_um(t.ductile_layer_m));
-  w.number("layer_cutting_force_N", t.layer.cutting_N_per_m * p.width_m);
-  w.number("layer_thrust_force_N", t.layer.thrust_N_per_m * p.width_m);
-  w.number("fracture_cutting_force_N", t.fracture.cutting_N_per_m * p.width_m);
-  w.number("fracture_thrust_force_N", t.fracture.thrust_N_per_m * p.width_m);
-}
-
 void print_transition(std::FILE* text, const AnalyticScene& scene, const Prediction& p) {
-  const TransitionDetails* t = transition_details(p);
-  if (!t) return;
-  const TransitionParams& params = scene.params<TransitionParams>();
+  namespace k = transition_keys;
+  if (!transition_details(p)) return;
+  // The numbers as the CSV row holds them (transition_results).
+  const PredictionReport report{scene, p};
+  const auto value = [&report](std::string_view key) { return result_of(transition_results(), report, key); };
   fmt::print(text,
              "ductile layer     l = {:.4g} um ({} x d_c); the ductile model's part {:.6g} N cutting, {:.6g} N "
              "thrust\n",
-             units::m_to_um(t->ductile_layer_m), params.layer_factor, t->layer.cutting_N_per_m * p.width_m,
-             t->layer.thrust_N_per_m * p.width_m);
+             value(k::ductile_layer_um).get<double>(), scene.params<TransitionParams>().layer_factor,
+             value(k::layer_cutting_force_N).get<double>(), value(k::layer_thrust_force_N).get<double>());
   fmt::print(text, "fracture part     {:.6g} N cutting, {:.6g} N thrust ({})\n",
-             t->fracture.cutting_N_per_m * p.width_m, t->fracture.thrust_N_per_m * p.width_m,
-             fracture_model_name(params.fracture));
+             value(k::fracture_cutting_force_N).get<double>(), value(k::fracture_thrust_force_N).get<double>(),
+             value(k::fracture_model).get<std::string>());
 }
 
 void read_transition(ObjectReader& object, AnalyticScene& scene) {
@@ -120,11 +111,36 @@ const ModelParams transition_model_params{.fields = [] { return scene_params_fie
 const OrthogonalForceModel transition_force_model{.predict = &predict_transition_forces,
                                                   .edge_columns = true,
                                                   .validated_depth_m = kTransitionValidatedDepth_m,
-                                                  .write_cells = &write_transition_cells,
+                                                  .results = &transition_results,
                                                   .print = &print_transition};
 
 const TransitionDetails* transition_details(const Prediction& p) {
   return std::any_cast<TransitionDetails>(&p.details);
+}
+
+const ResultTable<PredictionReport>& transition_results() {
+  namespace k = transition_keys;
+  using R = PredictionReport;
+  // Its details, zero before a prediction (the column names) and for another model's.
+  const auto own = [](const R& r) {
+    const TransitionDetails* t = transition_details(r.p);
+    return t ? *t : TransitionDetails{};
+  };
+  static const ResultTable<R> table{
+      result_value<R>(
+          k::fracture_model, "", "the fracture part's model (models.fracture)",
+          [](const R& r) { return std::string(fracture_model_name(r.scene.params<TransitionParams>().fracture)); }),
+      result_number<R>(k::ductile_layer_um, units::kUm, "the ductile layer l = lambda d_c",
+                       [own](const R& r) { return own(r).ductile_layer_m; }),
+      result_value<R>(k::layer_cutting_force_N, "N", "the ductile model's part at min(h, l), cutting",
+                      [own](const R& r) { return own(r).layer.cutting_N_per_m * r.p.width_m; }),
+      result_value<R>(k::layer_thrust_force_N, "N", "the ductile model's part at min(h, l), thrust",
+                      [own](const R& r) { return own(r).layer.thrust_N_per_m * r.p.width_m; }),
+      result_value<R>(k::fracture_cutting_force_N, "N", "the fracture part above l, cutting (zero at and below l)",
+                      [own](const R& r) { return own(r).fracture.cutting_N_per_m * r.p.width_m; }),
+      result_value<R>(k::fracture_thrust_force_N, "N", "the fracture part above l, thrust (zero at and below l)",
+                      [own](const R& r) { return own(r).fracture.thrust_N_per_m * r.p.width_m; })};
+  return table;
 }
 
 }  // namespace kerf

@@ -72,7 +72,7 @@ void print_prediction(std::FILE* text, const std::string& scene_path, const Anal
   }
   print_edge_details(text, scene, p);                                        // chip_term.hpp
   if (scene.force_model().print) scene.force_model().print(text, scene, p);  // the model's own lines
-  print_oxley_details(text, p);                                              // oxley_model.hpp
+  print_oxley_details(text, scene, p);                                       // oxley_model.hpp
   const auto fired = p.guards.fired();
   if (fired.empty()) fmt::print(text, "guards            none fired\n");
   for (auto guard : fired) fmt::print(text, "guard             {}: {}\n", guard_name(guard), guard_policy(guard));

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cctype>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -142,12 +143,6 @@ ResultField<R> input_value(std::string_view key, std::string_view unit, std::str
   return f;
 }
 
-/// A number that is null (an empty cell) unless `has` holds.
-template <class Has, class Get>
-ResultField<R> optional_value(std::string_view key, std::string_view unit, std::string_view doc, Has has, Get get) {
-  return result_value<R>(key, unit, doc, [has, get](const R& r) { return has(r) ? Json(get(r)) : Json(); });
-}
-
 /// The ploughing part of the totals (zero where the model adds none; null for Oxley, which ignores the edge).
 bool chip_model(const R& r) {
   return !r.scene.force_model().solves_oxley;
@@ -173,7 +168,7 @@ const ResultTable<PredictionReport>& prediction_results() {
                   [](const R& r) { return units::m_per_s_to_m_per_min(r.scene.speed_m_per_s); }),
       input_value(k::workpiece_temperature_K, "K", "workpiece temperature",
                   [](const R& r) { return r.scene.workpiece_temperature_K; }),
-      optional_value(
+      result_or_null<R>(
           k::scene_friction_angle_deg, "deg", "the scene's friction angle (empty: none given)",
           [](const R& r) { return r.scene.friction_angle_rad.has_value(); },
           [](const R& r) { return units::rad_to_deg(r.scene.friction_angle_rad.value_or(0.0)); }),
@@ -185,17 +180,17 @@ const ResultTable<PredictionReport>& prediction_results() {
                       [](const R& r) { return r.p.cutting_force_N; }),
       result_value<R>(k::thrust_force_N, "N", "thrust force over the width",
                       [](const R& r) { return r.p.thrust_force_N; }),
-      optional_value(k::ploughing_cutting_force_N, "N", "the ploughing part of the cutting force (empty for Oxley)",
-                     chip_model, [](const R& r) { return plough(r).cutting_N_per_m * r.p.width_m; }),
-      optional_value(k::ploughing_thrust_force_N, "N", "the ploughing part of the thrust force (empty for Oxley)",
-                     chip_model, [](const R& r) { return plough(r).thrust_N_per_m * r.p.width_m; }),
+      result_or_null<R>(k::ploughing_cutting_force_N, "N", "the ploughing part of the cutting force (empty for Oxley)",
+                        chip_model, [](const R& r) { return plough(r).cutting_N_per_m * r.p.width_m; }),
+      result_or_null<R>(k::ploughing_thrust_force_N, "N", "the ploughing part of the thrust force (empty for Oxley)",
+                        chip_model, [](const R& r) { return plough(r).thrust_N_per_m * r.p.width_m; }),
       result_value<R>(k::cutting_force_N_per_mm, "N/mm", "cutting force per mm of width",
                       [](const R& r) { return r.p.cutting_force_N / units::m_to_mm(r.p.width_m); }),
       result_value<R>(k::thrust_force_N_per_mm, "N/mm", "thrust force per mm of width",
                       [](const R& r) { return r.p.thrust_force_N / units::m_to_mm(r.p.width_m); }),
       // The chip.
       result_number<R>(k::shear_angle_deg, units::kDeg, "shear angle", [](const R& r) { return r.p.shear_angle_rad; }),
-      optional_value(
+      result_or_null<R>(
           k::friction_angle_deg, "deg", "the prediction's friction angle (empty: none)",
           [](const R& r) { return r.p.has_friction; },
           [](const R& r) { return units::rad_to_deg(r.p.friction_angle_rad); }),
@@ -245,7 +240,7 @@ const ResultTable<PredictionReport>& prediction_verdict_results() {
                                  [](const R& r) { return r.scene.turning->chip.engaged_edge_length_m; }),
                 turning),
       // The verdicts.
-      optional_value(
+      result_or_null<R>(
           k::critical_depth_nm, "nm", "the ductile-brittle critical depth d_c (empty without one)",
           [](const R& r) { return r.scene.critical_depth_m.has_value(); },
           [](const R& r) { return units::m_to_nm(r.scene.critical_depth_m.value_or(0.0)); }),
@@ -262,8 +257,16 @@ const ResultTable<PredictionReport>& prediction_verdict_results() {
   return table;
 }
 
-// The CSV's column list, in column order: the shared columns (prediction_results), then each unit's (the chip
-// term's edge, the Oxley solve's, the force model's own), then the turning cut's and the verdicts.
+std::array<const ResultTable<PredictionReport>*, 3> prediction_model_results(const AnalyticScene& scene) {
+  const OrthogonalForceModel& force = scene.force_model();
+  return {force.edge_columns || scene.force_auto ? &edge_results() : nullptr,
+          scene.params<OxleyModelParams>().material || scene.force_auto ? &oxley_results() : nullptr,
+          force.results ? &force.results() : nullptr};
+}
+
+// The CSV's column list, in column order: the shared columns (prediction_results), the scene's contact lengths, then
+// each unit's (the chip term's edge, the Oxley solve's, the force model's own), then the turning cut's and the
+// verdicts.
 void write_prediction_cells(const AnalyticScene& scene, const Prediction& p, CellWriter& w) {
   const R report{scene, p};
   write_result_cells(prediction_results(), report, w);
@@ -271,19 +274,75 @@ void write_prediction_cells(const AnalyticScene& scene, const Prediction& p, Cel
     const bool has = i < p.contact_lengths_m.size() && p.contact_lengths_m[i].second.has_value();
     w.optional_number(scene.contact_lengths[i].column, has, has ? units::m_to_mm(*p.contact_lengths_m[i].second) : 0.0);
   }
-  // The columns follow the models the scene asked for ('auto' may choose differently point by point).
-  if (scene.force_model().edge_columns || scene.force_auto) write_edge_cells(scene, p, w);     // chip_term.hpp
-  if (scene.params<OxleyModelParams>().material || scene.force_auto) write_oxley_cells(p, w);  // oxley_model.hpp
-  if (scene.force_model().write_cells) scene.force_model().write_cells(scene, p, w);           // the model's own
+  for (const ResultTable<R>* unit : prediction_model_results(scene))
+    if (unit) write_result_cells(*unit, report, w);
   write_result_cells(prediction_verdict_results(), report, w);
 }
 
+namespace {
+
+/// The registry's orthogonal force models of which `carries` holds, in its order: "`a`, `b` and `c`".
+std::string force_models_where(bool (*carries)(const OrthogonalForceModel&)) {
+  std::vector<std::string_view> names;
+  for (const auto& m : analytic_models())
+    if (m.kind == "force" && m.orthogonal && carries(*m.orthogonal)) names.push_back(m.name);
+  std::string list;
+  for (std::size_t i = 0; i < names.size(); ++i)
+    list += fmt::format("{}`{}`", i == 0 ? "" : i + 1 == names.size() ? " and " : ", ", names[i]);
+  return list;
+}
+
+bool carries_edge(const OrthogonalForceModel& m) {
+  return m.edge_columns || m.choose;
+}
+bool solves_oxley(const OrthogonalForceModel& m) {
+  return m.solves_oxley || m.choose;
+}
+
+/// The registry's orthogonal force models with columns of their own, in its order.
+std::vector<const AnalyticModelInfo*> models_with_columns() {
+  std::vector<const AnalyticModelInfo*> models;
+  for (const auto& m : analytic_models())
+    if (m.kind == "force" && m.orthogonal && m.orthogonal->results) models.push_back(&m);
+  return models;
+}
+
+/// A Python class name of a model's name: "transition" -> "TransitionColumns".
+std::string columns_class(std::string_view model) {
+  std::string name;
+  bool upper = true;
+  for (const char c : model) {
+    if (c == '_') {
+      upper = true;
+      continue;
+    }
+    name += upper ? static_cast<char>(std::toupper(static_cast<unsigned char>(c))) : c;
+    upper = false;
+  }
+  return name + "Columns";
+}
+
+}  // namespace
+
 std::string prediction_columns_markdown() {
-  return results_markdown(prediction_results()) +
-         "| ... | | the models' own columns: the scene's contact lengths (`cut.contact_lengths`), the chip term's "
-         "edge, "
-         "the Oxley solve's, the force model's |\n" +
-         results_markdown(prediction_verdict_results(), false) +
+  std::string md =
+      results_markdown(prediction_results()) +
+      "| `contact_length_<name>_mm` | mm | the contact lengths the scene asks for (`cut.contact_lengths`), one "
+      "column each (empty: not applicable) |\n"
+      "| ... | | the models' own columns, the tables below: the chip term's edge, the Oxley solve's, the force "
+      "model's |\n" +
+      results_markdown(prediction_verdict_results(), false);
+  md += fmt::format("\nThe chip term's edge columns (`models.force` {}; empty where the prediction has no edge):\n\n",
+                    force_models_where(&carries_edge)) +
+        results_markdown(edge_results());
+  md += fmt::format(
+            "\nThe Oxley solve's columns (`models.force` {}, or `models.deformation = oxley`; empty where the "
+            "prediction has no solve):\n\n",
+            force_models_where(&solves_oxley)) +
+        results_markdown(oxley_results());
+  for (const AnalyticModelInfo* m : models_with_columns())
+    md += fmt::format("\n`models.force = {}`'s own columns:\n\n", m->name) + results_markdown(m->orthogonal->results());
+  return md +
          "\nA trepanning scene's row (`models.force = trepanning`; the grit columns with "
          "`models.trepanning.grits`):\n\n" +
          results_markdown(trepanning_results());
@@ -292,14 +351,28 @@ std::string prediction_columns_markdown() {
 std::string prediction_keys_python() {
   std::vector<std::string> keys = result_keys(prediction_results());
   for (auto& key : result_keys(prediction_verdict_results())) keys.push_back(std::move(key));
-  return "\"\"\"The columns of kerf-forces' orthogonal prediction (its CSV row, kerf.predict's dict), generated from "
-         "their result\ntable (kerf-forces results --python > python/kerf/prediction_keys.py; "
-         "tests/cli/forces_results_cli.sh checks it\nis current). The models' own columns (edge, Oxley, the force "
-         "model's) are not listed.\"\"\"\n" +
-         results_python_class("PredictionColumns",
-                              "The shared columns of an orthogonal prediction, in the row's order (the models' own "
-                              "between the flow state and the turning cut's).",
-                              keys) +
+  std::string py =
+      "\"\"\"The columns of kerf-forces' predictions (their CSV row, kerf.predict's dict), generated from their "
+      "result tables\n(kerf-forces results --python > python/kerf/prediction_keys.py; tests/cli/forces_results_cli.sh "
+      "checks it is\ncurrent): the orthogonal prediction's shared columns, its models' own (a class per unit), the "
+      "trepanning\nprediction's.\"\"\"\n" +
+      results_python_class("PredictionColumns",
+                           "The shared columns of an orthogonal prediction, in the row's order (the models' own "
+                           "between the flow state and the turning cut's).",
+                           keys) +
+      results_python_class(
+          "EdgeColumns",
+          "The chip term's edge columns, in the row's order (models.force " + force_models_where(&carries_edge) + ").",
+          result_keys(edge_results())) +
+      results_python_class("OxleyColumns",
+                           "The Oxley solve's columns, in the row's order (models.force " +
+                               force_models_where(&solves_oxley) + ", or models.deformation = oxley).",
+                           result_keys(oxley_results()));
+  for (const AnalyticModelInfo* m : models_with_columns())
+    py += results_python_class(columns_class(m->name),
+                               fmt::format("models.force = {}'s own columns, in the row's order.", m->name),
+                               result_keys(m->orthogonal->results()));
+  return py +
          results_python_class("TrepanningColumns",
                               "The columns of a trepanning prediction, in the row's order (the grit columns with "
                               "models.trepanning.grits).",

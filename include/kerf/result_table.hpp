@@ -71,6 +71,13 @@ ResultField<R> result_value(std::string_view key, std::string_view unit, std::st
   return {std::string(key), unit, std::string(doc), [get](const R& r) { return Json(get(r)); }};
 }
 
+/// A result written as its getter gives it where `has(r)` holds, else null: the row keeps the column, with an empty
+/// cell where this run has no value (a detail of a model that did not run, a pole the edge has not).
+template <class R, class Has, class Get>
+ResultField<R> result_or_null(std::string_view key, std::string_view unit, std::string_view doc, Has has, Get get) {
+  return result_value<R>(key, unit, doc, [has, get](const R& r) { return has(r) ? Json(get(r)) : Json(); });
+}
+
 /// `field`, written only when `present(r)` holds (a result of an option: the edge zone's, the energy books').
 template <class R, class Present>
 ResultField<R> result_if(ResultField<R> field, Present present) {

@@ -1,6 +1,7 @@
-"""The columns of kerf-forces' orthogonal prediction (its CSV row, kerf.predict's dict), generated from their result
-table (kerf-forces results --python > python/kerf/prediction_keys.py; tests/cli/forces_results_cli.sh checks it
-is current). The models' own columns (edge, Oxley, the force model's) are not listed."""
+"""The columns of kerf-forces' predictions (their CSV row, kerf.predict's dict), generated from their result tables
+(kerf-forces results --python > python/kerf/prediction_keys.py; tests/cli/forces_results_cli.sh checks it is
+current): the orthogonal prediction's shared columns, its models' own (a class per unit), the trepanning
+prediction's."""
 
 
 class PredictionColumns:
@@ -45,6 +46,45 @@ class PredictionColumns:
     within_model_range = "within_model_range"
     guards = "guards"
     warnings = "warnings"
+
+
+class EdgeColumns:
+    """The chip term's edge columns, in the row's order (models.force `auto`, `liu_li` and `transition`)."""
+
+    friction_closure = "friction_closure"
+    lower_limit_rule = "lower_limit_rule"
+    lower_limit_deg = "lower_limit_deg"
+    upper_limit_deg = "upper_limit_deg"
+    stagnation_angle_deg = "stagnation_angle_deg"
+    pole_deg = "pole_deg"
+    ploughed_thickness_um = "ploughed_thickness_um"
+    edge_cutting_force_N = "edge_cutting_force_N"
+    edge_thrust_force_N = "edge_thrust_force_N"
+    ploughing_model = "ploughing_model"
+    friction_factor = "friction_factor"
+    ploughing_attack_angle_deg = "ploughing_attack_angle_deg"
+
+
+class OxleyColumns:
+    """The Oxley solve's columns, in the row's order (models.force `auto` and `oxley`, or models.deformation = oxley)."""
+
+    strain_rate_constant_C0 = "strain_rate_constant_C0"
+    secondary_zone_ratio_delta = "secondary_zone_ratio_delta"
+    interface_temperature_K = "interface_temperature_K"
+    contact_length_oxley_mm = "contact_length_oxley_mm"
+    oxley_residual = "oxley_residual"
+    oxley_shear_angle_roots = "oxley_shear_angle_roots"
+
+
+class TransitionColumns:
+    """models.force = transition's own columns, in the row's order."""
+
+    fracture_model = "fracture_model"
+    ductile_layer_um = "ductile_layer_um"
+    layer_cutting_force_N = "layer_cutting_force_N"
+    layer_thrust_force_N = "layer_thrust_force_N"
+    fracture_cutting_force_N = "fracture_cutting_force_N"
+    fracture_thrust_force_N = "fracture_thrust_force_N"
 
 
 class TrepanningColumns:

@@ -566,9 +566,9 @@ TEST_CASE("Ploughing: a friction factor outside 0 <= f < 1 names its key, and a 
   CHECK(p.chip_term.friction_factor == 0.25);
   auto row = kerf::prediction_columns(kerf::parse_analytic_scene(doc), p);
   std::map<std::string, std::string> cells(row.begin(), row.end());
-  CHECK(cells["friction_factor"] == "0.25");
-  CHECK(std::stod(cells["ploughing_thrust_force_N"]) > 0.0);
-  CHECK(cells["ploughing_model"] == "wave");
+  CHECK(cells[std::string(kerf::edge_keys::friction_factor)] == "0.25");
+  CHECK(std::stod(cells[std::string(kerf::prediction_keys::ploughing_thrust_force_N)]) > 0.0);
+  CHECK(cells[std::string(kerf::edge_keys::ploughing_model)] == "wave");
 }
 
 TEST_CASE("The key reference comes from the tables the scenes are read with", "[scene][keys]") {

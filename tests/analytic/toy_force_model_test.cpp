@@ -9,6 +9,7 @@
 #include <catch2/catch.hpp>
 #include <cstdio>
 #include <string>
+#include <string_view>
 
 #include "kerf/analytic/kinds/evaluate.hpp"
 #include "kerf/analytic/kinds/model_params.hpp"
@@ -61,16 +62,26 @@ double toy_specific_force_MPa(const kerf::Prediction& p) {
   return own ? own->specific_force_Pa * 1e-6 : 0.0;
 }
 
-void write_toy_cells(const kerf::AnalyticScene&, const kerf::Prediction& p, kerf::CellWriter& out) {
-  out.number("toy_specific_force_MPa", toy_specific_force_MPa(p));
+/// Its column's key, and its columns as a result table (kerf/result_table.hpp): the row, the docs' column table and
+/// Python's key names come from it.
+namespace toy_keys {
+KERF_RESULT_KEY(toy_specific_force_MPa)
+}  // namespace toy_keys
+
+const kerf::ResultTable<kerf::PredictionReport>& toy_results() {
+  static const kerf::ResultTable<kerf::PredictionReport> table{kerf::result_value<kerf::PredictionReport>(
+      toy_keys::toy_specific_force_MPa, "MPa", "the toy's specific force k_c",
+      [](const kerf::PredictionReport& r) { return toy_specific_force_MPa(r.p); })};
+  return table;
 }
 
-void print_toy(std::FILE* text, const kerf::AnalyticScene&, const kerf::Prediction& p) {
-  fmt::print(text, "toy part          k_c = {:.6g} MPa\n", toy_specific_force_MPa(p));
+void print_toy(std::FILE* text, const kerf::AnalyticScene& scene, const kerf::Prediction& p) {
+  // The number as the row holds it.
+  const double k_c = kerf::result_of(toy_results(), {scene, p}, toy_keys::toy_specific_force_MPa).get<double>();
+  fmt::print(text, "toy part          k_c = {:.6g} MPa\n", k_c);
 }
 
-const kerf::OrthogonalForceModel toy_force_model{
-    .predict = &predict_toy, .write_cells = &write_toy_cells, .print = &print_toy};
+const kerf::OrthogonalForceModel toy_force_model{.predict = &predict_toy, .results = &toy_results, .print = &print_toy};
 
 // The one registry line (in the library it would be a line of analytic/registry.cpp), with its parameter block.
 [[maybe_unused]] const bool registered =
@@ -85,7 +96,7 @@ Json toy_scene() {
                          "models": {"force": "toy_specific_force"}})");
 }
 
-std::string column(const kerf::Columns& row, const std::string& name) {
+std::string column(const kerf::Columns& row, std::string_view name) {
   for (const auto& [key, value] : row)
     if (key == name) return value;
   return "(none)";
@@ -101,13 +112,14 @@ TEST_CASE("A toy force model plugs into the orthogonal kind through one registry
 
   // The CSV row: the toy's forces, none of the Liu-Li or Oxley columns (the toy asks for neither).
   const kerf::Columns row = kerf::evaluate_scene_columns(toy_scene(), nullptr);
-  CHECK(column(row, "force_model") == "toy_specific_force");
-  CHECK(std::stod(column(row, "cutting_force_N")) == Approx(kToySpecificForce_Pa * 1e-3 * 10e-6));
-  CHECK(std::stod(column(row, "thrust_force_N")) == Approx(0.5 * kToySpecificForce_Pa * 1e-3 * 10e-6));
-  CHECK(column(row, "lower_limit_deg") == "(none)");
-  CHECK(column(row, "strain_rate_constant_C0") == "(none)");
-  CHECK(column(row, "warnings") == "toy force model");
-  CHECK(column(row, "toy_specific_force_MPa") == "2000");  // its own column, from its own details
+  namespace k = kerf::prediction_keys;
+  CHECK(column(row, k::force_model) == "toy_specific_force");
+  CHECK(std::stod(column(row, k::cutting_force_N)) == Approx(kToySpecificForce_Pa * 1e-3 * 10e-6));
+  CHECK(std::stod(column(row, k::thrust_force_N)) == Approx(0.5 * kToySpecificForce_Pa * 1e-3 * 10e-6));
+  CHECK(column(row, kerf::edge_keys::lower_limit_deg) == "(none)");
+  CHECK(column(row, kerf::oxley_keys::strain_rate_constant_C0) == "(none)");
+  CHECK(column(row, k::warnings) == "toy force model");
+  CHECK(column(row, toy_keys::toy_specific_force_MPa) == "2000");  // its own column, from its own details
 
   // The report names it; the key reference lists it with the other orthogonal models.
   auto scene_case = kerf::parse_scene(toy_scene(), nullptr);
@@ -127,7 +139,7 @@ TEST_CASE("A toy force model plugs into the orthogonal kind through one registry
   Json doc = toy_scene();
   doc["models"]["force"] = "auto";
   CHECK(kerf::parse_analytic_scene(doc).force->name == "liu_li");
-  CHECK(column(kerf::evaluate_scene_columns(doc, nullptr), "toy_specific_force_MPa") == "(none)");  // the toy's own
+  CHECK(column(kerf::evaluate_scene_columns(doc, nullptr), toy_keys::toy_specific_force_MPa) == "(none)");  // its own
 }
 
 TEST_CASE("The models.force values of the orthogonal kind leave out the trepanning kind", "[registry][force]") {
@@ -147,8 +159,9 @@ TEST_CASE("A toy force model's parameter is read from the scene, checked, listed
   const auto scene = kerf::parse_analytic_scene(doc);
   CHECK(scene.params<ToyParams>().specific_force_Pa == Approx(3e9));
   const kerf::Columns row = kerf::evaluate_scene_columns(doc, nullptr);
-  CHECK(std::stod(column(row, "cutting_force_N")) == Approx(3e9 * 1e-3 * 10e-6));  // F_c = k_c w t0 with its k_c
-  CHECK(column(row, "toy_specific_force_MPa") == "3000");
+  CHECK(std::stod(column(row, kerf::prediction_keys::cutting_force_N)) ==
+        Approx(3e9 * 1e-3 * 10e-6));  // F_c = k_c w t0 with its k_c
+  CHECK(column(row, toy_keys::toy_specific_force_MPa) == "3000");
 
   // A bad value is an input error naming its key under models, with the range of its table.
   doc["models"]["toy_specific_force_MPa"] = -5;

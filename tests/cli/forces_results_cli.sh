@@ -14,10 +14,12 @@ source "$(dirname "$0")/lib/generated.sh"
 generated_block "$work/results.md" "$src/docs/scenes.md" "kerf-forces results"
 "$bin" results --python >"$work/prediction_keys.py" || fail "kerf-forces results --python failed"
 generated_file "$work/prediction_keys.py" "$src/python/kerf/prediction_keys.py"
-# A prediction's CSV header: the table's columns in its order (the models' own between them).
+# A prediction's CSV header: the tables' columns (the shared ones, the edge's of a liu_li scene; their order:
+# tests/analytic/predict_test.cpp).
 (cd "$src" && "$bin" predict data/scenes/psic_orthogonal.json --csv "$work/p.csv" >/dev/null) || fail "predict failed"
 header=$(head -1 "$work/p.csv" | tr ',' '\n')
-for key in force_model cutting_force_N cutting_force_N_per_mm shear_angle_deg temperature_K warnings; do
+for key in force_model cutting_force_N cutting_force_N_per_mm shear_angle_deg temperature_K warnings \
+  lower_limit_deg ploughing_attack_angle_deg; do
   grep -qx "$key" <<<"$header" || fail "the CSV has no column $key"
   grep -q "^| \`$key\` |" "$work/results.md" || fail "kerf-forces results: no row for $key"
 done

@@ -15,6 +15,7 @@ import pytest
 
 import kerf
 from kerf.prediction_keys import PredictionColumns as P
+from kerf.prediction_keys import TransitionColumns
 
 SOURCE = pathlib.Path(__file__).resolve().parents[2]
 ORTHOGONAL = SOURCE / "data" / "scenes" / "psic_orthogonal.json"
@@ -164,7 +165,7 @@ def test_glass_results_carry_the_regime_and_the_model_range():
     glass = SOURCE / "data" / "scenes" / "soda_lime_transition.json"
     row = kerf.predict(glass)
     assert row["regime"] == "brittle" and row["within_model_range"] == "yes"
-    assert row["layer_cutting_force_N"] > 0 and row["fracture_cutting_force_N"] > 0
+    assert row[TransitionColumns.layer_cutting_force_N] > 0 and row[TransitionColumns.fracture_cutting_force_N] > 0
     table = kerf.sweep(glass, vary={"cut.uncut_chip_thickness_um": [0.01, 0.1, 1.0]}, models__force="liu_li")
     dc_um = table["critical_depth_nm"][0] / 1e3
     assert list(table["regime"]) == ["ductile" if h < dc_um else "transition" if h < 3 * dc_um else "brittle"

@@ -1,8 +1,9 @@
 """No result key is written or read as a literal outside its table (issue 56 item 1): kerf-dem's cut results and
 kerf-forces' prediction columns are named once, in their result tables (dem/procedures/cut_results.cpp,
-analytic/kinds/predict.cpp, analytic/trepanning/trepanning_kind.cpp), and read by name, through the constants of
-kerf/dem/procedures/cut_results.hpp, kerf/analytic/kinds/predict.hpp and kerf/analytic/trepanning/trepanning_results.hpp
-(C++) or kerf.result_keys and kerf.prediction_keys (Python, generated from the tables: tests/cli/dem_results_cli.sh,
+analytic/kinds/predict.cpp, the model units' analytic/forces/chip_term.cpp, oxley_model.cpp and transition_model.cpp,
+analytic/trepanning/trepanning_kind.cpp), and read by name, through the constants of kerf/dem/procedures/cut_results.hpp,
+kerf/analytic/kinds/predict.hpp, the units' headers (edge_keys, oxley_keys, transition_keys) and
+kerf/analytic/trepanning/trepanning_results.hpp (C++) or kerf.result_keys and kerf.prediction_keys (Python, generated from the tables: tests/cli/dem_results_cli.sh,
 tests/cli/forces_results_cli.sh). A quoted key in any other C++, Python or shell source (comments aside) fails here
 unless the file is in ALLOWED below, with the keys it may quote and why. Data files (records, studies, docs) are not
 sources."""
@@ -23,7 +24,10 @@ SHARED = {"width_mm", "time_s", "samples", "steady", "force_model", "material", 
           "warnings",
           # the trepanning scene's input keys, echoed in its row
           "outer_diameter_mm", "inner_diameter_mm", "feed_rate_um_per_s", "spindle_speed_rpm", "axial_group_MPa",
-          "torque_group_MPa"}
+          "torque_group_MPa",
+          # the chip term's input keys (models.friction_closure, cut.friction_factor: also the physics' argument
+          # names), echoed in the edge's columns
+          "friction_closure", "friction_factor"}
 OUTPUT_TESTS = "an end-to-end test of the written output: the literal is the format users read, a rename must fail it"
 ALLOWED = {
     # What the keys are written in, and generated from.
@@ -35,13 +39,15 @@ ALLOWED = {
                                       "the edge zone's given layer forces (input keys)"),
     # An error naming the quantity in the physics layer, which the prediction's table (kinds/) is built on.
     "analytic/forces/merchant.cpp": ({"shear_angle_deg"}, "an InputError naming the shear angle"),
+    "analytic/forces/oxley.cpp": ({"strain_rate_constant_C0"}, "an InputError naming the solver's argument"),
     "analytic/trepanning/trepanning.cpp": ({"axial_force_N", "torque_N_m", "feed_per_rev_um"},
                                            "a ModelError naming the quantity beyond a double"),
     # Documentation in code.
     "python/kerf_api.py": ({"cutting_force_N"}, "a docstring's example of kerf.predict"),
-    # A report that runs kerf-forces without the kerf module (its own interpreter's path only).
-    "validation/glass_transition/report.py": ({"cutting_force_N_per_mm", "thrust_force_N_per_mm"},
-                                              "reads kerf-forces' CSV without the kerf module"),
+    # A report that reads kerf-forces' CSV by the generated names, with records of its own named as the columns
+    # they hold.
+    "validation/glass_transition/report.py": ({"fracture_model", "ductile_layer_um"},
+                                              "its own records' keys (predictions.csv, summary.json)"),
     # Own outputs named after a result, not reads of one.
     "analysis/strength_scan.py": ({"cracks_subsurface"}, "its own table's column (the steady count)"),
     # The tests of the written format.
@@ -66,7 +72,9 @@ def generated(name):
 
 def result_keys():
     dem, analytic = generated("result_keys"), generated("prediction_keys")
-    keys = set(analytic.keys(analytic.PredictionColumns)) | set(analytic.keys(analytic.TrepanningColumns))
+    keys = set()
+    for table in (v for v in vars(analytic).values() if isinstance(v, type)):  # a class per table
+        keys |= set(analytic.keys(table))
     for table in (dem.CutResults, dem.TravelWindowResults, dem.ActiveWindowResults, dem.ForcesCsvColumns):
         keys |= set(dem.keys(table))
     return keys

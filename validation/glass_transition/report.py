@@ -10,6 +10,7 @@ depth-independent part F0 is the edge's, the test of its form), and the model's 
 """
 import argparse
 import csv
+import importlib.util
 import io
 import itertools
 import json
@@ -30,6 +31,20 @@ FRICTIONS = (0.15, 0.3, 0.4)
 FRACTURE_MODELS = ("lefm_scratch", "none")
 # The ductile layer l = factor d_c: d_c is uncertain by a factor of 2-3 (Bifano's 0.15 is a fit).
 LAYER_FACTORS = (1.0, 3.0)
+
+
+def prediction_keys():
+    """kerf.prediction_keys, the CSV's column names generated from their result tables: a plain module of the
+    source tree, read without the kerf module (this report runs kerf-forces alone)."""
+    spec = importlib.util.spec_from_file_location(
+        "prediction_keys", os.path.join(ROOT, "python", "kerf", "prediction_keys.py"))
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+KEYS = prediction_keys()
+P, T = KEYS.PredictionColumns, KEYS.TransitionColumns
 
 
 def table6():
@@ -59,8 +74,8 @@ def predict(kerf_forces, depth_mm, radius_um, mu, fracture, layer):
         cmd += ["--set", s]
     text = subprocess.run(cmd, check=True, capture_output=True, text=True).stdout
     row = next(csv.DictReader(io.StringIO(text)))
-    return {k: row[k] for k in ("cutting_force_N_per_mm", "thrust_force_N_per_mm", "layer_cutting_force_N",
-                                "layer_thrust_force_N", "ductile_layer_um", "width_mm", "within_model_range")}
+    return {k: row[k] for k in (P.cutting_force_N_per_mm, P.thrust_force_N_per_mm, T.layer_cutting_force_N,
+                                T.layer_thrust_force_N, T.ductile_layer_um, P.width_mm, P.within_model_range)}
 
 
 def main():
@@ -73,15 +88,15 @@ def main():
     lines, records = [], []
     for fracture, layer, radius, mu in itertools.product(FRACTURE_MODELS, LAYER_FACTORS, EDGE_RADII_UM, FRICTIONS):
         p = {d: predict(args.kerf_forces, d, radius, mu, fracture, layer) for d in DEPTHS_MM}
-        main = {d: float(p[d]["cutting_force_N_per_mm"]) for d in DEPTHS_MM}
-        thrust = {d: float(p[d]["thrust_force_N_per_mm"]) for d in DEPTHS_MM}
-        width = float(p[0.1]["width_mm"])
-        edge = (float(p[0.1]["layer_cutting_force_N"]) / width, float(p[0.1]["layer_thrust_force_N"]) / width)
+        main = {d: float(p[d][P.cutting_force_N_per_mm]) for d in DEPTHS_MM}
+        thrust = {d: float(p[d][P.thrust_force_N_per_mm]) for d in DEPTHS_MM}
+        width = float(p[0.1][P.width_mm])
+        edge = (float(p[0.1][T.layer_cutting_force_N]) / width, float(p[0.1][T.layer_thrust_force_N]) / width)
         f0_main, k_main = split(main[0.1], main[0.2])
         f0_thrust, _ = split(thrust[0.1], thrust[0.2])
         rec = {"fracture_model": fracture, "ductile_layer_factor": layer, "edge_radius_um": radius,
                "friction_coefficient": mu,
-               "ductile_layer_um": float(p[0.1]["ductile_layer_um"]),
+               "ductile_layer_um": float(p[0.1][T.ductile_layer_um]),
                "edge_main_N_per_mm": edge[0], "edge_thrust_N_per_mm": edge[1],
                "edge_thrust_to_main": edge[1] / edge[0]}
         for d in DEPTHS_MM:

@@ -49,9 +49,26 @@ extern const OrthogonalForceModel merchant_force_model, liu_li_force_model;
 /// `sharp`: Merchant, the r = 0 limit, without the edge's details.
 void predict_chip_forces(const AnalyticScene& scene, const OxleyResult* oxley, bool sharp, Prediction& p);
 
-/// The edge integral's and the ploughing term's CSV columns (empty cells where the prediction has no edge): the kind
-/// writes them for a model that carries them (OrthogonalForceModel::edge_columns) and under `auto`.
-void write_edge_cells(const AnalyticScene& scene, const Prediction& p, CellWriter& w);
+/// The keys of the edge's columns, one constant each (the identifier is the key).
+namespace edge_keys {
+KERF_RESULT_KEY(friction_closure)
+KERF_RESULT_KEY(lower_limit_rule)
+KERF_RESULT_KEY(lower_limit_deg)
+KERF_RESULT_KEY(upper_limit_deg)
+KERF_RESULT_KEY(stagnation_angle_deg)
+KERF_RESULT_KEY(pole_deg)
+KERF_RESULT_KEY(ploughed_thickness_um)
+KERF_RESULT_KEY(edge_cutting_force_N)
+KERF_RESULT_KEY(edge_thrust_force_N)
+KERF_RESULT_KEY(ploughing_model)
+KERF_RESULT_KEY(friction_factor)
+KERF_RESULT_KEY(ploughing_attack_angle_deg)
+}  // namespace edge_keys
+
+/// The edge integral's and the ploughing term's CSV columns, in the row's order (null, an empty cell, where the
+/// prediction has no edge or no ploughing term): the kind writes them for a model that carries them
+/// (OrthogonalForceModel::edge_columns) and under `auto` (kinds/predict.hpp, prediction_model_results).
+const ResultTable<PredictionReport>& edge_results();
 /// The edge integral's lines and the ploughing part's of the text report, where the prediction has an edge.
 void print_edge_details(std::FILE* text, const AnalyticScene& scene, const Prediction& p);
 

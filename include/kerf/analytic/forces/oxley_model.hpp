@@ -50,10 +50,21 @@ std::optional<OxleyResult> solve_scene_oxley(const AnalyticScene& scene, Predict
 /// The zone-AB state of a solve: where deformation oxley evaluates the flow stress.
 DeformationState shear_plane_state_of(const OxleyResult& oxley);
 
-/// The solve's CSV columns (empty cells where the prediction has none): the kind writes them where the scene
-/// solves Oxley or chooses its force model point by point.
-void write_oxley_cells(const Prediction& p, CellWriter& w);
+/// The keys of the solve's columns, one constant each (the identifier is the key).
+namespace oxley_keys {
+KERF_RESULT_KEY(strain_rate_constant_C0)
+KERF_RESULT_KEY(secondary_zone_ratio_delta)
+KERF_RESULT_KEY(interface_temperature_K)
+KERF_RESULT_KEY(contact_length_oxley_mm)
+KERF_RESULT_KEY(oxley_residual)
+KERF_RESULT_KEY(oxley_shear_angle_roots)
+}  // namespace oxley_keys
+
+/// The solve's CSV columns, in the row's order (null, an empty cell, where the prediction has no solve): the kind
+/// writes them where the scene solves Oxley or chooses its force model point by point (kinds/predict.hpp,
+/// prediction_model_results).
+const ResultTable<PredictionReport>& oxley_results();
 /// Its line of the text report, where the prediction has a solve.
-void print_oxley_details(std::FILE* text, const Prediction& p);
+void print_oxley_details(std::FILE* text, const AnalyticScene& scene, const Prediction& p);
 
 }  // namespace kerf

@@ -33,4 +33,18 @@ extern const ModelParams transition_model_params;
 /// The details of a transition prediction; nullptr for a prediction of another model (or none yet).
 const TransitionDetails* transition_details(const Prediction& p);
 
+/// The keys of its own columns, one constant each (the identifier is the key).
+namespace transition_keys {
+KERF_RESULT_KEY(fracture_model)
+KERF_RESULT_KEY(ductile_layer_um)
+KERF_RESULT_KEY(layer_cutting_force_N)
+KERF_RESULT_KEY(layer_thrust_force_N)
+KERF_RESULT_KEY(fracture_cutting_force_N)
+KERF_RESULT_KEY(fracture_thrust_force_N)
+}  // namespace transition_keys
+
+/// Its own CSV columns, in the row's order (zero before a prediction): its registry line carries them
+/// (OrthogonalForceModel::results).
+const ResultTable<PredictionReport>& transition_results();
+
 }  // namespace kerf

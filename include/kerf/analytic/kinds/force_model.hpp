@@ -1,22 +1,25 @@
 #pragma once
 // A force model of the orthogonal kind as one unit, as a DEM law is one (dem/laws/): what the kind calls to predict
 // with it, and what the model owns besides its physics: its details (kept in the prediction) and how they are
-// written (its CSV columns and its lines of the report). The kind calls these and never asks which model a scene
-// names; the model's registry line carries the unit (analytic/registry.cpp). How to add one:
+// written (its CSV columns, a result table, and its lines of the report). The kind calls these and never asks which
+// model a scene names; the model's registry line carries the unit (analytic/registry.cpp). How to add one:
 // docs/analytic-models.md.
 //
 //   void predict_toy(const kerf::AnalyticScene&, const kerf::OxleyResult*, kerf::Prediction& p);
-//   const kerf::OrthogonalForceModel toy_force_model{.predict = &predict_toy, .write_cells = &write_toy_cells};
+//   const kerf::ResultTable<kerf::PredictionReport>& toy_results();   // its columns (kerf/result_table.hpp)
+//   const kerf::OrthogonalForceModel toy_force_model{.predict = &predict_toy, .results = &toy_results};
 #include <cstdio>
 #include <string>
 #include <string_view>
 
+#include "kerf/result_table.hpp"
+
 namespace kerf {
 
-struct AnalyticScene;  // scene.hpp
-struct Prediction;     // predict.hpp
-struct OxleyResult;    // forces/oxley.hpp
-class CellWriter;      // cells.hpp
+struct AnalyticScene;     // scene.hpp
+struct Prediction;        // predict.hpp
+struct OxleyResult;       // forces/oxley.hpp
+struct PredictionReport;  // predict.hpp
 
 struct OrthogonalForceModel {
   /// Fills p's forces, shear angle, friction angle, chip ratio and thickness, deformation state and flow stress
@@ -28,16 +31,18 @@ struct OrthogonalForceModel {
   /// groups for it; it predicts its own friction angle (no friction data needed, the scene's is not used), its
   /// flow stress is Johnson-Cook alone, and it ignores the edge (the ploughing columns stay empty).
   bool solves_oxley = false;
-  /// The CSV carries the Liu-Li edge-integral and ploughing-model columns.
+  /// The CSV carries the Liu-Li edge-integral and ploughing-model columns (forces/chip_term.hpp, edge_results).
   bool edge_columns = false;
   /// `auto` only: picks the model for the scene as read (the name of another force line) and says why.
   std::string_view (*choose)(const AnalyticScene& scene, std::string* reason) = nullptr;
   /// The deepest cut a model that spans the ductile-brittle transition was held against: no warning above the
   /// critical depth, one beyond this depth. 0: a ductile-regime model, warned above the critical depth.
   double validated_depth_m = 0.0;
-  /// Its own CSV columns, from its details (after the shared columns and the edge and Oxley details, before the
-  /// turning cut's). Called before predict() too, with an empty prediction: the column names.
-  void (*write_cells)(const AnalyticScene& scene, const Prediction& p, CellWriter& out) = nullptr;
+  /// Its own CSV columns, a result table of its details, in the row's order (after the shared columns and the edge
+  /// and Oxley details, before the turning cut's): the row, the docs' column tables and Python's key names
+  /// (kerf-forces results) come from it. Its getters read an empty prediction too (before predict(): the column
+  /// names). nullptr: no columns of its own.
+  const ResultTable<PredictionReport>& (*results)() = nullptr;
   /// Its own lines of the text report (after the edge integral's, before the Oxley solve's).
   void (*print)(std::FILE* text, const AnalyticScene& scene, const Prediction& p) = nullptr;
 };

@@ -5,6 +5,7 @@
 //   kerf::Prediction p = kerf::predict(scene);
 //   auto row = kerf::prediction_columns(scene, p);   // [("cutting_force_N", "12.5"), ...] for CSV
 #include <any>
+#include <array>
 #include <optional>
 #include <string>
 #include <utility>
@@ -110,6 +111,13 @@ struct PredictionReport {
 const ResultTable<PredictionReport>& prediction_results();
 /// The row's columns after the models' own: the turning cut's, the critical depth and the verdicts.
 const ResultTable<PredictionReport>& prediction_verdict_results();
+/// The models' own tables a scene's row carries, in the row's order between the shared columns (with the scene's
+/// contact lengths) and the verdicts: the chip term's edge columns (a force model with edge_columns, or auto:
+/// forces/chip_term.hpp), the Oxley solve's (a scene that solves Oxley, or auto: forces/oxley_model.hpp) and the
+/// force model's own (OrthogonalForceModel::results); nullptr for a unit the scene's models leave out. They follow
+/// the models the scene asked for ('auto' may choose differently point by point), so every row of a sweep has the
+/// same columns.
+std::array<const ResultTable<PredictionReport>*, 3> prediction_model_results(const AnalyticScene& scene);
 
 /// The columns as a Markdown table (kerf-forces results; docs/scenes.md holds it).
 std::string prediction_columns_markdown();
