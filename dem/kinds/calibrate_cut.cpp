@@ -206,7 +206,8 @@ const ResultTable<CalibrateCutReport>& calibrate_cut_results() {
                       [](const R& c) { return c.sem; }),
       result_value<R>("relative_error_percent", "%", "its relative error against the target",
                       [](const R& c) { return 100 * (c.best.main_force_N / c.target_main_force_N - 1); }),
-      result_value<R>("evaluations", "", "each evaluation's row (a list)", [](const R& c) { return c.evaluations; }),
+      result_value<R>("evaluations", "", "each evaluation's row (a list; its keys below)",
+                      [](const R& c) { return c.evaluations; }),
       result_value<R>("calibrated_material", "", "the calibrated material (as its file holds it)",
                       [](const R& c) { return c.material; })};
   return table;
