@@ -30,6 +30,7 @@ import json
 import sys
 
 from kerf.records import condition_of, cutting_force, folders
+from kerf.result_keys import CracksColumns as C
 from kerf.result_keys import CutResults as R
 from kerf.stats import mean_of
 
@@ -57,8 +58,8 @@ def cut_energy(folder):
     energy = {"chip": 0.0, "subsurface": 0.0}
     with open(folder / "cracks.csv", newline="") as f:
         for row in csv.DictReader(f):
-            if lo <= float(row["x_mm"]) <= hi and row["place"] in energy:
-                energy[row["place"]] += element_energy_j(material, row["mode"], float(row["length_um"]) * 1e-6,
+            if lo <= float(row[C.x_mm]) <= hi and row[C.place] in energy:
+                energy[row[C.place]] += element_energy_j(material, row[C.mode], float(row[C.length_um]) * 1e-6,
                                                          joint_m, thickness_m)
     key = condition_of(summary)
     work_j = cutting_force(results) * travel_m

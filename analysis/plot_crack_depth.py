@@ -20,6 +20,7 @@ import numpy as np  # noqa: E402
 
 from kerf.records import item_dirs  # noqa: E402
 from kerf.result_keys import ActiveWindowResults as W
+from kerf.result_keys import CracksColumns as C
 from kerf.result_keys import CutResults as R
 
 BIN_UM = 25.0
@@ -36,7 +37,7 @@ def profile(spec):
         depths = []
         with open(item / "cracks.csv") as f:
             for row in csv.DictReader(f):
-                x, y = float(row["x_mm"]), float(row["y_mm"])
+                x, y = float(row[C.x_mm]), float(row[C.y_mm])
                 if lo <= x <= hi and y < y_cut:
                     depths.append(1e3 * (y_cut - y))
         edges = np.arange(0, 1000 + BIN_UM, BIN_UM)

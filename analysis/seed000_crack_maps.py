@@ -29,6 +29,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 from kerf.records import cutting_force  # noqa: E402
 from kerf.result_keys import ActiveWindowResults as W
+from kerf.result_keys import CracksColumns as C
 from kerf.result_keys import CutResults as R
 
 # The steady study's conditions at 0.1 mm in the default window and the groove-damage study's layers (their
@@ -50,8 +51,8 @@ def steady_cracks(item, place):
     summary = json.loads((item / "summary.json").read_text())
     r = summary["results"]
     x0, x1 = r[R.steady_machined_from_x_mm], r[R.steady_machined_to_x_mm]
-    xy = [(float(row["x_mm"]), float(row["y_mm"])) for row in csv.DictReader((item / "cracks.csv").open())
-          if row["place"] == place and x0 <= float(row["x_mm"]) <= x1]
+    xy = [(float(row[C.x_mm]), float(row[C.y_mm])) for row in csv.DictReader((item / "cracks.csv").open())
+          if row[C.place] == place and x0 <= float(row[C.x_mm]) <= x1]
     return np.array(xy).reshape(-1, 2), summary
 
 

@@ -17,6 +17,8 @@ import json
 import os
 import sys
 
+from kerf.result_keys import ToughnessCurveColumns as C
+
 COLUMNS = [
     "run", "seed", "material", "local_damping", "viscous_damping_ratio", "speed_m_per_s",
     "fracture_toughness_MPa_sqrt_m", "raw_peak_toughness_MPa_sqrt_m", "fracture_energy_J_per_m2", "peak_load_N",
@@ -41,11 +43,11 @@ def row_of(run_dir):
     first = res["per_packing"][0]
     seed = first["seed"]
     with open(os.path.join(run_dir, "curve.csv")) as f:
-        curve = [r for r in csv.DictReader(f) if int(r["seed"]) == seed]
-    peak = max(curve, key=lambda r: float(r["smoothed_load_N"]))
-    before = [r for r in curve if int(r["n_cracks"]) == 0]
-    kinetic = float(peak["kinetic_energy_J"])
-    stored = float(peak["stored_elastic_energy_J"])
+        curve = [r for r in csv.DictReader(f) if int(r[C.seed]) == seed]
+    peak = max(curve, key=lambda r: float(r[C.smoothed_load_N]))
+    before = [r for r in curve if int(r[C.n_cracks]) == 0]
+    kinetic = float(peak[C.kinetic_energy_J])
+    stored = float(peak[C.stored_elastic_energy_J])
     mat = material_of(summary)
     prov = summary.get("provenance", {})
     qs = res.get("quasi_static_check") or {}
@@ -61,11 +63,11 @@ def row_of(run_dir):
         "fracture_energy_J_per_m2": first["fracture_energy_J_per_m2"],
         "peak_load_N": first["peak_load_N"],
         "deflection_at_peak_um": first["deflection_at_peak_um"],
-        "cracks_before_peak": int(peak["n_cracks"]),
+        "cracks_before_peak": int(peak[C.n_cracks]),
         "kinetic_energy_at_peak_J": kinetic,
         "stored_elastic_energy_at_peak_J": stored,
         "kinetic_over_stored_at_peak": kinetic / stored if stored > 0 else "",
-        "kinetic_energy_before_first_crack_J": float(before[-1]["kinetic_energy_J"]) if before else "",
+        "kinetic_energy_before_first_crack_J": float(before[-1][C.kinetic_energy_J]) if before else "",
         "half_speed_toughness_MPa_sqrt_m": qs.get("half_speed_toughness_MPa_sqrt_m", qs.get("fracture_toughness_MPa_sqrt_m", "")),
         "half_speed_change_percent": qs.get("peak_change_percent", ""),
         "wall_time_s": summary.get("wall_time_s", ""),

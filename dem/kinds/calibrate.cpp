@@ -155,45 +155,6 @@ std::vector<SpecimenSource> beam_sources(const SceneCommon& common, const Beam& 
   return start_specimen_sources(beams, "calibrate", packings, progress).sources;
 }
 
-/// calibration_log.csv's columns: the four's, then (with a toughness test) the toughness's, so that a log
-/// without them reads as before.
-std::vector<std::string> log_header(bool toughness) {
-  std::vector<std::string> h{"evaluation",
-                             "effective_modulus_GPa",
-                             "stiffness_ratio",
-                             "tensile_strength_MPa",
-                             "cohesion_MPa",
-                             "youngs_modulus_GPa",
-                             "poissons_ratio",
-                             "macro_tensile_strength_MPa",
-                             "macro_compressive_strength_MPa",
-                             "max_error_percent",
-                             "wall_time_s"};
-  if (toughness)
-    h.insert(h.end(), {"fracture_energy_J_per_m2", "macro_fracture_toughness_MPa_sqrt_m", "toughness_error_percent"});
-  return h;
-}
-
-std::vector<std::string> log_row(const CalibrationEvaluation& e, bool toughness) {
-  const CalibratedParams m = calibrated_params(e.material);
-  std::vector<std::string> row{std::to_string(e.index),
-                               csv_number(units::pa_to_gpa(m.contact_modulus_Pa)),
-                               csv_number(m.stiffness_ratio),
-                               csv_number(units::pa_to_mpa(m.tensile_strength_Pa)),
-                               csv_number(units::pa_to_mpa(m.cohesion_Pa)),
-                               csv_number(units::pa_to_gpa(e.macro.youngs_modulus_Pa)),
-                               csv_number(e.macro.poissons_ratio),
-                               csv_number(units::pa_to_mpa(e.macro.tensile_strength_Pa)),
-                               csv_number(units::pa_to_mpa(e.macro.compressive_strength_Pa)),
-                               csv_number(100 * e.max_relative_error),
-                               csv_number(e.wall_time_s)};
-  if (toughness)
-    row.insert(row.end(), {csv_number(m.fracture_energy_J_per_m2),
-                           csv_number(units::pa_to_mpa(e.macro.fracture_toughness_Pa_sqrt_m)),
-                           csv_number(100 * e.toughness_error)});
-  return row;
-}
-
 /// One evaluation's log line(s) on stdout.
 void print_evaluation(const CalibrationEvaluation& e, bool toughness) {
   const CalibratedParams m = calibrated_params(e.material);
@@ -322,9 +283,9 @@ class CalibrateKind final : public SceneKind {
     const auto start = std::chrono::steady_clock::now();
     std::vector<CalibrationEvaluation> done;
     const bool toughness = spec_.toughness.has_value();
-    std::string log = csv_line(log_header(toughness));
+    std::string log = results_csv_header(calibration_log_columns(), {nullptr, toughness});
     const auto on_evaluation = [&](const CalibrationEvaluation& e) {
-      log += csv_line(log_row(e, toughness));
+      log += results_csv_row(calibration_log_columns(), {&e, toughness});
       write_file_atomically(out / "calibration_log.csv", log);
       done.push_back(e);
       if (run.options.checkpoints())
@@ -387,6 +348,46 @@ const ResultTable<CalibrateReport>& calibrate_results() {
       result_if(result_value<R>("toughness_error_percent", "%", "with a toughness target: K_IC's relative error",
                                 [](const R& c) { return 100 * c.r.toughness_error; }),
                 [](const R& c) { return c.toughness; })};
+  return table;
+}
+
+const ResultTable<CalibrationLogRow>& calibration_log_columns() {
+  namespace k = calibration_log_keys;
+  using L = CalibrationLogRow;
+  const auto joint = [](const L& l) { return calibrated_params(l.e->material); };
+  const auto toughness = [](const L& l) { return l.toughness; };
+  static const ResultTable<L> table{
+      result_value<L>(k::evaluation, "", "the evaluation's number, from 0", [](const L& l) { return l.e->index; }),
+      result_number<L>(k::effective_modulus_GPa, units::kGPa, "the contacts' effective modulus",
+                       [joint](const L& l) { return joint(l).contact_modulus_Pa; }),
+      result_value<L>(k::stiffness_ratio, "", "the joints' normal to shear stiffness ratio",
+                      [joint](const L& l) { return joint(l).stiffness_ratio; }),
+      result_number<L>(k::tensile_strength_MPa, units::kMPa, "the joints' tensile strength",
+                       [joint](const L& l) { return joint(l).tensile_strength_Pa; }),
+      result_number<L>(k::cohesion_MPa, units::kMPa, "the joints' cohesion",
+                       [joint](const L& l) { return joint(l).cohesion_Pa; }),
+      result_number<L>(k::youngs_modulus_GPa, units::kGPa, "what it gives: Young's modulus E",
+                       [](const L& l) { return l.e->macro.youngs_modulus_Pa; }),
+      result_value<L>(k::poissons_ratio, "", "Poisson's ratio nu",
+                      [](const L& l) { return l.e->macro.poissons_ratio; }),
+      result_number<L>(k::macro_tensile_strength_MPa, units::kMPa, "the tensile strength",
+                       [](const L& l) { return l.e->macro.tensile_strength_Pa; }),
+      result_number<L>(k::macro_compressive_strength_MPa, units::kMPa, "the compressive strength",
+                       [](const L& l) { return l.e->macro.compressive_strength_Pa; }),
+      result_number<L>(k::max_error_percent, units::kPercent, "the largest relative error of the four",
+                       [](const L& l) { return l.e->max_relative_error; }),
+      result_value<L>(k::wall_time_s, "s",
+                      "the evaluation's wall time (one read from a checkpoint: the run's that made it)",
+                      [](const L& l) { return l.e->wall_time_s; }),
+      result_if(result_value<L>(k::fracture_energy_J_per_m2, "J/m2", "with a toughness target: the joints' G_c",
+                                [joint](const L& l) { return joint(l).fracture_energy_J_per_m2; }),
+                toughness),
+      result_if(result_number<L>(k::macro_fracture_toughness_MPa_sqrt_m, kMPaSqrtM, "the beam's K_IC",
+                                 [](const L& l) { return l.e->macro.fracture_toughness_Pa_sqrt_m; }),
+                toughness),
+      result_if(result_number<L>(k::toughness_error_percent, units::kPercent, "K_IC's relative error",
+                                 [](const L& l) { return l.e->toughness_error; }),
+                toughness)};
   return table;
 }
 

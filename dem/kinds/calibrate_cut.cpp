@@ -95,18 +95,12 @@ class CalibrateCutKind final : public SceneKind {
     const auto start = std::chrono::steady_clock::now();
     const auto& fit = fit_;
     std::vector<CutCalibrationPoint> history;
+    std::vector<CutCalibrationEvaluation> rows;
     Json evaluations = Json::array();
     // The replicated cut's results each evaluation reads and keeps (cut_results.hpp).
     const std::string main_N(cut_keys::main_force_N), thrust_N(cut_keys::thrust_force_N);
     const std::string main_std = replicate_spread_key(main_N), thrust_std = replicate_spread_key(thrust_N);
-    // calibration_log.csv: the evaluation's number, these fields of its summary row, and its wall time.
-    const std::vector<std::string> logged{
-        "strength_factor", "tensile_strength_MPa",  "cohesion_MPa", main_N, main_std, thrust_N,
-        thrust_std,        "relative_error_percent"};
-    std::vector<std::string> header{"evaluation"};
-    header.insert(header.end(), logged.begin(), logged.end());
-    header.push_back("wall_time_s");
-    std::string log = csv_line(header);
+    std::string log = results_csv_header(calibrate_cut_log_columns());
     double s = fit.start_factor;
     std::size_t best = 0;
     bool converged = false;
@@ -142,21 +136,12 @@ class CalibrateCutKind final : public SceneKind {
       if (std::abs(error) < std::abs(history[best].main_force_N / fit.target_main_force_N - 1))
         best = history.size() - 1;
       converged = std::abs(error) <= fit.tolerance;
-      const Json row{{"evaluation", k},
-                     {"strength_factor", s},
-                     {"tensile_strength_MPa", units::pa_to_mpa(calibrated_params(e.material).tensile_strength_Pa)},
-                     {"cohesion_MPa", units::pa_to_mpa(calibrated_params(e.material).cohesion_Pa)},
-                     {main_N, force},
-                     {main_std, r[main_std]},
-                     {thrust_N, r[thrust_N]},
-                     {thrust_std, r[thrust_std]},
-                     {"relative_error_percent", 100 * error},
-                     {"directory", dir.filename().string()}};
-      evaluations.push_back(row);
-      std::vector<std::string> cells{std::to_string(k)};
-      for (const auto& key : logged) cells.push_back(csv_number(row[key].get<double>()));
-      cells.push_back(csv_number(done["wall_time_s"].get<double>()));
-      log += csv_line(cells);
+      const CalibratedParams joint = calibrated_params(e.material);
+      rows.push_back({k, s, joint.tensile_strength_Pa, joint.cohesion_Pa, force, r[main_std].get<double>(),
+                      r[thrust_N].get<double>(), r[thrust_std].get<double>(), error, dir.filename().string(),
+                      done["wall_time_s"].get<double>()});
+      evaluations.push_back(results_to_json(calibrate_cut_evaluation_results(), rows.back()));
+      log += results_csv_row(calibrate_cut_log_columns(), rows.back());
       write_file_atomically(out / "calibration_log.csv", log);
       std::cout << fmt::format("evaluation {}: main force {:.4g} N against {:.4g} N ({:+.1f} %, tolerance {:.0f} %)\n",
                                k, force, fit.target_main_force_N, 100 * error, 100 * fit.tolerance)
@@ -165,7 +150,7 @@ class CalibrateCutKind final : public SceneKind {
     const CutCalibrationPoint& b = history[best];
     Material named = scale_bond_strengths(common.material, b.strength_factor, output_.name);
     named.name = output_.name;  // factor 1 keeps the base's name
-    const double sem = evaluations[best][main_std].get<double>() / std::sqrt(fit.replicates);
+    const double sem = rows[best].main_force_spread_N / std::sqrt(fit.replicates);
     const std::string description = fmt::format(
         "{} with both bond strengths (joint tensile strength and cohesion) x {:.4g}, fitted by kerf-dem calibrate_cut "
         "to a mean main force of {:.4g} N{} ({} evaluations, {}converged: {:.4g} +- {:.2g} N, mean +- standard error "
@@ -221,9 +206,49 @@ const ResultTable<CalibrateCutReport>& calibrate_cut_results() {
                       [](const R& c) { return c.sem; }),
       result_value<R>("relative_error_percent", "%", "its relative error against the target",
                       [](const R& c) { return 100 * (c.best.main_force_N / c.target_main_force_N - 1); }),
-      result_value<R>("evaluations", "", "each evaluation's row (a list)", [](const R& c) { return c.evaluations; }),
+      result_value<R>("evaluations", "", "each evaluation's row (a list; its keys below)",
+                      [](const R& c) { return c.evaluations; }),
       result_value<R>("calibrated_material", "", "the calibrated material (as its file holds it)",
                       [](const R& c) { return c.material; })};
+  return table;
+}
+
+const ResultTable<CutCalibrationEvaluation>& calibrate_cut_evaluation_results() {
+  namespace k = cut_calibration_keys;
+  using E = CutCalibrationEvaluation;
+  static const ResultTable<E> table{
+      result_value<E>(k::evaluation, "", "the evaluation's number, from 1", [](const E& e) { return e.evaluation; }),
+      result_value<E>(k::strength_factor, "", "the factor s of both bond strengths",
+                      [](const E& e) { return e.strength_factor; }),
+      result_number<E>(k::tensile_strength_MPa, units::kMPa, "the joints' tensile strength, scaled",
+                       [](const E& e) { return e.tensile_strength_Pa; }),
+      result_number<E>(k::cohesion_MPa, units::kMPa, "the joints' cohesion, scaled",
+                       [](const E& e) { return e.cohesion_Pa; }),
+      result_value<E>(cut_keys::main_force_N, "N", "the mean main force over the replicates",
+                      [](const E& e) { return e.main_force_N; }),
+      result_value<E>(replicate_spread_key(cut_keys::main_force_N), "N", "its spread over the replicates",
+                      [](const E& e) { return e.main_force_spread_N; }),
+      result_value<E>(cut_keys::thrust_force_N, "N", "the mean thrust force over the replicates",
+                      [](const E& e) { return e.thrust_force_N; }),
+      result_value<E>(replicate_spread_key(cut_keys::thrust_force_N), "N", "its spread over the replicates",
+                      [](const E& e) { return e.thrust_force_spread_N; }),
+      result_value<E>(k::relative_error_percent, "%", "the mean main force's relative error against the target",
+                      [](const E& e) { return 100 * e.relative_error; }),
+      result_value<E>(k::directory, "", "the evaluation's replicates: evaluation_k/ in the run's directory",
+                      [](const E& e) { return e.directory; })};
+  return table;
+}
+
+const ResultTable<CutCalibrationEvaluation>& calibrate_cut_log_columns() {
+  using E = CutCalibrationEvaluation;
+  static const ResultTable<E> table = [] {
+    ResultTable<E> columns;
+    for (const auto& f : calibrate_cut_evaluation_results())
+      if (f.key != cut_calibration_keys::directory) columns.push_back(f);
+    columns.push_back(result_value<E>(cut_calibration_keys::wall_time_s, "s", "the evaluation's wall time",
+                                      [](const E& e) { return e.wall_time_s; }));
+    return columns;
+  }();
   return table;
 }
 

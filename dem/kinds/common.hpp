@@ -215,6 +215,27 @@ const ResultTable<ToughnessReport>& toughness_results();
 const ResultTable<ToughnessResult>& toughness_packing_results();
 const ResultTable<ToughnessCheck>& toughness_check_results();
 
+/// The columns of a toughness test's curve.csv (toughness_curve_columns()).
+namespace toughness_curve_keys {
+KERF_RESULT_KEY(seed)
+KERF_RESULT_KEY(time_s)
+KERF_RESULT_KEY(deflection_um)
+KERF_RESULT_KEY(load_N)
+KERF_RESULT_KEY(smoothed_load_N)
+KERF_RESULT_KEY(support_load_N)
+KERF_RESULT_KEY(external_work_J)
+KERF_RESULT_KEY(stored_elastic_energy_J)
+KERF_RESULT_KEY(kinetic_energy_J)
+KERF_RESULT_KEY(n_cracks)
+}  // namespace toughness_curve_keys
+/// One sample of a packing's curve as a line of the toughness test's curve.csv: the packing's seed and the sample.
+struct ToughnessCurveRow {
+  std::uint64_t seed;
+  const ToughnessSample& s;
+};
+/// The toughness test's curve.csv's columns, in order: every packing's curve, one after the other.
+const ResultTable<ToughnessCurveRow>& toughness_curve_columns();
+
 /// A finished calibration (kind calibrate) as its results see it: the result, the targets, the calibrated
 /// material's JSON and whether it had a toughness target.
 struct CalibrateReport {
@@ -225,6 +246,32 @@ struct CalibrateReport {
 };
 /// summary.json's "results" of kind calibrate.
 const ResultTable<CalibrateReport>& calibrate_results();
+
+/// The columns of kind calibrate's calibration_log.csv (calibration_log_columns()).
+namespace calibration_log_keys {
+KERF_RESULT_KEY(evaluation)
+KERF_RESULT_KEY(effective_modulus_GPa)
+KERF_RESULT_KEY(stiffness_ratio)
+KERF_RESULT_KEY(tensile_strength_MPa)
+KERF_RESULT_KEY(cohesion_MPa)
+KERF_RESULT_KEY(youngs_modulus_GPa)
+KERF_RESULT_KEY(poissons_ratio)
+KERF_RESULT_KEY(macro_tensile_strength_MPa)
+KERF_RESULT_KEY(macro_compressive_strength_MPa)
+KERF_RESULT_KEY(max_error_percent)
+KERF_RESULT_KEY(wall_time_s)
+KERF_RESULT_KEY(fracture_energy_J_per_m2)
+KERF_RESULT_KEY(macro_fracture_toughness_MPa_sqrt_m)
+KERF_RESULT_KEY(toughness_error_percent)
+}  // namespace calibration_log_keys
+/// One evaluation as a line of calibration_log.csv, and whether the calibration has a toughness target.
+struct CalibrationLogRow {
+  const CalibrationEvaluation* e;  ///< null in the row a header is made for
+  bool toughness;
+};
+/// calibration_log.csv's columns, in order: the four lab tests', then, with a toughness target, the toughness's (a
+/// log without them reads as before).
+const ResultTable<CalibrationLogRow>& calibration_log_columns();
 
 /// A finished cut calibration (kind calibrate_cut) as its results see it: whether it converged, the target main
 /// force and its source, the best evaluation, its standard error, every evaluation's row, the calibrated material.
@@ -239,4 +286,31 @@ struct CalibrateCutReport {
 };
 /// summary.json's "results" of kind calibrate_cut (before name_cut_forces adds the forces' current names).
 const ResultTable<CalibrateCutReport>& calibrate_cut_results();
+
+/// One evaluation of a cut calibration (kind calibrate_cut): its row of summary.json's "evaluations" and its line of
+/// calibration_log.csv.
+struct CutCalibrationEvaluation {
+  int evaluation;
+  double strength_factor;
+  double tensile_strength_Pa, cohesion_Pa;   ///< of the scaled material's joints
+  double main_force_N, main_force_spread_N;  ///< the replicated cut's mean and its spread over the replicates
+  double thrust_force_N, thrust_force_spread_N;
+  double relative_error;  ///< of the mean main force against the target
+  std::string directory;  ///< the evaluation's, in the run's
+  double wall_time_s;
+};
+/// The keys of a cut calibration's evaluation of its own (the forces' are the replicated cut's: cut_results.hpp).
+namespace cut_calibration_keys {
+KERF_RESULT_KEY(evaluation)
+KERF_RESULT_KEY(strength_factor)
+KERF_RESULT_KEY(tensile_strength_MPa)
+KERF_RESULT_KEY(cohesion_MPa)
+KERF_RESULT_KEY(relative_error_percent)
+KERF_RESULT_KEY(directory)
+KERF_RESULT_KEY(wall_time_s)
+}  // namespace cut_calibration_keys
+/// Each of calibrate_cut's "evaluations" in summary.json (before name_cut_forces adds the forces' current names).
+const ResultTable<CutCalibrationEvaluation>& calibrate_cut_evaluation_results();
+/// calibrate_cut's calibration_log.csv's columns, in order: an evaluation's row but its directory, then its wall time.
+const ResultTable<CutCalibrationEvaluation>& calibrate_cut_log_columns();
 }  // namespace kerf::dem::kinds

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "common.hpp"
+#include "kerf/dem/output/output.hpp"
 #include "kerf/dem/procedures/cut_results.hpp"
 #include "kerf/dem/scene.hpp"
 
@@ -52,8 +53,23 @@ const std::vector<ResultSection>& result_sections() {
       section("results", "calibrate", "CalibrateResults", kinds::calibrate_results),
       section("results", "calibrate_cut (each `main_force_*` also under its current name, `cutting_force_*`)",
               "CalibrateCutResults", kinds::calibrate_cut_results),
+      section("results.evaluations",
+              "calibrate_cut: each evaluation's row (each `main_force_*` also as `cutting_force_*`)",
+              "CalibrateCutEvaluationResults", kinds::calibrate_cut_evaluation_results),
       section("forces.csv", "cut: one row per sample, as the cut goes (the columns in this order)", "ForcesCsvColumns",
-              cut_forces_columns)};
+              cut_forces_columns),
+      section("cracks.csv",
+              "cut, tension, compression, toughness: one row per broken element (the columns in this order)",
+              "CracksColumns", cracks_columns),
+      section("curve.csv", "tension, compression: one row per sample (the columns in this order)", "CurveColumns",
+              lab_test_curve_columns),
+      section("curve.csv",
+              "toughness: one row per sample, each packing's curve after the other (the columns in this order)",
+              "ToughnessCurveColumns", kinds::toughness_curve_columns),
+      section("calibration_log.csv", "calibrate: one row per evaluation (the columns in this order)",
+              "CalibrationLogColumns", kinds::calibration_log_columns),
+      section("calibration_log.csv", "calibrate_cut: one row per evaluation (the columns in this order)",
+              "CalibrateCutLogColumns", kinds::calibrate_cut_log_columns)};
   return list;
 }
 
@@ -67,9 +83,10 @@ std::string scene_results_markdown() {
 
 std::string result_keys_python() {
   std::string py =
-      "\"\"\"The keys of kerf-dem's results in summary.json, generated from their result tables (kerf-dem results\n"
-      "--python > python/kerf/result_keys.py; tests/cli/dem_results_cli.sh checks it is current). Read a result by\n"
-      "its name here, never by a literal: a key renamed in its table then fails where it is read, by name.\"\"\"\n";
+      "\"\"\"The keys of kerf-dem's results in summary.json and the columns of its CSV files, generated from their\n"
+      "result tables (kerf-dem results --python > python/kerf/result_keys.py; tests/cli/dem_results_cli.sh checks it\n"
+      "is current). Read a result or a column by its name here, never by a literal: a key renamed in its table then\n"
+      "fails where it is read, by name.\"\"\"\n";
   for (const auto& s : result_sections())
     py += results_python_class(s.python_class, fmt::format("{}: {}.", s.name, s.where), s.keys());
   py += results_python_keys_function();

@@ -7,7 +7,6 @@
 
 #include <cmath>
 #include <iostream>
-#include <sstream>
 
 #include "common.hpp"
 #include "kerf/dem/output/output.hpp"
@@ -36,16 +35,16 @@ std::pair<double, double> mean_and_sem(const std::vector<double>& v) {
   return {mean, std::sqrt(ss / static_cast<double>(v.size() - 1) / static_cast<double>(v.size()))};
 }
 
+/// A real of curve.csv: 9 significant digits.
+std::string curve_real(double v) {
+  return fmt::format("{:.9g}", v);
+}
+
 std::string curve_csv(const std::vector<std::pair<std::uint64_t, const ToughnessResult*>>& runs) {
-  std::ostringstream out;
-  out << "seed,time_s,deflection_um,load_N,smoothed_load_N,support_load_N,external_work_J,stored_elastic_energy_J,"
-         "kinetic_energy_J,n_cracks\n";
+  std::string out = results_csv_header(toughness_curve_columns());
   for (const auto& [seed, r] : runs)
-    for (const auto& s : r->curve)
-      out << fmt::format("{},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{}\n", seed, s.time_s,
-                         units::m_to_um(s.deflection_m), s.load_N, s.smoothed_load_N, s.support_load_N,
-                         s.external_work_J, s.stored_elastic_energy_J, s.kinetic_energy_J, s.n_cracks);
-  return out.str();
+    for (const auto& s : r->curve) out += results_csv_row(toughness_curve_columns(), {seed, s}, curve_real);
+  return out;
 }
 
 class ToughnessKind final : public SceneKind {
@@ -233,6 +232,31 @@ const ResultTable<ToughnessResult>& toughness_packing_results() {
       result_value<T>("stop_reason", "", "why the test stopped", [](const T& r) { return r.stop_reason; }),
       result_value<T>("steps", "", "time steps", [](const T& r) { return r.steps; }),
       result_value<T>("wall_time_s", "s", "the test's wall time", [](const T& r) { return r.wall_time_s; })};
+  return table;
+}
+
+const ResultTable<ToughnessCurveRow>& toughness_curve_columns() {
+  namespace k = toughness_curve_keys;
+  using C = ToughnessCurveRow;
+  static const ResultTable<C> table{
+      result_value<C>(k::seed, "", "the packing's seed (results.per_packing's)", [](const C& c) { return c.seed; }),
+      result_value<C>(k::time_s, "s", "time since the test began", [](const C& c) { return c.s.time_s; }),
+      result_number<C>(k::deflection_um, units::kUm, "the load point's deflection (the load roller's travel)",
+                       [](const C& c) { return c.s.deflection_m; }),
+      result_value<C>(k::load_N, "N", "the load on the roller, the mean over the sample's steps",
+                      [](const C& c) { return c.s.load_N; }),
+      result_value<C>(k::smoothed_load_N, "N", "the load averaged over toughness.peak_window_um about this deflection",
+                      [](const C& c) { return c.s.smoothed_load_N; }),
+      result_value<C>(k::support_load_N, "N", "the two supports' reaction together (the load when quasi-static)",
+                      [](const C& c) { return c.s.support_load_N; }),
+      result_value<C>(k::external_work_J, "J", "the load roller's work so far",
+                      [](const C& c) { return c.s.external_work_J; }),
+      result_value<C>(k::stored_elastic_energy_J, "J", "the elastic energy stored in the joints and contacts",
+                      [](const C& c) { return c.s.stored_elastic_energy_J; }),
+      result_value<C>(k::kinetic_energy_J, "J", "the disks' kinetic energy",
+                      [](const C& c) { return c.s.kinetic_energy_J; }),
+      result_value<C>(k::n_cracks, "", "broken joint elements beyond the notch so far",
+                      [](const C& c) { return c.s.n_cracks; })};
   return table;
 }
 

@@ -198,16 +198,19 @@ void write_cracks_vtp(const std::filesystem::path& path, const std::vector<Crack
   VtpFile f(n, n, 0);
   points_mm(
       f, n, [&](std::size_t i) { return cracks[i].x_m; }, [&](std::size_t i) { return cracks[i].y_m; });
+  // Named as cracks.csv's columns.
+  namespace k = cracks_csv_keys;
   f.tag("<PointData Scalars=\"mode\">");
-  f.array<std::int32_t>("mode", 1, n, [&](std::size_t i, int) { return static_cast<std::int32_t>(cracks[i].mode); });
-  f.array<double>("time_s", 1, n, [&](std::size_t i, int) { return cracks[i].time_s; });
-  f.array<double>("orientation_deg", 1, n,
+  f.array<std::int32_t>(k::mode.data(), 1, n,
+                        [&](std::size_t i, int) { return static_cast<std::int32_t>(cracks[i].mode); });
+  f.array<double>(k::time_s.data(), 1, n, [&](std::size_t i, int) { return cracks[i].time_s; });
+  f.array<double>(k::orientation_deg.data(), 1, n,
                   [&](std::size_t i, int) { return units::rad_to_deg(cracks[i].orientation_rad); });
-  f.array<double>("length_um", 1, n, [&](std::size_t i, int) { return units::m_to_um(cracks[i].length_m); });
-  f.array<std::int64_t>("bond", 1, n, [&](std::size_t i, int) { return cracks[i].bond; });
-  f.array<std::int32_t>("element", 1, n, [&](std::size_t i, int) { return cracks[i].element; });
+  f.array<double>(k::length_um.data(), 1, n, [&](std::size_t i, int) { return units::m_to_um(cracks[i].length_m); });
+  f.array<std::int64_t>(k::bond.data(), 1, n, [&](std::size_t i, int) { return cracks[i].bond; });
+  f.array<std::int32_t>(k::element.data(), 1, n, [&](std::size_t i, int) { return cracks[i].element; });
   if (y_cut_m)  // cracks.csv's place (crack_place) as a number ParaView can colour and threshold by
-    f.array<std::int32_t>("place", 1, n, [&](std::size_t i, int) {
+    f.array<std::int32_t>(k::place.data(), 1, n, [&](std::size_t i, int) {
       return is_chip_crack(cracks[i].y_m, *y_cut_m) ? kCrackPlaceChip : kCrackPlaceSubsurface;
     });
   f.tag("</PointData>");
@@ -230,44 +233,68 @@ void write_pvd(const std::filesystem::path& path,
   write_file_atomically(path, out);
 }
 
+const ResultTable<CurveSample>& lab_test_curve_columns() {
+  namespace k = curve_csv_keys;
+  using S = CurveSample;
+  static const ResultTable<S> table{
+      result_value<S>(k::time_s, "s", "time since the test began", [](const S& s) { return s.time_s; }),
+      result_value<S>(k::axial_strain, "",
+                      "the axial strain, positive in the loading sense (shortening in "
+                      "compression)",
+                      [](const S& s) { return s.axial_strain; }),
+      result_value<S>(k::lateral_strain, "", "the lateral strain, positive in the loading sense",
+                      [](const S& s) { return s.lateral_strain; }),
+      result_number<S>(k::stress_MPa, units::kMPa, "the axial stress, positive in the loading sense",
+                       [](const S& s) { return s.stress_Pa; }),
+      result_value<S>(k::tension_cracks, "", "broken joint elements in tension so far",
+                      [](const S& s) { return s.n_tension_cracks; }),
+      result_value<S>(k::shear_cracks, "", "broken joint elements in shear so far",
+                      [](const S& s) { return s.n_shear_cracks; })};
+  return table;
+}
+
+const ResultTable<CrackRow>& cracks_columns() {
+  namespace k = cracks_csv_keys;
+  using C = CrackRow;
+  static const ResultTable<C> table{
+      result_value<C>(k::time_s, "s", "when the element broke", [](const C& c) { return c.crack->time_s; }),
+      result_number<C>(k::x_mm, units::kMm, "the broken element's centre, x", [](const C& c) { return c.crack->x_m; }),
+      result_number<C>(k::y_mm, units::kMm, "the broken element's centre, y", [](const C& c) { return c.crack->y_m; }),
+      result_number<C>(k::orientation_deg, units::kDeg, "the crack line's angle from the x axis",
+                       [](const C& c) { return c.crack->orientation_rad; }),
+      result_number<C>(k::length_um, units::kUm, "the element's length", [](const C& c) { return c.crack->length_m; }),
+      result_value<C>(k::mode, "", "`tension` or `shear`",
+                      [](const C& c) { return c.crack->mode == BreakMode::tension ? "tension" : "shear"; }),
+      result_value<C>(k::bond, "", "the joint's index", [](const C& c) { return c.crack->bond; }),
+      result_value<C>(k::element, "", "the element's index in its joint", [](const C& c) { return c.crack->element; }),
+      // Orthogonal cutting (Yang et al. 2018, Section 4): chip above the cut line, subsurface on or below it.
+      result_if(
+          result_value<C>(k::place, "", "a cut's only: `chip` (above the cut line) or `subsurface` (on or below it)",
+                          [](const C& c) { return crack_place(c.crack->y_m, *c.y_cut_m); }),
+          [](const C& c) { return c.y_cut_m.has_value(); })};
+  return table;
+}
+
 std::string curve_csv(const LabTestResult& r) {
-  std::string out =
-      csv_line({"time_s", "axial_strain", "lateral_strain", "stress_MPa", "tension_cracks", "shear_cracks"});
-  for (const auto& s : r.curve)
-    out += csv_line({csv_number(s.time_s), csv_number(s.axial_strain), csv_number(s.lateral_strain),
-                     csv_number(units::pa_to_mpa(s.stress_Pa)), std::to_string(s.n_tension_cracks),
-                     std::to_string(s.n_shear_cracks)});
+  std::string out = results_csv_header(lab_test_curve_columns());
+  for (const auto& s : r.curve) out += results_csv_row(lab_test_curve_columns(), s);
   return out;
 }
 
 namespace {
-std::string cracks_table(const std::vector<CrackEvent>& cracks, const double* y_cut_m) {
-  std::vector<std::string> head{"time_s", "x_mm", "y_mm", "orientation_deg", "length_um", "mode", "bond", "element"};
-  if (y_cut_m) head.push_back("place");
-  std::string out = csv_line(head);
-  for (const auto& c : cracks) {
-    std::vector<std::string> row{csv_number(c.time_s),
-                                 csv_number(units::m_to_mm(c.x_m)),
-                                 csv_number(units::m_to_mm(c.y_m)),
-                                 csv_number(units::rad_to_deg(c.orientation_rad)),
-                                 csv_number(units::m_to_um(c.length_m)),
-                                 c.mode == BreakMode::tension ? "tension" : "shear",
-                                 std::to_string(c.bond),
-                                 std::to_string(c.element)};
-    // Orthogonal cutting (Yang et al. 2018, Section 4): chip above the cut line, subsurface on or below it.
-    if (y_cut_m) row.push_back(crack_place(c.y_m, *y_cut_m));
-    out += csv_line(row);
-  }
+std::string cracks_table(const std::vector<CrackEvent>& cracks, std::optional<double> y_cut_m) {
+  std::string out = results_csv_header(cracks_columns(), {nullptr, y_cut_m});
+  for (const auto& c : cracks) out += results_csv_row(cracks_columns(), {&c, y_cut_m});
   return out;
 }
 }  // namespace
 
 std::string cracks_csv(const std::vector<CrackEvent>& cracks) {
-  return cracks_table(cracks, nullptr);
+  return cracks_table(cracks, std::nullopt);
 }
 
 std::string cracks_csv(const std::vector<CrackEvent>& cracks, double y_cut_m) {
-  return cracks_table(cracks, &y_cut_m);
+  return cracks_table(cracks, y_cut_m);
 }
 
 }  // namespace kerf::dem

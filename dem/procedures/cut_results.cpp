@@ -146,14 +146,11 @@ const ResultTable<CutForcesRow>& cut_forces_columns() {
 }
 
 std::string cut_forces_csv_header() {
-  return csv_line(result_keys(cut_forces_columns()));
+  return results_csv_header(cut_forces_columns());
 }
 
 std::string cut_forces_csv_row(const CutSample& s, double width_m) {
-  const CutForcesRow row{s, units::m_to_mm(width_m)};
-  std::vector<std::string> cells;
-  for (const auto& f : cut_forces_columns()) cells.push_back(csv_number(f.get(row).get<double>()));
-  return csv_line(cells);
+  return results_csv_row(cut_forces_columns(), {s, units::m_to_mm(width_m)});
 }
 
 std::string cut_forces_csv(const CutResult& res) {

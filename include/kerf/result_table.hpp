@@ -14,6 +14,11 @@
 //   write_results(kCountResults, counts, summary["results"]);    // key -> value in the key's unit
 //   std::string md = results_markdown(kCountResults);             // | key | unit | meaning |
 //
+// A CSV file's columns are a table too, one row struct per line of the file:
+//
+//   std::string csv = results_csv_header(kColumns);
+//   for (const auto& row : rows) csv += results_csv_row(kColumns, row);  // csv_number's text for a real
+//
 // Keys are declared once as named constants (KERF_RESULT_KEY: the identifier is the key), which the table and
 // every C++ reader use; a misspelt key is then a compile error, not a missing value.
 #include <fmt/format.h>
@@ -26,6 +31,7 @@
 #include <vector>
 
 #include "kerf/field_table.hpp"
+#include "kerf/io.hpp"
 #include "kerf/json_reader.hpp"
 
 /// A result key as a named constant whose name is the key (`KERF_RESULT_KEY(width_mm)`: kerf::...::width_mm is
@@ -133,6 +139,41 @@ std::vector<std::string> result_keys(const ResultTable<R>& table) {
   std::vector<std::string> keys;
   for (const auto& f : table) keys.push_back(f.key);
   return keys;
+}
+
+/// A CSV file's header: the keys of its columns, those present for `r` (a file whose columns depend on the run, not on
+/// the line: `r` any line of the file, or one made for the header; its getters are not called).
+template <class R>
+std::string results_csv_header(const ResultTable<R>& table, const R& r) {
+  std::vector<std::string> keys;
+  for (const auto& f : table)
+    if (!f.present || f.present(r)) keys.push_back(f.key);
+  return csv_line(keys);
+}
+
+/// A file's header with every column of `table`.
+template <class R>
+std::string results_csv_header(const ResultTable<R>& table) {
+  return csv_line(result_keys(table));
+}
+
+/// A value as a CSV cell: a real as `real` writes it (csv_number: the shortest text that reads back as the same
+/// double, empty when not finite), an integer in full, a flag true or false, a text escaped (csv_escape), null empty.
+inline std::string result_csv_cell(const Json& v, std::string (*real)(double) = csv_number) {
+  if (v.is_number_float()) return real(v.get<double>());
+  if (v.is_string()) return csv_escape(v.get_ref<const std::string&>());
+  if (v.is_null()) return "";
+  return v.dump();
+}
+
+/// The line of `r` in a CSV file of `table`'s columns: the cells of the columns present for `r`
+/// (result_csv_cell, with `real` for the reals).
+template <class R>
+std::string results_csv_row(const ResultTable<R>& table, const R& r, std::string (*real)(double) = csv_number) {
+  std::vector<std::string> cells;
+  for (const auto& f : table)
+    if (!f.present || f.present(r)) cells.push_back(result_csv_cell(f.get(r), real));
+  return csv_line(cells);
 }
 
 /// The key reference of a table as a Markdown table: key, unit, meaning; without the header, rows to append.

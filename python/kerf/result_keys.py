@@ -1,6 +1,7 @@
-"""The keys of kerf-dem's results in summary.json, generated from their result tables (kerf-dem results
---python > python/kerf/result_keys.py; tests/cli/dem_results_cli.sh checks it is current). Read a result by
-its name here, never by a literal: a key renamed in its table then fails where it is read, by name."""
+"""The keys of kerf-dem's results in summary.json and the columns of its CSV files, generated from their
+result tables (kerf-dem results --python > python/kerf/result_keys.py; tests/cli/dem_results_cli.sh checks it
+is current). Read a result or a column by its name here, never by a literal: a key renamed in its table then
+fails where it is read, by name."""
 
 
 class CutResults:
@@ -229,6 +230,21 @@ class CalibrateCutResults:
     calibrated_material = "calibrated_material"
 
 
+class CalibrateCutEvaluationResults:
+    """results.evaluations: calibrate_cut: each evaluation's row (each `main_force_*` also as `cutting_force_*`)."""
+
+    evaluation = "evaluation"
+    strength_factor = "strength_factor"
+    tensile_strength_MPa = "tensile_strength_MPa"
+    cohesion_MPa = "cohesion_MPa"
+    main_force_N = "main_force_N"
+    main_force_replicate_std_N = "main_force_replicate_std_N"
+    thrust_force_N = "thrust_force_N"
+    thrust_force_replicate_std_N = "thrust_force_replicate_std_N"
+    relative_error_percent = "relative_error_percent"
+    directory = "directory"
+
+
 class ForcesCsvColumns:
     """forces.csv: cut: one row per sample, as the cut goes (the columns in this order)."""
 
@@ -239,6 +255,80 @@ class ForcesCsvColumns:
     cutting_force_N_per_mm = "cutting_force_N_per_mm"
     thrust_force_N_per_mm = "thrust_force_N_per_mm"
     main_force_N = "main_force_N"
+
+
+class CracksColumns:
+    """cracks.csv: cut, tension, compression, toughness: one row per broken element (the columns in this order)."""
+
+    time_s = "time_s"
+    x_mm = "x_mm"
+    y_mm = "y_mm"
+    orientation_deg = "orientation_deg"
+    length_um = "length_um"
+    mode = "mode"
+    bond = "bond"
+    element = "element"
+    place = "place"
+
+
+class CurveColumns:
+    """curve.csv: tension, compression: one row per sample (the columns in this order)."""
+
+    time_s = "time_s"
+    axial_strain = "axial_strain"
+    lateral_strain = "lateral_strain"
+    stress_MPa = "stress_MPa"
+    tension_cracks = "tension_cracks"
+    shear_cracks = "shear_cracks"
+
+
+class ToughnessCurveColumns:
+    """curve.csv: toughness: one row per sample, each packing's curve after the other (the columns in this order)."""
+
+    seed = "seed"
+    time_s = "time_s"
+    deflection_um = "deflection_um"
+    load_N = "load_N"
+    smoothed_load_N = "smoothed_load_N"
+    support_load_N = "support_load_N"
+    external_work_J = "external_work_J"
+    stored_elastic_energy_J = "stored_elastic_energy_J"
+    kinetic_energy_J = "kinetic_energy_J"
+    n_cracks = "n_cracks"
+
+
+class CalibrationLogColumns:
+    """calibration_log.csv: calibrate: one row per evaluation (the columns in this order)."""
+
+    evaluation = "evaluation"
+    effective_modulus_GPa = "effective_modulus_GPa"
+    stiffness_ratio = "stiffness_ratio"
+    tensile_strength_MPa = "tensile_strength_MPa"
+    cohesion_MPa = "cohesion_MPa"
+    youngs_modulus_GPa = "youngs_modulus_GPa"
+    poissons_ratio = "poissons_ratio"
+    macro_tensile_strength_MPa = "macro_tensile_strength_MPa"
+    macro_compressive_strength_MPa = "macro_compressive_strength_MPa"
+    max_error_percent = "max_error_percent"
+    wall_time_s = "wall_time_s"
+    fracture_energy_J_per_m2 = "fracture_energy_J_per_m2"
+    macro_fracture_toughness_MPa_sqrt_m = "macro_fracture_toughness_MPa_sqrt_m"
+    toughness_error_percent = "toughness_error_percent"
+
+
+class CalibrateCutLogColumns:
+    """calibration_log.csv: calibrate_cut: one row per evaluation (the columns in this order)."""
+
+    evaluation = "evaluation"
+    strength_factor = "strength_factor"
+    tensile_strength_MPa = "tensile_strength_MPa"
+    cohesion_MPa = "cohesion_MPa"
+    main_force_N = "main_force_N"
+    main_force_replicate_std_N = "main_force_replicate_std_N"
+    thrust_force_N = "thrust_force_N"
+    thrust_force_replicate_std_N = "thrust_force_replicate_std_N"
+    relative_error_percent = "relative_error_percent"
+    wall_time_s = "wall_time_s"
 
 
 def keys(table):

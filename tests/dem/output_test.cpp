@@ -10,6 +10,11 @@ TEST_CASE("output: crack and curve tables have unit-bearing headers and exact ro
   CHECK(cracks_csv(cracks) ==
         "time_s,x_mm,y_mm,orientation_deg,length_um,mode,bond,element\n"
         "2.5e-06,1,0.5,0,10,shear,7,1\n");
+  // A cut's: its place from the cut line (chip above it, subsurface on or below it).
+  CHECK(cracks_csv(cracks, 0.4e-3) ==
+        "time_s,x_mm,y_mm,orientation_deg,length_um,mode,bond,element,place\n"
+        "2.5e-06,1,0.5,0,10,shear,7,1,chip\n");
+  CHECK(cracks_csv({}, 0.4e-3) == "time_s,x_mm,y_mm,orientation_deg,length_um,mode,bond,element,place\n");
   LabTestResult r;
   r.curve.push_back({1e-6, 0.001, -0.0002, 5e7, 3, 4});
   CHECK(curve_csv(r) ==

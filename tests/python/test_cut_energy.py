@@ -4,7 +4,9 @@ import math
 
 from repo_scripts import load
 
+from kerf.result_keys import CracksColumns as C
 from kerf.result_keys import CutResults as R
+from kerf.result_keys import keys
 
 ce = load("analysis/cut_energy.py")
 
@@ -23,7 +25,7 @@ def write_cut(folder, main_force_n=0.5, grooves="none", seed=1, material=MATERIA
                "results": {R.main_force_N: main_force_n, R.steady_from_travel_mm: 0.5, R.steady_to_travel_mm: 1.5,
                            R.steady_machined_from_x_mm: 3.0, R.steady_machined_to_x_mm: 2.0}}
     (folder / "summary.json").write_text(json.dumps(summary))
-    rows = ["time_s,x_mm,y_mm,orientation_deg,length_um,mode,bond,element,place"]
+    rows = [",".join(keys(C))]  # the rows below in its order
     rows += [f"0,{2.0 + 0.1 * k},0.5,0,10,tension,{k},0,subsurface" for k in range(10)]  # inside
     rows += ["0,2.5,0.95,0,10,shear,20,0,chip", "0,1.0,0.5,0,10,tension,21,0,subsurface",  # the second outside
              "0,3.5,0.95,0,10,tension,22,0,chip"]  # outside

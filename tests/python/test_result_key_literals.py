@@ -1,12 +1,13 @@
 """No result key is written or read as a literal outside its table (issue 56 item 1): kerf-dem's cut results and
-kerf-forces' prediction columns are named once, in their result tables (dem/procedures/cut_results.cpp,
-analytic/kinds/predict.cpp, the model units' analytic/forces/chip_term.cpp, oxley_model.cpp and transition_model.cpp,
-analytic/trepanning/trepanning_kind.cpp), and read by name, through the constants of kerf/dem/procedures/cut_results.hpp,
+the columns of its CSV files, and kerf-forces' prediction columns, are named once, in their result tables
+(dem/procedures/cut_results.cpp, dem/output/output.cpp, dem/kinds/, analytic/kinds/predict.cpp, the model units'
+analytic/forces/chip_term.cpp, oxley_model.cpp and transition_model.cpp, analytic/trepanning/trepanning_kind.cpp), and
+read by name, through the constants of kerf/dem/procedures/cut_results.hpp, kerf/dem/output/output.hpp,
 kerf/analytic/kinds/predict.hpp, the units' headers (edge_keys, oxley_keys, transition_keys) and
-kerf/analytic/trepanning/trepanning_results.hpp (C++) or kerf.result_keys and kerf.prediction_keys (Python, generated from the tables: tests/cli/dem_results_cli.sh,
-tests/cli/forces_results_cli.sh). A quoted key in any other C++, Python or shell source (comments aside) fails here
-unless the file is in ALLOWED below, with the keys it may quote and why. Data files (records, studies, docs) are not
-sources."""
+kerf/analytic/trepanning/trepanning_results.hpp (C++) or kerf.result_keys and kerf.prediction_keys (Python, generated
+from the tables: tests/cli/dem_results_cli.sh, tests/cli/forces_results_cli.sh). A quoted key in any other C++, Python
+or shell source (comments aside) fails here unless the file is in ALLOWED below, with the keys it may quote and why.
+Data files (records, studies, docs) are not sources."""
 import importlib.util
 import pathlib
 import re
@@ -28,6 +29,16 @@ SHARED = {"width_mm", "time_s", "samples", "steady", "force_model", "material", 
           # the chip term's input keys (models.friction_closure, cut.friction_factor: also the physics' argument
           # names), echoed in the edge's columns
           "friction_closure", "friction_factor"}
+# CSV columns that are also input keys (the material's, the specimen's seed), VTK arrays (the frames' stress_MPa,
+# the crack frames' place, which render_frames.py colours by under pvpython) or plain words.
+SHARED_COLUMNS = {"seed", "mode", "bond", "element", "place", "evaluation", "directory", "stress_MPa",
+                  "effective_modulus_GPa", "stiffness_ratio", "cohesion_MPa"}
+# The CSV files' columns (cracks.csv, curve.csv, calibration_log.csv), checked but those that the other kinds'
+# summary results (tension ... calibrate_cut) share: those tables still name their keys as literals in dem/kinds/.
+DEM_COLUMN_TABLES = ("CracksColumns", "CurveColumns", "ToughnessCurveColumns", "CalibrationLogColumns",
+                     "CalibrateCutLogColumns", "CalibrateCutEvaluationResults")
+DEM_KIND_TABLES = ("LabTestResults", "LabTestCheckResults", "ToughnessResults", "ToughnessPackingResults",
+                   "ToughnessCheckResults", "CalibrateResults", "CalibrateCutResults")
 OUTPUT_TESTS = "an end-to-end test of the written output: the literal is the format users read, a rename must fail it"
 ALLOWED = {
     # What the keys are written in, and generated from.
@@ -77,7 +88,9 @@ def result_keys():
         keys |= set(analytic.keys(table))
     for table in (dem.CutResults, dem.TravelWindowResults, dem.ActiveWindowResults, dem.ForcesCsvColumns):
         keys |= set(dem.keys(table))
-    return keys
+    columns = set().union(*(dem.keys(getattr(dem, name)) for name in DEM_COLUMN_TABLES))
+    kinds = set().union(*(dem.keys(getattr(dem, name)) for name in DEM_KIND_TABLES))
+    return keys | (columns - kinds - SHARED_COLUMNS)
 
 
 def sources(root):
@@ -128,6 +141,7 @@ def test_no_result_key_literal_outside_its_table():
 def test_the_check_finds_a_literal(tmp_path):
     keys = result_keys() - SHARED
     assert "subsurface_damage_depth_steady_um" in keys and "steady_from_travel_mm" in keys
+    assert {"x_mm", "length_um", "smoothed_load_N", "axial_strain", "macro_tensile_strength_MPa"} <= keys
     (tmp_path / "analysis").mkdir()
     (tmp_path / "analysis" / "reader.py").write_text(
         "depth = results['subsurface_damage_depth_steady_um']  # the steady damage\n"

@@ -18,6 +18,7 @@
 
 #include "kerf/dem/engine/simulation.hpp"
 #include "kerf/dem/procedures/lab_test.hpp"
+#include "kerf/result_table.hpp"
 
 namespace kerf::dem {
 
@@ -49,11 +50,44 @@ inline constexpr std::int32_t kCrackPlaceChip = 1, kCrackPlaceSubsurface = 2;
 void write_pvd(const std::filesystem::path& path,
                const std::vector<std::pair<double, std::vector<std::string>>>& frames);
 
-/// "time_s,axial_strain,lateral_strain,stress_MPa,tension_cracks,shear_cracks".
+/// The columns of cracks.csv (cracks_columns()), one constant each; the crack frames' arrays carry the same names.
+namespace cracks_csv_keys {
+KERF_RESULT_KEY(time_s)
+KERF_RESULT_KEY(x_mm)
+KERF_RESULT_KEY(y_mm)
+KERF_RESULT_KEY(orientation_deg)
+KERF_RESULT_KEY(length_um)
+KERF_RESULT_KEY(mode)
+KERF_RESULT_KEY(bond)
+KERF_RESULT_KEY(element)
+KERF_RESULT_KEY(place)
+}  // namespace cracks_csv_keys
+
+/// One crack as a line of cracks.csv: the crack and, in a cut, the cut line's height (its place's).
+struct CrackRow {
+  const CrackEvent* crack;  ///< null in the row a header is made for
+  std::optional<double> y_cut_m;
+};
+/// cracks.csv's columns, in order: place only in a cut's (a row with y_cut_m).
+const ResultTable<CrackRow>& cracks_columns();
+
+/// The columns of a lab test's curve.csv (lab_test_curve_columns()).
+namespace curve_csv_keys {
+KERF_RESULT_KEY(time_s)
+KERF_RESULT_KEY(axial_strain)
+KERF_RESULT_KEY(lateral_strain)
+KERF_RESULT_KEY(stress_MPa)
+KERF_RESULT_KEY(tension_cracks)
+KERF_RESULT_KEY(shear_cracks)
+}  // namespace curve_csv_keys
+/// A lab test's curve.csv's columns, in order, a sample a line.
+const ResultTable<CurveSample>& lab_test_curve_columns();
+
+/// A lab test's curve.csv: lab_test_curve_columns(), a line per sample of the curve.
 std::string curve_csv(const LabTestResult& result);
-/// "time_s,x_mm,y_mm,orientation_deg,length_um,mode,bond,element".
+/// cracks.csv: cracks_columns() but place, a line per crack.
 std::string cracks_csv(const std::vector<CrackEvent>& cracks);
-/// The same plus "place": chip (y above the cut line y_cut_m) or subsurface (orthogonal cutting).
+/// A cut's cracks.csv, with place: chip (y above the cut line y_cut_m) or subsurface (orthogonal cutting).
 std::string cracks_csv(const std::vector<CrackEvent>& cracks, double y_cut_m);
 
 }  // namespace kerf::dem
