@@ -9,7 +9,9 @@ import pytest
 
 from repo_scripts import load
 
+from kerf.result_keys import CracksColumns as C
 from kerf.result_keys import CutResults as R
+from kerf.result_keys import keys
 
 ce = load("analysis/cut_events.py")
 
@@ -35,7 +37,7 @@ def write_cut(folder, force_n_per_mm, cracks, y_cut_mm=0.9, steady=(0.5, 3.0), z
     rows = ["tool_travel_mm,time_s,cutting_force_N,thrust_force_N"]
     rows += [f"{x!r},{x / SPEED_MM_PER_S!r},{f!r},{0.5 * f!r}" for x, f in zip(travel, force_n_per_mm)]
     (folder / "forces.csv").write_text("\n".join(rows) + "\n")
-    rows = ["time_s,x_mm,y_mm,orientation_deg,length_um,mode,bond,element,place"]
+    rows = [",".join(keys(C))]
     rows += [f"{x / SPEED_MM_PER_S!r},5.0,{y_cut_mm - 1e-3 * d!r},0,10,tension,1,0,subsurface" for x, d in cracks]
     (folder / "cracks.csv").write_text("\n".join(rows) + "\n")
     return travel
