@@ -27,6 +27,7 @@ import math
 import numpy as np
 
 from kerf.records import condition_of, cutting_force_column, folders
+from kerf.result_keys import CracksColumns as K
 from kerf.result_keys import CutResults as R
 from kerf.result_keys import ForcesCsvColumns as F
 from kerf.stats import mean_of
@@ -80,8 +81,8 @@ def cut_events(folder, loaded_n_per_mm=0.05, peak_n_per_mm=1.0, merge_um=2.0, de
     steady = (travel >= results[R.steady_from_travel_mm]) & (travel <= results[R.steady_to_travel_mm])
     travel, time, fc, ft = travel[steady], time[steady], fc[steady], ft[steady]
     cracks = np.genfromtxt(folder / "cracks.csv", delimiter=",", names=True, dtype=None, encoding=None, ndmin=1)
-    crack_time = np.atleast_1d(cracks["time_s"]) if cracks.size else np.zeros(0)
-    crack_depth_um = 1e3 * (results[R.cut_line_y_mm] - np.atleast_1d(cracks["y_mm"])) if cracks.size else np.zeros(0)
+    crack_time = np.atleast_1d(cracks[K.time_s]) if cracks.size else np.zeros(0)
+    crack_depth_um = 1e3 * (results[R.cut_line_y_mm] - np.atleast_1d(cracks[K.y_mm])) if cracks.size else np.zeros(0)
     step_mm = float(np.median(np.diff(travel)))
     gap = max(1, round(merge_um * 1e-3 / step_mm))
     total = fc[fc > 0].sum()  # the positive impulse (the force is negative at times between events)

@@ -17,12 +17,15 @@ import json
 import os
 import sys
 
+from kerf.result_keys import ToughnessCheckResults as Q
 from kerf.result_keys import ToughnessCurveColumns as C
+from kerf.result_keys import ToughnessPackingResults as P
+from kerf.result_keys import ToughnessResults as T
 
 COLUMNS = [
-    "run", "seed", "material", "local_damping", "viscous_damping_ratio", "speed_m_per_s",
-    "fracture_toughness_MPa_sqrt_m", "raw_peak_toughness_MPa_sqrt_m", "fracture_energy_J_per_m2", "peak_load_N",
-    "deflection_at_peak_um", "cracks_before_peak", "kinetic_energy_at_peak_J", "stored_elastic_energy_at_peak_J",
+    "run", "seed", "material", "local_damping", "viscous_damping_ratio", T.speed_m_per_s,
+    P.fracture_toughness_MPa_sqrt_m, P.raw_peak_toughness_MPa_sqrt_m, P.fracture_energy_J_per_m2, P.peak_load_N,
+    P.deflection_at_peak_um, "cracks_before_peak", "kinetic_energy_at_peak_J", "stored_elastic_energy_at_peak_J",
     "kinetic_over_stored_at_peak", "kinetic_energy_before_first_crack_J", "half_speed_toughness_MPa_sqrt_m",
     "half_speed_change_percent", "wall_time_s", "command",
 ]
@@ -40,7 +43,7 @@ def row_of(run_dir):
     with open(os.path.join(run_dir, "summary.json")) as f:
         summary = json.load(f)
     res = summary["results"]
-    first = res["per_packing"][0]
+    first = res[T.per_packing][0]
     seed = first["seed"]
     with open(os.path.join(run_dir, "curve.csv")) as f:
         curve = [r for r in csv.DictReader(f) if int(r[C.seed]) == seed]
@@ -57,19 +60,16 @@ def row_of(run_dir):
         "material": mat.get("base", summary.get("material", {}).get("name", "")) if isinstance(mat, dict) else "",
         "local_damping": mat.get("local_damping", 0) if isinstance(mat, dict) else "",
         "viscous_damping_ratio": mat.get("viscous_damping_ratio", 0) if isinstance(mat, dict) else "",
-        "speed_m_per_s": res["speed_m_per_s"],
-        "fracture_toughness_MPa_sqrt_m": first["fracture_toughness_MPa_sqrt_m"],
-        "raw_peak_toughness_MPa_sqrt_m": first["raw_peak_toughness_MPa_sqrt_m"],
-        "fracture_energy_J_per_m2": first["fracture_energy_J_per_m2"],
-        "peak_load_N": first["peak_load_N"],
-        "deflection_at_peak_um": first["deflection_at_peak_um"],
+        T.speed_m_per_s: res[T.speed_m_per_s],
+        **{key: first[key] for key in (P.fracture_toughness_MPa_sqrt_m, P.raw_peak_toughness_MPa_sqrt_m,
+                                       P.fracture_energy_J_per_m2, P.peak_load_N, P.deflection_at_peak_um)},
         "cracks_before_peak": int(peak[C.n_cracks]),
         "kinetic_energy_at_peak_J": kinetic,
         "stored_elastic_energy_at_peak_J": stored,
         "kinetic_over_stored_at_peak": kinetic / stored if stored > 0 else "",
         "kinetic_energy_before_first_crack_J": float(before[-1][C.kinetic_energy_J]) if before else "",
-        "half_speed_toughness_MPa_sqrt_m": qs.get("half_speed_toughness_MPa_sqrt_m", qs.get("fracture_toughness_MPa_sqrt_m", "")),
-        "half_speed_change_percent": qs.get("peak_change_percent", ""),
+        "half_speed_toughness_MPa_sqrt_m": qs.get("half_speed_toughness_MPa_sqrt_m", qs.get(Q.fracture_toughness_MPa_sqrt_m, "")),
+        "half_speed_change_percent": qs.get(Q.peak_change_percent, ""),
         "wall_time_s": summary.get("wall_time_s", ""),
         "command": prov.get("command_line", ""),
     }
@@ -97,7 +97,7 @@ def main():
         f.write(out.getvalue())
     os.replace(tmp, a.csv)
     for r in new:
-        print(f"{r['run']}: K_IC {float(r['fracture_toughness_MPa_sqrt_m']):.4f} MPa sqrt(m), cracks before peak "
+        print(f"{r['run']}: K_IC {float(r[P.fracture_toughness_MPa_sqrt_m]):.4f} MPa sqrt(m), cracks before peak "
               f"{r['cracks_before_peak']}, kinetic/stored at peak {r['kinetic_over_stored_at_peak']}")
     return 0
 

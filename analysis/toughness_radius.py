@@ -16,6 +16,7 @@ import csv
 import math
 import pathlib
 
+from kerf.result_keys import ToughnessResults as T
 from kerf.stats import mean_of
 
 
@@ -25,8 +26,8 @@ def read_record(path):
     with open(path, newline="") as f:
         for r in csv.DictReader(f):
             placing = (float(r["lattice_offset_R"]), float(r.get("notch_offset_rows", 0) or 0))
-            out.setdefault(float(r["disk_radius_um"]), {})[placing] = (float(r["fracture_toughness_MPa_sqrt_m"]),
-                                                                       float(r["fracture_energy_J_per_m2"]))
+            out.setdefault(float(r["disk_radius_um"]), {})[placing] = (float(r[T.fracture_toughness_MPa_sqrt_m]),
+                                                                       float(r[T.fracture_energy_J_per_m2]))
     return out
 
 

@@ -34,6 +34,7 @@ import statistics
 
 import numpy as np
 
+from kerf.result_keys import ToughnessResults as T
 from kerf.stats import mean_of, t95 as student_t
 
 WITHIN = 0.9  # K(W) / K_inf from which the toughness counts as size-independent
@@ -45,8 +46,8 @@ def read_record(path):
     with open(path, newline="") as f:
         for r in csv.DictReader(f):
             rows.append({"W": float(r["beam_depth_W_mm"]), "aW": float(r["notch_ratio_a_over_W"]),
-                         "seed": int(r["seed"]), "K": float(r["fracture_toughness_MPa_sqrt_m"]),
-                         "G": float(r["fracture_energy_J_per_m2"])})
+                         "seed": int(r["seed"]), "K": float(r[T.fracture_toughness_MPa_sqrt_m]),
+                         "G": float(r[T.fracture_energy_J_per_m2])})
     return rows
 
 
@@ -120,8 +121,8 @@ def write(rows, out):
     fitted = fits(rows)
     with open(out / "size_effect.csv", "w", newline="") as f:
         w = csv.writer(f)
-        w.writerow(["row", "notch_ratio_a_over_W", "beam_depth_W_mm", "beams", "fracture_toughness_MPa_sqrt_m",
-                    "fracture_toughness_se_MPa_sqrt_m", "fracture_energy_J_per_m2", "k_inf_low_MPa_sqrt_m",
+        w.writerow(["row", "notch_ratio_a_over_W", "beam_depth_W_mm", "beams", T.fracture_toughness_MPa_sqrt_m,
+                    "fracture_toughness_se_MPa_sqrt_m", T.fracture_energy_J_per_m2, "k_inf_low_MPa_sqrt_m",
                     "k_inf_high_MPa_sqrt_m", "transitional_size_W0_mm", "size_independent_from_W_mm"])
         for (j, size), (n, k, se, g) in sizes.items():
             w.writerow(["size", j, size, n, f"{k:.6g}", f"{se:.3g}", f"{g:.4g}", "", "", "", ""])

@@ -13,6 +13,7 @@
 #include "kerf/io.hpp"
 #include "kerf/material.hpp"
 #include "kerf/units.hpp"
+#include "kind_results.hpp"
 
 namespace kerf::dem::kinds {
 
@@ -26,9 +27,6 @@ const EnumNames<CalibrationMethod>& method_names() {
 
 constexpr std::string_view free_names[] = {"effective_modulus_GPa", "stiffness_ratio", "tensile_strength_MPa",
                                            "cohesion_MPa", "fracture_energy_J_per_m2"};
-
-/// K_IC in MPa sqrt(m).
-constexpr FieldUnit kMPaSqrtM{"MPa sqrt(m)", units::mpa_to_pa, units::pa_to_mpa};
 
 /// "calibration.toughness": the beam of the fifth test (its packing the specimen's, its size its own); the
 /// test's own keys are the toughness scene's (toughness_fields()).
@@ -103,7 +101,7 @@ const FieldTable<MacroProperties>& target_fields() {
                    &MacroProperties::tensile_strength_Pa),
       number_field("compressive_strength_MPa", units::kMPa, Range::positive(),
                    "unconfined compressive strength sigma_c", &MacroProperties::compressive_strength_Pa),
-      number_field("fracture_toughness_MPa_sqrt_m", kMPaSqrtM, Range::non_negative(),
+      number_field("fracture_toughness_MPa_sqrt_m", units::kMPaSqrtM, Range::non_negative(),
                    "fracture toughness K_IC of the calibration.toughness test (0: none)",
                    &MacroProperties::fracture_toughness_Pa_sqrt_m)};
   return table;
@@ -332,20 +330,21 @@ std::unique_ptr<SceneKind> make_calibrate_kind() {
 namespace kerf::dem::kinds {
 
 const ResultTable<CalibrateReport>& calibrate_results() {
+  namespace k = calibrate_keys;
   using R = CalibrateReport;
   static const ResultTable<R> table{
-      result_value<R>("converged", "", "whether every target was met within the tolerance",
+      result_value<R>(k::converged, "", "whether every target was met within the tolerance",
                       [](const R& c) { return c.r.converged; }),
-      result_value<R>("max_error_percent", "%", "the largest relative error of the four lab-test properties",
+      result_value<R>(k::max_error_percent, "%", "the largest relative error of the four lab-test properties",
                       [](const R& c) { return 100 * c.r.max_relative_error; }),
-      result_value<R>("evaluations", "", "materials evaluated", [](const R& c) { return c.r.log.size(); }),
-      result_value<R>("targets", "", "the targets (calibration.targets' keys)",
+      result_value<R>(k::evaluations, "", "materials evaluated", [](const R& c) { return c.r.log.size(); }),
+      result_value<R>(k::targets, "", "the targets (calibration.targets' keys)",
                       [](const R& c) { return macro_json(c.targets); }),
-      result_value<R>("achieved", "", "what the calibrated material gives (the same keys)",
+      result_value<R>(k::achieved, "", "what the calibrated material gives (the same keys)",
                       [](const R& c) { return macro_json(c.r.macro); }),
-      result_value<R>("calibrated_material", "", "the calibrated material (as its file holds it)",
+      result_value<R>(k::calibrated_material, "", "the calibrated material (as its file holds it)",
                       [](const R& c) { return c.material; }),
-      result_if(result_value<R>("toughness_error_percent", "%", "with a toughness target: K_IC's relative error",
+      result_if(result_value<R>(k::toughness_error_percent, "%", "with a toughness target: K_IC's relative error",
                                 [](const R& c) { return 100 * c.r.toughness_error; }),
                 [](const R& c) { return c.toughness; })};
   return table;
@@ -382,7 +381,7 @@ const ResultTable<CalibrationLogRow>& calibration_log_columns() {
       result_if(result_value<L>(k::fracture_energy_J_per_m2, "J/m2", "with a toughness target: the joints' G_c",
                                 [joint](const L& l) { return joint(l).fracture_energy_J_per_m2; }),
                 toughness),
-      result_if(result_number<L>(k::macro_fracture_toughness_MPa_sqrt_m, kMPaSqrtM, "the beam's K_IC",
+      result_if(result_number<L>(k::macro_fracture_toughness_MPa_sqrt_m, units::kMPaSqrtM, "the beam's K_IC",
                                  [](const L& l) { return l.e->macro.fracture_toughness_Pa_sqrt_m; }),
                 toughness),
       result_if(result_number<L>(k::toughness_error_percent, units::kPercent, "K_IC's relative error",

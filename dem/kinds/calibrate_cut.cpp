@@ -15,6 +15,7 @@
 #include "kerf/error.hpp"
 #include "kerf/io.hpp"
 #include "kerf/units.hpp"
+#include "kind_results.hpp"
 
 namespace kerf::dem::kinds {
 
@@ -168,7 +169,7 @@ class CalibrateCutKind final : public SceneKind {
     summary["results"] = results_to_json(calibrate_cut_results(), {converged, fit.target_main_force_N,
                                                                    fit.target_source, b, sem, evaluations, material});
     name_cut_forces(summary["results"]);
-    for (auto& e : summary["results"]["evaluations"]) name_cut_forces(e);
+    for (auto& e : summary["results"][calibrate_cut_keys::evaluations]) name_cut_forces(e);
     summary["wall_time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     write_summary(run.options, run.doc, summary);
     std::cout << fmt::format(
@@ -188,27 +189,28 @@ class CalibrateCutKind final : public SceneKind {
 }  // namespace
 
 const ResultTable<CalibrateCutReport>& calibrate_cut_results() {
+  namespace k = calibrate_cut_keys;
   using R = CalibrateCutReport;
   static const ResultTable<R> table{
-      result_value<R>("converged", "", "whether the best evaluation's main force is within the tolerance",
+      result_value<R>(k::converged, "", "whether the best evaluation's main force is within the tolerance",
                       [](const R& c) { return c.converged; }),
-      result_value<R>("target_cutting_force_N", "N",
+      result_value<R>(k::target_cutting_force_N, "N",
                       "the measured main force fitted to (calibration.target_main_force_N)",
                       [](const R& c) { return c.target_main_force_N; }),
-      result_value<R>("target_main_force_N", "N", "target_cutting_force_N's old name (deprecated, until 0.3.0)",
+      result_value<R>(k::target_main_force_N, "N", "target_cutting_force_N's old name (deprecated, until 0.3.0)",
                       [](const R& c) { return c.target_main_force_N; }),
-      result_value<R>("target_source", "", "where the target comes from", [](const R& c) { return c.target_source; }),
-      result_value<R>("strength_factor", "", "the best factor of both bond strengths",
+      result_value<R>(k::target_source, "", "where the target comes from", [](const R& c) { return c.target_source; }),
+      result_value<R>(k::strength_factor, "", "the best factor of both bond strengths",
                       [](const R& c) { return c.best.strength_factor; }),
       result_value<R>(cut_keys::main_force_N, "N", "the best evaluation's mean main force over its replicates",
                       [](const R& c) { return c.best.main_force_N; }),
-      result_value<R>("main_force_standard_error_N", "N", "its standard error (replicate std / sqrt(n))",
+      result_value<R>(k::main_force_standard_error_N, "N", "its standard error (replicate std / sqrt(n))",
                       [](const R& c) { return c.sem; }),
-      result_value<R>("relative_error_percent", "%", "its relative error against the target",
+      result_value<R>(k::relative_error_percent, "%", "its relative error against the target",
                       [](const R& c) { return 100 * (c.best.main_force_N / c.target_main_force_N - 1); }),
-      result_value<R>("evaluations", "", "each evaluation's row (a list; its keys below)",
+      result_value<R>(k::evaluations, "", "each evaluation's row (a list; its keys below)",
                       [](const R& c) { return c.evaluations; }),
-      result_value<R>("calibrated_material", "", "the calibrated material (as its file holds it)",
+      result_value<R>(k::calibrated_material, "", "the calibrated material (as its file holds it)",
                       [](const R& c) { return c.material; })};
   return table;
 }

@@ -12,6 +12,7 @@
 #include "kerf/dem/output/png.hpp"
 #include "kerf/io.hpp"
 #include "kerf/units.hpp"
+#include "kind_results.hpp"
 
 namespace kerf::dem::kinds {
 
@@ -128,9 +129,10 @@ class LabTestKind final : public SceneKind {
       half.speed_m_per_s *= 0.5;
       half.quasi_static_check = false;  // this run is the check
       const LabTestResult slow = run_test(specimen, half, name() + " (quasi-static check, half speed)", tp.progress);
-      results["quasi_static_check"] = results_to_json(lab_test_check_results(), {half.speed_m_per_s, slow, res});
-      const double change = results["quasi_static_check"]["peak_change_percent"].get<double>();
-      const bool quasi_static = results["quasi_static_check"]["verdict"] == "quasi-static";
+      const Json& check = results[lab_test_keys::quasi_static_check] =
+          results_to_json(lab_test_check_results(), {half.speed_m_per_s, slow, res});
+      const double change = check[lab_test_check_keys::peak_change_percent].get<double>();
+      const bool quasi_static = check[lab_test_check_keys::verdict] == "quasi-static";
       std::cout << fmt::format("{}: quasi-static check: the peak changes {:+.2f} % at half the speed ({} m/s): {}\n",
                                name(), change, half.speed_m_per_s,
                                quasi_static
@@ -162,52 +164,54 @@ class LabTestKind final : public SceneKind {
 }  // namespace
 
 const ResultTable<LabTestReport>& lab_test_results() {
+  namespace k = lab_test_keys;
   using R = LabTestReport;
   static const ResultTable<R> table{
-      result_number<R>("youngs_modulus_GPa", units::kGPa, "Young's modulus E (secant at 50 % of the peak)",
+      result_number<R>(k::youngs_modulus_GPa, units::kGPa, "Young's modulus E (secant at 50 % of the peak)",
                        [](const R& r) { return r.res.youngs_modulus_Pa; }),
-      result_value<R>("poissons_ratio", "", "Poisson's ratio nu (secant at 50 % of the peak)",
+      result_value<R>(k::poissons_ratio, "", "Poisson's ratio nu (secant at 50 % of the peak)",
                       [](const R& r) { return r.res.poissons_ratio; }),
-      result_if(result_number<R>("tensile_strength_MPa", units::kMPa, "tension: the peak stress",
+      result_if(result_number<R>(k::tensile_strength_MPa, units::kMPa, "tension: the peak stress",
                                  [](const R& r) { return r.res.peak_stress_Pa; }),
                 [](const R& r) { return r.tension; }),
-      result_if(result_number<R>("compressive_strength_MPa", units::kMPa, "compression: the peak stress",
+      result_if(result_number<R>(k::compressive_strength_MPa, units::kMPa, "compression: the peak stress",
                                  [](const R& r) { return r.res.peak_stress_Pa; }),
                 [](const R& r) { return !r.tension; }),
-      result_value<R>("strain_at_peak", "", "axial strain at the peak",
+      result_value<R>(k::strain_at_peak, "", "axial strain at the peak",
                       [](const R& r) { return r.res.strain_at_peak; }),
-      result_value<R>("n_tension_cracks", "", "broken joint elements in tension at the end",
+      result_value<R>(k::n_tension_cracks, "", "broken joint elements in tension at the end",
                       [](const R& r) { return r.res.curve.back().n_tension_cracks; }),
-      result_value<R>("n_shear_cracks", "", "broken joint elements in shear at the end",
+      result_value<R>(k::n_shear_cracks, "", "broken joint elements in shear at the end",
                       [](const R& r) { return r.res.curve.back().n_shear_cracks; }),
-      result_value<R>("stop_reason", "", "why the test stopped", [](const R& r) { return r.res.stop_reason; }),
-      result_value<R>("speed_m_per_s", "m/s", "the platens' speed", [](const R& r) { return r.res.speed_m_per_s; }),
-      result_number<R>("specimen_width_mm", units::kMm, "the specimen's width",
+      result_value<R>(k::stop_reason, "", "why the test stopped", [](const R& r) { return r.res.stop_reason; }),
+      result_value<R>(k::speed_m_per_s, "m/s", "the platens' speed", [](const R& r) { return r.res.speed_m_per_s; }),
+      result_number<R>(k::specimen_width_mm, units::kMm, "the specimen's width",
                        [](const R& r) { return r.res.width_m; }),
-      result_number<R>("gauge_length_mm", units::kMm, "the specimen's height between the platens",
+      result_number<R>(k::gauge_length_mm, units::kMm, "the specimen's height between the platens",
                        [](const R& r) { return r.res.height_m; })};
   return table;
 }
 
 const ResultTable<LabTestCheck>& lab_test_check_results() {
+  namespace k = lab_test_check_keys;
   using C = LabTestCheck;
   const auto change = [](const C& c) {
     return 100 * (c.slow.peak_stress_Pa - c.res.peak_stress_Pa) / c.res.peak_stress_Pa;
   };
   static const ResultTable<C> table{
-      result_value<C>("speed_m_per_s", "m/s", "the check's speed (half the test's)",
+      result_value<C>(k::speed_m_per_s, "m/s", "the check's speed (half the test's)",
                       [](const C& c) { return c.speed_m_per_s; }),
-      result_number<C>("peak_stress_MPa", units::kMPa, "the check's peak stress",
+      result_number<C>(k::peak_stress_MPa, units::kMPa, "the check's peak stress",
                        [](const C& c) { return c.slow.peak_stress_Pa; }),
-      result_value<C>("peak_change_percent", "%", "the change of the peak at half the speed", change),
-      result_value<C>("youngs_modulus_change_percent", "%", "the change of E at half the speed",
+      result_value<C>(k::peak_change_percent, "%", "the change of the peak at half the speed", change),
+      result_value<C>(k::youngs_modulus_change_percent, "%", "the change of E at half the speed",
                       [](const C& c) {
                         return 100 * (c.slow.youngs_modulus_Pa - c.res.youngs_modulus_Pa) / c.res.youngs_modulus_Pa;
                       }),
-      result_value<C>("wall_time_s", "s", "the check's wall time", [](const C& c) { return c.slow.wall_time_s; }),
-      result_value<C>("tolerance_percent", "%", "the largest change of the peak of a quasi-static test",
+      result_value<C>(k::wall_time_s, "s", "the check's wall time", [](const C& c) { return c.slow.wall_time_s; }),
+      result_value<C>(k::tolerance_percent, "%", "the largest change of the peak of a quasi-static test",
                       [](const C&) { return kQuasiStaticTolerancePercent; }),
-      result_value<C>("verdict", "", "`quasi-static` within the tolerance, else `rate-dependent`",
+      result_value<C>(k::verdict, "", "`quasi-static` within the tolerance, else `rate-dependent`",
                       [change](const C& c) { return std::string(quasi_static_verdict(change(c))); })};
   return table;
 }

@@ -12,6 +12,7 @@
 #include "kerf/dem/output/output.hpp"
 #include "kerf/dem/procedures/cut_results.hpp"
 #include "kerf/dem/scene.hpp"
+#include "kind_results.hpp"
 
 namespace kerf::dem {
 
@@ -30,30 +31,35 @@ ResultSection section(std::string name, std::string where, std::string python_cl
           [table] { return result_keys(table()); }};
 }
 
+/// The name of a section nested in "results" under `key`: "results.<key>".
+std::string within_results(std::string_view key) {
+  return "results." + std::string(key);
+}
+
 const std::vector<ResultSection>& result_sections() {
   static const std::vector<ResultSection> list{
       {"results", "cut: one run's (with `--replicates`, the means over the replicates)", "CutResults",
        [] { return results_markdown(cut_results()) + results_markdown(cut_derived_results(), false); },
        cut_result_names},
-      section("results.travel_windows",
+      section(within_results(cut_keys::travel_windows),
               "cut: each stretch of `cut.window_mm` of travel (its forces also under their current names)",
               "TravelWindowResults", travel_window_results),
       section("active_window", "cut, with an active window", "ActiveWindowResults", active_window_results),
       section("results", "tension, compression", "LabTestResults", kinds::lab_test_results),
-      section("results.quasi_static_check",
+      section(within_results(kinds::lab_test_keys::quasi_static_check),
               "tension, compression, with `loading.quasi_static_check`: the test again at half the speed",
               "LabTestCheckResults", kinds::lab_test_check_results),
       section("results", "toughness: the means over the packings (`--replicates N`)", "ToughnessResults",
               kinds::toughness_results),
-      section("results.per_packing", "toughness: each packing's", "ToughnessPackingResults",
-              kinds::toughness_packing_results),
-      section("results.quasi_static_check",
+      section(within_results(kinds::toughness_keys::per_packing), "toughness: each packing's",
+              "ToughnessPackingResults", kinds::toughness_packing_results),
+      section(within_results(kinds::toughness_keys::quasi_static_check),
               "toughness, with `toughness.quasi_static_check`: the first packing again at half the speed",
               "ToughnessCheckResults", kinds::toughness_check_results),
       section("results", "calibrate", "CalibrateResults", kinds::calibrate_results),
       section("results", "calibrate_cut (each `main_force_*` also under its current name, `cutting_force_*`)",
               "CalibrateCutResults", kinds::calibrate_cut_results),
-      section("results.evaluations",
+      section(within_results(kinds::calibrate_cut_keys::evaluations),
               "calibrate_cut: each evaluation's row (each `main_force_*` also as `cutting_force_*`)",
               "CalibrateCutEvaluationResults", kinds::calibrate_cut_evaluation_results),
       section("forces.csv", "cut: one row per sample, as the cut goes (the columns in this order)", "ForcesCsvColumns",

@@ -14,6 +14,7 @@
 #include "kerf/error.hpp"
 #include "kerf/io.hpp"
 #include "kerf/units.hpp"
+#include "kind_results.hpp"
 
 namespace kerf::dem::kinds {
 
@@ -96,7 +97,7 @@ class ToughnessKind final : public SceneKind {
         if (spec_.quasi_static_check) quasi_static = check_quasi_static(started.specimen, r, t);
       }
       Json one = results_to_json(toughness_packing_results(), r);
-      one["seed"] = started.spec.seed;
+      one[toughness_packing_keys::seed] = started.spec.seed;
       per_packing.push_back(one);
       results.push_back(r);
       seeds.push_back(started.spec.seed);
@@ -117,7 +118,7 @@ class ToughnessKind final : public SceneKind {
     const ToughnessReport report{{k_mean, k_sem}, {g_mean, g_sem}, {w_mean, w_sem}, {i_mean, i_sem},
                                  packings,        results.front(), spec_,           per_packing};
     Json res = results_to_json(toughness_results(), report);
-    if (!quasi_static.is_null()) res["quasi_static_check"] = quasi_static;
+    if (!quasi_static.is_null()) res[toughness_keys::quasi_static_check] = quasi_static;
     summary["results"] = res;
     summary["n_particles"] = r0.n_particles;
     summary["steps"] = r0.steps;
@@ -176,8 +177,8 @@ class ToughnessKind final : public SceneKind {
     half.quasi_static_check = false;  // this run is the check
     const ToughnessResult slow = run_one(specimen, half, "toughness (quasi-static check, half speed)", target, nullptr);
     const Json check = results_to_json(toughness_check_results(), {half.speed_m_per_s, slow, r});
-    const double change = check["peak_change_percent"].get<double>();
-    const bool quasi_static = check["verdict"] == "quasi-static";
+    const double change = check[toughness_check_keys::peak_change_percent].get<double>();
+    const bool quasi_static = check[toughness_check_keys::verdict] == "quasi-static";
     std::cout << fmt::format(
         "toughness: quasi-static check: the peak load changes {:+.2f} % at half the speed ({} m/s): {}\n", change,
         half.speed_m_per_s,
@@ -190,48 +191,44 @@ class ToughnessKind final : public SceneKind {
 
 }  // namespace
 
-namespace {
-/// A fracture toughness in MPa sqrt(m), held in Pa sqrt(m).
-const FieldUnit kMPaSqrtM{"MPa sqrt(m)", units::mpa_to_pa, units::pa_to_mpa};
-}  // namespace
-
 const ResultTable<ToughnessResult>& toughness_packing_results() {
+  namespace k = toughness_packing_keys;
   using T = ToughnessResult;
   static const ResultTable<T> table{
-      result_number<T>("fracture_toughness_MPa_sqrt_m", kMPaSqrtM, "K_IC from the peak of the smoothed load",
+      result_number<T>(k::fracture_toughness_MPa_sqrt_m, units::kMPaSqrtM, "K_IC from the peak of the smoothed load",
                        [](const T& r) { return r.fracture_toughness_Pa_sqrt_m; }),
-      result_value<T>("fracture_energy_J_per_m2", "J/m2", "G_c: (W_ext - dU - dK) / (B (W - a)), to broken through",
+      result_value<T>(k::fracture_energy_J_per_m2, "J/m2", "G_c: (W_ext - dU - dK) / (B (W - a)), to broken through",
                       [](const T& r) { return r.fracture_energy_J_per_m2; }),
-      result_value<T>("work_of_fracture_J_per_m2", "J/m2", "W_ext / (B (W - a)), to broken through",
+      result_value<T>(k::work_of_fracture_J_per_m2, "J/m2", "W_ext / (B (W - a)), to broken through",
                       [](const T& r) { return r.work_of_fracture_J_per_m2; }),
-      result_value<T>("irwin_energy_J_per_m2", "J/m2", "K_IC^2 / E'",
+      result_value<T>(k::irwin_energy_J_per_m2, "J/m2", "K_IC^2 / E'",
                       [](const T& r) { return r.irwin_energy_J_per_m2; }),
-      result_value<T>("peak_load_N", "N", "the peak of the smoothed load", [](const T& r) { return r.peak_load_N; }),
-      result_value<T>("raw_peak_load_N", "N", "the largest sample's load, ringing included",
+      result_value<T>(k::peak_load_N, "N", "the peak of the smoothed load", [](const T& r) { return r.peak_load_N; }),
+      result_value<T>(k::raw_peak_load_N, "N", "the largest sample's load, ringing included",
                       [](const T& r) { return r.raw_peak_load_N; }),
-      result_number<T>("raw_peak_toughness_MPa_sqrt_m", kMPaSqrtM, "K from the raw peak, for comparison",
+      result_number<T>(k::raw_peak_toughness_MPa_sqrt_m, units::kMPaSqrtM, "K from the raw peak, for comparison",
                        [](const T& r) { return r.raw_peak_toughness_Pa_sqrt_m; }),
-      result_number<T>("deflection_at_peak_um", units::kUm, "the deflection at the smoothed peak",
+      result_number<T>(k::deflection_at_peak_um, units::kUm, "the deflection at the smoothed peak",
                        [](const T& r) { return r.deflection_at_peak_m; }),
-      result_value<T>("external_work_J", "J", "the load roller's work to the end",
+      result_value<T>(k::external_work_J, "J", "the load roller's work to the end",
                       [](const T& r) { return r.external_work_J; }),
-      result_value<T>("broken_through", "", "whether the crack crossed the ligament",
+      result_value<T>(k::broken_through, "", "whether the crack crossed the ligament",
                       [](const T& r) { return r.through_sample >= 0; }),
-      result_value<T>("deflection_broken_through_um", "um", "the deflection when it had (0: never)",
+      result_value<T>(k::deflection_broken_through_um, "um", "the deflection when it had (0: never)",
                       [](const T& r) {
                         return r.through_sample >= 0
                                    ? units::m_to_um(r.curve[static_cast<std::size_t>(r.through_sample)].deflection_m)
                                    : 0.0;
                       }),
-      result_value<T>("n_cracks", "", "broken joint elements at the end",
+      result_value<T>(k::n_cracks, "", "broken joint elements at the end",
                       [](const T& r) { return r.curve.back().n_cracks; }),
-      result_value<T>("n_notch_disks_removed", "", "disks removed to make the notch",
+      result_value<T>(k::n_notch_disks_removed, "", "disks removed to make the notch",
                       [](const T& r) { return r.n_notch_disks; }),
-      result_value<T>("n_notch_joints_retired", "", "joints still crossing the notch's line, retired",
+      result_value<T>(k::n_notch_joints_retired, "", "joints still crossing the notch's line, retired",
                       [](const T& r) { return r.n_notch_joints_retired; }),
-      result_value<T>("stop_reason", "", "why the test stopped", [](const T& r) { return r.stop_reason; }),
-      result_value<T>("steps", "", "time steps", [](const T& r) { return r.steps; }),
-      result_value<T>("wall_time_s", "s", "the test's wall time", [](const T& r) { return r.wall_time_s; })};
+      result_value<T>(k::stop_reason, "", "why the test stopped", [](const T& r) { return r.stop_reason; }),
+      result_value<T>(k::steps, "", "time steps", [](const T& r) { return r.steps; }),
+      result_value<T>(k::wall_time_s, "s", "the test's wall time", [](const T& r) { return r.wall_time_s; })};
   return table;
 }
 
@@ -261,77 +258,81 @@ const ResultTable<ToughnessCurveRow>& toughness_curve_columns() {
 }
 
 const ResultTable<ToughnessReport>& toughness_results() {
+  namespace k = toughness_keys;
   using R = ToughnessReport;
   const auto sem = [](const R& r) { return r.packings > 1; };
   static const ResultTable<R> table{
-      result_value<R>("fracture_toughness_MPa_sqrt_m", "MPa sqrt(m)", "K_IC, the mean over the packings",
+      result_value<R>(k::fracture_toughness_MPa_sqrt_m, units::kMPaSqrtM.symbol, "K_IC, the mean over the packings",
                       [](const R& r) { return r.toughness_MPa_sqrt_m.mean; }),
-      result_value<R>("fracture_energy_J_per_m2", "J/m2", "G_c, the mean over the packings",
+      result_value<R>(k::fracture_energy_J_per_m2, "J/m2", "G_c, the mean over the packings",
                       [](const R& r) { return r.fracture_energy.mean; }),
-      result_value<R>("work_of_fracture_J_per_m2", "J/m2", "the work of fracture, the mean over the packings",
+      result_value<R>(k::work_of_fracture_J_per_m2, "J/m2", "the work of fracture, the mean over the packings",
                       [](const R& r) { return r.work_of_fracture.mean; }),
-      result_value<R>("irwin_energy_J_per_m2", "J/m2", "K_IC^2 / E', the mean over the packings",
+      result_value<R>(k::irwin_energy_J_per_m2, "J/m2", "K_IC^2 / E', the mean over the packings",
                       [](const R& r) { return r.irwin_energy.mean; }),
       result_value<R>(
-          "fracture_energy_over_irwin_energy", "", "G_c / (K_IC^2 / E') of the means",
+          k::fracture_energy_over_irwin_energy, "", "G_c / (K_IC^2 / E') of the means",
           [](const R& r) { return r.irwin_energy.mean > 0 ? r.fracture_energy.mean / r.irwin_energy.mean : 0.0; }),
-      result_number<R>("youngs_modulus_for_irwin_GPa", units::kGPa, "the E of E' (toughness.youngs_modulus_GPa)",
+      result_number<R>(k::youngs_modulus_for_irwin_GPa, units::kGPa, "the E of E' (toughness.youngs_modulus_GPa)",
                        [](const R& r) { return r.spec.youngs_modulus_Pa; }),
-      result_value<R>("packings", "", "packings tested (--replicates)", [](const R& r) { return r.packings; }),
-      result_number<R>("depth_W_mm", units::kMm, "the beam's depth W (the first packing's, measured)",
+      result_value<R>(k::packings, "", "packings tested (--replicates)", [](const R& r) { return r.packings; }),
+      result_number<R>(k::depth_W_mm, units::kMm, "the beam's depth W (the first packing's, measured)",
                        [](const R& r) { return r.first.depth_m; }),
-      result_number<R>("span_S_mm", units::kMm, "the span S", [](const R& r) { return r.first.span_m; }),
-      result_number<R>("length_mm", units::kMm, "the beam's length L", [](const R& r) { return r.first.length_m; }),
-      result_number<R>("thickness_B_mm", units::kMm, "the thickness B", [](const R& r) { return r.first.thickness_m; }),
-      result_number<R>("notch_depth_a_mm", units::kMm, "the notch's depth a",
+      result_number<R>(k::span_S_mm, units::kMm, "the span S", [](const R& r) { return r.first.span_m; }),
+      result_number<R>(k::length_mm, units::kMm, "the beam's length L", [](const R& r) { return r.first.length_m; }),
+      result_number<R>(k::thickness_B_mm, units::kMm, "the thickness B",
+                       [](const R& r) { return r.first.thickness_m; }),
+      result_number<R>(k::notch_depth_a_mm, units::kMm, "the notch's depth a",
                        [](const R& r) { return r.first.notch_m; }),
-      result_value<R>("notch_over_depth", "", "a / W", [](const R& r) { return r.first.notch_m / r.first.depth_m; }),
-      result_value<R>("geometry_factor", "", "Srawley's geometry factor at a / W",
+      result_value<R>(k::notch_over_depth, "", "a / W", [](const R& r) { return r.first.notch_m / r.first.depth_m; }),
+      result_value<R>(k::geometry_factor, "", "Srawley's geometry factor at a / W",
                       [](const R& r) { return senb_geometry_factor(r.first.notch_m / r.first.depth_m); }),
-      result_value<R>("speed_m_per_s", "m/s", "the load roller's speed",
+      result_value<R>(k::speed_m_per_s, "m/s", "the load roller's speed",
                       [](const R& r) { return r.spec.speed_m_per_s; }),
-      result_number<R>("peak_window_um", units::kUm, "the smoothing window of the load's peak",
+      result_number<R>(k::peak_window_um, units::kUm, "the smoothing window of the load's peak",
                        [](const R& r) { return r.spec.peak_window_m; }),
-      result_value<R>("per_packing", "", "each packing's results (a list; their keys below)",
+      result_value<R>(k::per_packing, "", "each packing's results (a list; their keys below)",
                       [](const R& r) { return r.per_packing; }),
-      result_if(result_value<R>("fracture_toughness_sem_MPa_sqrt_m", "MPa sqrt(m)", "the standard error of K_IC's mean",
-                                [](const R& r) { return r.toughness_MPa_sqrt_m.sem; }),
-                sem),
-      result_if(result_value<R>("fracture_energy_sem_J_per_m2", "J/m2", "the standard error of G_c's mean",
+      result_if(
+          result_value<R>(k::fracture_toughness_sem_MPa_sqrt_m, units::kMPaSqrtM.symbol,
+                          "the standard error of K_IC's mean", [](const R& r) { return r.toughness_MPa_sqrt_m.sem; }),
+          sem),
+      result_if(result_value<R>(k::fracture_energy_sem_J_per_m2, "J/m2", "the standard error of G_c's mean",
                                 [](const R& r) { return r.fracture_energy.sem; }),
                 sem),
       result_if(
-          result_value<R>("work_of_fracture_sem_J_per_m2", "J/m2", "the standard error of the work of fracture's mean",
+          result_value<R>(k::work_of_fracture_sem_J_per_m2, "J/m2", "the standard error of the work of fracture's mean",
                           [](const R& r) { return r.work_of_fracture.sem; }),
           sem),
-      result_if(result_value<R>("irwin_energy_sem_J_per_m2", "J/m2", "the standard error of K_IC^2 / E''s mean",
+      result_if(result_value<R>(k::irwin_energy_sem_J_per_m2, "J/m2", "the standard error of K_IC^2 / E''s mean",
                                 [](const R& r) { return r.irwin_energy.sem; }),
                 sem)};
   return table;
 }
 
 const ResultTable<ToughnessCheck>& toughness_check_results() {
+  namespace k = toughness_check_keys;
   using C = ToughnessCheck;
   const auto change = [](const C& c) { return 100 * (c.slow.peak_load_N - c.res.peak_load_N) / c.res.peak_load_N; };
   static const ResultTable<C> table{
-      result_value<C>("speed_m_per_s", "m/s", "the check's speed (half the test's)",
+      result_value<C>(k::speed_m_per_s, "m/s", "the check's speed (half the test's)",
                       [](const C& c) { return c.speed_m_per_s; }),
-      result_value<C>("peak_load_N", "N", "the check's peak load", [](const C& c) { return c.slow.peak_load_N; }),
-      result_value<C>("peak_change_percent", "%", "the change of the peak load at half the speed", change),
-      result_number<C>("fracture_toughness_MPa_sqrt_m", kMPaSqrtM, "the check's K_IC",
+      result_value<C>(k::peak_load_N, "N", "the check's peak load", [](const C& c) { return c.slow.peak_load_N; }),
+      result_value<C>(k::peak_change_percent, "%", "the change of the peak load at half the speed", change),
+      result_number<C>(k::fracture_toughness_MPa_sqrt_m, units::kMPaSqrtM, "the check's K_IC",
                        [](const C& c) { return c.slow.fracture_toughness_Pa_sqrt_m; }),
-      result_value<C>("fracture_energy_J_per_m2", "J/m2", "the check's G_c",
+      result_value<C>(k::fracture_energy_J_per_m2, "J/m2", "the check's G_c",
                       [](const C& c) { return c.slow.fracture_energy_J_per_m2; }),
-      result_value<C>("fracture_energy_change_percent", "%", "the change of G_c at half the speed",
+      result_value<C>(k::fracture_energy_change_percent, "%", "the change of G_c at half the speed",
                       [](const C& c) {
                         return 100 * (c.slow.fracture_energy_J_per_m2 - c.res.fracture_energy_J_per_m2) /
                                c.res.fracture_energy_J_per_m2;
                       }),
-      result_value<C>("tolerance_percent", "%", "the largest change of the peak of a quasi-static test",
+      result_value<C>(k::tolerance_percent, "%", "the largest change of the peak of a quasi-static test",
                       [](const C&) { return kQuasiStaticTolerancePercent; }),
-      result_value<C>("verdict", "", "`quasi-static` within the tolerance, else `rate-dependent`",
+      result_value<C>(k::verdict, "", "`quasi-static` within the tolerance, else `rate-dependent`",
                       [change](const C& c) { return std::string(quasi_static_verdict(change(c))); }),
-      result_value<C>("wall_time_s", "s", "the check's wall time", [](const C& c) { return c.slow.wall_time_s; })};
+      result_value<C>(k::wall_time_s, "s", "the check's wall time", [](const C& c) { return c.slow.wall_time_s; })};
   return table;
 }
 

@@ -61,6 +61,7 @@ inline constexpr FieldUnit kMm{"mm", mm_to_m, m_to_mm};
 inline constexpr FieldUnit kUm{"um", um_to_m, m_to_um};
 inline constexpr FieldUnit kNPerMm{"N/mm", n_per_mm_to_n_per_m, n_per_m_to_n_per_mm};  ///< force per unit width
 inline constexpr FieldUnit kPercent{"%", percent_to_fraction, fraction_to_percent};
+inline constexpr FieldUnit kMPaSqrtM{"MPa sqrt(m)", mpa_to_pa, pa_to_mpa};  ///< a fracture toughness K_IC
 }  // namespace units
 
 /// A real parameter, stored in SI on the struct.

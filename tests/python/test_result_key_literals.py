@@ -1,8 +1,9 @@
-"""No result key is written or read as a literal outside its table (issue 56 item 1): kerf-dem's cut results and
-the columns of its CSV files, and kerf-forces' prediction columns, are named once, in their result tables
-(dem/procedures/cut_results.cpp, dem/output/output.cpp, dem/kinds/, analytic/kinds/predict.cpp, the model units'
-analytic/forces/chip_term.cpp, oxley_model.cpp and transition_model.cpp, analytic/trepanning/trepanning_kind.cpp), and
-read by name, through the constants of kerf/dem/procedures/cut_results.hpp, kerf/dem/output/output.hpp,
+"""No result key is written or read as a literal outside its table (issue 56 item 1): kerf-dem's results (the cut's,
+the lab tests', the toughness test's, the calibrations') and the columns of its CSV files, and kerf-forces' prediction
+columns, are named once, in their result tables (dem/procedures/cut_results.cpp, dem/output/output.cpp, dem/kinds/,
+analytic/kinds/predict.cpp, the model units' analytic/forces/chip_term.cpp, oxley_model.cpp and transition_model.cpp,
+analytic/trepanning/trepanning_kind.cpp), and read by name, through the constants of
+kerf/dem/procedures/cut_results.hpp, kerf/dem/output/output.hpp, dem/kinds/kind_results.hpp,
 kerf/analytic/kinds/predict.hpp, the units' headers (edge_keys, oxley_keys, transition_keys) and
 kerf/analytic/trepanning/trepanning_results.hpp (C++) or kerf.result_keys and kerf.prediction_keys (Python, generated
 from the tables: tests/cli/dem_results_cli.sh, tests/cli/forces_results_cli.sh). A quoted key in any other C++, Python
@@ -28,17 +29,23 @@ SHARED = {"width_mm", "time_s", "samples", "steady", "force_model", "material", 
           "torque_group_MPa",
           # the chip term's input keys (models.friction_closure, cut.friction_factor: also the physics' argument
           # names), echoed in the edge's columns
-          "friction_closure", "friction_factor"}
+          "friction_closure", "friction_factor",
+          # the DEM kinds' results that are also input keys: calibration.targets' (and the analytic material's
+          # elastic and brittle keys; toughness.youngs_modulus_GPa; a joint's tensile_strength_MPa), a softening
+          # joint's fracture_energy_J_per_m2, the loading's, the toughness test's and the cut's speed_m_per_s,
+          # cut.length_mm, toughness.peak_window_um, calibration.packings, calibrate_cut's calibration section, a
+          # specimen file's bonds.strength_factor
+          "youngs_modulus_GPa", "poissons_ratio", "tensile_strength_MPa", "compressive_strength_MPa",
+          "fracture_toughness_MPa_sqrt_m", "fracture_energy_J_per_m2", "speed_m_per_s", "length_mm", "peak_window_um",
+          "packings", "targets", "target_cutting_force_N", "target_main_force_N", "target_source",
+          "tolerance_percent", "strength_factor",
+          # every summary's and study record's own (wall time, time steps, also a progress unit), the validation
+          # cases' own verdicts, a benchmark's own column
+          "wall_time_s", "steps", "verdict", "converged"}
 # CSV columns that are also input keys (the material's, the specimen's seed), VTK arrays (the frames' stress_MPa,
 # the crack frames' place, which render_frames.py colours by under pvpython) or plain words.
 SHARED_COLUMNS = {"seed", "mode", "bond", "element", "place", "evaluation", "directory", "stress_MPa",
                   "effective_modulus_GPa", "stiffness_ratio", "cohesion_MPa"}
-# The CSV files' columns (cracks.csv, curve.csv, calibration_log.csv), checked but those that the other kinds'
-# summary results (tension ... calibrate_cut) share: those tables still name their keys as literals in dem/kinds/.
-DEM_COLUMN_TABLES = ("CracksColumns", "CurveColumns", "ToughnessCurveColumns", "CalibrationLogColumns",
-                     "CalibrateCutLogColumns", "CalibrateCutEvaluationResults")
-DEM_KIND_TABLES = ("LabTestResults", "LabTestCheckResults", "ToughnessResults", "ToughnessPackingResults",
-                   "ToughnessCheckResults", "CalibrateResults", "CalibrateCutResults")
 OUTPUT_TESTS = "an end-to-end test of the written output: the literal is the format users read, a rename must fail it"
 ALLOWED = {
     # What the keys are written in, and generated from.
@@ -82,15 +89,12 @@ def generated(name):
 
 
 def result_keys():
-    dem, analytic = generated("result_keys"), generated("prediction_keys")
+    """Every key of every table of both generated modules (a class per table), but the shared columns."""
     keys = set()
-    for table in (v for v in vars(analytic).values() if isinstance(v, type)):  # a class per table
-        keys |= set(analytic.keys(table))
-    for table in (dem.CutResults, dem.TravelWindowResults, dem.ActiveWindowResults, dem.ForcesCsvColumns):
-        keys |= set(dem.keys(table))
-    columns = set().union(*(dem.keys(getattr(dem, name)) for name in DEM_COLUMN_TABLES))
-    kinds = set().union(*(dem.keys(getattr(dem, name)) for name in DEM_KIND_TABLES))
-    return keys | (columns - kinds - SHARED_COLUMNS)
+    for module in (generated("result_keys"), generated("prediction_keys")):
+        for table in (v for v in vars(module).values() if isinstance(v, type)):
+            keys |= set(module.keys(table))
+    return keys - SHARED_COLUMNS
 
 
 def sources(root):
@@ -134,14 +138,17 @@ def test_no_result_key_literal_outside_its_table():
     keys = result_keys() - SHARED
     found = offenders(keys)
     assert not found, ("result keys quoted outside their tables (use the constants of kerf/dem/procedures/"
-                       "cut_results.hpp or kerf/analytic/kinds/predict.hpp, or kerf.result_keys or kerf.prediction_keys; "
-                       "or list the file in ALLOWED with the reason):\n" + "\n".join(found))
+                       "cut_results.hpp, dem/kinds/kind_results.hpp or kerf/analytic/kinds/predict.hpp, or "
+                       "kerf.result_keys or kerf.prediction_keys; or list the file in ALLOWED with the reason):\n"
+                       + "\n".join(found))
 
 
 def test_the_check_finds_a_literal(tmp_path):
     keys = result_keys() - SHARED
     assert "subsurface_damage_depth_steady_um" in keys and "steady_from_travel_mm" in keys
     assert {"x_mm", "length_um", "smoothed_load_N", "axial_strain", "macro_tensile_strength_MPa"} <= keys
+    assert {"strain_at_peak", "peak_change_percent", "raw_peak_toughness_MPa_sqrt_m", "per_packing",
+            "work_of_fracture_sem_J_per_m2", "calibrated_material", "main_force_standard_error_N"} <= keys
     (tmp_path / "analysis").mkdir()
     (tmp_path / "analysis" / "reader.py").write_text(
         "depth = results['subsurface_damage_depth_steady_um']  # the steady damage\n"

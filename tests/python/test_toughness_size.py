@@ -5,6 +5,7 @@ import random
 
 import pytest
 
+from kerf.result_keys import ToughnessResults as T
 from repo_scripts import load
 
 ts = load("analysis/toughness_size.py")
@@ -59,8 +60,8 @@ def test_the_record_round_trip_and_outputs(tmp_path):
     record = tmp_path / "record.csv"
     with open(record, "w", newline="") as f:
         w = csv.writer(f)
-        w.writerow(["condition", "beam_depth_W_mm", "notch_ratio_a_over_W", "seed", "fracture_toughness_MPa_sqrt_m",
-                    "fracture_energy_J_per_m2"])
+        w.writerow(["condition", "beam_depth_W_mm", "notch_ratio_a_over_W", "seed", T.fracture_toughness_MPa_sqrt_m,
+                    T.fracture_energy_J_per_m2])
         for r in rows:
             w.writerow([1, r["W"], r["aW"], r["seed"], repr(r["K"]), repr(r["G"])])
     text = ts.write(ts.read_record(record), tmp_path / "out")
@@ -69,4 +70,4 @@ def test_the_record_round_trip_and_outputs(tmp_path):
     with open(tmp_path / "out" / "size_effect.csv") as f:
         fit_rows = [r for r in csv.DictReader(f) if r["row"] == "fit joint"]
     assert len(fit_rows) == 2
-    assert math.isclose(float(fit_rows[0]["fracture_toughness_MPa_sqrt_m"]), 0.77, rel_tol=1e-5)
+    assert math.isclose(float(fit_rows[0][T.fracture_toughness_MPa_sqrt_m]), 0.77, rel_tol=1e-5)
