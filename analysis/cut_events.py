@@ -45,12 +45,15 @@ def lefm_depth_um(peak_n_per_mm, toughness_mpa_sqrt_m):
 
 
 def condition(summary):
-    """condition_of's (glass, window, surface, depth) with the edge zone and a finer region of disks named in the glass."""
+    """condition_of's (glass, window, surface, depth) with the tool's rake, the edge zone and a finer region of disks
+    named in the glass."""
     glass, window, surface, depth = condition_of(summary)
+    if "rake_deg" in summary["cut"].get("tool", {}):
+        glass += f", rake {summary['cut']['tool']['rake_deg']:g} deg"
     if summary["cut"].get("edge_zone", {}).get("enabled"):
         glass += ", edge zone"
     specimen = summary.get("specimen", {})
-    if "fine_radius_min_um" in specimen:
+    if specimen.get("fine_radius_max_um", 0) > 0:
         glass += f", disks {specimen['fine_radius_min_um']:g}-{specimen['fine_radius_max_um']:g} um at the cut line"
     return glass, window, surface, depth
 

@@ -19,14 +19,14 @@ SPEED_MM_PER_S = 2000.0  # 2 m/s: time = travel / speed
 STEP_MM = 1e-4  # 0.1 um of travel per sample
 
 
-def write_cut(folder, force_n_per_mm, cracks, y_cut_mm=0.9, steady=(0.5, 3.0), zone=False, fine=False):
+def write_cut(folder, force_n_per_mm, cracks, y_cut_mm=0.9, steady=(0.5, 3.0), zone=False, fine=None):
     """A cut's folder: the cutting force per sample (1 mm wide, thrust half of it), cracks as (travel_mm, depth_um)."""
     folder.mkdir(parents=True)
     travel = np.arange(force_n_per_mm.size) * STEP_MM
     specimen = {"seed": 1, "height_mm": 1.0}
-    if fine:
-        specimen.update(fine_radius_min_um=3.0, fine_radius_max_um=3.9)
-    cut = {"cut": {"depth_of_cut_mm": 0.1}, "grooves": {"shape": "none"},
+    if fine is not None:  # a run of kerf 0.2 and later names the fine region's radii, 0 when it has none
+        specimen.update(fine_radius_min_um=3.0 if fine else 0.0, fine_radius_max_um=3.9 if fine else 0.0)
+    cut = {"cut": {"depth_of_cut_mm": 0.1}, "grooves": {"shape": "none"}, "tool": {"rake_deg": -15.0},
            "active_window": {"enabled": True, "ahead_depths": 7, "behind_depths": 3, "below_depths": 4}}
     if zone:
         cut["edge_zone"] = {"enabled": True}
@@ -61,7 +61,7 @@ def test_events_their_peaks_and_the_cracks_they_drive(tmp_path):
               (2.505, 300.0), (1.5, 500.0), (0.205, 400.0)]  # the small load's, one between events, one in the entry
     write_cut(tmp_path / "cut", force, cracks)
     key, seed, m, events = ce.cut_events(tmp_path / "cut")
-    assert seed == 1 and key[0] == "glass" and key[2] == "regular"
+    assert seed == 1 and key[0] == "glass, rake -15 deg" and key[2] == "regular"
     assert [round(e["peak_cutting_N_per_mm"], 6) for e in events] == pytest.approx([3.1, 12.1], abs=1e-3)
     assert [e["deepest_crack_um"] for e in events] == pytest.approx([10.0, 150.0])
     assert [e["cracks"] for e in events] == [1, 3]
@@ -104,8 +104,10 @@ def test_the_condition_names_the_edge_zone_and_a_fine_region(tmp_path):
     pulse(force, travel, 0.7, 0.01, 5.0)
     write_cut(tmp_path / "zone", force, [], steady=(0.5, 1.0), zone=True, fine=True)
     key, _, m, events = ce.cut_events(tmp_path / "zone")
-    assert key[0] == "glass, edge zone, disks 3-3.9 um at the cut line"
+    assert key[0] == "glass, rake -15 deg, edge zone, disks 3-3.9 um at the cut line"
     assert len(events) == 1 and events[0]["cracks"] == 0 and math.isnan(m["deep_event_peak_N_per_mm"])
+    write_cut(tmp_path / "none", force, [], steady=(0.5, 1.0), fine=False)
+    assert ce.cut_events(tmp_path / "none")[0][0] == "glass, rake -15 deg"
 
 
 def test_main_writes_the_tables_and_the_figure(tmp_path):
