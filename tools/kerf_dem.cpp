@@ -97,6 +97,8 @@ int keys_command(const std::string& section) {
 
 }  // namespace
 
+// Long (~115 lines) for a reason: the CLI's option table, one block per subcommand, then one dispatch to the library
+// call each makes (as kerf-forces' main).
 int kerf::dem::kerf_dem_main(int argc, char** argv) {
   CLI::App app{"kerf-dem: 2D bonded-particle DEM with Potyondy's flat joint"};
   app.require_subcommand(1);

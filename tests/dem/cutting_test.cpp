@@ -420,6 +420,8 @@ TEST_CASE("cutting: the steady damage depth's 95th percentile is not the sparse 
   CHECK(one.subsurface_steady_damage_depth_p95_m == one.subsurface_steady_damage_depth_m);
 }
 
+// Long (~110 lines) for a reason: one small cut, run once, checked from every side (forces, cracks, a rerun to the
+// bit, the grooved surface beside it).
 TEST_CASE("cutting: a small cut regression (forces, cracks, determinism, grooves)", "[cutting]") {
   const Simulation specimen = quick_workpiece_specimen(0.4e-3, 0.25e-3, 3);
   CutParams p;

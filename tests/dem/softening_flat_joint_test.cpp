@@ -173,6 +173,8 @@ TEST_CASE("softening flat joint: unloading returns along the damaged secant, com
   CHECK(j.damage[0] > d);
 }
 
+// Long (~85 lines) for a reason: one joint law before softening, a section each: tension, shear, and random joints
+// against the flat joint's bits.
 TEST_CASE("softening flat joint: before softening starts, the flat joint's strength envelope and numbers",
           "[softening]") {
   SECTION("tension: within sigma_c undamaged; past it, the flat joint breaks and the softening joint softens") {
