@@ -1,4 +1,6 @@
-#include "kerf/analytic/trepanning/trepanning_validation.hpp"
+// The K9 trepanning validation case (validation/k9_trepanning/, README.md there): Yu et al. 2023's Table 4 against
+// the analytic library's Eqs. 21-22 (analytic/trepanning/trepanning.cpp), its acceptance bands and its report.
+#include "k9_trepanning.hpp"
 
 #include <fmt/format.h>
 
