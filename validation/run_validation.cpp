@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "kerf/analytic/trepanning/trepanning_validation.hpp"
+#include "k9_trepanning.hpp"
 #include "kerf/error.hpp"
 #ifdef KERF_WITH_DEM
 #include "soda_lime_cutting.hpp"

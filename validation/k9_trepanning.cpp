@@ -1,4 +1,6 @@
-#include "kerf/analytic/trepanning/trepanning_validation.hpp"
+// The K9 trepanning validation case (validation/k9_trepanning/, README.md there): Yu et al. 2023's Table 4 against
+// the analytic library's Eqs. 21-22 (analytic/trepanning/trepanning.cpp), its acceptance bands and its report.
+#include "k9_trepanning.hpp"
 
 #include <fmt/format.h>
 
@@ -162,21 +164,16 @@ Comparison trepanning_comparison(const TrepanningValidation& v, const CaseInputs
   return compare(spec, measured, {{fit, curve}, {loo, {}}, {paper, {}}});
 }
 
-/// The report's calibration, leave-one-out and acceptance sections (Markdown).
-std::string calibration_markdown(const TrepanningValidation& v, const CaseInputs& in,
-                                 const std::vector<TrepanningObservation>& measured_rows,
-                                 const std::vector<double>& m_axial) {
-  const ResidualWeighting weighting = in.weighting;
-  const std::string& weighting_name = in.weighting_name;
-  const auto& acc = v.acceptance;
-  const auto& mf = v.measured_fit;
-  const auto& tf = v.theory_fit;
-  std::string md = "## Calibration\n\n";
+/// The report's calibration section: how the groups are fitted, the weighting and the other weighting's fit.
+std::string weighting_markdown(const TrepanningValidation& v, const CaseInputs& in,
+                               const std::vector<TrepanningObservation>& measured_rows,
+                               const std::vector<double>& m_axial) {
   const ResidualWeighting other =
-      weighting == ResidualWeighting::relative ? ResidualWeighting::absolute : ResidualWeighting::relative;
+      in.weighting == ResidualWeighting::relative ? ResidualWeighting::absolute : ResidualWeighting::relative;
   const TrepanningCalibration alternative = calibrate_trepanning(v.scene.tool, measured_rows, other);
   const auto [min_axial, max_axial] = std::minmax_element(m_axial.begin(), m_axial.end());
-  md += fmt::format(
+  return fmt::format(
+      "## Calibration\n\n"
       "The model is linear in each lumped group (F_n = (π/8) f (D − d) K_F, M = f (D² − d²) K_M / 16 with f = v_f / "
       "n), "
       "so each group is an exact weighted linear least-squares fit through the origin (GSL `gsl_multifit_wlinear`). "
@@ -185,10 +182,14 @@ std::string calibration_markdown(const TrepanningValidation& v, const CaseInputs
       "load; "
       "ordinary (absolute) least squares lets the largest forces dominate. For comparison, {} residuals give "
       "K_F = {:.4f} GPa and K_M = {:.4f} GPa, with mean |error| {} % (axial) and {} % (torque).\n\n",
-      weighting_name, *min_axial, *max_axial, residual_weighting_name(other),
+      in.weighting_name, *min_axial, *max_axial, residual_weighting_name(other),
       units::pa_to_gpa(alternative.groups.axial_group_Pa), units::pa_to_gpa(alternative.groups.torque_group_Pa),
       pct(alternative.axial.fit.mean_abs_error_percent), pct(alternative.torque.fit.mean_abs_error_percent));
-  md +=
+}
+
+/// The fitted groups (measured rows and theory column) with their errors, and the paper's theory column's.
+std::string groups_markdown(const TrepanningValidation& v) {
+  std::string md =
       "| group | fitted to | value (GPa) | standard error (GPa) | mean abs error (%) | max abs error (%) | bias (%) | "
       "LOO mean abs error (%) | LOO max abs error (%) | LOO bias (%) |\n|---|---|---|---|---|---|---|---|---|---|\n";
   const auto row = [&](const char* name, const char* to, const GroupFit& g) {
@@ -197,15 +198,22 @@ std::string calibration_markdown(const TrepanningValidation& v, const CaseInputs
                       pct(g.fit.mean_abs_error_percent), pct(g.fit.max_abs_error_percent), g.fit.bias_percent,
                       pct(g.loo.mean_abs_error_percent), pct(g.loo.max_abs_error_percent), g.loo.bias_percent);
   };
-  row("K_F = H tan φ", "measured axial force", mf.axial);
-  row("K_M = H (1 + π tan φ μ / 2)", "measured torque", mf.torque);
-  row("K_F", "paper's theory column", tf.axial);
-  row("K_M", "paper's theory column", tf.torque);
+  row("K_F = H tan φ", "measured axial force", v.measured_fit.axial);
+  row("K_M = H (1 + π tan φ μ / 2)", "measured torque", v.measured_fit.torque);
+  row("K_F", "paper's theory column", v.theory_fit.axial);
+  row("K_M", "paper's theory column", v.theory_fit.torque);
   md += fmt::format(
       "\nThe paper's theory column against the measured rows: axial mean |error| {} % (max {} %), torque {} % "
       "(max {} %) — the paper quotes 5.0 % and 6.7 %.\n\n",
       pct(v.paper_axial.mean_abs_error_percent), pct(v.paper_axial.max_abs_error_percent),
       pct(v.paper_torque.mean_abs_error_percent), pct(v.paper_torque.max_abs_error_percent));
+  return md;
+}
+
+/// What each fit's groups imply for the half angle and friction at the material's hardness, and for the hardness
+/// at φ = 60°.
+std::string implied_markdown(const TrepanningValidation& v) {
+  std::string md = "What the groups imply (only K_F and K_M are identifiable from forces):\n\n";
   const auto implied = [&](const char* which, const ImpliedTrepanningMaterial& m, const TrepanningGroups& g) {
     md += fmt::format(
         "- {}: with H = {:.2f} GPa (material `{}`, brittle.hardness_GPa) the groups imply φ = {:.1f}° and μ = "
@@ -217,10 +225,16 @@ std::string calibration_markdown(const TrepanningValidation& v, const CaseInputs
         units::pa_to_gpa(g.axial_group_Pa / std::sqrt(3.0)),
         implied_trepanning_material(g, g.axial_group_Pa / std::sqrt(3.0)).friction_coefficient);
   };
-  md += "What the groups imply (only K_F and K_M are identifiable from forces):\n\n";
-  implied("Fitted to the measured rows", v.implied_measured, mf.groups);
-  implied("Fitted to the paper's theory column", v.implied_theory, tf.groups);
-  md +=
+  implied("Fitted to the measured rows", v.implied_measured, v.measured_fit.groups);
+  implied("Fitted to the paper's theory column", v.implied_theory, v.theory_fit.groups);
+  return md;
+}
+
+/// Each row's groups fitted without it and its leave-one-out error (the header in PLplot's escapes, as the plots').
+std::string leave_one_out_markdown(const TrepanningValidation& v,
+                                   const std::vector<TrepanningObservation>& measured_rows) {
+  const auto& mf = v.measured_fit;
+  std::string md =
       "\n### Leave-one-out\n\n| n#d0#u (rev/min) | v#df#u (µm/s) | K_F without the row (GPa) | axial LOO error (%) | "
       "K_M without the row (GPa) | torque LOO error (%) |\n|---|---|---|---|---|---|\n";
   for (std::size_t i = 0; i < measured_rows.size(); ++i) {
@@ -230,18 +244,32 @@ std::string calibration_markdown(const TrepanningValidation& v, const CaseInputs
                       units::pa_to_gpa(mf.axial.loo_value_Pa[i]), mf.axial.loo_error_percent[i],
                       units::pa_to_gpa(mf.torque.loo_value_Pa[i]), mf.torque.loo_error_percent[i]);
   }
-  md += fmt::format(
+  return md;
+}
+
+/// The acceptance bands, the values they judge and the verdict with the failures.
+std::string acceptance_markdown(const TrepanningValidation& v) {
+  const auto& acc = v.acceptance;
+  const auto& mf = v.measured_fit;
+  const auto& tf = v.theory_fit;
+  std::string failures;
+  for (const auto& f : v.failures) failures += (failures.empty() ? "" : "; ") + f;
+  return fmt::format(
       "\n## Acceptance\n\n- theory column reproduced by one value of each group within {:.1f} %: axial max {} %, "
       "torque max {} %\n- fitted to the measured rows, mean |error| at most {:.1f} % (axial) and {:.1f} % (torque): "
       "{} % and {} %\n\n**{}**{}\n",
       acc.theory_column_max_abs_error_percent, pct(tf.axial.fit.max_abs_error_percent),
       pct(tf.torque.fit.max_abs_error_percent), acc.axial_mean_abs_error_percent, acc.torque_mean_abs_error_percent,
       pct(mf.axial.fit.mean_abs_error_percent), pct(mf.torque.fit.mean_abs_error_percent),
-      v.passed() ? "PASSED" : "FAILED", v.passed() ? "" : ": " + [&] {
-        std::string s;
-        for (const auto& f : v.failures) s += (s.empty() ? "" : "; ") + f;
-        return s;
-      }());
+      v.passed() ? "PASSED" : "FAILED", v.passed() ? "" : ": " + failures);
+}
+
+/// The report's calibration, leave-one-out and acceptance sections (Markdown).
+std::string calibration_markdown(const TrepanningValidation& v, const CaseInputs& in,
+                                 const std::vector<TrepanningObservation>& measured_rows,
+                                 const std::vector<double>& m_axial) {
+  std::string md = weighting_markdown(v, in, measured_rows, m_axial) + groups_markdown(v) + implied_markdown(v) +
+                   leave_one_out_markdown(v, measured_rows) + acceptance_markdown(v);
   // The LOO table header used PLplot escapes; plain text here.
   for (const char* escape : {"#d", "#u"}) {
     for (auto at = md.find(escape); at != std::string::npos; at = md.find(escape)) md.erase(at, 2);

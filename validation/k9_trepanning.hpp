@@ -9,6 +9,9 @@
 //      mean |error| must be at most the paper's own (axial 5.0 %, torque 6.7 %);
 //   3. writes a report (report.hpp) comparing the measured rows with the fitted model, its leave-one-out
 //      predictions and the paper's theory column, plus a calibration section.
+// The model, its fit and what the groups imply are the analytic library's (kerf/analytic/trepanning/trepanning.hpp:
+// calibrate_trepanning, implied_trepanning_material); this case reads the table, applies the bands and writes the
+// report.
 //
 //   kerf::TrepanningValidation v = kerf::run_k9_trepanning_validation("out/k9_trepanning");
 //   if (!v.passed()) for (auto& f : v.failures) fmt::print("{}\n", f);
