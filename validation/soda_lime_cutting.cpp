@@ -379,18 +379,14 @@ void seed000_trends(const std::map<std::string, ConditionResult>& results, const
   }
 }
 
-/// The seed case's statistics (validation/soda_lime_cutting/README.md), a reproduction of the paper's method: what
-/// is compared and why; the condition table with the spread over the packings, per unit width against the
-/// experiments and beside the paper's DEM; the trends against the experiments with their 95 % intervals (the
-/// verdicts); the bands where validation.json gives them (the fitted case: each check with its standard error and
-/// whether its verdict is resolved, a failure outside its band); the expected physics (reported); and a summary
-/// of what holds and what is not resolved. Returns the report's body (after the title) and fills `summary` and
-/// `failures` (bands only: a reproduction fails nothing).
-// Long (~200 lines) for a reason: the report reads top to bottom as its sections; its DEM inputs take hours to rerun,
-// so a split could not be proven bit-identical here (issue 39 left it whole).
-std::string replicates_report(const Spec& spec, const std::map<std::string, ConditionResult>& results,
-                              const Comparison& vs_experiment, const Comparison& vs_dem,
-                              std::vector<std::string>& failures, Json& summary) {
+/// A section of the report: its Markdown and its part of summary.json.
+struct ReportSection {
+  std::string md;
+  Json json;
+};
+
+/// The report's opening: the scene and its packings, validation.json's note, and what this case compares and why.
+std::string report_introduction(const Spec& spec) {
   std::string md = fmt::format(
       "kerf-dem, scene `{}` ({} replicates per condition, packing seeds 1..{}); forces per **1 mm** width (the DEM's "
       "out-of-plane thickness) unless stated. Experiments: Yang et al. 2018, Table 6, **25.4 mm** wide; the paper's "
@@ -412,49 +408,77 @@ std::string replicates_report(const Spec& spec, const std::map<std::string, Cond
       "- **The acceptance of the DEM's trends** is the steady-cut case's (`../soda_lime_cutting_steady/`): long cuts "
       "with a standard error for each mean, in two domains. This case's cuts are 1 mm workpieces whose means are "
       "mostly the entry's.\n\n";
-  md +=
+  return md;
+}
+
+/// One condition's row of the condition table (kerf-dem's forces with their spread over the packings, the
+/// references, kerf-dem over them, the cracks, the cut time) and its row of summary.json's levels.
+ReportSection condition_row(const Condition& c, const ConditionResult& r, const Comparison& vs_experiment,
+                            const Comparison& vs_dem) {
+  const auto [paper, experiment, per_mm] = reference_cells(c, vs_experiment, vs_dem);
+  // Trapezoidal grooves have neither reference: both ratios NaN ("—").
+  const bool has_reference = c.groove_shape != "trapezoidal";
+  const auto ref = [&](const Comparison& comparison, const std::string& key) {
+    return has_reference ? reference_mean(comparison, key, c.surface, c.depth_of_cut_mm) : kNaN;
+  };
+  const double exp_main = ref(vs_experiment, "main_force_per_width"),
+               exp_thrust = ref(vs_experiment, "thrust_force_per_width");
+  const double dem_main = ref(vs_dem, "main_force"), dem_thrust = ref(vs_dem, "thrust_force");
+  const double kerf_main = r.main_N / units::mm_to_m(r.width_mm), kerf_thrust = r.thrust_N / units::mm_to_m(r.width_mm);
+  ReportSection row;
+  row.md = fmt::format(
+      "| {} | {:.2f} ± {:.2f} | {:.2f} ± {:.2f} | {} | {} | {} | {}, {} | {}, {} | {:.0f} + {:.0f} ({:.0f} / {:.0f}) "
+      "| "
+      "{:.0f} | {:.0f}, {:.0f} | {:.0f} |\n",
+      c.name, r.main_N, r.main_std_N, r.thrust_N, r.thrust_std_N, paper, experiment, per_mm,
+      num(kerf_main / exp_main, 2), num(kerf_thrust / exp_thrust, 2), num(r.main_N / dem_main, 2),
+      num(r.thrust_N / dem_thrust, 2), r.cracks_tensile, r.cracks_shear, r.cracks_chip, r.cracks_subsurface,
+      r.subsurface_depth_um, r.cracks_subsurface_steady, r.subsurface_steady_depth_um, r.wall_time_s);
+  row.json = Json{{"condition", c.name},
+                  {"kerf_to_experiment_per_width_main", finite_or_null(kerf_main / exp_main)},
+                  {"kerf_to_experiment_per_width_thrust", finite_or_null(kerf_thrust / exp_thrust)},
+                  {"kerf_to_paper_dem_main", finite_or_null(r.main_N / dem_main)},
+                  {"kerf_to_paper_dem_thrust", finite_or_null(r.thrust_N / dem_thrust)}};
+  return row;
+}
+
+/// The condition table, one row per condition in validation.json's order, with the spread over the packings, per
+/// unit width against the experiments and beside the paper's DEM; its json: summary.json's levels.
+ReportSection condition_table(const Spec& spec, const std::map<std::string, ConditionResult>& results,
+                              const Comparison& vs_experiment, const Comparison& vs_dem) {
+  ReportSection table{
       "| condition | kerf-dem main (N) | kerf-dem thrust (N) | paper DEM main / thrust (N, 1 mm) | experiment main / "
       "thrust "
       "(N, 25.4 mm) | experiment per 1 mm (N) | kerf / experiment per mm: main, thrust | kerf / paper DEM: main, "
       "thrust | cracks tension + shear (chip / subsurface) | subsurface depth (um) | "
       "under the steady cut: subsurface cracks, depth (um) | cut time, sum over replicates (s) |\n"
-      "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
-  Json levels = Json::array();
+      "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n",
+      Json::array()};
   for (const auto& c : spec.conditions) {
-    const ConditionResult& r = results.at(c.name);
-    const auto [paper, experiment, per_mm] = reference_cells(c, vs_experiment, vs_dem);
-    // Trapezoidal grooves have neither reference: both ratios NaN ("—").
-    const bool has_reference = c.groove_shape != "trapezoidal";
-    const auto ref = [&](const Comparison& comparison, const std::string& key) {
-      return has_reference ? reference_mean(comparison, key, c.surface, c.depth_of_cut_mm) : kNaN;
-    };
-    const double exp_main = ref(vs_experiment, "main_force_per_width"),
-                 exp_thrust = ref(vs_experiment, "thrust_force_per_width");
-    const double dem_main = ref(vs_dem, "main_force"), dem_thrust = ref(vs_dem, "thrust_force");
-    const double kerf_main = r.main_N / units::mm_to_m(r.width_mm),
-                 kerf_thrust = r.thrust_N / units::mm_to_m(r.width_mm);
-    md += fmt::format(
-        "| {} | {:.2f} ± {:.2f} | {:.2f} ± {:.2f} | {} | {} | {} | {}, {} | {}, {} | {:.0f} + {:.0f} ({:.0f} / {:.0f}) "
-        "| "
-        "{:.0f} | {:.0f}, {:.0f} | {:.0f} |\n",
-        c.name, r.main_N, r.main_std_N, r.thrust_N, r.thrust_std_N, paper, experiment, per_mm,
-        num(kerf_main / exp_main, 2), num(kerf_thrust / exp_thrust, 2), num(r.main_N / dem_main, 2),
-        num(r.thrust_N / dem_thrust, 2), r.cracks_tensile, r.cracks_shear, r.cracks_chip, r.cracks_subsurface,
-        r.subsurface_depth_um, r.cracks_subsurface_steady, r.subsurface_steady_depth_um, r.wall_time_s);
-    levels.push_back(Json{{"condition", c.name},
-                          {"kerf_to_experiment_per_width_main", finite_or_null(kerf_main / exp_main)},
-                          {"kerf_to_experiment_per_width_thrust", finite_or_null(kerf_thrust / exp_thrust)},
-                          {"kerf_to_paper_dem_main", finite_or_null(r.main_N / dem_main)},
-                          {"kerf_to_paper_dem_thrust", finite_or_null(r.thrust_N / dem_thrust)}});
+    ReportSection row = condition_row(c, results.at(c.name), vs_experiment, vs_dem);
+    table.md += row.md;
+    table.json.push_back(std::move(row.json));
   }
-  md +=
+  table.md +=
       "\n± is the standard deviation over the replicates. Subsurface depth: the deepest crack below the cut line "
       "anywhere "
       "in the workpiece (often a breakout of its free corner at the entry); under the steady cut: the cracks below the "
       "surface machined during the steady part of the travel, the damage the steady cut leaves in the part.\n\n";
+  return table;
+}
 
-  // The trends against the experiments: the verdicts of a reproduction.
-  md += fmt::format(
+/// The trends against the experiments, the verdicts of a reproduction: the report's section, summary.json's trends
+/// and the trends (their `what`) by verdict.
+struct TrendsSection {
+  std::string md;
+  Json rows = Json::array();
+  std::map<std::string, std::vector<std::string>> by_verdict;
+};
+
+TrendsSection trends_section(const Spec& spec, const std::map<std::string, ConditionResult>& results,
+                             const Comparison& vs_experiment, const Comparison& vs_dem) {
+  TrendsSection s;
+  s.md = fmt::format(
       "## Trends against the experiments\n\n"
       "Each trend is a ratio of two condition means, its standard error propagated to first order (ratio × hypot of "
       "the two relative standard errors of the means over the {} packings), its 95 % interval value ± t standard "
@@ -463,128 +487,172 @@ std::string replicates_report(const Spec& spec, const std::map<std::string, Cond
       "DISAGREES: outside it, a resolved difference; UNRESOLVED: no standard error, or an interval too wide to tell; "
       "REPORTED: no experiment to compare. The paper's DEM's ratio (Table 4) is shown beside.\n\n",
       spec.replicates);
-  Json trends = Json::array();
-  std::map<std::string, std::vector<std::string>> by_verdict;
   seed000_trends(results, vs_experiment, vs_dem,
-                 [&](const std::string& id, const std::string& what, const Estimate& a, const Estimate& b,
-                     std::optional<double> experiment, std::optional<double> paper_dem) {
+                 [&s](const std::string& id, const std::string& what, const Estimate& a, const Estimate& b,
+                      std::optional<double> experiment, std::optional<double> paper_dem) {
                    TrendCheck t = trend_check(id, what, a, b, experiment, paper_dem);
-                   trends.push_back(t.row);
-                   md += t.line;
-                   by_verdict[t.verdict].push_back(what);
+                   s.rows.push_back(t.row);
+                   s.md += t.line;
+                   s.by_verdict[t.verdict].push_back(what);
                  });
+  return s;
+}
 
+/// The trends with this verdict (none: empty).
+std::vector<std::string> trends_with(const TrendsSection& trends, const std::string& verdict) {
+  const auto it = trends.by_verdict.find(verdict);
+  return it == trends.by_verdict.end() ? std::vector<std::string>{} : it->second;
+}
+
+/// The acceptance bands' checks as they are made: the report's lines, summary.json's checks, and a line in
+/// `failures` for each check failed. Each check carries the standard error of its value (from kerf-dem's packings
+/// and, against the paper's DEM, from the paper's three), and says whether the verdict is resolved: the value lies
+/// two standard errors or more from the band's edge. A verdict that is not resolved could turn with other packings.
+struct BandChecks {
+  explicit BandChecks(std::vector<std::string>& failed) : failures(failed) {}
+
+  std::vector<std::string>& failures;
+  std::string md;
   Json checks = Json::array();
-  if (spec.bands) {
-    md += "\n## Acceptance bands\n\n";
-    md += fmt::format(
-        "Each value with its standard error (kerf-dem's over its {} packings and, against the paper's DEM, "
-        "the paper's over its three); a verdict less than two standard errors from the band's edge is not "
-        "resolved by these packings (`run_validation CASE OUT --replicates N` runs more).\n\n",
-        spec.replicates);
-    // Each check carries the standard error of its value (from kerf-dem's packings and, against the paper's DEM,
-    // from the paper's three), and says whether the verdict is resolved: the value lies two standard errors or
-    // more from the band's edge. A verdict that is not resolved could turn with other packings.
-    const auto check = [&](const std::string& what, double value, double standard_error, double distance_to_edge,
-                           bool pass, const std::string& band, bool fitted = false) {
-      const bool resolved = std::abs(distance_to_edge) >= 2 * standard_error;
-      const std::string spread = fmt::format("{:.4g} ± {:.2g} (standard error; {})", value, standard_error,
-                                             resolved ? "resolved: 2 or more of them from the band's edge"
-                                                      : "not resolved: within 2 of them of the band's edge");
-      Json row{{"check", what},
-               {"value", value},
-               {"standard_error", standard_error},
-               {"band", band},
-               {"resolved", resolved}};
-      if (fitted) {
-        row["fitted"] = true;
-        checks.push_back(row);
-        md += fmt::format(
-            "- FITTED **{}**: {} (band: {}; the material was fitted to this force: it shows the fit, "
-            "not the model, and counts neither way)\n",
-            what, spread, band);
-        return;
-      }
-      row["passed"] = pass;
+
+  /// One check; `fitted`: the force the material was fitted to, reported as FITTED, neither passed nor failed.
+  void add(const std::string& what, double value, double standard_error, double distance_to_edge, bool pass,
+           const std::string& band, bool fitted = false) {
+    const bool resolved = std::abs(distance_to_edge) >= 2 * standard_error;
+    const std::string spread = fmt::format("{:.4g} ± {:.2g} (standard error; {})", value, standard_error,
+                                           resolved ? "resolved: 2 or more of them from the band's edge"
+                                                    : "not resolved: within 2 of them of the band's edge");
+    Json row{
+        {"check", what}, {"value", value}, {"standard_error", standard_error}, {"band", band}, {"resolved", resolved}};
+    if (fitted) {
+      row["fitted"] = true;
       checks.push_back(row);
-      md += fmt::format("- {} **{}**: {} (band: {})\n", pass ? "PASS" : "FAIL", what, spread, band);
-      if (!pass) failures.push_back(fmt::format("{} = {:.4g} (band: {})", what, value, band));
-    };
-    for (double depth : {0.1, 0.2}) {
-      const ConditionResult* regular = find_condition(results, "none", depth);
-      const ConditionResult* grooved = find_condition(results, "rectangular", depth);
-      if (regular) {
-        for (const std::string label : {"main", "thrust"}) {
-          const GroupComparison& g = group_of(vs_dem, label + "_force", "regular", depth);
-          const double paper = g.measured_stats.mean, error = g.error_percent / 100,
-                       band = spec.regular_max_error_percent / 100;
-          const Estimate paper_mean{
-              paper, g.measured_stats.standard_deviation / std::sqrt(static_cast<double>(g.measured_stats.n))};
-          // error = kerf / paper - 1: its standard error is the ratio's.
-          const double error_se =
-              ratio_of(label == "main" ? regular->main() : regular->thrust(), paper_mean).standard_error;
-          check(fmt::format("regular {} mm: {} force vs the paper's DEM mean ({:.2f} N), relative error", depth, label,
-                            paper),
-                error, error_se, std::abs(error) - band, std::abs(error) <= band,
-                fmt::format("|error| <= {:g} %", spec.regular_max_error_percent),
-                label == spec.fitted_force && std::abs(depth - spec.fitted_depth_of_cut_mm) < 1e-9);
-        }
-      }
-      if (regular && grooved) {
-        const Estimate ratio = ratio_of(grooved->main(), regular->main());
-        check(fmt::format("grooved / regular main force at {} mm", depth), ratio.value, ratio.standard_error,
-              ratio.value - spec.grooved_ratio_max, ratio.value < spec.grooved_ratio_max,
-              fmt::format("< {:.3f}", spec.grooved_ratio_max));
-      }
+      md += fmt::format(
+          "- FITTED **{}**: {} (band: {}; the material was fitted to this force: it shows the fit, "
+          "not the model, and counts neither way)\n",
+          what, spread, band);
+      return;
     }
+    row["passed"] = pass;
+    checks.push_back(row);
+    md += fmt::format("- {} **{}**: {} (band: {})\n", pass ? "PASS" : "FAIL", what, spread, band);
+    if (!pass) failures.push_back(fmt::format("{} = {:.4g} (band: {})", what, value, band));
   }
-  md += "\n## Expected physics and beyond the paper (reported, not bands)\n\n";
-  Json physics = Json::object();
-  if (const auto* a = find_condition(results, "none", 0.1), *b = find_condition(results, "none", 0.2); a && b) {
-    const Estimate main = ratio_of(b->main(), a->main()), thrust = ratio_of(b->thrust(), a->thrust());
-    md += fmt::format(
-        "- Regular, 0.1 -> 0.2 mm: main force {} ± {:.0f} %, thrust {} ± {:.0f} % (standard errors; the "
-        "paper's DEM: {}, {}).\n",
-        pct(main.value - 1), 100 * main.standard_error, pct(thrust.value - 1), 100 * thrust.standard_error,
-        pct(reference_mean(vs_dem, "main_force", "regular", 0.2) /
-                reference_mean(vs_dem, "main_force", "regular", 0.1) -
-            1),
-        pct(reference_mean(vs_dem, "thrust_force", "regular", 0.2) /
-                reference_mean(vs_dem, "thrust_force", "regular", 0.1) -
-            1));
-    physics["regular_main_force_change_0.1_to_0.2"] = b->main_N / a->main_N - 1;
+};
+
+/// The regular cut's band at one depth: kerf-dem's main and thrust forces against the paper's DEM mean, the
+/// relative error within spec.regular_max_error_percent (FITTED: the force validation.json says was fitted).
+void regular_force_checks(const Spec& spec, const ConditionResult& regular, double depth, const Comparison& vs_dem,
+                          BandChecks& bands) {
+  for (const std::string label : {"main", "thrust"}) {
+    const GroupComparison& g = group_of(vs_dem, label + "_force", "regular", depth);
+    const double paper = g.measured_stats.mean, error = g.error_percent / 100,
+                 band = spec.regular_max_error_percent / 100;
+    const Estimate paper_mean{paper,
+                              g.measured_stats.standard_deviation / std::sqrt(static_cast<double>(g.measured_stats.n))};
+    // error = kerf / paper - 1: its standard error is the ratio's.
+    const double error_se = ratio_of(label == "main" ? regular.main() : regular.thrust(), paper_mean).standard_error;
+    bands.add(
+        fmt::format("regular {} mm: {} force vs the paper's DEM mean ({:.2f} N), relative error", depth, label, paper),
+        error, error_se, std::abs(error) - band, std::abs(error) <= band,
+        fmt::format("|error| <= {:g} %", spec.regular_max_error_percent),
+        label == spec.fitted_force && std::abs(depth - spec.fitted_depth_of_cut_mm) < 1e-9);
   }
+}
+
+/// The grooves' band at one depth: grooved / regular main force below spec.grooved_ratio_max.
+void grooved_ratio_check(const Spec& spec, const ConditionResult& grooved, const ConditionResult& regular, double depth,
+                         BandChecks& bands) {
+  const Estimate ratio = ratio_of(grooved.main(), regular.main());
+  bands.add(fmt::format("grooved / regular main force at {} mm", depth), ratio.value, ratio.standard_error,
+            ratio.value - spec.grooved_ratio_max, ratio.value < spec.grooved_ratio_max,
+            fmt::format("< {:.3f}", spec.grooved_ratio_max));
+}
+
+/// The acceptance bands where validation.json gives them (the fitted case; else an empty section): each check with
+/// its standard error and whether its verdict is resolved, a failure outside its band added to `failures`; its
+/// json: summary.json's checks.
+ReportSection acceptance_bands(const Spec& spec, const std::map<std::string, ConditionResult>& results,
+                               const Comparison& vs_dem, std::vector<std::string>& failures) {
+  if (!spec.bands) return {"", Json::array()};
+  BandChecks bands{failures};
+  bands.md = "\n## Acceptance bands\n\n";
+  bands.md += fmt::format(
+      "Each value with its standard error (kerf-dem's over its {} packings and, against the paper's DEM, "
+      "the paper's over its three); a verdict less than two standard errors from the band's edge is not "
+      "resolved by these packings (`run_validation CASE OUT --replicates N` runs more).\n\n",
+      spec.replicates);
   for (double depth : {0.1, 0.2}) {
-    const ConditionResult *regular = find_condition(results, "none", depth),
-                          *rect = find_condition(results, "rectangular", depth),
-                          *trap = find_condition(results, "trapezoidal", depth);
-    if (regular && rect)
-      md += fmt::format(
-          "- {} mm, grooved vs regular: cracks {:.0f} vs {:.0f} (subsurface {:.0f} vs {:.0f}), subsurface depth "
-          "{:.0f} vs {:.0f} um; under the steady cut {:.0f} vs {:.0f} subsurface cracks, {:.0f} vs {:.0f} um "
-          "deep.\n",
-          depth, rect->cracks_tensile + rect->cracks_shear, regular->cracks_tensile + regular->cracks_shear,
-          rect->cracks_subsurface, regular->cracks_subsurface, rect->subsurface_depth_um, regular->subsurface_depth_um,
-          rect->cracks_subsurface_steady, regular->cracks_subsurface_steady, rect->subsurface_steady_depth_um,
-          regular->subsurface_steady_depth_um);
-    if (regular && rect && regular->subsurface_steady_depth_um > 0)
-      physics[fmt::format("grooved_vs_regular_steady_subsurface_depth_change_{}", depth)] =
-          rect->subsurface_steady_depth_um / regular->subsurface_steady_depth_um - 1;
-    if (rect && trap) {
-      md += fmt::format(
-          "- {} mm, trapezoidal vs rectangular grooves (the paper's suspected cause of its thrust error): thrust "
-          "{:.2f} vs {:.2f} N ({}), main {:.2f} vs {:.2f} N.\n",
-          depth, trap->thrust_N, rect->thrust_N, pct(trap->thrust_N / rect->thrust_N - 1), trap->main_N, rect->main_N);
-      physics[fmt::format("trapezoidal_vs_rectangular_thrust_change_{}", depth)] = trap->thrust_N / rect->thrust_N - 1;
-    }
+    const ConditionResult* regular = find_condition(results, "none", depth);
+    const ConditionResult* grooved = find_condition(results, "rectangular", depth);
+    if (regular) regular_force_checks(spec, *regular, depth, vs_dem, bands);
+    if (regular && grooved) grooved_ratio_check(spec, *grooved, *regular, depth, bands);
   }
-  // What holds and what does not, from the trends' verdicts above (not fixed text).
-  md += "\n## What this reproduction shows\n\n";
+  return {bands.md, bands.checks};
+}
+
+/// The regular cut's depth effect, 0.1 -> 0.2 mm, beside the paper's DEM's (where the case runs both depths).
+void depth_effect_lines(const std::map<std::string, ConditionResult>& results, const Comparison& vs_dem,
+                        ReportSection& physics) {
+  const auto *a = find_condition(results, "none", 0.1), *b = find_condition(results, "none", 0.2);
+  if (!a || !b) return;
+  const Estimate main = ratio_of(b->main(), a->main()), thrust = ratio_of(b->thrust(), a->thrust());
+  physics.md += fmt::format(
+      "- Regular, 0.1 -> 0.2 mm: main force {} ± {:.0f} %, thrust {} ± {:.0f} % (standard errors; the "
+      "paper's DEM: {}, {}).\n",
+      pct(main.value - 1), 100 * main.standard_error, pct(thrust.value - 1), 100 * thrust.standard_error,
+      pct(reference_mean(vs_dem, "main_force", "regular", 0.2) / reference_mean(vs_dem, "main_force", "regular", 0.1) -
+          1),
+      pct(reference_mean(vs_dem, "thrust_force", "regular", 0.2) /
+              reference_mean(vs_dem, "thrust_force", "regular", 0.1) -
+          1));
+  physics.json["regular_main_force_change_0.1_to_0.2"] = b->main_N / a->main_N - 1;
+}
+
+/// At one depth: grooved (rectangular) vs regular cracks and damage, and trapezoidal vs rectangular grooves' forces
+/// (the conditions the case runs).
+void groove_effect_lines(const std::map<std::string, ConditionResult>& results, double depth, ReportSection& physics) {
+  const ConditionResult *regular = find_condition(results, "none", depth),
+                        *rect = find_condition(results, "rectangular", depth),
+                        *trap = find_condition(results, "trapezoidal", depth);
+  if (regular && rect)
+    physics.md += fmt::format(
+        "- {} mm, grooved vs regular: cracks {:.0f} vs {:.0f} (subsurface {:.0f} vs {:.0f}), subsurface depth "
+        "{:.0f} vs {:.0f} um; under the steady cut {:.0f} vs {:.0f} subsurface cracks, {:.0f} vs {:.0f} um "
+        "deep.\n",
+        depth, rect->cracks_tensile + rect->cracks_shear, regular->cracks_tensile + regular->cracks_shear,
+        rect->cracks_subsurface, regular->cracks_subsurface, rect->subsurface_depth_um, regular->subsurface_depth_um,
+        rect->cracks_subsurface_steady, regular->cracks_subsurface_steady, rect->subsurface_steady_depth_um,
+        regular->subsurface_steady_depth_um);
+  if (regular && rect && regular->subsurface_steady_depth_um > 0)
+    physics.json[fmt::format("grooved_vs_regular_steady_subsurface_depth_change_{}", depth)] =
+        rect->subsurface_steady_depth_um / regular->subsurface_steady_depth_um - 1;
+  if (rect && trap) {
+    physics.md += fmt::format(
+        "- {} mm, trapezoidal vs rectangular grooves (the paper's suspected cause of its thrust error): thrust "
+        "{:.2f} vs {:.2f} N ({}), main {:.2f} vs {:.2f} N.\n",
+        depth, trap->thrust_N, rect->thrust_N, pct(trap->thrust_N / rect->thrust_N - 1), trap->main_N, rect->main_N);
+    physics.json[fmt::format("trapezoidal_vs_rectangular_thrust_change_{}", depth)] =
+        trap->thrust_N / rect->thrust_N - 1;
+  }
+}
+
+/// The expected physics and what goes beyond the paper, reported, not bands; its json: summary.json's physics.
+ReportSection expected_physics(const std::map<std::string, ConditionResult>& results, const Comparison& vs_dem) {
+  ReportSection physics{"\n## Expected physics and beyond the paper (reported, not bands)\n\n", Json::object()};
+  depth_effect_lines(results, vs_dem, physics);
+  for (double depth : {0.1, 0.2}) groove_effect_lines(results, depth, physics);
+  return physics;
+}
+
+/// What holds and what does not, from the trends' verdicts (not fixed text).
+std::string what_this_shows(const Spec& spec, const TrendsSection& trends) {
   const auto list = [&](const std::string& verdict) {
     std::string out;
-    for (const auto& what : by_verdict[verdict]) out += (out.empty() ? "" : "; ") + what;
+    for (const auto& what : trends_with(trends, verdict)) out += (out.empty() ? "" : "; ") + what;
     return out.empty() ? std::string("none") : out;
   };
+  std::string md = "\n## What this reproduction shows\n\n";
   md += fmt::format("- Agrees with the experiments within its 95 % interval: {}.\n", list("AGREES"));
   md += fmt::format("- Differs from the experiments, resolved: {}.\n", list("DISAGREES"));
   md += fmt::format("- Not resolved (no standard error, or an interval too wide to tell): {}.\n", list("UNRESOLVED"));
@@ -592,23 +660,44 @@ std::string replicates_report(const Spec& spec, const std::map<std::string, Cond
     md +=
         "- No pass or fail: a reproduction of the paper's method (why: above). The acceptance of the trends is "
         "`../soda_lime_cutting_steady/`'s.\n";
-  Json verdicts = Json::object();
-  for (const char* v : {"AGREES", "DISAGREES", "UNRESOLVED"}) verdicts[v] = by_verdict[v];
-  summary = Json{{"role", spec.bands ? "bands" : "reproduction"},
-                 {"trends", trends},
-                 {"trend_verdicts", verdicts},
-                 {"levels", levels},
-                 {"checks", checks},
-                 {"physics", physics}};
   return md;
 }
 
-}  // namespace
+/// summary.json but its verdict ("passed", run_soda_lime_cutting_validation's): the case's role, the trends and
+/// their verdicts, the levels (the condition table's), the band checks and the physics.
+Json summary_document(const Spec& spec, const TrendsSection& trends, const Json& levels, const Json& checks,
+                      const Json& physics) {
+  Json verdicts = Json::object();
+  for (const char* v : {"AGREES", "DISAGREES", "UNRESOLVED"}) verdicts[v] = trends_with(trends, v);
+  return Json{{"role", spec.bands ? "bands" : "reproduction"},
+              {"trends", trends.rows},
+              {"trend_verdicts", verdicts},
+              {"levels", levels},
+              {"checks", checks},
+              {"physics", physics}};
+}
 
-// Long (~130 lines) for a reason: four numbered steps (runs, table, comparisons, trends) over one DEM study whose
-// outputs take hours to reproduce, so a split could not be proven bit-identical here (issue 39 left it whole).
-CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, const std::string& case_name,
-                                                   int replicates) {
+/// The seed case's statistics (validation/soda_lime_cutting/README.md), a reproduction of the paper's method, its
+/// sections top to bottom: what is compared and why; the condition table with the spread over the packings, per
+/// unit width against the experiments and beside the paper's DEM; the trends against the experiments with their
+/// 95 % intervals (the verdicts); the bands where validation.json gives them (the fitted case: each check with its
+/// standard error and whether its verdict is resolved, a failure outside its band); the expected physics
+/// (reported); and a summary of what holds and what is not resolved. Returns the report's body (after the title)
+/// and fills `summary` and `failures` (bands only: a reproduction fails nothing).
+std::string replicates_report(const Spec& spec, const std::map<std::string, ConditionResult>& results,
+                              const Comparison& vs_experiment, const Comparison& vs_dem,
+                              std::vector<std::string>& failures, Json& summary) {
+  const std::string introduction = report_introduction(spec);
+  const ReportSection table = condition_table(spec, results, vs_experiment, vs_dem);
+  const TrendsSection trends = trends_section(spec, results, vs_experiment, vs_dem);
+  const ReportSection bands = acceptance_bands(spec, results, vs_dem, failures);
+  const ReportSection physics = expected_physics(results, vs_dem);
+  summary = summary_document(spec, trends, table.json, bands.json, physics.json);
+  return introduction + table.md + trends.md + bands.md + physics.md + what_this_shows(spec, trends);
+}
+
+/// validation/<case_name>/validation.json, its packings per condition replaced by `replicates` unless 0.
+Spec case_spec(const std::string& case_name, int replicates) {
   const fs::path case_dir = data_directory().parent_path() / "validation" / case_name;
   Spec spec = read_spec(case_dir);
   if (replicates != 0) {
@@ -617,32 +706,24 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
                        fmt::format("a number of packings from {} to {}", kMinReplicates, kMaxReplicates));
     spec.replicates = replicates;
   }
-  CuttingValidation v;
+  return spec;
+}
 
-  // 1. The runs: one study (kerf/dem/study/study.hpp) of the conditions, each on spec.replicates packings, in
-  // OUT/study: items side by side, one thread each (18 cuts in 9 rounds on 2 cores), finished items reused, so
-  // an interrupted validation resumes where it stopped. OUT/study/study.json is that study, for kerf-dem study.
+/// The study of the cuts (OUT/study/study.json): each condition of validation.json on spec.replicates packings.
+Json study_document(const Spec& spec, const std::string& case_name) {
   Json conditions = Json::array();
   for (const auto& c : spec.conditions)
     conditions.push_back(Json{{"cut.depth_of_cut_mm", c.depth_of_cut_mm}, {"grooves.shape", c.groove_shape}});
-  const Json study_doc{
-      {"description", fmt::format("The {} validation's cuts: each condition of validation.json on {} packings",
-                                  case_name, spec.replicates)},
-      {"scene", fs::absolute(spec.scene).string()},
-      {"conditions", {{"list", conditions}}},
-      {"replicates", {{"policy", "fixed"}, {"count", spec.replicates}}}};
-  const fs::path study_dir = out_dir / "study";
-  const dem::StudySpec study = dem::read_study(study_doc, study_dir / "study.json");
-  fs::create_directories(study_dir);
-  write_file_atomically(study_dir / "study.json", study_doc.dump(2) + "\n");
-  dem::StudyOptions options;
-  options.out = study_dir;
-  options.stop_at_first_failure = true;  // the validation needs every cut
-  options.log_lines = true;
-  options.command_line = fmt::format("kerf-dem study {} --out {}", quoted(study_dir / "study.json"), quoted(study_dir));
-  fmt::print("{}\n", options.command_line);  // the same runs from the command line
-  std::fflush(stdout);
-  const dem::StudyOutcome outcome = dem::run_study_local(study, options);
+  return Json{{"description", fmt::format("The {} validation's cuts: each condition of validation.json on {} packings",
+                                          case_name, spec.replicates)},
+              {"scene", fs::absolute(spec.scene).string()},
+              {"conditions", {{"list", conditions}}},
+              {"replicates", {{"policy", "fixed"}, {"count", spec.replicates}}}};
+}
+
+/// Each condition's replicate results, by its name, from the summaries of the study's items.
+std::map<std::string, ConditionResult> collect_results(const Spec& spec, const dem::StudySpec& study,
+                                                       const dem::StudyOutcome& outcome, const fs::path& study_dir) {
   std::map<std::string, ConditionResult> results;
   for (std::size_t ci = 0; ci < spec.conditions.size(); ++ci) {
     std::vector<Json> items;
@@ -656,9 +737,65 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
     ConditionResult& r = results[spec.conditions[ci].name] = collect(spec.conditions[ci], items);
     r.directories = std::move(directories);
   }
+  return results;
+}
 
-  // 2. The kerf-dem table: one row per replicate, and the means that the report layer compares. Trapezoidal
-  // grooves go beyond the paper (no measured counterpart): their rows carry their own source.
+/// 1. The runs: one study (kerf/dem/study/study.hpp) of the conditions, each on spec.replicates packings, in
+/// OUT/study: items side by side, one thread each (18 cuts in 9 rounds on 2 cores), finished items reused, so
+/// an interrupted validation resumes where it stopped. OUT/study/study.json is that study, for kerf-dem study.
+std::map<std::string, ConditionResult> run_cuts(const Spec& spec, const std::string& case_name,
+                                                const fs::path& out_dir) {
+  const Json study_doc = study_document(spec, case_name);
+  const fs::path study_dir = out_dir / "study";
+  const dem::StudySpec study = dem::read_study(study_doc, study_dir / "study.json");
+  fs::create_directories(study_dir);
+  write_file_atomically(study_dir / "study.json", study_doc.dump(2) + "\n");
+  dem::StudyOptions options;
+  options.out = study_dir;
+  options.stop_at_first_failure = true;  // the validation needs every cut
+  options.log_lines = true;
+  options.command_line = fmt::format("kerf-dem study {} --out {}", quoted(study_dir / "study.json"), quoted(study_dir));
+  fmt::print("{}\n", options.command_line);  // the same runs from the command line
+  std::fflush(stdout);
+  const dem::StudyOutcome outcome = dem::run_study_local(study, options);
+  return collect_results(spec, study, outcome, study_dir);
+}
+
+/// The source column of a condition's rows: trapezoidal grooves go beyond the paper (no measured counterpart), so
+/// their rows carry their own.
+std::string source_of(const Condition& c) {
+  return c.groove_shape == "trapezoidal" ? "kerf_dem_trapezoidal" : "kerf_dem";
+}
+
+/// A condition's rows of kerf_dem_replicates.csv: one per replicate.
+std::string replicate_rows(const Condition& c, const ConditionResult& r) {
+  std::string rows;
+  for (const auto& row : r.replicates) {
+    std::vector<std::string> fields{source_of(c),
+                                    c.surface,
+                                    c.groove_shape,
+                                    csv_number(c.depth_of_cut_mm),
+                                    std::to_string(row.at("replicate").get<int>()),
+                                    std::to_string(row.at("seed").get<long long>())};
+    for (const auto& column : kReplicateColumns) fields.push_back(csv_number(row.at(column)));
+    rows += csv_line(fields);
+  }
+  return rows;
+}
+
+/// A condition's row of kerf_dem_means.csv: the means that the report layer compares.
+std::string means_row(const Condition& c, const ConditionResult& r) {
+  return csv_line({source_of(c), c.surface, c.groove_shape, csv_number(c.depth_of_cut_mm), csv_number(r.width_mm),
+                   csv_number(r.main_N), csv_number(r.main_std_N), csv_number(r.thrust_N), csv_number(r.thrust_std_N),
+                   csv_number(r.cracks_tensile), csv_number(r.cracks_shear), csv_number(r.cracks_chip),
+                   csv_number(r.cracks_subsurface), csv_number(r.subsurface_depth_um),
+                   csv_number(r.cracks_subsurface_steady), csv_number(r.subsurface_steady_depth_um)});
+}
+
+/// 2. The kerf-dem tables: kerf_dem_replicates.csv, one row per replicate, and kerf_dem_means.csv, the means that
+/// the report layer compares. Returns the two files.
+std::vector<fs::path> write_kerf_dem_tables(const Spec& spec, const std::map<std::string, ConditionResult>& results,
+                                            const fs::path& out_dir) {
   std::vector<std::string> header{"source", "surface", "groove_shape", "depth_of_cut_mm", "replicate", "seed"};
   header.insert(header.end(), kReplicateColumns.begin(), kReplicateColumns.end());
   std::string rows = csv_line(header);
@@ -669,29 +806,20 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
        std::string(k::cracks_chip), std::string(k::cracks_subsurface), std::string(k::subsurface_damage_depth_um),
        std::string(k::cracks_subsurface_steady), std::string(k::subsurface_damage_depth_steady_um)});
   for (const auto& c : spec.conditions) {
-    const ConditionResult& r = results.at(c.name);
-    const std::string source = c.groove_shape == "trapezoidal" ? "kerf_dem_trapezoidal" : "kerf_dem";
-    for (const auto& row : r.replicates) {
-      std::vector<std::string> fields{source,
-                                      c.surface,
-                                      c.groove_shape,
-                                      csv_number(c.depth_of_cut_mm),
-                                      std::to_string(row.at("replicate").get<int>()),
-                                      std::to_string(row.at("seed").get<long long>())};
-      for (const auto& column : kReplicateColumns) fields.push_back(csv_number(row.at(column)));
-      rows += csv_line(fields);
-    }
-    means += csv_line({source, c.surface, c.groove_shape, csv_number(c.depth_of_cut_mm), csv_number(r.width_mm),
-                       csv_number(r.main_N), csv_number(r.main_std_N), csv_number(r.thrust_N),
-                       csv_number(r.thrust_std_N), csv_number(r.cracks_tensile), csv_number(r.cracks_shear),
-                       csv_number(r.cracks_chip), csv_number(r.cracks_subsurface), csv_number(r.subsurface_depth_um),
-                       csv_number(r.cracks_subsurface_steady), csv_number(r.subsurface_steady_depth_um)});
+    rows += replicate_rows(c, results.at(c.name));
+    means += means_row(c, results.at(c.name));
   }
   write_file_atomically(out_dir / "kerf_dem_replicates.csv", rows);
   write_file_atomically(out_dir / "kerf_dem_means.csv", means);
-  v.files = {out_dir / "kerf_dem_replicates.csv", out_dir / "kerf_dem_means.csv"};
+  return {out_dir / "kerf_dem_replicates.csv", out_dir / "kerf_dem_means.csv"};
+}
 
-  // 3. Through the report layer: against the experiments (both width views) and against the paper's DEM.
+/// 3. Through the report layer: against the experiments (both width views; "vs_experiment") and against the
+/// paper's DEM ("vs_paper_dem"), each a comparison document OUT/<name>.json and its report in OUT/<name>/, whose
+/// files are added to `files`. Measured: the experiments or the paper's DEM; prediction: kerf-dem (in the former,
+/// beside the paper's DEM).
+std::map<std::string, Comparison> compare_with_references(const Spec& spec, const fs::path& out_dir,
+                                                          std::vector<fs::path>& files) {
   const fs::path means_csv = fs::absolute(out_dir / "kerf_dem_means.csv");
   std::map<std::string, Comparison> comparisons;
   for (const auto& [name, against_dem] :
@@ -704,14 +832,35 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
         against_dem);
     write_file_atomically(out_dir / (name + ".json"), doc.dump(2) + "\n");
     const Comparison& comparison = comparisons[name] = run_comparison(parse_comparison_config(doc, out_dir));
-    for (const auto& f : write_report(comparison, out_dir / name)) v.files.push_back(f);
+    for (const auto& f : write_report(comparison, out_dir / name)) files.push_back(f);
   }
-  // The reference means below come from these comparisons: measured = experiments (vs_experiment) or the
-  // paper's DEM (vs_paper_dem), prediction = kerf-dem in the latter.
+  return comparisons;
+}
+
+/// The snapshots of regular_0.1 and grooved_0.1 (replicate 1's picture, where the case runs them and the run drew
+/// one): copied beside report.md as snapshot_<name>.png, and the report's lines that show them.
+std::string snapshots(const std::map<std::string, ConditionResult>& results, const fs::path& out_dir) {
+  std::string md;
+  for (const char* name : {"regular_0.1", "grooved_0.1"}) {
+    const auto r = results.find(name);
+    if (r == results.end() || r->second.directories.empty()) continue;
+    const fs::path picture = out_dir / r->second.directories.front() / "specimen.png";
+    if (!fs::exists(picture)) continue;
+    fs::copy_file(picture, out_dir / fmt::format("snapshot_{}.png", name), fs::copy_options::overwrite_existing);
+    md += fmt::format("\n![{}, replicate 1](snapshot_{}.png)\n", name, name);
+  }
+  return md;
+}
+
+/// 4. The report, OUT/report.md: the trends, the bands where there are, and the expected physics
+/// (replicates_report), the links to the other outputs, the snapshots and the verdict; and OUT/summary.json. The
+/// reference means come from the comparisons: measured = experiments (vs_experiment) or the paper's DEM
+/// (vs_paper_dem), prediction = kerf-dem in the latter. Sets v.judged, fills v.failures and adds the two files.
+void write_validation_report(const Spec& spec, const std::map<std::string, ConditionResult>& results,
+                             const std::map<std::string, Comparison>& comparisons, const fs::path& out_dir,
+                             CuttingValidation& v) {
   const Comparison& vs_experiment = comparisons.at("vs_experiment");
   const Comparison& vs_dem = comparisons.at("vs_paper_dem");
-
-  // 4. The trends, the bands where there are, and the expected physics.
   Json summary_doc;
   std::string md = "# Validation: soda-lime glass, orthogonal cutting (Yang et al. 2018)\n\n" +
                    replicates_report(spec, results, vs_experiment, vs_dem, v.failures, summary_doc);
@@ -721,14 +870,7 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
       "results: `kerf_dem_replicates.csv`; each run's forces, cracks and picture: "
       "`study/items/condition_<c>_seed_<s>/` (the conditions in validation.json's order; `study/items.csv` lists "
       "them).\n";
-  for (const char* name : {"regular_0.1", "grooved_0.1"}) {
-    const auto r = results.find(name);
-    if (r == results.end() || r->second.directories.empty()) continue;
-    const fs::path picture = out_dir / r->second.directories.front() / "specimen.png";
-    if (!fs::exists(picture)) continue;
-    fs::copy_file(picture, out_dir / fmt::format("snapshot_{}.png", name), fs::copy_options::overwrite_existing);
-    md += fmt::format("\n![{}, replicate 1](snapshot_{}.png)\n", name, name);
-  }
+  md += snapshots(results, out_dir);
   v.judged = spec.bands;
   md += v.judged ? fmt::format("\n**{}**\n", v.failures.empty() ? "PASSED" : "FAILED")
                  : std::string("\n**REPORTED** (a reproduction: no pass or fail)\n");
@@ -737,6 +879,19 @@ CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, cons
   write_file_atomically(out_dir / "summary.json", summary_doc.dump(2) + "\n");
   v.files.push_back(out_dir / "report.md");
   v.files.push_back(out_dir / "summary.json");
+}
+
+}  // namespace
+
+CuttingValidation run_soda_lime_cutting_validation(const fs::path& out_dir, const std::string& case_name,
+                                                   int replicates) {
+  // The four steps above, in order: the runs, the kerf-dem tables, the comparisons, the report.
+  const Spec spec = case_spec(case_name, replicates);
+  const std::map<std::string, ConditionResult> results = run_cuts(spec, case_name, out_dir);
+  CuttingValidation v;
+  v.files = write_kerf_dem_tables(spec, results, out_dir);
+  const std::map<std::string, Comparison> comparisons = compare_with_references(spec, out_dir, v.files);
+  write_validation_report(spec, results, comparisons, out_dir, v);
   return v;
 }
 
