@@ -10,6 +10,7 @@
 
     from kerf.records import read_record, per_width
     cuts = read_record("data/studies/results/seed000_steady.csv")   # {(domain, surface, depth_mm): {seed: row}}
+    by = read_record("data/studies/results/issue54_edge_zone_steady.csv", by_variant=True)  # {"zone on": cuts, ...}
 """
 import csv
 import json
@@ -51,11 +52,33 @@ def cutting_force_column(names):
     return F.cutting_force_N if F.cutting_force_N in names else F.main_force_N
 
 
-def read_record(path, cuts=None):
+# A record's columns that choose the model (a study's tags that its conditions differ in beside the condition's own:
+# domain, surface, depth), each with the name the reports give it. A cut's *variant* is its values of those its record
+# has, in this order ("zone on, layer_factor 2.46"; "" where it has none). A new model choice is one more entry here.
+MODEL_CHOICES = (("edge_zone", "zone"), ("layer_factor", "layer_factor"))
+
+
+def variant_of(row):
+    """The model variant of a record's row (or a study condition's tags): 'zone off', 'zone on, layer_factor 2.46', ''
+    for a row with no model-choice column (MODEL_CHOICES) or only empty ones; numbers as %g."""
+    parts = []
+    for column, name in MODEL_CHOICES:
+        value = row.get(column, "")
+        if isinstance(value, (int, float)) and not isinstance(value, bool):
+            if math.isfinite(value):
+                parts.append(f"{name} {value:g}")
+        elif value not in ("", None):
+            parts.append(f"{name} {str(value).lower() if isinstance(value, bool) else value}")
+    return ", ".join(parts)
+
+
+def read_record(path, cuts=None, by_variant=False):
     """{(domain, surface, depth_mm): {seed: row}} with numbers as floats, added to `cuts` where given (records merge:
     one model choice's cuts spread over two studies). Two cuts of one (domain, surface, depth) on one packing, in this
     record or against `cuts` (conditions that differ in another tag, e.g. the disk size), are an error (ValueError
-    naming them): kept, one would silently replace the other."""
+    naming them): kept, one would silently replace the other. by_variant: {variant: {(domain, surface, depth_mm):
+    {seed: row}}} instead, the cuts split by their model variant (variant_of: the record's model-choice columns; ''
+    for a record without any), so that only two cuts of one variant, condition and packing are an error."""
     cuts = {} if cuts is None else cuts
     with open(path, newline="") as f:
         for row in csv.DictReader(f):
@@ -68,19 +91,21 @@ def read_record(path, cuts=None):
                     values[k] = v
             both_names(values)
             seed = int(float(row["seed"]))
-            mine = cuts.setdefault(key, {})
+            variant = variant_of(values) if by_variant else ""
+            mine = (cuts.setdefault(variant, {}) if by_variant else cuts).setdefault(key, {})
             if seed in mine:
-                raise ValueError(f"{path}: a second cut of {key[0]}/{key[1]}/{key[2]:g} mm on packing {seed} "
+                named = f" ({variant})" if variant else ""
+                raise ValueError(f"{path}: a second cut of {key[0]}/{key[1]}/{key[2]:g} mm{named} on packing {seed} "
                                  "(conditions that differ in another tag, or a cut in two records: compare them apart)")
             mine[seed] = values
     return cuts
 
 
-def read_records(paths):
-    """read_record of several records merged."""
+def read_records(paths, by_variant=False):
+    """read_record of several records merged (by_variant: split by the model variant, as read_record's)."""
     cuts = {}
     for path in paths:
-        read_record(path, cuts)
+        read_record(path, cuts, by_variant)
     return cuts
 
 

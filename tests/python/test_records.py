@@ -80,3 +80,19 @@ def test_the_cutting_force_is_read_under_either_name(tmp_path):
     assert kr.cutting_force({R.cutting_force_N: 1.0, R.main_force_N: 2.0}) == 1.0
     assert kr.cutting_force({R.main_force_sem_N: 0.1}, "sem_N") == 0.1
     assert kr.per_width({R.main_force_N: 0.8, R.width_mm: 2.0}, "cutting") == 0.4
+
+
+def test_a_rows_variant_is_its_model_choice_columns_in_order(tmp_path):
+    # The record's model-choice columns (MODEL_CHOICES: edge_zone, layer_factor) name a cut's variant, numbers as %g;
+    # an empty cell is no choice, and a row with none is the one unnamed variant "".
+    assert kr.variant_of({"edge_zone": "on", "layer_factor": 2.46, "seed": 1.0}) == "zone on, layer_factor 2.46"
+    assert kr.variant_of({"layer_factor": 2.0, "edge_zone": "off"}) == "zone off, layer_factor 2"
+    assert kr.variant_of({"edge_zone": "", "layer_factor": math.nan}) == ""
+    assert kr.variant_of({"domain": "default"}) == ""
+    with open(tmp_path / "record.csv", "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["domain", "surface", "depth_of_cut_mm", "edge_zone", "seed", R.main_force_N])
+        w.writerows([["default", "regular", 0.1, zone, 1, force] for zone, force in (("off", 0.5), ("on", 0.6))])
+    by = kr.read_record(tmp_path / "record.csv", by_variant=True)
+    assert {v: c[("default", "regular", 0.1)][1][R.main_force_N] for v, c in by.items()} == {"zone off": 0.5,
+                                                                                           "zone on": 0.6}

@@ -14,17 +14,19 @@ from kerf.result_keys import CutResults as R
 st = load("validation/soda_lime_cutting_steady/trends.py")
 
 
-def write_record(path, means, n=8, spread=0.02, seed=3):
-    """A record whose conditions have the given mean main force (thrust = 0.8 main), n packings each."""
+def write_record(path, means, n=8, spread=0.02, seed=3, tags=()):
+    """A record whose conditions have the given mean main force (thrust = 0.8 main), n packings each; a condition's
+    key is (domain, surface, depth) followed by its values of the columns `tags` (model choices: edge_zone, ...)."""
     rng = random.Random(seed)
     with open(path, "w", newline="") as f:
         w = csv.writer(f)
-        w.writerow(["condition", "domain", "surface", "depth_of_cut_mm", "seed", R.main_force_N, R.thrust_force_N,
-                    R.width_mm, R.subsurface_damage_depth_steady_um, R.cracks_subsurface_steady, "scene_fnv1a64"])
-        for c, ((domain, surface, depth), m) in enumerate(means.items()):
+        w.writerow(["condition", "domain", "surface", "depth_of_cut_mm", *tags, "seed", R.main_force_N,
+                    R.thrust_force_N, R.width_mm, R.subsurface_damage_depth_steady_um, R.cracks_subsurface_steady,
+                    "scene_fnv1a64"])
+        for c, ((domain, surface, depth, *values), m) in enumerate(means.items()):
             for k in range(n):
                 v = m * (1 + rng.gauss(0, spread))
-                w.writerow([c + 1, domain, surface, depth, k + 1, v, 0.8 * v, 1, 100 * v, 10000 * v,
+                w.writerow([c + 1, domain, surface, depth, *values, k + 1, v, 0.8 * v, 1, 100 * v, 10000 * v,
                             f"{c:08x}{k:08x}"])
 
 
@@ -292,3 +294,153 @@ def test_to_resolve_prices_each_open_verdict_at_its_conditions_cut_time(tmp_path
             domains = len(p["now"]) // len(src.conditions[trend])
             expected = domains * sum((p["need"][0] - 3) * hours[h] for _, h in src.conditions[trend])
             assert math.isclose(p["cpu_h"], expected)
+
+
+# A record with a model-choice column (issue 54 item 5: the edge zone off and on): each variant its own column.
+ZONE = {"off": (0.5, 0.8), "on": (0.6, 0.25)}  # the regular main force (N/mm) and the groove effect, per variant
+
+
+def zone_record(path, n=8, spread=0.01):
+    """Both domains, regular and rectangular at 0.1 and 0.2 mm, the edge zone off and on (ZONE), n packings each."""
+    means = {(domain, surface, depth, zone): regular * (effect if surface == "rectangular" else 1)
+             for zone, (regular, effect) in ZONE.items() for domain in st.DOMAINS
+             for surface in ("regular", "rectangular") for depth in (0.1, 0.2)}
+    write_record(path, means, n=n, spread=spread, seed=7, tags=("edge_zone",))
+
+
+def means_from_csv(path, **match):
+    """{(domain, surface, depth): mean main force per mm} of the rows of `path` whose columns have the values in
+    `match`, computed here from the file (not through kerf.records)."""
+    groups = {}
+    for r in csv.DictReader(open(path)):
+        if all(r.get(k) == v for k, v in match.items()):
+            key = (r["domain"], r["surface"], float(r["depth_of_cut_mm"]))
+            groups.setdefault(key, []).append(float(r[R.main_force_N]) / float(r[R.width_mm]))
+    return {k: sum(v) / len(v) for k, v in groups.items()}
+
+
+def trends_csv(out, trend, source):
+    return next(r for r in csv.DictReader(open(out / "trends.csv")) if r["trend"] == trend and r["source"] == source)
+
+
+def test_each_model_variant_is_a_column_of_its_own_never_merged(tmp_path):
+    zone_record(tmp_path / "record.csv")
+    write_experiments(tmp_path / "experiments.csv", 0.65, 0.65 * 0.15)
+    out = tmp_path / "out"
+    st.main([str(tmp_path / "record.csv"), "--experiments", str(tmp_path / "experiments.csv"), "--out", str(out),
+             "--study", str(tmp_path / "no-study.json"), "--report"])
+    groove = "groove effect main, rectangular / regular at 0.1 mm"
+    merged = means_from_csv(tmp_path / "record.csv")  # both variants' cuts together: what must not be reported
+    merged_ratio = merged[("default", "rectangular", 0.1)] / merged[("default", "regular", 0.1)]
+    for zone, (regular, effect) in ZONE.items():
+        m = means_from_csv(tmp_path / "record.csv", edge_zone=zone)
+        for domain in st.DOMAINS:
+            row = trends_csv(out, groove, f"kerf {domain}, zone {zone}")
+            # The ratio of this variant's means (the file's, to trends.csv's 4 digits), near the closed form.
+            expected = m[(domain, "rectangular", 0.1)] / m[(domain, "regular", 0.1)]
+            assert math.isclose(float(row["value"]), expected, rel_tol=6e-4), (zone, domain, row["value"], expected)
+            assert math.isclose(expected, effect, rel_tol=0.02)
+            assert abs(float(row["value"]) - merged_ratio) > 0.1
+            level = trends_csv(out, "main force per mm, regular 0.1 mm (N/mm)", f"kerf {domain}, zone {zone}")
+            assert math.isclose(float(level["value"]), m[(domain, "regular", 0.1)], rel_tol=6e-4)
+            assert math.isclose(float(level["value"]), regular, rel_tol=0.02)
+            assert level["n"] == "8"  # one variant's packings, not both variants'
+        # The domains compared within the variant: default against large of the same zone (the same means: agrees;
+        # against the other zone's large window, 0.8 against 0.25, it would differ).
+        row = trends_csv(out, groove, f"kerf default, zone {zone}")
+        expected = (m[("default", "rectangular", 0.1)] / m[("default", "regular", 0.1)] -
+                    m[("large", "rectangular", 0.1)] / m[("large", "regular", 0.1)])
+        assert abs(float(row["default_minus_large"]) - expected) < 1e-3 + 6e-4 * abs(expected)
+        assert row["domain_robust"] == "agrees" and row["against_experiment"] == "differs"
+    sources = {r["source"] for r in csv.DictReader(open(out / "trends.csv"))}
+    assert not {"kerf default", "kerf large"} & sources
+    text = (out / "report.md").read_text()
+    lines = text.splitlines()
+    head = "| trend | kerf default, zone off | kerf default, zone on | kerf large, zone off | kerf large, zone on | " \
+           "experiment | paper's DEM |"
+    assert lines.count(head) == 1  # the levels' table
+    assert lines.count(head + " default, zone off vs experiment | default, zone on vs experiment | large, zone off "
+                       "vs experiment | large, zone on vs experiment | default - large, zone off | default - large, "
+                       "zone on |") == 2  # the trends' and the decomposition's
+    assert f"{groove} (default, zone on)" in next(line for line in lines if line.startswith("- Differs from them"))
+    assert "| default | regular | 0.1 | zone off | 8 |" in text  # the damage table's and the cost table's
+    costs = list(csv.DictReader(open(out / "cost.csv")))
+    assert {(r["variant"], r["cuts"]) for r in costs} == {("zone off", "8"), ("zone on", "8")} and len(costs) == 16
+
+
+def test_a_merged_record_with_a_layer_factor_is_a_third_variant(tmp_path):
+    zone_record(tmp_path / "record.csv")
+    write_experiments(tmp_path / "experiments.csv", 0.65, 0.65 * 0.15)
+    fit = {("default", surface, 0.1, "on", 2.46): 0.7 * (0.2 if surface == "rectangular" else 1)
+           for surface in ("regular", "rectangular")}
+    write_record(tmp_path / "fit.csv", fit, seed=9, tags=("edge_zone", "layer_factor"))
+    out = tmp_path / "out"
+    st.main([str(tmp_path / "record.csv"), str(tmp_path / "fit.csv"), "--experiments",
+             str(tmp_path / "experiments.csv"), "--out", str(out), "--study", str(tmp_path / "no-study.json"),
+             "--report"])
+    groove = "groove effect main, rectangular / regular at 0.1 mm"
+    m = means_from_csv(tmp_path / "fit.csv")
+    row = trends_csv(out, groove, "kerf default, zone on, layer_factor 2.46")
+    assert math.isclose(float(row["value"]), m[("default", "rectangular", 0.1)] / m[("default", "regular", 0.1)],
+                        rel_tol=6e-4)
+    assert math.isclose(float(row["value"]), 0.2, rel_tol=0.02)
+    # The stage-1 record's zone on is untouched by the fit's cuts of the same conditions and packings.
+    on = means_from_csv(tmp_path / "record.csv", edge_zone="on")
+    assert math.isclose(float(trends_csv(out, groove, "kerf default, zone on")["value"]),
+                        on[("default", "rectangular", 0.1)] / on[("default", "regular", 0.1)], rel_tol=6e-4)
+    text = (out / "report.md").read_text()
+    assert "| kerf default, zone off | kerf default, zone on | kerf default, zone on, layer_factor 2.46 | " in text
+    assert "make 3 variants of the model: zone off; zone on; zone on, layer_factor 2.46." in text
+    # The fit ran no large window: its variant has no domain verdict, and the acceptance names it.
+    assert "domain_robust" not in {k for k, v in row.items() if v}
+    assert f"{groove} (kerf large, zone on, layer_factor 2.46): no cuts" in text
+
+
+def test_a_cut_in_two_records_is_an_error_naming_it(tmp_path, capsys):
+    zone_record(tmp_path / "record.csv", n=2)
+    write_record(tmp_path / "fit.csv", {("default", "regular", 0.1, "on", 2.46): 0.7}, n=2,
+                 tags=("edge_zone", "layer_factor"))
+    args = [str(tmp_path / "record.csv"), str(tmp_path / "fit.csv"), "--out", str(tmp_path / "out")]
+    # Two records, the same variant, condition and packing: an error naming it, the variant included.
+    try:
+        st.main([str(tmp_path / "fit.csv")] + args)
+    except SystemExit as e:
+        assert e.code == 2
+    else:
+        raise AssertionError("a cut in two records was read silently")
+    assert "default/regular/0.1 mm (zone on, layer_factor 2.46) on packing 1" in capsys.readouterr().err
+    # The same cut in another variant is not one.
+    assert st.main(args) == 0
+
+
+def test_a_record_without_model_choices_is_the_one_unnamed_variant(tmp_path):
+    full_record(tmp_path, 0.3, n=3)
+    experiments = kr.read_experiments(tmp_path / "experiments.csv")
+    plain = st.rows_of(st.trends(st.Sources(kr.read_record(tmp_path / "record.csv"), experiments)))
+    split = kr.read_records([tmp_path / "record.csv"], by_variant=True)
+    assert list(split) == [""]
+    assert st.rows_of(st.trends(st.Sources(split, experiments))) == plain
+    assert {r["source"] for r in plain} == {"kerf default", "kerf large", "experiment"}
+    assert "variant" not in st.costs(split)[0]
+
+
+def test_to_resolve_counts_and_prices_each_variants_own_packings(tmp_path):
+    # Three packings per variant scattering 20 %: open verdicts, each priced on its variant's 3 packings (not the 6
+    # of both zones) at its variant's cut time (zone off 1800 s, zone on 3600 s).
+    zone_record(tmp_path / "record.csv", n=3, spread=0.2)
+    write_experiments(tmp_path / "experiments.csv", 0.65, 0.65 * 0.15)
+    cuts = kr.read_records([tmp_path / "record.csv"], by_variant=True)
+    seconds = {"zone off": 1800.0, "zone on": 3600.0}
+    for variant, by_key in cuts.items():
+        for by_seed in by_key.values():
+            for r in by_seed.values():
+                r["cpu_time_s"] = seconds[variant]
+    src = st.Sources(cuts, kr.read_experiments(tmp_path / "experiments.csv"))
+    all_trends = st.trends(src)
+    rows = st.rows_of(all_trends)
+    pending = [p for p in st.to_resolve(rows, all_trends, src, st.costs(cuts)) if math.isfinite(p["factor"])]
+    assert {v for p in pending for v in seconds if v in p["verdict"]} == set(seconds)
+    for p in pending:
+        variant = next(v for v in seconds if v in p["verdict"])
+        assert all(n == 3 for n in p["now"])
+        assert math.isclose(p["cpu_h"], sum(m - 3 for m in p["need"]) * seconds[variant] / 3600)
