@@ -1,22 +1,11 @@
 """analysis/cut_line_joints.py: the two criteria for intact glass at the edge, on frames with a known answer."""
-import numpy as np
+from cut_frames import frame
 from repo_scripts import load
 
 cl = load("analysis/cut_line_joints.py")
 
 Y_CUT = 0.9
 REACH = 0.026  # mm
-
-
-def frame(disks, joints, held):
-    """disks: [(x_mm, y_mm, r_mm)]; joints: [(i, j)] intact; held: indices; the tool's tip at (1.0, 0.9) mm."""
-    p = np.array([[x, y, 0.0] for x, y, _ in disks])
-    lines = np.array(joints, dtype=int).reshape(-1, 2)
-    return {"particles": {"position_mm": p, "radius_mm": np.array([r for _, _, r in disks]), "lines": lines,
-                          "intact_elements": np.full(len(lines), 2),
-                          "held": np.array([1 if k in held else 0 for k in range(len(disks))])},
-            "walls": {"position_mm": np.array([[1.0, 0.9, 0], [1.05, 1.1, 0], [1.2, 0.95, 0]]),
-                      "lines": np.array([[0, 1], [0, 2]])}}
 
 
 # 0: held, deep; 1: straddles the line ahead of the tip (centre 5 um below it), 20 um ahead; 2: above the line,
