@@ -24,12 +24,12 @@ fi
 
 # 1. The shared folder. The patterns are spelt with brackets so that this script does not match itself.
 shared_re='[.][.]/shared|shared[/](docs|seeds|data)'
-for f in "${files[@]}"; do
-  [ -f "$src/$f" ] || continue
-  while IFS= read -r hit; do
-    fail "$f:${hit%%:*}: cites the shared folder outside the repository: ${hit#*:}"
-  done < <(grep -I -n -E "$shared_re" "$src/$f" 2>/dev/null)
-done
+# One grep over every file (a program start per file costs seconds on a slow machine); its lines "SRC/FILE:LINE:TEXT".
+paths=("${files[@]/#/$src/}")
+while IFS= read -r hit; do
+  rel="${hit#"$src"/}" && rest="${rel#*:}"
+  fail "${rel%%:*}:${rest%%:*}: cites the shared folder outside the repository: ${rest#*:}"
+done < <(grep -I -n -H -E "$shared_re" -- "${paths[@]}" 2>/dev/null)
 
 # Section numbers of a note in docs/: its "## N." headings, as " N N ... ".
 sections_of() {
@@ -42,9 +42,11 @@ have[physics-analytic.md]="$(sections_of physics-analytic.md)"
 
 # 2 and 3. Each file is read as one line, comment markers at line starts dropped, so that a citation broken
 # over two comment lines is still seen; awk prints "note<TAB>kind<TAB>number" for each citation.
-for f in "${files[@]}"; do
-  [ -f "$src/$f" ] || continue
-  grep -I -q 'physics-\(dem\|analytic\)\.md' "$src/$f" 2>/dev/null || continue
+# The files that name a note at all, found by one grep.
+citing=()
+while IFS= read -r path; do citing+=("${path#"$src"/}"); done < <(
+  grep -I -l 'physics-\(dem\|analytic\)\.md' -- "${paths[@]}" 2>/dev/null)
+for f in "${citing[@]}"; do
   while IFS=$'\t' read -r note kind num; do
     case "$kind" in
       file) [ -f "$src/docs/$note" ] || fail "$f: cites $note, which docs/ does not have" ;;
