@@ -24,7 +24,7 @@ from matplotlib.collections import LineCollection, PatchCollection  # noqa: E402
 from matplotlib.patches import Circle  # noqa: E402
 
 import kerf  # noqa: E402
-from kerf.frames import samples_per_frame, tied  # noqa: E402
+from kerf.frames import samples_per_frame, tied, tool_tip  # noqa: E402
 
 
 def segment_distance(p, a, b):
@@ -43,7 +43,7 @@ def draw_frame(ax, folder, k, half_width_mm, below_mm, above_mm):
     anchored = tied(n, i, j, particles["held"] > 0)
     w = walls["position_mm"][:, :2]
     faces = [(w[a], w[b]) for a, b in walls["lines"]]
-    tip = w[np.argmin(w[:, 1])]
+    tip = tool_tip(frame)
     x0, x1 = tip[0] - 2 * half_width_mm, tip[0] + 0.5 * half_width_mm
     y0, y1 = tip[1] - below_mm, tip[1] + above_mm
     show = (p[:, 0] > x0 - 0.05) & (p[:, 0] < x1 + 0.05) & (p[:, 1] > y0 - 0.05) & (p[:, 1] < y1 + 0.05)

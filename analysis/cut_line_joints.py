@@ -20,23 +20,16 @@ the steady frames that meet each criterion. --csv writes one row per run.
 """
 import argparse
 import csv
-import json
 import pathlib
 import sys
 
 import numpy as np
 
-import kerf
-from kerf.frames import samples_per_frame, tied
+from kerf.frames import steady_frames, tied, tool_tip
 from kerf.result_keys import CutResults as R
 from kerf.stats import mean_of
 
 DEFAULT_REACH_UM = 26.0
-
-
-def tip_of(frame):
-    w = frame["walls"]["position_mm"][:, :2]
-    return w[np.argmin(w[:, 1])]
 
 
 def criteria(frame, y_cut_mm, reach_mm):
@@ -45,7 +38,7 @@ def criteria(frame, y_cut_mm, reach_mm):
     p, r = particles["position_mm"][:, :2], particles["radius_mm"]
     joints = particles["lines"][particles["intact_elements"] > 0]
     anchored = tied(len(p), joints[:, 0], joints[:, 1], particles["held"] > 0)
-    tip = tip_of(frame)
+    tip = tool_tip(frame)
     # The tool moves towards -x: ahead of the tip is x below it.
     near = np.hypot(p[:, 0] - tip[0], p[:, 1] - tip[1]) < reach_mm + r
     straddles = bool(np.any(anchored & (np.abs(p[:, 1] - y_cut_mm) < r) & (p[:, 0] - r < tip[0]) & near))
@@ -63,21 +56,13 @@ def criteria(frame, y_cut_mm, reach_mm):
 
 def shares(folder, reach_um):
     """(frames, share straddling, share joined) over the run's steady frames."""
-    summary = json.loads((folder / "summary.json").read_text())
-    every = samples_per_frame(summary)
-    if every is None:
-        sys.exit(f"{folder}: the run does not say its output.frame_every_samples "
-                 "(run it with --set output.frame_every_samples=N)")
-    results = summary["results"]
-    y_cut, steady_from = results[R.cut_line_y_mm], results[R.steady_from_travel_mm]
-    travel = np.loadtxt(folder / "forces.csv", delimiter=",", skiprows=1)[:, 0]
-    met = []
-    for k, frame in enumerate(kerf.dem.read_frames(folder)):
-        if travel[min(k * every, len(travel) - 1)] >= steady_from:
-            met.append(criteria(frame, y_cut, 1e-3 * reach_um))
-    if not met:
+    try:
+        results, frames = steady_frames(folder)
+    except ValueError as e:
+        sys.exit(str(e))
+    if not frames:
         sys.exit(f"{folder}: no frame in the steady travel")
-    met = np.array(met)
+    met = np.array([criteria(frame, results[R.cut_line_y_mm], 1e-3 * reach_um) for frame in frames])
     return len(met), float(met[:, 0].mean()), float(met[:, 1].mean())
 
 

@@ -12,7 +12,6 @@ it), 5 um and 26 um (the edge zone's default reach at radii 10-13 um) of the tip
 distribution per run.
 """
 import argparse
-import json
 import pathlib
 import sys
 
@@ -22,8 +21,7 @@ import numpy as np
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-import kerf  # noqa: E402
-from kerf.frames import samples_per_frame, tied  # noqa: E402
+from kerf.frames import steady_frames, tied, tool_tip  # noqa: E402
 from kerf.result_keys import CutResults as R  # noqa: E402
 
 REACHES_UM = (0.0, 5.0, 26.0)
@@ -31,12 +29,11 @@ REACHES_UM = (0.0, 5.0, 26.0)
 
 def gap_um(frame, y_cut_mm):
     """The frame's gap (um) from the tip to the nearest tied disk ahead straddling the cut line; inf if none."""
-    particles, walls = frame["particles"], frame["walls"]
+    particles = frame["particles"]
     p, r = particles["position_mm"][:, :2], particles["radius_mm"]
     joints = particles["lines"][particles["intact_elements"] > 0]
     anchored = tied(len(p), joints[:, 0], joints[:, 1], particles["held"] > 0)
-    w = walls["position_mm"][:, :2]
-    tip = w[np.argmin(w[:, 1])]
+    tip = tool_tip(frame)
     # The tool moves towards -x: ahead of the tip is x below it.
     at_line = anchored & (np.abs(p[:, 1] - y_cut_mm) < r) & (p[:, 0] < tip[0])
     if not at_line.any():
@@ -46,21 +43,11 @@ def gap_um(frame, y_cut_mm):
 
 def gaps(folder):
     """The gaps (um) of the run's frames in its steady travel."""
-    summary = json.loads((folder / "summary.json").read_text())
-    every = samples_per_frame(summary)
-    if every is None:
-        sys.exit("the run does not say its output.frame_every_samples (run it with --set output.frame_every_samples=N)")
-    results = summary["results"]
-    y_cut = results[R.cut_line_y_mm]
-    steady_from = results[R.steady_from_travel_mm]
-    travel = np.loadtxt(folder / "forces.csv", delimiter=",", skiprows=1)[:, 0]
-    frames = kerf.dem.read_frames(folder)
-    out = []
-    for k, frame in enumerate(frames):
-        sample = min(k * every, len(travel) - 1)
-        if travel[sample] >= steady_from:
-            out.append(gap_um(frame, y_cut))
-    return np.array(out)
+    try:
+        results, frames = steady_frames(folder)
+    except ValueError as e:
+        sys.exit(str(e))
+    return np.array([gap_um(frame, results[R.cut_line_y_mm]) for frame in frames])
 
 
 def describe(label, g):
