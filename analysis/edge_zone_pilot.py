@@ -12,7 +12,11 @@ zone pilot), the change's effect on each quantity, paired by packing: the mean o
 record less the other) with its 95 % interval. Given with --beside a record of the same conditions on other packings
 (another specimen: data/studies/issue54_fine_band_reference.json, fine disks at the cut line, beside the zone pilot),
 each of its groups against each group of the other record on the same surface, unpaired: the difference of the
-means (this record less the other) with its Welch 95 % interval.
+means (this record less the other) with its Welch 95 % interval. With --by TAG a tag that varies within a surface
+(data/studies/issue54_groove_damage_zone.json: the grooves' laser-affected layer) splits the surface's rows into
+groups named "rectangular, TAG=value", each compared as its surface is (the groove effect against the regular
+surface, --against paired with the surface's rows of the other record); with --with RECORD the rows of another record
+of the same conditions and packings join this record's (that study's regular cuts are issue54_cut_line_joints.json's).
 
     PYTHONPATH=build/python python3 analysis/edge_zone_pilot.py data/studies/results/issue54_zone_pilot.csv \
         [data/studies/results/issue54_zone_pilot_02.csv]
@@ -20,10 +24,13 @@ means (this record less the other) with its Welch 95 % interval.
         --against data/studies/results/issue54_zone_pilot.csv
     PYTHONPATH=build/python python3 analysis/edge_zone_pilot.py data/studies/results/issue54_fine_band_reference.csv \
         --beside data/studies/results/issue54_zone_pilot.csv
+    PYTHONPATH=build/python python3 analysis/edge_zone_pilot.py data/studies/results/issue54_groove_damage_zone.csv \
+        --by groove_damage_depth_um --with data/studies/results/issue54_cut_line_joints.csv \
+        --against data/studies/results/issue54_cut_line_joints.csv
 """
+import argparse
 import csv
 import math
-import sys
 
 from kerf.result_keys import CutResults as R
 from kerf.stats import combination, difference, mean_of, ratio
@@ -42,13 +49,20 @@ def number(text):
         return math.nan
 
 
-def read(path):
-    """{(surface, edge_zone): [row, ...]} of the record's rows."""
-    groups = {}
+def read(path, by=(), groups=None):
+    """{(surface, edge_zone): [row, ...]} of the record's rows, added to `groups` if given; a surface named with the
+    value of each tag of `by` that a row has ("rectangular, groove_damage_depth_um=50")."""
+    groups = {} if groups is None else groups
     with open(path, newline="") as f:
         for row in csv.DictReader(f):
-            groups.setdefault((row["surface"], row["edge_zone"]), []).append(row)
+            surface = ", ".join([row["surface"]] + [f"{t}={row[t]}" for t in by if row.get(t)])
+            groups.setdefault((surface, row["edge_zone"]), []).append(row)
     return groups
+
+
+def plain(surface):
+    """The surface of a group's name without its tags."""
+    return surface.split(",")[0]
 
 
 def estimate(rows, key):
@@ -72,12 +86,14 @@ def report(groups):
         cells = [interval(estimate(rows, key)) for key, _ in QUANTITIES]
         lines.append(f"| {surface} | {zone} | {len(rows)} | " + " | ".join(cells) + " |")
     lines.append("")
+    surfaces = sorted({surface for surface, _ in groups}, key=lambda s: (s != "regular", s))  # regular first
     for force in (R.cutting_force_N_per_mm, R.thrust_force_N_per_mm):
         for zone in ("off", "on"):
-            if ("rectangular", zone) in groups and ("regular", zone) in groups:
-                r = ratio(estimate(groups[("rectangular", zone)], force), estimate(groups[("regular", zone)], force))
-                lines.append(f"groove effect (rectangular / regular), {force}, zone {zone}: {interval(r)}")
-        for surface in ("regular", "rectangular"):
+            for surface in (s for s in surfaces if plain(s) == "rectangular"):
+                if (surface, zone) in groups and ("regular", zone) in groups:
+                    r = ratio(estimate(groups[(surface, zone)], force), estimate(groups[("regular", zone)], force))
+                    lines.append(f"groove effect ({surface} / regular), {force}, zone {zone}: {interval(r)}")
+        for surface in surfaces:
             if (surface, "on") in groups and (surface, "off") in groups:
                 r = ratio(estimate(groups[(surface, "on")], force), estimate(groups[(surface, "off")], force))
                 lines.append(f"zone effect (on / off), {force}, {surface}: {interval(r)}")
@@ -99,12 +115,15 @@ def split(shallow, deep, h_mm):
 
 
 def paired(changed, baseline):
-    """Each (surface, zone) in both records: per quantity, the mean over the packings present in both (by seed) of
-    the difference changed - baseline."""
+    """Each (surface, zone) of `changed` whose surface, or its plain surface, `baseline` has: per quantity, the mean
+    over the packings present in both (by seed) of the difference changed - baseline."""
     lines = ["| surface | zone | pairs | " + " | ".join(f"change in {label}" for _, label in QUANTITIES) + " |",
              "|---|---|---|" + "---|" * len(QUANTITIES)]
-    for key in sorted(set(changed) & set(baseline)):
-        base = {r["seed"]: r for r in baseline[key]}
+    for key in sorted(changed):
+        base_key = key if key in baseline else (plain(key[0]), key[1])
+        if base_key not in baseline:
+            continue
+        base = {r["seed"]: r for r in baseline[base_key]}
         pairs = [(r, base[r["seed"]]) for r in changed[key] if r["seed"] in base]
         cells = [interval(mean_of([number(a.get(q)) - number(b.get(q)) for a, b in pairs])) for q, _ in QUANTITIES]
         lines.append(f"| {key[0]} | {key[1]} | {len(pairs)} | " + " | ".join(cells) + " |")
@@ -119,7 +138,7 @@ def beside(other, base):
              "|---|---|---|---|" + "---|" * len(QUANTITIES)]
     for (surface, zone), rows in sorted(other.items()):
         for (base_surface, base_zone), base_rows in sorted(base.items()):
-            if base_surface != surface:
+            if plain(base_surface) != plain(surface):
                 continue
             cells = [interval(difference(estimate(rows, q), estimate(base_rows, q))) for q, _ in QUANTITIES]
             lines.append(f"| {surface} | {zone} | {base_zone} | {len(rows)}, {len(base_rows)} | " + " | ".join(cells) +
@@ -132,20 +151,30 @@ def depth_of(path):
         return float(next(csv.DictReader(f))["depth_of_cut_mm"])
 
 
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("record")
+    parser.add_argument("deeper", nargs="?", help="the same conditions at twice the depth of cut")
+    parser.add_argument("--against", help="a record of the same conditions and packings with one change (paired)")
+    parser.add_argument("--beside", help="a record of the same conditions on other packings (unpaired)")
+    parser.add_argument("--by", action="append", default=[], help="a tag that splits a surface's rows into groups")
+    parser.add_argument("--with", dest="also", action="append", default=[],
+                        help="a record of the same conditions and packings whose rows join the record's")
+    args = parser.parse_args()
+    groups = read(args.record, args.by)
+    for path in args.also:
+        read(path, args.by, groups)
+    print(report(groups))
+    if args.against:
+        print()
+        print(paired(groups, read(args.against, args.by)))
+    if args.beside:
+        print()
+        print(beside(groups, read(args.beside, args.by)))
+    if args.deeper:
+        print()
+        print(split(groups, read(args.deeper, args.by), depth_of(args.record)))
+
+
 if __name__ == "__main__":
-    if len(sys.argv) == 4 and sys.argv[2] == "--against":
-        print(report(read(sys.argv[1])))
-        print()
-        print(paired(read(sys.argv[1]), read(sys.argv[3])))
-        sys.exit(0)
-    if len(sys.argv) == 4 and sys.argv[2] == "--beside":
-        print(report(read(sys.argv[1])))
-        print()
-        print(beside(read(sys.argv[1]), read(sys.argv[3])))
-        sys.exit(0)
-    if len(sys.argv) not in (2, 3):
-        sys.exit(__doc__)
-    print(report(read(sys.argv[1])))
-    if len(sys.argv) == 3:
-        print()
-        print(split(read(sys.argv[1]), read(sys.argv[2]), depth_of(sys.argv[1])))
+    main()

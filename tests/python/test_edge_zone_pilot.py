@@ -92,3 +92,41 @@ def test_another_specimen_beside_the_pilot_gives_the_unpaired_difference_of_the_
     assert abs(float(value) - (0.325 - 0.475)) < 1e-9
     lo, hi = (float(x) for x in interval.rstrip("]").split(", "))
     assert lo < float(value) < hi and hi - lo > 0.05
+
+
+def write_tagged(path, forces, tag):
+    """forces: {(surface, zone, tag value or ""): [cutting per packing]}; the thrust is half the cutting force."""
+    with open(path, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=["surface", "edge_zone", tag, "seed", R.cutting_force_N_per_mm,
+                                          R.thrust_force_N_per_mm])
+        w.writeheader()
+        for (surface, zone, value), values in forces.items():
+            for seed, c in enumerate(values, start=1):
+                w.writerow({"surface": surface, "edge_zone": zone, tag: value, "seed": seed,
+                            R.cutting_force_N_per_mm: c, R.thrust_force_N_per_mm: c / 2})
+
+
+def test_a_tag_splits_a_surface_and_each_of_its_groups_meets_the_regular_rows_of_another_record(tmp_path):
+    # The damaged grooves' record has no regular cuts; the regular ones come from a record of the same packings
+    # (--with). Each damage depth is a group of its own with its own groove effect, exactly its fraction.
+    regular = [0.40, 0.50, 0.45, 0.55]
+    write_tagged(tmp_path / "damaged.csv", {("rectangular", "on", "25"): [0.5 * x for x in regular],
+                                            ("rectangular", "on", "50"): [0.2 * x for x in regular]}, "damage_um")
+    write(tmp_path / "base.csv", {("regular", "on"): regular, ("rectangular", "on"): [0.3 * x for x in regular]})
+    groups = ez.read(tmp_path / "damaged.csv", ["damage_um"])
+    assert sorted(groups) == [("rectangular, damage_um=25", "on"), ("rectangular, damage_um=50", "on")]
+    ez.read(tmp_path / "base.csv", ["damage_um"], groups)  # its rows have no such tag: their plain surface
+    text = ez.report(groups)
+    effects = {l.split("(")[1].split(" /")[0]: float(l.split(": ")[1].split()[0])
+               for l in text.splitlines() if l.startswith("groove effect") and "cutting" in l}
+    assert effects == {"rectangular": 0.3, "rectangular, damage_um=25": 0.5, "rectangular, damage_um=50": 0.2}
+
+
+def test_a_tagged_group_is_paired_with_its_plain_surface_in_the_baseline(tmp_path):
+    base = [0.2, 0.9, 0.5, 1.3]
+    write(tmp_path / "base.csv", {("rectangular", "on"): base})
+    write_tagged(tmp_path / "damaged.csv", {("rectangular", "on", "50"): [x - 0.05 for x in base]}, "damage_um")
+    rows = ez.paired(ez.read(tmp_path / "damaged.csv", ["damage_um"]),
+                     ez.read(tmp_path / "base.csv", ["damage_um"])).splitlines()[2:]
+    assert len(rows) == 1 and rows[0].startswith("| rectangular, damage_um=50 | on | 4 |")
+    assert abs(float(rows[0].split("|")[4].split(" [")[0]) + 0.05) < 1e-12
