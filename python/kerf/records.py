@@ -55,7 +55,11 @@ def cutting_force_column(names):
 # A record's columns that choose the model (a study's tags that its conditions differ in beside the condition's own:
 # domain, surface, depth), each with the name the reports give it. A cut's *variant* is its values of those its record
 # has, in this order ("zone on, layer_factor 2.46"; "" where it has none). A new model choice is one more entry here.
-MODEL_CHOICES = (("edge_zone", "zone"), ("layer_factor", "layer_factor"))
+MODEL_CHOICES = (("edge_zone", "zone"), ("layer_factor", "layer_factor"), ("groove_damage_depth_um", "groove layer um"))
+# Model choices that act on the grooved surfaces only (the grooves' laser-affected layer, grooves.damage_depth_um): a
+# variant with one has no regular cuts of its own, its regular cuts are those of the variant without it
+# (regular_variant_of).
+GROOVES_ONLY_CHOICES = ("groove_damage_depth_um",)
 
 
 def variant_of(row):
@@ -70,6 +74,13 @@ def variant_of(row):
         elif value not in ("", None):
             parts.append(f"{name} {str(value).lower() if isinstance(value, bool) else value}")
     return ", ".join(parts)
+
+
+def regular_variant_of(variant):
+    """The variant whose regular cuts `variant` shares: `variant` less its grooves-only choices (GROOVES_ONLY_CHOICES;
+    'zone on, groove layer um 25' -> 'zone on'); `variant` itself when it has none."""
+    names = tuple(f"{name} " for column, name in MODEL_CHOICES if column in GROOVES_ONLY_CHOICES)
+    return ", ".join(part for part in variant.split(", ") if part and not part.startswith(names))
 
 
 def read_record(path, cuts=None, by_variant=False):

@@ -444,3 +444,29 @@ def test_to_resolve_counts_and_prices_each_variants_own_packings(tmp_path):
         variant = next(v for v in seconds if v in p["verdict"])
         assert all(n == 3 for n in p["now"])
         assert math.isclose(p["cpu_h"], sum(m - 3 for m in p["need"]) * seconds[variant] / 3600)
+
+
+def test_a_grooves_only_variant_takes_its_regular_cuts_from_the_variant_without_it(tmp_path):
+    # The grooves' layer changes the grooved surface only: its study runs no regular cut, and its groove effect is
+    # its grooved force against the regular cuts of the variant without the layer (the same cuts, the same packings).
+    zone_record(tmp_path / "record.csv")
+    write_experiments(tmp_path / "experiments.csv", 0.65, 0.65 * 0.15)
+    write_record(tmp_path / "layer.csv", {("default", "rectangular", 0.1, "on", 25): 0.6 * 0.12}, seed=11,
+                 tags=("edge_zone", "groove_damage_depth_um"))
+    out = tmp_path / "out"
+    st.main([str(tmp_path / "record.csv"), str(tmp_path / "layer.csv"), "--experiments",
+             str(tmp_path / "experiments.csv"), "--out", str(out), "--study", str(tmp_path / "no-study.json")])
+    groove = "groove effect main, rectangular / regular at 0.1 mm"
+    layer = means_from_csv(tmp_path / "layer.csv")
+    on = means_from_csv(tmp_path / "record.csv", edge_zone="on")
+    row = trends_csv(out, groove, "kerf default, zone on, groove layer um 25")
+    assert math.isclose(float(row["value"]), layer[("default", "rectangular", 0.1)] / on[("default", "regular", 0.1)],
+                        rel_tol=6e-4)
+    assert math.isclose(float(row["value"]), 0.12, rel_tol=0.02)
+    level = trends_csv(out, "main force per mm, regular 0.1 mm (N/mm)", "kerf default, zone on, groove layer um 25")
+    assert math.isclose(float(level["value"]), on[("default", "regular", 0.1)], rel_tol=6e-4) and level["n"] == "8"
+    # The layer's cuts count once: cost.csv has the variant's grooved cuts only.
+    costs = [r for r in csv.DictReader(open(out / "cost.csv")) if r["variant"] == "zone on, groove layer um 25"]
+    assert [(r["surface"], r["cuts"]) for r in costs] == [("rectangular", "8")]
+    assert st.regular_variant_of("zone on, groove layer um 25") == "zone on"
+    assert st.regular_variant_of("zone on, layer_factor 2.46") == "zone on, layer_factor 2.46"

@@ -22,6 +22,9 @@ default, zone off" | "kerf default, zone on" | ..., trends.csv's source), with i
 experiments; default against large is compared within one variant; the damage and cost tables (and cost.csv) get a
 variant column, the report's lists name the variant. A record without such columns is the one unnamed variant ("kerf
 default"), reported as before. A cut is its variant, domain, surface, depth and packing: one in two records is an error.
+A grooves-only choice (kerf.records.GROOVES_ONLY_CHOICES: the grooves' laser-affected layer, groove_damage_depth_um)
+leaves the regular surface as it is: its variant ("zone on, groove layer um 25") has grooved cuts only, and its regular
+force is that of the variant without it ("zone on"), the same cuts, so its groove effect is against them.
 
 Statistics (kerf.stats, python/kerf/stats.py; the record readers kerf.records). A condition's mean is over its packings (the independent samples); its standard error is the
 sample standard deviation / sqrt(n), with n - 1 degrees of freedom. A ratio of two conditions' means (depth
@@ -54,7 +57,8 @@ import pathlib
 import statistics
 import sys
 
-from kerf.records import GROOVED, MODEL_CHOICES, per_width, read_experiments, read_records, reference
+from kerf.records import (GROOVED, MODEL_CHOICES, per_width, read_experiments, read_records, reference,
+                          regular_variant_of)
 from kerf.result_keys import CutResults as R
 from kerf.stats import combination, difference, mean_of, packings_factor, ratio, verdict
 
@@ -137,6 +141,8 @@ class Sources:
         return [kerf_source(d, v) for d in self.shown_domains() for v in self.variants]
 
     def kerf(self, domain, surface, depth, quantity, variant=""):
+        if surface == "regular":  # a grooves-only choice's variant cuts the regular surface as the variant without it
+            variant = regular_variant_of(variant)
         rows = self.variants.get(variant, {}).get((domain, surface, depth), {}).values()
         if quantity in ("main", "thrust"):
             return mean_of([per_width(r, quantity) for r in rows])
