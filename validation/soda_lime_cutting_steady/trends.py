@@ -15,12 +15,12 @@ choice's cuts spread over two studies); a cut in two of them is an error. The st
 (data/studies/X.json for data/studies/results/X.csv; its conditions are those expected, and give the damage floors) is
 found from the record (studies_of; --study overrides it; a record without one takes seed000_steady.json's).
 
-Model variants. A record may have model-choice columns (kerf.records.MODEL_CHOICES: edge_zone, layer_factor; a new
-one is one entry there): their values make a cut's variant ("zone off", "zone on", "zone on, layer_factor 2.46"), and
-cuts are grouped by variant as well as by domain. Each variant is a kerf column of its own beside the others ("kerf
-default, zone off" | "kerf default, zone on" | ..., trends.csv's source), with its own verdicts against the
-experiments; default against large is compared within one variant; the damage and cost tables (and cost.csv) get a
-variant column, the report's lists name the variant. A record without such columns is the one unnamed variant ("kerf
+Model variants. A record may have model-choice columns (kerf.records.MODEL_CHOICES: edge_zone, layer_factor,
+groove_damage_depth_um; a new one is one entry there): their values make a cut's variant ("zone off", "zone on", "zone
+on, layer_factor 2.46"), and cuts are grouped by variant as well as by domain. Each variant is a kerf column of its
+own beside the others ("kerf default, zone off" | "kerf default, zone on" | ..., trends.csv's source), with its own
+verdicts against the experiments; default against large is compared within one variant; the damage and cost tables
+(and cost.csv) get a variant column, the report's lists name the variant. A record without such columns is the one unnamed variant ("kerf
 default"), reported as before. A cut is its variant, domain, surface, depth and packing: one in two records is an error.
 A grooves-only choice (kerf.records.GROOVES_ONLY_CHOICES: the grooves' laser-affected layer, groove_damage_depth_um)
 leaves the regular surface as it is: its variant ("zone on, groove layer um 25") has grooved cuts only, and its regular
