@@ -167,7 +167,7 @@ def main():
     print(report(groups))
     if args.against:
         print()
-        print(paired(groups, read(args.against, args.by)))
+        print(paired(read(args.record, args.by), read(args.against, args.by)))  # the record's own cuts
     if args.beside:
         print()
         print(beside(groups, read(args.beside, args.by)))
