@@ -20,8 +20,9 @@ groove_damage_depth_um; a new one is one entry there): their values make a cut's
 on, layer_factor 2.46"), and cuts are grouped by variant as well as by domain. Each variant is a kerf column of its
 own beside the others ("kerf default, zone off" | "kerf default, zone on" | ..., trends.csv's source), with its own
 verdicts against the experiments; default against large is compared within one variant; the damage and cost tables
-(and cost.csv) get a variant column, the report's lists name the variant. A record without such columns is the one unnamed variant ("kerf
-default"), reported as before. A cut is its variant, domain, surface, depth and packing: one in two records is an error.
+(and cost.csv) get a variant column, the report's lists name the variant. A record without such columns is the one
+unnamed variant ("kerf default"), reported as before. A cut is its variant, domain, surface, depth and packing: one in
+two records is an error.
 A grooves-only choice (kerf.records.GROOVES_ONLY_CHOICES: the grooves' laser-affected layer, groove_damage_depth_um)
 leaves the regular surface as it is: its variant ("zone on, groove layer um 25") has grooved cuts only, and its regular
 force is that of the variant without it ("zone on"), the same cuts, so its groove effect is against them.
