@@ -161,13 +161,14 @@ def main():
     parser.add_argument("--with", dest="also", action="append", default=[],
                         help="a record of the same conditions and packings whose rows join the record's")
     args = parser.parse_args()
-    groups = read(args.record, args.by)
+    own = read(args.record, args.by)
+    groups = {key: list(rows) for key, rows in own.items()}
     for path in args.also:
         read(path, args.by, groups)
     print(report(groups))
     if args.against:
         print()
-        print(paired(read(args.record, args.by), read(args.against, args.by)))  # the record's own cuts
+        print(paired(own, read(args.against, args.by)))  # the record's own cuts, not those --with joined
     if args.beside:
         print()
         print(beside(groups, read(args.beside, args.by)))

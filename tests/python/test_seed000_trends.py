@@ -470,3 +470,26 @@ def test_a_grooves_only_variant_takes_its_regular_cuts_from_the_variant_without_
     assert [(r["surface"], r["cuts"]) for r in costs] == [("rectangular", "8")]
     assert st.regular_variant_of("zone on, groove layer um 25") == "zone on"
     assert st.regular_variant_of("zone on, layer_factor 2.46") == "zone on, layer_factor 2.46"
+
+
+def test_to_resolve_counts_and_prices_a_grooves_only_variants_regular_cuts_as_the_variant_without_it(tmp_path):
+    # The layer's variant has 3 grooved packings (1000 s each) and no regular cuts of its own: its open groove-effect
+    # verdict counts the zone-on variant's 8 regular packings (3600 s each) beside its own 3, and prices each at its
+    # own cut time.
+    zone_record(tmp_path / "record.csv", spread=0.2)
+    write_experiments(tmp_path / "experiments.csv", 0.65, 0.65 * 0.15)
+    write_record(tmp_path / "layer.csv", {("default", "rectangular", 0.1, "on", 25): 0.6 * 0.15}, n=3, spread=0.3,
+                 seed=5, tags=("edge_zone", "groove_damage_depth_um"))
+    cuts = kr.read_records([tmp_path / "record.csv", tmp_path / "layer.csv"], by_variant=True)
+    seconds = {"zone off": 1800.0, "zone on": 3600.0, "zone on, groove layer um 25": 1000.0}
+    for variant, by_key in cuts.items():
+        for by_seed in by_key.values():
+            for r in by_seed.values():
+                r["cpu_time_s"] = seconds[variant]
+    src = st.Sources(cuts, kr.read_experiments(tmp_path / "experiments.csv"))
+    all_trends = st.trends(src)
+    pending = st.to_resolve(st.rows_of(all_trends), all_trends, src, st.costs(cuts))
+    name = "groove effect main, rectangular / regular at 0.1 mm (kerf default, zone on, groove layer um 25)"
+    p = next(p for p in pending if p["verdict"] == f"{name} against the experiments")
+    assert p["now"] == [3, 8]  # src.conditions: (rectangular, 0.1), (regular, 0.1)
+    assert math.isclose(p["cpu_h"], ((p["need"][0] - 3) * 1000.0 + (p["need"][1] - 8) * 3600.0) / 3600)

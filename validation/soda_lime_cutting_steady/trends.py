@@ -141,10 +141,18 @@ class Sources:
         """kerf's columns (kerf_source's names), by domain, then variant."""
         return [kerf_source(d, v) for d in self.shown_domains() for v in self.variants]
 
+    @staticmethod
+    def variant_cutting(variant, surface):
+        """The variant whose cuts of `surface` are `variant`'s: a grooves-only choice's variant cuts the regular
+        surface as the variant without it (regular_variant_of)."""
+        return regular_variant_of(variant) if surface == "regular" else variant
+
+    def cuts(self, domain, surface, depth, variant=""):
+        """{seed: row} of a variant's cuts of one condition."""
+        return self.variants.get(self.variant_cutting(variant, surface), {}).get((domain, surface, depth), {})
+
     def kerf(self, domain, surface, depth, quantity, variant=""):
-        if surface == "regular":  # a grooves-only choice's variant cuts the regular surface as the variant without it
-            variant = regular_variant_of(variant)
-        rows = self.variants.get(variant, {}).get((domain, surface, depth), {}).values()
+        rows = self.cuts(domain, surface, depth, variant).values()
         if quantity in ("main", "thrust"):
             return mean_of([per_width(r, quantity) for r in rows])
         return mean_of([r.get(quantity, math.nan) for r in rows])
@@ -371,12 +379,12 @@ def to_resolve(rows, all_trends, src, cost_rows):
     def add(label, name, domains, variant, terms, against):
         k, why = packings_factor(terms, against)
         keys = [(dom, s, h) for dom in domains for s, h in src.conditions[name]]
-        now = [len(src.variants.get(variant, {}).get(key, {})) for key in keys]
+        now = [len(src.cuts(*key, variant)) for key in keys]
         row = {"verdict": label, "now": now, "factor": k, "why": why}
         if math.isfinite(k):
             need = [math.ceil(k * n - 1e-9) for n in now]
             row["need"] = need
-            row["cpu_h"] = sum((m - n) * cpu.get((variant,) + key, math.nan)
+            row["cpu_h"] = sum((m - n) * cpu.get((src.variant_cutting(variant, key[1]),) + key, math.nan)
                                for m, n, key in zip(need, now, keys)) / 3600
         out.append(row)
 
