@@ -424,6 +424,14 @@ def test_a_record_without_model_choices_is_the_one_unnamed_variant(tmp_path):
     assert "variant" not in st.costs(split)[0]
 
 
+def set_cpu_times(cuts, seconds):
+    """Every cut of read_records(..., by_variant=True)'s `cuts` costs seconds[its variant]."""
+    for variant, by_key in cuts.items():
+        for by_seed in by_key.values():
+            for r in by_seed.values():
+                r["cpu_time_s"] = seconds[variant]
+
+
 def test_to_resolve_counts_and_prices_each_variants_own_packings(tmp_path):
     # Three packings per variant scattering 20 %: open verdicts, each priced on its variant's 3 packings (not the 6
     # of both zones) at its variant's cut time (zone off 1800 s, zone on 3600 s).
@@ -431,10 +439,7 @@ def test_to_resolve_counts_and_prices_each_variants_own_packings(tmp_path):
     write_experiments(tmp_path / "experiments.csv", 0.65, 0.65 * 0.15)
     cuts = kr.read_records([tmp_path / "record.csv"], by_variant=True)
     seconds = {"zone off": 1800.0, "zone on": 3600.0}
-    for variant, by_key in cuts.items():
-        for by_seed in by_key.values():
-            for r in by_seed.values():
-                r["cpu_time_s"] = seconds[variant]
+    set_cpu_times(cuts, seconds)
     src = st.Sources(cuts, kr.read_experiments(tmp_path / "experiments.csv"))
     all_trends = st.trends(src)
     rows = st.rows_of(all_trends)
@@ -482,10 +487,7 @@ def test_to_resolve_counts_and_prices_a_grooves_only_variants_regular_cuts_as_th
                  seed=5, tags=("edge_zone", "groove_damage_depth_um"))
     cuts = kr.read_records([tmp_path / "record.csv", tmp_path / "layer.csv"], by_variant=True)
     seconds = {"zone off": 1800.0, "zone on": 3600.0, "zone on, groove layer um 25": 1000.0}
-    for variant, by_key in cuts.items():
-        for by_seed in by_key.values():
-            for r in by_seed.values():
-                r["cpu_time_s"] = seconds[variant]
+    set_cpu_times(cuts, seconds)
     src = st.Sources(cuts, kr.read_experiments(tmp_path / "experiments.csv"))
     all_trends = st.trends(src)
     pending = st.to_resolve(st.rows_of(all_trends), all_trends, src, st.costs(cuts))
