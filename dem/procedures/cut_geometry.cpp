@@ -42,7 +42,9 @@ double distance_to_groove_outline(const CutParams& p, double dx_m, double depth_
 std::array<std::size_t, 2> apply_groove_damage(Simulation& workpiece, const CutParams& p,
                                                const std::array<double, 4>& box_m) {
   std::array<std::size_t, 2> count{};
-  if (p.grooves.shape == GrooveShape::none || p.grooves.damage_depth_m <= 0) return count;
+  if (p.grooves.shape == GrooveShape::none || p.grooves.damage_depth_m <= 0 ||
+      p.grooves.damage_model != GrooveDamageModel::broken_joints)
+    return count;
   const auto& q = workpiece.particles();
   auto& b = workpiece.bonds();
   const double y_top_m = box_m[3];
@@ -51,11 +53,7 @@ std::array<std::size_t, 2> apply_groove_damage(Simulation& workpiece, const CutP
   for (std::size_t k = 0; k < b.size(); ++k) {
     if (!b.active[k]) continue;
     const auto i = static_cast<std::size_t>(b.i[k]), j = static_cast<std::size_t>(b.j[k]);
-    const double x = 0.5 * (q.x[i] + q.x[j]), depth = y_top_m - 0.5 * (q.y[i] + q.y[j]);
-    bool in_layer = false;
-    for (double c : centres)
-      in_layer = in_layer || distance_to_groove_outline(p, x - c, depth) <= p.grooves.damage_depth_m;
-    if (!in_layer) continue;
+    if (!in_groove_layer(p, centres, y_top_m, 0.5 * (q.x[i] + q.x[j]), 0.5 * (q.y[i] + q.y[j]))) continue;
     ++count[0];
     // SplitMix64's finaliser of the joint's index: a uniform draw in [0, 1) that needs no generator state.
     std::uint64_t z = (static_cast<std::uint64_t>(k) + 1) * 0x9E3779B97F4A7C15ull;
@@ -81,6 +79,13 @@ std::vector<double> groove_centres(const CutParams& p, double x_left_m, double x
   // the top surface).
   for (double c = x_right_m - 0.5 * p.grooves.pitch_m; c - half > x_left_m; c -= p.grooves.pitch_m) out.push_back(c);
   return out;
+}
+
+bool in_groove_layer(const CutParams& p, const std::vector<double>& centres, double y_top_m, double x_m, double y_m) {
+  if (p.grooves.shape == GrooveShape::none || p.grooves.damage_depth_m <= 0) return false;
+  for (double c : centres)
+    if (distance_to_groove_outline(p, x_m - c, y_top_m - y_m) <= p.grooves.damage_depth_m) return true;
+  return false;
 }
 
 bool inside_any_groove(const CutParams& p, const std::vector<double>& centres, double y_top_m, double x_m, double y_m) {

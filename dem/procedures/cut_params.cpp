@@ -17,6 +17,12 @@ const EnumNames<GrooveShape>& groove_shape_names() {
   return table;
 }
 
+const EnumNames<GrooveDamageModel>& groove_damage_model_names() {
+  static constexpr std::string_view names[] = {"broken_joints", "edge_zone"};
+  static const EnumNames<GrooveDamageModel> table{names};
+  return table;
+}
+
 const FieldTable<CutParams::Cut>& cut_fields() {
   using namespace units;
   using P = CutParams::Cut;
@@ -67,12 +73,17 @@ const FieldTable<CutParams::Grooves>& groove_fields() {
       number_field("bottom_width_mm", kMm, Range::non_negative(),
                    "trapezoidal: width at the groove bottom (default: half the width)", &P::bottom_width_m),
       number_field("damage_depth_um", kUm, Range::non_negative(),
-                   "laser-affected layer: joints within this distance of a groove's walls and bottom are pre-broken "
-                   "(0: pristine glass up to the groove)",
+                   "laser-affected layer along a groove's walls and bottom, its depth (0: pristine glass up to the "
+                   "groove)",
                    &P::damage_depth_m),
       number_field("damage_broken_fraction", kNone, Range::closed(0, 1),
-                   "share of the layer's joints pre-broken (chosen by a hash of the joint: reproducible per packing)",
-                   &P::damage_broken_fraction)};
+                   "broken_joints: share of the layer's joints pre-broken (chosen by a hash of the joint: reproducible "
+                   "per packing)",
+                   &P::damage_broken_fraction),
+      choice_field("damage_model", groove_damage_model_names(),
+                   "the layer as broken_joints (its joints pre-broken) or edge_zone (below the disks' scale: joints "
+                   "kept, the edge zone's force off while the cut line at the tip lies in the layer)",
+                   &P::damage_model)};
   return table;
 }
 
@@ -184,6 +195,10 @@ void check_cut_relations(const CutParams& p) {
         "active_window.absorbing_depths", p.window.absorbing_depths,
         "a layer thinner than the window's ahead, behind and below depths");
   if (p.grooves.shape == GrooveShape::none) return;
+  if (p.grooves.damage_model == GrooveDamageModel::edge_zone && !(p.edge_zone.enabled && p.grooves.damage_depth_m > 0))
+    throw InputError(
+        "grooves.damage_model", "edge_zone",
+        "broken_joints unless edge_zone.enabled and grooves.damage_depth_um > 0 (the zone reads the layer)");
   require(p.grooves.width_m < p.grooves.pitch_m, "grooves.width_mm", units::m_to_mm(p.grooves.width_m),
           "a positive width below grooves.pitch_mm (" + format_value(units::m_to_mm(p.grooves.pitch_m)) + " mm)");
   if (p.grooves.shape == GrooveShape::trapezoidal)
@@ -246,6 +261,8 @@ Json cut_params_to_json(const CutParams& p) {
     j["grooves"].erase("damage_depth_um");
     j["grooves"].erase("damage_broken_fraction");
   }
+  if (p.grooves.damage_depth_m <= 0 || p.grooves.damage_model == GrooveDamageModel::broken_joints)
+    j["grooves"].erase("damage_model");  // the layers recorded before the choice keep their summaries
   if (p.window.enabled) j["active_window"] = fields_to_json(active_window_fields(), p.window);
   if (p.edge_zone.enabled)
     j["edge_zone"] = fields_to_json(edge_zone_fields(), p.edge_zone);  // only when on: other summaries unchanged

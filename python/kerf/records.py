@@ -55,11 +55,12 @@ def cutting_force_column(names):
 # A record's columns that choose the model (a study's tags that its conditions differ in beside the condition's own:
 # domain, surface, depth), each with the name the reports give it. A cut's *variant* is its values of those its record
 # has, in this order ("zone on, layer_factor 2.46"; "" where it has none). A new model choice is one more entry here.
-MODEL_CHOICES = (("edge_zone", "zone"), ("layer_factor", "layer_factor"), ("groove_damage_depth_um", "groove layer um"))
-# Model choices that act on the grooved surfaces only (the grooves' laser-affected layer, grooves.damage_depth_um): a
-# variant with one has no regular cuts of its own, its regular cuts are those of the variant without it
-# (regular_variant_of).
-GROOVES_ONLY_CHOICES = ("groove_damage_depth_um",)
+MODEL_CHOICES = (("edge_zone", "zone"), ("layer_factor", "layer_factor"),
+                 ("groove_damage_depth_um", "groove layer um"), ("groove_damage_model", "layer as"))
+# Model choices that act on the grooved surfaces only (the grooves' laser-affected layer, grooves.damage_depth_um, and
+# how the cut represents it, grooves.damage_model): a variant with one has no regular cuts of its own, its regular cuts
+# are those of the variant without it (regular_variant_of).
+GROOVES_ONLY_CHOICES = ("groove_damage_depth_um", "groove_damage_model")
 
 
 def variant_of(row):

@@ -71,6 +71,24 @@ TEST_CASE("cutting: distance to a groove's walls and bottom", "[cutting]") {
   CHECK_THAT(distance_to_groove_outline(trap, 0, 0.13e-3), WithinAbs(0.03e-3, 1e-12));  // below the narrow bottom
 }
 
+TEST_CASE("cutting: the layer along the cut line spans a groove's bottom and the layer's depth on either side",
+          "[cutting]") {
+  // Grooves as deep as the cut (seed 000): on the cut line, the layer of depth d covers |x - c| <= w / 2 + d of each.
+  CutParams p = grooved(GrooveShape::rectangular);  // width 0.06 mm, depth 0.1 mm, pitch 0.2 mm
+  const double y_top = 1e-3, y_line = y_top - p.grooves.depth_m, c = 0.5e-3, d = 4e-6;
+  const std::vector<double> centres{c, c + p.grooves.pitch_m};
+  CHECK_FALSE(in_groove_layer(p, centres, y_top, c, y_line));  // no layer
+  p.grooves.damage_depth_m = d;
+  for (double side : {-1.0, 1.0}) {
+    CHECK(in_groove_layer(p, centres, y_top, c + side * (0.03e-3 + 0.99 * d), y_line));
+    CHECK_FALSE(in_groove_layer(p, centres, y_top, c + side * (0.03e-3 + 1.01 * d), y_line));
+  }
+  CHECK(in_groove_layer(p, centres, y_top, c, y_line - 0.99 * d));  // below the bottom
+  CHECK_FALSE(in_groove_layer(p, centres, y_top, c, y_line - 1.01 * d));
+  CHECK(in_groove_layer(p, centres, y_top, c + p.grooves.pitch_m + 0.03e-3, y_line));    // the next groove's
+  CHECK_FALSE(in_groove_layer(p, centres, y_top, c + 0.5 * p.grooves.pitch_m, y_line));  // mid-ridge
+}
+
 TEST_CASE("cutting: the grooves' laser-affected layer breaks the joints near the walls and bottom", "[cutting]") {
   const Simulation specimen = quick_workpiece_specimen(0.4e-3, 0.3e-3, 11);
   CutParams g = grooved(GrooveShape::rectangular);

@@ -6,7 +6,9 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <string>
+#include <utility>
 
 #include "cut_blocks.hpp"
 #include "kerf/dem/procedures/cut_window.hpp"
@@ -182,6 +184,76 @@ TEST_CASE("edge zone: resumed from its checkpoint, the cut and its record go on 
   CHECK(older.result().edge_zone.samples == 0);
 }
 
+namespace {
+
+/// The tool's tip as CutRun takes it (the front-most of its lowest points), from the walls of a cut's simulation
+/// (on these blocks the tool's alone).
+std::array<double, 2> tool_tip(const Simulation& sim) {
+  double y_low = std::numeric_limits<double>::infinity(), x_tip = y_low;
+  for (const Wall& w : sim.walls())
+    for (const auto& [x, y] : {std::pair{w.x0, w.y0}, std::pair{w.x1, w.y1}}) {
+      if (y < y_low - 1e-12)
+        y_low = y, x_tip = x;
+      else if (y < y_low + 1e-12)
+        x_tip = std::min(x_tip, x);
+    }
+  return {x_tip, y_low};
+}
+
+}  // namespace
+
+TEST_CASE("edge zone: a groove's layer below the disks' scale turns the force off where the cut line lies in it",
+          "[edge_zone]") {
+  // Grooves every 60 um, 20 um wide and as deep as the cut (their bottoms on the cut line), a 5 um laser-affected
+  // layer read by the zone: along the cut line the layer spans 20 + 2 x 5 = 30 um of every 60. On the conservative
+  // block the edge meets intact glass almost everywhere (the test above); with the layer, nowhere within it.
+  const Simulation block = hex_workpiece(conservative_material(), 0.6e-3, 0.25e-3);
+  CutParams p = zone_cut();
+  p.cut.length_m = 0.12e-3;  // two pitches
+  p.grooves.shape = GrooveShape::rectangular;
+  p.grooves.pitch_m = 60e-6;
+  p.grooves.width_m = 20e-6;
+  p.grooves.depth_m = p.cut.depth_of_cut_m;
+  CutParams layer = p;
+  layer.grooves.damage_depth_m = 5e-6;
+  layer.grooves.damage_model = GrooveDamageModel::edge_zone;
+  struct Counts {
+    int in_layer = 0, outside = 0, loaded_in_layer = 0, loaded_outside = 0;
+  };
+  const auto cut = [&](const CutParams& q) {
+    CutRun run(block, q);
+    const auto& box = run.result().workpiece_box_m;
+    const auto centres = groove_centres(layer, box[0], box[1]);
+    Counts c;
+    for (bool more = true; more;) {
+      const auto tip = tool_tip(run.simulation());  // where the zone looks at the sample's start
+      more = run.advance();
+      const bool loaded = !run.simulation().disk_loads().empty();
+      if (in_groove_layer(layer, centres, run.result().y_top_m, tip[0], run.result().y_cut_m))
+        ++c.in_layer, c.loaded_in_layer += loaded;
+      else
+        ++c.outside, c.loaded_outside += loaded;
+    }
+    return std::pair{c, run.result()};
+  };
+  const auto [none, none_result] = cut(p);
+  const auto [with, with_result] = cut(layer);
+  INFO("no layer: " << none.loaded_in_layer << " of " << none.in_layer << " samples loaded in the layer's span, "
+                    << none.loaded_outside << " of " << none.outside << " outside; with it: " << with.loaded_in_layer
+                    << " of " << with.in_layer << ", " << with.loaded_outside << " of " << with.outside);
+  REQUIRE(with.in_layer == none.in_layer);  // the tool's path is the cut's, whatever the zone does
+  // Half the travel in the layer's span (30 of every 60 um), to a sample's travel at each of the four crossings.
+  const double per_sample_m = p.cut.speed_m_per_s * with_result.time_step_s * p.cut.sample_every_steps;
+  CHECK_THAT(with.in_layer * per_sample_m, WithinAbs(0.5 * p.cut.length_m, 4 * per_sample_m));
+  CHECK(none.loaded_in_layer > none.in_layer / 2);  // without the layer the zone acts there
+  CHECK(with.loaded_in_layer == 0);
+  // Outside the layer's span as without a layer (there the grooves' 40 um ridges, two disks wide, often leave the edge
+  // no tied disk across the cut line: measured 327 of 794 samples loaded).
+  CHECK(with.loaded_outside > 0);
+  CHECK(std::abs(with.loaded_outside - none.loaded_outside) <= with.outside / 20);
+  CHECK(with_result.groove_damage_joints == std::array<std::size_t, 2>{0, 0});  // the joints kept
+}
+
 TEST_CASE("edge zone: its keys are validated with their dotted names", "[edge_zone]") {
   CutParams p = zone_cut();
   p.window.enabled = false;
@@ -198,4 +270,12 @@ TEST_CASE("edge zone: its keys are validated with their dotted names", "[edge_zo
   CHECK_NOTHROW(validate_cut_params(p));
   CHECK_THROWS_WITH(CutRun(hex_workpiece(Material{}, 0.6e-3, 0.25e-3), p),
                     Catch::Contains("edge_zone.cutting_force_N_per_mm"));
+  p = zone_cut();
+  p.grooves.shape = GrooveShape::rectangular;
+  p.grooves.damage_model = GrooveDamageModel::edge_zone;  // without a layer to read
+  CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains("grooves.damage_model = edge_zone"));
+  p.grooves.damage_depth_m = 5e-6;
+  CHECK_NOTHROW(validate_cut_params(p));
+  p.edge_zone.enabled = false;
+  CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains("grooves.damage_model"));
 }

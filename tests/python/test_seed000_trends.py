@@ -474,6 +474,7 @@ def test_a_grooves_only_variant_takes_its_regular_cuts_from_the_variant_without_
     costs = [r for r in csv.DictReader(open(out / "cost.csv")) if r["variant"] == "zone on, groove layer um 25"]
     assert [(r["surface"], r["cuts"]) for r in costs] == [("rectangular", "8")]
     assert st.regular_variant_of("zone on, groove layer um 25") == "zone on"
+    assert st.regular_variant_of("zone on, groove layer um 10, layer as edge_zone") == "zone on"
     assert st.regular_variant_of("zone on, layer_factor 2.46") == "zone on, layer_factor 2.46"
 
 

@@ -35,6 +35,11 @@ enum class GrooveShape { none, rectangular, trapezoidal };
 /// "none", "rectangular", "trapezoidal" (the inverted trapezoid of the real laser grooves).
 const EnumNames<GrooveShape>& groove_shape_names();
 
+/// How a cut represents the grooves' laser-affected layer (CutParams::Grooves::damage_model).
+enum class GrooveDamageModel { broken_joints, edge_zone };
+/// "broken_joints" (the joints within the layer pre-broken), "edge_zone" (a layer below the disks' scale).
+const EnumNames<GrooveDamageModel>& groove_damage_model_names();
+
 /// The cut's parameters, one struct per scene section (its keys in that section's field table: cut_fields(),
 /// tool_fields(), ...), in SI.
 struct CutParams {
@@ -70,11 +75,16 @@ struct CutParams {
     GrooveShape shape = GrooveShape::none;
     double depth_m = 0.1e-3, pitch_m = 0.2e-3, width_m = 0.06e-3;
     double bottom_width_m = 0.03e-3;  ///< trapezoidal only: width at the groove bottom
-    /// The laser-affected layer along each groove's walls and bottom (apply_groove_damage): joints whose
-    /// midpoint lies within this distance of the groove's outline are pre-broken, each with probability
-    /// damage_broken_fraction. 0 (the default): pristine glass up to the groove, as Yang et al. 2018's DEM.
+    /// The laser-affected layer along each groove's walls and bottom: its depth (0, the default: pristine glass up
+    /// to the groove, as Yang et al. 2018's DEM) and how the cut represents it (damage_model). broken_joints (the
+    /// default): joints whose midpoint lies within this distance of the groove's outline are pre-broken, each with
+    /// probability damage_broken_fraction (apply_groove_damage). edge_zone, for a layer thinner than the disks
+    /// (docs/physics-glass-edge.md section 4: a few um): the joints are kept, and the edge zone's force is off
+    /// while the cut line at the tool's tip lies within the layer (in_groove_layer): the edge meets laser-damaged
+    /// glass there, not an intact layer to cut (a bound: no force at all on that glass).
     double damage_depth_m = 0;
     double damage_broken_fraction = 1;
+    GrooveDamageModel damage_model = GrooveDamageModel::broken_joints;
   };
   /// Section "active_window": the active window of a steady-state cut (kerf/dem/procedures/cut_window.hpp): off,
   /// every disk of the workpiece is integrated. Extents in depths of cut around the cutting edge.
@@ -167,6 +177,10 @@ std::vector<double> groove_centres(const CutParams& params, double x_left_m, dou
 /// Whether (x, y) lies inside any groove of a workpiece with top surface at `y_top_m`.
 bool inside_any_groove(const CutParams& params, const std::vector<double>& centres, double y_top_m, double x_m,
                        double y_m);
+/// Whether (x, y) lies within params.grooves.damage_depth_m of any groove's walls or bottom (its laser-affected
+/// layer; inside the groove included); false without a layer.
+bool in_groove_layer(const CutParams& params, const std::vector<double>& centres, double y_top_m, double x_m,
+                     double y_m);
 
 /// The tool outline, a closed polygon: rake-face top, the edge (the sharp tip, or the arc points of a
 /// rounded edge), the clearance-face end; segment k joins vertex k to vertex k + 1 (mod n), so the last
