@@ -251,10 +251,14 @@ CutRun::CutRun(const Simulation& specimen, const CutParams& params)
 }
 
 std::array<double, 2> CutRun::edge() const {
-  const auto& walls = sim_.walls();
+  return tool_edge(sim_, first_tool_wall_, n_tool_walls_);
+}
+
+std::array<double, 2> tool_edge(const Simulation& sim, std::int32_t first_tool_wall, std::int32_t n_tool_walls) {
+  const auto& walls = sim.walls();
   double y_low = std::numeric_limits<double>::infinity(), x_edge = y_low;
-  for (std::int32_t w = 0; w < n_tool_walls_; ++w) {
-    const Wall& face = walls[static_cast<std::size_t>(first_tool_wall_ + w)];
+  for (std::int32_t w = 0; w < n_tool_walls; ++w) {
+    const Wall& face = walls[static_cast<std::size_t>(first_tool_wall + w)];
     for (const auto& [x, y] : {std::pair{face.x0, face.y0}, std::pair{face.x1, face.y1}}) {
       if (y < y_low - 1e-12)
         y_low = y, x_edge = x;

@@ -6,7 +6,6 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
-#include <limits>
 #include <string>
 #include <utility>
 
@@ -184,24 +183,6 @@ TEST_CASE("edge zone: resumed from its checkpoint, the cut and its record go on 
   CHECK(older.result().edge_zone.samples == 0);
 }
 
-namespace {
-
-/// The tool's tip as CutRun takes it (the front-most of its lowest points), from the walls of a cut's simulation
-/// (on these blocks the tool's alone).
-std::array<double, 2> tool_tip(const Simulation& sim) {
-  double y_low = std::numeric_limits<double>::infinity(), x_tip = y_low;
-  for (const Wall& w : sim.walls())
-    for (const auto& [x, y] : {std::pair{w.x0, w.y0}, std::pair{w.x1, w.y1}}) {
-      if (y < y_low - 1e-12)
-        y_low = y, x_tip = x;
-      else if (y < y_low + 1e-12)
-        x_tip = std::min(x_tip, x);
-    }
-  return {x_tip, y_low};
-}
-
-}  // namespace
-
 TEST_CASE("edge zone: a groove's layer below the disks' scale turns the force off where the cut line lies in it",
           "[edge_zone]") {
   // Grooves every 60 um, 20 um wide and as deep as the cut (their bottoms on the cut line), a 5 um laser-affected
@@ -226,7 +207,8 @@ TEST_CASE("edge zone: a groove's layer below the disks' scale turns the force of
     const auto centres = groove_centres(layer, box[0], box[1]);
     Counts c;
     for (bool more = true; more;) {
-      const auto tip = tool_tip(run.simulation());  // where the zone looks at the sample's start
+      // Where the zone looks at the sample's start (on these blocks the walls are the tool's alone).
+      const auto tip = tool_edge(run.simulation(), 0, static_cast<std::int32_t>(run.simulation().walls().size()));
       more = run.advance();
       const bool loaded = !run.simulation().disk_loads().empty();
       if (in_groove_layer(layer, centres, run.result().y_top_m, tip[0], run.result().y_cut_m))

@@ -248,6 +248,10 @@ inline constexpr std::array<double, 2> kTiedStretchM{0.05e-3, 0.3e-3};
 /// The depth bands below the cut line of the tied share (disk centres), [from, to): 0-25, 25-50, 50-100 um.
 inline constexpr std::array<double, 4> kTiedBandDepthM{0, 25e-6, 50e-6, 100e-6};
 
+/// The tool's cutting edge: the front-most (smallest x) of the lowest end points of the walls [first_tool_wall,
+/// + n_tool_walls) of `sim` (a flat clearance face has two lowest points) {x, y}.
+std::array<double, 2> tool_edge(const Simulation& sim, std::int32_t first_tool_wall, std::int32_t n_tool_walls);
+
 /// The disks touching one of the tool's walls [first_tool_wall, + n_tool_walls) at a contact point (the wall's
 /// closest point to the disk's centre) within `reach_m` of the tip, in the order of the wall contacts (a disk
 /// touching two walls there, twice).
