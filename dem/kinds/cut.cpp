@@ -167,9 +167,8 @@ class CutKind final : public SceneKind {
     Json& summary = started.summary;
     // CutRun checks the cut against the workpiece and the time step before the first step.
     CutRun cut(specimen, cut_);
-    if (cut_.grooves.damage_depth_m > 0 &&
-        cut_.grooves.damage_model == GrooveDamageModel::broken_joints) {  // counted here: the summary travels in the
-                                                                          // checkpoints, the counts do not
+    // The broken layer's joints, counted here: the summary travels in the checkpoints, the counts do not.
+    if (cut_.grooves.damage_depth_m > 0 && cut_.grooves.damage_model == GrooveDamageModel::broken_joints) {
       const auto joints = cut.result().groove_damage_joints;
       summary["groove_damage"] = Json{{"joints_in_layer", joints[0]}, {"joints_pre_broken", joints[1]}};
     }

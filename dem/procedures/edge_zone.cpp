@@ -93,7 +93,8 @@ bool CutRun::edge_zone_begin_sample() {
     z = sets();
   }
   // A groove's laser-affected layer below the disks' scale (grooves.damage_model edge_zone): where the cut line at
-  // the tip lies in it, the edge meets damaged glass, not an intact layer to cut; no force (a bound).
+  // the tip lies in it, the edge meets damaged glass, not an intact layer to cut; no force (a bound). The disks it
+  // reached have left as its chip all the same (above).
   if (params_.grooves.damage_model == GrooveDamageModel::edge_zone) {
     const auto& box = res_.workpiece_box_m;
     if (in_groove_layer(params_, groove_centres(params_, box[0], box[1]), res_.y_top_m, tip[0], res_.y_cut_m))
