@@ -172,6 +172,8 @@ class CutKind final : public SceneKind {
       const auto joints = cut.result().groove_damage_joints;
       summary["groove_damage"] = Json{{"joints_in_layer", joints[0]}, {"joints_pre_broken", joints[1]}};
     }
+    if (cut_.edge_zone.lateral_crack == LateralCrack::whole_cut_line)
+      summary["lateral_crack"] = Json{{"cut_line_joints_broken", cut.result().cut_line_joints_broken}};
     return {0,
             continue_cut(common, cut_, run.doc, std::move(summary), o, std::move(cut),
                          {{}, 0, run.scene_dir, progress_target(o), {}}),

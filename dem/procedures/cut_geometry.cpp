@@ -13,6 +13,15 @@ namespace kerf::dem {
 
 namespace {
 constexpr double kPi = std::numbers::pi;
+
+/// Breaks every element of joint k before a cut: it carries compression and friction, no tension, no shear force.
+void break_joint(BondStore& b, std::size_t k) {
+  const auto stride = static_cast<std::size_t>(b.stride);
+  for (std::size_t e = 0; e < stride; ++e) {
+    b.bonded[k * stride + e] = 0;
+    b.shear_force_N[k * stride + e] = 0;
+  }
+}
 }  // namespace
 
 bool inside_groove_outline(const CutParams& p, double dx_m, double depth_m) {
@@ -49,7 +58,6 @@ std::array<std::size_t, 2> apply_groove_damage(Simulation& workpiece, const CutP
   auto& b = workpiece.bonds();
   const double y_top_m = box_m[3];
   const auto centres = groove_centres(p, box_m[0], box_m[1]);
-  const auto stride = static_cast<std::size_t>(b.stride);
   for (std::size_t k = 0; k < b.size(); ++k) {
     if (!b.active[k]) continue;
     const auto i = static_cast<std::size_t>(b.i[k]), j = static_cast<std::size_t>(b.j[k]);
@@ -62,10 +70,21 @@ std::array<std::size_t, 2> apply_groove_damage(Simulation& workpiece, const CutP
     z ^= z >> 31;
     if (static_cast<double>(z >> 11) * 0x1.0p-53 >= p.grooves.damage_broken_fraction) continue;
     ++count[1];
-    for (std::size_t e = 0; e < stride; ++e) {
-      b.bonded[k * stride + e] = 0;
-      b.shear_force_N[k * stride + e] = 0;
-    }
+    break_joint(b, k);
+  }
+  return count;
+}
+
+std::size_t separate_cut_line(Simulation& workpiece, double y_cut_m) {
+  const auto& q = workpiece.particles();
+  auto& b = workpiece.bonds();
+  std::size_t count = 0;
+  for (std::size_t k = 0; k < b.size(); ++k) {
+    if (!b.active[k] || b.n_bonded_elements(k) == 0) continue;
+    const auto i = static_cast<std::size_t>(b.i[k]), j = static_cast<std::size_t>(b.j[k]);
+    if ((q.y[i] - y_cut_m) * (q.y[j] - y_cut_m) >= 0) continue;  // both on one side (or a centre on the line)
+    ++count;
+    break_joint(b, k);
   }
   return count;
 }

@@ -23,6 +23,12 @@ const EnumNames<GrooveDamageModel>& groove_damage_model_names() {
   return table;
 }
 
+const EnumNames<LateralCrack>& lateral_crack_names() {
+  static constexpr std::string_view names[] = {"none", "whole_cut_line"};
+  static const EnumNames<LateralCrack> table{names};
+  return table;
+}
+
 const FieldTable<CutParams::Cut>& cut_fields() {
   using namespace units;
   using P = CutParams::Cut;
@@ -154,7 +160,11 @@ const FieldTable<CutParams::EdgeZone>& edge_zone_fields() {
       given_force("cutting_force_N_per_mm", "the layer's cutting force per unit width (with thrust_force_N_per_mm)",
                   &P::cutting_force_N_per_m),
       given_force("thrust_force_N_per_mm", "the layer's thrust force per unit width (with cutting_force_N_per_mm)",
-                  &P::thrust_force_N_per_m)};
+                  &P::thrust_force_N_per_m),
+      choice_field("lateral_crack", lateral_crack_names(),
+                   "the lateral crack under the edge: none (where the lattice starts it) or whole_cut_line (every "
+                   "joint across the cut line broken before the cut: the bound of a crack without end)",
+                   &P::lateral_crack)};
   return table;
 }
 
@@ -182,6 +192,9 @@ void check_cut_relations(const CutParams& p) {
           units::m_to_um(p.tool.edge_radius_m), "an edge radius whose rounding fits on both tool faces");
   require(!p.edge_zone.enabled || p.window.enabled, "edge_zone.enabled", 1.0,
           "false unless active_window.enabled (the zone removes disks through the window)");
+  if (p.edge_zone.lateral_crack != LateralCrack::none && !p.edge_zone.enabled)
+    throw InputError("edge_zone.lateral_crack", lateral_crack_names().name(p.edge_zone.lateral_crack),
+                     "none unless edge_zone.enabled (the crack runs under the zone's edge)");
   require((p.edge_zone.cutting_force_N_per_m < 0) == (p.edge_zone.thrust_force_N_per_m < 0),
           "edge_zone.thrust_force_N_per_mm", units::n_per_m_to_n_per_mm(p.edge_zone.thrust_force_N_per_m),
           "given together with edge_zone.cutting_force_N_per_mm, or both absent (the material's edge model)");
@@ -264,8 +277,11 @@ Json cut_params_to_json(const CutParams& p) {
   if (p.grooves.damage_depth_m <= 0 || p.grooves.damage_model == GrooveDamageModel::broken_joints)
     j["grooves"].erase("damage_model");  // the layers recorded before the choice keep their summaries
   if (p.window.enabled) j["active_window"] = fields_to_json(active_window_fields(), p.window);
-  if (p.edge_zone.enabled)
+  if (p.edge_zone.enabled) {
     j["edge_zone"] = fields_to_json(edge_zone_fields(), p.edge_zone);  // only when on: other summaries unchanged
+    if (p.edge_zone.lateral_crack == LateralCrack::none)
+      j["edge_zone"].erase("lateral_crack");  // the zones recorded before the choice keep their summaries
+  }
   return j;
 }
 

@@ -193,6 +193,8 @@ CutRun::CutRun(const Simulation& specimen, const CutParams& params)
   res_.workpiece_box_m = {b0.x_min, b0.x_max, b0.y_min, b0.y_max};
   res_.groove_damage_joints = apply_groove_damage(sim_, params_, res_.workpiece_box_m);
   res_.y_cut_m = b0.y_max - params_.cut.depth_of_cut_m;
+  if (params_.edge_zone.lateral_crack == LateralCrack::whole_cut_line)
+    res_.cut_line_joints_broken = separate_cut_line(sim_, res_.y_cut_m);
   res_.width_m = sim_.options().thickness_m;
   // The tool starts with the part that meets the workpiece first (its left-most point between the cut
   // line and the top surface: the rake face at the surface for a negative rake) half a largest radius

@@ -153,6 +153,44 @@ TEST_CASE("cutting: the grooves' laser-affected layer breaks the joints near the
   CHECK(apply_groove_damage(thick, g, box)[0] > counts[0]);
 }
 
+TEST_CASE("cutting: the separated cut line keeps no joint across it and every other joint", "[cutting]") {
+  const Simulation specimen = quick_workpiece_specimen(0.4e-3, 0.3e-3, 11);
+  std::size_t removed = 0;
+  CutParams p;
+  p.cut.depth_of_cut_m = 0.1e-3;
+  const Simulation pristine = make_workpiece(specimen, p, removed);
+  double y_top = -1;
+  for (std::size_t k = 0; k < pristine.particles().size(); ++k)
+    y_top = std::max(y_top, pristine.particles().y[k] + pristine.particles().radius[k]);
+  const double y_cut = y_top - p.cut.depth_of_cut_m;
+  const auto across = [&](const Simulation& s, std::size_t k) {
+    const auto& q = s.particles();
+    const auto i = static_cast<std::size_t>(s.bonds().i[k]), j = static_cast<std::size_t>(s.bonds().j[k]);
+    return std::min(q.y[i], q.y[j]) < y_cut && std::max(q.y[i], q.y[j]) > y_cut;
+  };
+  std::size_t expected = 0;
+  for (std::size_t k = 0; k < pristine.bonds().size(); ++k)
+    expected += across(pristine, k) && pristine.bonds().n_bonded_elements(k) > 0;
+  Simulation cut = pristine;
+  const std::size_t broken = separate_cut_line(cut, y_cut);
+  // A line 0.4 mm long through disks of 20-26 um diameter: a joint across it every disk or so.
+  CHECK(broken >= 10);
+  CHECK(broken == expected);
+  for (std::size_t k = 0; k < cut.bonds().size(); ++k) {
+    if (across(cut, k))
+      CHECK(cut.bonds().n_bonded_elements(k) == 0);
+    else
+      CHECK(cut.bonds().n_bonded_elements(k) == pristine.bonds().n_bonded_elements(k));
+  }
+  // Joints already broken are not counted again; the disks did not move.
+  CHECK(separate_cut_line(cut, y_cut) == 0);
+  CHECK(cut.particles().y == pristine.particles().y);
+  // A line above the workpiece crosses nothing.
+  Simulation above = pristine;
+  CHECK(separate_cut_line(above, y_top + 1e-3) == 0);
+  CHECK(above.bonds().bonded == pristine.bonds().bonded);
+}
+
 TEST_CASE("cutting: grooves every pitch across the cut path", "[cutting]") {
   CutParams p = grooved(GrooveShape::rectangular);
   auto c = groove_centres(p, 0, 1e-3);

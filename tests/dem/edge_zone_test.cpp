@@ -260,4 +260,13 @@ TEST_CASE("edge zone: its keys are validated with their dotted names", "[edge_zo
   CHECK_NOTHROW(validate_cut_params(p));
   p.edge_zone.enabled = false;
   CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains("grooves.damage_model"));
+  // The lateral crack runs under the zone's edge: with the zone only; in the scene's JSON only when chosen, so that
+  // the zones recorded before the choice keep their summaries.
+  p = zone_cut();
+  CHECK_FALSE(cut_params_to_json(p)["edge_zone"].contains("lateral_crack"));
+  p.edge_zone.lateral_crack = LateralCrack::whole_cut_line;
+  CHECK_NOTHROW(validate_cut_params(p));
+  CHECK(cut_params_to_json(p)["edge_zone"]["lateral_crack"] == "whole_cut_line");
+  p.edge_zone.enabled = false;
+  CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains("edge_zone.lateral_crack = whole_cut_line"));
 }

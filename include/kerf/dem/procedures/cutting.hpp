@@ -40,6 +40,11 @@ enum class GrooveDamageModel { broken_joints, edge_zone };
 /// "broken_joints" (the joints within the layer pre-broken), "edge_zone" (a layer below the disks' scale).
 const EnumNames<GrooveDamageModel>& groove_damage_model_names();
 
+/// Where the edge zone's lateral crack runs (CutParams::EdgeZone::lateral_crack).
+enum class LateralCrack { none, whole_cut_line };
+/// "none", "whole_cut_line" (every joint across the cut line broken before the cut: the bound).
+const EnumNames<LateralCrack>& lateral_crack_names();
+
 /// The cut's parameters, one struct per scene section (its keys in that section's field table: cut_fields(),
 /// tool_fields(), ...), in SI.
 struct CutParams {
@@ -134,6 +139,13 @@ struct CutParams {
     /// The layer's force per unit width [N/m], cutting and thrust; negative (the default): the cut kind computes
     /// them from the material and the tool (kerf::edge_force_per_width) before the run starts.
     double cutting_force_N_per_m = -1, thrust_force_N_per_m = -1;
+    /// The lateral crack under the edge (issue 54 item 3, design 2: docs/notes/2026-12-07-edge-zone-steady-stage-1.md).
+    /// In glass the lateral cracks start at the base of the plastic zone under a sharp contact, a few um below it
+    /// (Marshall, Lawn & Evans 1982), and run parallel to the surface: at the disks' scale, along the cut line. Their
+    /// length per unit line load has no source here, so only the bound is built: whole_cut_line breaks every joint
+    /// across the cut line before the cut (separate_cut_line), a lateral crack without end. none (the default): the
+    /// cracks start where the lattice starts them.
+    LateralCrack lateral_crack = LateralCrack::none;
   };
 
   Cut cut;
@@ -351,6 +363,8 @@ struct CutResult {
   /// Joints within the grooves' laser-affected layer, and those of them broken before the cut (known at the
   /// start only: a checkpoint holds the joints themselves, not these counts).
   std::array<std::size_t, 2> groove_damage_joints{};
+  /// Joints across the cut line broken before the cut (separate_cut_line; known at the start only, as above).
+  std::size_t cut_line_joints_broken = 0;
   std::int64_t steps = 0;
   /// Disks integrated times steps, over the cut (a windowed cut integrates its window only).
   double particle_steps = 0;
@@ -402,6 +416,12 @@ double distance_to_groove_outline(const CutParams& params, double dx_m, double d
 /// docs/references.md). Returns {joints in the layer, joints broken}.
 std::array<std::size_t, 2> apply_groove_damage(Simulation& workpiece, const CutParams& params,
                                                const std::array<double, 4>& box_m);
+
+/// The bound of the edge zone's lateral crack (CutParams::EdgeZone::lateral_crack whole_cut_line): breaks every
+/// element of the joints that cross the cut line y = y_cut_m (their disks' centres on either side of it), so that the
+/// glass above the cut line is joined to the glass below by no joint. A broken element carries compression and
+/// friction, no tension, as the grooves' layer (apply_groove_damage). Returns the joints broken.
+std::size_t separate_cut_line(Simulation& workpiece, double y_cut_m);
 
 /// The workpiece: the specimen without the groove disks, left and bottom boundary disks held (group 1).
 /// CutRun then breaks the grooves' laser-affected layer (apply_groove_damage).
