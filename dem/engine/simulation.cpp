@@ -416,6 +416,15 @@ void Simulation::force_loops(ForceCounts& counts) {
   }
 }
 
+void Simulation::break_bond(std::size_t b, BreakMode mode) {
+  if (!b_.active[b]) return;
+  const auto stride = static_cast<std::size_t>(b_.stride);
+  for (std::size_t e = 0; e < stride; ++e)
+    if (b_.bonded[b * stride + e]) b_.pending[b * stride + e] = mode;
+  need_breaks_ = true;
+  apply_breaks();
+}
+
 void Simulation::apply_breaks() {
   if (!need_breaks_) return;
   need_breaks_ = false;

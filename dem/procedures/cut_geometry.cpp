@@ -75,6 +75,22 @@ std::array<std::size_t, 2> apply_groove_damage(Simulation& workpiece, const CutP
   return count;
 }
 
+std::size_t break_cut_line_ahead(Simulation& sim, double y_cut_m, double tip_x_m, double length_m) {
+  const auto& q = sim.particles();
+  const auto& b = sim.bonds();
+  std::size_t count = 0;
+  for (std::size_t k = 0; k < b.size(); ++k) {
+    if (!b.active[k] || b.n_bonded_elements(k) == 0) continue;
+    const auto i = static_cast<std::size_t>(b.i[k]), j = static_cast<std::size_t>(b.j[k]);
+    if ((q.y[i] - y_cut_m) * (q.y[j] - y_cut_m) >= 0) continue;
+    const double x = q.x[i] + (y_cut_m - q.y[i]) * (q.x[j] - q.x[i]) / (q.y[j] - q.y[i]);
+    if (x < tip_x_m - length_m || x > tip_x_m) continue;
+    ++count;
+    sim.break_bond(k, BreakMode::tension);
+  }
+  return count;
+}
+
 std::size_t separate_cut_line(Simulation& workpiece, double y_cut_m) {
   const auto& q = workpiece.particles();
   auto& b = workpiece.bonds();

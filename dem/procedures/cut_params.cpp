@@ -24,7 +24,7 @@ const EnumNames<GrooveDamageModel>& groove_damage_model_names() {
 }
 
 const EnumNames<LateralCrack>& lateral_crack_names() {
-  static constexpr std::string_view names[] = {"none", "whole_cut_line"};
+  static constexpr std::string_view names[] = {"none", "whole_cut_line", "ahead_of_edge"};
   static const EnumNames<LateralCrack> table{names};
   return table;
 }
@@ -162,9 +162,12 @@ const FieldTable<CutParams::EdgeZone>& edge_zone_fields() {
       given_force("thrust_force_N_per_mm", "the layer's thrust force per unit width (with cutting_force_N_per_mm)",
                   &P::thrust_force_N_per_m),
       choice_field("lateral_crack", lateral_crack_names(),
-                   "the lateral crack under the edge: none (where the lattice starts it) or whole_cut_line (every "
-                   "joint across the cut line broken before the cut: the bound of a crack without end)",
-                   &P::lateral_crack)};
+                   "the lateral crack under the edge: none (where the lattice starts it), ahead_of_edge (the joints "
+                   "across the cut line within lateral_crack_length_um ahead of the tip broken as the tool advances) "
+                   "or whole_cut_line (every joint across the cut line broken before the cut: the bound)",
+                   &P::lateral_crack),
+      number_field("lateral_crack_length_um", kUm, Range::non_negative(),
+                   "ahead_of_edge: how far ahead of the tip the lateral crack runs", &P::lateral_crack_length_m)};
   return table;
 }
 
@@ -192,6 +195,9 @@ void check_cut_relations(const CutParams& p) {
           units::m_to_um(p.tool.edge_radius_m), "an edge radius whose rounding fits on both tool faces");
   require(!p.edge_zone.enabled || p.window.enabled, "edge_zone.enabled", 1.0,
           "false unless active_window.enabled (the zone removes disks through the window)");
+  require(p.edge_zone.lateral_crack != LateralCrack::ahead_of_edge || p.edge_zone.lateral_crack_length_m > 0,
+          "edge_zone.lateral_crack_length_um", units::m_to_um(p.edge_zone.lateral_crack_length_m),
+          "a positive length with edge_zone.lateral_crack = ahead_of_edge");
   if (p.edge_zone.lateral_crack != LateralCrack::none && !p.edge_zone.enabled)
     throw InputError("edge_zone.lateral_crack", lateral_crack_names().name(p.edge_zone.lateral_crack),
                      "none unless edge_zone.enabled (the crack runs under the zone's edge)");
@@ -281,6 +287,7 @@ Json cut_params_to_json(const CutParams& p) {
     j["edge_zone"] = fields_to_json(edge_zone_fields(), p.edge_zone);  // only when on: other summaries unchanged
     if (p.edge_zone.lateral_crack == LateralCrack::none)
       j["edge_zone"].erase("lateral_crack");  // the zones recorded before the choice keep their summaries
+    if (p.edge_zone.lateral_crack != LateralCrack::ahead_of_edge) j["edge_zone"].erase("lateral_crack_length_um");
   }
   return j;
 }

@@ -82,6 +82,9 @@ EdgeZoneSets edge_zone_sets(const Simulation& sim, std::int32_t first_tool_wall,
 
 bool CutRun::edge_zone_begin_sample() {
   const auto tip = edge();
+  // The lateral crack runs ahead of the edge (design 2): the joints across the cut line it has reached break first.
+  if (params_.edge_zone.lateral_crack == LateralCrack::ahead_of_edge)
+    break_cut_line_ahead(sim_, res_.y_cut_m, tip[0], params_.edge_zone.lateral_crack_length_m);
   const auto sets = [&] {
     return edge_zone_sets(sim_, first_tool_wall_, n_tool_walls_, tip, res_.y_cut_m, params_.edge_zone.radius_m,
                           kEdgeZoneBulkReaches * params_.edge_zone.radius_m);

@@ -191,6 +191,47 @@ TEST_CASE("cutting: the separated cut line keeps no joint across it and every ot
   CHECK(above.bonds().bonded == pristine.bonds().bonded);
 }
 
+TEST_CASE("cutting: the lateral crack ahead of the edge breaks the cut line's joints within its length", "[cutting]") {
+  const Simulation specimen = quick_workpiece_specimen(0.4e-3, 0.3e-3, 11);
+  std::size_t removed = 0;
+  const Simulation pristine = make_workpiece(specimen, CutParams{}, removed);
+  double x_min = 1, x_max = -1, y_top = -1;
+  const auto& q = pristine.particles();
+  for (std::size_t k = 0; k < q.size(); ++k)
+    x_min = std::min(x_min, q.x[k]), x_max = std::max(x_max, q.x[k]), y_top = std::max(y_top, q.y[k] + q.radius[k]);
+  const double y_cut = y_top - 0.1e-3, tip = 0.5 * (x_min + x_max), length = 0.1e-3;
+  // Where each joint crosses the cut line (NaN: it does not).
+  const auto crossing = [&](std::size_t k) {
+    const auto i = static_cast<std::size_t>(pristine.bonds().i[k]), j = static_cast<std::size_t>(pristine.bonds().j[k]);
+    if (std::min(q.y[i], q.y[j]) >= y_cut || std::max(q.y[i], q.y[j]) <= y_cut) return std::nan("");
+    return q.x[i] + (y_cut - q.y[i]) * (q.x[j] - q.x[i]) / (q.y[j] - q.y[i]);
+  };
+  Simulation sim = pristine;
+  const std::size_t broken = break_cut_line_ahead(sim, y_cut, tip, length);
+  CHECK(broken >= 3);  // 0.1 mm of line through 20-26 um disks
+  std::size_t elements = 0;
+  for (std::size_t k = 0; k < sim.bonds().size(); ++k) {
+    const double x = crossing(k);
+    if (x >= tip - length && x <= tip) {
+      CHECK(sim.bonds().n_bonded_elements(k) == 0);
+      elements += static_cast<std::size_t>(pristine.bonds().n_bonded_elements(k));
+    } else {
+      CHECK(sim.bonds().n_bonded_elements(k) == pristine.bonds().n_bonded_elements(k));  // behind the tip, beyond L
+    }
+  }
+  // Each element's break is a crack event (the engine's own break), in tension, on the cut line's joints.
+  REQUIRE(sim.cracks().size() == elements);
+  for (const auto& c : sim.cracks()) {
+    CHECK(c.mode == BreakMode::tension);
+    CHECK(crossing(static_cast<std::size_t>(c.bond)) >= tip - length);
+  }
+  CHECK(break_cut_line_ahead(sim, y_cut, tip, length) == 0);  // none twice
+  // Ahead of the whole workpiece, it is the separated cut line.
+  Simulation whole = pristine, separated = pristine;
+  CHECK(break_cut_line_ahead(whole, y_cut, x_max + 1e-3, 1) == separate_cut_line(separated, y_cut));
+  CHECK(whole.bonds().bonded == separated.bonds().bonded);
+}
+
 TEST_CASE("cutting: grooves every pitch across the cut path", "[cutting]") {
   CutParams p = grooved(GrooveShape::rectangular);
   auto c = groove_centres(p, 0, 1e-3);

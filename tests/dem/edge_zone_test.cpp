@@ -1,8 +1,9 @@
 // The edge zone of a windowed cut (issue 54 item 4; CutParams::edge_zone, docs/dem.md "The edge zone"), on the
 // constructed workpieces of cut_edge_test.cpp: off, the cut is today's to the bit; an intact block under the edge
 // carries the layer's force and its reaction, equal and opposite, a bed of loose disks none; the energy books
-// balance with the layer's energy as the only dissipation of a conservative block; a checkpoint round trip, and
-// an older state (KERFCUTA) read with the zone off; bad keys named.
+// balance with the layer's energy as the only dissipation of a conservative block; a checkpoint round trip (with the
+// lateral crack too), and an older state (KERFCUTA) read with the zone off; the lateral crack ahead of the edge; bad
+// keys named.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
@@ -165,6 +166,23 @@ TEST_CASE("edge zone: resumed from its checkpoint, the cut and its record go on 
   CHECK(restored.result().window.chips.edge_tied_disks == whole.result().window.chips.edge_tied_disks);
   CHECK(restored.params().edge_zone.radius_m == whole.params().edge_zone.radius_m);
 
+  // With the lateral crack ahead of the edge: its keys travel in the state, its broken joints in the bonds.
+  CutParams crack = p;
+  crack.edge_zone.lateral_crack = LateralCrack::ahead_of_edge;
+  crack.edge_zone.lateral_crack_length_m = 40e-6;
+  CutRun whole_crack(block, crack), half_crack(block, crack);
+  while (whole_crack.advance()) {
+  }
+  for (std::size_t k = 0; k < whole_crack.result().samples.size() / 2; ++k) half_crack.advance();
+  CutRun restored_crack = CutRun::deserialize(half_crack.serialize());
+  CHECK(restored_crack.params().edge_zone.lateral_crack == LateralCrack::ahead_of_edge);
+  CHECK(restored_crack.params().edge_zone.lateral_crack_length_m == crack.edge_zone.lateral_crack_length_m);
+  while (restored_crack.advance()) {
+  }
+  CHECK(restored_crack.result().samples.back().main_force_N == whole_crack.result().samples.back().main_force_N);
+  CHECK(restored_crack.result().edge_zone.intact_samples == whole_crack.result().edge_zone.intact_samples);
+  CHECK(restored_crack.result().samples.back().main_force_N != whole.result().samples.back().main_force_N);
+
   // A KERFCUTA state is a KERFCUTB one without the zone's record at its end (its parameters, stored by key, are
   // read as their defaults when absent: the zone off).
   CutParams off = p;
@@ -236,6 +254,51 @@ TEST_CASE("edge zone: a groove's layer below the disks' scale turns the force of
   CHECK(with_result.groove_damage_joints == std::array<std::size_t, 2>{0, 0});  // the joints kept
 }
 
+TEST_CASE("edge zone: the lateral crack runs its length ahead of the edge as the tool advances", "[edge_zone]") {
+  // The conservative block's joints do not break under this cut (the test above: no crack): every break is the
+  // lateral crack's, and at each sample's end the cut line's joints are broken from the tip to L ahead (less the
+  // sample's travel since they were broken), none beyond L by more than the disks moved since.
+  const Simulation block = hex_workpiece(conservative_material(), 0.6e-3, 0.25e-3);
+  CutParams p = zone_cut();
+  p.edge_zone.lateral_crack = LateralCrack::ahead_of_edge;
+  p.edge_zone.lateral_crack_length_m = 40e-6;
+  const double length = p.edge_zone.lateral_crack_length_m;
+  CutRun run(block, p);
+  const double y_cut = run.result().y_cut_m;
+  int samples = 0, broken_ahead = 0, intact_ahead = 0;
+  double beyond_m = -1;                  // how far beyond L a broken joint crosses (negative: none beyond)
+  std::size_t cracks = 0, off_line = 0;  // the window's crack events after each sample (a rebuild hands them on)
+  double travel = 0;
+  for (bool more = true; more;) {
+    more = run.advance();
+    const Simulation& sim = run.simulation();
+    const double per_sample = p.cut.speed_m_per_s * run.result().time_step_s * p.cut.sample_every_steps;
+    const auto tip = tool_edge(sim, 0, static_cast<std::int32_t>(sim.walls().size()));
+    const auto& q = sim.particles();
+    const auto& b = sim.bonds();
+    for (std::size_t k = 0; k < b.size(); ++k) {
+      const auto i = static_cast<std::size_t>(b.i[k]), j = static_cast<std::size_t>(b.j[k]);
+      if ((q.y[i] - y_cut) * (q.y[j] - y_cut) >= 0) continue;
+      const double x = q.x[i] + (y_cut - q.y[i]) * (q.x[j] - q.x[i]) / (q.y[j] - q.y[i]);
+      const bool intact = b.active[k] && b.n_bonded_elements(k) > 0;
+      if (x >= tip[0] - length + 1.01 * per_sample && x <= tip[0]) (intact ? intact_ahead : broken_ahead) += 1;
+      if (!intact) beyond_m = std::max(beyond_m, tip[0] - length - x);
+    }
+    for (const auto& c : sim.cracks()) ++cracks, off_line += std::abs(c.y_m - y_cut) > kRadiusM;
+    ++samples;
+    travel = run.result().samples.empty() ? 0 : run.result().samples.back().travel_m;
+  }
+  INFO(samples << " samples, " << travel * 1e3 << " mm; cut line's joints within L: " << broken_ahead << " broken, "
+               << intact_ahead << " intact; a broken joint at most " << beyond_m * 1e6 << " um beyond L");
+  REQUIRE(samples > 10);
+  CHECK(broken_ahead > 0);
+  CHECK(intact_ahead == 0);
+  // Beyond L by no more than the disks moved since their joints broke (the block deforms under the tool).
+  CHECK(beyond_m < 0.05 * kRadiusM);
+  CHECK(cracks > 0);
+  CHECK(off_line == 0);  // every crack on the cut line: the lateral crack's, no other
+}
+
 TEST_CASE("edge zone: its keys are validated with their dotted names", "[edge_zone]") {
   CutParams p = zone_cut();
   p.window.enabled = false;
@@ -269,4 +332,12 @@ TEST_CASE("edge zone: its keys are validated with their dotted names", "[edge_zo
   CHECK(cut_params_to_json(p)["edge_zone"]["lateral_crack"] == "whole_cut_line");
   p.edge_zone.enabled = false;
   CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains("edge_zone.lateral_crack = whole_cut_line"));
+  p = zone_cut();
+  p.edge_zone.lateral_crack = LateralCrack::ahead_of_edge;  // without a length
+  CHECK_THROWS_WITH(validate_cut_params(p), Catch::Contains("edge_zone.lateral_crack_length_um = 0"));
+  p.edge_zone.lateral_crack_length_m = 50e-6;
+  CHECK_NOTHROW(validate_cut_params(p));
+  CHECK_THAT(cut_params_to_json(p)["edge_zone"]["lateral_crack_length_um"].get<double>(), WithinAbs(50, 1e-9));
+  p.edge_zone.lateral_crack = LateralCrack::whole_cut_line;
+  CHECK_FALSE(cut_params_to_json(p)["edge_zone"].contains("lateral_crack_length_um"));
 }

@@ -182,6 +182,10 @@ class Simulation {
   // --- running ---
   void step();
   void run(std::int64_t n_steps);
+  /// Breaks every bonded element of bond b now, in `mode`, as the engine breaks an element its law finds failed: a
+  /// crack event each, the law's state of a broken element, the bond retired where the law retires it (a model that
+  /// decides a break the lattice cannot resolve: the edge zone's lateral crack). Between steps only.
+  void break_bond(std::size_t b, BreakMode mode);
 
   // --- access ---
   Particles& particles() { return p_; }

@@ -41,8 +41,9 @@ enum class GrooveDamageModel { broken_joints, edge_zone };
 const EnumNames<GrooveDamageModel>& groove_damage_model_names();
 
 /// Where the edge zone's lateral crack runs (CutParams::EdgeZone::lateral_crack).
-enum class LateralCrack { none, whole_cut_line };
-/// "none", "whole_cut_line" (every joint across the cut line broken before the cut: the bound).
+enum class LateralCrack { none, whole_cut_line, ahead_of_edge };
+/// "none", "whole_cut_line" (every joint across the cut line broken before the cut: the bound), "ahead_of_edge" (the
+/// joints across the cut line within lateral_crack_length_m ahead of the tip broken as the tool advances).
 const EnumNames<LateralCrack>& lateral_crack_names();
 
 /// The cut's parameters, one struct per scene section (its keys in that section's field table: cut_fields(),
@@ -142,10 +143,13 @@ struct CutParams {
     /// The lateral crack under the edge (issue 54 item 3, design 2: docs/notes/2026-12-07-edge-zone-steady-stage-1.md).
     /// In glass the lateral cracks start at the base of the plastic zone under a sharp contact, a few um below it
     /// (Marshall, Lawn & Evans 1982), and run parallel to the surface: at the disks' scale, along the cut line. Their
-    /// length per unit line load has no source here, so only the bound is built: whole_cut_line breaks every joint
-    /// across the cut line before the cut (separate_cut_line), a lateral crack without end. none (the default): the
+    /// length per unit line load has no source here, so it is a parameter: ahead_of_edge breaks, at each force
+    /// sample, the joints across the cut line between the tip and lateral_crack_length_m ahead of it
+    /// (break_cut_line_ahead), a crack that runs that far ahead of the edge; whole_cut_line breaks every joint across
+    /// the cut line before the cut (separate_cut_line), the bound of a crack without end. none (the default): the
     /// cracks start where the lattice starts them.
     LateralCrack lateral_crack = LateralCrack::none;
+    double lateral_crack_length_m = 0;
   };
 
   Cut cut;
@@ -422,6 +426,11 @@ std::array<std::size_t, 2> apply_groove_damage(Simulation& workpiece, const CutP
 /// glass above the cut line is joined to the glass below by no joint. A broken element carries compression and
 /// friction, no tension, as the grooves' layer (apply_groove_damage). Returns the joints broken.
 std::size_t separate_cut_line(Simulation& workpiece, double y_cut_m);
+/// The edge zone's lateral crack ahead of the edge (CutParams::EdgeZone::lateral_crack ahead_of_edge): breaks, through
+/// the engine's break (Simulation::break_bond: a crack event per element, in tension), the joints across the cut line
+/// y = y_cut_m whose crossing (the line between their disks' centres) lies within length_m ahead of the tip at
+/// tip_x_m (the tool moves in -x: from tip_x_m - length_m to tip_x_m). Returns the joints broken.
+std::size_t break_cut_line_ahead(Simulation& sim, double y_cut_m, double tip_x_m, double length_m);
 
 /// The workpiece: the specimen without the groove disks, left and bottom boundary disks held (group 1).
 /// CutRun then breaks the grooves' laser-affected layer (apply_groove_damage).
