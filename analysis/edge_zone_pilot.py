@@ -14,8 +14,9 @@ record less the other) with its 95 % interval. Given with --beside a record of t
 each of its groups against each group of the other record on the same surface, unpaired: the difference of the
 means (this record less the other) with its Welch 95 % interval. With --by TAG a tag that varies within a surface
 (data/studies/issue54_groove_damage_zone.json: the grooves' laser-affected layer) splits the surface's rows into
-groups named "rectangular, TAG=value", each compared as its surface is (the groove effect against the regular
-surface, --against paired with the surface's rows of the other record); with --with RECORD the rows of another record
+groups named "rectangular, TAG=value", each compared as its surface is (the groove effect against the regular group
+of the same tags where there is one, data/studies/issue54_lateral_crack_ahead.json's lengths, else against the regular
+surface; --against paired with the surface's rows of the other record); with --with RECORD the rows of another record
 of the same conditions and packings join this record's (that study's regular cuts are issue54_cut_line_joints.json's).
 
     PYTHONPATH=build/python python3 analysis/edge_zone_pilot.py data/studies/results/issue54_zone_pilot.csv \
@@ -65,6 +66,14 @@ def plain(surface):
     return surface.split(",")[0]
 
 
+def regular_of(surface, zone, groups):
+    """The regular group a grooved group's groove effect divides by: the one with the same tags where the record has it
+    (a model choice on both surfaces: the lateral crack's length), else the plain regular surface (a grooves-only
+    choice: the grooves' laser-affected layer)."""
+    same = "regular" + surface[len(plain(surface)):]
+    return same if (same, zone) in groups else "regular"
+
+
 def estimate(rows, key):
     return mean_of([number(r.get(key)) for r in rows])
 
@@ -90,9 +99,10 @@ def report(groups):
     for force in (R.cutting_force_N_per_mm, R.thrust_force_N_per_mm):
         for zone in ("off", "on"):
             for surface in (s for s in surfaces if plain(s) == "rectangular"):
-                if (surface, zone) in groups and ("regular", zone) in groups:
-                    r = ratio(estimate(groups[(surface, zone)], force), estimate(groups[("regular", zone)], force))
-                    lines.append(f"groove effect ({surface} / regular), {force}, zone {zone}: {interval(r)}")
+                regular = regular_of(surface, zone, groups)
+                if (surface, zone) in groups and (regular, zone) in groups:
+                    r = ratio(estimate(groups[(surface, zone)], force), estimate(groups[(regular, zone)], force))
+                    lines.append(f"groove effect ({surface} / {regular}), {force}, zone {zone}: {interval(r)}")
         for surface in surfaces:
             if (surface, "on") in groups and (surface, "off") in groups:
                 r = ratio(estimate(groups[(surface, "on")], force), estimate(groups[(surface, "off")], force))

@@ -130,3 +130,21 @@ def test_a_tagged_group_is_paired_with_its_plain_surface_in_the_baseline(tmp_pat
                      ez.read(tmp_path / "base.csv", ["damage_um"])).splitlines()[2:]
     assert len(rows) == 1 and rows[0].startswith("| rectangular, damage_um=50 | on | 4 |")
     assert abs(float(rows[0].split("|")[4].split(" [")[0]) + 0.05) < 1e-12
+
+
+def test_a_tag_on_both_surfaces_divides_each_grooved_group_by_the_regular_group_of_its_own_value(tmp_path):
+    # The lateral crack's length acts on both surfaces: each length's groove effect is its own grooved cuts over its own
+    # regular ones (exactly its fraction), not over the plain regular surface's.
+    regular = [0.40, 0.50, 0.45, 0.55]
+    write_tagged(tmp_path / "crack.csv", {("regular", "on", "30"): regular,
+                                          ("rectangular", "on", "30"): [0.4 * x for x in regular],
+                                          ("regular", "on", "300"): [2 * x for x in regular],
+                                          ("rectangular", "on", "300"): [0.2 * x for x in regular]}, "length_um")
+    write(tmp_path / "base.csv", {("regular", "on"): [10 * x for x in regular]})
+    groups = ez.read(tmp_path / "crack.csv", ["length_um"])
+    ez.read(tmp_path / "base.csv", ["length_um"], groups)
+    text = ez.report(groups)
+    effects = {l.split("(")[1].split(")")[0]: float(l.split(": ")[1].split()[0])
+               for l in text.splitlines() if l.startswith("groove effect") and "cutting" in l}
+    assert effects == {"rectangular, length_um=30 / regular, length_um=30": 0.4,
+                       "rectangular, length_um=300 / regular, length_um=300": 0.1}
