@@ -139,12 +139,12 @@ def test_a_tag_on_both_surfaces_divides_each_grooved_group_by_the_regular_group_
     write_tagged(tmp_path / "crack.csv", {("regular", "on", "30"): regular,
                                           ("rectangular", "on", "30"): [0.4 * x for x in regular],
                                           ("regular", "on", "300"): [2 * x for x in regular],
-                                          ("rectangular", "on", "300"): [0.2 * x for x in regular]}, "length_um")
+                                          ("rectangular", "on", "300"): [0.2 * x for x in regular]}, "crack")
     write(tmp_path / "base.csv", {("regular", "on"): [10 * x for x in regular]})
-    groups = ez.read(tmp_path / "crack.csv", ["length_um"])
-    ez.read(tmp_path / "base.csv", ["length_um"], groups)
+    groups = ez.read(tmp_path / "crack.csv", ["crack"])
+    ez.read(tmp_path / "base.csv", ["crack"], groups)
     text = ez.report(groups)
     effects = {l.split("(")[1].split(")")[0]: float(l.split(": ")[1].split()[0])
                for l in text.splitlines() if l.startswith("groove effect") and "cutting" in l}
-    assert effects == {"rectangular, length_um=30 / regular, length_um=30": 0.4,
-                       "rectangular, length_um=300 / regular, length_um=300": 0.1}
+    assert effects == {"rectangular, crack=30 / regular, crack=30": 0.4,
+                       "rectangular, crack=300 / regular, crack=300": 0.1}
