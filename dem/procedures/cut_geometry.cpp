@@ -22,6 +22,21 @@ void break_joint(BondStore& b, std::size_t k) {
     b.shear_force_N[k * stride + e] = 0;
   }
 }
+
+/// Calls visit(k, x_m) for each joint k with a bonded element across the cut line y = y_cut_m (its disks' centres on
+/// either side of it; a centre on the line is on neither), x_m where the line between the centres crosses it. visit may
+/// break joint k.
+template <class Visit>
+void for_joints_across_cut_line(const Simulation& sim, double y_cut_m, Visit visit) {
+  const auto& q = sim.particles();
+  const auto& b = sim.bonds();
+  for (std::size_t k = 0; k < b.size(); ++k) {
+    if (!b.active[k] || b.n_bonded_elements(k) == 0) continue;
+    const auto i = static_cast<std::size_t>(b.i[k]), j = static_cast<std::size_t>(b.j[k]);
+    if ((q.y[i] - y_cut_m) * (q.y[j] - y_cut_m) >= 0) continue;
+    visit(k, q.x[i] + (y_cut_m - q.y[i]) * (q.x[j] - q.x[i]) / (q.y[j] - q.y[i]));
+  }
+}
 }  // namespace
 
 bool inside_groove_outline(const CutParams& p, double dx_m, double depth_m) {
@@ -76,32 +91,21 @@ std::array<std::size_t, 2> apply_groove_damage(Simulation& workpiece, const CutP
 }
 
 std::size_t break_cut_line_ahead(Simulation& sim, double y_cut_m, double tip_x_m, double length_m) {
-  const auto& q = sim.particles();
-  const auto& b = sim.bonds();
   std::size_t count = 0;
-  for (std::size_t k = 0; k < b.size(); ++k) {
-    if (!b.active[k] || b.n_bonded_elements(k) == 0) continue;
-    const auto i = static_cast<std::size_t>(b.i[k]), j = static_cast<std::size_t>(b.j[k]);
-    if ((q.y[i] - y_cut_m) * (q.y[j] - y_cut_m) >= 0) continue;
-    const double x = q.x[i] + (y_cut_m - q.y[i]) * (q.x[j] - q.x[i]) / (q.y[j] - q.y[i]);
-    if (x < tip_x_m - length_m || x > tip_x_m) continue;
+  for_joints_across_cut_line(sim, y_cut_m, [&](std::size_t k, double x_m) {
+    if (x_m < tip_x_m - length_m || x_m > tip_x_m) return;
     ++count;
     sim.break_bond(k, BreakMode::tension);
-  }
+  });
   return count;
 }
 
 std::size_t separate_cut_line(Simulation& workpiece, double y_cut_m) {
-  const auto& q = workpiece.particles();
-  auto& b = workpiece.bonds();
   std::size_t count = 0;
-  for (std::size_t k = 0; k < b.size(); ++k) {
-    if (!b.active[k] || b.n_bonded_elements(k) == 0) continue;
-    const auto i = static_cast<std::size_t>(b.i[k]), j = static_cast<std::size_t>(b.j[k]);
-    if ((q.y[i] - y_cut_m) * (q.y[j] - y_cut_m) >= 0) continue;  // both on one side (or a centre on the line)
+  for_joints_across_cut_line(workpiece, y_cut_m, [&](std::size_t k, double) {
     ++count;
-    break_joint(b, k);
-  }
+    break_joint(workpiece.bonds(), k);
+  });
   return count;
 }
 
